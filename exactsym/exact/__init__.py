@@ -1,0 +1,17 @@
+"""The exact number kernel: one module decides how every number is held.
+
+Public names: :func:`sign`, :class:`FieldElement`, :class:`NumberField`,
+:func:`number_system`, :func:`evaluate`, :func:`evaluate_all`, :func:`number_text`,
+``fmpq`` (the rationals).
+"""
+
+from flint import fmpq
+
+from .evaluate import (FieldSystem, RationalSystem, evaluate, evaluate_all, normal_turn,
+                       number_system, rational_cos_turn, rational_sqrt)
+from .field import FieldElement, NumberField, as_fmpq, sign
+from .text import expression_text, number_text, rational_text
+
+__all__ = ["fmpq", "sign", "FieldElement", "NumberField", "FieldSystem", "RationalSystem",
+           "number_system", "evaluate", "evaluate_all", "number_text", "rational_text",
+           "expression_text", "as_fmpq", "normal_turn", "rational_cos_turn", "rational_sqrt"]

@@ -1,0 +1,128 @@
+"""The cyclotomic field Q(zeta_M): cosines, sines and square roots of rationals.
+
+Why this field (see ``docs/numbers.md``): ``cos(2 pi k/M)`` and ``sin(2 pi k/M)``
+(``4 | M``) are ``(z^k + z^-k)/2`` and ``(z^k - z^-k)/(2i)`` with ``i = z^(M/4)``,
+and ``sqrt(p)`` is a Gauss sum in Q(zeta_p) or Q(zeta_4p).  So every coordinate
+of a polar configuration and every square root of a rational lives in one field
+whose minimal polynomial (the cyclotomic polynomial) is known in closed form:
+no primitive-element computation, and elements are built in microseconds.
+"""
+
+from __future__ import annotations
+
+from math import gcd
+
+from flint import acb, arb, fmpq, fmpq_poly, fmpz, fmpz_poly
+
+from .field import FieldElement, NumberField
+
+#: Largest field degree phi(M) we build; beyond it arithmetic costs milliseconds.
+MAX_DEGREE = 4096
+
+
+def euler_phi(m: int) -> int:
+    result = m
+    for p, _ in fmpz(m).factor():
+        p = int(p)
+        result = result // p * (p - 1)
+    return result
+
+
+def lcm(a: int, b: int) -> int:
+    return a // gcd(a, b) * b
+
+
+def squarefree_decomposition(q: fmpq) -> tuple[fmpq, int]:
+    """``(c, s)`` with ``sqrt(q) = c * sqrt(s)``, ``c`` rational, ``s`` a squarefree positive integer."""
+    num, den = int(q.p), int(q.q)
+    n = num * den
+    square, free = 1, 1
+    for p, e in fmpz(n).factor():
+        p = int(p)
+        square *= p ** (e // 2)
+        if e % 2:
+            free *= p
+    return fmpq(square, den), free
+
+
+def sqrt_conductor(s: int) -> int:
+    """A conductor M such that Q(zeta_M) holds sqrt(s) as built by :func:`sqrt_element`."""
+    m = 1
+    for p, _ in fmpz(s).factor():
+        p = int(p)
+        m = lcm(m, 8 if p == 2 else (p if p % 4 == 1 else 4 * p))
+    return m
+
+
+def turn_conductor(turn: fmpq, func: str) -> int:
+    """Conductor needed for ``cos`` or ``sin`` of ``turn`` full turns."""
+    den = int(turn.q)
+    return lcm(den, 4) if func == "sin" else den
+
+
+def cyclotomic_field(m: int) -> NumberField:
+    """Q(zeta_m) with zeta_m = exp(2 pi i / m)."""
+    minpoly = fmpq_poly(fmpz_poly.cyclotomic(m))
+
+    def enclose(prec: int):
+        from flint import ctx
+        with ctx.workprec(prec + 16):
+            angle = fmpq(2, m)
+            return acb(arb.cos_pi_fmpq(angle), arb.sin_pi_fmpq(angle))
+
+    field = NumberField(minpoly, enclose, f"Q(zeta_{m})", theta_text=None, conductor=m)
+    field.cyclotomic_order = m
+    return field
+
+
+def root_of_unity(field: NumberField, k: int) -> FieldElement:
+    """``zeta_M^k`` for the field's order M."""
+    m = field.cyclotomic_order
+    return field.element(fmpq_poly([0] * (k % m) + [1]))
+
+
+def cos_turn(field: NumberField, turn: fmpq) -> FieldElement:
+    """``cos(2 pi turn)``; the turn's denominator must divide the field's order."""
+    m = field.cyclotomic_order
+    k = turn * m
+    if k.q != 1:
+        raise ValueError(f"turn {turn} is not in Q(zeta_{m})")
+    k = int(k.p)
+    return (root_of_unity(field, k) + root_of_unity(field, -k)) / 2
+
+
+def sin_turn(field: NumberField, turn: fmpq) -> FieldElement:
+    """``sin(2 pi turn) = cos(2 pi (1/4 - turn))``."""
+    return cos_turn(field, fmpq(1, 4) - turn)
+
+
+def _legendre(a: int, p: int) -> int:
+    r = pow(a, (p - 1) // 2, p)
+    return -1 if r == p - 1 else r
+
+
+def _sqrt_prime(field: NumberField, p: int) -> FieldElement:
+    """An element whose square is p (sign not yet fixed)."""
+    m = field.cyclotomic_order
+    if p == 2:  # zeta_8 + zeta_8^-1 = sqrt(2)
+        return root_of_unity(field, m // 8) + root_of_unity(field, -(m // 8))
+    step = m // p
+    gauss = field(0)
+    for a in range(1, p):
+        gauss = gauss + _legendre(a, p) * root_of_unity(field, a * step)
+    if p % 4 == 1:
+        return gauss
+    return gauss * root_of_unity(field, -(m // 4))    # g = i sqrt(p)  =>  sqrt(p) = -i g up to sign
+
+
+def sqrt_element(field: NumberField, q: fmpq) -> FieldElement:
+    """The non-negative square root of the rational ``q >= 0``."""
+    c, s = squarefree_decomposition(q)
+    root = field(1)
+    for p, _ in fmpz(s).factor():
+        root = root * _sqrt_prime(field, int(p))
+    if root * root != s:
+        raise ArithmeticError(f"Gauss sum for sqrt({s}) is wrong")  # cannot happen
+    if root.sign() < 0:
+        root = -root
+    return c * root

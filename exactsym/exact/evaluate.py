@@ -1,0 +1,244 @@
+"""From expression trees to exact numbers: choosing the one field a configuration needs.
+
+:func:`number_system` looks at every expression (and every polar turn) of a
+configuration once and picks the smallest machinery that holds them all:
+
+1. **Q** when everything is rational (``sqrt(4)``, ``cos(pi/3)`` included):
+   numbers are ``fmpq``;
+2. **Q(zeta_M)** when the irrational parts are square roots of rationals and
+   cosines/sines of rational multiples of pi (:mod:`.cyclotomic`);
+3. otherwise (nested radicals) a field Q(theta) built once with sympy's
+   ``primitive_element`` (:mod:`.general`).
+
+Every evaluation error a user can cause (division by zero, the root of a
+negative number, a field too large) is an :class:`ExpressionError` carrying the
+offending node's offset.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Iterable, Sequence
+
+from flint import fmpq
+
+from ..errors import ExpressionError, FieldTooLargeError
+from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
+from . import cyclotomic
+from .field import FieldElement, NumberField, as_fmpq
+
+
+class RationalSystem:
+    """The field Q: numbers are ``fmpq``."""
+
+    name = "Q"
+    degree = 1
+    field = None
+
+    def coerce(self, value):
+        return as_fmpq(value)
+
+    def cos_turn(self, turn: fmpq):
+        value = rational_cos_turn(turn)
+        if value is None:
+            raise ValueError(f"cos of {turn} turn is irrational")
+        return value
+
+    def sin_turn(self, turn: fmpq):
+        return self.cos_turn(fmpq(1, 4) - turn)
+
+    def sqrt(self, q: fmpq):
+        root = rational_sqrt(q)
+        if root is None:
+            raise ValueError(f"sqrt({q}) is irrational")
+        return root
+
+
+class FieldSystem:
+    """A number field ``field`` with the atoms (square roots, trig values) it holds."""
+
+    def __init__(self, field: NumberField, atoms: dict | None = None):
+        self.field = field
+        self.name = field.name
+        self.degree = field.degree
+        self.atoms = atoms or {}
+
+    def coerce(self, value):
+        return self.field(value)
+
+    def cos_turn(self, turn: fmpq):
+        if self.field.conductor is not None:
+            return cyclotomic.cos_turn(self.field, turn)
+        value = rational_cos_turn(turn)
+        if value is not None:
+            return self.field(value)
+        return self.atoms[("cos", normal_turn(turn))]
+
+    def sin_turn(self, turn: fmpq):
+        return self.cos_turn(fmpq(1, 4) - turn)
+
+    def sqrt(self, q: fmpq):
+        root = rational_sqrt(q)
+        if root is not None:
+            return self.field(root)
+        if self.field.conductor is not None:
+            return cyclotomic.sqrt_element(self.field, q)
+        return self.atoms[("sqrt", q)]
+
+
+def normal_turn(turn: fmpq) -> fmpq:
+    """The turn reduced to [0, 1)."""
+    return turn - (turn.p // turn.q)
+
+
+def rational_cos_turn(turn: fmpq) -> fmpq | None:
+    """``cos(2 pi turn)`` when it is rational (denominators 1, 2, 3, 4, 6), else None."""
+    t = normal_turn(turn)
+    table = {fmpq(0): fmpq(1), fmpq(1, 2): fmpq(-1), fmpq(1, 4): fmpq(0), fmpq(3, 4): fmpq(0),
+             fmpq(1, 3): fmpq(-1, 2), fmpq(2, 3): fmpq(-1, 2), fmpq(1, 6): fmpq(1, 2),
+             fmpq(5, 6): fmpq(1, 2)}
+    return table.get(t)
+
+
+def rational_sqrt(q: fmpq) -> fmpq | None:
+    """The rational square root of ``q >= 0``, or None when it is irrational."""
+    p, d = q.p.isqrt(), q.q.isqrt()
+    if p * p == q.p and d * d == q.q:
+        return fmpq(p, d)
+    return None
+
+
+# ---------------------------------------------------------------- atom collection
+def _rational_value(node: Node) -> fmpq | None:
+    """The value of ``node`` if it is rational without any field work, else None."""
+    try:
+        value = _evaluate(node, RationalSystem())
+    except ValueError:
+        return None
+    return value
+
+
+def _collect(node: Node, atoms: list) -> None:
+    """Append the irrational atoms of ``node``: ("sqrt", q), ("cos", turn), ("nested", Sqrt node)."""
+    if isinstance(node, Const):
+        return
+    if isinstance(node, Neg):
+        _collect(node.arg, atoms)
+    elif isinstance(node, BinOp):
+        _collect(node.left, atoms)
+        _collect(node.right, atoms)
+    elif isinstance(node, Pow):
+        _collect(node.base, atoms)
+    elif isinstance(node, Trig):
+        turn = fmpq(1, 4) - as_fmpq(node.pi_multiple) / 2 if node.func == "sin" \
+            else as_fmpq(node.pi_multiple) / 2
+        if rational_cos_turn(turn) is None:
+            atoms.append(("cos", normal_turn(turn), node.func))
+    elif isinstance(node, Sqrt):
+        q = _rational_value(node.arg)
+        if q is None:
+            _collect(node.arg, atoms)
+            atoms.append(("nested", node))
+        elif q < 0:
+            raise ExpressionError("square root of a negative number", offset=node.offset)
+        elif rational_sqrt(q) is None:
+            atoms.append(("sqrt", q))
+    else:  # pragma: no cover - the parser makes no other nodes
+        raise ExpressionError(f"unknown expression node {type(node).__name__}", offset=node.offset)
+
+
+# ---------------------------------------------------------------- evaluation
+def _evaluate(node: Node, system):
+    """Evaluate ``node`` in ``system`` (RationalSystem raises ValueError on irrational atoms)."""
+    if isinstance(node, Const):
+        return system.coerce(node.value)
+    if isinstance(node, Neg):
+        return -_evaluate(node.arg, system)
+    if isinstance(node, BinOp):
+        left = _evaluate(node.left, system)
+        right = _evaluate(node.right, system)
+        if node.op == "+":
+            return left + right
+        if node.op == "-":
+            return left - right
+        if node.op == "*":
+            return left * right
+        if right == 0:
+            raise ExpressionError("division by zero", offset=node.offset)
+        return left / right
+    if isinstance(node, Pow):
+        base = _evaluate(node.base, system)
+        if node.exponent < 0 and base == 0:
+            raise ExpressionError("division by zero (zero to a negative power)", offset=node.offset)
+        return base ** node.exponent
+    if isinstance(node, Trig):
+        turn = as_fmpq(node.pi_multiple) / 2
+        return system.cos_turn(turn) if node.func == "cos" else system.sin_turn(turn)
+    if isinstance(node, Sqrt):
+        arg = _evaluate(node.arg, system)
+        if isinstance(arg, FieldElement) and (not arg.is_rational()
+                                              or ("nested", node) in system.atoms):
+            if arg.sign() < 0:
+                raise ExpressionError("square root of a negative number", offset=node.offset)
+            return system.atoms[("nested", node)]
+        arg = arg.rational() if isinstance(arg, FieldElement) else arg
+        if arg < 0:
+            raise ExpressionError("square root of a negative number", offset=node.offset)
+        return system.sqrt(arg)
+    raise ExpressionError(f"unknown expression node {type(node).__name__}", offset=node.offset)
+
+
+def number_system(exprs: Iterable[Node], turns: Iterable[fmpq] = ()):
+    """The smallest number system holding every expression and cos/sin of every turn.
+
+    Raises :class:`ExpressionError` (with the node's offset; the caller adds the
+    file location) for a root of a negative rational, and
+    :class:`FieldTooLargeError` when the numbers need too large a field.
+    """
+    atoms: list = []
+    for index, expr in enumerate(exprs):
+        try:
+            _collect(expr, atoms)
+        except ExpressionError as err:
+            err.index = index      # which expression: the caller knows its file location
+            raise
+    for turn in turns:
+        for t in (normal_turn(as_fmpq(turn)), normal_turn(fmpq(1, 4) - as_fmpq(turn))):
+            if rational_cos_turn(t) is None:
+                atoms.append(("cos", t, "cos"))
+    if not atoms:
+        return RationalSystem()
+    if all(kind != "nested" for kind, *_ in atoms):
+        conductor = 1
+        for atom in atoms:
+            if atom[0] == "cos":
+                conductor = cyclotomic.lcm(conductor, cyclotomic.turn_conductor(atom[1], "cos"))
+            else:
+                conductor = cyclotomic.lcm(conductor, cyclotomic.sqrt_conductor(
+                    cyclotomic.squarefree_decomposition(atom[1])[1]))
+        # sines are cosines of 1/4 - t, already in the list; i needs 4 | M for them
+        conductor = cyclotomic.lcm(conductor, 4)
+        degree = cyclotomic.euler_phi(conductor)
+        if degree <= cyclotomic.MAX_DEGREE:
+            return FieldSystem(cyclotomic.cyclotomic_field(conductor))
+        if any(atom[0] == "cos" for atom in atoms):
+            raise FieldTooLargeError(
+                f"these numbers need the cyclotomic field Q(zeta_{conductor}) of degree {degree}, "
+                f"above the limit {cyclotomic.MAX_DEGREE}")
+    from .general import general_system   # sympy is imported only for nested radicals
+    return general_system(atoms)
+
+
+def evaluate(node: Node, system):
+    """The exact value of ``node`` in a system from :func:`number_system` covering it."""
+    return _evaluate(node, system)
+
+
+def evaluate_all(exprs: Sequence[Node], turns: Sequence[fmpq] = ()):
+    """``(system, values)``: one number system for all ``exprs`` and their exact values."""
+    system = number_system(exprs, turns)
+    return system, [_evaluate(expr, system) for expr in exprs]
+
+
+__all__ = ["RationalSystem", "FieldSystem", "number_system", "evaluate", "evaluate_all",
+           "rational_cos_turn", "rational_sqrt", "normal_turn", "Fraction"]

@@ -1,0 +1,272 @@
+"""Exact real numbers: the rationals and real elements of one number field.
+
+This module owns exactness for the whole project (the CGAL "kernel" of
+``../shared/style.md``): algorithms only use ``+ - * /``, ``**`` with an integer,
+``== < <= > >=``, :func:`sign` and ``hash`` on the numbers it makes, never floats.
+
+* Rationals are python-flint ``fmpq`` (about 9 times faster than ``Fraction``).
+* Algebraic numbers are :class:`FieldElement`: a polynomial in a generator
+  ``theta`` reduced modulo the minimal polynomial of ``theta``.  Because the
+  representation is canonical, equality and hashing are exact and cheap.  The
+  sign of a non-zero element is certified by ball arithmetic (Arb) at doubling
+  precision until the ball excludes zero; zero itself never needs numerics.
+  ``theta`` may be complex (a root of unity); the elements we build are real,
+  so only the real part of the enclosure is used.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Callable, Union
+
+from flint import acb, acb_poly, arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz
+
+Rational = fmpq
+Number = Union[fmpq, "FieldElement"]
+
+_START_PRECISION = 64
+_MAX_PRECISION = 1 << 22   # a sign that needs more bits than this means a bug upstream
+
+
+def as_fmpq(value) -> fmpq:
+    """An exact rational from an ``int``, ``Fraction``, ``fmpz`` or ``fmpq``."""
+    if isinstance(value, fmpq):
+        return value
+    if isinstance(value, (int, fmpz)):
+        return fmpq(value)
+    if isinstance(value, Fraction):
+        return fmpq(value.numerator, value.denominator)
+    raise TypeError(f"not an exact rational: {value!r}")
+
+
+def sign(x) -> int:
+    """-1, 0 or 1: the exact sign of a number of this module (or an ``int``)."""
+    if isinstance(x, FieldElement):
+        return x.sign()
+    return (x > 0) - (x < 0)
+
+
+class NumberField:
+    """Q(theta) for an algebraic ``theta`` given by its minimal polynomial.
+
+    ``enclose(prec)`` must return an ``acb`` (or ``arb``) ball containing theta
+    with radius about ``2**-prec``.  ``name`` says how the field was built
+    (``"Q(zeta_60)"``) and ``theta_text`` is an expression of theta in the
+    configuration syntax, or ``None`` when theta is not real (a root of unity:
+    then :meth:`FieldElement.text` writes the real part instead).
+    """
+
+    def __init__(self, minpoly: fmpq_poly, enclose: Callable[[int], object], name: str,
+                 theta_text: str | None = None, conductor: int | None = None):
+        lead = minpoly.coeffs()[-1]
+        self.minpoly = minpoly / lead if lead != 1 else minpoly
+        self.degree = self.minpoly.degree()
+        self._enclose = enclose
+        self._enclosures: dict[int, object] = {}
+        self.name = name
+        self.theta_text = theta_text
+        self.conductor = conductor
+
+    def enclosure(self, prec: int):
+        ball = self._enclosures.get(prec)
+        if ball is None:
+            ball = self._enclosures[prec] = self._enclose(prec)
+        return ball
+
+    def element(self, poly: fmpq_poly) -> "FieldElement":
+        if poly.degree() >= self.degree:
+            poly = poly % self.minpoly
+        return FieldElement(self, poly)
+
+    def __call__(self, value) -> "FieldElement":
+        """Coerce a rational (or an element of this field) into the field."""
+        if isinstance(value, FieldElement):
+            if value.field is not self:
+                raise TypeError("elements of two different number fields do not mix")
+            return value
+        return FieldElement(self, fmpq_poly([as_fmpq(value)]))
+
+    @property
+    def gen(self) -> "FieldElement":
+        return self.element(fmpq_poly([0, 1]))
+
+    def sign_of(self, poly: fmpq_poly) -> int:
+        """Certified sign of the real number ``poly(theta)`` (``poly`` not zero in the field)."""
+        prec = _START_PRECISION
+        while prec <= _MAX_PRECISION:
+            with ctx.workprec(prec + 16):
+                theta = self.enclosure(prec)
+                if isinstance(theta, arb):
+                    value = arb_poly(poly)(theta)
+                else:
+                    value = acb_poly(poly)(theta).real
+                if value > 0:
+                    return 1
+                if value < 0:
+                    return -1
+            prec *= 2
+        raise ArithmeticError("sign undecided at the precision limit: a non-zero "
+                              "element evaluated as zero (bug in the enclosure)")
+
+    def __repr__(self) -> str:
+        return f"NumberField({self.name}, degree {self.degree})"
+
+
+class FieldElement:
+    """A real number ``poly(theta)`` of a :class:`NumberField`, exact.
+
+    Mixes with ``int`` and ``fmpq`` operands; two elements must share one field.
+    """
+
+    __slots__ = ("field", "poly")
+
+    def __init__(self, field: NumberField, poly: fmpq_poly):
+        self.field = field
+        self.poly = poly
+
+    # -- coercion -----------------------------------------------------------
+    def _other(self, other):
+        if isinstance(other, FieldElement):
+            if other.field is not self.field:
+                raise TypeError("elements of two different number fields do not mix")
+            return other.poly
+        if isinstance(other, (int, fmpq, fmpz)):
+            return fmpq_poly([other])
+        if isinstance(other, Fraction):
+            return fmpq_poly([as_fmpq(other)])
+        return None
+
+    # -- arithmetic ----------------------------------------------------------
+    def __add__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else FieldElement(self.field, self.poly + o)
+
+    __radd__ = __add__
+
+    def __sub__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else FieldElement(self.field, self.poly - o)
+
+    def __rsub__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else FieldElement(self.field, o - self.poly)
+
+    def __neg__(self):
+        return FieldElement(self.field, -self.poly)
+
+    def __pos__(self):
+        return self
+
+    def __mul__(self, other):
+        o = self._other(other)
+        if o is None:
+            return NotImplemented
+        if o.degree() <= 0 or self.poly.degree() <= 0:
+            return FieldElement(self.field, self.poly * o)
+        return FieldElement(self.field, (self.poly * o) % self.field.minpoly)
+
+    __rmul__ = __mul__
+
+    def inverse(self) -> "FieldElement":
+        if self.poly.is_zero():
+            raise ZeroDivisionError("division by zero")
+        if self.poly.degree() == 0:
+            return FieldElement(self.field, fmpq_poly([1 / self.poly.coeffs()[0]]))
+        g, s, _ = self.poly.xgcd(self.field.minpoly)
+        return FieldElement(self.field, s / g.coeffs()[0])
+
+    def __truediv__(self, other):
+        o = self._other(other)
+        if o is None:
+            return NotImplemented
+        if o.degree() == 0:
+            return FieldElement(self.field, self.poly / o.coeffs()[0])
+        return self * FieldElement(self.field, o).inverse()
+
+    def __rtruediv__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else FieldElement(self.field, o) * self.inverse()
+
+    def __pow__(self, exponent: int):
+        if not isinstance(exponent, int):
+            return NotImplemented
+        base = self if exponent >= 0 else self.inverse()
+        result = FieldElement(self.field, fmpq_poly([1]))
+        for bit in bin(abs(exponent))[2:]:
+            result = result * result
+            if bit == "1":
+                result = result * base
+        return result
+
+    # -- exact comparison -----------------------------------------------------
+    def is_rational(self) -> bool:
+        return self.poly.degree() <= 0
+
+    def rational(self) -> fmpq:
+        """The value as ``fmpq``; raises ``ValueError`` when it is irrational."""
+        if not self.is_rational():
+            raise ValueError("not a rational number")
+        return self.poly.coeffs()[0] if not self.poly.is_zero() else fmpq(0)
+
+    def sign(self) -> int:
+        if self.poly.is_zero():
+            return 0
+        if self.poly.degree() == 0:
+            c = self.poly.coeffs()[0]
+            return (c > 0) - (c < 0)
+        return self.field.sign_of(self.poly)
+
+    def __eq__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else self.poly == o
+
+    def __ne__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else self.poly != o
+
+    def _cmp(self, other) -> int | None:
+        o = self._other(other)
+        if o is None:
+            return None
+        diff = self.poly - o
+        if diff.is_zero():
+            return 0
+        return FieldElement(self.field, diff).sign()
+
+    def __lt__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c < 0
+
+    def __le__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c <= 0
+
+    def __gt__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c > 0
+
+    def __ge__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c >= 0
+
+    def __hash__(self):
+        if self.poly.degree() <= 0:
+            return hash(self.rational())
+        return hash(tuple(self.poly.coeffs()))
+
+    def __bool__(self):
+        return not self.poly.is_zero()
+
+    def enclosure(self, prec: int = 53):
+        """An ``arb`` ball around the value (for drawing and float filters only)."""
+        with ctx.workprec(prec + 16):
+            theta = self.field.enclosure(prec)
+            if isinstance(theta, arb):
+                return arb_poly(self.poly)(theta)
+            return acb_poly(self.poly)(theta).real
+
+    def __float__(self):  # display and float filters only: never decides anything
+        return float(self.enclosure(53).mid())
+
+    def __repr__(self):
+        return f"FieldElement({self.poly} in {self.field.name})"

@@ -1,0 +1,74 @@
+"""The SEC of a configuration and its concentric polygons G1..Gt (Section 3, before
+``def-sym-pair``; Section 4.3 "the robots equidistant from C form a convex polygon").
+
+``levels`` are the classes of points at equal distance from the SEC centre C,
+nearest first; each lists its points counter-clockwise starting from the +x ray
+through C (a point at C itself forms the level of radius 0).
+
+Polar configurations centred at the origin are handled without trigonometry:
+the origin is the SEC centre iff the points at maximal radius leave no angular
+gap above half a turn (then the origin lies in their convex hull), and radii and
+angles are the given ``r^2`` and rational turns.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .configuration import Configuration
+from .exact import fmpq
+from .geometry import angular_sort, squared_distance
+from .sec import Circle, smallest_enclosing_circle
+
+
+@dataclass(frozen=True)
+class Level:
+    radius_squared: object
+    points: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class Rings:
+    """The SEC and the levels G1..Gt; ``polar`` is True when both were computed from
+    ``(r^2, turn)`` about the origin (then ``turns`` gives each point's turn)."""
+    sec: Circle
+    levels: tuple[Level, ...]
+    polar: bool
+
+
+def polar_sec(polar) -> Circle | None:
+    """The SEC when it is centred at the origin of a polar configuration, else None."""
+    r2max = max(r2 for r2, _ in polar)
+    on_circle = [i for i, (r2, _) in enumerate(polar) if r2 == r2max]
+    turns = sorted(polar[i][1] for i in on_circle)
+    if len(turns) < 2 or r2max == 0:
+        return None
+    gaps = [b - a for a, b in zip(turns, turns[1:])] + [turns[0] + 1 - turns[-1]]
+    if max(gaps) > fmpq(1, 2):
+        return None
+    zero = r2max * 0
+    return Circle((zero, zero), r2max, tuple(on_circle))
+
+
+def rings(config: Configuration) -> Rings:
+    """The SEC and the concentric polygons of ``config``."""
+    if config.polar is not None:
+        circle = polar_sec(config.polar)
+        if circle is not None:
+            return Rings(circle, _polar_levels(config.polar), True)
+    points = list(config.points)
+    circle = smallest_enclosing_circle(points)
+    groups: dict = {}
+    for i, p in enumerate(points):
+        groups.setdefault(squared_distance(circle.centre, p), []).append(i)
+    levels = tuple(Level(r2, tuple(angular_sort(circle.centre, points, groups[r2])))
+                   for r2 in sorted(groups))
+    return Rings(circle, levels, False)
+
+
+def _polar_levels(polar) -> tuple[Level, ...]:
+    groups: dict = {}
+    for i, (r2, _) in enumerate(polar):
+        groups.setdefault(r2, []).append(i)
+    return tuple(Level(r2, tuple(sorted(groups[r2], key=lambda i: polar[i][1])))
+                 for r2 in sorted(groups))
