@@ -11,13 +11,15 @@ built on first use.
 
 from __future__ import annotations
 
+import gc
+from contextlib import contextmanager
 from functools import cached_property
 from typing import Iterable, Mapping, Sequence
 
 from .config import ConfigFile, PointSpec, read_config
 from .errors import ExpressionError, InputError
-from .exact import evaluate, fmpq, normal_turn, number_system
-from .exprtree import Node
+from .exact import RationalSystem, evaluate, exact_key, fmpq, normal_turn, number_system
+from .exprtree import Const, Node
 
 
 class Configuration:
@@ -98,6 +100,8 @@ def _system_and_values(exprs: list[Node], owners, turns, source: str):
             spec, slot = owners[index]
             raise _locate(err, spec, slot, source) from None
         raise err.located(source) from None
+    if isinstance(system, RationalSystem) and all(type(e) is Const for e in exprs):
+        return system, [fmpq(e.value.numerator, e.value.denominator) for e in exprs]
     values = []
     for expr, (spec, slot) in zip(exprs, owners):
         try:
@@ -153,19 +157,33 @@ def from_file(config_file: ConfigFile) -> Configuration:
     return config
 
 
+@contextmanager
+def no_cycle_collection():
+    """Pause the cyclic garbage collector: reading and analysing build millions of small
+    acyclic objects, and the collector's passes over them doubled the running time."""
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was_enabled:
+            gc.enable()
+
+
 def load(path) -> Configuration:
     """Read, evaluate and validate a configuration file (``"-"`` is standard input)."""
-    return from_file(read_config(path))
+    with no_cycle_collection():
+        return from_file(read_config(path))
 
 
 def check_distinct(config: Configuration) -> None:
     """Raise :class:`InputError` naming the first two indices of coincident points."""
     seen: dict = {}
     keys = config.polar if config.polar is not None else config.points
-    for i, key in enumerate(keys):
-        if config.polar is not None and key[0] == 0:
-            key = (key[0], fmpq(0))
-        j = seen.setdefault(key, i)
+    for i, (a, b) in enumerate(keys):
+        if config.polar is not None and a == 0:
+            b = fmpq(0)                      # every angle names the origin
+        j = seen.setdefault((exact_key(a), exact_key(b)), i)
         if j != i:
             raise InputError(f"points {j} and {i} coincide", config.source, _line(config, i))
 

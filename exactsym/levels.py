@@ -15,8 +15,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .configuration import Configuration
-from .exact import fmpq
+from .configuration import Configuration, no_cycle_collection
+from .exact import exact_key, exact_sorted, fmpq
 from .geometry import angular_sort, squared_distance
 from .sec import Circle, smallest_enclosing_circle
 
@@ -52,23 +52,31 @@ def polar_sec(polar) -> Circle | None:
 
 def rings(config: Configuration) -> Rings:
     """The SEC and the concentric polygons of ``config``."""
+    with no_cycle_collection():
+        return _rings(config)
+
+
+def _rings(config: Configuration) -> Rings:
     if config.polar is not None:
         circle = polar_sec(config.polar)
         if circle is not None:
             return Rings(circle, _polar_levels(config.polar), True)
     points = list(config.points)
     circle = smallest_enclosing_circle(points)
+    return Rings(circle, _group_levels([squared_distance(circle.centre, p) for p in points],
+                                       lambda members: angular_sort(circle.centre, points, members)),
+                 False)
+
+
+def _group_levels(radii_squared: list, order_level) -> tuple[Level, ...]:
+    """Levels from each point's squared radius; ``order_level`` sorts one level's indices."""
     groups: dict = {}
-    for i, p in enumerate(points):
-        groups.setdefault(squared_distance(circle.centre, p), []).append(i)
-    levels = tuple(Level(r2, tuple(angular_sort(circle.centre, points, groups[r2])))
-                   for r2 in sorted(groups))
-    return Rings(circle, levels, False)
+    for i, r2 in enumerate(radii_squared):
+        groups.setdefault(exact_key(r2), [r2]).append(i)
+    return tuple(Level(group[0], tuple(order_level(group[1:]) if len(group) > 2 else group[1:]))
+                 for group in exact_sorted(list(groups.values()), key=lambda g: g[0]))
 
 
 def _polar_levels(polar) -> tuple[Level, ...]:
-    groups: dict = {}
-    for i, (r2, _) in enumerate(polar):
-        groups.setdefault(r2, []).append(i)
-    return tuple(Level(r2, tuple(sorted(groups[r2], key=lambda i: polar[i][1])))
-                 for r2 in sorted(groups))
+    return _group_levels([r2 for r2, _ in polar],
+                         lambda members: sorted(members, key=lambda i: polar[i][1]))

@@ -64,9 +64,7 @@ def _welzl(points, order, contains, circle_of):
     return circle
 
 
-def _float_support(points, order) -> tuple[int, ...]:
-    fx = [float(p[0]) for p in points]
-    fy = [float(p[1]) for p in points]
+def _float_support(points, order, fx, fy) -> tuple[int, ...]:
 
     def circle_of(support):
         if len(support) == 1:
@@ -106,7 +104,7 @@ def sec_is_minimal(points, circle: Circle) -> bool:
     return not (Turn.LEFT in turns and Turn.RIGHT in turns)
 
 
-def _exact_contains_all(points, circle: Circle) -> bool:
+def _exact_contains_all(points, circle: Circle, fx, fy) -> bool:
     """Every point inside or on ``circle``.  A float test with a proven error bound
     (relative 2^-40, far above the few ulps it can be off, plus an absolute term for
     underflow) clears the points well inside; the rest are decided exactly.  A point
@@ -114,8 +112,7 @@ def _exact_contains_all(points, circle: Circle) -> bool:
     cx, cy = circle.centre
     r2 = circle.radius_squared
     fcx, fcy, fr2 = float(cx), float(cy), float(r2)
-    for p in points:
-        px, py = float(p[0]), float(p[1])
+    for p, px, py in zip(points, fx, fy):
         d2 = (px - fcx) ** 2 + (py - fcy) ** 2
         slack = ((abs(px) + abs(fcx)) ** 2 + (abs(py) + abs(fcy)) ** 2 + abs(fr2)) * 2.0 ** -40 + 1e-290
         if d2 + slack < fr2:
@@ -136,8 +133,10 @@ def smallest_enclosing_circle(points: list[Point]) -> Circle:
     order = list(range(n))
     random.Random(_SEED).shuffle(order)
     try:
-        guess = _circle(points, _float_support(points, order))
-        if sec_is_minimal(points, guess) and _exact_contains_all(points, guess):
+        fx = [float(p[0]) for p in points]
+        fy = [float(p[1]) for p in points]
+        guess = _circle(points, _float_support(points, order, fx, fy))
+        if sec_is_minimal(points, guess) and _exact_contains_all(points, guess, fx, fy):
             return _canonical(points, guess)
     except (ValueError, OverflowError, ZeroDivisionError):
         pass

@@ -10,8 +10,9 @@ from flint import fmpq
 from .evaluate import (FieldSystem, RationalSystem, evaluate, evaluate_all, normal_turn,
                        number_system, rational_cos_turn, rational_sqrt)
 from .field import FieldElement, NumberField, as_fmpq, sign
+from .ordering import exact_key, exact_sorted
 from .text import expression_text, number_text, rational_text
 
 __all__ = ["fmpq", "sign", "FieldElement", "NumberField", "FieldSystem", "RationalSystem",
            "number_system", "evaluate", "evaluate_all", "number_text", "rational_text",
-           "expression_text", "as_fmpq", "normal_turn", "rational_cos_turn", "rational_sqrt"]
+           "expression_text", "as_fmpq", "exact_key", "exact_sorted", "normal_turn", "rational_cos_turn", "rational_sqrt"]
