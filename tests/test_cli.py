@@ -63,6 +63,8 @@ BAD = {
     "huge-exponent.txt": "2^100000000 1\n",
     "deep.txt": "(" * 5000 + "1" + ")" * 5000 + " 1\n",
     "python.txt": "__import__('os').system('echo pwned') 1\n",
+    "power-tower.txt": "((2^10000)^10000)^10000 1\n",
+    "field-power.txt": "(1+sqrt(2))^10000000 1\n",
     "fat.toml": 'format = 1\nmodel = "fat"\npoints = [["0","0"], ["1","1"]]\n',
     "negative-radius.toml": 'format = 1\npoints = [{ r = "-1", turn = "0" }]\n',
 }
@@ -103,3 +105,11 @@ def test_standard_input_and_console_entry_point():
                           input="0 0\n4 0\n0 3\n", capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
     assert json.loads(proc.stdout)["sec"] == {"center": ["2", "3/2"], "radius_squared": "25/4"}
+
+
+def test_long_flat_sums_evaluate(tmp_path, capsys):
+    """A 1,200-term sum is a tree 1,200 levels deep: evaluated, not a RecursionError."""
+    f = tmp_path / "sum.txt"
+    f.write_text("+".join(["sqrt(2)"] * 1200) + ", 0\n0 1\n")
+    code, out, err = run(capsys, "check", str(f), "--json")
+    assert code == 0, err

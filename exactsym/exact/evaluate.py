@@ -17,6 +17,7 @@ offending node's offset.
 
 from __future__ import annotations
 
+import sys
 from fractions import Fraction
 from typing import Iterable, Sequence
 
@@ -148,6 +149,34 @@ def _collect(node: Node, atoms: list) -> None:
 
 
 # ---------------------------------------------------------------- evaluation
+#: Bound on the size of a power's result, so that ``(2^10000)^10000`` is an error, not a hang.
+MAX_POWER_BITS = 1_000_000
+
+
+def _height_bits(x) -> int:
+    """Bits of the largest numerator or denominator in ``x`` (a rational or field element)."""
+    if isinstance(x, FieldElement):
+        coeffs = x.poly.coeffs() or [fmpq(0)]
+        return max(int(c.p).bit_length() + int(c.q).bit_length() for c in coeffs)
+    x = as_fmpq(x)
+    return int(x.p).bit_length() + int(x.q).bit_length()
+
+
+class _DeepTrees:
+    """Expression trees may be thousands of levels deep (a long flat sum is a left-deep
+    tree): raise the recursion limit while walking them.  Python 3.11 runs
+    Python-to-Python calls without growing the C stack, so this is safe."""
+
+    LIMIT = 40_000
+
+    def __enter__(self):
+        self.saved = sys.getrecursionlimit()
+        sys.setrecursionlimit(max(self.saved, self.LIMIT))
+
+    def __exit__(self, *exc):
+        sys.setrecursionlimit(self.saved)
+
+
 def _evaluate(node: Node, system):
     """Evaluate ``node`` in ``system`` (RationalSystem raises ValueError on irrational atoms)."""
     if isinstance(node, Const):
@@ -170,6 +199,9 @@ def _evaluate(node: Node, system):
         base = _evaluate(node.base, system)
         if node.exponent < 0 and base == 0:
             raise ExpressionError("division by zero (zero to a negative power)", offset=node.offset)
+        if _height_bits(base) * abs(node.exponent) > MAX_POWER_BITS:
+            raise ExpressionError(f"power too large: the result would need more than "
+                                  f"{MAX_POWER_BITS} bits", offset=node.offset)
         return base ** node.exponent
     if isinstance(node, Trig):
         turn = as_fmpq(node.pi_multiple) / 2
@@ -195,6 +227,11 @@ def number_system(exprs: Iterable[Node], turns: Iterable[fmpq] = ()):
     file location) for a root of a negative rational, and
     :class:`FieldTooLargeError` when the numbers need too large a field.
     """
+    with _DeepTrees():
+        return _number_system(exprs, turns)
+
+
+def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
     atoms: list = []
     for index, expr in enumerate(exprs):
         try:
@@ -231,13 +268,15 @@ def number_system(exprs: Iterable[Node], turns: Iterable[fmpq] = ()):
 
 def evaluate(node: Node, system):
     """The exact value of ``node`` in a system from :func:`number_system` covering it."""
-    return _evaluate(node, system)
+    with _DeepTrees():
+        return _evaluate(node, system)
 
 
 def evaluate_all(exprs: Sequence[Node], turns: Sequence[fmpq] = ()):
     """``(system, values)``: one number system for all ``exprs`` and their exact values."""
     system = number_system(exprs, turns)
-    return system, [_evaluate(expr, system) for expr in exprs]
+    with _DeepTrees():
+        return system, [_evaluate(expr, system) for expr in exprs]
 
 
 __all__ = ["RationalSystem", "FieldSystem", "number_system", "evaluate", "evaluate_all",
