@@ -56,6 +56,8 @@ def _sum_text(terms: list[tuple[fmpq, str]]) -> str:
             body = term
         elif mag.q == 1:
             body = f"{mag.p}*{term}"
+        elif mag.p == 1:
+            body = f"{term}/{mag.q}"
         else:
             body = f"{mag.p}*{term}/{mag.q}"
         if not out:
