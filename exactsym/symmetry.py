@@ -1,0 +1,614 @@
+"""Ground truth: the symmetry group of a configuration as a finite subgroup of O(2).
+
+Independent of the paper's algorithms (``../shared/style.md``: ground truth and
+paper-faithful code never share logic).  Every isometry mapping a finite set P
+onto itself fixes the centre C of its smallest enclosing circle (the SEC of P is
+unique, so it is mapped onto itself).  About C, the points of P lie on *rays*;
+reading the rays counter-clockwise gives a cyclic string of symbols
+
+    (squared radii of the points on ray i, angle from ray i to ray i + 1)
+
+and an isometry fixing C maps P onto itself iff it maps this string onto
+itself: the rotations are the cyclic periods of the string, the reflections the
+occurrences in the doubled string of the string read clockwise (ray i with the
+angle to its *previous* ray).  Both are found with the prefix function (KMP) in
+linear time (or with one list comparison when the least symbol occurs once) after
+an O(n log n) angular sort, so the whole computation is O(n log n) exact
+operations.  Floats never decide anything: the angular sort is an exact sort,
+which a float pre-sort only speeds up (:func:`sort_by_exact_keys`).
+
+The centre is the SEC centre on both paths (rather than the centroid, which every
+symmetry fixes too): the levels, and so the sparsest level of ``reference``, are
+about it; one point set then gets the same ordering whether it is given in polar
+or Cartesian form; and the exact centroid of many random rationals has a
+denominator of thousands of digits.
+
+Angles are held as exact, similarity-invariant keys that increase with the
+angle: on the *polar path* (``rings(config).polar``: C is the origin and every
+point is ``(r^2, turn)``) the rational turn itself; on the *Cartesian path* the
+"diamond angle" :func:`pseudo_angle` of a vector (a rational function of its
+coordinates, monotone in its angle), which for the angle between two rays u, v is
+taken of ``(u . v, u x v)``.  Since both keys order angles as angles, the
+canonical labelling (:attr:`SymmetryGroup.ordering`) of one point set is the same
+whichever path computes it.
+
+Canonical labelling (``ordering``): among the rotations of the string read
+counter-clockwise and of the string read clockwise, take the lexicographically
+least (symbols ordered by their radius tuple, then by their angle key; Booth's
+algorithm); list the point at C first (if any), then the rays from the starting
+ray in that orientation, the points of each ray by increasing distance from C.
+Scaling multiplies every radius by one positive factor and keeps angles, so
+this order is unchanged by any similarity, and a reflection only exchanges the
+two orientations.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Iterator, Sequence
+
+from .configuration import Configuration
+from .exact import fmpq
+from .levels import Rings, rings as compute_rings
+
+__all__ = ["Isometry", "SymmetryGroup", "symmetry_group", "pseudo_angle", "least_rotation",
+           "cyclic_period", "occurrences", "sort_by_exact_keys"]
+
+
+@dataclass(frozen=True)
+class Isometry:
+    """A symmetry of a configuration, exact.
+
+    ``g(p) = centre + M (p - centre)``.  On the polar path ``turn`` says which
+    one: a rotation by ``turn`` full turns (counter-clockwise), or the reflection
+    ``t -> 2*turn - t`` in the mirror line at angle ``turn`` (in ``[0, 1/2)``);
+    ``matrix`` is then None.  On the Cartesian path ``matrix`` is the exact
+    orthogonal matrix ``((a, b), (c, d))`` and ``turn`` is None.
+    ``permutation[i]`` is the index of the image of point ``i``.
+    """
+    kind: str
+    centre: tuple
+    turn: fmpq | None
+    matrix: tuple | None
+    permutation: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class _Layout:
+    """The rays about the centre, counter-clockwise (internal to this module)."""
+    centre: tuple
+    reference: int               # the point whose image fixes a Cartesian matrix
+    centre_index: int | None     # the point at the centre, if any
+    rays: tuple                  # tuple of tuples of indices, each by increasing radius
+    ray_turns: tuple | None      # polar path: the turn of each ray
+    points: tuple | None         # Cartesian path: config.points
+    n: int
+    period: int                  # rotation by `period` rays is the rotation by 1/k turn
+    mirror_offsets: tuple        # reflections map ray i to ray (j - i) mod m, j in this tuple
+
+
+@dataclass(frozen=True)
+class SymmetryGroup:
+    """The symmetry group of a configuration (``exactsym check``: ``group``, ``orderable``,
+    ``ordering``, ``leader`` of ``../shared/spec/cli-1.md``).
+
+    ``name``: ``"Ck"`` (k rotations, no mirror), ``"Dk"`` (k rotations, k mirrors)
+    or ``"O2"`` for a single point (then ``rotations == mirrors == 0`` stand for
+    "infinitely many" and :meth:`symmetries` yields the identity only).
+    ``centre`` is fixed by every symmetry (the SEC centre).  ``reference``: a
+    point, not at the centre, on the sparsest level (fewest points; the nearest
+    such level on a tie); the Cartesian matrices are built from its images.
+    ``orderable``: no symmetry moves any point (C1; D1 of a collinear set, whose
+    mirror is its own line; a single point).  ``ordering``: the canonical
+    labelling when orderable, else None.  ``leader``: the first of ``ordering``
+    when orderable; else the point at the centre; else, for D1, the point on the
+    mirror chosen canonically; else None (no point is fixed by every symmetry).
+    """
+    name: str
+    rotations: int
+    mirrors: int
+    centre: tuple
+    polar: bool
+    rotation_generator: Isometry | None
+    mirror: Isometry | None
+    reference: int | None
+    orderable: bool
+    ordering: tuple[int, ...] | None
+    leader: int | None
+    _layout: _Layout | None = field(default=None, repr=False, compare=False)
+
+    def symmetries(self) -> Iterator[Isometry]:
+        """All ``rotations + mirrors`` symmetries, generated lazily: the identity first,
+        then the rotations by ``j/k`` turn (j = 1..k-1), then the reflections."""
+        layout = self._layout
+        if layout is None:          # O2: one point
+            yield _identity(self)
+            return
+        m = len(layout.rays)
+        for j in range(self.rotations):
+            yield _rotation(layout, j * layout.period % m)
+        for offset in layout.mirror_offsets:
+            yield _reflection(layout, offset)
+
+
+# ---------------------------------------------------------------- exact angle keys
+
+def pseudo_angle(x, y):
+    """The diamond angle of the non-zero vector ``(x, y)``: an exact number in [0, 4)
+    that strictly increases with the angle of the vector in [0, 2 pi), equal for equal
+    directions, unchanged when the vector is multiplied by a positive number."""
+    if y >= 0:
+        if x > 0:
+            return y / (x + y)
+        return 1 + x / (x - y)              # x <= 0, y >= 0: 1 at (0, +), 2 at (-, 0)
+    if x < 0:
+        return 2 + y / (x + y)              # both negative: (2, 3)
+    return 3 + x / (x - y)                  # x >= 0, y < 0: 3 at (0, -)
+
+
+# ---------------------------------------------------------------- strings
+
+def _prefix_function(s: Sequence) -> list[int]:
+    pi = [0] * len(s)
+    k = 0
+    for i in range(1, len(s)):
+        c = s[i]
+        while k and s[k] != c:
+            k = pi[k - 1]
+        if s[k] == c:
+            k += 1
+        pi[i] = k
+    return pi
+
+
+def cyclic_period(s: Sequence) -> int:
+    """The least p > 0 with ``s`` equal to itself rotated by p (p divides ``len(s)``)."""
+    m = len(s)
+    if m == 0:
+        return 1
+    p = m - _prefix_function(s)[-1]
+    return p if m % p == 0 else m
+
+
+def occurrences(pattern: Sequence, cyclic: Sequence) -> list[int]:
+    """The j in ``range(len(cyclic))`` with ``cyclic`` rotated by j equal to ``pattern``
+    (same length; Knuth-Morris-Pratt on the doubled string)."""
+    m = len(pattern)
+    if m != len(cyclic):
+        return []
+    if m == 0:
+        return [0]
+    pi = _prefix_function(pattern)
+    found, k = [], 0
+    text = list(cyclic) + list(cyclic[:-1])
+    for i, c in enumerate(text):
+        while k and pattern[k] != c:
+            k = pi[k - 1]
+        if pattern[k] == c:
+            k += 1
+        if k == m:
+            found.append(i - m + 1)
+            k = pi[k - 1]
+    return found
+
+
+def least_rotation(ids: Sequence[int], values: Sequence, candidates: Sequence[int] | None = None
+                   ) -> int:
+    """Booth's algorithm: the least j such that the rotation of the string by j is
+    lexicographically least.  ``ids[i]`` decides equality of symbols (equal ids iff
+    equal symbols), ``values[i]`` their order when they differ.  ``candidates``, when
+    given, must hold every position of the least symbol (it saves a pass over the
+    string when that symbol is unique, the usual case)."""
+    m = len(ids)
+    if m == 0:
+        return 0
+    pool = range(m) if candidates is None else candidates
+    low = min(pool, key=values.__getitem__)
+    if sum(1 for i in pool if ids[i] == ids[low]) == 1:    # a unique least symbol
+        return low
+    s = list(ids) + list(ids)
+    f = [-1] * (2 * m)
+    k = 0
+    for j in range(1, 2 * m):
+        sj = s[j]
+        i = f[j - k - 1]
+        while i != -1 and sj != s[k + i + 1]:
+            if values[j % m] < values[(k + i + 1) % m]:
+                k = j - i - 1
+            i = f[i]
+        if sj != s[k + i + 1]:          # here i == -1
+            if values[j % m] < values[k % m]:
+                k = j
+            f[j - k] = -1
+        else:
+            f[j - k] = i + 1
+    return k % m
+
+
+# ---------------------------------------------------------------- the rays
+
+def sort_by_exact_keys(indices: list[int], keys: Sequence) -> None:
+    """Sort ``indices`` in place by ``keys[i]``, exactly (a stable sort).
+
+    The exact sort decides everything.  For many ``fmpq`` keys it is preceded by a sort
+    on the keys' float values, which costs little (comparisons in C) and leaves the list
+    nearly sorted, so that the exact sort (Timsort, which finds the sorted runs) needs
+    little more than one exact comparison per element instead of log2(n): a float that
+    is off, or equal for unequal keys, only leaves more work to the exact sort.
+    """
+    if len(indices) > 64 and isinstance(keys[indices[0]], fmpq):
+        try:
+            approx = [float(keys[i]) for i in indices]      # a filter: the sort below decides
+        except (OverflowError, ValueError):
+            approx = None
+        if approx is not None:
+            order = sorted(range(len(indices)), key=approx.__getitem__)
+            indices[:] = [indices[a] for a in order]
+    indices.sort(key=keys.__getitem__)
+
+
+def _polar_rays(polar):
+    """``(centre_index, rays, ray_turns)`` of a polar configuration about the origin."""
+    n = len(polar)
+    centre_index = None
+    turns = [t for _, t in polar]
+    idx = []
+    for i in range(n):
+        if polar[i][0] == 0:
+            centre_index = i
+        else:
+            idx.append(i)
+    sort_by_exact_keys(idx, turns)
+    rays, ray_turns = [], []
+    start = 0
+    for a in range(1, len(idx) + 1):
+        if a == len(idx) or turns[idx[a]] != turns[idx[start]]:
+            ray = idx[start:a]
+            if len(ray) > 1:
+                ray.sort(key=lambda i: polar[i][0])
+            rays.append(tuple(ray))
+            ray_turns.append(turns[idx[start]])
+            start = a
+    radii = [tuple(polar[i][0] for i in ray) for ray in rays]
+    m = len(rays)
+    gaps = [ray_turns[i + 1] - ray_turns[i] for i in range(m - 1)]
+    if m:
+        gaps.append(ray_turns[0] + 1 - ray_turns[-1])
+    return centre_index, rays, ray_turns, radii, gaps
+
+
+def _pseudo_angle_of_integers(x, y) -> fmpq:
+    """:func:`pseudo_angle` of a non-zero vector of integers (``int`` or ``fmpz``), with
+    one ``fmpq`` construction: the same exact number."""
+    if y >= 0:
+        return fmpq(y, x + y) if x > 0 else fmpq(2 * x - y, x - y)
+    return fmpq(2 * x + 3 * y, x + y) if x < 0 else fmpq(4 * x - 3 * y, x - y)
+
+
+def _directions(points, centre, integers: bool):
+    """``(centre_index, idx, vectors, r2s, keys)``: for each point i off the centre (listed
+    in ``idx``) a vector pointing from the centre to it, its exact squared distance to
+    the centre and the pseudo-angle of the vector.
+
+    With ``integers`` (rational points and centre) each vector is scaled by its own
+    positive integer so that it has integer coordinates: angles and pseudo-angles do
+    not change, and integer arithmetic avoids a gcd after every operation."""
+    n = len(points)
+    centre_index = None
+    keys, r2s, vectors = [None] * n, [None] * n, [None] * n
+    idx = []
+    cx, cy = centre
+    if integers:
+        den = cx.q * cy.q // cx.q.gcd(cy.q)                 # centre = (a, b) / den
+        a, b = cx.p * (den // cx.q), cy.p * (den // cy.q)
+        for i in range(n):
+            x, y = points[i]
+            qx, qy = x.q, y.q
+            dx = (x.p * den - a * qx) * qy                 # (x - cx) * qx * qy * den
+            dy = (y.p * den - b * qy) * qx
+            if not dx and not dy:
+                centre_index = i
+                continue
+            scale = qx * qy * den
+            vectors[i] = (dx, dy)
+            r2s[i] = fmpq(dx * dx + dy * dy, scale * scale)
+            if dy >= 0:
+                keys[i] = fmpq(dy, dx + dy) if dx > 0 else fmpq(2 * dx - dy, dx - dy)
+            else:
+                keys[i] = fmpq(2 * dx + 3 * dy, dx + dy) if dx < 0 else \
+                    fmpq(4 * dx - 3 * dy, dx - dy)
+            idx.append(i)
+    else:
+        for i in range(n):
+            x, y = points[i]
+            dx, dy = x - cx, y - cy
+            if dx == 0 and dy == 0:
+                centre_index = i
+                continue
+            vectors[i] = (dx, dy)
+            r2s[i] = dx * dx + dy * dy
+            keys[i] = pseudo_angle(dx, dy)
+            idx.append(i)
+    return centre_index, idx, vectors, r2s, keys
+
+
+def _cartesian_rays(points, centre, integers: bool | None = None):
+    """``(centre_index, rays, radii, gaps)`` about ``centre``: rays by pseudo-angle.
+    ``integers`` (default: when the points and the centre are ``fmpq``) chooses the
+    integer arithmetic of :func:`_directions`; both ways give the same result."""
+    if integers is None:
+        integers = isinstance(centre[0], fmpq) and isinstance(centre[1], fmpq) and \
+            isinstance(points[0][0], fmpq)
+    centre_index, idx, vectors, r2s, keys = _directions(points, centre, integers)
+    sort_by_exact_keys(idx, keys)
+    groups: list[list[int]] = []
+    last = None
+    for i in idx:
+        key = keys[i]
+        if key == last:
+            groups[-1].append(i)
+        else:
+            groups.append([i])
+            last = key
+    rays, radii = [], []
+    for ray in groups:
+        if len(ray) == 1:
+            rays.append((ray[0],))
+            radii.append((r2s[ray[0]],))
+        else:
+            ray.sort(key=r2s.__getitem__)
+            rays.append(tuple(ray))
+            radii.append(tuple([r2s[i] for i in ray]))
+    m = len(rays)
+    angle = _pseudo_angle_of_integers if integers else pseudo_angle
+    gaps = []
+    for a in range(m):
+        (ux, uy), (vx, vy) = vectors[rays[a][0]], vectors[rays[(a + 1) % m][0]]
+        gaps.append(angle(ux * vx + uy * vy, ux * vy - uy * vx))
+    return centre_index, rays, radii, gaps
+
+
+# ---------------------------------------------------------------- the group
+
+def symmetry_group(config: Configuration, rings: Rings | None = None) -> SymmetryGroup:
+    """The symmetry group of ``config`` (all isometries of the plane mapping its point
+    set onto itself), with the canonical ordering and the leader of
+    ``../shared/spec/cli-1.md``.  ``rings`` (from :func:`exactsym.levels.rings`) is
+    computed when not given.  O(n log n) exact operations; never raises on a valid
+    configuration.
+
+    The centre is ``rings.sec.centre``.  Given ``Rings`` whose centre is not the SEC
+    centre of ``config`` (say, that of a larger configuration), the result is the group
+    of the isometries that fix that centre and map the points onto themselves, with
+    ``reference`` taken from the sparsest of ``rings.levels``.
+    """
+    ring = rings if rings is not None else compute_rings(config)
+    centre = ring.sec.centre
+    n = config.n
+    if n == 1 and (not config.polar[0][0] if ring.polar else config.points[0] == centre):
+        return SymmetryGroup("O2", 0, 0, centre, ring.polar, None, None, None, True, (0,), 0)
+
+    if ring.polar:
+        centre_index, rays, ray_turns, radii, gaps = _polar_rays(config.polar)
+        points = None
+    else:
+        points = config.points
+        centre_index, rays, radii, gaps = _cartesian_rays(points, centre)
+        ray_turns = None
+    m = len(rays)
+
+    # symbols, interned: equal ids iff equal symbols; values are compared only lazily
+    ray_ids, gap_ids = _intern(radii, True), _intern(gaps, False)
+    width = max(gap_ids) + 1
+    ccw = [ray_ids[i] * width + gap_ids[i] for i in range(m)]
+    cw = [ray_ids[-i % m] * width + gap_ids[(-i - 1) % m] for i in range(m)]
+    ccw_values, cw_values = _Symbols(radii, gaps, False), _Symbols(radii, gaps, True)
+
+    # canonical labelling: least rotation over both orientations
+    least = ray_ids[radii.index(min(radii))]          # the least symbols are on these rays:
+    rays_least = [r for r in range(m) if ray_ids[r] == least]
+    s = least_rotation(ccw, ccw_values, rays_least)
+    t = least_rotation(cw, cw_values, [-r % m for r in rays_least])
+    use_cw = _rotation_less(cw, cw_values, t, ccw, ccw_values, s)
+
+    # rotations: the periods of ccw; reflections: ray i -> ray (j - i) mod m for the j
+    # with ccw rotated by j equal to cw.  When the least symbol occurs once in ccw (the
+    # usual case) no rotation but the identity keeps it in place, and a reflection must
+    # carry its one place in cw to its one place in ccw: no string search is needed.
+    if ccw.count(ccw[s]) == 1:
+        period = m
+        if ccw[s] != cw[t]:
+            offsets: tuple = ()
+        else:
+            j = (s - t) % m
+            offsets = (j,) if ccw[j:] + ccw[:j] == cw else ()
+    else:
+        period = cyclic_period(ccw)
+        offsets = tuple(occurrences(cw, ccw))
+    k = m // period
+    mirrors = len(offsets)
+
+    if use_cw:
+        ray_order = [(-(t + a)) % m for a in range(m)]
+    else:
+        ray_order = [(s + a) % m for a in range(m)]
+    labelling = ([centre_index] if centre_index is not None else []) + \
+        [i for r in ray_order for i in rays[r]]
+
+    collinear = m == 1 or (m == 2 and all(_is_half_turn(g, ring.polar) for g in gaps))
+    orderable = k == 1 and (mirrors == 0 or collinear)
+    ordering = tuple(labelling) if orderable else None
+    reference = _reference(ring, labelling, centre_index)
+
+    if orderable:
+        leader = labelling[0]
+    elif centre_index is not None:
+        leader = centre_index
+    elif k == 1 and mirrors == 1:
+        leader = _leader_on_mirror(rays, ccw, ccw_values, offsets[0])
+    else:
+        leader = None
+
+    layout = _Layout(centre, reference, centre_index, tuple(rays),
+                     tuple(ray_turns) if ray_turns is not None else None, points, n, period,
+                     offsets)
+    return SymmetryGroup(f"{'D' if mirrors else 'C'}{k}", k, mirrors, centre, ring.polar,
+                         _rotation(layout, period % m) if k > 1 else None,
+                         _reflection(layout, offsets[0]) if offsets else None,
+                         reference, orderable, ordering, leader, layout)
+
+
+class _Symbols:
+    """The symbols ``(radii of ray r, angle to the next ray)`` read counter-clockwise, or
+    clockwise (``(radii of ray -i, angle from ray -i-1 to ray -i)``), made on demand."""
+
+    __slots__ = ("radii", "gaps", "clockwise")
+
+    def __init__(self, radii, gaps, clockwise: bool):
+        self.radii, self.gaps, self.clockwise = radii, gaps, clockwise
+
+    def __getitem__(self, i: int):
+        m = len(self.radii)
+        if self.clockwise:
+            return (self.radii[-i % m], self.gaps[(-i - 1) % m])
+        return (self.radii[i], self.gaps[i])
+
+    def __len__(self) -> int:
+        return len(self.radii)
+
+
+def _intern(values, tuples: bool) -> list[int]:
+    """Small integers, equal iff the values (numbers, or tuples of numbers) are equal.
+    An ``fmpq`` is keyed by its (reduced, hence canonical) numerator and denominator:
+    ``hash(fmpq)`` goes through ``fractions.Fraction`` and costs about 2 us."""
+    first = values[0][0] if tuples else values[0]
+    ids: dict = {}
+    if isinstance(first, fmpq):
+        if tuples:
+            keys = (tuple([(x.p, x.q) for x in v]) if len(v) > 1 else (v[0].p, v[0].q)
+                    for v in values)
+        else:
+            keys = ((x.p, x.q) for x in values)
+    else:
+        keys = iter(values)
+    return [ids.setdefault(key, len(ids)) for key in keys]
+
+
+def _rotation_less(a_ids, a_vals, a_start, b_ids, b_vals, b_start) -> bool:
+    """Is the rotation of string a by ``a_start`` lexicographically less than that of b?"""
+    m = len(a_ids)
+    for d in range(m):
+        i, j = (a_start + d) % m, (b_start + d) % m
+        if a_ids[i] != b_ids[j]:
+            return a_vals[i] < b_vals[j]
+    return False
+
+
+def _is_half_turn(gap, polar: bool) -> bool:
+    return gap == (fmpq(1, 2) if polar else 2)
+
+
+def _reference(ring: Rings, labelling: list[int], centre_index: int | None) -> int | None:
+    """The first point, in the canonical labelling, of the sparsest level off the centre
+    (fewest points; the nearest on a tie)."""
+    levels = [level for level in ring.levels if level.radius_squared and level.points]
+    if levels:
+        sizes = [len(level.points) for level in levels]
+        members = set(levels[sizes.index(min(sizes))].points)
+        for i in labelling:
+            if i in members and i != centre_index:
+                return i
+    return next((i for i in labelling if i != centre_index), None)
+
+
+def _leader_on_mirror(rays, ids, values, offset: int) -> int | None:
+    """D1: the points on the mirror are those on the rays it fixes (2r = offset mod m).
+    Among those rays, the one whose counter-clockwise reading is least (that reading
+    equals the clockwise one, by the mirror; two fixed rays cannot read alike, or the
+    half turn would be a symmetry); on it, the point nearest the centre."""
+    m = len(rays)
+    fixed = [r for r in range(m) if (2 * r - offset) % m == 0]
+    if not fixed:
+        return None
+    best = fixed[0]
+    for r in fixed[1:]:
+        if _rotation_less(ids, values, r, ids, values, best):
+            best = r
+    return rays[best][0]
+
+
+# ---------------------------------------------------------------- isometries
+
+def _identity(group: SymmetryGroup) -> Isometry:
+    if group.polar:
+        return Isometry("rotation", group.centre, fmpq(0), None, (0,))
+    one, zero = _one_zero(group.centre)
+    return Isometry("rotation", group.centre, None, ((one, zero), (zero, one)), (0,))
+
+
+def _one_zero(centre):
+    zero = centre[0] * 0
+    return zero + 1, zero
+
+
+def _permutation(layout: _Layout, image_ray) -> tuple[int, ...]:
+    perm = list(range(layout.n))
+    rays = layout.rays
+    for r, ray in enumerate(rays):
+        target = rays[image_ray(r)]
+        for i, j in zip(ray, target):
+            perm[i] = j
+    return tuple(perm)
+
+
+def _reference_image(layout: _Layout, image_ray):
+    """``(u, v)``: the reference point and its image, relative to the centre."""
+    ref = layout.reference
+    for r, ray in enumerate(layout.rays):
+        if ref in ray:
+            image = layout.rays[image_ray(r)][ray.index(ref)]
+            break
+    cx, cy = layout.centre
+    a, b = layout.points[ref], layout.points[image]
+    return (a[0] - cx, a[1] - cy), (b[0] - cx, b[1] - cy)
+
+
+def _rotation(layout: _Layout, shift: int) -> Isometry:
+    """The rotation mapping ray r to ray r + shift (counter-clockwise by the angle from
+    ray 0 to ray ``shift``)."""
+    m = len(layout.rays)
+
+    def image_ray(r):
+        return (r + shift) % m
+
+    perm = _permutation(layout, image_ray)
+    if layout.ray_turns is not None:
+        turns = layout.ray_turns
+        return Isometry("rotation", layout.centre, turns[shift] - turns[0], None, perm)
+    if shift == 0:
+        one, zero = _one_zero(layout.centre)
+        return Isometry("rotation", layout.centre, None, ((one, zero), (zero, one)), perm)
+    (ux, uy), (vx, vy) = _reference_image(layout, image_ray)
+    u2 = ux * ux + uy * uy
+    cos, sin = (ux * vx + uy * vy) / u2, (ux * vy - uy * vx) / u2
+    return Isometry("rotation", layout.centre, None, ((cos, -sin), (sin, cos)), perm)
+
+
+def _reflection(layout: _Layout, offset: int) -> Isometry:
+    """The reflection mapping ray r to ray offset - r."""
+    m = len(layout.rays)
+
+    def image_ray(r):
+        return (offset - r) % m
+
+    perm = _permutation(layout, image_ray)
+    if layout.ray_turns is not None:
+        turns = layout.ray_turns
+        axis = (turns[0] + turns[offset]) / 2
+        if axis >= fmpq(1, 2):
+            axis -= fmpq(1, 2)
+        return Isometry("reflection", layout.centre, axis, None, perm)
+    (ux, uy), (vx, vy) = _reference_image(layout, image_ray)
+    u2 = ux * ux + uy * uy
+    c, s = (ux * vx - uy * vy) / u2, (ux * vy + uy * vx) / u2
+    return Isometry("reflection", layout.centre, None, ((c, s), (s, -c)), perm)
