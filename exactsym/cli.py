@@ -111,6 +111,7 @@ PLUGINS: list[str] = [
     "exactsym.certify_cli",           # certify / verify
     "exactsym.paper.polygon_report",  # the paper, one polygon at a time
     "exactsym.paper.family_report",   # the paper on whole configurations, audit
+    "exactsym.cases_cli",             # cases: run the case library
 ]
 
 

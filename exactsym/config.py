@@ -37,6 +37,26 @@ EXPECT_KEYS: dict[str, type | tuple] = {
     "n": int,
     "sec_radius_squared": ExpressionText,
     "levels": int,
+    # the paper on each level polygon (exactsym.paper.polygon_report): a single value is the
+    # outermost level's, an array has one value per level, nearest first ("none" for null)
+    "paper_symmetric": (bool, list),
+    "paper_straight": (bool, list),
+    "paper_skew": (bool, list),
+    "paper_degree": (int, str, list),
+    "paper_type": (str, list),
+    "paper_lines": (int, list),
+    "paper_theorem1_symmetric": (bool, list),
+    "paper_loop_terminates": (bool, str, list),
+    "paper_def_straight": (bool, list),
+    "paper_def_skew": (bool, list),
+    "paper_def_mirrors": (int, list),
+    "paper_leader_sym": (int, str, list),
+    "paper_leader_sym_by_lines": (int, str, list),
+    "paper_leader_asym": (int, str, list),
+    "paper_leader_asym_mirrored": (int, str, list),
+    # the paper on the whole configuration (exactsym.paper.family_report)
+    "paper_leader": int,            # the robot ElectLeader elects; -1: none
+    "audit_agrees": bool,           # exactsym.audit finds no false statement
 }
 
 TOP_LEVEL_KEYS = ("format", "name", "notes", "model", "lemmas", "points", "expect")

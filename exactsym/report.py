@@ -51,7 +51,52 @@ EXPECT_CHECKS: dict[str, tuple[Callable[[dict], object], Callable[[object, objec
     "group": (lambda r: r.get("group"), lambda want, got: want == got),
     "paper_orderable": (lambda r: (r.get("paper") or {}).get("orderable"),
                         lambda want, got: want == got),
+    # the family layer (exactsym.paper.family_report): -1 stands for "no leader"
+    "paper_leader": (lambda r: None if "leader" not in (r.get("paper") or {}) else
+                     (-1 if r["paper"]["leader"] is None else r["paper"]["leader"]),
+                     lambda want, got: want == got),
+    "audit_agrees": (lambda r: (r.get("audit") or {}).get("agrees"),
+                     lambda want, got: want == got),
 }
+
+
+
+# [expect] paper_* keys of the paper's verdicts per level (exactsym.paper.polygon_report)
+def _paper_level_values(*path):
+    """Getter: the value at ``path`` in each level's ``"paper"`` entry ("none" for null),
+    nearest first; None when that report section has not run."""
+    def get(report):
+        out = []
+        for level in report["levels"]:
+            if "paper" not in level:
+                return None
+            value = level["paper"]
+            for key in path:
+                value = None if value is None else value.get(key)
+            out.append("none" if value is None else value)
+        return out
+    return get
+
+
+def _paper_level_check(want, got) -> bool:
+    """An array ``want`` has one value per level; a single value is the outermost level's."""
+    def same(a, b):
+        return isinstance(a, bool) == isinstance(b, bool) and str(a) == str(b)
+    if isinstance(want, list):
+        return len(want) == len(got) and all(same(a, b) for a, b in zip(want, got))
+    return bool(got) and same(want, got[-1])
+
+
+EXPECT_CHECKS.update({
+    f"paper_{key}": (_paper_level_values(*path), _paper_level_check) for key, path in {
+        "symmetric": ("symmetric",), "straight": ("straight",), "skew": ("skew",),
+        "degree": ("degree",), "type": ("type",), "lines": ("lines",),
+        "theorem1_symmetric": ("theorem1_symmetric",), "loop_terminates": ("loop_terminates",),
+        "def_straight": ("definition", "straight"), "def_skew": ("definition", "skew"),
+        "def_mirrors": ("definition", "mirrors"), "leader_sym": ("leader_sym",),
+        "leader_sym_by_lines": ("leader_sym_by_lines",),
+        "leader_asym": ("leader_asym", "+1"), "leader_asym_mirrored": ("leader_asym", "-1"),
+    }.items()})
 
 
 def failed_expectations(config: Configuration, report: dict) -> list[str]:

@@ -1,0 +1,91 @@
+"""``exactsym cases [--lemma LABEL] [DIR]``: run the case library.
+
+Every ``.toml`` / ``.txt`` file under DIR (default ``cases``, all subfolders) is loaded,
+checked (``check_report``) and its ``[expect]`` block compared with the report
+(``failed_expectations``).  One line per case: ``PASS`` or ``FAIL``, the path and the
+case's ``lemmas``; failures are explained on the following lines.  Exit 1 if any case
+fails, 0 otherwise; with ``--lemma`` only the cases tagged with that label run.
+
+The library function :func:`run_cases` does the same from Python (``tests/test_cases.py``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from .errors import InputError
+
+CASE_SUFFIXES = (".toml", ".txt")
+
+
+@dataclass(frozen=True)
+class CaseResult:
+    path: str
+    lemmas: tuple
+    failures: tuple
+
+    @property
+    def passed(self) -> bool:
+        return not self.failures
+
+
+def case_files(directory) -> list[Path]:
+    """The case files under ``directory`` (recursively), sorted."""
+    root = Path(directory)
+    if not root.is_dir():
+        raise InputError("no such directory of cases", str(directory))
+    return sorted(p for p in root.rglob("*") if p.suffix in CASE_SUFFIXES and p.is_file())
+
+
+def run_case(path) -> CaseResult:
+    """Load, check and compare one case (an unreadable case is a failure, not an exception)."""
+    from .configuration import load
+    from .report import check_report, failed_expectations
+    try:
+        config = load(path)
+    except InputError as err:
+        return CaseResult(str(path), (), (f"cannot be read: {err}",))
+    report = check_report(config, {"strings": False})
+    return CaseResult(str(path), tuple(config.lemmas), tuple(failed_expectations(config, report)))
+
+
+def run_cases(directory="cases", lemma: str | None = None) -> list[CaseResult]:
+    """Every case under ``directory`` (only those tagged ``lemma`` when given)."""
+    from .cli import _load_plugins
+    _load_plugins()
+    results = []
+    for path in case_files(directory):
+        result = run_case(path)
+        if lemma is None or lemma in result.lemmas:
+            results.append(result)
+    return results
+
+
+def _cmd_cases(args) -> int:
+    from .cli import EXIT_FALSE, EXIT_OK
+    results = run_cases(args.directory, args.lemma)
+    for result in results:
+        print(f"{'PASS' if result.passed else 'FAIL'}  {result.path}  "
+              f"[{', '.join(result.lemmas)}]")
+        for failure in result.failures:
+            print(f"      {failure}")
+    failed = sum(1 for r in results if not r.passed)
+    print(f"{len(results) - failed} passed, {failed} failed")
+    return EXIT_FALSE if failed else EXIT_OK
+
+
+def _register(sub) -> None:
+    cases = sub.add_parser("cases", help="run the case library (every file under DIR)")
+    cases.add_argument("directory", nargs="?", default="cases", metavar="DIR")
+    cases.add_argument("--lemma", metavar="LABEL", help="only the cases tagged with LABEL")
+
+
+def _install() -> None:
+    from . import cli
+    if _register not in cli.EXTRA_COMMANDS:
+        cli.EXTRA_COMMANDS.append(_register)
+    cli.COMMANDS["cases"] = _cmd_cases
+
+
+_install()

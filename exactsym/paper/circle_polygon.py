@@ -1,0 +1,229 @@
+"""Convex polygons inscribed in a circle about the centre C (Section 3).
+
+Section 3: "by convex polygon we mean such polygons which are inscribed in a
+circle".  A :class:`CirclePolygon` stores, for each vertex counter-clockwise, a
+label (the configuration point index, or any hashable label) and the exact
+*direction* of the vertex seen from C: a rational turn in ``[0, 1)`` on the polar
+path, or a non-zero exact vector ``(dx, dy)`` on the Cartesian path.
+
+Distances without square roots
+------------------------------
+The paper's strings (``CW_m``, ``ACW_m``, Section 3) are sequences of Euclidean
+distances.  All we ever do with them is test equality and compare them
+lexicographically, and both are preserved by *any strictly increasing map*
+applied to every element (the same map for every string compared).  So we keep
+an exact *key* that is a strictly increasing function of the distance:
+
+* **polar** (``metric = "angular-distance"``): two vertices on a common circle
+  at turns ``a, b`` are at chord ``2 r sin(pi d)`` with ``d = min(|a-b|, 1-|a-b|)``
+  in ``[0, 1/2]``; ``sin(pi d)`` is strictly increasing there, so the key is ``d``;
+* **Cartesian** (``metric = "signed-squared-cosine"``): for directions ``u, v``
+  with angle ``theta`` in ``[0, pi]`` the chord is ``2 r sin(theta/2)``, strictly
+  increasing in ``theta``; ``-cos(theta)`` is too, and so is
+  ``-sign(cos) cos^2`` = ``-sign(u.v) (u.v)^2 / (|u|^2 |v|^2)``: the key.
+
+The point m on an edge
+----------------------
+For ``m`` the midpoint of the edge ``(a, b)`` (where the perpendicular bisector
+of the edge, a line through C, meets the polygon) we use the point ``m'`` of the
+circle on the ray C->m.  Proof that the distances from m are an increasing
+function of the distances from m' (so the key from m' serves for m): put C at
+the origin, ``|v| = |m'| = r`` and ``m = lambda m'`` with
+``lambda = |m| / r = |cos(pi g)|`` for the edge's angular gap ``g`` (``m`` lies on
+the ray through ``m'`` by choice of ``m'``, so ``lambda >= 0``).  Then
+
+    |m - v|^2 = |m|^2 + r^2 - 2 lambda (m' . v)
+             = |m|^2 + r^2 + lambda (|m' - v|^2 - 2 r^2)
+             = const + lambda |m' - v|^2,
+
+strictly increasing in ``|m' - v|`` when ``lambda > 0``.  The constant and
+``lambda`` depend only on the edge's length, so strings from *different* edge
+points are comparable as long as their first elements (the half edge lengths,
+whose keys ``min(g, 1-g)/2`` order the half chords correctly) are equal; when
+they differ the first element decides and the keys order it correctly too.
+When ``lambda = 0`` (the edge is a diameter, ``m = C``) every distance from m is
+r, the half edge: every key is then the key of that half edge, ``1/4`` (polar) or
+``0`` (Cartesian).
+
+``m'`` is the midpoint of the arc ``a -> b`` when that arc is below half a turn
+and its antipode when it is above (the chord midpoint is then on the far side
+of C).  Note: an edge key and a vertex key are *not* on one scale (vertex
+strings start with a chord, edge strings with a half chord); compare strings of
+the same kind only.
+
+Cartesian edge points need the bisector ``u_a/|u_a| + u_b/|u_b|``; on a level
+``|u_a| = |u_b|`` and ``u_a + u_b`` (the chord midpoint direction) is exact.  For
+directions of different lengths we scale exactly when ``|u_a|^2/|u_b|^2`` is the
+square of a rational, and otherwise raise :class:`NotImplementedError` (the
+bisector would need a square root outside the configuration's field).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cmp_to_key
+
+from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
+from ..geometry import compare_directions
+
+__all__ = ["CirclePolygon", "level_polygon", "polygon_from_directions", "angular_distance",
+           "POLAR_METRIC", "CARTESIAN_METRIC"]
+
+POLAR_METRIC = "angular-distance"
+CARTESIAN_METRIC = "signed-squared-cosine"
+
+_QUARTER = fmpq(1, 4)
+_HALF = fmpq(1, 2)
+
+
+def angular_distance(a: fmpq, b: fmpq) -> fmpq:
+    """``min(d, 1 - d)`` for ``d = |a - b| mod 1``: the angle between two turns, in turns."""
+    d = normal_turn(a - b)
+    return d if d <= _HALF else 1 - d
+
+
+def _dot(u, v):
+    return u[0] * v[0] + u[1] * v[1]
+
+
+def _cosine_key(u, v):
+    """``-sign(u.v) (u.v)^2 / (|u|^2 |v|^2)``: strictly increasing in the angle of u, v."""
+    d = _dot(u, v)
+    s = sign(d)
+    if s == 0:
+        return d * 0
+    return -s * d * d / (_dot(u, u) * _dot(v, v))
+
+
+@dataclass(frozen=True)
+class CirclePolygon:
+    """A convex polygon inscribed in a circle about the centre C (Section 3: 'by convex
+    polygon we mean such polygons which are inscribed in a circle'); vertices counter-clockwise.
+
+    ``labels[i]``: the configuration point index (or any hashable label) of vertex i;
+    ``directions[i]``: a rational turn in [0, 1) (``polar``) or an exact non-zero vector
+    ``(dx, dy)`` from C (Cartesian; only the direction matters).
+
+    :meth:`separation` and :meth:`separation_from_edge` return exact keys, strictly
+    increasing functions of the Euclidean distances the paper uses (see the module
+    docstring); equality and the lexicographic order of the paper's strings are
+    preserved by any strictly increasing map.
+    """
+    labels: tuple
+    directions: tuple
+    polar: bool
+
+    @property
+    def n(self) -> int:
+        return len(self.labels)
+
+    @property
+    def metric(self) -> str:
+        """What the keys are: ``"angular-distance"`` (turns) or ``"signed-squared-cosine"``."""
+        return POLAR_METRIC if self.polar else CARTESIAN_METRIC
+
+    def separation(self, i: int, j: int):
+        """Exact key, strictly increasing in the chord |v_i v_j| (equal iff equal chords)."""
+        n = self.n
+        a, b = self.directions[i % n], self.directions[j % n]
+        if self.polar:
+            return angular_distance(a, b)
+        return _cosine_key(a, b)
+
+    def edge_direction(self, i: int):
+        """Direction (turn or vector) from C of the point m' of the circle on the ray C->m,
+        m the midpoint of edge (i, i+1); None when the edge is a diameter (m = C)."""
+        n = self.n
+        a, b = self.directions[i % n], self.directions[(i + 1) % n]
+        if self.polar:
+            gap = normal_turn(b - a)
+            if n == 1:
+                gap = fmpq(1)
+            if gap == _HALF:
+                return None
+            mid = a + gap / 2
+            if gap > _HALF:
+                mid += _HALF
+            return normal_turn(mid)
+        la, lb = _dot(a, a), _dot(b, b)
+        if la != lb:
+            scale = _rational_ratio_root(la, lb)
+            if scale is None:
+                raise NotImplementedError(
+                    "edge point m of a Cartesian polygon whose direction vectors have "
+                    "different lengths: the bisector u_a/|u_a| + u_b/|u_b| needs sqrt(|u_a|^2/|u_b|^2),"
+                    " which is not a rational square here; give equal-length directions")
+            b = (b[0] * scale, b[1] * scale)           # now |b| = |a|
+        w = (a[0] + b[0], a[1] + b[1])
+        if sign(w[0]) == 0 and sign(w[1]) == 0:
+            return None
+        return w
+
+    def separation_from_edge(self, i: int, j: int):
+        """Exact key, strictly increasing in the distance from m (midpoint of edge (i, i+1),
+        where the edge's perpendicular bisector meets the polygon) to vertex j."""
+        w = self.edge_direction(i)
+        if w is None:      # the edge is a diameter: m = C, every vertex at distance r
+            return _QUARTER if self.polar else self._zero()
+        v = self.directions[j % self.n]
+        if self.polar:
+            return angular_distance(w, v)
+        return _cosine_key(w, v)
+
+    def _zero(self):
+        x = self.directions[0][0]
+        return x * 0
+
+
+def _rational_ratio_root(la, lb):
+    """``sqrt(la / lb)`` when it is rational (both rational), else None."""
+    if isinstance(la, FieldElement):
+        if not (la.is_rational() and lb.is_rational()):
+            return None
+        la, lb = la.rational(), lb.rational()
+    return rational_sqrt(fmpq(la) / fmpq(lb))
+
+
+def polygon_from_directions(labels, directions, polar: bool) -> CirclePolygon:
+    """The polygon with these vertices, sorted counter-clockwise from angle 0 (the +x ray).
+
+    Polar directions are turns (normalised to [0, 1)); Cartesian ones non-zero exact
+    vectors.  Two vertices in the same direction raise ValueError (they cannot both lie
+    on one circle about C).  Used by radial projection (G_ij) in the family layer.
+    """
+    labels, directions = tuple(labels), tuple(directions)
+    if len(labels) != len(directions):
+        raise ValueError("labels and directions differ in length")
+    if polar:
+        directions = tuple(normal_turn(fmpq(t)) for t in directions)
+        order = sorted(range(len(labels)), key=lambda k: directions[k])
+        same = lambda p, q: directions[p] == directions[q]   # noqa: E731
+    else:
+        for d in directions:
+            if sign(d[0]) == 0 and sign(d[1]) == 0:
+                raise ValueError("a vertex at the centre C has no direction")
+        order = sorted(range(len(labels)),
+                       key=cmp_to_key(lambda p, q: compare_directions(directions[p], directions[q])))
+        same = lambda p, q: compare_directions(directions[p], directions[q]) == 0  # noqa: E731
+    for p, q in zip(order, order[1:]):
+        if same(p, q):
+            raise ValueError(f"vertices {labels[p]!r} and {labels[q]!r} have the same direction")
+    return CirclePolygon(tuple(labels[k] for k in order), tuple(directions[k] for k in order),
+                         polar)
+
+
+def level_polygon(config, rings, level_index: int) -> CirclePolygon:
+    """The polygon G_{level_index + 1} of ``rings(config)`` (levels are nearest first).
+
+    The level's points are already counter-clockwise from the +x ray through C.
+    Raises ValueError for the level of radius 0 (a point at C has no direction).
+    """
+    level = rings.levels[level_index]
+    if sign(level.radius_squared) == 0:
+        raise ValueError("the level of radius 0 (a robot at the centre C) is not a polygon")
+    labels = tuple(level.points)
+    if rings.polar:
+        return CirclePolygon(labels, tuple(config.polar[i][1] for i in labels), True)
+    cx, cy = rings.sec.centre
+    pts = config.points
+    return CirclePolygon(labels, tuple((pts[i][0] - cx, pts[i][1] - cy) for i in labels), False)

@@ -1,0 +1,68 @@
+"""The report section of the paper on each level (exactsym.paper.polygon_report)."""
+
+from __future__ import annotations
+
+import json
+from fractions import Fraction
+
+from exactsym.cli import _load_plugins, main
+from exactsym.configuration import Configuration, load
+from exactsym.report import check_report, failed_expectations
+from exactsym.paper import polygon_report
+from strategies import polar_configuration
+
+_load_plugins()
+
+
+def test_report_with_strings_cartesian_sqrt3(tmp_path, capsys):
+    path = "cases/polygon/regular-hexagon-sqrt3.toml"
+    assert main(["check", path, "--json", "--strings"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    level = report["levels"][0]
+    assert level["paper"]["type"] == "type-0" and level["paper"]["degree"] == 3
+    strings = level["strings"]
+    assert strings["metric"] == "signed-squared-cosine"
+    # from a vertex of the regular hexagon: 60, 120, 180, 120, 60 degrees
+    assert strings["cw"][0] == ["-1/4", "1/4", "1", "1/4", "-1/4"]
+    assert strings["acw"][0] == strings["cw"][0][::-1]
+
+
+def test_report_polar_strings_and_centre_level():
+    config = polar_configuration([(0, 0), (1, Fraction(0)), (1, Fraction(1, 3)),
+                                  (1, Fraction(2, 3))])
+    report = check_report(config, {"strings": True})
+    assert report["levels"][0]["paper"] is None                       # the robot at C
+    strings = report["levels"][1]["strings"]
+    assert strings["metric"] == "angular-distance"
+    assert strings["cw"] == [["1/3", "1/3"]] * 3
+
+
+def test_large_polygon_is_cheap_and_strings_omitted():
+    n = 1500
+    config = polar_configuration([(1, Fraction(k, n)) for k in range(n)])
+    report = check_report(config, {"strings": True})
+    level = report["levels"][0]
+    assert level["paper"]["lines"] == n and level["paper"]["degree"] == n // 2
+    assert "omitted" in level["strings"]
+    assert level["paper"]["leader_sym"] is None and level["paper"]["definition"] is None
+    json.dumps(report)
+
+
+def test_fractional_degree_and_per_level_expectations():
+    config = load("cases/polygon/kite-polar.toml")
+    report = check_report(config)
+    assert report["levels"][0]["paper"]["degree"] == "3/2"
+    assert polygon_report.degree_json(Fraction(3, 2)) == "3/2"
+    config.expect.clear()
+    config.expect.update({"paper_degree": ["3/2"], "paper_type": "type-2",
+                          "paper_leader_sym": "none", "paper_straight": [True]})
+    assert failed_expectations(config, report) == []
+    config.expect.update({"paper_degree": 1, "paper_lines": [1, 1]})
+    assert len(failed_expectations(config, report)) == 2
+
+
+def test_cartesian_configuration_with_other_centre():
+    config = Configuration.from_points([(1, 1), (6, 1), (1, 6), (-4, 1), (1, -4)])
+    report = check_report(config)
+    paper = report["levels"][-1]["paper"]
+    assert paper["type"] == "type-0" and paper["lines"] == 4
