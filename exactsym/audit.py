@@ -1,0 +1,389 @@
+"""The paper against the ground truth, on one configuration.
+
+:func:`audit` runs the paper's family algorithms (:mod:`exactsym.paper.family`) and the
+ground truth (:mod:`exactsym.symmetry`), and lists every statement of the paper whose
+claim is false on this configuration, in the paper's order, each as
+``{"statement": label, "says": ..., "truth": ..., "witness": ...}``:
+
+* statements about orderability, checked against the truth: ``lemma-sym-ord``,
+  ``lem-asym-ord`` (each level), ``lem-sym-notord`` and ``lem-asym-pair-ord`` (each pair of
+  levels: the union of the two levels, symmetries about C), ``lem-all-pair-asym-ord``,
+  ``lem-one-pair-asym-ord``, ``Psym-Gsym``, ``Pasym-Pord``, ``cor-Pasym-Pord``;
+* statements the paper's own notions contradict (recorded by the family layer with
+  ``holds`` False: ``obs-gcd``, ``lem-los-gij``, ``obs-merg-asym-pair``, ... and the
+  algorithms' guarantees: MakeAsym's "G_t is asymmetric", an unchanged SEC,
+  ``obs-v-move``, ``lem-vl-move``, ties in Elect_Leader_Asym).  Defects of the *literal*
+  reading of a printed loop (non-termination) are documented in the trace and in
+  ``docs/interpretations.md`` but are not discrepancies of the configuration;
+* the conclusions: ``paper.orderable`` against the truth's ``orderable``; when the truth
+  is orderable the paper's leader must not depend on the observer: the procedure is
+  recomputed on exactly transformed inputs (a reflection; a rotation, scaling and, for
+  Cartesian inputs, translation), indices mapped back, and two frames electing
+  different leaders (or moving different robots) are the witness; when the truth is not
+  orderable the first robot the paper makes act must be fixed by every symmetry.
+
+``agrees`` is True iff the list is empty; ``conclusions_agree`` only looks at the
+conclusions.  The audit is outside :mod:`exactsym.paper` and may use both sides.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from .config import ConfigFile, PointSpec
+from .configuration import Configuration, from_file
+from .exact import fmpq, number_text
+from .exprtree import BinOp, Const
+from .levels import Level, Rings, rings as compute_rings
+from .paper import family as F
+from .symmetry import SymmetryGroup, symmetry_group
+
+__all__ = ["audit", "truth_in_O_S", "group_about_centre", "transformed", "FRAMES",
+           "STATEMENT_ORDER"]
+
+#: The order in which statements are listed (the paper's order, then the algorithms).
+STATEMENT_ORDER = [
+    "lemma-sym-ord", "lem-asym-ord", "obs-pair-asym-ord", "lem-sym-notord",
+    "obs-merg-asym-pair", "lem-asym-pair-ord", "lem-all-pair-asym-ord",
+    "lem-one-pair-asym-ord", "obs-gcd", "lem-los-gij", "theorem-los-g1n", "obs-type-4",
+    "lem-type4", "lem-3-pair-sym", "theorem-sym-pair-symG", "obs1-Gprime-equiG",
+    "Gprime-equiG", "Psym-Gsym", "Pasym-Pord", "cor-Pasym-Pord",
+]
+
+FRAMES = ("identity", "reflection", "similarity")
+
+#: What each statement (or algorithm step) claims, in a line.
+CLAIMS = {
+    "lemma-sym-ord": "a non-singleton set in O_S is not orderable",
+    "lem-asym-ord": "an asymmetric polygon is orderable",
+    "obs-pair-asym-ord": "if a polygon of a pair is asymmetric, the pair is asymmetric",
+    "lem-sym-notord": "a symmetric pair is not orderable",
+    "obs-merg-asym-pair": "if <G_i, G_j> is an asymmetric pair, G_ij is asymmetric",
+    "lem-asym-pair-ord": "an asymmetric pair is orderable",
+    "lem-all-pair-asym-ord": "if G has an asymmetric pair, G is orderable",
+    "lem-one-pair-asym-ord": "if G has an asymmetric polygon, G is orderable",
+    "obs-gcd": "two odd polygons with one common line have gcd(n_i, n_j) common lines",
+    "lem-los-gij": "a line of symmetry of G_ij is a common line of symmetry of <G_i, G_j>",
+    "theorem-los-g1n": "a line of symmetry of G_1..n is a common line of G_1, ..., G_n",
+    "obs-type-4": "n_i, n_j odd with a common line and gcd(n_i, n_j) > 1: G_ij is type 4",
+    "lem-type4": "three pairwise symmetric odd polygons of G' (distinct counts, none a "
+                 "multiple of another) have pairwise coprime counts",
+    "lem-3-pair-sym": "three polygons of G' are pairwise symmetric iff they have a common "
+                      "line of symmetry",
+    "theorem-sym-pair-symG": "every pair of G' is symmetric iff all polygons of G' have a "
+                             "common line of symmetry",
+    "obs1-Gprime-equiG": "if G is symmetric, every pair in G is symmetric",
+    "Gprime-equiG": "G' is symmetric iff G is symmetric",
+    "Psym-Gsym": "P is in O_S iff G_P is in O_S",
+    "Pasym-Pord": "P is orderable iff P is in O_A",
+    "cor-Pasym-Pord": "P is orderable iff G_P is in O_A",
+    "MakeAsym": "MakeAsym makes G_t asymmetric, keeps the SEC, and the polygons it orders "
+                "are asymmetric",
+    "Make_SymToAsym": "moving the leader of a polygon with one line of symmetry makes it "
+                      "asymmetric",
+    "ElectLeader": "G_1t is orderable (asymmetric) when G_t is asymmetric",
+    "obs-v-move": "the leader selected through G_it is the same whether v is moving or "
+                  "epsilon apart",
+    "lem-vl-move": "while v_l moves, no other robot is selected as leader",
+    "1sym_le": "with one line of symmetry through two vertices, Elect_Leader_Sym elects "
+               "a leader (the same for every observer)",
+}
+
+
+# ---------------------------------------------------------------- the truth, as needed
+def truth_in_O_S(group: SymmetryGroup, n: int) -> bool:
+    """``def-symmetric-conf`` decided from the true group: a singleton, or a mirror that
+    moves some point (straight symmetry), or the half-turn (skew symmetry: reflecting in
+    L and then in the perpendicular L' is the point reflection about their meeting
+    point, which must be the centre)."""
+    if n == 1:
+        return True
+    if group.mirrors > 0 and not group.orderable:
+        return True
+    return group.rotations % 2 == 0
+
+
+def group_about_centre(config: Configuration, ring_data: Rings, robots) -> tuple:
+    """``(group, robots)``: the symmetry group, about the SEC centre C of the whole
+    configuration, of the sub-configuration ``robots`` (sorted); its indices are
+    positions in ``robots``."""
+    robots = sorted(robots)
+    where = {r: k for k, r in enumerate(robots)}
+    if ring_data.polar:
+        sub = Configuration(polar=[config.polar[i] for i in robots],
+                            polar_system=config.polar_system, source=config.source)
+    else:
+        sub = Configuration(points=[config.points[i] for i in robots], system=config.system,
+                            source=config.source)
+    levels = []
+    for level in ring_data.levels:
+        pts = tuple(where[i] for i in level.points if i in where)
+        if pts:
+            levels.append(Level(level.radius_squared, pts))
+    return symmetry_group(sub, Rings(ring_data.sec, tuple(levels), ring_data.polar)), robots
+
+
+def _symmetry_witness(group: SymmetryGroup, robots) -> dict | None:
+    """A symmetry that moves a robot, named with configuration indices."""
+    g = group.rotation_generator or (group.mirror if not group.orderable else None)
+    if g is None:
+        return None
+    perm = g.permutation
+    moved = next((k for k, j in enumerate(perm) if j != k), None)
+    if g.kind == "rotation":
+        what = (f"rotation by {number_text(fmpq(1, group.rotations))} turn about C"
+                if g.turn is None else f"rotation by {number_text(g.turn)} turn about C")
+    else:
+        what = ("mirror through C" if g.turn is None else
+                f"mirror in the line at {number_text(g.turn)} turn through C")
+    out = {"symmetry": what, "group": group.name}
+    if moved is not None:
+        out["maps"] = f"robot {robots[moved]} -> robot {robots[perm[moved]]}"
+    return out
+
+
+# ---------------------------------------------------------------- transformed inputs
+def transformed(config: Configuration, ring_data: Rings, frame: str) -> Configuration:
+    """``config`` in another coordinate system, robot indices unchanged.
+
+    Polar configurations (about C): ``reflection`` turn -> -turn; ``similarity`` turn ->
+    turn + 1/7, r -> 2r (both keep the configuration polar: its Cartesian coordinates are
+    never built).  Otherwise: ``reflection`` (x, y) -> (x, -y); ``similarity`` the
+    rotation (3/5, 4/5), the scale 2 and the translation (1/3, -1/2), all exact."""
+    if frame == "identity":
+        return config
+    if ring_data.polar and config.polar is not None and config.specs:
+        specs = []
+        for s in config.specs:
+            t = Fraction(s.turn)
+            if frame == "reflection":
+                specs.append(PointSpec(s.index, s.line, s.column, r=s.r, turn=(-t) % 1))
+            else:
+                specs.append(PointSpec(s.index, s.line, s.column,
+                                       r=BinOp("*", Const(Fraction(2)), s.r),
+                                       turn=(t + Fraction(1, 7)) % 1))
+        return from_file(ConfigFile(source=config.source, points=tuple(specs),
+                                    name=config.name, model=config.model))
+    coerce = config.system.coerce
+    pts = []
+    for x, y in config.points:
+        if frame == "reflection":
+            pts.append((x, -y))
+        else:
+            c, s = coerce(fmpq(3, 5)), coerce(fmpq(4, 5))
+            two = coerce(fmpq(2))
+            pts.append((two * (c * x - s * y) + coerce(fmpq(1, 3)),
+                        two * (s * x + c * y) + coerce(fmpq(-1, 2))))
+    return Configuration.from_points(pts, system=config.system, source=config.source,
+                                     name=config.name, model=config.model)
+
+
+FRAME_TEXT = {
+    "identity": "the file's coordinates",
+    "reflection": "reflected (x, y) -> (x, -y) (polar: turn -> -turn)",
+    "similarity": "rotated (3/5, 4/5), scaled by 2, translated by (1/3, -1/2) "
+                  "(polar: turn + 1/7, r -> 2r)",
+}
+
+
+def _actions(res: F.PaperResult) -> tuple:
+    return (tuple(m["robot"] for m in res.moves), res.leader)
+
+
+def _steps(res: F.PaperResult) -> list:
+    return [(e["algorithm"], e.get("line"), tuple(e.get("robots") or ()), e.get("uses"),
+             e["statement"]) for e in res.trace if e.get("robots") and e.get("uses")]
+
+
+# ---------------------------------------------------------------- the audit
+def _d(statement, says, truth, witness=None, kind="claim") -> dict:
+    return {"statement": statement, "says": says, "truth": truth, "witness": witness,
+            "kind": kind}
+
+
+def audit(config: Configuration, ring_data: Rings | None = None,
+          paper: F.PaperResult | None = None, options: dict | None = None) -> dict:
+    """The audit of ``config`` (see the module docstring); ``paper`` is recomputed when
+    not given.  Options: ``reading``, ``degree`` (passed to the paper), ``invariance``
+    (default True: recompute the paper in the other frames)."""
+    options = options or {}
+    ring_data = ring_data if ring_data is not None else compute_rings(config)
+    kw = {"reading": options.get("reading", "literal"), "degree": options.get("degree", "paper")}
+    if paper is None:
+        paper = F.paper_procedure(config, ring_data, **kw)
+    group = symmetry_group(config, ring_data)
+    n = config.n
+    in_os = truth_in_O_S(group, n)
+    G = F.concentric_polygons(config, ring_data)
+    polar = F._is_polar(G)
+    found: dict[str, list] = {}
+
+    def add(d):
+        found.setdefault(d["statement"], []).append(d)
+
+    whole_witness = _symmetry_witness(group, list(range(n)))
+    # lemma-sym-ord (n > 1): in O_S => not orderable
+    if n > 1 and in_os and group.orderable:
+        add(_d("lemma-sym-ord", "P is in O_S, hence not orderable", "P is orderable",
+               whole_witness))
+    # lem-asym-ord on each level: asymmetric polygon => orderable
+    for g in G:
+        if F.is_symmetric_polygon(g):
+            continue
+        sub, robots = group_about_centre(config, ring_data, g.robots)
+        if not sub.orderable:
+            add(_d("lem-asym-ord", f"{g.name} is an asymmetric polygon, hence orderable",
+                   f"{g.name} is not orderable (group {sub.name})",
+                   _symmetry_witness(sub, robots)))
+    # pairs of levels
+    t = len(G)
+    pairs = [(i, j) for i in range(t) for j in range(i + 1, t)][:F.MAX_PAIRS]
+    for i, j in pairs:
+        a, b = G[i], G[j]
+        sym = F.is_symmetric_pair(a, b)
+        sub, robots = group_about_centre(config, ring_data, a.robots + b.robots)
+        if sym and sub.orderable:
+            common = F._intersect(a.lines, b.lines)
+            add(_d("lem-sym-notord",
+                   f"<{a.name}, {b.name}> is a symmetric pair ({F.lines_text(common, polar)} "
+                   f"in common: {a.name} has {F.lines_text(a, polar)}, {b.name} has "
+                   f"{F.lines_text(b, polar)}), hence not orderable",
+                   f"the union of {a.name} and {b.name} is orderable (group {sub.name} about C)",
+                   {"pair": [a.name, b.name]}))
+        if not sym and not sub.orderable:
+            add(_d("lem-asym-pair-ord", f"<{a.name}, {b.name}> is an asymmetric pair, hence "
+                   "orderable", f"the union of {a.name} and {b.name} is not orderable "
+                   f"(group {sub.name} about C)", _symmetry_witness(sub, robots)))
+    # lem-all-pair-asym-ord / lem-one-pair-asym-ord (on G)
+    asym_pair = F.find_asymmetry_pair(G)
+    if asym_pair is not None and not group.orderable:
+        a, b = G[asym_pair[0]], G[asym_pair[1]]
+        add(_d("lem-all-pair-asym-ord", f"<{a.name}, {b.name}> is an asymmetric pair, hence "
+               "G is orderable", f"P is not orderable (group {group.name})", whole_witness))
+    asym_poly = F.find_asymmetry(G)
+    if asym_poly is not None and not group.orderable:
+        add(_d("lem-one-pair-asym-ord", f"{G[asym_poly].name} is an asymmetric polygon, "
+               "hence G is orderable", f"P is not orderable (group {group.name})",
+               whole_witness))
+    # paper-internal claims recorded by the family layer
+    for e in paper.trace:
+        if e.get("holds") is False and e.get("kind") != "literal-reading":
+            add(_d(e["statement"], CLAIMS.get(e["statement"], e["statement"]),
+                   f"false here: {e['detail']}", e.get("witness"),
+                   kind="claim" if e["algorithm"] == "Section 3" else "algorithm"))
+    # theorems
+    g_sym = F.is_symmetric_family(G)
+    if g_sym != in_os:
+        add(_d("Psym-Gsym", f"P is in O_S iff G_P is; G_P is {'in O_S' if g_sym else 'in O_A'}"
+               f" (common lines: {F.lines_text(F.common_lines(G), polar)})",
+               f"P is {'in O_S' if in_os else 'in O_A'} (group {group.name})",
+               whole_witness if in_os else None))
+    if group.orderable == in_os:
+        add(_d("Pasym-Pord", "P is orderable iff P is in O_A",
+               f"P is {'in O_S' if in_os else 'in O_A'} and "
+               f"{'orderable' if group.orderable else 'not orderable'} (group {group.name})",
+               whole_witness))
+    if group.orderable == g_sym:
+        add(_d("cor-Pasym-Pord", "P is orderable iff G_P is in O_A",
+               f"G_P is {'in O_S' if g_sym else 'in O_A'} but P is "
+               f"{'orderable' if group.orderable else 'not orderable'} (group {group.name})",
+               whole_witness))
+    # conclusions
+    conclusions = []
+    if paper.orderable != group.orderable:
+        conclusions.append(_d("GatheringPattern",
+                              f"{'orderable' if paper.orderable else 'not orderable'}"
+                              f" (gathering {'possible' if paper.gathering_possible else 'not possible'}"
+                              f", MakeAsym: {paper.make_asym})",
+                              f"{'orderable' if group.orderable else 'not orderable'} "
+                              f"(group {group.name})", whole_witness, kind="conclusion"))
+    leader_info = _leader_check(config, ring_data, paper, group, kw, options)
+    conclusions.extend(leader_info)
+    ordered = []
+    for label in STATEMENT_ORDER:
+        ordered.extend(found.pop(label, []))
+    for rest in found.values():
+        ordered.extend(rest)
+    ordered = _dedupe(ordered)
+    ordered.extend(conclusions)
+    return {"agrees": not ordered, "conclusions_agree": not conclusions,
+            "discrepancies": ordered,
+            "truth": {"group": group.name, "orderable": group.orderable,
+                      "leader": group.leader, "in_O_S": in_os}}
+
+
+def _dedupe(items: list) -> list:
+    """One entry per (statement, kind, claim text); ``count`` says how many were merged
+    (a claim failing on several pairs, or again in a later round)."""
+    out, index = [], {}
+    for d in items:
+        key = (d["statement"], d["kind"], d["says"], d["truth"])
+        if key in index:
+            index[key]["count"] += 1
+            continue
+        d = dict(d, count=1)
+        index[key] = d
+        out.append(d)
+    return out
+
+
+def _leader_check(config, ring_data, paper, group, kw, options) -> list:
+    out = []
+    if not paper.complete:
+        return out
+    if group.orderable:
+        if paper.orderable and paper.leader is None:
+            out.append(_d("ElectLeader", "G is orderable but no leader is elected",
+                          f"orderable (group {group.name}); a leader exists "
+                          f"(e.g. robot {group.leader})", None, kind="conclusion"))
+        if not options.get("invariance", True):
+            return out
+        results = {"identity": paper}
+        for frame in FRAMES[1:]:
+            other = transformed(config, ring_data, frame)
+            results[frame] = F.paper_procedure(other, **kw, claims=False, check_vl=False)
+        base = _actions(paper)
+        for frame in FRAMES[1:]:
+            res = results[frame]
+            if not res.complete or _actions(res) == base:
+                continue
+            step = _first_difference(paper, res)
+            statement = "lem-asym-ord"
+            if step is not None and step[3] != "Elect_Leader_Asym":
+                statement = step[0]
+            out.append(_d(statement,
+                          "the leader does not depend on the choice of origin and "
+                          "coordinate system",
+                          f"leader {paper.leader} (moves {list(base[0])}) in "
+                          f"{FRAME_TEXT['identity']}, leader {res.leader} (moves "
+                          f"{list(_actions(res)[0])}) when {FRAME_TEXT[frame]}",
+                          {"frames": ["identity", frame], "leaders": [paper.leader, res.leader],
+                           "moves": [list(base[0]), list(_actions(res)[0])],
+                           "first_different_step": None if step is None else
+                           f"{step[0]} line {step[1]} ({step[3] or step[4]}): robots "
+                           f"{list(step[2])}"},
+                          kind="conclusion"))
+            break
+        return out
+    # not orderable: the first robot made to act must be fixed by every symmetry
+    actor = paper.first_actor
+    if actor is None:
+        return out
+    for g in group.symmetries():
+        if g.permutation[actor] != actor:
+            out.append(_d("MakeAsym" if paper.moves else "ElectLeader",
+                          f"robot {actor} acts first ({'moves' if paper.moves else 'is elected'})",
+                          f"not orderable (group {group.name}); a symmetry maps robot {actor} "
+                          f"to robot {g.permutation[actor]}, so observers disagree on it",
+                          {"symmetry": g.kind, "maps": f"robot {actor} -> robot "
+                           f"{g.permutation[actor]}"}, kind="conclusion"))
+            break
+    return out
+
+
+def _first_difference(a: F.PaperResult, b: F.PaperResult):
+    sa, sb = _steps(a), _steps(b)
+    for x, y in zip(sa, sb):
+        if x[:3] != y[:3]:
+            return x
+    return None

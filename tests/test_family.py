@@ -1,0 +1,342 @@
+"""The paper on whole configurations (exactsym.paper.family) and the audit (exactsym.audit).
+
+Exact expected values on small families, agreement of the O(n) line finder with the
+definition (exactsym.paper.polygon.definition_mirrors), the branches of MakeAsym,
+ElectLeader and Preprocess reached by the case library, the ``exactsym audit`` command.
+The case files themselves are run by tests/test_cases.py.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from exactsym.audit import audit, transformed
+from exactsym.configuration import load
+from exactsym.exact import fmpq
+from exactsym.levels import rings
+from exactsym.paper import family as F
+from exactsym.paper import polygon as P
+from exactsym.paper.circle_polygon import polygon_from_directions
+
+from strategies import polar_configuration
+
+ROOT = Path(__file__).resolve().parent.parent
+FAMILY = ROOT / "cases" / "family"
+DISCREPANCIES = ROOT / "cases" / "discrepancies"
+Q = fmpq
+
+
+def regular(r, k, rot=Fraction(0)):
+    return [(Fraction(r), (Fraction(rot) + Fraction(j, k)) % 1) for j in range(k)]
+
+
+def ring(r, turns):
+    return [(Fraction(r), Fraction(t) % 1) for t in turns]
+
+
+def family_of(points):
+    config = polar_configuration(points)
+    return config, rings(config), F.concentric_polygons(config)
+
+
+def keys(lines):
+    return {k.h for k in lines}
+
+
+# ---------------------------------------------------------------- lines of symmetry
+def polar_polygon(turns):
+    return polygon_from_directions(range(len(turns)), [Q(t.numerator, t.denominator)
+                                                        for t in turns], True)
+
+
+turn_sets = st.lists(st.fractions(0, 1, max_denominator=24).map(lambda t: t % 1),
+                     min_size=1, max_size=9, unique=True)
+
+
+def symmetric_turn_sets():
+    """Orbits of a few seeds under C_k or D_k (so that mirrors and half-turns are common)."""
+    return st.tuples(st.integers(1, 6), st.booleans(),
+                     st.lists(st.fractions(0, 1, max_denominator=24), min_size=1, max_size=3),
+                     st.fractions(0, 1, max_denominator=30)).map(
+        lambda a: sorted({(s * sign + Fraction(j, a[0]) + a[3]) % 1 for s in a[2]
+                          for j in range(a[0]) for sign in ((1, -1) if a[1] else (1,))}))
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.one_of(turn_sets, symmetric_turn_sets()))
+def test_mirror_lines_are_the_definitions_mirrors_polar(turns):
+    poly = polar_polygon(turns)
+    assert keys(F.mirror_lines(poly)) == {F._hkey(k) for k in P.definition_mirrors(poly)}
+    assert F.centrally_symmetric(poly) == P.is_skew_symmetric(poly)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.integers(-6, 6), st.integers(-6, 6)).filter(lambda p: p != (0, 0)),
+                min_size=1, max_size=6, unique=True), st.sampled_from([None, "C2", "C4", "D1"]))
+def test_mirror_lines_are_the_definitions_mirrors_cartesian(seeds, group):
+    """Directions of different lengths (only directions matter), rational coordinates."""
+    maps = {None: [(1, 0, 0, 1)], "C2": [(1, 0, 0, 1), (-1, 0, 0, -1)],
+            "C4": [(1, 0, 0, 1), (0, -1, 1, 0), (-1, 0, 0, -1), (0, 1, -1, 0)],
+            "D1": [(1, 0, 0, 1), (1, 0, 0, -1)]}[group]
+    dirs = {}
+    for x, y in seeds:
+        for a, b, c, d in maps:
+            v = (Q(a * x + b * y), Q(c * x + d * y))
+            ray = (v[0] / (abs(v[0]) + abs(v[1])), v[1] / (abs(v[0]) + abs(v[1])))
+            dirs.setdefault(ray, v)
+    poly = polygon_from_directions(range(len(dirs)), list(dirs.values()), False)
+    assert keys(F.mirror_lines(poly)) == {F._hkey(k) for k in P.definition_mirrors(poly)}
+    assert F.centrally_symmetric(poly) == P.is_skew_symmetric(poly)
+
+
+def test_lines_exact_values():
+    _, _, G = family_of(regular(1, 3) + regular(2, 5, Fraction(1, 20)) + regular(3, 6))
+    tri, pent, hexa = G
+    assert keys(tri.lines) == {F._hkey(Q(0)), F._hkey(Q(1, 6)), F._hkey(Q(1, 3))}
+    assert keys(pent.lines) == {F._hkey(Q(1, 20) + Q(k, 10)) for k in range(5)}
+    assert hexa.lines is F.ALL_LINES                       # lem-skew-los
+    assert not F.is_symmetric_pair(tri, pent)
+    assert F.is_symmetric_pair(tri, hexa) and F.is_symmetric_pair(pent, hexa)
+    assert F.find_asymmetry(G) is None
+    assert F.find_asymmetry_pair(G) == (0, 1)
+    assert not F.is_symmetric_family(G)
+
+
+def test_single_vertex_and_centre_lines():
+    _, _, G = family_of([(Fraction(0), Fraction(0)), (Fraction(1), Fraction(1, 7))]
+                        + regular(2, 4))
+    centre, single, square = G
+    assert centre.at_centre and centre.lines is F.ALL_LINES
+    assert keys(single.lines) == {F._hkey(Q(1, 7))}         # the paper's note
+    assert F.common_lines(G) == single.lines
+    assert F.is_symmetric_family(G)
+
+
+# ---------------------------------------------------------------- radial projection
+def test_radial_projection_merges_rays_and_keeps_robots():
+    _, _, (g1, g2) = family_of(regular(1, 9) + regular(2, 15))
+    proj = F.radial_projection(g1, g2)
+    assert proj.ring.n == 9 + 15 - 3 and len(proj.coincident) == 3
+    assert sorted(proj.ring.robots) == list(range(24))
+    merged = [lab for lab in proj.ring.polygon.labels if len(lab) == 2]
+    assert sorted(merged) == [(0, 9), (3, 14), (6, 19)]
+    assert proj.ring.radius_squared == g2.radius_squared
+    assert F.is_type4(proj.ring)[0]
+    assert len(proj.ring.lines) == 3 and proj.ring.lines == F._intersect(g1.lines, g2.lines)
+
+
+def test_projection_to_an_even_union_is_not_type4():
+    _, _, (g1, g2) = family_of(regular(1, 9) + regular(2, 15, Fraction(1, 2)))
+    proj = F.radial_projection(g1, g2)
+    assert proj.ring.n == 24 and not proj.coincident
+    assert not F.is_type4(proj.ring)[0]
+
+
+def test_projection_of_the_centre_is_refused():
+    _, _, (c, g) = family_of([(Fraction(0), Fraction(0))] + regular(1, 5))
+    with pytest.raises(ValueError):
+        F.radial_projection(c, g)
+
+
+# ---------------------------------------------------------------- Preprocess
+def test_preprocess_merges_9_and_15_and_literal_loop_never_ends():
+    _, _, G = family_of(regular(1, 9) + regular(2, 15) + ring(3, ["1/40", "1/7", "17/40",
+                                                                   "5/8", "6/7"]))
+    trace = []
+    Gp = F.preprocess(G, trace)
+    assert [g.name for g in Gp] == ["G(1,2)", "G3"]
+    assert [g.n for g in Gp] == [21, 5]
+    assert any(e["branch"] == "odd-merge-type4" for e in trace)
+    literal = F.preprocess_literal(G)
+    assert not literal.terminated and "repeats" in literal.reason
+
+
+def test_preprocess_keeps_even_polygons_and_literal_terminates_without_odd():
+    _, _, G = family_of(regular(1, 4) + regular(2, 6, Fraction(1, 24)))
+    trace = []
+    assert F.preprocess(G, trace) == G
+    assert {e["branch"] for e in trace} == {"skip-i-even"}
+    assert F.preprocess_literal(G).terminated
+
+
+def test_preprocess_merges_15_and_21():
+    _, _, G = family_of(regular(1, 15) + regular(2, 21))
+    Gp = F.preprocess(G, [])
+    assert len(Gp) == 1 and Gp[0].n == 33 and len(Gp[0].lines) == 3
+
+
+# ---------------------------------------------------------------- the procedure
+def run(points, **kw):
+    config = polar_configuration(points)
+    return config, F.paper_procedure(config, **kw)
+
+
+def test_c3_configuration_is_called_orderable():
+    """The paper cannot see a rotation of order 3 (two triangles turned by 1/10)."""
+    config, res = run(regular(1, 3) + regular(2, 3, Fraction(1, 10)))
+    assert res.orderable and res.gathering_possible
+    report = audit(config)
+    assert report["truth"]["group"] == "C3" and not report["truth"]["orderable"]
+    failing = [d["statement"] for d in report["discrepancies"]]
+    assert "lem-asym-pair-ord" in failing and "cor-Pasym-Pord" in failing
+    assert failing.index("obs-merg-asym-pair") < failing.index("lem-asym-pair-ord")
+    assert report["discrepancies"][-2]["statement"] == "GatheringPattern"
+
+
+def test_mirror_inside_half_turn_is_called_not_orderable():
+    config, res = run(ring(1, ["1/4", "1/20", "9/20"])
+                      + ring(2, ["0", "1/10", "1/4", "1/2", "3/5", "3/4"]))
+    assert not res.orderable and not res.gathering_possible and res.make_asym == "not-orderable"
+    report = audit(config)
+    assert report["truth"]["orderable"] and report["truth"]["group"] == "C1"
+    assert report["discrepancies"][0]["statement"] == "lem-sym-notord"
+
+
+def test_d3_configuration_agrees_on_the_conclusion():
+    config, res = run(regular(1, 9) + regular(2, 15))
+    assert not res.orderable and res.leader is None
+    report = audit(config)
+    assert report["agrees"] and report["truth"]["group"] == "D3"
+
+
+def test_trace_entries_have_the_required_keys():
+    _, res = run(ring(1, ["1/40", "1/7", "2/5", "5/8"]) + regular(2, 6))
+    for e in res.trace:
+        assert {"algorithm", "line", "polygons", "statement", "detail"} <= set(e)
+        assert isinstance(e["polygons"], list)
+    branches = {(e["algorithm"], e.get("branch")) for e in res.trace if e.get("branch")}
+    assert ("MakeAsym", "asym-polygon-large") in branches
+    assert ("ElectLeader", "asymmetric") in branches
+    assert [m["robot"] for m in res.moves] and res.leader is not None
+
+
+def test_rotation_and_scale_do_not_change_the_paper():
+    """Everything the paper does is invariant under orientation-preserving similarities."""
+    config, res = run(regular(1, 3) + regular(2, 5, Fraction(1, 20)) + regular(3, 6))
+    other = transformed(config, rings(config), "similarity")
+    res2 = F.paper_procedure(other)
+    assert (res2.orderable, res2.leader, [m["robot"] for m in res2.moves]) == \
+        (res.orderable, res.leader, [m["robot"] for m in res.moves])
+
+
+def test_reflection_is_the_other_handedness():
+    """The reflected input seen by an observer of the other handedness is the same view."""
+    config, res = run(ring(1, ["1/40", "1/7", "2/5", "5/8"]) + regular(2, 6))
+    mirrored = transformed(config, rings(config), "reflection")
+    res2 = F.paper_procedure(mirrored, orientation=-1)
+    assert (res2.leader, [m["robot"] for m in res2.moves]) == \
+        (res.leader, [m["robot"] for m in res.moves])
+
+
+def test_chirality_changes_the_leader_and_the_audit_says_so():
+    config = load(DISCREPANCIES / "family-leader-chirality.toml")
+    report = audit(config)
+    leader = [d for d in report["discrepancies"] if d["kind"] == "conclusion"]
+    assert leader and leader[0]["statement"] == "lem-asym-ord"
+    assert leader[0]["witness"]["frames"] == ["identity", "reflection"]
+    a, b = leader[0]["witness"]["leaders"]
+    assert a != b
+
+
+def test_cartesian_rational_configuration():
+    """The Cartesian path (exact rationals, SEC centre not at a nice place)."""
+    from exactsym.configuration import Configuration
+    pts = [(Q(3), Q(4)), (Q(-5), Q(0)), (Q(0), Q(-5)), (Q(4), Q(-3)),   # radius 5
+           (Q(1), Q(0)), (Q(0), Q(2))]
+    config = Configuration.from_points(pts)
+    res = F.paper_procedure(config)
+    report = audit(config, paper=res)
+    assert report["truth"]["orderable"] == (report["truth"]["group"] == "C1")
+    assert isinstance(res.orderable, bool)
+
+
+# ---------------------------------------------------------------- the case library
+def _all_cases():
+    return sorted(FAMILY.glob("*.toml")) + sorted(DISCREPANCIES.glob("family-*.toml"))
+
+
+#: Branches no configuration can reach (docs/interpretations.md, "The family layer"):
+#: FindAsymmetry uses the definitions, and a polygon symmetric by the definitions is
+#: always reported symmetric by Check_Symmetry_Odd/Even, so after "no asymmetric polygon"
+#: CheckSymmetry(G_{t-1}) never reports "asymmetric".
+UNREACHABLE = {("MakeAsym", "asym-pair-small-asym")}
+
+
+@pytest.fixture(scope="module")
+def case_traces():
+    out = {}
+    for path in _all_cases():
+        config = load(path)
+        out[path.name] = F.paper_procedure(config).trace
+    return out
+
+
+def test_every_branch_is_reached_by_a_case(case_traces):
+    reached = {(e["algorithm"], e["branch"]) for trace in case_traces.values()
+               for e in trace if e.get("branch")}
+    wanted = {(alg, b) for alg, branches in F.BRANCHES.items() for b in branches}
+    assert wanted - UNREACHABLE <= reached, sorted(wanted - UNREACHABLE - reached)
+    assert not reached & UNREACHABLE
+
+
+FAMILY_STATEMENTS = [
+    "obs-pair-asym-ord", "lem-sym-notord", "obs-merg-asym-pair", "lem-asym-pair-ord",
+    "lem-all-pair-asym-ord", "lem-one-pair-asym-ord", "obs-gcd", "lem-los-gij",
+    "theorem-los-g1n", "obs-type-4", "lem-type4", "lem-3-pair-sym", "theorem-sym-pair-symG",
+    "obs1-Gprime-equiG", "Gprime-equiG", "Psym-Gsym", "Pasym-Pord", "cor-Pasym-Pord",
+    "obs-v-move", "lem-vl-move"]
+
+
+@pytest.mark.parametrize("label", FAMILY_STATEMENTS)
+def test_every_family_statement_has_a_case_with_expectations(label):
+    from exactsym.config import read_config
+    tagged = []
+    for path in _all_cases():
+        cfg = read_config(path)
+        if label in cfg.lemmas:
+            assert {"orderable", "group", "paper_orderable", "paper_leader",
+                    "audit_agrees"} <= set(cfg.expect), path
+            tagged.append(path)
+    assert tagged, f"no case tagged {label}"
+
+
+def test_discrepancy_cases_have_notes():
+    from exactsym.config import read_config
+    for path in sorted(DISCREPANCIES.glob("family-*.toml")):
+        cfg = read_config(path)
+        assert cfg.notes and cfg.expect.get("audit_agrees") is False, path
+
+
+# ---------------------------------------------------------------- the command
+def _exactsym(*args):
+    return subprocess.run([sys.executable, "-m", "exactsym", *args], capture_output=True,
+                          text=True, cwd=ROOT)
+
+
+def test_audit_command_exit_codes_and_json():
+    bad = _exactsym("audit", str(DISCREPANCIES / "family-c3-two-triangles.toml"), "--json")
+    assert bad.returncode == 1, bad.stderr
+    data = json.loads(bad.stdout)
+    assert data["audit"]["agrees"] is False and data["paper"]["orderable"] is True
+    assert data["audit"]["truth"]["group"] == "C3"
+    good = _exactsym("audit", str(FAMILY / "gcd-9-15-merge.toml"))
+    assert good.returncode == 0, good.stderr
+    assert "agrees" in good.stdout
+    missing = _exactsym("audit", str(FAMILY / "no-such-file.toml"))
+    assert missing.returncode == 2 and "Traceback" not in missing.stderr
+
+
+def test_check_report_has_paper_and_audit():
+    out = _exactsym("check", "--json", str(FAMILY / "single-vertex-on-mirror.toml"))
+    assert out.returncode == 0, out.stderr
+    data = json.loads(out.stdout)
+    assert data["paper"]["orderable"] is False and data["paper"]["leader"] == 0
+    assert data["paper"]["trace"] and data["audit"]["truth"]["leader"] == 0
+    assert data["paper"]["first_actor"] == 0           # the robot on the mirror acts first
