@@ -1,0 +1,337 @@
+"""Certificates of the ground-truth symmetry verdict, for the independent :mod:`exactsym.checker`.
+
+:func:`make_certificate` turns a :class:`~exactsym.symmetry.SymmetryGroup` into the JSON object
+of ``docs/certificates.md``: the configuration written exactly, the claim (group, orderable) and
+a witness (generators with their permutations, a reference point and one refuting point per
+candidate isometry outside the group).  The witness is found here, with the project's exact
+numbers; the checker recomputes everything it needs from the certificate alone.
+
+Numbers.  Rationals are written ``"p/q"``.  Irrational numbers are written in a field Q(theta)
+with a REAL generator, so that the checker can decide signs with rational intervals:
+
+* a cyclotomic field Q(zeta_M) (square roots and trigonometry): its real elements lie in the real
+  subfield Q(theta), theta = 2cos(2pi/M), whose minimal polynomial Psi_M is known in closed form
+  (``"irreducible": {"method": "real-cyclotomic", "conductor": M}``).  A real
+  x = sum c_k zeta^k equals (x + conj x)/2 = c_0 + sum_k c_k V_k(theta)/2 with
+  V_k(theta) = zeta^k + zeta^-k (V_0 = 2, V_1 = theta, V_(k+1) = theta V_k - V_(k-1));
+* a field built by sympy's primitive element (nested radicals): theta is already real; its
+  irreducibility is shown by a prime modulo which the minimal polynomial stays irreducible
+  (``{"method": "prime", "prime": p}``); a field without such a prime (Galois group with no
+  deg-cycle) cannot be certified (:class:`CertificateError`).
+
+theta is located by an interval [lo, hi] holding no other root of its minimal polynomial.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from fractions import Fraction
+
+from flint import arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz_poly, nmod_poly
+
+from . import checker
+from .configuration import Configuration
+from .exact import FieldElement
+
+FORMAT = "exactsym-certificate"
+VERSION = 1
+
+
+class CertificateError(Exception):
+    """This configuration cannot be certified (or a bug: the group is not the truth)."""
+
+
+# ------------------------------------------------------------------ numbers
+
+def rational_text(q) -> str:
+    q = fmpq(q) if not isinstance(q, fmpq) else q
+    return str(q.p) if q.q == 1 else f"{q.p}/{q.q}"
+
+
+def _to_fmpq(q: Fraction) -> fmpq:
+    return fmpq(q.numerator, q.denominator)
+
+
+def _ball_bounds(ball) -> tuple[Fraction, Fraction]:
+    """Rational lo <= hi with the whole ball inside [lo, hi]."""
+    man, exp = ball.mid().man_exp()
+    rman, rexp = ball.rad().man_exp()
+    mid = Fraction(int(man)) * Fraction(2) ** int(exp)
+    rad = Fraction(int(rman)) * Fraction(2) ** int(rexp)
+    return mid - rad, mid + rad
+
+
+def _isolating_interval(minpoly: list[Fraction], enclose) -> tuple[Fraction, Fraction]:
+    """A short dyadic interval around theta (``enclose(prec)`` is an arb ball) holding no
+    other root of ``minpoly``: the coarsest [floor(lo 2^k), ceil(hi 2^k)] / 2^k that does."""
+    prec = 64
+    while prec <= 1 << 16:
+        low, high = _ball_bounds(enclose(prec))
+        for k in range(prec + 2):
+            scale = 2 ** k
+            lo = Fraction(math.floor(low * scale), scale)
+            hi = Fraction(math.ceil(high * scale) + (1 if high * scale == math.ceil(high * scale)
+                                                    else 0), scale)
+            if (checker.peval(minpoly, lo) * checker.peval(minpoly, hi) < 0
+                    and checker.one_root(minpoly, lo, hi)):
+                return lo, hi
+        prec *= 2
+    raise CertificateError("could not isolate the generator of the number field")
+
+
+class Encoder:
+    """Writes the numbers of one number system in the certificate's exact form."""
+
+    def __init__(self, system, values):
+        field = getattr(system, "field", None)
+        self.field = field
+        self.spec = None
+        if field is None or all(not isinstance(v, FieldElement) or v.is_rational()
+                                for v in values):
+            self.field = None                   # everything is rational: no field at all
+            return
+        if field.conductor is not None:
+            self._cyclotomic(field)
+        else:
+            self._general(field)
+
+    # -- the real subfield of Q(zeta_M)
+    def _cyclotomic(self, field):
+        m = field.conductor
+        phi = fmpz_poly.cyclotomic(m).coeffs()
+        h = (len(phi) - 1) // 2
+        theta = fmpq_poly([0, 1])
+        v_prev, v = fmpq_poly([2]), theta
+        psi = fmpq_poly([phi[h]])
+        for k in range(1, h + 1):
+            psi += int(phi[h + k]) * v
+            v_prev, v = v, theta * v - v_prev
+        if psi.degree() <= 1:
+            raise CertificateError(f"Q(zeta_{m}) has a rational real subfield, yet an "
+                                   "irrational real number was found")
+        self.minpoly = psi
+        self.basis = [fmpq_poly([1])]           # basis[k] = V_k(theta) / 2 mod Psi_M
+        v_prev, v = fmpq_poly([2]), theta
+        for _ in range(1, field.degree):
+            self.basis.append((v / 2) % psi)
+            v_prev, v = v, (theta * v - v_prev) % psi
+
+        def enclose(prec):
+            with ctx.workprec(prec + 16):
+                return 2 * arb.cos_pi_fmpq(fmpq(2, m))
+        self._finish(enclose, {"method": "real-cyclotomic", "conductor": m})
+
+    def _general(self, field):
+        self.minpoly = field.minpoly
+        self.basis = None
+        d = field.minpoly.degree()
+        coeffs = [Fraction(int(c.p), int(c.q)) for c in field.minpoly.coeffs()]
+        den = math.lcm(*(c.denominator for c in coeffs))
+        ints = [int(c * den) for c in coeffs]
+        for prime in _primes(5000):
+            if ints[-1] % prime == 0:
+                continue
+            factors = nmod_poly([c % prime for c in ints], prime).factor()[1]
+            if len(factors) == 1 and factors[0][1] == 1 and factors[0][0].degree() == d \
+                    and checker.irreducible_mod(coeffs, prime):
+                self._finish(field.enclosure, {"method": "prime", "prime": prime})
+                return
+        raise CertificateError(f"no prime below 5000 proves the minimal polynomial of "
+                               f"{field.name} irreducible; this field cannot be certified")
+
+    def _finish(self, enclose, proof):
+        coeffs = [Fraction(int(c.p), int(c.q)) for c in self.minpoly.coeffs()]
+        lo, hi = _isolating_interval(coeffs, enclose)
+        self._enclose = enclose
+        self.spec = {"minpoly": [rational_text(_to_fmpq(c)) for c in coeffs],
+                     "interval": [rational_text(_to_fmpq(lo)), rational_text(_to_fmpq(hi))],
+                     "irreducible": proof}
+
+    def convert(self, x) -> fmpq_poly | fmpq:
+        """x as a polynomial in theta (or as a rational)."""
+        if not isinstance(x, FieldElement):
+            return fmpq(x) if not isinstance(x, fmpq) else x
+        if x.is_rational():
+            return x.rational()
+        if self.basis is None:
+            return x.poly
+        result = fmpq_poly([0])
+        for c, b in zip(x.poly.coeffs(), self.basis):
+            if c != 0:
+                result += c * b
+        # the conversion is an identity of real numbers: check it numerically (a cheap guard)
+        with ctx.workprec(100):
+            if not arb_poly(result)(self._enclose(84)).overlaps(x.enclosure(84)):
+                raise CertificateError("real-subfield conversion failed (bug)")
+        return result
+
+    def text(self, x):
+        value = self.convert(x)
+        if isinstance(value, fmpq):
+            return rational_text(value)
+        if value.degree() <= 0:
+            return rational_text(value.coeffs()[0] if value.degree() == 0 else 0)
+        return [rational_text(c) for c in value.coeffs()]
+
+
+def _primes(limit: int):
+    sieve = bytearray([1]) * limit
+    for p in range(2, limit):
+        if sieve[p]:
+            yield p
+            sieve[p * p::p] = bytearray(len(range(p * p, limit, p)))
+
+
+# ------------------------------------------------------------------ the witness
+
+def _centroid(points):
+    n = len(points)
+    return (sum((p[0] for p in points), points[0][0] * 0) / n,
+            sum((p[1] for p in points), points[0][1] * 0) / n)
+
+
+def _sparsest(distances: list, centre_value) -> int:
+    """A point on the level (equal distance from the centre) with fewest points, off the centre."""
+    groups: dict = {}
+    for i, d in enumerate(distances):
+        if d != centre_value:
+            groups.setdefault(d, []).append(i)
+    return min(groups.values(), key=len)[0]
+
+
+def _orbits(ref: int, rot, mir) -> tuple[set, set]:
+    """The images of ``ref`` under the rotations and under the reflections of the group."""
+    orbit, j = [ref], (rot[ref] if rot else ref)
+    while j != ref:
+        orbit.append(j)
+        j = rot[j]
+    return set(orbit), ({mir[i] for i in orbit} if mir else set())
+
+
+def _refutations(n, ref, level, rot, mir, image) -> dict:
+    """For each candidate outside the group, one point whose image is not a point of P.
+    ``image(kind, b)`` returns a function mapping a point index to "is its image in P"."""
+    in_rot, in_ref = _orbits(ref, rot, mir)
+    out = {"rotation": [], "reflection": []}
+    for kind, inside in (("rotation", in_rot), ("reflection", in_ref)):
+        for b in level:
+            if b in inside:
+                continue
+            maps_in = image(kind, b)
+            for w in itertools.chain(level, range(n)):
+                if not maps_in(w):
+                    out[kind].append([b, w])
+                    break
+            else:
+                raise CertificateError(f"the {kind} taking point {ref} to point {b} is a "
+                                       "symmetry missing from the group (bug)")
+    return out
+
+
+def _cartesian_witness(config, group, enc):
+    pts = list(config.points)
+    n = len(pts)
+    cx, cy = _centroid(pts)
+    rel = [(x - cx, y - cy) for x, y in pts]
+    ref = _sparsest([x * x + y * y for x, y in rel], cx * 0)
+    ux, uy = rel[ref]
+    s = ux * ux + uy * uy
+    level = [i for i, (x, y) in enumerate(rel) if x * x + y * y == s]
+    inv = 1 / s
+    where = {p: i for i, p in enumerate(pts)}
+
+    def image(kind, b):
+        vx, vy = rel[b]
+        if kind == "rotation":
+            dot, cross = (ux * vx + uy * vy) * inv, (ux * vy - uy * vx) * inv
+            m = ((dot, -cross), (cross, dot))
+        else:
+            c, s2 = (ux * vx - uy * vy) * inv, (ux * vy + uy * vx) * inv
+            m = ((c, s2), (s2, -c))
+        return lambda w: (cx + m[0][0] * rel[w][0] + m[0][1] * rel[w][1],
+                          cy + m[1][0] * rel[w][0] + m[1][1] * rel[w][1]) in where
+
+    def isometry(iso):
+        if iso is None:
+            return None
+        return {"centre": [enc.text(cx), enc.text(cy)],
+                "matrix": [[enc.text(e) for e in row] for row in iso.matrix],
+                "permutation": list(iso.permutation)}
+
+    rot = group.rotation_generator.permutation if group.rotation_generator else None
+    mir = group.mirror.permutation if group.mirror else None
+    return {"reference": ref, "rotation": isometry(group.rotation_generator),
+            "mirror": isometry(group.mirror),
+            "refutations": _refutations(n, ref, level, rot, mir, image)}
+
+
+def _polar_witness(config, group):
+    polar = config.polar
+    n = len(polar)
+    keys = [(r2, t if r2 != 0 else fmpq(0)) for r2, t in polar]
+    where = {k: i for i, k in enumerate(keys)}
+    ref = _sparsest([r2 for r2, _ in polar], 0)
+    ra, ta = polar[ref]
+    level = [i for i, (r2, _) in enumerate(polar) if r2 == ra]
+
+    def key(r2, t):
+        return (r2, fmpq(0)) if r2 == 0 else (r2, t - (t.p // t.q))
+
+    def image(kind, b):
+        tb = polar[b][1]
+        if kind == "rotation":
+            return lambda w: key(polar[w][0], polar[w][1] + tb - ta) in where
+        return lambda w: key(polar[w][0], ta + tb - polar[w][1]) in where
+
+    def isometry(iso):
+        if iso is None:
+            return None
+        return {"turn": rational_text(iso.turn), "permutation": list(iso.permutation)}
+
+    rot = group.rotation_generator.permutation if group.rotation_generator else None
+    mir = group.mirror.permutation if group.mirror else None
+    return {"reference": ref, "rotation": isometry(group.rotation_generator),
+            "mirror": isometry(group.mirror),
+            "refutations": _refutations(n, ref, level, rot, mir, image)}
+
+
+# ------------------------------------------------------------------ the certificate
+
+def make_certificate(config: Configuration, group=None) -> dict:
+    """The certificate of ``config``'s symmetry group (``group`` from
+    :func:`exactsym.symmetry.symmetry_group`, computed when not given)."""
+    from .levels import rings
+    if group is None:
+        from .symmetry import symmetry_group
+        group = symmetry_group(config, rings(config))
+    # one point: no SEC to check, so a polar file stays polar (no trigonometry needed)
+    polar = config.polar is not None and (bool(group.polar) or config.n == 1)
+    if polar:
+        values = [r2 for r2, _ in config.polar]
+        system = config.polar_system
+    else:
+        values = [v for p in config.points for v in p]
+        for iso in (group.rotation_generator, group.mirror):
+            if iso is not None:
+                values += [e for row in iso.matrix for e in row]
+        system = config.system
+    enc = Encoder(system, values)
+    if polar:
+        points = [[enc.text(r2), rational_text(t if r2 != 0 else 0)] for r2, t in config.polar]
+    else:
+        points = [[enc.text(x), enc.text(y)] for x, y in config.points]
+    configuration = {"coordinates": "polar" if polar else "cartesian", "field": enc.spec,
+                     "points": points}
+    if config.n == 1:
+        witness = {}
+    elif polar:
+        witness = _polar_witness(config, group)
+    else:
+        witness = _cartesian_witness(config, group, enc)
+    return {"format": FORMAT, "version": VERSION,
+            "source": {"file": config.source, "name": config.name},
+            "claim": {"group": group.name, "orderable": bool(group.orderable)},
+            "configuration_sha256": checker.digest(configuration),
+            "configuration": configuration,
+            "witness": witness}

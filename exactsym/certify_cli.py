@@ -1,0 +1,81 @@
+"""``exactsym certify FILE -o CERT.json`` and ``exactsym verify CERT.json`` (``cli-1.md``).
+
+``certify`` computes the symmetry group, writes its certificate and checks it with the
+independent checker before reporting success.  ``verify`` uses :mod:`exactsym.checker` only.
+Exit codes: 0 valid; 1 the certificate does not prove its claim (reason on stderr); 2 the
+input, the certificate file (unreadable or not JSON) or the command line is unusable.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+
+from . import cli
+from .errors import InputError
+
+
+def _register(sub) -> None:
+    certify = sub.add_parser("certify", help="write a certificate of the symmetry verdict")
+    certify.add_argument("file", help="configuration file ('-' for standard input)")
+    certify.add_argument("-o", "--output", required=True, metavar="CERT.json",
+                         help="where to write the certificate ('-' for standard output)")
+    verify = sub.add_parser("verify", help="check a certificate with the independent checker")
+    verify.add_argument("certificate", metavar="CERT.json")
+
+
+def _cmd_certify(args) -> int:
+    from . import checker
+    from .certificate import CertificateError, make_certificate
+    from .configuration import load
+    config = load(args.file)
+    try:
+        cert = make_certificate(config)
+    except CertificateError as err:
+        raise InputError(f"{config.source}: cannot certify: {err}") from None
+    ok, message = checker.verify_certificate(json.loads(json.dumps(cert)))
+    if not ok:   # the tool's own verdict failed the independent check: a bug, say so
+        print(f"exactsym: internal error: the certificate does not verify ({message}); "
+              "please report it with the input file", file=sys.stderr)
+        return cli.EXIT_BUG
+    text = json.dumps(cert, separators=(",", ":")) + "\n"
+    if args.output == "-":
+        sys.stdout.write(text)
+    else:
+        try:
+            with open(args.output, "w", encoding="utf-8") as fh:
+                fh.write(text)
+        except OSError as err:
+            raise InputError(f"{args.output}: cannot write the certificate: {err.strerror}") \
+                from None
+        print(f"{args.output}: certificate of {config.source}: {message}")
+    return cli.EXIT_OK
+
+
+def _cmd_verify(args) -> int:
+    from . import checker
+    path = args.certificate
+    try:
+        if path == "-":
+            cert = json.load(sys.stdin)
+        else:
+            with open(path, encoding="utf-8") as fh:
+                cert = json.load(fh)
+    except OSError as err:
+        raise InputError(f"{path}: cannot read the certificate: {err.strerror}") from None
+    except json.JSONDecodeError as err:
+        raise InputError(f"{path}:{err.lineno}:{err.colno}: not JSON: {err.msg}") from None
+    except (ValueError, RecursionError) as err:
+        raise InputError(f"{path}: not JSON: {err}") from None
+    ok, message = checker.verify_certificate(cert)
+    if ok:
+        print(f"{path}: valid: {message}")
+        return cli.EXIT_OK
+    print(f"{path}: invalid certificate: {message}", file=sys.stderr)
+    return cli.EXIT_FALSE
+
+
+if _register not in cli.EXTRA_COMMANDS:
+    cli.EXTRA_COMMANDS.append(_register)
+cli.COMMANDS["certify"] = _cmd_certify
+cli.COMMANDS["verify"] = _cmd_verify
