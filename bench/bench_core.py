@@ -15,6 +15,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+from float_points import read_float_points
 
 from exactsym.configuration import load
 from exactsym.levels import rings
@@ -22,20 +23,7 @@ from exactsym.levels import rings
 
 def float_pipeline(path: Path) -> int:
     """Parse as floats, float Welzl (move-to-front), then levels by rounded radius and atan2."""
-    xs, ys = [], []
-    for line in path.read_text().splitlines():
-        line = line.split("#", 1)[0].strip()
-        if not line:
-            continue
-        if line.startswith("polar"):
-            _, r, t = line.split()
-            r, t = float(r), _frac(t)
-            xs.append(r * math.cos(2 * math.pi * t))
-            ys.append(r * math.sin(2 * math.pi * t))
-        else:
-            a, b = line.split()
-            xs.append(_frac(a))
-            ys.append(_frac(b))
+    xs, ys = read_float_points(path)
     x, y = np.array(xs), np.array(ys)
     order = list(range(len(xs)))
     random.Random(1).shuffle(order)
@@ -46,13 +34,6 @@ def float_pipeline(path: Path) -> int:
     idx = np.lexsort((angle, key))
     levels = np.unique(key[idx])
     return len(levels)
-
-
-def _frac(text: str) -> float:
-    if "/" in text:
-        p, q = text.split("/")
-        return int(p) / int(q)
-    return float(text)
 
 
 def _float_welzl(xs, ys, order):

@@ -23,6 +23,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+from float_points import read_float_points
 
 D4 = [((1, 0), (0, 1)), ((0, -1), (1, 0)), ((-1, 0), (0, -1)), ((0, 1), (-1, 0)),
       ((1, 0), (0, -1)), ((0, 1), (1, 0)), ((-1, 0), (0, 1)), ((0, -1), (-1, 0))]
@@ -84,13 +85,6 @@ CASES = {
 
 # ---------------------------------------------------------------- the float pipeline
 
-def _frac(text: str) -> float:
-    if "/" in text:
-        p, q = text.split("/")
-        return int(p) / int(q)
-    return float(text)
-
-
 def _cluster(values: np.ndarray, tol: float) -> np.ndarray:
     """Integer labels, equal for values closer than ``tol`` to a neighbour in sorted order."""
     order = np.argsort(values, kind="stable")
@@ -102,17 +96,7 @@ def _cluster(values: np.ndarray, tol: float) -> np.ndarray:
 def float_pipeline(path: Path) -> str:
     """Parse as floats, centroid, sort by atan2, rays and symbols up to a tolerance,
     period and mirrors by comparing rotated symbol arrays: the group name."""
-    xs, ys = [], []
-    for line in path.read_text().splitlines():
-        if line.startswith("polar"):
-            _, r, t = line.split()
-            r, t = _frac(r), _frac(t)
-            xs.append(r * math.cos(2 * math.pi * t))
-            ys.append(r * math.sin(2 * math.pi * t))
-        else:
-            a, b = line.split()
-            xs.append(_frac(a))
-            ys.append(_frac(b))
+    xs, ys = read_float_points(path)
     x, y = np.array(xs), np.array(ys)
     dx, dy = x - x.mean(), y - y.mean()
     r2 = dx * dx + dy * dy
