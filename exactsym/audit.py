@@ -24,6 +24,12 @@ claim is false on this configuration, in the paper's order, each as
 
 ``agrees`` is True iff the list is empty; ``conclusions_agree`` only looks at the
 conclusions.  The audit is outside :mod:`exactsym.paper` and may use both sides.
+
+The statements on levels and pairs of levels are checked within the family layer's
+budgets (:class:`exactsym.paper.family.Limits`: the same selection of pairs as
+``family_claims``, at most ``claim_levels`` asymmetric levels, a statement failing on
+many of them listed a few times and then counted); ``bounded`` in the result says what
+was checked (``docs/interpretations.md``, "Bounds of the family layer").
 """
 
 from __future__ import annotations
@@ -31,7 +37,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from .config import ConfigFile, PointSpec
-from .configuration import Configuration, from_file
+from .configuration import Configuration, from_file, no_cycle_collection
 from .exact import fmpq, number_text
 from .exprtree import BinOp, Const
 from .levels import Level, Rings, rings as compute_rings
@@ -103,10 +109,12 @@ def truth_in_O_S(group: SymmetryGroup, n: int) -> bool:
     return group.rotations % 2 == 0
 
 
-def group_about_centre(config: Configuration, ring_data: Rings, robots) -> tuple:
+def group_about_centre(config: Configuration, ring_data: Rings, robots,
+                       levels=None) -> tuple:
     """``(group, robots)``: the symmetry group, about the SEC centre C of the whole
     configuration, of the sub-configuration ``robots`` (sorted); its indices are
-    positions in ``robots``."""
+    positions in ``robots``.  ``levels``: the 1-based numbers of the levels holding
+    ``robots``, when known (then only those levels are looked at: O(|robots|), not O(t))."""
     robots = sorted(robots)
     where = {r: k for k, r in enumerate(robots)}
     if ring_data.polar:
@@ -115,12 +123,14 @@ def group_about_centre(config: Configuration, ring_data: Rings, robots) -> tuple
     else:
         sub = Configuration(points=[config.points[i] for i in robots], system=config.system,
                             source=config.source)
-    levels = []
-    for level in ring_data.levels:
+    chosen = ring_data.levels if levels is None else \
+        [ring_data.levels[k - 1] for k in sorted(set(levels))]
+    out = []
+    for level in chosen:
         pts = tuple(where[i] for i in level.points if i in where)
         if pts:
-            levels.append(Level(level.radius_squared, pts))
-    return symmetry_group(sub, Rings(ring_data.sec, tuple(levels), ring_data.polar)), robots
+            out.append(Level(level.radius_squared, pts))
+    return symmetry_group(sub, Rings(ring_data.sec, tuple(out), ring_data.polar)), robots
 
 
 def _symmetry_witness(group: SymmetryGroup, robots) -> dict | None:
@@ -202,24 +212,48 @@ def _d(statement, says, truth, witness=None, kind="claim") -> dict:
 
 
 def audit(config: Configuration, ring_data: Rings | None = None,
-          paper: F.PaperResult | None = None, options: dict | None = None) -> dict:
+          paper: F.PaperResult | None = None, options: dict | None = None,
+          group: SymmetryGroup | None = None) -> dict:
+    """See :func:`_audit` (run with the cyclic garbage collector paused)."""
+    with no_cycle_collection():
+        return _audit(config, ring_data, paper, options, group)
+
+
+def _audit(config: Configuration, ring_data: Rings | None = None,
+           paper: F.PaperResult | None = None, options: dict | None = None,
+           group: SymmetryGroup | None = None) -> dict:
     """The audit of ``config`` (see the module docstring); ``paper`` is recomputed when
-    not given.  Options: ``reading``, ``degree`` (passed to the paper), ``invariance``
-    (default True: recompute the paper in the other frames)."""
+    not given, and so is the true ``group``.  Options: ``reading``, ``degree`` (passed to
+    the paper), ``invariance`` (default True: recompute the paper in the other frames),
+    ``limits`` (:class:`exactsym.paper.family.Limits`, default the family layer's: the
+    statements on levels and pairs of levels are checked within its budgets, and the
+    frames are recomputed with it; ``bounded`` in the result says what was checked)."""
     options = options or {}
+    limits = options.get("limits") or F.DEFAULT_LIMITS
     ring_data = ring_data if ring_data is not None else compute_rings(config)
-    kw = {"reading": options.get("reading", "literal"), "degree": options.get("degree", "paper")}
+    kw = {"reading": options.get("reading", "literal"), "degree": options.get("degree", "paper"),
+          "limits": limits}
     if paper is None:
         paper = F.paper_procedure(config, ring_data, **kw)
-    group = symmetry_group(config, ring_data)
+    if group is None:
+        group = symmetry_group(config, ring_data)
     n = config.n
     in_os = truth_in_O_S(group, n)
-    G = F.concentric_polygons(config, ring_data)
+    G = paper.G_rings or F.concentric_polygons(config, ring_data)
     polar = F._is_polar(G)
     found: dict[str, list] = {}
+    failures: dict[str, int] = {}
+    examples = limits.claim_examples
+    bounded: dict = {}
 
     def add(d):
         found.setdefault(d["statement"], []).append(d)
+
+    def add_counted(d):
+        """A statement checked on many levels or pairs: its first failures, then a count."""
+        failures[d["statement"]] = failures.get(d["statement"], 0) + 1
+        if examples is None or failures[d["statement"]] <= examples:
+            add(d)
 
     whole_witness = _symmetry_witness(group, list(range(n)))
     # lemma-sym-ord (n > 1): in O_S => not orderable
@@ -227,35 +261,57 @@ def audit(config: Configuration, ring_data: Rings | None = None,
         add(_d("lemma-sym-ord", "P is in O_S, hence not orderable", "P is orderable",
                whole_witness))
     # lem-asym-ord on each level: asymmetric polygon => orderable
-    for g in G:
-        if F.is_symmetric_polygon(g):
-            continue
-        sub, robots = group_about_centre(config, ring_data, g.robots)
+    asym_levels = [g for g in G if not F.is_symmetric_polygon(g)]
+    cap = limits.claim_levels
+    if cap is not None and len(asym_levels) > cap:
+        asym_checked = asym_levels[:cap // 2] + asym_levels[len(asym_levels) - cap // 2:]
+    else:
+        asym_checked = asym_levels
+    for g in asym_checked:
+        sub, robots = group_about_centre(config, ring_data, g.robots, g.levels)
         if not sub.orderable:
-            add(_d("lem-asym-ord", f"{g.name} is an asymmetric polygon, hence orderable",
-                   f"{g.name} is not orderable (group {sub.name})",
-                   _symmetry_witness(sub, robots)))
+            add_counted(_d("lem-asym-ord", f"{g.name} is an asymmetric polygon, hence orderable",
+                           f"{g.name} is not orderable (group {sub.name})",
+                           _symmetry_witness(sub, robots)))
+    bounded["lem_asym_ord_levels_checked"] = len(asym_checked)
+    bounded["asymmetric_levels"] = len(asym_levels)
     # pairs of levels
     t = len(G)
-    pairs = [(i, j) for i in range(t) for j in range(i + 1, t)][:F.MAX_PAIRS]
+    pairs, total_pairs = F.select_pairs(G, limits)
+    bounded["pairs_checked"] = len(pairs)
+    bounded["of"] = total_pairs
     for i, j in pairs:
         a, b = G[i], G[j]
         sym = F.is_symmetric_pair(a, b)
-        sub, robots = group_about_centre(config, ring_data, a.robots + b.robots)
+        sub, robots = group_about_centre(config, ring_data, a.robots + b.robots,
+                                         a.levels + b.levels)
         if sym and sub.orderable:
             common = F._intersect(a.lines, b.lines)
-            add(_d("lem-sym-notord",
-                   f"<{a.name}, {b.name}> is a symmetric pair ({F.lines_text(common, polar)} "
-                   f"in common: {a.name} has {F.lines_text(a, polar)}, {b.name} has "
-                   f"{F.lines_text(b, polar)}), hence not orderable",
-                   f"the union of {a.name} and {b.name} is orderable (group {sub.name} about C)",
-                   {"pair": [a.name, b.name]}))
+            add_counted(_d("lem-sym-notord",
+                           f"<{a.name}, {b.name}> is a symmetric pair "
+                           f"({F.lines_text(common, polar)} in common: {a.name} has "
+                           f"{F.lines_text(a, polar)}, {b.name} has "
+                           f"{F.lines_text(b, polar)}), hence not orderable",
+                           f"the union of {a.name} and {b.name} is orderable (group "
+                           f"{sub.name} about C)", {"pair": [a.name, b.name]}))
         if not sym and not sub.orderable:
-            add(_d("lem-asym-pair-ord", f"<{a.name}, {b.name}> is an asymmetric pair, hence "
-                   "orderable", f"the union of {a.name} and {b.name} is not orderable "
-                   f"(group {sub.name} about C)", _symmetry_witness(sub, robots)))
+            add_counted(_d("lem-asym-pair-ord", f"<{a.name}, {b.name}> is an asymmetric pair, "
+                           "hence orderable", f"the union of {a.name} and {b.name} is not "
+                           f"orderable (group {sub.name} about C)",
+                           _symmetry_witness(sub, robots)))
+    for statement, count in failures.items():
+        if examples is not None and count > examples:
+            what = "levels" if statement == "lem-asym-ord" else "pairs of levels"
+            add(_d(statement, CLAIMS.get(statement, statement),
+                   f"false on {count} of the {what} checked; the first {examples} are listed",
+                   {"failures": count, "listed": examples}))
+    bounded["failures"] = dict(sorted(failures.items()))
     # lem-all-pair-asym-ord / lem-one-pair-asym-ord (on G)
-    asym_pair = F.find_asymmetry_pair(G)
+    try:
+        asym_pair = F.find_asymmetry_pair(G, limits.step_budget(n))
+    except F.WorkBudgetExceeded:
+        asym_pair = None
+        bounded["lem_all_pair_asym_ord"] = "not checked: Find_Asymmetry_Pair over budget"
     if asym_pair is not None and not group.orderable:
         a, b = G[asym_pair[0]], G[asym_pair[1]]
         add(_d("lem-all-pair-asym-ord", f"<{a.name}, {b.name}> is an asymmetric pair, hence "
@@ -309,7 +365,8 @@ def audit(config: Configuration, ring_data: Rings | None = None,
     return {"agrees": not ordered, "conclusions_agree": not conclusions,
             "discrepancies": ordered,
             "truth": {"group": group.name, "orderable": group.orderable,
-                      "leader": group.leader, "in_O_S": in_os}}
+                      "leader": group.leader, "in_O_S": in_os},
+            "bounded": bounded}
 
 
 def _dedupe(items: list) -> list:

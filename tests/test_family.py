@@ -15,7 +15,7 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import event, given, settings, strategies as st
 
 from exactsym.audit import audit, transformed
 from exactsym.configuration import load
@@ -340,3 +340,245 @@ def test_check_report_has_paper_and_audit():
     assert data["paper"]["orderable"] is False and data["paper"]["leader"] == 0
     assert data["paper"]["trace"] and data["audit"]["truth"]["leader"] == 0
     assert data["paper"]["first_actor"] == 0           # the robot on the mirror acts first
+
+
+# ---------------------------------------------------------------- bounds (scaling)
+@st.composite
+def aligned_families(draw, max_rings=6):
+    """Rings whose vertices often share rays (turns on a grid of 1/105 = 1/(3 5 7)):
+    odd orbits of C_k with k | 105 or not, rotated by grid steps, sometimes a robot at C
+    -- so that shared rays, odd G_ij, type 4 merges and chains of merges are common."""
+    m = draw(st.integers(1, max_rings))
+    points = []
+    for r in range(1, m + 1):
+        k = draw(st.sampled_from([1, 2, 3, 5, 7, 9, 15, 21, 35] if r < m else [3, 5, 9, 15, 21]))
+        rotate = Fraction(draw(st.integers(0, 104)), 105)
+        extra = draw(st.lists(st.integers(0, 104).map(lambda a: Fraction(a, 105)),
+                              max_size=2, unique=True)) if draw(st.booleans()) else []
+        turns = {(rotate + Fraction(j, k)) % 1 for j in range(k)} | set(extra)
+        points += [(Fraction(r), t) for t in turns]
+    if draw(st.integers(0, 5)) == 0:
+        points.append((Fraction(0), Fraction(0)))
+    return points
+
+
+def _shape(Gp):
+    return [(g.levels, g.robots, g.n, g.polygon.labels if g.polygon else None,
+             g.polygon.directions if g.polygon else None) for g in Gp]
+
+
+@settings(max_examples=250, deadline=None)
+@given(aligned_families())
+def test_prefiltered_preprocess_is_the_unfiltered_one(points):
+    """The prefilter (shared rays counted from exact ray keys; G_ij built only when its
+    vertex count can be odd and composite) gives exactly the G' of the faithful loop that
+    builds every G_ij -- in the listing mode for small families and in the counting mode
+    used above SMALL_FAMILY polygons."""
+    _, _, G = family_of(points)
+    ref_trace = []
+    reference = F.preprocess(G, ref_trace, prefilter=False)
+    trace, stats = [], {}
+    assert _shape(F.preprocess(G, trace, stats=stats)) == _shape(reference)
+    assert stats["complete"]
+    merges = [e["polygons"] for e in trace if e.get("branch") == "odd-merge-type4"]
+    assert merges == [e["polygons"] for e in ref_trace if e.get("branch") == "odd-merge-type4"]
+    event(f"{len(merges)} merge(s)")
+    old = F.SMALL_FAMILY
+    try:
+        F.SMALL_FAMILY = 0
+        assert _shape(F.preprocess(G, [])) == _shape(reference)
+    finally:
+        F.SMALL_FAMILY = old
+
+
+def _literal_reference(G, max_steps=None):
+    """Preprocess as printed, states holding all of G (the implementation before the
+    bounds): the reference for :func:`F.preprocess_literal`."""
+    G = list(G)
+    t = len(G)
+    max_steps = max_steps if max_steps is not None else 20 * (t + 2) ** 2
+    seen, cache = set(), {}
+    i, j, steps = 1, None, 0
+    while i <= t:
+        steps += 1
+        if steps > max_steps:
+            return False, steps
+        gi = G[i - 1]
+        if gi.at_centre or gi.n % 2 == 0:
+            i += 1
+            continue
+        if j is None:
+            j = 1
+        state = (i, j, tuple((g.levels, g.robots, g.n) for g in G))
+        if state in seen:
+            return False, steps
+        seen.add(state)
+        if j > t:
+            j = None
+            continue
+        gj = G[j - 1]
+        if j != i and not gj.at_centre and gj.n % 2 == 1:
+            inner, outer = (gi, gj) if gi.radius_squared < gj.radius_squared else (gj, gi)
+            key = (id(inner), id(outer))
+            if key not in cache:
+                proj = F.radial_projection(inner, outer)
+                cache[key] = (F.is_type4(proj.ring)[0], proj.ring, inner, outer)
+            if cache[key][0]:
+                G[i - 1] = cache[key][1]
+                continue
+        j += 1
+    return True, steps
+
+
+@settings(max_examples=150, deadline=None)
+@given(aligned_families(max_rings=5))
+def test_literal_preprocess_with_versions_and_prefilter_is_the_printed_loop(points):
+    _, _, G = family_of(points)
+    want = _literal_reference(G)
+    for fast_off in (False, True):
+        run = F.preprocess_literal(G, fast_off=fast_off)
+        assert (run.terminated, run.steps) == want
+
+
+@settings(max_examples=200, deadline=None)
+@given(aligned_families().map(lambda pts: pts + [(Fraction(9), Fraction(0)),
+                                                  (Fraction(9), Fraction(1, 2))]))
+def test_find_asymmetry_pair_is_the_first_pair_in_lexicographic_order(points):
+    _, _, G = family_of(points)
+    for fam in (G, F.preprocess(G)):
+        brute = next(((i, j) for i in range(len(fam)) for j in range(i + 1, len(fam))
+                      if not F.is_symmetric_pair(fam[i], fam[j])), None)
+        assert F.find_asymmetry_pair(fam) == brute
+
+
+def test_find_asymmetry_pair_beyond_the_quick_window():
+    """Many rings sharing a line with G1, the first partner far away (the index path)."""
+    pts = [(Fraction(r), Fraction(r % 2, 2)) for r in range(1, 30)]   # all on the line at 0
+    pts += ring(40, ["1/3"])                                    # no line shared with G1
+    pts += ring(50, ["0", "1/3", "2/3"])
+    _, _, G = family_of(pts)
+    brute = next(((i, j) for i in range(len(G)) for j in range(i + 1, len(G))
+                  if not F.is_symmetric_pair(G[i], G[j])), None)
+    assert brute == (0, 29)
+    assert F.find_asymmetry_pair(G) == brute
+    with pytest.raises(F.WorkBudgetExceeded):
+        F.find_asymmetry_pair(G, budget=5)
+
+
+@settings(max_examples=80, deadline=None)
+@given(aligned_families())
+def test_union_lines_are_the_chained_projections_lines(points):
+    _, _, G = family_of(points)
+    with_dir = [g for g in G if not g.at_centre]
+    if len(with_dir) < 2:
+        return
+    whole = with_dir[0]
+    for g in with_dir[1:]:
+        whole = F.radial_projection(whole, g).ring
+    lines, n = F._union_lines(with_dir)
+    assert n == whole.n
+    assert (lines is F.ALL_LINES) == (whole.lines is F.ALL_LINES)
+    if lines is not F.ALL_LINES:
+        assert keys(lines) == keys(whole.lines)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.integers(-5, 5), st.integers(-5, 5)).filter(lambda p: p != (0, 0)),
+                min_size=3, max_size=12, unique=True))
+def test_union_lines_cartesian(points):
+    from exactsym.configuration import Configuration
+    pts = dict.fromkeys([(x, y) for x, y in points] + [(x * 2, y * 2) for x, y in points[:2]])
+    config = Configuration.from_points([(Q(x), Q(y)) for x, y in pts])
+    G = F.concentric_polygons(config)
+    with_dir = [g for g in G if not g.at_centre]
+    if len(with_dir) < 2:
+        return
+    whole = with_dir[0]
+    for g in with_dir[1:]:
+        whole = F.radial_projection(whole, g).ring
+    lines, n = F._union_lines(with_dir)
+    assert n == whole.n
+    assert (lines is F.ALL_LINES) == (whole.lines is F.ALL_LINES)
+    if lines is not F.ALL_LINES:
+        assert keys(lines) == keys(whole.lines)
+
+
+def singles(count, den):
+    """``count`` single robots on distinct circles and rays, inside a triangle (t = count + 1)."""
+    return [(Fraction(r), Fraction(r % den, den)) for r in range(1, count + 1)] + \
+        regular(10 * count, 3)
+
+
+def test_select_pairs_and_triples():
+    _, _, G = family_of(singles(29, 101))
+    pairs, total = F.select_pairs(G)
+    assert total == 435 and pairs == [(i, j) for i in range(30) for j in range(i + 1, 30)]
+    _, _, G = family_of(singles(999, 1009))
+    pairs, total = F.select_pairs(G)
+    assert total == 1000 * 999 // 2 and len(pairs) == F.MAX_PAIRS
+    assert len(set(pairs)) == len(pairs) and all(i < j for i, j in pairs)
+    assert (0, 999) in pairs and (998, 999) in pairs and (11, 12) in pairs
+    middle = sorted(i for i, j in pairs if j == i + 1 and 12 <= i < 987)
+    assert len(middle) > 300 and middle[-1] > 980 and max(b - a for a, b in
+                                                       zip(middle, middle[1:])) <= 4
+    for t, count in ((100, 300), (5000, 600), (10 ** 6, 600)):
+        got = list(F._sampled_pairs(t, count))
+        assert len(got) == len(set(got)) == min(count, 276 + t - 23)
+        assert all(0 <= i < j < t for i, j in got) and (0, t - 1) in got
+    tight = F.Limits(claim_vertices=10, claim_vertices_per_robot=0)
+    assert len(F.select_pairs(G, tight)[0]) == 5          # 2 vertices a pair (at the ends)
+    assert len(F.select_pairs(G, F.UNBOUNDED)[0]) == total
+    triples, total = F.select_triples(1000)
+    triples = list(triples)
+    assert total == 1000 * 999 * 998 // 6 and len(triples) <= F.MAX_TRIPLES
+    assert (0, 1, 999) in triples
+
+
+def test_trace_is_compacted_but_keeps_findings():
+    trace = [{"algorithm": "Preprocess", "line": 12, "polygons": [], "statement": "x",
+              "detail": "", "branch": "skip-i-even"} for _ in range(500)]
+    trace.insert(300, {"algorithm": "MakeAsym", "line": 5, "polygons": [],
+                       "statement": "MakeAsym", "detail": "", "holds": False})
+    out, omitted = F.compact_trace(trace, 50)
+    assert len(out) == 50 and omitted == 452               # 48 kept, the finding, the count
+    assert out[-1]["omitted"] == 452 and any(e.get("holds") is False for e in out)
+    assert F.compact_trace(trace[:40], 50) == (trace[:40], 0)
+
+
+def test_large_family_has_bounded_trace_and_report():
+    """250 levels: 249 single robots on distinct rays, and a triangle."""
+    config = polar_configuration(singles(249, 251))
+    res = F.paper_procedure(config)
+    assert len(res.trace) <= 200
+    # every pair among the first and last 12 levels, then every consecutive pair
+    assert res.bounded["of"] == 250 * 249 // 2
+    assert res.bounded["family_claims_pairs_checked"] == 276 + 227
+    assert "obs-merg-asym-pair" in res.bounded["family_claims_partial"]
+    assert len(res.G) == 201 and res.G[100] == {"omitted": 50}
+    failures = [e for e in res.trace if e["statement"] == "obs-merg-asym-pair"
+                and e.get("holds") is False]
+    assert len(failures) == 9 and failures[-1]["witness"]["failures"] > 8   # 8, then a count
+    report = audit(config, paper=res)
+    assert report["bounded"]["pairs_checked"] == 276 + 227
+
+
+_NORM5 = [(5, 0), (4, 3), (3, 4), (0, 5), (-3, 4), (-4, 3), (-5, 0), (-4, -3), (-3, -4),
+          (0, -5), (3, -4), (4, -3)]
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.lists(st.sampled_from(range(12)), min_size=1, max_size=9, unique=True),
+                min_size=1, max_size=5))
+def test_prefiltered_preprocess_cartesian(subsets):
+    """Cartesian rings on the 12 rational rays of norm 5 (shared rays across circles),
+    inside a ring of all 12: the prefilter's exact Cartesian ray keys."""
+    from exactsym.configuration import Configuration
+    pts = []
+    for k, subset in enumerate(subsets, 1):
+        pts += [(Q(k * _NORM5[d][0]), Q(k * _NORM5[d][1])) for d in subset]
+    pts += [(Q(50 * x), Q(50 * y)) for x, y in _NORM5]
+    config = Configuration.from_points(pts)
+    G = F.concentric_polygons(config)
+    assert _shape(F.preprocess(G, [])) == _shape(F.preprocess(G, [], prefilter=False))
+    run = F.preprocess_literal(G)
+    assert (run.terminated, run.steps) == _literal_reference(G)

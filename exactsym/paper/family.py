@@ -57,6 +57,16 @@ Printed line numbers
     counted (algorithm2e's numbering of those depends on options the source does not
     fix).  The numbers are listed in ``docs/interpretations.md``.
 
+Bounds (near-linear time and memory for every input)
+    On random configurations every level is a single robot (t = n).  Nothing computes all
+    pairs eagerly: Preprocess builds G_ij only for pairs an exact prefilter cannot reject
+    (shared rays counted by hashing exact ray keys), ``Find_Asymmetry_Pair`` finds the
+    first pair through an index of lines, the projection of all polygons is built once.
+    The Section-3 checks run on a documented selection of pairs and triples, failures are
+    listed a few times and then counted, the trace and the lists of polygons are capped:
+    :class:`Limits` (``UNBOUNDED``: everything, no budget), ``PaperResult.bounded`` says
+    what was bounded; ``docs/interpretations.md``, "Bounds of the family layer".
+
 The trace is a list of dicts ``{"algorithm", "line", "polygons", "statement", "detail"}``
 with, where they apply, ``"robots"`` (configuration indices selected or moved), ``"branch"``
 (a stable name of the branch taken), ``"holds"`` (False when the step's claim is false on
@@ -65,19 +75,21 @@ this configuration: a finding; the audit collects them) and ``"round"``.
 
 from __future__ import annotations
 
+from bisect import bisect_left
 from dataclasses import dataclass, field
 from fractions import Fraction
-from functools import cached_property
+from functools import cached_property, lru_cache
+from itertools import combinations
 from math import gcd
 from typing import Iterable, Sequence
 
 from ..config import ConfigFile, PointSpec
-from ..configuration import Configuration, from_file
+from ..configuration import Configuration, from_file, no_cycle_collection
 from ..errors import InputError
 from ..exact import FieldElement, fmpq, normal_turn, number_text, rational_sqrt, sign
 from ..exprtree import BinOp, Const
 from ..levels import Rings, polar_sec, rings as compute_rings
-from .circle_polygon import CirclePolygon, level_polygon, polygon_from_directions
+from .circle_polygon import CirclePolygon, polygon_from_directions
 from . import polygon as P
 
 __all__ = [
@@ -87,6 +99,8 @@ __all__ = [
     "find_asymmetry", "find_asymmetry_pair", "family_claims", "make_asym", "MakeAsymResult",
     "elect_leader", "ElectLeaderResult", "paper_procedure", "PaperResult", "line_text",
     "MAX_QUADRATIC_N", "BRANCHES", "mirror_lines", "centrally_symmetric", "LineKey",
+    "Limits", "DEFAULT_LIMITS", "UNBOUNDED", "WorkBudgetExceeded", "select_pairs",
+    "select_triples",
 ]
 
 _HALF = fmpq(1, 2)
@@ -95,9 +109,78 @@ _HALF = fmpq(1, 2)
 #: Elect_Leader_Asym (the leader is then reported as not computed).
 MAX_QUADRATIC_N = 600
 
-#: Pair and triple statements are checked on at most this many pairs / triples.
+#: Pair and triple statements are checked on at most this many pairs / triples
+#: (the defaults of :class:`Limits`).
 MAX_PAIRS = 600
 MAX_TRIPLES = 3000
+
+
+class WorkBudgetExceeded(Exception):
+    """A step would exceed its work budget (:class:`Limits`); the caller records it."""
+
+
+@dataclass(frozen=True)
+class Limits:
+    """Work budgets of the family layer, so that it runs in near-linear time and memory
+    for every input (``docs/interpretations.md``, "Bounds of the family layer").  Every
+    budget is ``None`` in :data:`UNBOUNDED` (the faithful procedure, exhaustive checks).
+
+    * ``claim_pairs``: the Section-3 pair statements (``family_claims``, the audit's
+      ``lem-sym-notord``/``lem-asym-pair-ord``) are checked on every pair when t(t-1)/2 is
+      at most this, else on the pairs among the first and last :data:`END_LEVELS` levels
+      and then evenly spaced consecutive pairs (i, i+1), up to this many pairs;
+    * ``claim_vertices`` + ``claim_vertices_per_robot`` * n: the pairs checked have at most
+      this many vertices in all (a pair costs n_i + n_j);
+    * ``union_vertices``: ``theorem-los-g1n`` on the projection of every polygon onto the
+      outermost circle (one polygon with a vertex on every ray: O(n log n), about a
+      second of exact arithmetic per 50,000 Cartesian rays) is checked when the polygons
+      have at most this many vertices in all;
+    * ``claim_triples``: triples of G' (``lem-3-pair-sym``, ``lem-type4``): all when
+      C(t', 3) is at most this, else those among the first and last polygons of G' (as
+      many as keep C(m, 3) at most this);
+    * ``claim_levels``: the audit's ``lem-asym-ord`` on at most this many asymmetric
+      levels (the first and the last);
+    * ``claim_examples``: a statement failing more often records this many failures and
+      one entry with the count;
+    * ``search_steps`` + ``search_steps_per_robot`` * n: work steps of
+      ``Find_Asymmetry_Pair`` and of Preprocess's pair scan and printed loop (index steps;
+      a G_ij built costs :data:`BUILD_COST` steps a vertex): exact below the budget,
+      beyond it the step is reported as not carried out;
+    * ``trace_entries``: entries kept in the trace (findings and selections always kept,
+      the rest cut, with a final entry counting what was omitted); ``described``:
+      polygons listed in ``G`` / ``G_prime``; ``preprocess_entries``: polygons whose
+      Preprocess scan gets its own trace entries."""
+    claim_pairs: int | None = MAX_PAIRS
+    claim_vertices: int | None = 100_000
+    claim_vertices_per_robot: int = 2
+    claim_triples: int | None = MAX_TRIPLES
+    claim_levels: int | None = 200
+    claim_examples: int | None = 8
+    union_vertices: int | None = 50_000
+    search_steps: int | None = 5_000_000
+    search_steps_per_robot: int = 50
+    trace_entries: int | None = 200
+    described: int | None = 200
+    preprocess_entries: int | None = 40
+
+    def vertex_budget(self, n: int) -> int | None:
+        return None if self.claim_vertices is None else \
+            self.claim_vertices + self.claim_vertices_per_robot * n
+
+    def step_budget(self, n: int) -> int | None:
+        return None if self.search_steps is None else \
+            self.search_steps + self.search_steps_per_robot * n
+
+
+DEFAULT_LIMITS = Limits()
+UNBOUNDED = Limits(claim_pairs=None, claim_vertices=None, claim_triples=None,
+                   claim_levels=None, claim_examples=None, union_vertices=None,
+                   search_steps=None,
+                   trace_entries=None, described=None, preprocess_entries=None)
+
+#: With more than C(2 END_LEVELS, 2) pairs, the pairs among the first and last
+#: END_LEVELS levels are checked first (then consecutive pairs).
+END_LEVELS = 12
 
 #: Every branch of the family algorithms, as recorded in the trace's ``"branch"`` key
 #: (the test of the case library asserts that each is reached by some case).
@@ -145,7 +228,7 @@ class Ring:
     own: tuple
     keys: tuple = field(default=(), compare=False, repr=False)   # hashable ray keys
 
-    @property
+    @cached_property
     def n(self) -> int:
         return 1 if self.polygon is None else self.polygon.n
 
@@ -157,26 +240,64 @@ class Ring:
     def lines(self):
         return _compute_lines(self)
 
+    @property
+    def ray_keys(self) -> tuple:
+        """The exact hashable keys of the rays of its vertices (computed once, on demand)."""
+        keys = self.keys
+        if not keys and self.polygon is not None and self.polygon.n:
+            keys = _ray_keys(self.polygon)
+            object.__setattr__(self, "keys", keys)
+        return keys
+
 
 def _name(levels: Sequence[int]) -> str:
     levels = sorted(levels)
-    return f"G{levels[0]}" if len(levels) == 1 else "G(" + ",".join(map(str, levels)) + ")"
+    if len(levels) == 1:
+        return f"G{levels[0]}"
+    if len(levels) > 8:     # a readable name of bounded length
+        return (f"G({','.join(map(str, levels[:3]))},...,{levels[-1]}: "
+                f"{len(levels)} levels)")
+    return "G(" + ",".join(map(str, levels)) + ")"
+
+
+def _new_ring(name, polygon, radius_squared, levels, robots, own, keys=()) -> Ring:
+    """A :class:`Ring` without the dataclass constructor's per-field overhead (the family
+    layer builds one per level: on random configurations that is one per robot)."""
+    ring = object.__new__(Ring)
+    ring.__dict__.update(name=name, polygon=polygon, radius_squared=radius_squared,
+                         levels=levels, robots=robots, own=own, keys=keys,
+                         n=1 if polygon is None else len(polygon.labels))   # cached n
+    return ring
 
 
 def concentric_polygons(config: Configuration, ring_data: Rings | None = None) -> tuple:
     """G_1, ..., G_t of ``config`` (Section 3: "Elements of G are sorted according to
-    their distances from the center"), as :class:`Ring`\\ s with tuple labels."""
+    their distances from the center"), as :class:`Ring`\\ s with tuple labels (the
+    polygons of :func:`.circle_polygon.level_polygon`, labels wrapped in tuples)."""
     ring_data = ring_data if ring_data is not None else compute_rings(config)
     out = []
+    polar = ring_data.polar
+    if polar:
+        turns = config.polar
+    else:
+        cx, cy = ring_data.sec.centre
+        pts = config.points
+    new_polygon = object.__new__
     for k, level in enumerate(ring_data.levels):
         robots = tuple(level.points)
-        if sign(level.radius_squared) == 0:
-            out.append(Ring(f"G{k + 1}", None, level.radius_squared, (k + 1,), robots, robots))
+        if k == 0 and sign(level.radius_squared) == 0:      # only the nearest can be C
+            out.append(_new_ring(f"G{k + 1}", None, level.radius_squared, (k + 1,), robots,
+                                 robots))
             continue
-        poly = level_polygon(config, ring_data, k)
-        poly = CirclePolygon(tuple((i,) for i in poly.labels), poly.directions, poly.polar)
-        out.append(Ring(f"G{k + 1}", poly, level.radius_squared, (k + 1,), robots, robots,
-                        _ray_keys(poly)))
+        if polar:
+            dirs = tuple([turns[i][1] for i in robots])
+        else:
+            dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in robots])
+        poly = new_polygon(CirclePolygon)       # CirclePolygon(labels, dirs, polar), faster
+        poly.__dict__.update(labels=tuple([(i,) for i in robots]), directions=dirs,
+                             polar=polar)
+        out.append(_new_ring(f"G{k + 1}", poly, level.radius_squared, (k + 1,), robots,
+                             robots))
     return tuple(out)
 
 
@@ -389,7 +510,10 @@ def _nonempty(lines) -> bool:
 
 def is_symmetric_polygon(ring: Ring) -> bool:
     """``def-symmetric-poly`` (straight or skew symmetric; the robot at C and a single
-    vertex are symmetric)."""
+    vertex are symmetric).  At most two vertices: always (a single vertex has the line
+    through it, two vertices the perpendicular bisector), decided without the lines."""
+    if ring.polygon is None or ring.polygon.n <= 2:
+        return True
     return _nonempty(ring.lines)
 
 
@@ -463,8 +587,8 @@ def radial_projection(source: Ring, target: Ring, name: str | None = None) -> Pr
     order = []
     coincident = []
     tgt = target.polygon
-    tkeys = target.keys or _ray_keys(tgt)
-    skeys = source.keys or _ray_keys(source.polygon)
+    tkeys = target.ray_keys
+    skeys = source.ray_keys
     for lab, d, key in zip(tgt.labels, tgt.directions, tkeys):
         merged[key] = [lab, d]
         order.append(key)
@@ -549,11 +673,186 @@ def _entry(trace: list, algorithm: str, line, polygons, statement: str, detail: 
 
 
 def _odd(ring: Ring) -> bool:
-    return ring.polygon is not None and ring.polygon.n % 2 == 1
+    return ring.polygon is not None and ring.n % 2 == 1
 
 
 # ============================================================ Preprocess
-def preprocess(G: Sequence[Ring], trace: list | None = None) -> tuple:
+@lru_cache(maxsize=4096)
+def _could_be_type4(m: int) -> bool:
+    """A type 4 polygon has an odd, composite number of vertices (:func:`.polygon.polygon_type`:
+    "odd, n not prime"; and ``is_type4``'s vertex-string test requires the same), so at
+    least 9."""
+    return m >= 9 and m % 2 == 1 and not P._is_prime(m)
+
+
+#: Work steps charged for building one vertex of a G_ij and typing it (the polygon's
+#: strings and lines cost about a hundred index steps per vertex).
+BUILD_COST = 100
+
+
+class _Type4Pairs:
+    """Preprocess's test "G_ij is a type 4 polygon" on pairs of odd polygons, with an
+    *exact* prefilter (``docs/interpretations.md``, "Bounds of the family layer").
+
+    G_ij (the inner one projected onto the outer one's circle) has n_i + n_j - s
+    vertices, s the number of rays holding a vertex of both (``radial_projection`` merges
+    them): for two odd polygons that count is odd iff s is odd, and a type 4 polygon has
+    an odd composite number of vertices.  So G_ij is built only for the pairs that share
+    an odd number of rays and leave an odd composite count; every other pair is rejected
+    without building it, exactly as the faithful loop would reject it.  Shared rays are
+    counted with an index from exact ray keys (the rational turn, or the ray key of the
+    vector) to the odd polygons on that ray; a polygon is indexed only when some other
+    odd polygon is large enough to make 9 vertices with it (n + max n >= 10), so
+    configurations of small polygons cost nothing.  Verdicts of pairs built are kept by
+    identity (the polygons are immutable and kept alive here), so later passes and the
+    literal loop do not rebuild them.  ``budget``: index steps plus vertices of G_ij built
+    (None: unbounded); exceeding it raises :class:`WorkBudgetExceeded`."""
+
+    def __init__(self, budget: int | None):
+        self.budget = budget
+        self.steps = 0
+        self.built = 0
+        self.memo: dict = {}
+        self.index: dict = {}
+        self.indexed: dict = {}
+        self.max_n = 0
+        self.any_pair = False
+        self.ray_sets: dict = {}
+        self.by_rays: dict = {}
+
+    def spend(self, k: int) -> None:
+        self.steps += k
+        if self.budget is not None and self.steps > self.budget:
+            raise WorkBudgetExceeded(f"more than {self.budget} steps")
+
+    def reset(self, G) -> None:
+        odd = [g for g in G if g.n % 2 == 1 and g.polygon is not None]
+        sizes = sorted((g.n for g in odd), reverse=True)[:2]
+        self.max_n = sizes[0] if sizes else 0
+        self.any_pair = len(sizes) == 2 and sizes[0] + sizes[1] >= 10
+        if not self.any_pair:
+            return
+        for g in odd:
+            self.add(g)
+
+    def possible(self, G) -> bool:
+        """Whether two odd polygons of G can make a G_ij of 9 or more vertices (only then
+        can a scan build anything: n_i + n_j - s >= 9 with s >= 1)."""
+        return self.any_pair
+
+    def add(self, ring: Ring) -> None:
+        if id(ring) in self.indexed or ring.n + self.max_n < 10:
+            return
+        self.indexed[id(ring)] = ring
+        keys = ring.ray_keys
+        self.spend(len(keys))
+        for k in keys:
+            self.index.setdefault(k, {})[id(ring)] = ring
+
+    def remove(self, ring: Ring) -> None:
+        if self.indexed.pop(id(ring), None) is None:
+            return
+        for k in ring.ray_keys:
+            bucket = self.index.get(k)
+            if bucket is not None:
+                bucket.pop(id(ring), None)
+                if not bucket:
+                    del self.index[k]
+
+    def replaced(self, old: Sequence[Ring], new: Ring, G) -> None:
+        """``old`` left G and ``new`` (odd) entered it."""
+        if not self.any_pair:
+            raise AssertionError("no merge is possible without a candidate pair")
+        for ring in old:
+            self.remove(ring)
+        if new.n > self.max_n:
+            before, self.max_n = self.max_n, new.n
+            if before < 9:              # smaller polygons may have become eligible
+                self.spend(len(G))
+                for g in G:
+                    if _odd(g):
+                        self.add(g)
+        self.add(new)
+
+    def shared(self, gi: Ring) -> dict:
+        """``{id(gj): s}`` for the indexed odd polygons gj != gi sharing s >= 1 rays with gi."""
+        counts: dict = {}
+        if id(gi) not in self.indexed:
+            return counts
+        keys = gi.ray_keys
+        self.spend(len(keys))
+        index = self.index
+        for k in keys:
+            bucket = index.get(k)
+            if bucket is None or len(bucket) == 1:
+                continue
+            self.spend(len(bucket))
+            for rid in bucket:
+                counts[rid] = counts.get(rid, 0) + 1
+        counts.pop(id(gi), None)
+        return counts
+
+    def candidates(self, gi: Ring, counts: dict) -> list:
+        """The polygons whose G_ij may be type 4, in the order of G (nearest first)."""
+        indexed, n_i = self.indexed, gi.n
+        out = [indexed[rid] for rid, s in counts.items()
+               if s % 2 == 1 and _could_be_type4(n_i + indexed[rid].n - s)]
+        out.sort(key=lambda g: g.levels[-1])
+        return out
+
+    def _ray_set(self, ring: Ring):
+        rid = id(ring)
+        got = self.ray_sets.get(rid)
+        if got is None:
+            self.spend(ring.n)
+            got = self.ray_sets[rid] = (ring, frozenset(ring.ray_keys))
+        return got[1]
+
+    def verdict(self, gi: Ring, gj: Ring):
+        """``(is type 4, projection or None, text)`` for G_ij, built at most once per pair.
+        On the polar path G_ij's vertices are the union of the two sets of rational turns
+        and its type depends on them only, so a pair of ray sets already found not type 4
+        is rejected without building G_ij again (many aligned polygons cost one build)."""
+        inner, outer = (gi, gj) if _radius_less(gi, gj) else (gj, gi)
+        key = (id(inner), id(outer))
+        hit = self.memo.get(key)
+        if hit is None:
+            shape = None
+            if outer.polygon.polar and inner.polygon.polar:
+                shape = (self._ray_set(inner), self._ray_set(outer))
+                known = self.by_rays.get(shape)
+                if known is not None and not known[0]:
+                    hit = self.memo[key] = (inner, outer, False, None, known[1])
+                    return hit[2], hit[3], hit[4]
+            self.spend(BUILD_COST * (gi.n + gj.n))
+            proj = radial_projection(inner, outer)
+            ok, why = is_type4(proj.ring)
+            hit = self.memo[key] = (inner, outer, ok, proj, why)
+            if shape is not None:
+                self.by_rays[shape] = (ok, why)
+            self.built += 1
+        return hit[2], hit[3], hit[4]
+
+
+def _built_size(gi: Ring, gj: Ring, proj, counts: dict) -> int:
+    return proj.ring.n if proj is not None else gi.n + gj.n - counts.get(id(gj), 0)
+
+
+def _prefilter_text(gi: Ring, gj: Ring, counts: dict) -> str:
+    """Why the pair is rejected without building G_ij."""
+    if gi.n + gj.n < 9:
+        return f"{gj.name} (at most {gi.n + gj.n} vertices)"
+    m = gi.n + gj.n - counts.get(id(gj), 0)
+    what = "even" if m % 2 == 0 else ("below 9" if m < 9 else "prime")
+    return f"{gj.name} ({m} vertices: {what}, not type 4; G_ij not built)"
+
+
+#: Preprocess lists the polygons it passes over by name when G has at most this many.
+SMALL_FAMILY = 64
+
+
+def preprocess(G: Sequence[Ring], trace: list | None = None, limits: Limits | None = None,
+               stats: dict | None = None, prefilter: bool = True) -> tuple:
     """``Preprocess`` (Section 4.2), evident reading: for each G_i with an odd number of
     vertices, scan j = 1..t for G_j (j != i) with an odd number of vertices whose G_ij
     (the inner one projected onto the outer one's circle) is a type 4 polygon; replace
@@ -561,7 +860,175 @@ def preprocess(G: Sequence[Ring], trace: list | None = None) -> tuple:
     G_j by G_ij"), placed at the outer one's level, and rescan j with the merged polygon
     as G_i; after the scan i++ (also for odd G_i).  Passes are repeated until none
     merges ("We repeat this process of merging polygons until ...").  The robot at C is
-    not a polygon with a direction and is skipped.  Returns G'."""
+    not a polygon with a direction and is skipped.  Returns G'.
+
+    The scan builds G_ij only for the pairs :class:`_Type4Pairs` cannot reject exactly
+    (``prefilter=False`` runs the unfiltered loop, which builds every G_ij of two odd
+    polygons with n_i + n_j >= 9: the same G').  ``limits``: the work budget
+    (``search_steps``) and the number of polygons whose scan gets trace entries of its
+    own (the rest are counted in one entry).  ``stats`` (a dict) receives
+    ``complete`` (False when the budget stopped the scan: G' then holds the merges made
+    so far), ``pairs_built``, ``steps``, ``passes``."""
+    if not prefilter:
+        return _preprocess_unfiltered(G, trace)
+    limits = limits if limits is not None else DEFAULT_LIMITS
+    trace = trace if trace is not None else []
+    stats = stats if stats is not None else {}
+    G = list(G)
+    n_robots = sum(len(g.robots) for g in G)
+    pairs = _Type4Pairs(limits.step_budget(n_robots))
+    detail_left = [limits.preprocess_entries]
+    omitted: dict = {}
+
+    def bulk(line, polygons, detail, branch):
+        if detail_left[0] is not None and detail_left[0] <= 0:
+            omitted[branch] = omitted.get(branch, 0) + 1
+            return
+        _entry(trace, "Preprocess", line, polygons, "Preprocess", detail, branch=branch)
+
+    def scanned():
+        if detail_left[0] is not None:
+            detail_left[0] -= 1
+
+    passes, complete = 0, True
+    try:
+        pairs.reset(G)
+        if not pairs.possible(G):
+            # no two odd polygons make 9 vertices: every scan rejects every G_j without
+            # building G_ij (the loop below would say so polygon by polygon)
+            passes = 1
+            for gi in G:
+                if detail_left[0] is not None and detail_left[0] <= 0:
+                    branch = "skip-centre" if gi.at_centre else (
+                        "skip-i-even" if not _odd(gi) else "odd-pair-not-type4")
+                    omitted[branch] = omitted.get(branch, 0) + 1
+                    continue
+                if gi.at_centre:
+                    bulk(3, [gi.name], "the robot at C has no direction: not projected, "
+                         "skipped", "skip-centre")
+                elif not _odd(gi):
+                    bulk(12, [gi.name], f"{gi.name} has {gi.n} (even) vertices: i++",
+                         "skip-i-even")
+                else:
+                    _scan_entries(bulk, G if len(G) <= SMALL_FAMILY else None, gi, None, {},
+                                  {})
+                scanned()
+        merged_any = pairs.possible(G)
+        while merged_any:
+            merged_any = False
+            passes += 1
+            i = 0
+            while i < len(G):
+                gi = G[i]
+                pairs.spend(1)
+                if gi.at_centre:
+                    bulk(3, [gi.name], "the robot at C has no direction: not projected, "
+                         "skipped", "skip-centre")
+                    scanned()
+                    i += 1
+                    continue
+                if not _odd(gi):
+                    bulk(12, [gi.name], f"{gi.name} has {gi.n} (even) vertices: i++",
+                         "skip-i-even")
+                    scanned()
+                    i += 1
+                    continue
+                restart = True
+                while restart:
+                    restart = False
+                    counts = pairs.shared(gi)
+                    found, built = None, {}
+                    for gj in pairs.candidates(gi, counts):
+                        ok, proj, why = pairs.verdict(gi, gj)
+                        if ok:
+                            found = (gj, proj, why)
+                            break
+                        built[id(gj)] = (proj, why)
+                    # the order the scan saw (for the listing of a small family)
+                    before = G[:] if len(G) <= SMALL_FAMILY else None
+                    if found is not None:
+                        gj, proj, why = found
+                        new = proj.ring
+                        inner, outer = (gi, gj) if _radius_less(gi, gj) else (gj, gi)
+                        _entry(trace, "Preprocess", 9, [gi.name, gj.name, new.name],
+                               "obs-type-4",
+                               f"G_ij = {new.name} ({new.n} vertices) is {why}: replace "
+                               f"{gi.name} and {gj.name} by it (on the circle of {outer.name})"
+                               + _coincidence_note(proj), branch="odd-merge-type4")
+                        pairs.spend(2 * len(G))
+                        G[_index_of(G, outer)] = new
+                        G.pop(_index_of(G, inner))
+                        pairs.replaced((gi, gj), new, G)
+                        old_gi, gi = gi, new
+                        i = _index_of(G, new)
+                        merged_any = True
+                        restart = True
+                    else:
+                        old_gi = gi
+                    if detail_left[0] is None or detail_left[0] > 0:
+                        _scan_entries(bulk, before, old_gi, found, built, counts)
+                    else:
+                        omitted["odd-pair-not-type4"] = omitted.get("odd-pair-not-type4", 0) + 1
+                scanned()
+                i += 1
+    except WorkBudgetExceeded as err:
+        complete = False
+        _entry(trace, "Preprocess", None, [g.name for g in G[:8]], "Preprocess",
+               f"Preprocess stopped: its pair scan exceeded the work budget ({err}); G' "
+               f"below holds the merges made so far, and the procedure is reported as not "
+               f"carried out exactly", branch=None, kind="budget")
+    if omitted:
+        _entry(trace, "Preprocess", None, [], "Preprocess",
+               f"{sum(omitted.values())} further entries of the scan omitted ("
+               + ", ".join(f"{v} {k}" for k, v in sorted(omitted.items())) + ")",
+               omitted=dict(sorted(omitted.items())))
+    stats.update(complete=complete, pairs_built=pairs.built, steps=pairs.steps,
+                 passes=passes)
+    return tuple(G)
+
+
+def _scan_entries(bulk, G: list | None, gi: Ring, found, built: dict, counts: dict) -> None:
+    """The trace entries of one scan of j for G_i: the G_j rejected (lines 8, 10) and the
+    G_j passed over (even, or j = i: line 11), up to the partner when one was found;
+    listed by name when ``G`` (the family as the scan saw it) is given, else counted."""
+    stop = found[0] if found is not None else None
+    if G is not None:
+        skipped, rejected = [], []
+        for gj in G:
+            if gj is stop:
+                break
+            if gj is gi or not _odd(gj):
+                skipped.append(gj.name)
+            elif id(gj) in built:
+                proj, why = built[id(gj)]
+                rejected.append(f"{gj.name} ({_built_size(gi, gj, proj, counts)} vertices, "
+                                f"{why}" + (_coincidence_note(proj) if proj else "") + ")")
+            else:
+                rejected.append(_prefilter_text(gi, gj, counts))
+        if rejected:
+            bulk(10, [gi.name], "G_ij is not type 4 for G_j = " + "; ".join(rejected[:12])
+                 + (f"; ... ({len(rejected)} in all)" if len(rejected) > 12 else "")
+                 + ": j++", "odd-pair-not-type4")
+        if skipped:
+            bulk(11, [gi.name], f"j = i or G_j even: j++ past {', '.join(skipped[:12])}"
+                 + (f", ... ({len(skipped)} in all)" if len(skipped) > 12 else ""),
+                 "skip-j-even-or-same")
+        return
+    shown = [f"{proj.ring.name} ({proj.ring.n} vertices, {why})" if proj is not None else
+             f"a G_ij with the rays of one built before ({why})"
+             for proj, why in list(built.values())[:6]]
+    bulk(10, [gi.name], "G_ij is not type 4 for the odd G_j "
+         + ("before " + stop.name if stop is not None else "scanned")
+         + (": built and rejected " + "; ".join(shown) if shown else "")
+         + "; every other odd G_j is rejected without building G_ij (n_i + n_j - shared "
+         "rays is even, prime or below 9): j++", "odd-pair-not-type4")
+    bulk(11, [gi.name], "j = i or G_j even: j++ past them", "skip-j-even-or-same")
+
+
+def _preprocess_unfiltered(G: Sequence[Ring], trace: list | None = None) -> tuple:
+    """The faithful loop without the prefilter: G_ij is built for every pair of odd
+    polygons with n_i + n_j >= 9 (the reference the prefiltered :func:`preprocess` is
+    tested against; quadratic in t)."""
     trace = trace if trace is not None else []
     G = list(G)
     passes, merged_any = 0, True
@@ -651,9 +1118,11 @@ class LiteralRun:
     steps: int
     reason: str
     result: tuple
+    budget_exceeded: bool = False
 
 
-def preprocess_literal(G: Sequence[Ring], max_steps: int | None = None) -> LiteralRun:
+def preprocess_literal(G: Sequence[Ring], max_steps: int | None = None,
+                       limits: Limits | None = None, fast_off: bool = False) -> LiteralRun:
     """``Preprocess`` exactly as printed::
 
         i = 1; while i <= t: if G_i odd: j = 1; while j <= t:
@@ -663,43 +1132,79 @@ def preprocess_literal(G: Sequence[Ring], max_steps: int | None = None) -> Liter
 
     After a replacement j is not incremented (and G_j stays), and i is never
     incremented for an odd G_i, so the loop never ends once an odd polygon is reached
-    (the state (i, j, G) repeats: detected exactly) -- a finding."""
+    (the state (i, j, G) repeats: detected exactly) -- a finding.
+
+    "G_ij is type 4" uses the exact prefilter of :func:`preprocess` (G_ij is built only
+    when it can be type 4).  A state is (i, j, the version of G): G changes only by a
+    replacement, and each content of G (the levels, robots and size of each polygon, in
+    order) gets one version number, so a repeated state is still detected exactly while
+    a state costs O(1) (not O(t)).  When no two odd polygons can make a G_ij of 9
+    vertices, the run is counted without stepping through it (``fast_off`` steps through
+    it; the same result, tested).  Over the work budget of ``limits`` the run stops
+    (``terminated`` False, the reason says so)."""
+    limits = limits if limits is not None else DEFAULT_LIMITS
     G = list(G)
     t = len(G)
     max_steps = max_steps if max_steps is not None else 20 * (t + 2) ** 2
+    pairs = _Type4Pairs(limits.step_budget(sum(len(g.robots) for g in G)))
+    versions: dict = {}
+
+    def version() -> int:
+        pairs.spend(t)
+        return versions.setdefault(tuple((g.levels, g.robots, g.n) for g in G), len(versions))
+
     seen = set()
     i, j, steps = 1, None, 0
-    type4_cache: dict = {}
-    while i <= t:
-        steps += 1
-        if steps > max_steps:
-            return LiteralRun(False, steps, f"no end within {max_steps} steps", tuple(G))
-        gi = G[i - 1]
-        if gi.at_centre or not _odd(gi):
-            i += 1
-            continue
-        if j is None:
-            j = 1
-        state = (i, j, tuple((g.levels, g.robots, g.n) for g in G))
-        if state in seen:
-            return LiteralRun(False, steps, f"the state (i={i}, j={j}, G) repeats after "
+    candidates: dict = {}
+    try:
+        pairs.reset(G)
+        if not pairs.possible(G) and not fast_off:
+            # no G_ij can be type 4: the loop passes the polygons before the first odd
+            # one (one step each), then sweeps j = 1..t (t steps), ends the inner loop
+            # (one step) and re-enters it in the state it started from (one step)
+            first = next((k for k, g in enumerate(G, 1) if not g.at_centre and _odd(g)),
+                         None)
+            if first is None:
+                return LiteralRun(True, t, "terminated", tuple(G))
+            steps = first - 1 + t + 2
+            return LiteralRun(False, steps, f"the state (i={first}, j=1, G) repeats after "
                               f"{steps} steps: the printed loop never ends", tuple(G))
-        seen.add(state)
-        if j > t:
-            j = None       # the inner loop ended; the outer loop re-enters with the same i
-            continue
-        gj = G[j - 1]
-        if j != i and _odd(gj):
-            inner, outer = (gi, gj) if _radius_less(gi, gj) else (gj, gi)
-            key = (id(inner), id(outer))
-            if key not in type4_cache:
-                proj = radial_projection(inner, outer)
-                type4_cache[key] = (is_type4(proj.ring)[0], proj.ring)
-            ok, new = type4_cache[key]
-            if ok:
-                G[i - 1] = new          # "Replace G_i by G_ij"; j is not incremented
+        current = version()
+        while i <= t:
+            steps += 1
+            if steps > max_steps:
+                return LiteralRun(False, steps, f"no end within {max_steps} steps", tuple(G))
+            gi = G[i - 1]
+            if gi.at_centre or not _odd(gi):
+                i += 1
                 continue
-        j += 1
+            if j is None:
+                j = 1
+            state = (i, j, current)
+            if state in seen:
+                return LiteralRun(False, steps, f"the state (i={i}, j={j}, G) repeats after "
+                                  f"{steps} steps: the printed loop never ends", tuple(G))
+            seen.add(state)
+            if j > t:
+                j = None       # the inner loop ended; the outer loop re-enters with the same i
+                continue
+            gj = G[j - 1]
+            if j != i and _odd(gj):
+                cands = candidates.get(id(gi))
+                if cands is None:
+                    cands = candidates[id(gi)] = (gi, {id(g) for g in pairs.candidates(
+                        gi, pairs.shared(gi))})
+                if id(gj) in cands[1]:
+                    ok, proj, _ = pairs.verdict(gi, gj)
+                    if ok:
+                        G[i - 1] = proj.ring    # "Replace G_i by G_ij"; j is not incremented
+                        pairs.replaced((gi,), proj.ring, G)
+                        current = version()
+                        continue
+            j += 1
+    except WorkBudgetExceeded as err:
+        return LiteralRun(False, steps, f"not run to its end: the work budget was exceeded "
+                          f"({err})", tuple(G), True)
     return LiteralRun(True, steps, "terminated", tuple(G))
 
 
@@ -715,15 +1220,84 @@ def find_asymmetry(G: Sequence[Ring]) -> int | None:
     return None
 
 
-def find_asymmetry_pair(G: Sequence[Ring]) -> tuple[int, int] | None:
+def find_asymmetry_pair(G: Sequence[Ring], budget: int | None = None) -> tuple[int, int] | None:
     """``Find_Asymmetry_Pair`` (named, not given): the first asymmetric pair (no common
     line, ``def-sym-pair``) <G_i, G_j>, i < j, in lexicographic order of (i, j) (the
-    order ``lem-all-pair-asym-ord``'s proof uses); None when every pair is symmetric."""
-    for i in range(len(G)):
-        for j in range(i + 1, len(G)):
-            if not is_symmetric_pair(G[i], G[j]):
+    order ``lem-all-pair-asym-ord``'s proof uses); None when every pair is symmetric.
+
+    Exact, without looking at every pair: when all polygons have a common line every pair
+    shares it (None at once); a polygon without a line pairs asymmetrically with the next
+    one; otherwise the next few polygons are tried, and then an index from each line to
+    the polygons having it counts the polygons after G_i that share a line with it (or
+    have every line): G_i has an asymmetric partner iff that count falls short, and the
+    first partner is then located.  ``budget``: index steps (None: unbounded); exceeding
+    it raises :class:`WorkBudgetExceeded`."""
+    t = len(G)
+    if t < 2 or _nonempty(common_lines(G)):
+        return None
+    steps = 0
+
+    def spend(k):
+        nonlocal steps
+        steps += k
+        if budget is not None and steps > budget:
+            raise WorkBudgetExceeded(f"Find_Asymmetry_Pair: more than {budget} steps")
+
+    quick = 8
+    index = None
+    for i in range(t - 1):
+        li = G[i].lines
+        if not _nonempty(li):
+            return i, i + 1
+        end = min(t, i + 1 + quick)
+        spend(end - i)
+        for j in range(i + 1, end):
+            if not _nonempty(_intersect(li, G[j].lines)):
+                return i, j
+        if end == t:
+            continue
+        if index is None:
+            spend(t)
+            index, all_after, next_empty = _line_index(G)
+        # polygons at positions >= end compatible with G_i
+        if li is ALL_LINES:
+            j = next_empty[end]
+            if j < t:
+                return i, j
+            continue
+        sharing = set()
+        for line in li:
+            positions = index.get(line, ())
+            lo = bisect_left(positions, end)
+            spend(len(positions) - lo + 1)
+            sharing.update(positions[lo:])
+        if len(sharing) + all_after[end] == t - end:
+            continue
+        for j in range(end, t):
+            spend(1)
+            if j not in sharing and G[j].lines is not ALL_LINES:
                 return i, j
     return None
+
+
+def _line_index(G: Sequence[Ring]):
+    """``(line -> sorted positions of the polygons with that line (finite sets only),
+    all_after[k] = number of polygons at positions >= k with every line, next_empty[k] =
+    first position >= k of a polygon without a line (len(G) when none))``."""
+    t = len(G)
+    index: dict = {}
+    all_after = [0] * (t + 1)
+    next_empty = [t] * (t + 1)
+    for k in range(t - 1, -1, -1):
+        lines = G[k].lines
+        all_after[k] = all_after[k + 1] + (lines is ALL_LINES)
+        next_empty[k] = k if lines is not ALL_LINES and not lines else next_empty[k + 1]
+    for k, g in enumerate(G):
+        lines = g.lines
+        if lines is not ALL_LINES:
+            for line in lines:
+                index.setdefault(line, []).append(k)
+    return index, all_after, next_empty
 
 
 # ============================================================ Section 3 claims
@@ -732,21 +1306,151 @@ def _claim(trace, statement: str, holds: bool, polygons, detail: str, witness=No
                   witness=witness)
 
 
+def _sampled_pairs(t: int, count: int):
+    """Pairs among the first and last :data:`END_LEVELS` levels (lexicographic), then
+    consecutive pairs (i, i + 1) evenly spaced over the rest, ``count`` in all at most."""
+    k = END_LEVELS
+    ends = sorted(set(range(min(k, t))) | set(range(max(0, t - k), t)))
+    made = 0
+    for x, a in enumerate(ends):
+        for b in ends[x + 1:]:
+            if made >= count:
+                return
+            made += 1
+            yield a, b
+    ends_set = set(ends)
+    middle = [i for i in (range(k - 1, t - k) if t > 2 * k else ())
+              if not (i in ends_set and i + 1 in ends_set)] if t <= 4 * count + 4 * k else None
+    if middle is None:       # avoid a list of t indices: the same spacing, computed
+        lo, hi = k - 1, t - k            # i in [lo, hi): (i, i + 1) not both at the ends
+        span = hi - lo
+        left = count - made
+        for x in range(min(left, span)):
+            yield lo + (x * span) // min(left, span), lo + (x * span) // min(left, span) + 1
+        return
+    left = count - made
+    if len(middle) <= left:
+        chosen = middle
+    else:
+        chosen = [middle[(x * len(middle)) // left] for x in range(left)]
+    for i in chosen:
+        yield i, i + 1
+
+
+def select_pairs(G: Sequence[Ring], limits: Limits | None = None) -> tuple[list, int]:
+    """``(pairs, total)``: the pairs (i, j), i < j, of ``G`` on which pair statements are
+    checked (``family_claims``, the audit), and the number of pairs.  All pairs in
+    lexicographic order when there are at most ``limits.claim_pairs``; else the pairs
+    among the first and last :data:`END_LEVELS` levels, then evenly spaced consecutive
+    pairs; a pair is skipped when its vertices would exceed the vertex budget."""
+    limits = limits if limits is not None else DEFAULT_LIMITS
+    t = len(G)
+    total = t * (t - 1) // 2
+    cap = limits.claim_pairs
+    budget = limits.vertex_budget(sum(len(g.robots) for g in G))
+    if cap is None or total <= cap:
+        order = ((i, j) for i in range(t) for j in range(i + 1, t))
+    else:
+        order = _sampled_pairs(t, cap)
+    out, used = [], 0
+    for i, j in order:
+        if cap is not None and len(out) >= cap:
+            break
+        cost = G[i].n + G[j].n
+        if budget is not None and used + cost > budget:
+            continue
+        used += cost
+        out.append((i, j))
+    return out, total
+
+
+def select_triples(tp: int, limits: Limits | None = None) -> tuple[Iterable, int]:
+    """``(triples, total)``: every triple of the tp polygons of G' when there are at most
+    ``limits.claim_triples``, else every triple among the first and last m polygons
+    (C(m, 3) at most the limit)."""
+    limits = limits if limits is not None else DEFAULT_LIMITS
+    total = tp * (tp - 1) * (tp - 2) // 6
+    cap = limits.claim_triples
+    if cap is None or total <= cap:
+        return combinations(range(tp), 3), total
+    m = 3
+    while (m + 1) * m * (m - 1) // 6 <= cap:
+        m += 1
+    idx = list(range((m + 1) // 2)) + list(range(tp - m // 2, tp))
+    return combinations(idx, 3), total
+
+
+def _union_lines(rings: Sequence[Ring]):
+    """The lines of the projection of every polygon of ``rings`` onto the outermost
+    circle (radial projection one after the other, nearest first): that polygon has one
+    vertex on every ray holding a vertex of some polygon, and its lines depend on these
+    rays only (:func:`mirror_lines` and :func:`centrally_symmetric` compare directions),
+    so it is built once from the distinct rays (O(n log n), not O(t n)); equal to the
+    chained projections (tested)."""
+    polar = rings[0].polygon.polar
+    seen: dict = {}
+    for g in rings:
+        for d, key in zip(g.polygon.directions, g.ray_keys):
+            if key not in seen:
+                seen[key] = d
+    dirs = list(seen.values())
+    if polar:
+        dirs.sort()
+    else:
+        dirs.sort(key=_angle_order_key)
+    poly = CirclePolygon(tuple((k,) for k in range(len(dirs))), tuple(dirs), polar)
+    ring = _new_ring("G*", poly, rings[-1].radius_squared, (), (), ())
+    return ring.lines, poly.n
+
+
+def _angle_order_key(d):
+    """An exact key increasing with the angle of the vector d in [0, 2 pi) from the +x
+    ray (the order of :func:`.circle_polygon.polygon_from_directions`)."""
+    x, y = d
+    sy = sign(y)
+    if sy > 0:
+        return (1, -x / y)
+    if sy < 0:
+        return (3, -x / y)
+    return (0, 0) if sign(x) > 0 else (2, 0)
+
+
 def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = None,
-                  polar: bool = True) -> list[dict]:
+                  polar: bool = True, limits: Limits | None = None,
+                  stats: dict | None = None) -> list[dict]:
     """Evaluate, with the paper's own notions (exact), the family statements of Section 3
     on G and G' and record each failure (``holds`` False, with a witness) and one
     summary per statement that holds.  Claims about orderability need the truth and are
-    the audit's (``lem-sym-notord``, ``lem-asym-pair-ord``, ...)."""
+    the audit's (``lem-sym-notord``, ``lem-asym-pair-ord``, ...).
+
+    Bounded by ``limits`` (:class:`Limits`; :data:`UNBOUNDED` checks everything): pair
+    statements on :func:`select_pairs`, triple statements on :func:`select_triples`,
+    ``theorem-los-g1n`` on the projection of every polygon within the vertex budget,
+    ``theorem-sym-pair-symG`` within the search budget.  A statement failing on more than
+    ``limits.claim_examples`` instances records that many and then one entry with the
+    count.  ``stats`` (a dict) receives what was checked: ``pairs_checked``, ``pairs``,
+    ``triples_checked``, ``triples``, ``partial`` (the statements not checked on every
+    instance), ``failures`` (per statement)."""
+    limits = limits if limits is not None else DEFAULT_LIMITS
     trace = trace if trace is not None else []
+    stats = stats if stats is not None else {}
     out: list[dict] = []
+    failures: dict = {}
+    examples = limits.claim_examples
+    partial: set = set()
 
     def fail(statement, polygons, detail, witness=None):
-        out.append(_claim(trace, statement, False, polygons, detail, witness))
+        failures[statement] = failures.get(statement, 0) + 1
+        if examples is None or failures[statement] <= examples:
+            out.append(_claim(trace, statement, False, polygons, detail, witness))
 
     checked: dict = {}
     t = len(G)
-    pairs = [(i, j) for i in range(t) for j in range(i + 1, t)][:MAX_PAIRS]
+    n_robots = sum(len(g.robots) for g in G)
+    pairs, total_pairs = select_pairs(G, limits)
+    if len(pairs) < total_pairs:
+        partial.update(("obs-pair-asym-ord", "obs-merg-asym-pair", "lem-los-gij", "obs-gcd",
+                        "obs-type-4"))
     for i, j in pairs:
         a, b = G[i], G[j]
         names = [a.name, b.name]
@@ -807,17 +1511,19 @@ def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = No
     # theorem-los-g1n on the projection of every polygon onto the outermost circle,
     # and on every merged polygon of G'
     with_dir = [g for g in G if not g.at_centre]
-    if len(with_dir) >= 2:
-        whole = with_dir[0]
-        for g in with_dir[1:]:
-            whole = radial_projection(whole, g).ring
+    if len(with_dir) >= 2 and limits.union_vertices is not None and \
+            sum(g.n for g in with_dir) > limits.union_vertices:
+        partial.add("theorem-los-g1n")
+    elif len(with_dir) >= 2:
+        whole_lines, whole_n = _union_lines(with_dir)
+        whole_name = _name([k for g in with_dir for k in g.levels])
         common = common_lines(with_dir)
         checked["theorem-los-g1n"] = checked.get("theorem-los-g1n", 0) + 1
-        extra = _lines_not_in(whole.lines, common)
+        extra = _lines_not_in(whole_lines, common)
         if extra:
-            fail("theorem-los-g1n", [g.name for g in with_dir] + [whole.name],
-                 f"G_(1..n) = {whole.name} (every polygon projected onto the outermost "
-                 f"circle) has {lines_text(whole, polar)}, but the polygons have "
+            fail("theorem-los-g1n", _few_names(with_dir) + [whole_name],
+                 f"G_(1..n) = {whole_name} (every polygon projected onto the outermost "
+                 f"circle) has {lines_text(whole_lines, polar)}, but the polygons have "
                  f"{lines_text(common, polar)} in common",
                  {"line": extra, "within_hypotheses": False})
     by_level = {g.levels[0]: g for g in G}
@@ -828,15 +1534,16 @@ def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = No
             checked["theorem-los-g1n"] = checked.get("theorem-los-g1n", 0) + 1
             extra = _lines_not_in(g.lines, common)
             if extra:
-                fail("theorem-los-g1n", [p.name for p in parts] + [g.name],
+                fail("theorem-los-g1n", _few_names(parts) + [g.name],
                      f"the merged polygon {g.name} of G' has {lines_text(g, polar)}, but its "
                      f"parts have {lines_text(common, polar)} in common",
                      {"line": extra, "within_hypotheses": True})
     # triples of G': lem-type4, lem-3-pair-sym
     tp = len(Gp)
-    triples = [(i, j, k) for i in range(tp) for j in range(i + 1, tp)
-               for k in range(j + 1, tp)][:MAX_TRIPLES]
+    triples, total_triples = select_triples(tp, limits)
+    triples_checked = 0
     for i, j, k in triples:
+        triples_checked += 1
         trio = (Gp[i], Gp[j], Gp[k])
         pairwise = all(is_symmetric_pair(x, y) for x, y in ((trio[0], trio[1]),
                                                              (trio[1], trio[2]),
@@ -854,34 +1561,58 @@ def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = No
             if any(gcd(x, y) > 1 for x in counts for y in counts if x != y):
                 fail("lem-type4", names, f"pairwise symmetric with n = {counts}, not "
                      "pairwise coprime", {"n": counts})
+    if triples_checked < total_triples:
+        partial.update(("lem-3-pair-sym", "lem-type4"))
     # theorem-sym-pair-symG on G', obs1-Gprime-equiG on G and G', Gprime-equiG
-    all_pairs_sym = all(is_symmetric_pair(Gp[i], Gp[j]) for i in range(tp)
-                        for j in range(i + 1, tp))
+    steps = limits.step_budget(n_robots)
     symmetric_p = is_symmetric_family(Gp)
     symmetric_g = is_symmetric_family(G)
-    if tp >= 2:       # with one polygon "every pair is symmetric" is vacuous
+    try:
+        all_pairs_sym = find_asymmetry_pair(Gp, steps) is None
+    except WorkBudgetExceeded:
+        all_pairs_sym = None
+        partial.add("theorem-sym-pair-symG")
+    if tp >= 2 and all_pairs_sym is not None:   # one polygon: "every pair" is vacuous
         checked["theorem-sym-pair-symG"] = 1
-    if tp >= 2 and all_pairs_sym != symmetric_p:
-        fail("theorem-sym-pair-symG", [g.name for g in Gp],
-             f"every pair of G' symmetric: {all_pairs_sym}; a common line for all: "
-             f"{symmetric_p}")
+        if all_pairs_sym != symmetric_p:
+            fail("theorem-sym-pair-symG", _few_names(Gp),
+                 f"every pair of G' symmetric: {all_pairs_sym}; a common line for all: "
+                 f"{symmetric_p}")
     for label, fam in (("G", G), ("G'", Gp)):
         if is_symmetric_family(fam):
             checked["obs1-Gprime-equiG"] = checked.get("obs1-Gprime-equiG", 0) + 1
-            bad = next(((x, y) for x in range(len(fam)) for y in range(x + 1, len(fam))
-                        if not is_symmetric_pair(fam[x], fam[y])), None)
+            bad = find_asymmetry_pair(fam)    # None at once: the common line is shared
             if bad is not None:
                 fail("obs1-Gprime-equiG", [fam[bad[0]].name, fam[bad[1]].name],
                      f"{label} is symmetric but this pair is not")
     checked["Gprime-equiG"] = 1
     if symmetric_p != symmetric_g:
-        fail("Gprime-equiG", [g.name for g in Gp], f"G symmetric: {symmetric_g}; G' "
+        fail("Gprime-equiG", _few_names(Gp), f"G symmetric: {symmetric_g}; G' "
              f"symmetric: {symmetric_p}")
-    failed = {c["statement"] for c in out}
+    for statement, count in failures.items():
+        if examples is not None and count > examples:
+            out.append(_claim(trace, statement, False, [],
+                              f"fails on {count} of the {checked.get(statement, count)} "
+                              f"instance(s) checked; the first {examples} are listed",
+                              {"failures": count, "checked": checked.get(statement, count),
+                               "listed": examples}))
     for statement, count in checked.items():
-        if statement not in failed:
-            _claim(trace, statement, True, [], f"holds on the {count} instance(s) checked")
+        if statement not in failures:
+            note = (" (a bounded part of the instances: see paper.bounded)"
+                    if statement in partial else "")
+            _claim(trace, statement, True, [], f"holds on the {count} instance(s) checked"
+                   + note)
+    stats.update(pairs_checked=len(pairs), pairs=total_pairs,
+                 triples_checked=triples_checked, triples=total_triples,
+                 partial=sorted(partial), failures=dict(sorted(failures.items())))
     return out
+
+
+def _few_names(rings: Sequence[Ring], k: int = 8) -> list:
+    """The names of ``rings``, at most k of them (the first and the last)."""
+    if len(rings) <= k:
+        return [g.name for g in rings]
+    return [g.name for g in rings[:k // 2]] + ["..."] + [g.name for g in rings[-(k // 2):]]
 
 
 def _lines_not_in(lines, allowed):
@@ -1006,8 +1737,9 @@ def _epsilon_rotation(place: _Placement, robot: int, orientation: int, accept,
     others = [place.direction(i) for i in all_robots if i != robot]
     others = [d for d in others if sign(d[0]) != 0 or sign(d[1]) != 0]
     tau = fmpq(-orientation, 4)
+    nearest = _nearest_turn(u, others, orientation)
     for _ in range(64):                      # fit inside the gap (always possible)
-        if _inside_gap(u, _rotate_vector(u, tau, 4), others, orientation):
+        if _inside_gap(u, _rotate_vector(u, tau, 4), nearest, orientation):
             break
         tau /= 2
     first = tau
@@ -1020,20 +1752,28 @@ def _epsilon_rotation(place: _Placement, robot: int, orientation: int, accept,
     return f"rotation with tau = {number_text(first)}", False
 
 
-def _inside_gap(u, far, others, orientation) -> bool:
+def _turn_key(u, v, orientation):
+    """Exact key increasing with the angle from u to v in the moving sense (clockwise for
+    orientation +1)."""
+    return _ccw_gap_key(False, v, u) if orientation == 1 else _ccw_gap_key(False, u, v)
+
+
+def _nearest_turn(u, others, orientation):
+    """The smallest :func:`_turn_key` from u to a direction of ``others`` off u's ray
+    (None when there is none): computed once, so that each epsilon tried costs O(1)."""
+    ray = _ray_key(False, u)
+    keys = [_turn_key(u, d, orientation) for d in others if _ray_key(False, d) != ray]
+    return min(keys) if keys else None
+
+
+def _inside_gap(u, far, nearest, orientation) -> bool:
     """``far`` is reached from u, turning clockwise (orientation +1) or counter-clockwise,
-    before any direction of ``others`` (which may share u's ray)."""
-    def turn(a, b):          # angle from a to b in the moving sense
-        return _ccw_gap_key(False, b, a) if orientation == 1 else _ccw_gap_key(False, a, b)
-    reach = turn(u, far)
+    before any direction of the others (which may share u's ray): before ``nearest``,
+    the smallest turn to one of them (:func:`_nearest_turn`)."""
+    reach = _turn_key(u, far, orientation)
     if reach == _ccw_gap_key(False, u, u):
         return False
-    for d in others:
-        if _ray_key(False, d) == _ray_key(False, u):
-            continue
-        if not reach < turn(u, d):
-            return False
-    return True
+    return nearest is None or reach < nearest
 
 
 # ============================================================ MakeAsym
@@ -1089,7 +1829,8 @@ def _elect_asym(trace, alg, line, ring_poly: Ring, target: Ring, orientation, re
 
 
 def make_asym(config: Configuration, ring_data: Rings, Gp: Sequence[Ring], trace: list,
-              orientation: int = 1, reading: str = "literal", rnd: int = 1) -> MakeAsymResult:
+              orientation: int = 1, reading: str = "literal", rnd: int = 1,
+              limits: Limits | None = None) -> MakeAsymResult:
     """``MakeAsym`` (Section 4.2) on G' whose G_t is symmetric, every branch.
 
     Epsilon moves: :func:`_epsilon_rotation` (exact: a rational turn, or a rational
@@ -1141,7 +1882,7 @@ def make_asym(config: Configuration, ring_data: Rings, Gp: Sequence[Ring], trace
         return True
 
     a = find_asymmetry(Gp)
-    _entry(trace, alg, 1, [g.name for g in Gp], "lem-one-pair-asym-ord",
+    _entry(trace, alg, 1, _few_names(Gp), "lem-one-pair-asym-ord",
            f"FindAsymmetry(G'): {'found ' + Gp[a].name if a is not None else 'none'}",
            round=rnd)
     if a is not None:
@@ -1159,9 +1900,18 @@ def make_asym(config: Configuration, ring_data: Rings, Gp: Sequence[Ring], trace
             return MakeAsymResult("orderable", branch, moves, _safe_config(place, trace, rnd))
         return _small_gt(config, place, Gp, Ga, None, trace, orientation, reading, rnd, moves,
                          move_out, polygon_branch=True)
-    _entry(trace, alg, 13, [g.name for g in Gp], "lem-all-pair-asym-ord",
-           "Find_Asymmetry_Pair(G'): " + _pair_text(Gp), round=rnd)
-    pair = find_asymmetry_pair(Gp)
+    limits = limits if limits is not None else DEFAULT_LIMITS
+    try:
+        pair = find_asymmetry_pair(Gp, limits.step_budget(config.n))
+    except WorkBudgetExceeded as err:
+        _entry(trace, alg, 13, _few_names(Gp), "lem-all-pair-asym-ord",
+               f"Find_Asymmetry_Pair(G') not carried out: {err} (work budget)", round=rnd,
+               kind="budget")
+        return MakeAsymResult("undecided", "asym-pair-large", moves, None)
+    _entry(trace, alg, 13, _few_names(Gp), "lem-all-pair-asym-ord",
+           "Find_Asymmetry_Pair(G'): " + ("none" if pair is None else
+                                           f"<{Gp[pair[0]].name}, {Gp[pair[1]].name}>"),
+           round=rnd)
     if pair is not None:
         gi, gj = Gp[pair[0]], Gp[pair[1]]
         if Gt.n > 3:
@@ -1234,15 +1984,10 @@ def make_asym(config: Configuration, ring_data: Rings, Gp: Sequence[Ring], trace
         _check_v_move(trace, place, gi, Gt, v, robot, orientation, reading, rnd)
         move_eps(robot, 28, branch, accept_asym(t - 1), f"{Gt.name} asymmetric")
         return MakeAsymResult("orderable", branch, moves, _safe_config(place, trace, rnd))
-    _entry(trace, alg, 29, [g.name for g in Gp], "theorem-sym-pair-symG",
+    _entry(trace, alg, 29, _few_names(Gp), "theorem-sym-pair-symG",
            "Report: G' is not orderable (no asymmetric polygon, no asymmetric pair, no "
            "single-vertex polygon)", branch="not-orderable", round=rnd)
     return MakeAsymResult("not-orderable", "not-orderable", moves, None)
-
-
-def _pair_text(Gp) -> str:
-    pair = find_asymmetry_pair(Gp)
-    return "none" if pair is None else f"<{Gp[pair[0]].name}, {Gp[pair[1]].name}>"
 
 
 def _safe_config(place: _Placement, trace, rnd):
@@ -1310,8 +2055,9 @@ def _moved_ring(ring: Ring, place: _Placement) -> Ring:
     poly = ring.polygon
     dirs = []
     moved_to_centre = False
+    own_set = set(ring.own)
     for lab, d in zip(poly.labels, poly.directions):
-        own = [r for r in lab if r in set(ring.own)]
+        own = [r for r in lab if r in own_set]
         r = own[0] if own else lab[0]
         nd = place.direction(r)
         if not place.polar and sign(nd[0]) == 0 and sign(nd[1]) == 0:
@@ -1320,8 +2066,8 @@ def _moved_ring(ring: Ring, place: _Placement) -> Ring:
     if moved_to_centre:
         return ring
     moved = polygon_from_directions(poly.labels, dirs, poly.polar)
-    return Ring(ring.name, moved, ring.radius_squared, ring.levels, ring.robots, ring.own,
-                _ray_keys(moved))
+    return _new_ring(ring.name, moved, ring.radius_squared, ring.levels, ring.robots,
+                     ring.own)
 
 
 def _move_off_centre(place: _Placement, v: int, towards: int, Gp) -> bool:
@@ -1500,11 +2246,62 @@ class PaperResult:
     Gprime: list
     make_asym: str | None
     elect_leader: str | None
+    bounded: dict = field(default_factory=dict)
+    G_rings: tuple = field(default=(), repr=False, compare=False)   # G, as Rings
 
 
-def _describe(rings: Sequence[Ring], polar: bool) -> list:
-    return [{"name": g.name, "vertices": g.n, "robots": list(g.robots),
-             "levels": list(g.levels), "lines": lines_text(g, polar)} for g in rings]
+def _describe(rings: Sequence[Ring], polar: bool, limit: int | None = None) -> list:
+    """One dict per polygon; above ``limit`` polygons the first and last limit/2, with
+    ``{"omitted": k}`` between them."""
+    def one(g):
+        return {"name": g.name, "vertices": g.n, "robots": list(g.robots),
+                "levels": list(g.levels), "lines": lines_text(g, polar)}
+    if limit is None or len(rings) <= limit:
+        return [one(g) for g in rings]
+    head, tail = rings[:limit // 2], rings[len(rings) - limit // 2:]
+    return [one(g) for g in head] + [{"omitted": len(rings) - len(head) - len(tail)}] + \
+        [one(g) for g in tail]
+
+
+def _family_text(rings: Sequence[Ring], k: int = 8) -> str:
+    """``"G1: 3, G2: 5, ..."`` for at most k polygons (the first and last)."""
+    if len(rings) <= k:
+        return ", ".join(f"{g.name}: {g.n}" for g in rings)
+    part = lambda gs: ", ".join(f"{g.name}: {g.n}" for g in gs)     # noqa: E731
+    return (f"{part(rings[:k // 2])}, ... ({len(rings)} polygons), "
+            f"{part(rings[-(k // 2):])}")
+
+
+#: Trace entries always kept by :func:`compact_trace` (findings, selections, budgets).
+def _essential(e: dict) -> bool:
+    return e.get("holds") is False or bool(e.get("robots")) or "uses" in e or \
+        e.get("kind") == "budget" or e.get("algorithm") == "Section 3"
+
+
+def compact_trace(trace: list, limit: int | None) -> tuple[list, int]:
+    """At most ``limit`` entries (plus the essential ones: findings, robots selected or
+    moved, steps over a budget, the Section-3 summaries): the other entries are kept in
+    order until the limit and a final entry counts the omitted ones by algorithm and
+    branch.  Returns ``(trace, omitted)``."""
+    if limit is None or len(trace) <= limit:
+        return trace, 0
+    essential = sum(1 for e in trace if _essential(e))
+    room = max(0, limit - essential - 1)
+    out, omitted, counts = [], 0, {}
+    for e in trace:
+        if _essential(e) or room > 0:
+            if not _essential(e):
+                room -= 1
+            out.append(e)
+            continue
+        omitted += 1
+        key = f"{e['algorithm']}" + (f"/{e['branch']}" if e.get("branch") else "")
+        counts[key] = counts.get(key, 0) + 1
+    out.append({"algorithm": "exactsym", "line": None, "polygons": [],
+                "statement": "trace", "detail": f"{omitted} trace entries omitted (limit "
+                f"{limit}): " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())),
+                "omitted": omitted, "omitted_by_kind": dict(sorted(counts.items()))})
+    return out, omitted
 
 
 def _is_polar(G) -> bool:
@@ -1514,7 +2311,18 @@ def _is_polar(G) -> bool:
 def paper_procedure(config: Configuration, ring_data: Rings | None = None,
                     orientation: int = 1, reading: str = "literal", degree: str = "paper",
                     max_rounds: int = 3, claims: bool = True,
-                    check_vl: bool = True) -> PaperResult:
+                    check_vl: bool = True, limits: Limits | None = None) -> PaperResult:
+    """See :func:`_paper_procedure` (run with the cyclic garbage collector paused: the
+    family layer builds many small acyclic objects, one polygon per level)."""
+    with no_cycle_collection():
+        return _paper_procedure(config, ring_data, orientation, reading, degree, max_rounds,
+                                claims, check_vl, limits)
+
+
+def _paper_procedure(config: Configuration, ring_data: Rings | None = None,
+                     orientation: int = 1, reading: str = "literal", degree: str = "paper",
+                     max_rounds: int = 3, claims: bool = True,
+                     check_vl: bool = True, limits: Limits | None = None) -> PaperResult:
     """Run the paper on ``config``: GatheringPattern's decision (lines 1-5) and the leader
     election of Section 4.2 (Preprocess, MakeAsym when G_t is symmetric, ElectLeader).
 
@@ -1524,34 +2332,51 @@ def paper_procedure(config: Configuration, ring_data: Rings | None = None,
     robot recomputes from scratch on the new configuration (they are oblivious): the
     next round runs Preprocess again, MakeAsym again if G_t is still symmetric (at most
     ``max_rounds`` rounds; each extra round is a finding), then ElectLeader.
-    ``orientation``: the observer's handedness (+1: that of the file's axes)."""
+    ``orientation``: the observer's handedness (+1: that of the file's axes).
+    ``limits``: the work budgets (:class:`Limits`, default :data:`DEFAULT_LIMITS`;
+    :data:`UNBOUNDED` for the exhaustive procedure); ``PaperResult.bounded`` says what
+    was bounded."""
+    limits = limits if limits is not None else DEFAULT_LIMITS
     ring_data = ring_data if ring_data is not None else compute_rings(config)
     trace: list = []
+    bounded: dict = {}
     G = concentric_polygons(config, ring_data)
     polar = _is_polar(G)
-    _entry(trace, "GatheringPattern", 2, [g.name for g in G], "def-sym-calG",
-           f"G = ({', '.join(f'{g.name}: {g.n}' for g in G)}) about the SEC centre",
-           round=1)
-    Gp = preprocess(G, trace)
-    literal = preprocess_literal(G)
-    if not literal.terminated:
-        _entry(trace, "Preprocess", 12, [g.name for g in G], "Preprocess",
+    _entry(trace, "GatheringPattern", 2, _few_names(G), "def-sym-calG",
+           f"G = ({_family_text(G)}) about the SEC centre", round=1)
+    pre_stats: dict = {}
+    Gp = preprocess(G, trace, limits, pre_stats)
+    literal = preprocess_literal(G, limits=limits)
+    if literal.budget_exceeded:
+        _entry(trace, "Preprocess", 12, _few_names(G), "Preprocess",
+               f"as printed: {literal.reason}", kind="budget", round=1)
+    elif not literal.terminated:
+        _entry(trace, "Preprocess", 12, _few_names(G), "Preprocess",
                f"as printed: {literal.reason}", branch="literal-nontermination",
                holds=False, kind="literal-reading", round=1)
-    _entry(trace, "GatheringPattern", 3, [g.name for g in Gp], "Gprime-equiG",
-           f"G' = ({', '.join(f'{g.name}: {g.n}' for g in Gp)})", round=1)
+    _entry(trace, "GatheringPattern", 3, _few_names(Gp), "Gprime-equiG",
+           f"G' = ({_family_text(Gp)})", round=1)
+    bounded["preprocess_complete"] = pre_stats.get("complete", True)
+    bounded["preprocess_pairs_built"] = pre_stats.get("pairs_built", 0)
     if claims:
-        family_claims(G, Gp, trace, polar)
+        claim_stats: dict = {}
+        family_claims(G, Gp, trace, polar, limits, claim_stats)
+        bounded.update(family_claims_pairs_checked=claim_stats["pairs_checked"],
+                       of=claim_stats["pairs"],
+                       family_claims_triples_checked=claim_stats["triples_checked"],
+                       family_claims_triples=claim_stats["triples"],
+                       family_claims_partial=claim_stats["partial"],
+                       family_claims_failures=claim_stats["failures"])
     symmetric = is_symmetric_family(Gp)
     gathering = not symmetric
-    _entry(trace, "GatheringPattern", 4, [g.name for g in Gp], "def-sym-calG",
+    _entry(trace, "GatheringPattern", 4, _few_names(Gp), "def-sym-calG",
            f"common lines of all polygons of G': {lines_text(common_lines(Gp), polar)}",
            round=1)
     if symmetric:
-        _entry(trace, "GatheringPattern", 5, [g.name for g in Gp], "cor-Pasym-Pord",
+        _entry(trace, "GatheringPattern", 5, _few_names(Gp), "cor-Pasym-Pord",
                "G' is in O_S: gathering is not possible", branch="not-possible", round=1)
     else:
-        _entry(trace, "GatheringPattern", 6, [g.name for g in Gp], "cor-Pasym-Pord",
+        _entry(trace, "GatheringPattern", 6, _few_names(Gp), "cor-Pasym-Pord",
                "G' is in O_A: call MakeAsym(G_t), then ElectLeader(G')", branch="possible",
                round=1)
     moves: list = []
@@ -1563,7 +2388,8 @@ def paper_procedure(config: Configuration, ring_data: Rings | None = None,
         # a single robot: nothing to make asymmetric (MakeAsym's branches need a G_t
         # with a circle); ElectLeader elects it (it is at C)
         el = elect_leader(Gp, trace, orientation, reading, degree, 1)
-        return _finish(config, orderable, gathering, el.leader, [], True, trace, G, Gp,
+        return _finish(limits, bounded, config,
+                       orderable, gathering, el.leader, [], True, trace, G, Gp,
                        None, el.branch, polar)
     rnd = 1
     while True:
@@ -1580,18 +2406,21 @@ def paper_procedure(config: Configuration, ring_data: Rings | None = None,
             _entry(trace, "MakeAsym", 6, [gt.name], "MakeAsym",
                    f"after MakeAsym's moves G_t = {gt.name} is still symmetric "
                    f"({lines_text(gt, polar)})", holds=False, round=rnd)
-        result = make_asym(current, cur_rings, cur_Gp, trace, orientation, reading, rnd)
+        result = make_asym(current, cur_rings, cur_Gp, trace, orientation, reading, rnd,
+                           limits)
         ma_outcome = result.outcome if ma_outcome is None else ma_outcome
         moves.extend(result.moves)
         if result.outcome == "not-orderable":
             if rnd == 1:
                 orderable = False
             el = None
-            return _finish(config, orderable, gathering, None, moves, complete, trace, G, Gp,
+            return _finish(limits, bounded, config,
+                           orderable, gathering, None, moves, complete, trace, G, Gp,
                            ma_outcome, el, polar)
         if result.outcome == "undecided" or result.config is None:
             complete = False
-            return _finish(config, orderable, gathering, None, moves, complete, trace, G, Gp,
+            return _finish(limits, bounded, config,
+                           orderable, gathering, None, moves, complete, trace, G, Gp,
                            ma_outcome, None, polar)
         new = result.config
         if ring_data.polar and new.polar is not None and polar_sec(new.polar) is None:
@@ -1602,7 +2431,8 @@ def paper_procedure(config: Configuration, ring_data: Rings | None = None,
                    "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
                    "not); the configuration after the moves is not analysed", holds=False,
                    round=rnd)
-            return _finish(config, orderable, gathering, None, moves, False, trace, G, Gp,
+            return _finish(limits, bounded, config,
+                           orderable, gathering, None, moves, False, trace, G, Gp,
                            ma_outcome, None, polar)
         try:
             new_rings = compute_rings(new)
@@ -1610,34 +2440,45 @@ def paper_procedure(config: Configuration, ring_data: Rings | None = None,
             _entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
                    f"exactsym cannot analyse the configuration after the moves ({err})",
                    round=rnd)
-            return _finish(config, orderable, gathering, None, moves, False, trace, G, Gp,
+            return _finish(limits, bounded, config,
+                           orderable, gathering, None, moves, False, trace, G, Gp,
                            ma_outcome, None, polar)
         if not _same_sec(ring_data, new_rings):
             _entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
                    "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
                    "not)", holds=False, round=rnd)
         if check_vl:
-            _check_vl_move(trace, current, new, result, orientation, reading, rnd)
+            _check_vl_move(trace, current, new, result, orientation, reading, rnd, limits)
         rnd += 1
         current, cur_rings = new, new_rings
         G2 = concentric_polygons(current, cur_rings)
-        cur_Gp = preprocess(G2, [])
-        _entry(trace, "GatheringPattern", 3, [g.name for g in cur_Gp], "Preprocess",
-               f"after the moves, G' = ({', '.join(f'{g.name}: {g.n}' for g in cur_Gp)})",
-               round=rnd)
+        stats2: dict = {}
+        cur_Gp = preprocess(G2, [], limits, stats2)
+        if not stats2.get("complete", True):
+            bounded["preprocess_complete"] = False
+        _entry(trace, "GatheringPattern", 3, _few_names(cur_Gp), "Preprocess",
+               f"after the moves, G' = ({_family_text(cur_Gp)})", round=rnd)
     el = elect_leader(cur_Gp, trace, orientation, reading, degree, rnd)
     moves.extend(el.moves)
     leader = el.leader
     complete = complete and el.computed
-    return _finish(config, orderable, gathering, leader, moves, complete, trace, G, Gp,
+    return _finish(limits, bounded, config,
+                   orderable, gathering, leader, moves, complete, trace, G, Gp,
                    ma_outcome, el.branch, polar)
 
 
-def _finish(config, orderable, gathering, leader, moves, complete, trace, G, Gp, ma, el,
-            polar) -> PaperResult:
+def _finish(limits: Limits, bounded: dict, config, orderable, gathering, leader, moves,
+            complete, trace, G, Gp, ma, el, polar) -> PaperResult:
+    if not bounded.get("preprocess_complete", True):
+        complete, leader = False, None        # G' is not the one the paper computes
     first = moves[0]["robot"] if moves else leader
+    trace, omitted = compact_trace(trace, limits.trace_entries)
+    bounded["trace_entries_omitted"] = omitted
+    if limits.described is not None and max(len(G), len(Gp)) > limits.described:
+        bounded["polygons_described"] = limits.described
     return PaperResult(orderable, gathering, leader, moves, first, complete, trace,
-                       _describe(G, polar), _describe(Gp, polar), ma, el)
+                       _describe(G, polar, limits.described),
+                       _describe(Gp, polar, limits.described), ma, el, bounded, tuple(G))
 
 
 def _same_sec(a: Rings, b: Rings) -> bool:
@@ -1646,7 +2487,7 @@ def _same_sec(a: Rings, b: Rings) -> bool:
 
 
 def _check_vl_move(trace, before: Configuration, after: Configuration, result: MakeAsymResult,
-                   orientation, reading, rnd) -> None:
+                   orientation, reading, rnd, limits: Limits | None = None) -> None:
     """``lem-vl-move``: "When v_l is moving no other robot will be selected as leader".
     We stop the last moving robot half way (polar configurations: half the turn, or half
     way out radially) and run one round of the procedure there: its first actor must be
@@ -1673,7 +2514,7 @@ def _check_vl_move(trace, before: Configuration, after: Configuration, result: M
     except InputError:
         return
     sub = paper_procedure(mid, orientation=orientation, reading=reading, max_rounds=1,
-                          claims=False, check_vl=False)
+                          claims=False, check_vl=False, limits=limits)
     actor = sub.first_actor
     holds = actor == v or actor is None and sub.leader == v
     _entry(trace, "MakeAsym", last["line"], [], "lem-vl-move",

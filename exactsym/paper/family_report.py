@@ -2,7 +2,8 @@
 
 Importing this module appends :func:`family_section` to :data:`exactsym.report.SECTIONS`
 (it adds ``report["paper"]`` -- updated in place when another section created it --
-with ``orderable``, ``leader``, ``trace`` and more, and ``report["audit"]``), registers
+with ``orderable``, ``leader``, ``trace``, ``bounded`` (what the work budgets cut) and
+more, and ``report["audit"]``), registers
 the ``[expect]`` keys ``paper_leader`` (an integer, ``-1`` for "no leader") and
 ``audit_agrees`` (a boolean), and the command ``exactsym audit FILE [--json]`` (exit 1
 when the audit finds a discrepancy).
@@ -16,6 +17,7 @@ import sys
 from .. import cli as _cli
 from .. import report as _report
 from ..config import EXPECT_KEYS
+from ..configuration import no_cycle_collection
 from . import family as F
 
 #: Options of the section: the readings passed to the paper's algorithms.
@@ -27,11 +29,32 @@ def _paper_dict(res: F.PaperResult) -> dict:
             "gathering_possible": res.gathering_possible, "moves": res.moves,
             "first_actor": res.first_actor, "complete": res.complete,
             "make_asym": res.make_asym, "elect_leader": res.elect_leader,
-            "G": res.G, "G_prime": res.Gprime, "trace": res.trace}
+            "G": res.G, "G_prime": res.Gprime, "bounded": res.bounded, "trace": res.trace}
+
+
+def _trivial_truth(rings, report: dict):
+    """The ground-truth section's group when it is the trivial group C1, rebuilt from the
+    report (its name, ordering and leader are all there is to it: no rotation generator,
+    no mirror), so that the audit need not compute the same group again; None otherwise
+    (the audit then computes it)."""
+    from ..symmetry import SymmetryGroup
+    if report.get("group") != "C1" or report.get("orderable") is not True or \
+            report.get("symmetries") != {"rotations": 1, "mirrors": 0} or \
+            report.get("ordering") is None:
+        return None
+    return SymmetryGroup(name="C1", rotations=1, mirrors=0, centre=rings.sec.centre,
+                         polar=rings.polar, rotation_generator=None, mirror=None,
+                         reference=None, orderable=True, ordering=tuple(report["ordering"]),
+                         leader=report.get("leader"))
 
 
 def family_section(config, rings, report: dict, options: dict | None = None) -> None:
     """Add ``paper`` (the family algorithms) and ``audit`` to ``report``."""
+    with no_cycle_collection():
+        _family_section(config, rings, report, options)
+
+
+def _family_section(config, rings, report: dict, options: dict | None = None) -> None:
     from ..audit import audit
     opts = dict(DEFAULT_OPTIONS)
     opts.update({k: v for k, v in (options or {}).items() if k in DEFAULT_OPTIONS})
@@ -40,7 +63,7 @@ def family_section(config, rings, report: dict, options: dict | None = None) -> 
     if not isinstance(paper, dict):
         paper = report["paper"] = {}
     paper.update(_paper_dict(res))
-    report["audit"] = audit(config, rings, res, opts)
+    report["audit"] = audit(config, rings, res, opts, group=_trivial_truth(rings, report))
     lines = report.setdefault("_table_lines", [])
     lines.append(f"paper (family): {'orderable' if res.orderable else 'not orderable'}"
                  f"; gathering {'possible' if res.gathering_possible else 'not possible'}"

@@ -21,6 +21,11 @@ the check's degree / with the number of lines (when the check says symmetric);
 null when no leader is elected; all three null above :data:`LEADER_LIMIT`.
 The level of radius 0 (a robot at C) gets ``"paper": null``.
 
+Verdicts are computed once per polygon *shape* (:func:`shape_key`: equal
+counter-clockwise gaps from vertex 0, i.e. a rotation and scaling keeping the storage
+order) and relabelled by position for the other levels of that shape (every single-robot
+level shares one): a configuration of t levels of one shape costs one computation.
+
 With ``options["strings"]`` the entry also gains ``"strings"``:
 ``{"metric": "angular-distance" | "signed-squared-cosine", "cw": [[...], ...],
 "acw": [[...], ...]}`` (per vertex, in the level's order, orientation of the file's
@@ -29,7 +34,8 @@ axes), or ``{"omitted": reason}`` above :data:`STRING_LIMIT` vertices.
 
 from __future__ import annotations
 
-from ..exact import as_fmpq, number_text, sign
+from ..exact import as_fmpq, exact_key, number_text, sign
+from ..configuration import no_cycle_collection
 from ..report import SECTIONS
 from . import polygon as paper
 from .circle_polygon import level_polygon
@@ -103,13 +109,98 @@ def level_strings(polygon) -> dict:
             "acw": [[_key_text(k) for k in acw] for _, acw in strings]}
 
 
+#: Polygons with at most this many vertices share their verdicts with every polygon of
+#: the same shape (:func:`shape_key`); larger ones are computed one by one.
+MEMO_LIMIT = 64
+
+
+def _hashable(key):
+    if isinstance(key, tuple):
+        return tuple(_hashable(k) for k in key)
+    return exact_key(key)
+
+
+def shape_key(polygon):
+    """An exact hashable key equal for two polygons iff one is the image of the other by
+    a rotation about C (and a scaling) that maps vertex k to vertex k (storage order):
+    the counter-clockwise angular gaps between consecutive vertices, from vertex 0, as
+    exact keys strictly increasing in the angle.  The paper's verdicts on one polygon
+    depend only on its distances (the strings, Section 3) and on the storage order, so
+    polygons with equal keys get equal verdicts, labels taken at the same positions."""
+    n, dirs = polygon.n, polygon.directions
+    return (polygon.polar, n, tuple(_hashable(paper._ccw_angle_key(polygon, dirs[k],
+                                                                    dirs[(k + 1) % n]))
+                                    for k in range(n)))
+
+
+_LABEL_KEYS = ("leader_sym", "leader_sym_by_lines")
+
+
+def _relabelled(verdict: dict, labels: tuple, new_labels: tuple) -> dict:
+    """``verdict`` (of a polygon with ``labels``) for a polygon of the same shape whose
+    vertices, in the same storage order, carry ``new_labels``."""
+    where = {lab: k for k, lab in enumerate(labels)}
+
+    def relabel(lab):
+        return lab if lab is None else new_labels[where[lab]]
+    out = dict(verdict)
+    for key in _LABEL_KEYS:
+        out[key] = relabel(verdict.get(key))
+    if isinstance(verdict.get("leader_asym"), dict):
+        la = verdict["leader_asym"]
+        out["leader_asym"] = {"+1": relabel(la["+1"]), "-1": relabel(la["-1"]),
+                              "tie": la["tie"]}
+    if isinstance(verdict.get("definition"), dict):
+        out["definition"] = dict(verdict["definition"])
+    return out
+
+
+class VerdictMemo:
+    """:func:`level_verdicts` for many polygons: computed once per shape (:func:`shape_key`)
+    for polygons of at most :data:`MEMO_LIMIT` vertices, relabelled for the others (a
+    configuration of t levels of one shape -- single robots, rotated regular polygons --
+    costs one computation, not t)."""
+
+    def __init__(self):
+        self.memo: dict = {}
+
+    def verdicts(self, polygon) -> dict:
+        if polygon.n > MEMO_LIMIT:
+            return level_verdicts(polygon)
+        key = shape_key(polygon)
+        hit = self.memo.get(key)
+        if hit is None:
+            hit = self.memo[key] = (polygon.labels, level_verdicts(polygon))
+        try:
+            return _relabelled(hit[1], hit[0], polygon.labels)
+        except KeyError:            # a label that is not a vertex's: compute it
+            return level_verdicts(polygon)
+
+
 def polygon_section(config, rings, report, options) -> None:
+    with no_cycle_collection():
+        _polygon_section(config, rings, report, options)
+
+
+def _polygon_section(config, rings, report, options) -> None:
+    memo = VerdictMemo()
+    single = None          # the verdict of a single-vertex level, and its label
     for index, (level, entry) in enumerate(zip(rings.levels, report["levels"])):
-        if sign(level.radius_squared) == 0:
+        if index == 0 and sign(level.radius_squared) == 0:
             entry["paper"] = None
             continue
+        if len(level.points) == 1 and not options.get("strings"):
+            # every single vertex has the same shape: no polygon needs building
+            if single is None:
+                polygon = level_polygon(config, rings, index)
+                single = (polygon.labels, level_verdicts(polygon))
+            try:
+                entry["paper"] = _relabelled(single[1], single[0], tuple(level.points))
+                continue
+            except KeyError:        # a label that is not the vertex's: compute it
+                pass
         polygon = level_polygon(config, rings, index)
-        entry["paper"] = level_verdicts(polygon)
+        entry["paper"] = memo.verdicts(polygon)
         if options.get("strings"):
             entry["strings"] = level_strings(polygon)
 
