@@ -276,7 +276,6 @@ def _audit(config: Configuration, ring_data: Rings | None = None,
     bounded["lem_asym_ord_levels_checked"] = len(asym_checked)
     bounded["asymmetric_levels"] = len(asym_levels)
     # pairs of levels
-    t = len(G)
     pairs, total_pairs = F.select_pairs(G, limits)
     bounded["pairs_checked"] = len(pairs)
     bounded["of"] = total_pairs

@@ -50,6 +50,7 @@ from typing import Iterator, Sequence
 from .configuration import Configuration
 from .exact import fmpq
 from .levels import Rings, rings as compute_rings
+from .strings import cyclic_occurrences as occurrences, cyclic_period
 
 __all__ = ["Isometry", "SymmetryGroup", "symmetry_group", "pseudo_angle", "least_rotation",
            "cyclic_period", "occurrences", "sort_by_exact_keys"]
@@ -147,50 +148,6 @@ def pseudo_angle(x, y):
 
 
 # ---------------------------------------------------------------- strings
-
-def _prefix_function(s: Sequence) -> list[int]:
-    pi = [0] * len(s)
-    k = 0
-    for i in range(1, len(s)):
-        c = s[i]
-        while k and s[k] != c:
-            k = pi[k - 1]
-        if s[k] == c:
-            k += 1
-        pi[i] = k
-    return pi
-
-
-def cyclic_period(s: Sequence) -> int:
-    """The least p > 0 with ``s`` equal to itself rotated by p (p divides ``len(s)``)."""
-    m = len(s)
-    if m == 0:
-        return 1
-    p = m - _prefix_function(s)[-1]
-    return p if m % p == 0 else m
-
-
-def occurrences(pattern: Sequence, cyclic: Sequence) -> list[int]:
-    """The j in ``range(len(cyclic))`` with ``cyclic`` rotated by j equal to ``pattern``
-    (same length; Knuth-Morris-Pratt on the doubled string)."""
-    m = len(pattern)
-    if m != len(cyclic):
-        return []
-    if m == 0:
-        return [0]
-    pi = _prefix_function(pattern)
-    found, k = [], 0
-    text = list(cyclic) + list(cyclic[:-1])
-    for i, c in enumerate(text):
-        while k and pattern[k] != c:
-            k = pi[k - 1]
-        if pattern[k] == c:
-            k += 1
-        if k == m:
-            found.append(i - m + 1)
-            k = pi[k - 1]
-    return found
-
 
 def least_rotation(ids: Sequence[int], values: Sequence, candidates: Sequence[int] | None = None
                    ) -> int:

@@ -32,8 +32,8 @@ def table_lines(group: SymmetryGroup) -> list[str]:
     """Readable lines naming the group and the rotations and mirrors found."""
     centre = f"({number_text(group.centre[0])}, {number_text(group.centre[1])})"
     if group.name == "O2":
-        lines = [f"ground truth: group O2 (a single point: every rotation about it and "
-                 f"every mirror through it)"]
+        lines = ["ground truth: group O2 (a single point: every rotation about it and "
+                 "every mirror through it)"]
     else:
         k, m = group.rotations, group.mirrors
         what = f"{k} rotation{'s' if k > 1 else ''} about {centre}" + \

@@ -1,7 +1,5 @@
 """The number kernel: exact equality and certified signs, with sympy as an oracle."""
 
-from fractions import Fraction
-
 import pytest
 import sympy
 from hypothesis import given, settings, strategies as st

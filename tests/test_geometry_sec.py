@@ -1,9 +1,7 @@
 """Exact predicates, the smallest enclosing circle and the levels G1..Gt."""
 
-from itertools import permutations
-
 import pytest
-from hypothesis import assume, given, settings, strategies as st
+from hypothesis import given, settings, strategies as st
 
 from exactsym.configuration import Configuration
 from exactsym.exact import fmpq

@@ -411,7 +411,6 @@ def test_rational_circle_points_under_pythagorean_similarities(params, mirror, r
     """Rational points of the unit circle (Pythagorean parameters, optionally closed under
     the x-axis mirror), rotated by a rational rotation, maybe reflected and scaled: the
     verdicts do not change (Cartesian path, signed squared cosines)."""
-    from strategies import rational_rotations  # noqa: F401  (same family of rotations)
 
     def point(t):
         t = as_fmpq(t)

@@ -19,7 +19,7 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Callable, Union
 
-from flint import acb, acb_poly, arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz
+from flint import acb_poly, arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz
 
 Rational = fmpq
 Number = Union[fmpq, "FieldElement"]

@@ -89,6 +89,7 @@ from ..errors import InputError
 from ..exact import FieldElement, fmpq, normal_turn, number_text, rational_sqrt, sign
 from ..exprtree import BinOp, Const
 from ..levels import Rings, polar_sec, rings as compute_rings
+from ..strings import find_all
 from .circle_polygon import CirclePolygon, polygon_from_directions
 from . import polygon as P
 
@@ -389,29 +390,6 @@ def _bisector_line(polar: bool, a, b):
     return _ray_value(*prod)
 
 
-def _prefix_occurrences(pattern: list, text: list) -> list[int]:
-    """Start positions of ``pattern`` in ``text`` (Knuth-Morris-Pratt, exact ids)."""
-    m = len(pattern)
-    fail = [0] * m
-    k = 0
-    for i in range(1, m):
-        while k and pattern[k] != pattern[i]:
-            k = fail[k - 1]
-        if pattern[k] == pattern[i]:
-            k += 1
-        fail[i] = k
-    out, k = [], 0
-    for i, c in enumerate(text):
-        while k and pattern[k] != c:
-            k = fail[k - 1]
-        if pattern[k] == c:
-            k += 1
-        if k == m:
-            out.append(i - m + 1)
-            k = fail[k - 1]
-    return out
-
-
 def mirror_lines(poly: CirclePolygon, seq: list | None = None) -> list:
     """The lines of straight symmetry of ``poly`` (``def-straight-symmetric-poly``), as
     the line keys of :func:`.polygon.definition_mirrors`, in O(n) after the angular
@@ -429,7 +407,7 @@ def mirror_lines(poly: CirclePolygon, seq: list | None = None) -> list:
     seq = seq if seq is not None else _gap_ids(poly)
     rev = seq[::-1]
     found = {}
-    for p in _prefix_occurrences(seq, rev + rev[:-1]):
+    for p in find_all(seq, rev + rev[:-1]):
         s = (-p) % n
         if n == 2 and s == 0:
             continue
@@ -1082,7 +1060,7 @@ def _preprocess_unfiltered(G: Sequence[Ring], trace: list | None = None) -> tupl
                                     + _coincidence_note(proj) + ")")
                 if rejected:
                     _entry(trace, "Preprocess", 10, [gi.name], "Preprocess",
-                           f"G_ij is not type 4 for G_j = " + "; ".join(rejected[:12])
+                           "G_ij is not type 4 for G_j = " + "; ".join(rejected[:12])
                            + (f"; ... ({len(rejected)} in all)" if len(rejected) > 12 else "")
                            + ": j++", branch="odd-pair-not-type4")
                 if skipped:
@@ -1445,7 +1423,6 @@ def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = No
             out.append(_claim(trace, statement, False, polygons, detail, witness))
 
     checked: dict = {}
-    t = len(G)
     n_robots = sum(len(g.robots) for g in G)
     pairs, total_pairs = select_pairs(G, limits)
     if len(pairs) < total_pairs:
@@ -1967,7 +1944,7 @@ def make_asym(config: Configuration, ring_data: Rings, Gp: Sequence[Ring], trace
                    f"{lines_text(Gt, Gt.polygon.polar if Gt.polygon else True)})",
                    holds=False, round=rnd)
         try:
-            moved_cfg = place.configuration()
+            place.configuration()          # raises InputError when the move is impossible
         except InputError as err:
             _entry(trace, alg, 26, [gi.name], alg, f"the move is impossible: {err}",
                    holds=False, round=rnd)

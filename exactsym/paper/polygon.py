@@ -38,6 +38,7 @@ from dataclasses import dataclass
 from typing import Sequence
 
 from ..exact import fmpq, normal_turn, sign
+from ..strings import cyclic_period, first_occurrence
 from .circle_polygon import CirclePolygon, polygon_from_directions
 
 __all__ = [
@@ -333,43 +334,6 @@ def _gap_ids(polygon: CirclePolygon):
     return ids, h
 
 
-def _cyclic_period(seq: Sequence) -> int:
-    """Smallest p dividing len(seq) with seq invariant under rotation by p (exact, KMP)."""
-    n = len(seq)
-    fail = [0] * n
-    k = 0
-    for i in range(1, n):
-        while k and seq[i] != seq[k]:
-            k = fail[k - 1]
-        if seq[i] == seq[k]:
-            k += 1
-        fail[i] = k
-    p = n - fail[-1] if n else 1
-    return p if n % p == 0 else n
-
-
-def _first_occurrence(pattern: Sequence, text: Sequence) -> int | None:
-    """First index of ``pattern`` in ``text`` (exact KMP), or None."""
-    m = len(pattern)
-    fail = [0] * m
-    k = 0
-    for i in range(1, m):
-        while k and pattern[i] != pattern[k]:
-            k = fail[k - 1]
-        if pattern[i] == pattern[k]:
-            k += 1
-        fail[i] = k
-    k = 0
-    for i, x in enumerate(text):
-        while k and x != pattern[k]:
-            k = fail[k - 1]
-        if x == pattern[k]:
-            k += 1
-        if k == m:
-            return i - m + 1
-    return None
-
-
 def string_classes(polygon: CirclePolygon, orientation: int = 1):
     """``(cw, acw)`` class ids of the 2n vertex strings (as :func:`string_classes_reference`),
     in O(n log n) plus O(n) per string equal to an earlier one of another rotation.
@@ -443,8 +407,8 @@ def string_classes(polygon: CirclePolygon, orientation: int = 1):
             seq[q] = new
         return seq
 
-    period = _cyclic_period(h)
-    mirror = _first_occurrence(r_seq, h + h[:-1])     # R rotated 0 == H rotated `mirror`
+    period = cyclic_period(h)
+    mirror = first_occurrence(r_seq, h + h[:-1])     # R rotated 0 == H rotated `mirror`
 
     def true_equal(a, b) -> bool:
         """The true (unpatched) angle sequences of the forms a, b are equal (exact: from
