@@ -166,7 +166,17 @@ MAX_LINE = 2 * MAX_LENGTH + 100   # characters of one plain-text point (comment 
 def _parse_txt(text: str, source: str) -> ConfigFile:
     """Plain text: one point per line (``x y``, ``x, y`` or ``polar r turn``), ``#`` comments."""
     points: list[PointSpec] = []
+    simple_line = _SIMPLE_PAIR.fullmatch
     for number, raw in enumerate(text.split("\n"), start=1):
+        simple = simple_line(raw)
+        if simple:     # fast path: "p/q p/q" with nothing else on the line (most large inputs)
+            x_text, x_num, x_den, y_text, y_num, y_den = simple.groups()
+            points.append(PointSpec(
+                len(points), number, simple.start(1) + 1,
+                x=Const(Fraction(int(x_num), int(x_den)) if x_den else Fraction(int(x_num))),
+                y=Const(Fraction(int(y_num), int(y_den)) if y_den else Fraction(int(y_num))),
+                texts=(x_text, y_text), columns=(simple.start(1) + 1, simple.start(4) + 1)))
+            continue
         line = raw.split("#", 1)[0]
         start = len(line) - len(line.lstrip(_SPACE))
         if start == len(line):
