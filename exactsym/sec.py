@@ -133,6 +133,7 @@ def smallest_enclosing_circle(points: list[Point]) -> Circle:
     order = list(range(n))
     random.Random(_SEED).shuffle(order)
     try:
+        # float filter only: the proposed support is verified exactly below
         fx = [float(p[0]) for p in points]
         fy = [float(p[1]) for p in points]
         guess = _circle(points, _float_support(points, order, fx, fy))

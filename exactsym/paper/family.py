@@ -310,20 +310,6 @@ def _dot(u, v):
     return u[0] * v[0] + u[1] * v[1]
 
 
-def _ccw_gap_key(polar: bool, a, b):
-    """Exact key, strictly increasing in the counter-clockwise angle from direction a to
-    direction b in (0, 1] turn (a full turn when equal)."""
-    if polar:
-        d = normal_turn(b - a)
-        return d if d != 0 else fmpq(1)
-    c, d = sign(_cross(a, b)), _dot(a, b)
-    if c > 0:
-        return (0, -sign(d) * d * d / (_dot(a, a) * _dot(b, b)))
-    if c < 0:
-        return (2, sign(d) * d * d / (_dot(a, a) * _dot(b, b)))
-    return (1, 0) if sign(d) < 0 else (3, 0)
-
-
 def _ray_key(polar: bool, d):
     """Exact hashable key of the ray from C with direction d (cheap to hash: numbers go
     through :func:`exactsym.exact.exact_key`)."""
@@ -434,7 +420,7 @@ def _gap_ids(poly: CirclePolygon) -> list:
                 return (1, 0) if sign(d) < 0 else (3, 0)
             return [ids.setdefault(key(dirs[i], dirs[(i + 1) % n]), len(ids))
                     for i in range(n)]
-    return [ids.setdefault(_hkey(_ccw_gap_key(poly.polar, dirs[i], dirs[(i + 1) % n])),
+    return [ids.setdefault(_hkey(P.ccw_gap_key(poly.polar, dirs[i], dirs[(i + 1) % n])),
                            len(ids)) for i in range(n)]
 
 
@@ -1732,7 +1718,7 @@ def _epsilon_rotation(place: _Placement, robot: int, orientation: int, accept,
 def _turn_key(u, v, orientation):
     """Exact key increasing with the angle from u to v in the moving sense (clockwise for
     orientation +1)."""
-    return _ccw_gap_key(False, v, u) if orientation == 1 else _ccw_gap_key(False, u, v)
+    return P.ccw_gap_key(False, v, u) if orientation == 1 else P.ccw_gap_key(False, u, v)
 
 
 def _nearest_turn(u, others, orientation):
@@ -1748,7 +1734,7 @@ def _inside_gap(u, far, nearest, orientation) -> bool:
     before any direction of the others (which may share u's ray): before ``nearest``,
     the smallest turn to one of them (:func:`_nearest_turn`)."""
     reach = _turn_key(u, far, orientation)
-    if reach == _ccw_gap_key(False, u, u):
+    if reach == P.ccw_gap_key(False, u, u):
         return False
     return nearest is None or reach < nearest
 

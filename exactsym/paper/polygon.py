@@ -70,7 +70,12 @@ def _dot(u, v):
 def _ccw_angle_key(polygon: CirclePolygon, a, b):
     """An exact key, strictly increasing in the counter-clockwise angle from direction a
     to direction b, taken in (0, 1] turns (a full turn when a == b)."""
-    if polygon.polar:
+    return ccw_gap_key(polygon.polar, a, b)
+
+
+def ccw_gap_key(polar: bool, a, b):
+    """:func:`_ccw_angle_key` for bare directions: turns when ``polar``, else exact vectors."""
+    if polar:
         d = normal_turn(b - a)
         return d if d != 0 else fmpq(1)
     c, d = sign(_cross(a, b)), _dot(a, b)
