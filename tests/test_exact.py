@@ -93,3 +93,46 @@ def test_field_elements_hash_consistently():
     assert isinstance(a, FieldElement)
     assert a == 2 and hash(a) == hash(fmpq(2)) == hash(2)
     assert b != a and len({a, b, b * 1}) == 2
+
+
+# -- number keys: equal keys exactly for equal numbers (issue: colliding keys) ----------
+
+from exactsym.exact import exact_key  # noqa: E402
+
+
+def _field_elements(texts):
+    _, vals = values(*texts)
+    return vals
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.lists(st.tuples(st.integers(-6, 6), st.integers(-6, 6), st.integers(1, 4)),
+                min_size=2, max_size=8),
+       st.sampled_from(["sqrt(3+2*sqrt(2))", "sqrt(2+sqrt(3))", "sqrt(2)", "cos(2*pi/7)"]))
+def test_exact_key_is_injective(coeffs, generator):
+    """For numbers a + b*g (g irrational) and plain rationals a/b, in one field:
+    ``exact_key(x) == exact_key(y)`` iff ``x == y``.  Before the fix, a + b*theta and the
+    rational a/b had the same key."""
+    (g,) = _field_elements([generator])
+    theta = g.field.gen                      # keys are coefficients in theta's power basis
+    vals = [a + b * theta / d + c * theta * theta for a, b, d in coeffs for c in (0, 1)]
+    vals += [fmpq(a, b) for a, b, _ in coeffs if b] + [fmpq(a) for a, _, _ in coeffs]
+    for x in vals:
+        for y in vals:
+            assert (exact_key(x) == exact_key(y)) == (x == y)
+            if x == y:
+                assert hash(exact_key(x)) == hash(exact_key(y))
+
+
+def test_exact_key_of_rational_kinds_agree():
+    (two_in_field,) = _field_elements(["sqrt(2)*sqrt(2)"])
+    assert exact_key(two_in_field) == exact_key(fmpq(2)) == exact_key(2) == (2, 1)
+    assert exact_key(fmpq(-3, 6)) == (-1, 2)
+
+
+def test_exact_key_regression_a_plus_b_theta_versus_a_over_b():
+    # theta generates Q(sqrt(3+2 sqrt 2)) = Q(sqrt 2); 1 + sqrt(2) is 1 + 1*theta there
+    one_plus_root2, one = _field_elements(["sqrt(3+2*sqrt(2))", "1"])
+    assert one_plus_root2 != one and exact_key(one_plus_root2) != exact_key(one)
+    with pytest.raises(TypeError):
+        exact_key("1")

@@ -15,13 +15,30 @@ from flint import fmpq
 from .field import FieldElement
 
 
+_IRRATIONAL = "field"   # tag of an irrational element's key: no rational key starts with it
+
+
 def exact_key(x):
-    """A hashable key equal for equal numbers of one kind (fmpq or one field's elements)."""
+    """A hashable key, injective on numbers: two keys are equal iff the numbers are.
+
+    A rational (``int``, ``fmpq``, or a field element that is rational) keys as the
+    pair of Python ints ``(p, q)`` in lowest terms.  An irrational field element keys as
+    ``("field", field, (p0, q0), (p1, q1), ...)``: its canonical coefficients in the
+    field's power basis, behind a string tag and the field object itself (compared by
+    identity), so it can equal neither a rational's pair nor a tuple of other keys nor
+    an element of another field.  (Keying coefficients bare made ``a + b*theta`` equal
+    to the rational ``a/b``: ``(fmpq(a), fmpq(b)) == (a, b)`` in Python.)
+    """
     if isinstance(x, fmpq):
-        return (x.p, x.q)
+        return (int(x.p), int(x.q))
     if isinstance(x, FieldElement):
-        return tuple(x.poly.coeffs()) if not x.is_rational() else (x.rational().p, x.rational().q)
-    return x
+        if x.is_rational():
+            q = x.rational()
+            return (int(q.p), int(q.q))
+        return (_IRRATIONAL, x.field) + tuple((int(c.p), int(c.q)) for c in x.poly.coeffs())
+    if isinstance(x, int):
+        return (x, 1)
+    raise TypeError(f"not an exact number: {x!r}")
 
 
 def exact_sorted(values: list, key=None) -> list:

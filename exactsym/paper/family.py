@@ -86,7 +86,7 @@ from typing import Iterable, Sequence
 from ..config import ConfigFile, PointSpec
 from ..configuration import Configuration, from_file, no_cycle_collection
 from ..errors import InputError
-from ..exact import FieldElement, fmpq, normal_turn, number_text, rational_sqrt, sign
+from ..exact import FieldElement, exact_key, fmpq, normal_turn, number_text, rational_sqrt, sign
 from ..exprtree import BinOp, Const
 from ..levels import Rings, polar_sec, rings as compute_rings
 from ..strings import find_all
@@ -329,13 +329,8 @@ def _hkey(key):
     """A cheap hashable form of an exact key (a number or a tuple of numbers)."""
     if isinstance(key, tuple):
         return tuple(_hkey(k) for k in key)
-    if isinstance(key, fmpq):
-        return (int(key.p), int(key.q))
-    if isinstance(key, FieldElement):
-        if key.is_rational():
-            q = key.rational()
-            return (int(q.p), int(q.q))
-        return tuple((int(c.p), int(c.q)) for c in key.poly.coeffs())
+    if isinstance(key, (fmpq, FieldElement)):
+        return exact_key(key)
     return key
 
 
