@@ -23,7 +23,7 @@ from pathlib import Path
 from exactsym import checker
 from exactsym.cli import main as cli_main
 from exactsym.configuration import load
-from exactsym.levels import rings
+from exactsym.levels import levels_of
 from exactsym.symmetry import symmetry_group
 
 
@@ -68,7 +68,7 @@ def timed(fn, *args, repeat: int = 2):
 
 def run_truth(path: Path):
     config = load(path)
-    return symmetry_group(config, rings(config)).name
+    return symmetry_group(config, levels_of(config)).name
 
 
 def run_check(path: Path):

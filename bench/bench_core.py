@@ -18,7 +18,7 @@ import numpy as np
 from float_points import read_float_points
 
 from exactsym.configuration import load
-from exactsym.levels import rings
+from exactsym.levels import levels_of
 
 
 def float_pipeline(path: Path) -> int:
@@ -70,7 +70,7 @@ def _float_welzl(xs, ys, order):
 
 
 def exact_pipeline(path: Path) -> int:
-    return len(rings(load(path)).levels)
+    return len(levels_of(load(path)).levels)
 
 
 def timed(fn, *args, repeat: int = 3):

@@ -131,7 +131,7 @@ def float_pipeline(path: Path) -> str:
 
 def run_case(key: str) -> dict:
     from exactsym.configuration import load
-    from exactsym.levels import rings
+    from exactsym.levels import levels_of
     from exactsym.symmetry import symmetry_group
 
     path = Path(tempfile.mkdtemp()) / f"{key}.txt"
@@ -140,7 +140,7 @@ def run_case(key: str) -> dict:
     t0 = time.perf_counter()
     config = load(path)
     t1 = time.perf_counter()
-    ring = rings(config)
+    ring = levels_of(config)
     t2 = time.perf_counter()
     group = symmetry_group(config, ring)
     t3 = time.perf_counter()

@@ -36,11 +36,11 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from .config import ConfigFile, PointSpec
+from .fileformat import ConfigFile, PointSpec
 from .configuration import Configuration, from_file, no_cycle_collection
 from .exact import fmpq, number_text
 from .exprtree import BinOp, Const
-from .levels import Level, Rings, rings as compute_rings
+from .levels import Level, Levels, levels_of
 from .paper import family as F
 from .symmetry import SymmetryGroup, symmetry_group
 
@@ -109,7 +109,7 @@ def truth_in_O_S(group: SymmetryGroup, n: int) -> bool:
     return group.rotations % 2 == 0
 
 
-def group_about_centre(config: Configuration, ring_data: Rings, robots,
+def group_about_centre(config: Configuration, ring_data: Levels, robots,
                        levels=None) -> tuple:
     """``(group, robots)``: the symmetry group, about the SEC centre C of the whole
     configuration, of the sub-configuration ``robots`` (sorted); its indices are
@@ -130,7 +130,7 @@ def group_about_centre(config: Configuration, ring_data: Rings, robots,
         pts = tuple(where[i] for i in level.points if i in where)
         if pts:
             out.append(Level(level.radius_squared, pts))
-    return symmetry_group(sub, Rings(ring_data.sec, tuple(out), ring_data.polar)), robots
+    return symmetry_group(sub, Levels(ring_data.sec, tuple(out), ring_data.polar)), robots
 
 
 def _symmetry_witness(group: SymmetryGroup, robots) -> dict | None:
@@ -153,7 +153,7 @@ def _symmetry_witness(group: SymmetryGroup, robots) -> dict | None:
 
 
 # ---------------------------------------------------------------- transformed inputs
-def transformed(config: Configuration, ring_data: Rings, frame: str) -> Configuration:
+def transformed(config: Configuration, ring_data: Levels, frame: str) -> Configuration:
     """``config`` in another coordinate system, robot indices unchanged.
 
     Polar configurations (about C): ``reflection`` turn -> -turn; ``similarity`` turn ->
@@ -211,7 +211,7 @@ def _d(statement, says, truth, witness=None, kind="claim") -> dict:
             "kind": kind}
 
 
-def audit(config: Configuration, ring_data: Rings | None = None,
+def audit(config: Configuration, ring_data: Levels | None = None,
           paper: F.PaperResult | None = None, options: dict | None = None,
           group: SymmetryGroup | None = None) -> dict:
     """See :func:`_audit` (run with the cyclic garbage collector paused)."""
@@ -219,7 +219,7 @@ def audit(config: Configuration, ring_data: Rings | None = None,
         return _audit(config, ring_data, paper, options, group)
 
 
-def _audit(config: Configuration, ring_data: Rings | None = None,
+def _audit(config: Configuration, ring_data: Levels | None = None,
            paper: F.PaperResult | None = None, options: dict | None = None,
            group: SymmetryGroup | None = None) -> dict:
     """The audit of ``config`` (see the module docstring); ``paper`` is recomputed when
@@ -230,7 +230,7 @@ def _audit(config: Configuration, ring_data: Rings | None = None,
     frames are recomputed with it; ``bounded`` in the result says what was checked)."""
     options = options or {}
     limits = options.get("limits") or F.DEFAULT_LIMITS
-    ring_data = ring_data if ring_data is not None else compute_rings(config)
+    ring_data = ring_data if ring_data is not None else levels_of(config)
     kw = {"reading": options.get("reading", "literal"), "degree": options.get("degree", "paper"),
           "limits": limits}
     if paper is None:

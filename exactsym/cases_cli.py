@@ -1,7 +1,7 @@
 """``exactsym cases [--lemma LABEL] [DIR]``: run the case library.
 
 Every ``.toml`` / ``.txt`` file under DIR (default ``cases``, all subfolders) is loaded,
-checked (``check_report``) and its ``[expect]`` block compared with the report
+analysed (:func:`exactsym.analysis.analyse`) and its ``[expect]`` block compared with the report
 (``failed_expectations``).  One line per case: ``PASS`` or ``FAIL``, the path and the
 case's ``lemmas``; failures are explained on the following lines.  Exit 1 if any case
 fails, 0 otherwise; with ``--lemma`` only the cases tagged with that label run.
@@ -14,7 +14,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from .errors import InputError
+from .analysis import analyse
+from .configuration import load
+from .errors import EXIT_FALSE, EXIT_OK, InputError
+from .report import failed_expectations, report_json
 
 CASE_SUFFIXES = (".toml", ".txt")
 
@@ -40,20 +43,16 @@ def case_files(directory) -> list[Path]:
 
 def run_case(path) -> CaseResult:
     """Load, check and compare one case (an unreadable case is a failure, not an exception)."""
-    from .configuration import load
-    from .report import check_report, failed_expectations
     try:
         config = load(path)
     except InputError as err:
         return CaseResult(str(path), (), (f"cannot be read: {err}",))
-    report = check_report(config, {"strings": False})
+    report = report_json(analyse(config))
     return CaseResult(str(path), tuple(config.lemmas), tuple(failed_expectations(config, report)))
 
 
 def run_cases(directory="cases", lemma: str | None = None) -> list[CaseResult]:
     """Every case under ``directory`` (only those tagged ``lemma`` when given)."""
-    from .cli import _load_plugins
-    _load_plugins()
     results = []
     for path in case_files(directory):
         result = run_case(path)
@@ -62,8 +61,7 @@ def run_cases(directory="cases", lemma: str | None = None) -> list[CaseResult]:
     return results
 
 
-def _cmd_cases(args) -> int:
-    from .cli import EXIT_FALSE, EXIT_OK
+def run(args) -> int:
     results = run_cases(args.directory, args.lemma)
     for result in results:
         print(f"{'PASS' if result.passed else 'FAIL'}  {result.path}  "
@@ -75,17 +73,6 @@ def _cmd_cases(args) -> int:
     return EXIT_FALSE if failed else EXIT_OK
 
 
-def _register(sub) -> None:
-    cases = sub.add_parser("cases", help="run the case library (every file under DIR)")
-    cases.add_argument("directory", nargs="?", default="cases", metavar="DIR")
-    cases.add_argument("--lemma", metavar="LABEL", help="only the cases tagged with LABEL")
-
-
-def _install() -> None:
-    from . import cli
-    if _register not in cli.EXTRA_COMMANDS:
-        cli.EXTRA_COMMANDS.append(_register)
-    cli.COMMANDS["cases"] = _cmd_cases
-
-
-_install()
+def add_arguments(parser) -> None:
+    parser.add_argument("directory", nargs="?", default="cases", metavar="DIR")
+    parser.add_argument("--lemma", metavar="LABEL", help="only the cases tagged with LABEL")

@@ -301,10 +301,10 @@ def _polar_witness(config, group):
 def make_certificate(config: Configuration, group=None) -> dict:
     """The certificate of ``config``'s symmetry group (``group`` from
     :func:`exactsym.symmetry.symmetry_group`, computed when not given)."""
-    from .levels import rings
+    from .levels import levels_of
     if group is None:
         from .symmetry import symmetry_group
-        group = symmetry_group(config, rings(config))
+        group = symmetry_group(config, levels_of(config))
     # one point: no SEC to check, so a polar file stays polar (no trigonometry needed)
     polar = config.polar is not None and (bool(group.polar) or config.n == 1)
     if polar:

@@ -1,4 +1,4 @@
-"""``exactsym certify FILE -o CERT.json`` and ``exactsym verify CERT.json`` (``cli-1.md``).
+"""``exactsym certify FILE -o CERT.json`` and ``exactsym verify CERT.json`` (``docs/cli.md``).
 
 ``certify`` computes the symmetry group, writes its certificate and checks it with the
 independent checker before reporting success.  ``verify`` uses :mod:`exactsym.checker` only.
@@ -11,20 +11,20 @@ from __future__ import annotations
 import json
 import sys
 
-from . import cli
-from .errors import InputError
+from .errors import EXIT_BUG, EXIT_FALSE, EXIT_OK, InputError
 
 
-def _register(sub) -> None:
-    certify = sub.add_parser("certify", help="write a certificate of the symmetry verdict")
+def add_certify_arguments(certify) -> None:
     certify.add_argument("file", help="configuration file ('-' for standard input)")
     certify.add_argument("-o", "--output", required=True, metavar="CERT.json",
                          help="where to write the certificate ('-' for standard output)")
-    verify = sub.add_parser("verify", help="check a certificate with the independent checker")
+
+
+def add_verify_arguments(verify) -> None:
     verify.add_argument("certificate", metavar="CERT.json")
 
 
-def _cmd_certify(args) -> int:
+def run_certify(args) -> int:
     from . import checker
     from .certificate import CertificateError, make_certificate
     from .configuration import load
@@ -37,7 +37,7 @@ def _cmd_certify(args) -> int:
     if not ok:   # the tool's own verdict failed the independent check: a bug, say so
         print(f"exactsym: internal error: the certificate does not verify ({message}); "
               "please report it with the input file", file=sys.stderr)
-        return cli.EXIT_BUG
+        return EXIT_BUG
     text = json.dumps(cert, separators=(",", ":")) + "\n"
     if args.output == "-":
         sys.stdout.write(text)
@@ -49,10 +49,10 @@ def _cmd_certify(args) -> int:
             raise InputError(f"{args.output}: cannot write the certificate: {err.strerror}") \
                 from None
         print(f"{args.output}: certificate of {config.source}: {message}")
-    return cli.EXIT_OK
+    return EXIT_OK
 
 
-def _cmd_verify(args) -> int:
+def run_verify(args) -> int:
     from . import checker
     path = args.certificate
     try:
@@ -70,12 +70,7 @@ def _cmd_verify(args) -> int:
     ok, message = checker.verify_certificate(cert)
     if ok:
         print(f"{path}: valid: {message}")
-        return cli.EXIT_OK
+        return EXIT_OK
     print(f"{path}: invalid certificate: {message}", file=sys.stderr)
-    return cli.EXIT_FALSE
+    return EXIT_FALSE
 
-
-if _register not in cli.EXTRA_COMMANDS:
-    cli.EXTRA_COMMANDS.append(_register)
-cli.COMMANDS["certify"] = _cmd_certify
-cli.COMMANDS["verify"] = _cmd_verify

@@ -1,6 +1,6 @@
 """A configuration: robot positions as exact numbers, validated.
 
-:func:`load` reads a file (:mod:`exactsym.config`), evaluates every expression in
+:func:`load` reads a file (:mod:`exactsym.fileformat`), evaluates every expression in
 one number system (:mod:`exactsym.exact`) and checks validity (distinct points,
 ``r >= 0``, fat robots at distance >= 2).  A configuration whose points are all
 polar keeps them as ``(r^2, turn)`` too: about the origin, radii and angles are
@@ -16,7 +16,7 @@ from contextlib import contextmanager
 from functools import cached_property
 from typing import Iterable, Mapping, Sequence
 
-from .config import ConfigFile, PointSpec, read_config
+from .fileformat import ConfigFile, PointSpec, read_config
 from .errors import ExpressionError, InputError
 from .exact import RationalSystem, evaluate, exact_key, fmpq, normal_turn, number_system
 from .exprtree import Const, Node

@@ -6,6 +6,10 @@ Exit code 2 of the command line (``../shared/spec/cli-1.md``) is exactly "an
 
 from __future__ import annotations
 
+#: Exit codes of the command line (``docs/cli.md``): done and every claim holds; a claim,
+#: expectation or certificate is false; unusable input or command line; internal error.
+EXIT_OK, EXIT_FALSE, EXIT_INPUT, EXIT_BUG = 0, 1, 2, 3
+
 
 class InputError(Exception):
     """The input (file, expression, command line) is unusable.
@@ -56,3 +60,10 @@ class ExpressionError(InputError):
 
 class FieldTooLargeError(InputError):
     """The numbers of a configuration need a number field beyond our limits."""
+
+
+class MoveImpossible(Exception):
+    """A move or change of frame of a :class:`~exactsym.configuration.Configuration`
+    cannot be made: robots would coincide or overlap, or the new position is not exact in
+    the configuration's numbers.  Not the user's fault (not an :class:`InputError`): the
+    algorithm that asked for the move decides what it means."""

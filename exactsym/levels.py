@@ -28,7 +28,7 @@ class Level:
 
 
 @dataclass(frozen=True)
-class Rings:
+class Levels:
     """The SEC and the levels G1..Gt; ``polar`` is True when both were computed from
     ``(r^2, turn)`` about the origin (then ``turns`` gives each point's turn)."""
     sec: Circle
@@ -50,20 +50,20 @@ def polar_sec(polar) -> Circle | None:
     return Circle((zero, zero), r2max, tuple(on_circle))
 
 
-def rings(config: Configuration) -> Rings:
+def levels_of(config: Configuration) -> Levels:
     """The SEC and the concentric polygons of ``config``."""
     with no_cycle_collection():
-        return _rings(config)
+        return _levels_of(config)
 
 
-def _rings(config: Configuration) -> Rings:
+def _levels_of(config: Configuration) -> Levels:
     if config.polar is not None:
         circle = polar_sec(config.polar)
         if circle is not None:
-            return Rings(circle, _polar_levels(config.polar), True)
+            return Levels(circle, _polar_levels(config.polar), True)
     points = list(config.points)
     circle = smallest_enclosing_circle(points)
-    return Rings(circle, _group_levels([squared_distance(circle.centre, p) for p in points],
+    return Levels(circle, _group_levels([squared_distance(circle.centre, p) for p in points],
                                        lambda members: angular_sort(circle.centre, points, members)),
                  False)
 

@@ -1,70 +1,99 @@
-"""What ``exactsym check`` reports about a configuration, and the check of its ``[expect]`` block.
+"""The report of ``exactsym check``: JSON and text rendered from one :class:`Analysis`,
+and the check of a configuration's ``[expect]`` block.
 
-:func:`check_report` returns a JSON-ready dict with the keys of
-``../shared/spec/cli-1.md``; exact numbers are strings in the configuration
-syntax.  Later layers (ground truth, the paper) add keys through
-:data:`SECTIONS`: functions ``(config, rings, report) -> None`` run in order.
+:func:`report_json` returns a JSON-ready dict with the keys of ``docs/cli.md``; exact
+numbers are strings in the configuration syntax.  :func:`report_text` is the table the
+command prints without ``--json``.  Both read the :class:`~exactsym.analysis.Analysis`
+only (nothing is recomputed here).  To add a section: add its part to
+:func:`exactsym.analysis.analyse`, then one block to each of the two functions below, and
+its ``[expect]`` keys to :data:`EXPECTATIONS` and :data:`exactsym.fileformat.EXPECT_KEYS`.
 """
 
 from __future__ import annotations
 
-from typing import Callable
-
+from .analysis import Analysis, Options, analyse
 from .configuration import Configuration
-from .errors import InputError
-from .exact import number_system, number_text, evaluate
-from .levels import Rings, rings
-
-#: Extra report sections, each ``(config, rings, report) -> None``; appended by later modules.
-SECTIONS: list[Callable] = []
+from .exact import evaluate, number_system, number_text
+from .expr import parse_expression
+from .paper.family_report import audit_lines, paper_json, paper_lines
+from .truth_report import table_lines, truth_json
 
 
-def check_report(config: Configuration, options: dict | None = None) -> dict:
-    ring = rings(config)
+def report_json(analysis: Analysis) -> dict:
+    """The JSON object of ``exactsym check --json`` (``docs/cli.md``)."""
+    config, levels = analysis.config, analysis.levels
     report = {
         "n": config.n,
-        "sec": {"center": [number_text(c) for c in ring.sec.centre],
-                "radius_squared": number_text(ring.sec.radius_squared)},
+        "sec": {"center": [number_text(c) for c in levels.sec.centre],
+                "radius_squared": number_text(levels.sec.radius_squared)},
         "levels": [{"radius_squared": number_text(level.radius_squared),
-                    "points": list(level.points)} for level in ring.levels],
-        "number_field": getattr(config.polar_system if ring.polar else config.system, "name", "Q"),
+                    "points": list(level.points)} for level in levels.levels],
+        "number_field": getattr(config.polar_system if levels.polar else config.system,
+                                "name", "Q"),
     }
-    for section in SECTIONS:
-        section(config, ring, report, options or {})
+    if analysis.truth is not None:
+        report.update(truth_json(analysis.truth))
+    if analysis.level_verdicts is not None:
+        strings = analysis.level_strings or (None,) * len(report["levels"])
+        for entry, verdict, text in zip(report["levels"], analysis.level_verdicts, strings):
+            entry["paper"] = verdict
+            if text is not None:
+                entry["strings"] = text
+    if analysis.paper is not None:
+        report["paper"] = paper_json(analysis.paper)
+    if analysis.audit is not None:
+        report["audit"] = analysis.audit
     return report
 
 
+def report_text(analysis: Analysis) -> str:
+    """The table ``exactsym check`` prints without ``--json``."""
+    report = report_json(analysis)
+    lines = [f"n = {report['n']}   number field: {report['number_field']}",
+             f"SEC centre ({report['sec']['center'][0]}, {report['sec']['center'][1]}), "
+             f"radius^2 = {report['sec']['radius_squared']}",
+             f"{len(report['levels'])} level(s), nearest first (points counter-clockwise):"]
+    for k, level in enumerate(report["levels"], 1):
+        lines.append(f"  G{k}: radius^2 = {level['radius_squared']}   points {level['points']}")
+        if level.get("paper"):
+            lines.append(f"      paper: {level['paper']}")
+    if analysis.truth is not None:
+        lines.extend(table_lines(analysis.truth))
+    if analysis.paper is not None:
+        lines.extend(paper_lines(analysis.paper))
+    if analysis.audit is not None:
+        lines.extend(audit_lines(analysis.audit))
+    return "\n".join(lines)
+
+
+def check_report(config: Configuration, strings: bool = False) -> dict:
+    """:func:`report_json` of the whole analysis (every part) of ``config``."""
+    return report_json(analyse(config, options=Options(strings=strings)))
+
+
+# ---------------------------------------------------------------- [expect]
 def _same_number(text_a: str, text_b: str) -> bool:
     """Exact equality of two numbers written in the configuration syntax."""
-    from .expr import parse_expression
     a, b = parse_expression(text_a), parse_expression(text_b)
     system = number_system([a, b])
     return evaluate(a, system) == evaluate(b, system)
 
 
-#: How an ``[expect]`` key is compared with the report: key -> (report path, comparison).
-EXPECT_CHECKS: dict[str, tuple[Callable[[dict], object], Callable[[object, object], bool]]] = {
-    "n": (lambda r: r["n"], lambda want, got: want == got),
-    "levels": (lambda r: len(r["levels"]), lambda want, got: want == got),
-    "sec_radius_squared": (lambda r: r["sec"]["radius_squared"], _same_number),
-    "orderable": (lambda r: r.get("orderable"), lambda want, got: want == got),
-    "group": (lambda r: r.get("group"), lambda want, got: want == got),
-    "paper_orderable": (lambda r: (r.get("paper") or {}).get("orderable"),
-                        lambda want, got: want == got),
-    # the family layer (exactsym.paper.family_report): -1 stands for "no leader"
-    "paper_leader": (lambda r: None if "leader" not in (r.get("paper") or {}) else
-                     (-1 if r["paper"]["leader"] is None else r["paper"]["leader"]),
-                     lambda want, got: want == got),
-    "audit_agrees": (lambda r: (r.get("audit") or {}).get("agrees"),
-                     lambda want, got: want == got),
-}
+def _equal(want, got) -> bool:
+    return want == got
 
 
+def _paper_leader(report: dict):
+    """The family layer's leader; -1 stands for "no leader"."""
+    paper = report.get("paper")
+    if not isinstance(paper, dict) or "leader" not in paper:
+        return None
+    return -1 if paper["leader"] is None else paper["leader"]
 
-# [expect] paper_* keys of the paper's verdicts per level (exactsym.paper.polygon_report)
+
 def _paper_level_values(*path):
     """Getter: the value at ``path`` in each level's ``"paper"`` entry ("none" for null),
-    nearest first; None when that report section has not run."""
+    nearest first; None when that part was not computed."""
     def get(report):
         out = []
         for level in report["levels"]:
@@ -87,23 +116,45 @@ def _paper_level_check(want, got) -> bool:
     return bool(got) and same(want, got[-1])
 
 
-EXPECT_CHECKS.update({
-    f"paper_{key}": (_paper_level_values(*path), _paper_level_check) for key, path in {
-        "symmetric": ("symmetric",), "straight": ("straight",), "skew": ("skew",),
-        "degree": ("degree",), "type": ("type",), "lines": ("lines",),
-        "theorem1_symmetric": ("theorem1_symmetric",), "loop_terminates": ("loop_terminates",),
-        "def_straight": ("definition", "straight"), "def_skew": ("definition", "skew"),
-        "def_mirrors": ("definition", "mirrors"), "leader_sym": ("leader_sym",),
-        "leader_sym_by_lines": ("leader_sym_by_lines",),
-        "leader_asym": ("leader_asym", "+1"), "leader_asym_mirrored": ("leader_asym", "-1"),
-    }.items()})
+def _level(*path):
+    return _paper_level_values(*path), _paper_level_check
+
+
+#: How each ``[expect]`` key is compared with the JSON report: key -> (getter, comparison).
+#: The keys a file may use are :data:`exactsym.fileformat.EXPECT_KEYS` (the same set).
+EXPECTATIONS = {
+    "n": (lambda r: r["n"], _equal),
+    "levels": (lambda r: len(r["levels"]), _equal),
+    "sec_radius_squared": (lambda r: r["sec"]["radius_squared"], _same_number),
+    "orderable": (lambda r: r.get("orderable"), _equal),
+    "group": (lambda r: r.get("group"), _equal),
+    "paper_orderable": (lambda r: (r.get("paper") or {}).get("orderable"), _equal),
+    "paper_leader": (_paper_leader, _equal),
+    "audit_agrees": (lambda r: (r.get("audit") or {}).get("agrees"), _equal),
+    # the paper on each level polygon
+    "paper_symmetric": _level("symmetric"),
+    "paper_straight": _level("straight"),
+    "paper_skew": _level("skew"),
+    "paper_degree": _level("degree"),
+    "paper_type": _level("type"),
+    "paper_lines": _level("lines"),
+    "paper_theorem1_symmetric": _level("theorem1_symmetric"),
+    "paper_loop_terminates": _level("loop_terminates"),
+    "paper_def_straight": _level("definition", "straight"),
+    "paper_def_skew": _level("definition", "skew"),
+    "paper_def_mirrors": _level("definition", "mirrors"),
+    "paper_leader_sym": _level("leader_sym"),
+    "paper_leader_sym_by_lines": _level("leader_sym_by_lines"),
+    "paper_leader_asym": _level("leader_asym", "+1"),
+    "paper_leader_asym_mirrored": _level("leader_asym", "-1"),
+}
 
 
 def failed_expectations(config: Configuration, report: dict) -> list[str]:
     """One message per ``[expect]`` claim that the report contradicts (or cannot check)."""
     failures = []
     for key, want in config.expect.items():
-        check = EXPECT_CHECKS.get(key)
+        check = EXPECTATIONS.get(key)
         if check is None:
             failures.append(f"[expect] {key}: no check is implemented for this key")
             continue
@@ -115,4 +166,5 @@ def failed_expectations(config: Configuration, report: dict) -> list[str]:
     return failures
 
 
-__all__ = ["check_report", "failed_expectations", "SECTIONS", "EXPECT_CHECKS", "InputError", "Rings"]
+__all__ = ["report_json", "report_text", "check_report", "failed_expectations",
+           "EXPECTATIONS"]

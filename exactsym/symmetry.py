@@ -24,7 +24,7 @@ or Cartesian form; and the exact centroid of many random rationals has a
 denominator of thousands of digits.
 
 Angles are held as exact, similarity-invariant keys that increase with the
-angle: on the *polar path* (``rings(config).polar``: C is the origin and every
+angle: on the *polar path* (``levels_of(config).polar``: C is the origin and every
 point is ``(r^2, turn)``) the rational turn itself; on the *Cartesian path* the
 "diamond angle" :func:`pseudo_angle` of a vector (a rational function of its
 coordinates, monotone in its angle), which for the angle between two rays u, v is
@@ -49,7 +49,7 @@ from typing import Iterator, Sequence
 
 from .configuration import Configuration
 from .exact import fmpq
-from .levels import Rings, rings as compute_rings
+from .levels import Levels, levels_of
 from .strings import cyclic_occurrences as occurrences, cyclic_period
 
 __all__ = ["Isometry", "SymmetryGroup", "symmetry_group", "pseudo_angle", "least_rotation",
@@ -327,19 +327,19 @@ def _cartesian_rays(points, centre, integers: bool | None = None):
 
 # ---------------------------------------------------------------- the group
 
-def symmetry_group(config: Configuration, rings: Rings | None = None) -> SymmetryGroup:
+def symmetry_group(config: Configuration, rings: Levels | None = None) -> SymmetryGroup:
     """The symmetry group of ``config`` (all isometries of the plane mapping its point
     set onto itself), with the canonical ordering and the leader of
-    ``../shared/spec/cli-1.md``.  ``rings`` (from :func:`exactsym.levels.rings`) is
+    ``../shared/spec/cli-1.md``.  ``rings`` (from :func:`exactsym.levels.levels_of`) is
     computed when not given.  O(n log n) exact operations; never raises on a valid
     configuration.
 
-    The centre is ``rings.sec.centre``.  Given ``Rings`` whose centre is not the SEC
+    The centre is ``rings.sec.centre``.  Given ``Levels`` whose centre is not the SEC
     centre of ``config`` (say, that of a larger configuration), the result is the group
     of the isometries that fix that centre and map the points onto themselves, with
     ``reference`` taken from the sparsest of ``rings.levels``.
     """
-    ring = rings if rings is not None else compute_rings(config)
+    ring = rings if rings is not None else levels_of(config)
     centre = ring.sec.centre
     n = config.n
     if n == 1 and (not config.polar[0][0] if ring.polar else config.points[0] == centre):
@@ -465,7 +465,7 @@ def _is_half_turn(gap, polar: bool) -> bool:
     return gap == (fmpq(1, 2) if polar else 2)
 
 
-def _reference(ring: Rings, labelling: list[int], centre_index: int | None) -> int | None:
+def _reference(ring: Levels, labelling: list[int], centre_index: int | None) -> int | None:
     """The first point, in the canonical labelling, of the sparsest level off the centre
     (fewest points; the nearest on a tie)."""
     levels = [level for level in ring.levels if level.radius_squared and level.points]

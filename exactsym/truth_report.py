@@ -1,31 +1,26 @@
-"""The ground-truth section of ``exactsym check`` (``../shared/spec/cli-1.md``).
+"""The ground truth in the report of ``exactsym check`` (``docs/cli.md``).
 
-Importing this module appends :func:`truth_section` to :data:`exactsym.report.SECTIONS`;
-it adds the keys ``group``, ``orderable``, ``ordering``, ``leader`` and
+:func:`truth_json` gives the keys ``group``, ``orderable``, ``ordering``, ``leader`` and
 ``symmetries`` (``{"rotations": k, "mirrors": m}``, both ``null`` for the O2 of a
-single point), and a few lines for the table (``report["_table_lines"]``).
+single point); :func:`table_lines` the lines of the text report.
 """
 
 from __future__ import annotations
 
-from . import report as _report
 from .exact import number_text
-from .symmetry import Isometry, SymmetryGroup, symmetry_group
+from .symmetry import Isometry, SymmetryGroup
 
 _MAX_LISTED = 12
 
 
-def truth_section(config, rings, report: dict, options: dict | None = None) -> None:
-    """Add the ground truth (:func:`exactsym.symmetry.symmetry_group`) to ``report``."""
-    group = symmetry_group(config, rings)
-    report["group"] = group.name
-    report["orderable"] = group.orderable
-    report["ordering"] = list(group.ordering) if group.ordering is not None else None
-    report["leader"] = group.leader
+def truth_json(group: SymmetryGroup) -> dict:
+    """The report's keys of the ground truth (:func:`exactsym.symmetry.symmetry_group`)."""
     finite = group.name != "O2"
-    report["symmetries"] = {"rotations": group.rotations if finite else None,
-                            "mirrors": group.mirrors if finite else None}
-    report.setdefault("_table_lines", []).extend(table_lines(group))
+    return {"group": group.name, "orderable": group.orderable,
+            "ordering": list(group.ordering) if group.ordering is not None else None,
+            "leader": group.leader,
+            "symmetries": {"rotations": group.rotations if finite else None,
+                           "mirrors": group.mirrors if finite else None}}
 
 
 def table_lines(group: SymmetryGroup) -> list[str]:
@@ -78,6 +73,3 @@ def _listed(indices) -> str:
         return str(indices)
     return "[" + ", ".join(map(str, indices[:_MAX_LISTED])) + f", ... ({len(indices)} in all)]"
 
-
-if truth_section not in _report.SECTIONS:
-    _report.SECTIONS.append(truth_section)

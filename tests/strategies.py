@@ -23,7 +23,7 @@ from fractions import Fraction
 
 from hypothesis import strategies as st
 
-from exactsym.config import ConfigFile, PointSpec
+from exactsym.fileformat import ConfigFile, PointSpec
 from exactsym.configuration import Configuration, from_file
 from exactsym.exact import fmpq
 from exactsym.exprtree import Const

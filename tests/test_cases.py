@@ -9,7 +9,6 @@ runs the regression suite of one statement (``docs/cases.md``).
 
 from __future__ import annotations
 
-import importlib.util
 import subprocess
 import sys
 from pathlib import Path
@@ -17,16 +16,10 @@ from pathlib import Path
 import pytest
 
 from exactsym.cases_cli import case_files, run_case, run_cases
-from exactsym.cli import _load_plugins
-from exactsym.config import read_config
+from exactsym.fileformat import read_config
 
-_load_plugins()
 
 CASES = Path(__file__).resolve().parent.parent / "cases"
-
-#: [expect] keys computed by a layer that may not be written yet (its module).
-PROVIDERS = {"orderable": "exactsym.truth_report", "group": "exactsym.truth_report",
-             "paper_orderable": "exactsym.paper.family_report"}
 
 
 def _labels(path: Path) -> tuple:
@@ -42,22 +35,10 @@ def _params():
         yield pytest.param(path, id=str(path.relative_to(CASES)), marks=marks)
 
 
-def _missing_layer(failure: str) -> bool:
-    """A failure only because the layer computing the key is absent from this tree."""
-    if "does not compute it" not in failure:
-        return False
-    key = failure.split("]", 1)[1].split("=", 1)[0].strip()
-    module = PROVIDERS.get(key)
-    return module is not None and importlib.util.find_spec(module) is None
-
-
 @pytest.mark.parametrize("path", list(_params()))
 def test_case(path):
     result = run_case(path)
-    real = [f for f in result.failures if not _missing_layer(f)]
-    assert not real, "\n".join(real)
-    if result.failures:
-        pytest.skip("needs a layer not in this tree: " + "; ".join(result.failures))
+    assert not result.failures, "\n".join(result.failures)
 
 
 def test_every_case_has_labels_and_expectations():

@@ -20,7 +20,7 @@ from hypothesis import event, given, settings, strategies as st
 from exactsym.audit import audit, transformed
 from exactsym.configuration import load
 from exactsym.exact import fmpq
-from exactsym.levels import rings
+from exactsym.levels import levels_of
 from exactsym.paper import family as F
 from exactsym.paper import polygon as P
 from exactsym.paper.circle_polygon import polygon_from_directions
@@ -43,7 +43,7 @@ def ring(r, turns):
 
 def family_of(points):
     config = polar_configuration(points)
-    return config, rings(config), F.concentric_polygons(config)
+    return config, levels_of(config), F.concentric_polygons(config)
 
 
 def keys(lines):
@@ -220,7 +220,7 @@ def test_trace_entries_have_the_required_keys():
 def test_rotation_and_scale_do_not_change_the_paper():
     """Everything the paper does is invariant under orientation-preserving similarities."""
     config, res = run(regular(1, 3) + regular(2, 5, Fraction(1, 20)) + regular(3, 6))
-    other = transformed(config, rings(config), "similarity")
+    other = transformed(config, levels_of(config), "similarity")
     res2 = F.paper_procedure(other)
     assert (res2.orderable, res2.leader, [m["robot"] for m in res2.moves]) == \
         (res.orderable, res.leader, [m["robot"] for m in res.moves])
@@ -229,7 +229,7 @@ def test_rotation_and_scale_do_not_change_the_paper():
 def test_reflection_is_the_other_handedness():
     """The reflected input seen by an observer of the other handedness is the same view."""
     config, res = run(ring(1, ["1/40", "1/7", "2/5", "5/8"]) + regular(2, 6))
-    mirrored = transformed(config, rings(config), "reflection")
+    mirrored = transformed(config, levels_of(config), "reflection")
     res2 = F.paper_procedure(mirrored, orientation=-1)
     assert (res2.leader, [m["robot"] for m in res2.moves]) == \
         (res.leader, [m["robot"] for m in res.moves])
@@ -296,7 +296,7 @@ FAMILY_STATEMENTS = [
 
 @pytest.mark.parametrize("label", FAMILY_STATEMENTS)
 def test_every_family_statement_has_a_case_with_expectations(label):
-    from exactsym.config import read_config
+    from exactsym.fileformat import read_config
     tagged = []
     for path in _all_cases():
         cfg = read_config(path)
@@ -308,7 +308,7 @@ def test_every_family_statement_has_a_case_with_expectations(label):
 
 
 def test_discrepancy_cases_have_notes():
-    from exactsym.config import read_config
+    from exactsym.fileformat import read_config
     for path in sorted(DISCREPANCIES.glob("family-*.toml")):
         cfg = read_config(path)
         assert cfg.notes and cfg.expect.get("audit_agrees") is False, path

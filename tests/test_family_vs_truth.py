@@ -29,7 +29,7 @@ from hypothesis import HealthCheck, event, given, settings, strategies as st
 
 from exactsym.audit import audit, transformed
 from exactsym.configuration import Configuration, load
-from exactsym.levels import rings
+from exactsym.levels import levels_of
 from exactsym.paper import family as F
 from exactsym.symmetry import symmetry_group
 
@@ -119,7 +119,7 @@ def check_classes(config, ring_data, res, report):
                              st.just(False), st.integers(1, 4).map(Fraction)))
 def test_polar_families_against_the_truth(points, sim):
     config = polar_configuration(points)
-    ring_data = rings(config)
+    ring_data = levels_of(config)
     res = F.paper_procedure(config, ring_data)
     report = audit(config, ring_data, res)
     # the truth and the paper's verdict do not depend on the frame; rotations and
@@ -147,7 +147,7 @@ def test_polar_families_against_the_truth(points, sim):
     lambda name: rational_group_points(name, max_seeds=3)), similarities())
 def test_rational_configurations_against_the_truth(points, sim):
     config = Configuration.from_points(points)
-    ring_data = rings(config)
+    ring_data = levels_of(config)
     res = F.paper_procedure(config, ring_data)
     report = audit(config, ring_data, res)
     moved = Configuration.from_points([sim(p) for p in points])

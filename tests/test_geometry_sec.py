@@ -7,7 +7,7 @@ from exactsym.configuration import Configuration
 from exactsym.exact import fmpq
 from exactsym.geometry import (Turn, angular_sort, circumcentre, compare_directions,
                                compare_distance, midpoint, orientation, squared_distance)
-from exactsym.levels import rings
+from exactsym.levels import levels_of
 from exactsym.sec import sec_by_brute_force, smallest_enclosing_circle
 
 Q = fmpq
@@ -82,11 +82,11 @@ def apply(similarity, p):
 @given(point_sets, similarities, st.randoms(use_true_random=False))
 def test_sec_and_levels_map_along_under_similarities(raw, similarity, rnd):
     pts = [P(x, y) for x, y in raw]
-    base = rings(Configuration.from_points(pts))
+    base = levels_of(Configuration.from_points(pts))
     order = list(range(len(pts)))
     rnd.shuffle(order)                      # moved[k] is the image of point order[k]
     moved = [apply(similarity, pts[i]) for i in order]
-    ring = rings(Configuration.from_points(moved))
+    ring = levels_of(Configuration.from_points(moved))
     assert ring.sec.centre == apply(similarity, base.sec.centre)
     k = Q(similarity[2].numerator, similarity[2].denominator)
     assert ring.sec.radius_squared == base.sec.radius_squared * k * k
@@ -102,24 +102,24 @@ def test_sec_and_levels_map_along_under_similarities(raw, similarity, rnd):
 
 
 def test_levels_of_a_polar_polygon_use_turns():
-    from exactsym.config import parse_config_text
+    from exactsym.fileformat import parse_config_text
     from exactsym.configuration import from_file
     text = "\n".join(f"polar 1 {k}/7" for k in range(7)) + "\npolar 1/2 1/14\n"
     config = from_file(parse_config_text(text, "<test>", "txt"))
-    ring = rings(config)
+    ring = levels_of(config)
     assert ring.polar and ring.sec.radius_squared == 1
     assert [lv.points for lv in ring.levels] == [(7,), tuple(range(7))]
     # the same points in Cartesian form give the same SEC and levels
     cart = Configuration.from_points(config.points, system=config.system)
-    cring = rings(cart)
+    cring = levels_of(cart)
     assert not cring.polar and cring.sec.radius_squared == 1
     assert [lv.points for lv in cring.levels] == [lv.points for lv in ring.levels]
 
 
 def test_polar_configuration_off_centre_falls_back_to_cartesian():
-    from exactsym.config import parse_config_text
+    from exactsym.fileformat import parse_config_text
     from exactsym.configuration import from_file
     config = from_file(parse_config_text("polar 1 0\npolar 1 1/5\npolar 1 1/10\n", "<t>", "txt"))
-    ring = rings(config)
+    ring = levels_of(config)
     assert not ring.polar
     assert ring.sec.radius_squared < 1

@@ -1,8 +1,8 @@
 """Inputs that colliding number keys answered wrongly (exit 0 with a wrong verdict)."""
 
-from exactsym.config import parse_config_text
+from exactsym.fileformat import parse_config_text
 from exactsym.configuration import from_file
-from exactsym.levels import rings
+from exactsym.levels import levels_of
 from exactsym.symmetry import symmetry_group
 
 
@@ -19,12 +19,12 @@ def test_rhombus_with_nested_half_diagonal_has_two_levels():
     config = _load('format = 1\npoints = [\n'
                    '{ r = "sqrt(9+4*sqrt(2))", turn = "0" }, { r = "sqrt(9+4*sqrt(2))", turn = "1/2" },\n'
                    '{ r = "3/2", turn = "1/4" }, { r = "3/2", turn = "3/4" }]\n')
-    levels = rings(config).levels
+    levels = levels_of(config).levels
     assert [sorted(level.points) for level in levels] == [[2, 3], [0, 1]]
     assert symmetry_group(config).name == "D2"
 
 
 def test_scalene_triangle_with_nested_coordinate():
     config = _load('format = 1\npoints = [["sqrt(3+2*sqrt(2))", "0"], ["1", "2"], ["-3", "1/2"]]\n')
-    assert len(rings(config).levels) == 2
+    assert len(levels_of(config).levels) == 2
     assert symmetry_group(config).name == "C1"

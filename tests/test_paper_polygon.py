@@ -394,9 +394,9 @@ def test_elect_leader_asym_triangle_has_no_leader():
 
 def test_level_polygon_cartesian_and_radius_zero():
     from exactsym.configuration import Configuration
-    from exactsym.levels import rings
+    from exactsym.levels import levels_of
     config = Configuration.from_points([(0, 0), (5, 0), (0, 5), (-5, 0), (3, -4)])
-    ring = rings(config)
+    ring = levels_of(config)
     with pytest.raises(ValueError):
         level_polygon(config, ring, 0)
     poly = level_polygon(config, ring, 1)

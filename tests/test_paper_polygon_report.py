@@ -1,17 +1,15 @@
-"""The report section of the paper on each level (exactsym.paper.polygon_report)."""
+"""The paper on each level in the report (exactsym.paper.polygon_report)."""
 
 from __future__ import annotations
 
 import json
 from fractions import Fraction
 
-from exactsym.cli import _load_plugins, main
+from exactsym.cli import main
 from exactsym.configuration import Configuration, load
 from exactsym.report import check_report, failed_expectations
 from exactsym.paper import polygon_report
 from strategies import polar_configuration
-
-_load_plugins()
 
 
 def test_report_with_strings_cartesian_sqrt3(tmp_path, capsys):
@@ -30,7 +28,7 @@ def test_report_with_strings_cartesian_sqrt3(tmp_path, capsys):
 def test_report_polar_strings_and_centre_level():
     config = polar_configuration([(0, 0), (1, Fraction(0)), (1, Fraction(1, 3)),
                                   (1, Fraction(2, 3))])
-    report = check_report(config, {"strings": True})
+    report = check_report(config, strings=True)
     assert report["levels"][0]["paper"] is None                       # the robot at C
     strings = report["levels"][1]["strings"]
     assert strings["metric"] == "angular-distance"
@@ -40,7 +38,7 @@ def test_report_polar_strings_and_centre_level():
 def test_large_polygon_is_cheap_and_strings_omitted():
     n = 1500
     config = polar_configuration([(1, Fraction(k, n)) for k in range(n)])
-    report = check_report(config, {"strings": True})
+    report = check_report(config, strings=True)
     level = report["levels"][0]
     assert level["paper"]["lines"] == n and level["paper"]["degree"] == n // 2
     assert "omitted" in level["strings"]

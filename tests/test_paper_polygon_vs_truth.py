@@ -21,7 +21,7 @@ import pytest
 from hypothesis import HealthCheck, assume, event, given, settings
 
 from exactsym.configuration import load
-from exactsym.levels import rings
+from exactsym.levels import levels_of
 from exactsym.paper import polygon as P
 from exactsym.paper.circle_polygon import level_polygon
 from strategies import polar_configuration
@@ -93,7 +93,7 @@ def mirror_line_keys(polygon, group) -> set:
 
 def analyse(config):
     """``(classes, facts)`` for a one-level polar configuration."""
-    ring = rings(config)
+    ring = levels_of(config)
     polygon = level_polygon(config, ring, len(ring.levels) - 1)
     group = symmetry.symmetry_group(config, ring)
     mirror_keys = mirror_line_keys(polygon, group)
@@ -174,7 +174,7 @@ def analyse(config):
 
 def one_level(polygon):
     config = polar_configuration([(1, Fraction(int(t.p), int(t.q))) for t in polygon.directions])
-    ring = rings(config)
+    ring = levels_of(config)
     assume(ring.polar and len(ring.levels) == 1)
     return config
 
@@ -202,7 +202,7 @@ def test_each_known_class_has_a_case_that_shows_it(cls):
                          ids=lambda p: p.name)
 def test_case_classes_are_known(path):
     config = load(path)
-    if len(rings(config).levels) != 1:
+    if len(levels_of(config).levels) != 1:
         pytest.skip("several levels")
     classes, _ = analyse(config)
     assert classes <= set(KNOWN)
@@ -223,7 +223,7 @@ def test_skew_statements_hold(polygon):
     of an inscribed rectangle) against the truth, with the skewed mirror image read as the
     half-turn about C (docs/interpretations.md)."""
     config = one_level(polygon)
-    polygon = level_polygon(config, rings(config), 0)
+    polygon = level_polygon(config, levels_of(config), 0)
     central = _half_turn(symmetry.symmetry_group(config))
     turns = polygon.directions
     n = polygon.n

@@ -19,16 +19,14 @@ from math import gcd
 import pytest
 
 from exactsym.audit import audit
-from exactsym.cli import _load_plugins
 from exactsym.configuration import Configuration, load
 from exactsym.exact import fmpq
-from exactsym.levels import rings
+from exactsym.levels import levels_of
 from exactsym.paper import family as F
 from exactsym.paper import polygon_report
 from exactsym.paper.circle_polygon import level_polygon, polygon_from_directions
 from exactsym.report import check_report
 
-_load_plugins()
 
 TRACE_LIMIT = F.DEFAULT_LIMITS.trace_entries
 
@@ -117,7 +115,7 @@ def test_bounded_and_unbounded_procedures_agree(tmp_path, name, text):
     same verdicts: the paper's conclusions and moves, the audit's conclusions and the
     statements it finds false."""
     config = _load_text(tmp_path, name, text())
-    ring_data = rings(config)
+    ring_data = levels_of(config)
     t = len(ring_data.levels)
     assert t * (t - 1) // 2 > F.MAX_PAIRS                      # the bounds do cut
     bounded = F.paper_procedure(config, ring_data)
@@ -185,12 +183,12 @@ def test_polygon_section_of_many_levels_is_the_levelwise_one(tmp_path):
     """Single robots (the shared single-vertex verdict), polar C7 levels (one shape)."""
     for name, text in (("r.txt", random_text(120, 3)), ("c.txt", c7_polar_text(140, 2))):
         config = _load_text(tmp_path, name, text)
-        ring_data = rings(config)
-        report = {"levels": [{} for _ in ring_data.levels]}
-        polygon_report.polygon_section(config, ring_data, report, {})
-        for k, entry in enumerate(report["levels"]):
+        ring_data = levels_of(config)
+        verdicts, strings = polygon_report.level_reports(config, ring_data)
+        assert strings is None and len(verdicts) == len(ring_data.levels)
+        for k, verdict in enumerate(verdicts):
             want = polygon_report.level_verdicts(level_polygon(config, ring_data, k))
-            assert entry["paper"] == want
+            assert verdict == want
 
 
 @pytest.mark.parametrize("name, text", [
@@ -198,11 +196,11 @@ def test_polygon_section_of_many_levels_is_the_levelwise_one(tmp_path):
     ("polar120.txt", lambda: "".join(f"polar {r} {r * r % 127}/127\n" for r in range(1, 120))
      + "".join(f"polar 1000 {k}/3\n" for k in range(3))),
 ])
-def test_check_reuses_the_trivial_group_of_the_truth_section(tmp_path, name, text):
-    """Within ``check`` the audit takes the group C1 from the ground-truth section instead
-    of computing it again: the same audit as computed on its own."""
+def test_check_audit_with_the_pipeline_group_is_the_audit_on_its_own(tmp_path, name, text):
+    """Within ``check`` the audit takes the group from the pipeline's truth instead of
+    computing it again: the same audit as computed on its own."""
     config = _load_text(tmp_path, name, text())
     report = check_report(config)
     assert report["group"] == "C1"
-    ring_data = rings(config)
+    ring_data = levels_of(config)
     assert report["audit"] == audit(config, ring_data, F.paper_procedure(config, ring_data))

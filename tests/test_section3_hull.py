@@ -13,7 +13,7 @@ from hypothesis import given, settings, strategies as st
 from strategies import rational_group_points
 
 from exactsym.configuration import Configuration
-from exactsym.levels import rings
+from exactsym.levels import levels_of
 from exactsym.symmetry import symmetry_group
 
 GROUPS = ["C2", "C4", "D1", "D2", "D4"]
@@ -28,7 +28,7 @@ def apply(iso, p):
 
 def analysed(points):
     config = Configuration.from_points(points)
-    ring = rings(config)
+    ring = levels_of(config)
     return config, ring, symmetry_group(config, ring)
 
 

@@ -213,7 +213,7 @@ def polygon_from_directions(labels, directions, polar: bool) -> CirclePolygon:
 
 
 def level_polygon(config, rings, level_index: int) -> CirclePolygon:
-    """The polygon G_{level_index + 1} of ``rings(config)`` (levels are nearest first).
+    """The polygon G_{level_index + 1} of ``levels_of(config)`` (levels are nearest first).
 
     The level's points are already counter-clockwise from the +x ray through C.
     Raises ValueError for the level of radius 0 (a point at C has no direction).

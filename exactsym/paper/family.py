@@ -83,12 +83,12 @@ from itertools import combinations
 from math import gcd
 from typing import Iterable, Sequence
 
-from ..config import ConfigFile, PointSpec
+from ..fileformat import ConfigFile, PointSpec
 from ..configuration import Configuration, from_file, no_cycle_collection
 from ..errors import InputError
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, number_text, rational_sqrt, sign
 from ..exprtree import BinOp, Const
-from ..levels import Rings, polar_sec, rings as compute_rings
+from ..levels import Levels, levels_of, polar_sec
 from ..strings import find_all
 from .circle_polygon import CirclePolygon, polygon_from_directions
 from . import polygon as P
@@ -271,11 +271,11 @@ def _new_ring(name, polygon, radius_squared, levels, robots, own, keys=()) -> Ri
     return ring
 
 
-def concentric_polygons(config: Configuration, ring_data: Rings | None = None) -> tuple:
+def concentric_polygons(config: Configuration, ring_data: Levels | None = None) -> tuple:
     """G_1, ..., G_t of ``config`` (Section 3: "Elements of G are sorted according to
     their distances from the center"), as :class:`Ring`\\ s with tuple labels (the
     polygons of :func:`.circle_polygon.level_polygon`, labels wrapped in tuples)."""
-    ring_data = ring_data if ring_data is not None else compute_rings(config)
+    ring_data = ring_data if ring_data is not None else levels_of(config)
     out = []
     polar = ring_data.polar
     if polar:
@@ -1590,7 +1590,7 @@ class _Placement:
     """Mutable robot positions used to apply the paper's moves exactly, and to build the
     configuration after them (polar when the input is polar about C)."""
 
-    def __init__(self, config: Configuration, ring_data: Rings):
+    def __init__(self, config: Configuration, ring_data: Levels):
         self.config = config
         self.ring_data = ring_data
         self.polar = ring_data.polar and config.polar is not None and bool(config.specs)
@@ -1786,7 +1786,7 @@ def _elect_asym(trace, alg, line, ring_poly: Ring, target: Ring, orientation, re
     return robot, None
 
 
-def make_asym(config: Configuration, ring_data: Rings, Gp: Sequence[Ring], trace: list,
+def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trace: list,
               orientation: int = 1, reading: str = "literal", rnd: int = 1,
               limits: Limits | None = None) -> MakeAsymResult:
     """``MakeAsym`` (Section 4.2) on G' whose G_t is symmetric, every branch.
@@ -2205,7 +2205,7 @@ class PaperResult:
     make_asym: str | None
     elect_leader: str | None
     bounded: dict = field(default_factory=dict)
-    G_rings: tuple = field(default=(), repr=False, compare=False)   # G, as Rings
+    G_rings: tuple = field(default=(), repr=False, compare=False)   # G, as Rings (family.Ring)
 
 
 def _describe(rings: Sequence[Ring], polar: bool, limit: int | None = None) -> list:
@@ -2266,7 +2266,7 @@ def _is_polar(G) -> bool:
     return next((g.polygon.polar for g in G if g.polygon is not None), True)
 
 
-def paper_procedure(config: Configuration, ring_data: Rings | None = None,
+def paper_procedure(config: Configuration, ring_data: Levels | None = None,
                     orientation: int = 1, reading: str = "literal", degree: str = "paper",
                     max_rounds: int = 3, claims: bool = True,
                     check_vl: bool = True, limits: Limits | None = None) -> PaperResult:
@@ -2277,7 +2277,7 @@ def paper_procedure(config: Configuration, ring_data: Rings | None = None,
                                 claims, check_vl, limits)
 
 
-def _paper_procedure(config: Configuration, ring_data: Rings | None = None,
+def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
                      orientation: int = 1, reading: str = "literal", degree: str = "paper",
                      max_rounds: int = 3, claims: bool = True,
                      check_vl: bool = True, limits: Limits | None = None) -> PaperResult:
@@ -2295,7 +2295,7 @@ def _paper_procedure(config: Configuration, ring_data: Rings | None = None,
     :data:`UNBOUNDED` for the exhaustive procedure); ``PaperResult.bounded`` says what
     was bounded."""
     limits = limits if limits is not None else DEFAULT_LIMITS
-    ring_data = ring_data if ring_data is not None else compute_rings(config)
+    ring_data = ring_data if ring_data is not None else levels_of(config)
     trace: list = []
     bounded: dict = {}
     G = concentric_polygons(config, ring_data)
@@ -2393,7 +2393,7 @@ def _paper_procedure(config: Configuration, ring_data: Rings | None = None,
                            orderable, gathering, None, moves, False, trace, G, Gp,
                            ma_outcome, None, polar)
         try:
-            new_rings = compute_rings(new)
+            new_rings = levels_of(new)
         except (ArithmeticError, NotImplementedError, InputError) as err:
             _entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
                    f"exactsym cannot analyse the configuration after the moves ({err})",
@@ -2439,7 +2439,7 @@ def _finish(limits: Limits, bounded: dict, config, orderable, gathering, leader,
                        _describe(Gp, polar, limits.described), ma, el, bounded, tuple(G))
 
 
-def _same_sec(a: Rings, b: Rings) -> bool:
+def _same_sec(a: Levels, b: Levels) -> bool:
     return a.sec.centre[0] == b.sec.centre[0] and a.sec.centre[1] == b.sec.centre[1] and \
         a.sec.radius_squared == b.sec.radius_squared
 

@@ -1,6 +1,7 @@
-"""Report section: the paper's verdicts on each level polygon (Section 3 and 4.1).
+"""The paper's verdicts on each level polygon (Section 3 and 4.1), for the report.
 
-Each entry of ``report["levels"]`` gains ``"paper"``::
+:func:`level_reports` gives, per level, the ``"paper"`` entry of ``report["levels"]``
+(:mod:`exactsym.analysis` calls it once; :mod:`exactsym.report` places it)::
 
     {"straight": bool, "skew": bool, "degree": int or "p/q" string,
      "type": "type-0".."type-4" | "unclassified" | null, "type_reason": str,
@@ -36,7 +37,6 @@ from __future__ import annotations
 
 from ..exact import as_fmpq, exact_key, number_text, sign
 from ..configuration import no_cycle_collection
-from ..report import SECTIONS
 from . import polygon as paper
 from .circle_polygon import level_polygon
 
@@ -177,33 +177,34 @@ class VerdictMemo:
             return level_verdicts(polygon)
 
 
-def polygon_section(config, rings, report, options) -> None:
+def level_reports(config, levels, strings: bool = False) -> tuple[tuple, tuple | None]:
+    """``(verdicts, strings)``: per level of ``levels`` (nearest first) the ``"paper"``
+    entry (None for the robot at C) and, when ``strings``, the ``"strings"`` entry (None
+    for the robot at C; ``strings`` None when not asked for)."""
     with no_cycle_collection():
-        _polygon_section(config, rings, report, options)
+        return _level_reports(config, levels, strings)
 
 
-def _polygon_section(config, rings, report, options) -> None:
+def _level_reports(config, levels, strings: bool) -> tuple[tuple, tuple | None]:
     memo = VerdictMemo()
     single = None          # the verdict of a single-vertex level, and its label
-    for index, (level, entry) in enumerate(zip(rings.levels, report["levels"])):
+    verdicts, texts = [], []
+    for index, level in enumerate(levels.levels):
         if index == 0 and sign(level.radius_squared) == 0:
-            entry["paper"] = None
+            verdicts.append(None)
+            texts.append(None)
             continue
-        if len(level.points) == 1 and not options.get("strings"):
+        if len(level.points) == 1 and not strings:
             # every single vertex has the same shape: no polygon needs building
             if single is None:
-                polygon = level_polygon(config, rings, index)
+                polygon = level_polygon(config, levels, index)
                 single = (polygon.labels, level_verdicts(polygon))
             try:
-                entry["paper"] = _relabelled(single[1], single[0], tuple(level.points))
+                verdicts.append(_relabelled(single[1], single[0], tuple(level.points)))
                 continue
             except KeyError:        # a label that is not the vertex's: compute it
                 pass
-        polygon = level_polygon(config, rings, index)
-        entry["paper"] = memo.verdicts(polygon)
-        if options.get("strings"):
-            entry["strings"] = level_strings(polygon)
-
-
-if polygon_section not in SECTIONS:
-    SECTIONS.append(polygon_section)
+        polygon = level_polygon(config, levels, index)
+        verdicts.append(memo.verdicts(polygon))
+        texts.append(level_strings(polygon) if strings else None)
+    return tuple(verdicts), (tuple(texts) if strings else None)

@@ -1,4 +1,4 @@
-"""Reading configuration files (exactsym.config)."""
+"""Reading configuration files (exactsym.fileformat)."""
 
 import io
 import sys
@@ -8,7 +8,7 @@ from fractions import Fraction as F
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from exactsym.config import (EXPECT_KEYS, ConfigFile, PointSpec, parse_config_text,
+from exactsym.fileformat import (EXPECT_KEYS, ConfigFile, PointSpec, parse_config_text,
                              read_config)
 from exactsym.errors import ExpressionError, InputError
 from exactsym.exprtree import BinOp, Const, Sqrt, Trig

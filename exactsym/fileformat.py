@@ -28,8 +28,8 @@ class ExpressionText(str):
     """Marker type for :data:`EXPECT_KEYS`: a string holding an expression (checked to parse)."""
 
 
-#: Allowed ``[expect]`` keys and the Python type of their values.  Later
-#: features add keys here; validation reads only this table.
+#: Allowed ``[expect]`` keys and the Python type of their values (the keys of
+#: :data:`exactsym.report.EXPECTATIONS`, which compares them with the report).
 EXPECT_KEYS: dict[str, type | tuple] = {
     "orderable": bool,
     "group": str,
@@ -54,7 +54,7 @@ EXPECT_KEYS: dict[str, type | tuple] = {
     "paper_leader_sym_by_lines": (int, str, list),
     "paper_leader_asym": (int, str, list),
     "paper_leader_asym_mirrored": (int, str, list),
-    # the paper on the whole configuration (exactsym.paper.family_report)
+    # the paper on the whole configuration (exactsym.paper.family)
     "paper_leader": int,            # the robot ElectLeader elects; -1: none
     "audit_agrees": bool,           # exactsym.audit finds no false statement
 }

@@ -1,0 +1,90 @@
+"""The one analysis pipeline: levels, truth, the paper's verdicts and the audit, once each.
+
+:func:`analyse` is the only place that decides what is computed and in which order::
+
+    config -> levels (SEC, G1..Gt) -> truth (symmetry group)
+                                   -> paper, per level (polygon layer)
+                                   -> paper, whole family (Preprocess, MakeAsym, ElectLeader)
+                                   -> audit (paper against truth)
+
+Every command and both renderings of the report (:mod:`exactsym.report`: JSON and text)
+read the :class:`Analysis` it returns; nothing appends itself to anything at import.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .audit import audit as run_audit
+from .configuration import Configuration, no_cycle_collection
+from .levels import Levels, levels_of
+from .paper.family import PaperResult, paper_procedure
+from .paper.polygon_report import level_reports
+from .symmetry import SymmetryGroup, symmetry_group
+
+#: The parts :func:`analyse` can compute, in the order it computes them.
+PARTS = ("truth", "polygons", "family", "audit")
+#: What each part needs besides the levels (always computed).
+NEEDS = {"truth": (), "polygons": (), "family": (), "audit": ("truth", "family")}
+
+
+@dataclass(frozen=True)
+class Options:
+    """Readings passed to the paper's algorithms and what the report shows.
+
+    ``strings``: the CW/ACW strings of each level; ``reading``/``degree``: the readings
+    of Elect_Leader_Asym / Elect_Leader_Sym (:mod:`exactsym.paper.polygon`);
+    ``invariance``: the audit recomputes the paper in other frames."""
+    strings: bool = False
+    reading: str = "literal"
+    degree: str = "paper"
+    invariance: bool = True
+
+
+@dataclass(frozen=True)
+class Analysis:
+    """Everything ``exactsym check`` knows about one configuration.  A part not asked
+    for (``sections`` of :func:`analyse`) is None.
+
+    ``levels``: the SEC and G1..Gt; ``truth``: the exact symmetry group;
+    ``level_verdicts``: per level, the polygon layer's verdicts (a JSON-ready dict, None
+    for the robot at C); ``level_strings``: per level, the CW/ACW strings (None unless
+    ``options.strings``); ``paper``: the family layer's result; ``audit``: the audit's
+    JSON-ready dict (:func:`exactsym.audit.audit`)."""
+    config: Configuration
+    options: Options
+    levels: Levels
+    truth: SymmetryGroup | None = None
+    level_verdicts: tuple | None = None
+    level_strings: tuple | None = None
+    paper: PaperResult | None = None
+    audit: dict | None = None
+
+
+def analyse(config: Configuration, sections=PARTS, options: Options | None = None) -> Analysis:
+    """Compute ``sections`` (names from :data:`PARTS`, and what they need) of ``config``,
+    each once, in the order of :data:`PARTS`.  Raises ValueError for an unknown name."""
+    options = options if options is not None else Options()
+    wanted = set(sections)
+    unknown = wanted - set(PARTS)
+    if unknown:
+        raise ValueError(f"unknown analysis part(s): {sorted(unknown)}; known: {PARTS}")
+    for part in PARTS[::-1]:
+        if part in wanted:
+            wanted.update(NEEDS[part])
+    with no_cycle_collection():
+        levels = levels_of(config)
+        truth = symmetry_group(config, levels) if "truth" in wanted else None
+        verdicts = strings = None
+        if "polygons" in wanted:
+            verdicts, strings = level_reports(config, levels, options.strings)
+        paper = paper_procedure(config, levels, reading=options.reading,
+                                degree=options.degree) if "family" in wanted else None
+        audited = run_audit(config, levels, paper, {"reading": options.reading,
+                                                    "degree": options.degree,
+                                                    "invariance": options.invariance},
+                            group=truth) if "audit" in wanted else None
+    return Analysis(config, options, levels, truth, verdicts, strings, paper, audited)
+
+
+__all__ = ["Analysis", "Options", "analyse", "PARTS"]
