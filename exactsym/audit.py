@@ -34,12 +34,8 @@ was checked (``docs/interpretations.md``, "Bounds of the family layer").
 
 from __future__ import annotations
 
-from fractions import Fraction
-
-from .fileformat import ConfigFile, PointSpec
-from .configuration import Configuration, from_file, no_cycle_collection
+from .configuration import Configuration, Similarity, no_cycle_collection
 from .exact import fmpq, number_text
-from .exprtree import BinOp, Const
 from .levels import Level, Levels, levels_of
 from .paper import family as F
 from .symmetry import SymmetryGroup, symmetry_group
@@ -153,6 +149,14 @@ def _symmetry_witness(group: SymmetryGroup, robots) -> dict | None:
 
 
 # ---------------------------------------------------------------- transformed inputs
+#: The frames the paper is recomputed in: polar configurations about C stay polar.
+POLAR_FRAMES = {"reflection": Similarity(reflect=True),
+                "similarity": Similarity(turn=fmpq(1, 7), scale=2)}
+CARTESIAN_FRAMES = {"reflection": Similarity(reflect=True),
+                    "similarity": Similarity(rotation=(fmpq(3, 5), fmpq(4, 5)), scale=2,
+                                             shift=(fmpq(1, 3), fmpq(-1, 2)))}
+
+
 def transformed(config: Configuration, ring_data: Levels, frame: str) -> Configuration:
     """``config`` in another coordinate system, robot indices unchanged.
 
@@ -162,30 +166,10 @@ def transformed(config: Configuration, ring_data: Levels, frame: str) -> Configu
     rotation (3/5, 4/5), the scale 2 and the translation (1/3, -1/2), all exact."""
     if frame == "identity":
         return config
-    if ring_data.polar and config.polar is not None and config.specs:
-        specs = []
-        for s in config.specs:
-            t = Fraction(s.turn)
-            if frame == "reflection":
-                specs.append(PointSpec(s.index, s.line, s.column, r=s.r, turn=(-t) % 1))
-            else:
-                specs.append(PointSpec(s.index, s.line, s.column,
-                                       r=BinOp("*", Const(Fraction(2)), s.r),
-                                       turn=(t + Fraction(1, 7)) % 1))
-        return from_file(ConfigFile(source=config.source, points=tuple(specs),
-                                    name=config.name, model=config.model))
-    coerce = config.system.coerce
-    pts = []
-    for x, y in config.points:
-        if frame == "reflection":
-            pts.append((x, -y))
-        else:
-            c, s = coerce(fmpq(3, 5)), coerce(fmpq(4, 5))
-            two = coerce(fmpq(2))
-            pts.append((two * (c * x - s * y) + coerce(fmpq(1, 3)),
-                        two * (s * x + c * y) + coerce(fmpq(-1, 2))))
-    return Configuration.from_points(pts, system=config.system, source=config.source,
-                                     name=config.name, model=config.model)
+    if ring_data.polar and config.radii is not None:
+        return config.transformed(POLAR_FRAMES[frame])
+    cartesian = config.cartesian() if config.polar is not None else config
+    return cartesian.transformed(CARTESIAN_FRAMES[frame])
 
 
 FRAME_TEXT = {

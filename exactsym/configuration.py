@@ -1,25 +1,59 @@
-"""A configuration: robot positions as exact numbers, validated.
+"""A configuration: robot positions as exact numbers, validated; moves and frames on it.
 
 :func:`load` reads a file (:mod:`exactsym.fileformat`), evaluates every expression in
 one number system (:mod:`exactsym.exact`) and checks validity (distinct points,
 ``r >= 0``, fat robots at distance >= 2).  A configuration whose points are all
-polar keeps them as ``(r^2, turn)`` too: about the origin, radii and angles are
-then rationals and need no trigonometry, which keeps polar polygons with
+polar keeps them as ``(r^2, turn)`` (and the radii r) too: about the origin, radii and
+angles are then rationals and need no trigonometry, which keeps polar polygons with
 thousands of vertices cheap (``docs/numbers.md``); Cartesian coordinates are
 built on first use.
+
+Moves and changes of frame work on the exact numbers (never on expressions):
+:meth:`Configuration.moved` / :meth:`Configuration.with_positions` put robots at new
+positions (Cartesian pairs or :class:`Polar`), :meth:`Configuration.transformed` applies
+a :class:`Similarity`; an impossible result (robots coinciding or overlapping, a
+negative radius) raises :class:`~exactsym.errors.MoveImpossible`, not ``InputError``.
 """
 
 from __future__ import annotations
 
 import gc
 from contextlib import contextmanager
+from dataclasses import dataclass
 from functools import cached_property
 from typing import Iterable, Mapping, Sequence
 
 from .fileformat import ConfigFile, PointSpec, read_config
-from .errors import ExpressionError, InputError
-from .exact import RationalSystem, evaluate, exact_key, fmpq, normal_turn, number_system
+from .errors import ExpressionError, InputError, MoveImpossible
+from .exact import (FieldElement, RationalSystem, evaluate, exact_key, fmpq, normal_turn,
+                    number_system, sign)
 from .exprtree import Const, Node
+
+
+@dataclass(frozen=True)
+class Polar:
+    """A position about the origin: radius ``r`` (an exact number >= 0) and ``turn``
+    (a rational, in turns)."""
+    r: object
+    turn: fmpq
+
+
+@dataclass(frozen=True)
+class Similarity:
+    """An exact similarity of the plane: first the reflection (x, y) -> (x, -y) when
+    ``reflect``, then the rotation about the origin by the rational ``turn`` or by the
+    exact matrix ``rotation = (c, s)`` (c^2 + s^2 = 1), then the scaling by ``scale`` (a
+    positive rational) and the translation by ``shift``.  Without ``rotation`` and
+    ``shift`` it keeps a polar configuration polar."""
+    reflect: bool = False
+    turn: fmpq | None = None
+    rotation: tuple | None = None
+    scale: object = 1
+    shift: tuple | None = None
+
+    @property
+    def keeps_polar(self) -> bool:
+        return self.rotation is None and self.shift is None
 
 
 class Configuration:
@@ -34,7 +68,8 @@ class Configuration:
                  notes: str | None = None, model: str = "points", lemmas: Sequence[str] = (),
                  expect: Mapping | None = None, specs: Sequence[PointSpec] = (),
                  points: Sequence | None = None, system=None,
-                 polar: Sequence | None = None, polar_system=None):
+                 polar: Sequence | None = None, polar_system=None,
+                 radii: Sequence | None = None):
         self.source = source
         self.name = name
         self.notes = notes
@@ -44,6 +79,7 @@ class Configuration:
         self.specs = tuple(specs)
         self.polar = tuple(polar) if polar is not None else None
         self.polar_system = polar_system
+        self.radii = tuple(radii) if radii is not None else None     # r, when polar
         if points is not None:
             self.__dict__["points"] = tuple(tuple(p) for p in points)
             self.__dict__["system"] = system
@@ -64,13 +100,92 @@ class Configuration:
 
     @cached_property
     def system(self):
-        return _cartesian(self.specs, self.source)[0]
+        return self._cartesian()[0]
 
     @cached_property
     def points(self) -> tuple:
-        system, pts = _cartesian(self.specs, self.source)
+        system, pts = self._cartesian()
         self.__dict__["system"] = system
         return tuple(pts)
+
+    def _cartesian(self):
+        if self.specs or self.radii is None:
+            return _cartesian(self.specs, self.source)
+        return _cartesian_of_polar(self.radii, [t for _, t in self.polar])
+
+    # ------------------------------------------------------------ moves and frames
+    def _same(self, **kw) -> "Configuration":
+        return Configuration(source=self.source, name=self.name, model=self.model, **kw)
+
+    def with_positions(self, positions: Mapping[int, object]) -> "Configuration":
+        """The configuration with robot i at ``positions[i]`` (every other robot where it
+        is): a :class:`Polar` position keeps a polar configuration polar (its radius in
+        :attr:`polar_system`), an exact ``(x, y)`` pair is Cartesian (in :attr:`system`).
+        Raises :class:`MoveImpossible` when robots coincide, fat robots overlap or a
+        radius is negative."""
+        if self.radii is not None and all(isinstance(p, Polar) for p in positions.values()):
+            radii, polar = list(self.radii), list(self.polar)
+            for i, p in positions.items():
+                if sign(p.r) < 0:
+                    raise MoveImpossible(f"robot {i}: negative radius")
+                radii[i] = p.r
+                polar[i] = (p.r * p.r, normal_turn(p.turn) if sign(p.r) != 0 else fmpq(0))
+            new = self._same(polar=polar, radii=radii, polar_system=self.polar_system)
+        else:
+            points = list(self.points)
+            for i, p in positions.items():
+                points[i] = _cartesian_position(p, self.system)
+            new = self._same(points=points, system=self.system)
+        _check_move(new)
+        return new
+
+    def moved(self, index: int, point) -> "Configuration":
+        """The configuration with robot ``index`` at ``point`` (see :meth:`with_positions`)."""
+        return self.with_positions({index: point})
+
+    def radius(self, index: int):
+        """The radius r of robot ``index`` about the origin (polar configurations)."""
+        if self.radii is None:
+            raise ValueError("not a polar configuration with known radii")
+        return self.radii[index]
+
+    def cartesian(self) -> "Configuration":
+        """The same points, as a Cartesian configuration (no polar data)."""
+        return self._same(points=self.points, system=self.system)
+
+    def transformed(self, similarity: Similarity) -> "Configuration":
+        """The configuration in another frame, robot indices unchanged: a polar
+        configuration stays polar when ``similarity.keeps_polar``."""
+        sim = similarity
+        if self.radii is not None and sim.keeps_polar:
+            turn = sim.turn if sim.turn is not None else fmpq(0)
+            scale = fmpq(sim.scale)
+            return self.with_positions({i: Polar(r * scale, (-t if sim.reflect else t) + turn)
+                                        for i, (r, (_, t)) in enumerate(zip(self.radii,
+                                                                            self.polar))})
+        coerce = self.system.coerce
+        if sim.rotation is not None:
+            c, s = coerce(sim.rotation[0]), coerce(sim.rotation[1])
+        elif sim.turn is not None:
+            c, s = self.system.cos_turn(sim.turn), self.system.sin_turn(sim.turn)
+        else:
+            c, s = coerce(1), coerce(0)
+        k = coerce(sim.scale)
+        dx, dy = (coerce(v) for v in (sim.shift or (0, 0)))
+        points = []
+        for x, y in self.points:
+            if sim.reflect:
+                y = -y
+            if sim.rotation is not None or sim.turn is not None:
+                x, y = c * x - s * y, s * x + c * y
+            if sim.scale != 1:
+                x, y = k * x, k * y
+            if sim.shift is not None:
+                x, y = x + dx, y + dy
+            points.append((x, y))
+        new = self._same(points=points, system=self.system)
+        _check_move(new)
+        return new
 
 
 def _locate(err: ExpressionError, spec: PointSpec, which: int, source: str) -> InputError:
@@ -131,6 +246,40 @@ def _cartesian(specs: Sequence[PointSpec], source: str = "<memory>"):
     return system, points
 
 
+def _cartesian_of_polar(radii, turns):
+    """Cartesian points of polar positions given by exact values (a configuration made
+    by moves): rational radii only (the field of irrational radii and of the turns'
+    cosines is not built from values)."""
+    rational = []
+    for r in radii:
+        if isinstance(r, FieldElement):
+            if not r.is_rational():
+                raise NotImplementedError("Cartesian coordinates of moved robots at "
+                                          "irrational radii are not built")
+            r = r.rational()
+        rational.append(r)
+    system = number_system((), turns)
+    return system, [(system.coerce(r) * system.cos_turn(t), system.coerce(r) * system.sin_turn(t))
+                    for r, t in zip(rational, turns)]
+
+
+def _cartesian_position(p, system):
+    if isinstance(p, Polar):
+        r = system.coerce(p.r)
+        return r * system.cos_turn(p.turn), r * system.sin_turn(p.turn)
+    return p
+
+
+def _check_move(config: Configuration) -> None:
+    pair = _coincident(config)
+    if pair is not None:
+        raise MoveImpossible(f"robots {pair[0]} and {pair[1]} would coincide")
+    if config.model == "fat":
+        pair = _overlapping(config)
+        if pair is not None:
+            raise MoveImpossible(f"fat robots {pair[0]} and {pair[1]} would overlap")
+
+
 def from_file(config_file: ConfigFile) -> Configuration:
     """Evaluate and validate a parsed configuration file (raises :class:`InputError`)."""
     specs = config_file.points
@@ -147,7 +296,7 @@ def from_file(config_file: ConfigFile) -> Configuration:
                                  spec.column)
             turn = normal_turn(fmpq(spec.turn.numerator, spec.turn.denominator)) if r != 0 else fmpq(0)
             polar.append((r * r, turn))
-        config = Configuration(polar=polar, polar_system=system, **common)
+        config = Configuration(polar=polar, polar_system=system, radii=radii, **common)
     else:
         system, points = _cartesian(specs, config_file.source)
         config = Configuration(points=points, system=system, **common)
@@ -176,8 +325,8 @@ def load(path) -> Configuration:
         return from_file(read_config(path))
 
 
-def check_distinct(config: Configuration) -> None:
-    """Raise :class:`InputError` naming the first two indices of coincident points."""
+def _coincident(config: Configuration) -> tuple[int, int] | None:
+    """The first two indices of coincident points, or None."""
     seen: dict = {}
     keys = config.polar if config.polar is not None else config.points
     for i, (a, b) in enumerate(keys):
@@ -185,11 +334,12 @@ def check_distinct(config: Configuration) -> None:
             b = fmpq(0)                      # every angle names the origin
         j = seen.setdefault((exact_key(a), exact_key(b)), i)
         if j != i:
-            raise InputError(f"points {j} and {i} coincide", config.source, _line(config, i))
+            return j, i
+    return None
 
 
-def check_fat(config: Configuration) -> None:
-    """Unit discs must not overlap: centres at distance >= 2 (touching is allowed)."""
+def _overlapping(config: Configuration) -> tuple[int, int] | None:
+    """Two fat robots (unit discs) that overlap (centres closer than 2), or None."""
     pts = config.points
     order = sorted(range(config.n), key=lambda i: pts[i][0])
     for a, i in enumerate(order):
@@ -200,8 +350,24 @@ def check_fat(config: Configuration) -> None:
             dy = pts[j][1] - pts[i][1]
             if dx * dx + dy * dy < 4:
                 lo, hi = sorted((i, j))
-                raise InputError(f"fat robots {lo} and {hi} overlap (centres closer than 2)",
-                                 config.source, _line(config, hi))
+                return lo, hi
+    return None
+
+
+def check_distinct(config: Configuration) -> None:
+    """Raise :class:`InputError` naming the first two indices of coincident points."""
+    pair = _coincident(config)
+    if pair is not None:
+        raise InputError(f"points {pair[0]} and {pair[1]} coincide", config.source,
+                         _line(config, pair[1]))
+
+
+def check_fat(config: Configuration) -> None:
+    """Unit discs must not overlap: centres at distance >= 2 (touching is allowed)."""
+    pair = _overlapping(config)
+    if pair is not None:
+        raise InputError(f"fat robots {pair[0]} and {pair[1]} overlap (centres closer "
+                         "than 2)", config.source, _line(config, pair[1]))
 
 
 def _line(config: Configuration, i: int) -> int | None:

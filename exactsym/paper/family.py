@@ -77,17 +77,14 @@ from __future__ import annotations
 
 from bisect import bisect_left
 from dataclasses import dataclass, field
-from fractions import Fraction
 from functools import cached_property, lru_cache
 from itertools import combinations
 from math import gcd
 from typing import Iterable, Sequence
 
-from ..fileformat import ConfigFile, PointSpec
-from ..configuration import Configuration, from_file, no_cycle_collection
-from ..errors import InputError
+from ..configuration import Configuration, Polar, no_cycle_collection
+from ..errors import InputError, MoveImpossible
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, number_text, rational_sqrt, sign
-from ..exprtree import BinOp, Const
 from ..levels import Levels, levels_of, polar_sec
 from ..strings import find_all
 from .circle_polygon import CirclePolygon, polygon_from_directions
@@ -1588,14 +1585,16 @@ def _lines_not_in(lines, allowed):
 # ============================================================ robot positions and moves
 class _Placement:
     """Mutable robot positions used to apply the paper's moves exactly, and to build the
-    configuration after them (polar when the input is polar about C)."""
+    configuration after them (polar when the input is polar about C): exact numbers
+    only; the configuration after the moves is :meth:`Configuration.with_positions`."""
 
     def __init__(self, config: Configuration, ring_data: Levels):
         self.config = config
         self.ring_data = ring_data
-        self.polar = ring_data.polar and config.polar is not None and bool(config.specs)
+        self.polar = ring_data.polar and config.polar is not None and config.radii is not None
+        self.changed: set = set()
         if self.polar:
-            self.specs = list(config.specs)
+            self.radii = list(config.radii)
             self.turns = [t for _, t in config.polar]
             self.r2 = [r2 for r2, _ in config.polar]
         else:
@@ -1611,21 +1610,21 @@ class _Placement:
 
     # -- moves
     def set_turn(self, i, turn):
-        turn = normal_turn(turn)
-        s = self.specs[i]
-        self.specs[i] = PointSpec(s.index, s.line, s.column, r=s.r,
-                                  turn=Fraction(int(turn.p), int(turn.q)))
-        self.turns[i] = turn
+        self.turns[i] = normal_turn(turn)
+        self.changed.add(i)
+
+    def set_polar(self, i, r, turn):
+        self.radii[i], self.r2[i], self.turns[i] = r, r * r, normal_turn(turn)
+        self.changed.add(i)
 
     def set_vector(self, i, v):
         self.points[i] = (self.centre[0] + v[0], self.centre[1] + v[1])
+        self.changed.add(i)
 
     def radius_from(self, i, j):
         """Put robot i on the circle of robot j, same direction (exact or False)."""
         if self.polar:
-            s, sj = self.specs[i], self.specs[j]
-            self.specs[i] = PointSpec(s.index, s.line, s.column, r=sj.r, turn=s.turn)
-            self.r2[i] = self.r2[j]
+            self.set_polar(i, self.radii[j], self.turns[i])
             return True
         v = self.direction(i)
         scale = _scale_to(self.r2_of(j), self.r2_of(i))
@@ -1641,12 +1640,11 @@ class _Placement:
         return _dot(v, v)
 
     def configuration(self) -> Configuration:
-        c = self.config
+        """The configuration after the moves (raises :class:`MoveImpossible`)."""
         if self.polar:
-            return from_file(ConfigFile(source=c.source, points=tuple(self.specs),
-                                        name=c.name, model=c.model))
-        return Configuration.from_points(self.points, system=c.system, source=c.source,
-                                         name=c.name, model=c.model)
+            return self.config.with_positions({i: Polar(self.radii[i], self.turns[i])
+                                               for i in sorted(self.changed)})
+        return self.config.with_positions({i: self.points[i] for i in sorted(self.changed)})
 
 
 def _global_gap(place: _Placement, robots: Iterable[int]):
@@ -1925,8 +1923,8 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
                    f"{lines_text(Gt, Gt.polygon.polar if Gt.polygon else True)})",
                    holds=False, round=rnd)
         try:
-            place.configuration()          # raises InputError when the move is impossible
-        except InputError as err:
+            place.configuration()          # raises MoveImpossible when the move is impossible
+        except MoveImpossible as err:
             _entry(trace, alg, 26, [gi.name], alg, f"the move is impossible: {err}",
                    holds=False, round=rnd)
             return MakeAsymResult("undecided", branch, moves, None)
@@ -1951,7 +1949,7 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
 def _safe_config(place: _Placement, trace, rnd):
     try:
         return place.configuration()
-    except InputError as err:
+    except MoveImpossible as err:
         _entry(trace, "MakeAsym", None, [], "MakeAsym",
                f"the moves lead to an invalid configuration: {err}", holds=False, round=rnd)
         return None
@@ -2034,13 +2032,7 @@ def _move_off_centre(place: _Placement, v: int, towards: int, Gp) -> bool:
     if place.polar:
         inner = min((i for i in range(len(place.r2)) if place.r2[i] != 0),
                     key=lambda i: place.r2[i])
-        s, si = place.specs[v], place.specs[inner]
-        tt = place.turns[towards]
-        place.specs[v] = PointSpec(s.index, s.line, s.column,
-                                   r=BinOp("/", si.r, Const(Fraction(4))),
-                                   turn=Fraction(int(tt.p), int(tt.q)))
-        place.turns[v] = tt
-        place.r2[v] = place.r2[inner] / 16
+        place.set_polar(v, place.radii[inner] / 4, place.turns[towards])
         return True
     q = place.direction(towards)
     r2q = _dot(q, q)
@@ -2450,26 +2442,18 @@ def _check_vl_move(trace, before: Configuration, after: Configuration, result: M
     We stop the last moving robot half way (polar configurations: half the turn, or half
     way out radially) and run one round of the procedure there: its first actor must be
     the same robot (or nobody moves and ElectLeader elects it)."""
-    if not result.moves or before.polar is None or after.polar is None or not before.specs:
+    if not result.moves or before.radii is None or after.radii is None:
         return
     last = result.moves[-1]
     v = last["robot"]
     (r2a, ta), (r2b, tb) = before.polar[v], after.polar[v]
-    specs = list(after.specs)
-    s = specs[v]
     if r2a == r2b:
-        mid_turn = ta + (normal_turn(tb - ta + _HALF) - _HALF) / 2
-        mt = normal_turn(mid_turn)
-        specs[v] = PointSpec(s.index, s.line, s.column, r=s.r,
-                             turn=Fraction(int(mt.p), int(mt.q)))
+        half_way = Polar(after.radius(v), ta + (normal_turn(tb - ta + _HALF) - _HALF) / 2)
     else:
-        sb = before.specs[v]
-        specs[v] = PointSpec(s.index, s.line, s.column,
-                             r=BinOp("/", BinOp("+", sb.r, s.r), Const(Fraction(2))),
-                             turn=s.turn)
+        half_way = Polar((before.radius(v) + after.radius(v)) / 2, tb)
     try:
-        mid = from_file(ConfigFile(source=after.source, points=tuple(specs)))
-    except InputError:
+        mid = after.moved(v, half_way)
+    except MoveImpossible:
         return
     sub = paper_procedure(mid, orientation=orientation, reading=reading, max_rounds=1,
                           claims=False, check_vl=False, limits=limits)
