@@ -224,7 +224,7 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
     n = config.n
     in_os = truth_in_O_S(group, n)
     G = paper.G_rings or F.concentric_polygons(config, ring_data)
-    polar = F._is_polar(G)
+    polar = F.is_polar(G)
     found: dict[str, list] = {}
     failures: dict[str, int] = {}
     examples = limits.claim_examples
@@ -269,7 +269,7 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
         sub, robots = group_about_centre(config, ring_data, a.robots + b.robots,
                                          a.levels + b.levels)
         if sym and sub.orderable:
-            common = F._intersect(a.lines, b.lines)
+            common = F.intersect_lines(a.lines, b.lines)
             add_counted(_d("lem-sym-notord",
                            f"<{a.name}, {b.name}> is a symmetric pair "
                            f"({F.lines_text(common, polar)} in common: {a.name} has "

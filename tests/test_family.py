@@ -22,6 +22,7 @@ from exactsym.configuration import load
 from exactsym.exact import fmpq
 from exactsym.levels import levels_of
 from exactsym.paper import family as F
+from exactsym.paper.keys import hashable_key, line_value
 from exactsym.paper import polygon as P
 from exactsym.paper.circle_polygon import polygon_from_directions
 
@@ -73,7 +74,7 @@ def symmetric_turn_sets():
 @given(st.one_of(turn_sets, symmetric_turn_sets()))
 def test_mirror_lines_are_the_definitions_mirrors_polar(turns):
     poly = polar_polygon(turns)
-    assert keys(F.mirror_lines(poly)) == {F._hkey(k) for k in P.definition_mirrors(poly)}
+    assert keys(F.mirror_lines(poly)) == {hashable_key(k) for k in P.definition_mirrors(poly)}
     assert F.centrally_symmetric(poly) == P.is_skew_symmetric(poly)
 
 
@@ -92,15 +93,15 @@ def test_mirror_lines_are_the_definitions_mirrors_cartesian(seeds, group):
             ray = (v[0] / (abs(v[0]) + abs(v[1])), v[1] / (abs(v[0]) + abs(v[1])))
             dirs.setdefault(ray, v)
     poly = polygon_from_directions(range(len(dirs)), list(dirs.values()), False)
-    assert keys(F.mirror_lines(poly)) == {F._hkey(k) for k in P.definition_mirrors(poly)}
+    assert keys(F.mirror_lines(poly)) == {hashable_key(k) for k in P.definition_mirrors(poly)}
     assert F.centrally_symmetric(poly) == P.is_skew_symmetric(poly)
 
 
 def test_lines_exact_values():
     _, _, G = family_of(regular(1, 3) + regular(2, 5, Fraction(1, 20)) + regular(3, 6))
     tri, pent, hexa = G
-    assert keys(tri.lines) == {F._hkey(Q(0)), F._hkey(Q(1, 6)), F._hkey(Q(1, 3))}
-    assert keys(pent.lines) == {F._hkey(Q(1, 20) + Q(k, 10)) for k in range(5)}
+    assert keys(tri.lines) == {hashable_key(Q(0)), hashable_key(Q(1, 6)), hashable_key(Q(1, 3))}
+    assert keys(pent.lines) == {hashable_key(Q(1, 20) + Q(k, 10)) for k in range(5)}
     assert hexa.lines is F.ALL_LINES                       # lem-skew-los
     assert not F.is_symmetric_pair(tri, pent)
     assert F.is_symmetric_pair(tri, hexa) and F.is_symmetric_pair(pent, hexa)
@@ -114,7 +115,7 @@ def test_single_vertex_and_centre_lines():
                         + regular(2, 4))
     centre, single, square = G
     assert centre.at_centre and centre.lines is F.ALL_LINES
-    assert keys(single.lines) == {F._hkey(Q(1, 7))}         # the paper's note
+    assert keys(single.lines) == {hashable_key(Q(1, 7))}         # the paper's note
     assert F.common_lines(G) == single.lines
     assert F.is_symmetric_family(G)
 
@@ -129,7 +130,7 @@ def test_radial_projection_merges_rays_and_keeps_robots():
     assert sorted(merged) == [(0, 9), (3, 14), (6, 19)]
     assert proj.ring.radius_squared == g2.radius_squared
     assert F.is_type4(proj.ring)[0]
-    assert len(proj.ring.lines) == 3 and proj.ring.lines == F._intersect(g1.lines, g2.lines)
+    assert len(proj.ring.lines) == 3 and proj.ring.lines == F.intersect_lines(g1.lines, g2.lines)
 
 
 def test_projection_to_an_even_union_is_not_type4():
@@ -475,7 +476,7 @@ def test_union_lines_are_the_chained_projections_lines(points):
     whole = with_dir[0]
     for g in with_dir[1:]:
         whole = F.radial_projection(whole, g).ring
-    lines, n = F._union_lines(with_dir)
+    lines, n = F.union_lines(with_dir)
     assert n == whole.n
     assert (lines is F.ALL_LINES) == (whole.lines is F.ALL_LINES)
     if lines is not F.ALL_LINES:
@@ -496,7 +497,7 @@ def test_union_lines_cartesian(points):
     whole = with_dir[0]
     for g in with_dir[1:]:
         whole = F.radial_projection(whole, g).ring
-    lines, n = F._union_lines(with_dir)
+    lines, n = F.union_lines(with_dir)
     assert n == whole.n
     assert (lines is F.ALL_LINES) == (whole.lines is F.ALL_LINES)
     if lines is not F.ALL_LINES:
@@ -522,7 +523,7 @@ def test_select_pairs_and_triples():
     assert len(middle) > 300 and middle[-1] > 980 and max(b - a for a, b in
                                                        zip(middle, middle[1:])) <= 4
     for t, count in ((100, 300), (5000, 600), (10 ** 6, 600)):
-        got = list(F._sampled_pairs(t, count))
+        got = list(F.sampled_pairs(t, count))
         assert len(got) == len(set(got)) == min(count, 276 + t - 23)
         assert all(0 <= i < j < t for i, j in got) and (0, t - 1) in got
     tight = F.Limits(claim_vertices=10, claim_vertices_per_robot=0)

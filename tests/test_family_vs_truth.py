@@ -31,6 +31,7 @@ from exactsym.audit import audit, transformed
 from exactsym.configuration import Configuration, load
 from exactsym.levels import levels_of
 from exactsym.paper import family as F
+from exactsym.paper.keys import hashable_key, line_value
 from exactsym.symmetry import symmetry_group
 
 from strategies import (PolarSimilarity, polar_configuration, rational_group_points,
@@ -105,7 +106,7 @@ def check_classes(config, ring_data, res, report):
             line not in frozenset(F.mirror_lines(g.polygon)) for g in skew for line in common)
         merged = F.is_symmetric_family(Gp) and not F.is_symmetric_family(G)   # Gprime-equiG
         collinear = len({k for g in G if g.polygon is not None for k in
-                         (F._line_key(g.polygon.polar, d) for d in g.polygon.directions)}) <= 1
+                         (line_value(g.polygon.polar, d) for d in g.polygon.directions)}) <= 1
         assert only_skew or merged or collinear or config.n == 1, \
             (group, F.lines_text(common, True))
     for d in report["discrepancies"]:

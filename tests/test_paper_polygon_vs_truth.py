@@ -20,9 +20,11 @@ from pathlib import Path
 import pytest
 from hypothesis import HealthCheck, assume, event, given, settings
 
+from exactsym.exact import normal_turn
 from exactsym.configuration import load
 from exactsym.levels import levels_of
 from exactsym.paper import polygon as P
+from exactsym.paper.keys import HALF, line_value, ray_value
 from exactsym.paper.circle_polygon import level_polygon
 from strategies import polar_configuration
 from test_paper_polygon import polar_polygons
@@ -57,8 +59,8 @@ KNOWN = {
 def _edge_line_key(polygon, e):
     w = polygon.edge_direction(e)
     if w is None:
-        w = P._perpendicular(polygon, polygon.directions[e])
-    return P._line_key(polygon, w)
+        w = P.perpendicular(polygon, polygon.directions[e])
+    return line_value(polygon.polar, w)
 
 
 def truth_lines(polygon, mirror_keys):
@@ -66,7 +68,7 @@ def truth_lines(polygon, mirror_keys):
     out = []
     for key in mirror_keys:
         vertices = tuple(i for i, d in enumerate(polygon.directions)
-                         if P._line_key(polygon, d) == key)
+                         if line_value(polygon.polar, d) == key)
         edges = tuple(e for e in range(polygon.n) if _edge_line_key(polygon, e) == key)
         out.append(P.StraightLine(key, vertices, edges, ()))
     return out
@@ -84,10 +86,10 @@ def mirror_line_keys(polygon, group) -> set:
         if iso.kind != "reflection":
             continue
         if iso.turn is not None:
-            keys.add(P._line_key(polygon, iso.turn))
+            keys.add(line_value(polygon.polar, iso.turn))
         else:                          # matrix ((c, s), (s, -c)): doubled angle (c, s)
             (c, s), _ = iso.matrix
-            keys.add(P._line_key_dir((c, s)))
+            keys.add(ray_value(c, s))
     return keys
 
 
@@ -229,7 +231,7 @@ def test_skew_statements_hold(polygon):
     n = polygon.n
     where = {t: i for i, t in enumerate(turns)}
     for i, t in enumerate(turns):
-        j = where.get(P.normal_turn(t + P._HALF))
+        j = where.get(normal_turn(t + HALF))
         if j is not None:
             criterion = (P.cw_string(polygon, i) == P.cw_string(polygon, j)
                          or P.acw_string(polygon, i) == P.acw_string(polygon, j))
@@ -239,12 +241,12 @@ def test_skew_statements_hold(polygon):
 
     def chord(a):             # (direction class of the chord, its length key)
         b = (a + 1) % n
-        return P.normal_turn(turns[a] + turns[b]), polygon.separation(a, b)
+        return normal_turn(turns[a] + turns[b]), polygon.separation(a, b)
     partners = {}
     for a in range(n):
         for b in range(n):
             if a != b and chord(a) == chord(b):
                 partners.setdefault(a, []).append(b)
                 assert {turns[b], turns[(b + 1) % n]} == {
-                    P.normal_turn(turns[a] + P._HALF), P.normal_turn(turns[(a + 1) % n] + P._HALF)}
+                    normal_turn(turns[a] + HALF), normal_turn(turns[(a + 1) % n] + HALF)}
     assert (len(partners) == n) == central

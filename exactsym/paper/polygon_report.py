@@ -39,6 +39,7 @@ from ..exact import as_fmpq, exact_key, number_text, sign
 from ..configuration import no_cycle_collection
 from . import polygon as paper
 from .circle_polygon import level_polygon
+from .keys import ccw_gap_key
 
 #: Largest polygon whose CW/ACW strings are written out (n^2 numbers).
 STRING_LIMIT = 60
@@ -128,7 +129,7 @@ def shape_key(polygon):
     depend only on its distances (the strings, Section 3) and on the storage order, so
     polygons with equal keys get equal verdicts, labels taken at the same positions."""
     n, dirs = polygon.n, polygon.directions
-    return (polygon.polar, n, tuple(_hashable(paper._ccw_angle_key(polygon, dirs[k],
+    return (polygon.polar, n, tuple(_hashable(ccw_gap_key(polygon.polar, dirs[k],
                                                                     dirs[(k + 1) % n]))
                                     for k in range(n)))
 

@@ -1,0 +1,329 @@
+"""The Section-3 statements on G and G', evaluated with the paper's own notions.
+
+:func:`family_claims` checks, within the work budgets (:class:`~.limits.Limits`), each
+statement by the function named after its label (``obs_pair_asym_ord``, ...) and records
+each failure (``holds`` False, with a witness) and one summary per statement that holds.
+Claims about orderability need the truth and are the audit's (:mod:`exactsym.audit`).
+"""
+
+from __future__ import annotations
+
+from itertools import combinations
+from math import gcd
+from typing import Iterable, Sequence
+
+from ..circle_polygon import CirclePolygon
+from .concentric import (ALL_LINES, Ring, common_lines, has_lines, intersect_lines, is_odd,
+    is_symmetric_family, is_symmetric_pair, is_symmetric_polygon, line_value_text,
+    lines_text, new_ring, polygon_name)
+from .find_asymmetry import find_asymmetry_pair
+from ..keys import angle_order_key
+from .limits import DEFAULT_LIMITS, END_LEVELS, Limits, WorkBudgetExceeded
+from .projection import coincidence_note, is_type4, radial_projection
+from .trace import few_names, trace_entry
+
+
+def _claim(trace, statement: str, holds: bool, polygons, detail: str, witness=None):
+    return trace_entry(trace, "Section 3", None, polygons, statement, detail, holds=holds,
+                  witness=witness)
+
+
+def sampled_pairs(t: int, count: int):
+    """Pairs among the first and last :data:`END_LEVELS` levels (lexicographic), then
+    consecutive pairs (i, i + 1) evenly spaced over the rest, ``count`` in all at most."""
+    k = END_LEVELS
+    ends = sorted(set(range(min(k, t))) | set(range(max(0, t - k), t)))
+    made = 0
+    for x, a in enumerate(ends):
+        for b in ends[x + 1:]:
+            if made >= count:
+                return
+            made += 1
+            yield a, b
+    ends_set = set(ends)
+    middle = [i for i in (range(k - 1, t - k) if t > 2 * k else ())
+              if not (i in ends_set and i + 1 in ends_set)] if t <= 4 * count + 4 * k else None
+    if middle is None:       # avoid a list of t indices: the same spacing, computed
+        lo, hi = k - 1, t - k            # i in [lo, hi): (i, i + 1) not both at the ends
+        span = hi - lo
+        left = count - made
+        for x in range(min(left, span)):
+            yield lo + (x * span) // min(left, span), lo + (x * span) // min(left, span) + 1
+        return
+    left = count - made
+    if len(middle) <= left:
+        chosen = middle
+    else:
+        chosen = [middle[(x * len(middle)) // left] for x in range(left)]
+    for i in chosen:
+        yield i, i + 1
+
+
+def select_pairs(G: Sequence[Ring], limits: Limits | None = None) -> tuple[list, int]:
+    """``(pairs, total)``: the pairs (i, j), i < j, of ``G`` on which pair statements are
+    checked (``family_claims``, the audit), and the number of pairs.  All pairs in
+    lexicographic order when there are at most ``limits.claim_pairs``; else the pairs
+    among the first and last :data:`END_LEVELS` levels, then evenly spaced consecutive
+    pairs; a pair is skipped when its vertices would exceed the vertex budget."""
+    limits = limits if limits is not None else DEFAULT_LIMITS
+    t = len(G)
+    total = t * (t - 1) // 2
+    cap = limits.claim_pairs
+    budget = limits.vertex_budget(sum(len(g.robots) for g in G))
+    if cap is None or total <= cap:
+        order = ((i, j) for i in range(t) for j in range(i + 1, t))
+    else:
+        order = sampled_pairs(t, cap)
+    out, used = [], 0
+    for i, j in order:
+        if cap is not None and len(out) >= cap:
+            break
+        cost = G[i].n + G[j].n
+        if budget is not None and used + cost > budget:
+            continue
+        used += cost
+        out.append((i, j))
+    return out, total
+
+
+def select_triples(tp: int, limits: Limits | None = None) -> tuple[Iterable, int]:
+    """``(triples, total)``: every triple of the tp polygons of G' when there are at most
+    ``limits.claim_triples``, else every triple among the first and last m polygons
+    (C(m, 3) at most the limit)."""
+    limits = limits if limits is not None else DEFAULT_LIMITS
+    total = tp * (tp - 1) * (tp - 2) // 6
+    cap = limits.claim_triples
+    if cap is None or total <= cap:
+        return combinations(range(tp), 3), total
+    m = 3
+    while (m + 1) * m * (m - 1) // 6 <= cap:
+        m += 1
+    idx = list(range((m + 1) // 2)) + list(range(tp - m // 2, tp))
+    return combinations(idx, 3), total
+
+
+def union_lines(rings: Sequence[Ring]):
+    """The lines of the projection of every polygon of ``rings`` onto the outermost
+    circle (radial projection one after the other, nearest first): that polygon has one
+    vertex on every ray holding a vertex of some polygon, and its lines depend on these
+    rays only (:func:`mirror_lines` and :func:`centrally_symmetric` compare directions),
+    so it is built once from the distinct rays (O(n log n), not O(t n)); equal to the
+    chained projections (tested)."""
+    polar = rings[0].polygon.polar
+    seen: dict = {}
+    for g in rings:
+        for d, key in zip(g.polygon.directions, g.ray_keys):
+            if key not in seen:
+                seen[key] = d
+    dirs = list(seen.values())
+    if polar:
+        dirs.sort()
+    else:
+        dirs.sort(key=angle_order_key)
+    poly = CirclePolygon(tuple((k,) for k in range(len(dirs))), tuple(dirs), polar)
+    ring = new_ring("G*", poly, rings[-1].radius_squared, (), (), ())
+    return ring.lines, poly.n
+
+
+def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = None,
+                  polar: bool = True, limits: Limits | None = None,
+                  stats: dict | None = None) -> list[dict]:
+    """Evaluate, with the paper's own notions (exact), the family statements of Section 3
+    on G and G' and record each failure (``holds`` False, with a witness) and one
+    summary per statement that holds.  Claims about orderability need the truth and are
+    the audit's (``lem-sym-notord``, ``lem-asym-pair-ord``, ...).
+
+    Bounded by ``limits`` (:class:`Limits`; :data:`UNBOUNDED` checks everything): pair
+    statements on :func:`select_pairs`, triple statements on :func:`select_triples`,
+    ``theorem-los-g1n`` on the projection of every polygon within the vertex budget,
+    ``theorem-sym-pair-symG`` within the search budget.  A statement failing on more than
+    ``limits.claim_examples`` instances records that many and then one entry with the
+    count.  ``stats`` (a dict) receives what was checked: ``pairs_checked``, ``pairs``,
+    ``triples_checked``, ``triples``, ``partial`` (the statements not checked on every
+    instance), ``failures`` (per statement)."""
+    limits = limits if limits is not None else DEFAULT_LIMITS
+    trace = trace if trace is not None else []
+    stats = stats if stats is not None else {}
+    out: list[dict] = []
+    failures: dict = {}
+    examples = limits.claim_examples
+    partial: set = set()
+
+    def fail(statement, polygons, detail, witness=None):
+        failures[statement] = failures.get(statement, 0) + 1
+        if examples is None or failures[statement] <= examples:
+            out.append(_claim(trace, statement, False, polygons, detail, witness))
+
+    checked: dict = {}
+    n_robots = sum(len(g.robots) for g in G)
+    pairs, total_pairs = select_pairs(G, limits)
+    if len(pairs) < total_pairs:
+        partial.update(("obs-pair-asym-ord", "obs-merg-asym-pair", "lem-los-gij", "obs-gcd",
+                        "obs-type-4"))
+    for i, j in pairs:
+        a, b = G[i], G[j]
+        names = [a.name, b.name]
+        common = intersect_lines(a.lines, b.lines)
+        # obs-pair-asym-ord: an asymmetric polygon makes an asymmetric pair
+        if not is_symmetric_polygon(a) or not is_symmetric_polygon(b):
+            checked["obs-pair-asym-ord"] = checked.get("obs-pair-asym-ord", 0) + 1
+            if has_lines(common):
+                fail("obs-pair-asym-ord", names, "an asymmetric polygon in a symmetric pair")
+        if a.at_centre or b.at_centre:
+            continue
+        proj = None
+        # obs-merg-asym-pair and lem-los-gij (as stated: no hypothesis on n_i, n_j)
+        proj = radial_projection(a, b)
+        gij = proj.ring
+        if not has_lines(common):
+            checked["obs-merg-asym-pair"] = checked.get("obs-merg-asym-pair", 0) + 1
+            if is_symmetric_polygon(gij):
+                fail("obs-merg-asym-pair", names + [gij.name],
+                     f"<{a.name}, {b.name}> is an asymmetric pair but G_ij = {gij.name} has "
+                     f"{lines_text(gij, polar)}" + coincidence_note(proj),
+                     {"G_ij lines": lines_text(gij, polar)})
+        checked["lem-los-gij"] = checked.get("lem-los-gij", 0) + 1
+        extra = _lines_not_in(gij.lines, common)
+        if extra:
+            # the text around lem-los-gij assumes n_i, n_j odd, neither dividing the other,
+            # gcd > 1, a common line
+            context = (is_odd(a) and is_odd(b) and gcd(a.n, b.n) > 1 and has_lines(common)
+                       and a.n % b.n != 0 and b.n % a.n != 0)
+            fail("lem-los-gij", names + [gij.name],
+                 f"G_ij = {gij.name} has {lines_text(gij, polar)}, but "
+                 f"<{a.name}, {b.name}> have {lines_text(common, polar)} in common"
+                 + coincidence_note(proj)
+                 + ("" if context else " (outside the hypotheses of the surrounding text: "
+                    "n_i, n_j odd, neither dividing the other, gcd > 1, a common line)"),
+                 {"line": extra, "n_i": a.n, "n_j": b.n, "within_hypotheses": context,
+                  "coincident_vertices": len(proj.coincident)})
+        if is_odd(a) and is_odd(b) and has_lines(common):
+            g = gcd(a.n, b.n)
+            count = "all" if common is ALL_LINES else len(common)
+            checked["obs-gcd"] = checked.get("obs-gcd", 0) + 1
+            if count != g:
+                fail("obs-gcd", names, f"n_i = {a.n}, n_j = {b.n} odd with a common line: "
+                     f"gcd = {g} but they have {count} common line(s)",
+                     {"gcd": g, "common_lines": count})
+            if g > 1:
+                ok, why = is_type4(gij)
+                checked["obs-type-4"] = checked.get("obs-type-4", 0) + 1
+                if not ok:
+                    neither = a.n % b.n != 0 and b.n % a.n != 0
+                    fail("obs-type-4", names + [gij.name],
+                         f"n_i = {a.n}, n_j = {b.n} odd, a common line, gcd = {g} > 1, but "
+                         f"G_ij ({gij.n} vertices) is {why}" + coincidence_note(proj)
+                         + ("" if neither else "; note n_i and n_j divide one another "
+                            "(Preprocess's text excludes that case)"),
+                         {"G_ij vertices": gij.n, "type": why, "neither_divides": neither,
+                          "coincident_vertices": len(proj.coincident)})
+    # theorem-los-g1n on the projection of every polygon onto the outermost circle,
+    # and on every merged polygon of G'
+    with_dir = [g for g in G if not g.at_centre]
+    if len(with_dir) >= 2 and limits.union_vertices is not None and \
+            sum(g.n for g in with_dir) > limits.union_vertices:
+        partial.add("theorem-los-g1n")
+    elif len(with_dir) >= 2:
+        whole_lines, whole_n = union_lines(with_dir)
+        whole_name = polygon_name([k for g in with_dir for k in g.levels])
+        common = common_lines(with_dir)
+        checked["theorem-los-g1n"] = checked.get("theorem-los-g1n", 0) + 1
+        extra = _lines_not_in(whole_lines, common)
+        if extra:
+            fail("theorem-los-g1n", few_names(with_dir) + [whole_name],
+                 f"G_(1..n) = {whole_name} (every polygon projected onto the outermost "
+                 f"circle) has {lines_text(whole_lines, polar)}, but the polygons have "
+                 f"{lines_text(common, polar)} in common",
+                 {"line": extra, "within_hypotheses": False})
+    by_level = {g.levels[0]: g for g in G}
+    for g in Gp:
+        if len(g.levels) > 1:
+            parts = [by_level[k] for k in g.levels]
+            common = common_lines(parts)
+            checked["theorem-los-g1n"] = checked.get("theorem-los-g1n", 0) + 1
+            extra = _lines_not_in(g.lines, common)
+            if extra:
+                fail("theorem-los-g1n", few_names(parts) + [g.name],
+                     f"the merged polygon {g.name} of G' has {lines_text(g, polar)}, but its "
+                     f"parts have {lines_text(common, polar)} in common",
+                     {"line": extra, "within_hypotheses": True})
+    # triples of G': lem-type4, lem-3-pair-sym
+    tp = len(Gp)
+    triples, total_triples = select_triples(tp, limits)
+    triples_checked = 0
+    for i, j, k in triples:
+        triples_checked += 1
+        trio = (Gp[i], Gp[j], Gp[k])
+        pairwise = all(is_symmetric_pair(x, y) for x, y in ((trio[0], trio[1]),
+                                                             (trio[1], trio[2]),
+                                                             (trio[0], trio[2])))
+        if not pairwise:
+            continue
+        names = [g.name for g in trio]
+        checked["lem-3-pair-sym"] = checked.get("lem-3-pair-sym", 0) + 1
+        if not is_symmetric_family(trio):
+            fail("lem-3-pair-sym", names, "pairwise symmetric without a common line")
+        counts = [g.n for g in trio]
+        if all(is_odd(g) for g in trio) and len(set(counts)) == 3 and not any(
+                x % y == 0 for x in counts for y in counts if x != y):
+            checked["lem-type4"] = checked.get("lem-type4", 0) + 1
+            if any(gcd(x, y) > 1 for x in counts for y in counts if x != y):
+                fail("lem-type4", names, f"pairwise symmetric with n = {counts}, not "
+                     "pairwise coprime", {"n": counts})
+    if triples_checked < total_triples:
+        partial.update(("lem-3-pair-sym", "lem-type4"))
+    # theorem-sym-pair-symG on G', obs1-Gprime-equiG on G and G', Gprime-equiG
+    steps = limits.step_budget(n_robots)
+    symmetric_p = is_symmetric_family(Gp)
+    symmetric_g = is_symmetric_family(G)
+    try:
+        all_pairs_sym = find_asymmetry_pair(Gp, steps) is None
+    except WorkBudgetExceeded:
+        all_pairs_sym = None
+        partial.add("theorem-sym-pair-symG")
+    if tp >= 2 and all_pairs_sym is not None:   # one polygon: "every pair" is vacuous
+        checked["theorem-sym-pair-symG"] = 1
+        if all_pairs_sym != symmetric_p:
+            fail("theorem-sym-pair-symG", few_names(Gp),
+                 f"every pair of G' symmetric: {all_pairs_sym}; a common line for all: "
+                 f"{symmetric_p}")
+    for label, fam in (("G", G), ("G'", Gp)):
+        if is_symmetric_family(fam):
+            checked["obs1-Gprime-equiG"] = checked.get("obs1-Gprime-equiG", 0) + 1
+            bad = find_asymmetry_pair(fam)    # None at once: the common line is shared
+            if bad is not None:
+                fail("obs1-Gprime-equiG", [fam[bad[0]].name, fam[bad[1]].name],
+                     f"{label} is symmetric but this pair is not")
+    checked["Gprime-equiG"] = 1
+    if symmetric_p != symmetric_g:
+        fail("Gprime-equiG", few_names(Gp), f"G symmetric: {symmetric_g}; G' "
+             f"symmetric: {symmetric_p}")
+    for statement, count in failures.items():
+        if examples is not None and count > examples:
+            out.append(_claim(trace, statement, False, [],
+                              f"fails on {count} of the {checked.get(statement, count)} "
+                              f"instance(s) checked; the first {examples} are listed",
+                              {"failures": count, "checked": checked.get(statement, count),
+                               "listed": examples}))
+    for statement, count in checked.items():
+        if statement not in failures:
+            note = (" (a bounded part of the instances: see paper.bounded)"
+                    if statement in partial else "")
+            _claim(trace, statement, True, [], f"holds on the {count} instance(s) checked"
+                   + note)
+    stats.update(pairs_checked=len(pairs), pairs=total_pairs,
+                 triples_checked=triples_checked, triples=total_triples,
+                 partial=sorted(partial), failures=dict(sorted(failures.items())))
+    return out
+
+
+def _lines_not_in(lines, allowed):
+    """A line of ``lines`` that is not in ``allowed`` (as text), or None."""
+    if allowed is ALL_LINES:
+        return None
+    if lines is ALL_LINES:
+        return "every line through C (skew symmetric)"
+    extra = [k for k in lines if k not in allowed]
+    if not extra:
+        return None
+    return line_value_text(extra[0].value)

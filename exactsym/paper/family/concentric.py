@@ -1,0 +1,263 @@
+"""The G model: the concentric polygons G_1..G_t (Section 3) and their lines of
+symmetry (``def-sym-pair``, ``def-sym-calG``, ``lem-skew-los``).
+
+A line of symmetry passes through C (``lemma-LOS-Passes-CenterSECP``) and is held as an
+exact line key (:mod:`exactsym.paper.keys`).  :func:`lines_of_symmetry` is
+:data:`ALL_LINES` for a skew symmetric polygon (``lem-skew-los``: every line through C)
+and for the robot at C (``def-symmetric-conf``), else the finite set of lines of straight
+symmetry.  Two or more polygons have a common line iff these sets intersect (ALL_LINES is
+neutral); a skew symmetric polygon thus pairs symmetrically with every symmetric polygon
+(the reading of ``lem-3-pair-sym``'s proof; ``docs/interpretations.md``).
+
+:class:`Ring` is one polygon of G or G' (one level of :class:`exactsym.levels.Levels`, or
+several merged by Preprocess); its vertex labels are tuples of configuration indices.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Iterable, Sequence
+
+from ...configuration import Configuration
+from ...exact import number_text, sign
+from ...levels import Levels, levels_of
+from ...strings import find_all
+from ..circle_polygon import CirclePolygon
+from ..keys import LineKey, bisector_line, gap_ids, line_value, ray_keys
+
+
+class _AllLines:
+    """Every line through C (the lines of a skew symmetric polygon, ``lem-skew-los``)."""
+    _instance = None
+
+    def __new__(cls):
+        if cls._instance is None:
+            cls._instance = super().__new__(cls)
+        return cls._instance
+
+    def __repr__(self) -> str:
+        return "ALL_LINES"
+
+
+ALL_LINES = _AllLines()
+
+
+@dataclass(frozen=True)
+class Ring:
+    """A polygon of G or G' (nearest first).
+
+    ``polygon``: the vertices (labels are tuples of configuration indices), or None for
+    the robot at the centre C; ``radius_squared``: of its circle; ``levels``: the
+    1-based numbers of the levels of G it contains (several after a merge);
+    ``robots``: every configuration index in it; ``own``: those on its own circle."""
+    name: str
+    polygon: CirclePolygon | None
+    radius_squared: object
+    levels: tuple
+    robots: tuple
+    own: tuple
+    keys: tuple = field(default=(), compare=False, repr=False)   # hashable ray keys
+
+    @cached_property
+    def n(self) -> int:
+        return 1 if self.polygon is None else self.polygon.n
+
+    @property
+    def at_centre(self) -> bool:
+        return self.polygon is None
+
+    @cached_property
+    def lines(self):
+        return _compute_lines(self)
+
+    @property
+    def ray_keys(self) -> tuple:
+        """The exact hashable keys of the rays of its vertices (computed once, on demand)."""
+        keys = self.keys
+        if not keys and self.polygon is not None and self.polygon.n:
+            keys = ray_keys(self.polygon)
+            object.__setattr__(self, "keys", keys)
+        return keys
+
+
+def polygon_name(levels: Sequence[int]) -> str:
+    levels = sorted(levels)
+    if len(levels) == 1:
+        return f"G{levels[0]}"
+    if len(levels) > 8:     # a readable name of bounded length
+        return (f"G({','.join(map(str, levels[:3]))},...,{levels[-1]}: "
+                f"{len(levels)} levels)")
+    return "G(" + ",".join(map(str, levels)) + ")"
+
+
+def new_ring(name, polygon, radius_squared, levels, robots, own, keys=()) -> Ring:
+    """A :class:`Ring` without the dataclass constructor's per-field overhead (the family
+    layer builds one per level: on random configurations that is one per robot)."""
+    ring = object.__new__(Ring)
+    ring.__dict__.update(name=name, polygon=polygon, radius_squared=radius_squared,
+                         levels=levels, robots=robots, own=own, keys=keys,
+                         n=1 if polygon is None else len(polygon.labels))   # cached n
+    return ring
+
+
+def concentric_polygons(config: Configuration, ring_data: Levels | None = None) -> tuple:
+    """G_1, ..., G_t of ``config`` (Section 3: "Elements of G are sorted according to
+    their distances from the center"), as :class:`Ring`\\ s with tuple labels (the
+    polygons of :func:`.circle_polygon.level_polygon`, labels wrapped in tuples)."""
+    ring_data = ring_data if ring_data is not None else levels_of(config)
+    out = []
+    polar = ring_data.polar
+    if polar:
+        turns = config.polar
+    else:
+        cx, cy = ring_data.sec.centre
+        pts = config.points
+    new_polygon = object.__new__
+    for k, level in enumerate(ring_data.levels):
+        robots = tuple(level.points)
+        if k == 0 and sign(level.radius_squared) == 0:      # only the nearest can be C
+            out.append(new_ring(f"G{k + 1}", None, level.radius_squared, (k + 1,), robots,
+                                 robots))
+            continue
+        if polar:
+            dirs = tuple([turns[i][1] for i in robots])
+        else:
+            dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in robots])
+        poly = new_polygon(CirclePolygon)       # CirclePolygon(labels, dirs, polar), faster
+        poly.__dict__.update(labels=tuple([(i,) for i in robots]), directions=dirs,
+                             polar=polar)
+        out.append(new_ring(f"G{k + 1}", poly, level.radius_squared, (k + 1,), robots,
+                             robots))
+    return tuple(out)
+
+
+def mirror_lines(poly: CirclePolygon, seq: list | None = None) -> list:
+    """The lines of straight symmetry of ``poly`` (``def-straight-symmetric-poly``), as
+    the line keys of :func:`.polygon.definition_mirrors`, in O(n) after the angular
+    order: a reflection maps v_i to v_{s-i} iff the counter-clockwise gap sequence g
+    satisfies g_i = g_{s-1-i} for all i, i.e. iff g occurs in the doubled reversed
+    sequence (exact ids, KMP); its axis bisects v_0 and v_s.  The line through both
+    vertices of a 2-gon is excluded (it contains all the points); a single vertex has
+    the line through C and itself."""
+    n = poly.n
+    if n == 0:
+        return []
+    dirs = poly.directions
+    if n == 1:
+        return [LineKey.of(line_value(poly.polar, dirs[0]))]
+    seq = seq if seq is not None else gap_ids(poly)
+    rev = seq[::-1]
+    found = {}
+    for p in find_all(seq, rev + rev[:-1]):
+        s = (-p) % n
+        if n == 2 and s == 0:
+            continue
+        found.setdefault(LineKey.of(bisector_line(poly.polar, dirs[0], dirs[s])), None)
+    return list(found)
+
+
+def centrally_symmetric(poly: CirclePolygon, seq: list | None = None) -> bool:
+    """``def-skew-symmetric-poly`` (the half-turn about C maps the polygon onto itself, as
+    :func:`.polygon.is_skew_symmetric` reads it), in O(n): n even and the gap sequence
+    has period n/2 (then n/2 consecutive gaps make half a turn)."""
+    n = poly.n
+    if n < 2 or n % 2:
+        return False
+    seq = seq if seq is not None else gap_ids(poly)
+    h = n // 2
+    return all(seq[i] == seq[i + h] for i in range(h))
+
+
+def _compute_lines(ring: Ring):
+    if ring.polygon is None:
+        return ALL_LINES
+    seq = gap_ids(ring.polygon) if ring.polygon.n > 1 else None
+    if centrally_symmetric(ring.polygon, seq):
+        return ALL_LINES
+    return frozenset(mirror_lines(ring.polygon, seq))
+
+
+def lines_of_symmetry(ring: Ring):
+    """:data:`ALL_LINES` or the frozenset of line keys of ``ring`` (see module docstring)."""
+    return ring.lines
+
+
+def intersect_lines(a, b):
+    if a is ALL_LINES:
+        return b
+    if b is ALL_LINES:
+        return a
+    return a & b
+
+
+def common_lines(rings: Iterable[Ring]):
+    """The lines of symmetry common to all ``rings`` (``ALL_LINES`` for none given)."""
+    out = ALL_LINES
+    for ring in rings:
+        out = intersect_lines(out, ring.lines)
+        if out is not ALL_LINES and not out:
+            break
+    return out
+
+
+def has_lines(lines) -> bool:
+    return lines is ALL_LINES or bool(lines)
+
+
+def is_symmetric_polygon(ring: Ring) -> bool:
+    """``def-symmetric-poly`` (straight or skew symmetric; the robot at C and a single
+    vertex are symmetric).  At most two vertices: always (a single vertex has the line
+    through it, two vertices the perpendicular bisector), decided without the lines."""
+    if ring.polygon is None or ring.polygon.n <= 2:
+        return True
+    return has_lines(ring.lines)
+
+
+def is_symmetric_pair(a: Ring, b: Ring) -> bool:
+    """``def-sym-pair``: G_i and G_j have a common line of symmetry."""
+    return has_lines(intersect_lines(a.lines, b.lines))
+
+
+def is_symmetric_family(rings: Sequence[Ring]) -> bool:
+    """``def-sym-calG``: all polygons of G have a common line of symmetry."""
+    return has_lines(common_lines(rings))
+
+
+def line_text(polar: bool, key) -> str:
+    """A readable name of a line key."""
+    if polar:
+        return f"the line at {number_text(key)} turn"
+    s, v = key
+    return f"the line whose doubled angle has direction sign {s}, slope {number_text(v)}" \
+        if s else f"the line whose doubled angle is vertical ({'+' if v > 0 else '-'})"
+
+
+def lines_text(ring_or_lines, polar: bool) -> str:
+    lines = ring_or_lines.lines if isinstance(ring_or_lines, Ring) else ring_or_lines
+    if lines is ALL_LINES:
+        return "every line through C"
+    if not lines:
+        return "no line"
+    keys = sorted((k.value for k in lines), key=_display_order)
+    shown = ", ".join(line_value_text(k) for k in keys[:8])
+    more = f", ... ({len(keys)} in all)" if len(keys) > 8 else ""
+    unit = "turns" if polar else "doubled-angle rays"
+    return f"{len(keys)} line{'s' if len(keys) != 1 else ''} ({unit} {shown}{more})"
+
+
+def _display_order(v):
+    return v if not isinstance(v, tuple) else (v[0], v[1] if v[0] else 0)
+
+
+def line_value_text(k) -> str:
+    return number_text(k) if not isinstance(k, tuple) else \
+        f"({k[0]}, {number_text(k[1]) if not isinstance(k[1], int) else k[1]})"
+
+
+def is_odd(ring: Ring) -> bool:
+    return ring.polygon is not None and ring.n % 2 == 1
+
+
+def is_polar(G) -> bool:
+    return next((g.polygon.polar for g in G if g.polygon is not None), True)

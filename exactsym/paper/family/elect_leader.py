@@ -1,0 +1,161 @@
+"""``ElectLeader`` (Section 4.2) on G', and Elect_Leader_Asym applied to a polygon of
+G' (``lem-asym-ord``, ``1sym_le``, ``lem-asym-pair-ord``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Sequence
+
+from .. import polygon as P
+from ...exact import number_text
+from ..circle_polygon import CirclePolygon
+from .concentric import Ring
+from .limits import MAX_QUADRATIC_N
+from .projection import coincidence_note, radial_projection, robot_in
+from .trace import trace_entry
+
+
+def first_of_ring_in_ordering(poly: CirclePolygon, leader: P.AsymLeader, ring: Ring):
+    """The first vertex of the ordering whose label holds a robot of ``ring``:
+    ``(storage index, robot)`` or ``(None, None)``."""
+    for idx in leader.ordering:
+        robot = robot_in(poly.labels[idx], ring)
+        if robot is not None:
+            return idx, robot
+    return None, None
+
+
+def elect_leader_asym_on(trace, alg, line, ring_poly: Ring, target: Ring, orientation, reading,
+                statement, branch=None, rnd=None):
+    """Elect_Leader_Asym on ``ring_poly`` and the first vertex of ``target`` in its ordering.
+    Records a failure when the lexicographic minimum is tied (the polygon is symmetric:
+    the claim that it is orderable is false)."""
+    poly = ring_poly.polygon
+    if poly.n > MAX_QUADRATIC_N:
+        trace_entry(trace, alg, line, [ring_poly.name], statement,
+               f"Elect_Leader_Asym not run: {poly.n} vertices (O(n^2) strings; limit "
+               f"{MAX_QUADRATIC_N})", branch=branch, round=rnd)
+        return None, "too-large"
+    res = P.elect_leader_asym(poly, orientation, reading)
+    idx, robot = first_of_ring_in_ordering(poly, res, target)
+    printed = None if res.leader is None else robot_in(poly.labels[res.leader], ring_poly)
+    detail = (f"Elect_Leader_Asym({ring_poly.name}): lexicographic minimum at "
+              f"{list(poly.labels[res.v_m])}, ordering by {res.direction}; the printed "
+              f"v_l is robot {printed}; the first vertex of {target.name} in the ordering is "
+              f"robot {robot}")
+    trace_entry(trace, alg, line, [ring_poly.name, target.name], statement, detail,
+           robots=[robot] if robot is not None else None, branch=branch, round=rnd,
+           uses="Elect_Leader_Asym")
+    if res.tie:
+        trace_entry(trace, alg, line, [ring_poly.name],
+               "obs-merg-asym-pair" if len(ring_poly.levels) > 1 else "lem-asym-ord",
+               f"{ring_poly.name} is assumed asymmetric (orderable) but the lexicographic "
+               f"minimum of the (CW, ACW) tuples is attained at more than one vertex",
+               holds=False, labelling_dependent=True, round=rnd)
+    return robot, None
+
+
+@dataclass
+class ElectLeaderResult:
+    """``leader``: the configuration index elected (None when none); ``moves``: robots
+    moved by Make_SymToAsym; ``branch``: see :data:`BRANCHES`."""
+    leader: int | None
+    branch: str
+    moves: list = field(default_factory=list)
+    computed: bool = True
+
+
+def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
+                 reading: str = "literal", degree: str = "paper",
+                 rnd: int = 1) -> ElectLeaderResult:
+    """``ElectLeader`` (Section 4.2) on G' (meant for G' with G_t asymmetric).
+
+    Lines 1-3: Check_Symmetry_Even/Odd(G_1).  Line 4: "G_1 is symmetric with degree of
+    symmetry one and the line passes through a single vertex or two vertices" -- exactly
+    when :func:`.polygon.elect_leader_sym` elects a leader; then Make_SymToAsym(G_1) and
+    Elect_Leader_Asym on the moved G_1.  Line 8: G_1 asymmetric (as Check_Symmetry
+    reports): Elect_Leader_Asym(G_1).  Line 11-12: G_1t (G_1 projected onto G_t's
+    circle) and Elect_Leader_Asym(G_1t); the output must be "a leader vertex from G_1":
+    the first vertex of G_1 in the ordering of G_1t.  The robot at C as G_1 is a single
+    vertex with CW = ACW = (): it is elected (it cannot move on a circle of radius 0)."""
+    alg = "ElectLeader"
+    g1 = Gp[0]
+    gt = Gp[-1]
+    if g1.at_centre:
+        v = g1.robots[0]
+        trace_entry(trace, alg, 3, [g1.name], "obs-asymmetric-polygon",
+               f"{g1.name} is the robot {v} at C: Check_Symmetry_Odd reports degree 1 "
+               "(CW = ACW = ())", round=rnd)
+        trace_entry(trace, alg, 6, [g1.name], alg, f"leader: robot {v} (at C)", robots=[v],
+               branch="centre", round=rnd)
+        return ElectLeaderResult(v, "centre")
+    poly = g1.polygon
+    check = P.check_symmetry(poly, orientation)
+    trace_entry(trace, alg, 2 if poly.n % 2 == 0 else 3, [g1.name], "obs-asymmetric-polygon",
+           f"{check.algorithm}({g1.name}): " + "; ".join(check.reports), round=rnd)
+    sym = P.elect_leader_sym(poly, orientation, degree) if check.symmetric else None
+    if sym is not None and sym.leader is not None:
+        branch = "sym-degree-one"
+        axis = list(sym.check.axis_vertices)
+        if poly.n % 2 == 0 and len(axis) >= 2 and \
+                P.cw_string(poly, axis[0], orientation) == P.cw_string(poly, axis[1], orientation):
+            trace_entry(trace, alg, 5, [g1.name], "1sym_le",
+                   f"Elect_Leader_Sym: VI = VJ for the two vertices on the line (robots "
+                   f"{[robot_in(poly.labels[a], g1) for a in axis[:2]]}), so 'if VI > VJ "
+                   f"return v_i else v_j' picks by the labelling, not by the geometry",
+                   holds=False, labelling_dependent=True, round=rnd)
+        moved = P.make_sym_to_asym(poly, orientation, degree)
+        mover = robot_in(poly.labels[moved.leader], g1) if moved.leader is not None else None
+        moves = [{"robot": mover, "algorithm": "Make_SymToAsym", "line": 2, "kind": "epsilon",
+                  "amount": number_text(moved.parameter) if moved.parameter is not None
+                  else None}] if mover is not None else []
+        trace_entry(trace, alg, 5, [g1.name], "1sym_le",
+               f"degree of symmetry one: Make_SymToAsym moves robot {mover} to its right side "
+               f"({'asymmetric now' if moved.asymmetric else 'still symmetric'})",
+               robots=[mover] if mover is not None else None, branch=branch, round=rnd,
+               uses="Make_SymToAsym")
+        if not moved.asymmetric and poly.n > 1:
+            trace_entry(trace, alg, 5, [g1.name], "Make_SymToAsym",
+                   "Make_SymToAsym is meant to make G_1 asymmetric; it is not", holds=False,
+                   round=rnd)
+        if moved.polygon.n > MAX_QUADRATIC_N:
+            return ElectLeaderResult(None, branch, moves, False)
+        res = P.elect_leader_asym(moved.polygon, orientation, reading)
+        leader = None if res.leader is None else robot_in(moved.polygon.labels[res.leader], g1)
+        if res.tie:
+            trace_entry(trace, alg, 6, [g1.name], "lem-asym-ord",
+                   "the lexicographic minimum of the (CW, ACW) tuples is tied", holds=False,
+                   labelling_dependent=True, round=rnd)
+        trace_entry(trace, alg, 6, [g1.name], "lem-asym-ord",
+               f"Elect_Leader_Asym(moved {g1.name}): leader robot {leader}",
+               robots=[leader] if leader is not None else None, branch=branch, round=rnd,
+               uses="Elect_Leader_Asym")
+        return ElectLeaderResult(leader, branch, moves)
+    if not check.symmetric:
+        branch = "asymmetric"
+        if poly.n > MAX_QUADRATIC_N:
+            trace_entry(trace, alg, 9, [g1.name], alg, "too large for Elect_Leader_Asym",
+                   branch=branch, round=rnd)
+            return ElectLeaderResult(None, branch, [], False)
+        res = P.elect_leader_asym(poly, orientation, reading)
+        leader = None if res.leader is None else robot_in(poly.labels[res.leader], g1)
+        trace_entry(trace, alg, 9, [g1.name], "lem-asym-ord",
+               f"{g1.name} asymmetric: Elect_Leader_Asym elects robot {leader}",
+               robots=[leader] if leader is not None else None, branch=branch, round=rnd,
+               uses="Elect_Leader_Asym")
+        if res.tie:
+            trace_entry(trace, alg, 9, [g1.name], "lem-asym-ord",
+                   "the lexicographic minimum of the (CW, ACW) tuples is tied", holds=False,
+                   labelling_dependent=True, round=rnd)
+        return ElectLeaderResult(leader, branch)
+    branch = "project-1t"
+    if gt.at_centre:
+        return ElectLeaderResult(None, branch)
+    proj = radial_projection(g1, gt)
+    trace_entry(trace, alg, 11, [g1.name, gt.name, proj.ring.name], "obs-merg-asym-pair",
+           f"compute G_1t = {proj.ring.name} ({proj.ring.n} vertices)"
+           + coincidence_note(proj), branch=branch, round=rnd)
+    robot, problem = elect_leader_asym_on(trace, alg, 12, proj.ring, g1, orientation, reading,
+                                 "lem-asym-pair-ord", branch, rnd)
+    return ElectLeaderResult(robot, branch, [], problem is None)

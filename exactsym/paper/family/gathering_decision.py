@@ -1,0 +1,255 @@
+"""The decision of ``GatheringPattern`` (lines 1-5) and the whole leader election of
+Section 4.2 on a configuration: Preprocess, MakeAsym while G_t is symmetric (robots are
+oblivious: each round recomputes from scratch), ElectLeader; ``cor-Pasym-Pord``,
+``lem-vl-move``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ...configuration import Configuration, Polar, no_cycle_collection
+from ...errors import InputError, MoveImpossible
+from ...exact import normal_turn
+from ...levels import Levels, levels_of, polar_sec
+from .claims import family_claims
+from .concentric import (common_lines, concentric_polygons, is_polar, is_symmetric_family,
+    is_symmetric_polygon, lines_text)
+from .elect_leader import elect_leader
+from ..keys import HALF
+from .limits import DEFAULT_LIMITS, Limits
+from .make_asym import MakeAsymResult, make_asym
+from .preprocess import preprocess, preprocess_literal
+from .trace import compact_trace, describe, family_text, few_names, trace_entry
+
+
+@dataclass
+class PaperResult:
+    """What the paper's algorithms conclude on a configuration.
+
+    ``orderable``: False when GatheringPattern reports "gathering is not possible" (G' in
+    O_S) or MakeAsym reports "G' is not orderable"; ``gathering_possible``: the former
+    decision alone; ``leader``: the robot ElectLeader elects after MakeAsym's moves
+    (None when none is elected or it cannot be computed); ``moves``: robots moved, in
+    order (MakeAsym, Make_SymToAsym); ``first_actor``: the first robot the procedure
+    moves, else the leader; ``complete``: False when exactsym could not carry out a step
+    exactly (then the leader is None); ``G``/``Gprime``: names and sizes."""
+    orderable: bool
+    gathering_possible: bool
+    leader: int | None
+    moves: list
+    first_actor: int | None
+    complete: bool
+    trace: list
+    G: list
+    Gprime: list
+    make_asym: str | None
+    elect_leader: str | None
+    bounded: dict = field(default_factory=dict)
+    G_rings: tuple = field(default=(), repr=False, compare=False)   # G, as Rings (family.Ring)
+
+
+def paper_procedure(config: Configuration, ring_data: Levels | None = None,
+                    orientation: int = 1, reading: str = "literal", degree: str = "paper",
+                    max_rounds: int = 3, claims: bool = True,
+                    check_vl: bool = True, limits: Limits | None = None) -> PaperResult:
+    """See :func:`_paper_procedure` (run with the cyclic garbage collector paused: the
+    family layer builds many small acyclic objects, one polygon per level)."""
+    with no_cycle_collection():
+        return _paper_procedure(config, ring_data, orientation, reading, degree, max_rounds,
+                                claims, check_vl, limits)
+
+
+def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
+                     orientation: int = 1, reading: str = "literal", degree: str = "paper",
+                     max_rounds: int = 3, claims: bool = True,
+                     check_vl: bool = True, limits: Limits | None = None) -> PaperResult:
+    """Run the paper on ``config``: GatheringPattern's decision (lines 1-5) and the leader
+    election of Section 4.2 (Preprocess, MakeAsym when G_t is symmetric, ElectLeader).
+
+    The leader election is run even when GatheringPattern stops at line 5 (the paper
+    presents it on its own, and MakeAsym has branches -- a single-vertex polygon, "not
+    orderable" -- that only a symmetric G' reaches).  After MakeAsym moves robots, every
+    robot recomputes from scratch on the new configuration (they are oblivious): the
+    next round runs Preprocess again, MakeAsym again if G_t is still symmetric (at most
+    ``max_rounds`` rounds; each extra round is a finding), then ElectLeader.
+    ``orientation``: the observer's handedness (+1: that of the file's axes).
+    ``limits``: the work budgets (:class:`Limits`, default :data:`DEFAULT_LIMITS`;
+    :data:`UNBOUNDED` for the exhaustive procedure); ``PaperResult.bounded`` says what
+    was bounded."""
+    limits = limits if limits is not None else DEFAULT_LIMITS
+    ring_data = ring_data if ring_data is not None else levels_of(config)
+    trace: list = []
+    bounded: dict = {}
+    G = concentric_polygons(config, ring_data)
+    polar = is_polar(G)
+    trace_entry(trace, "GatheringPattern", 2, few_names(G), "def-sym-calG",
+           f"G = ({family_text(G)}) about the SEC centre", round=1)
+    pre_stats: dict = {}
+    Gp = preprocess(G, trace, limits, pre_stats)
+    literal = preprocess_literal(G, limits=limits)
+    if literal.budget_exceeded:
+        trace_entry(trace, "Preprocess", 12, few_names(G), "Preprocess",
+               f"as printed: {literal.reason}", kind="budget", round=1)
+    elif not literal.terminated:
+        trace_entry(trace, "Preprocess", 12, few_names(G), "Preprocess",
+               f"as printed: {literal.reason}", branch="literal-nontermination",
+               holds=False, kind="literal-reading", round=1)
+    trace_entry(trace, "GatheringPattern", 3, few_names(Gp), "Gprime-equiG",
+           f"G' = ({family_text(Gp)})", round=1)
+    bounded["preprocess_complete"] = pre_stats.get("complete", True)
+    bounded["preprocess_pairs_built"] = pre_stats.get("pairs_built", 0)
+    if claims:
+        claim_stats: dict = {}
+        family_claims(G, Gp, trace, polar, limits, claim_stats)
+        bounded.update(family_claims_pairs_checked=claim_stats["pairs_checked"],
+                       of=claim_stats["pairs"],
+                       family_claims_triples_checked=claim_stats["triples_checked"],
+                       family_claims_triples=claim_stats["triples"],
+                       family_claims_partial=claim_stats["partial"],
+                       family_claims_failures=claim_stats["failures"])
+    symmetric = is_symmetric_family(Gp)
+    gathering = not symmetric
+    trace_entry(trace, "GatheringPattern", 4, few_names(Gp), "def-sym-calG",
+           f"common lines of all polygons of G': {lines_text(common_lines(Gp), polar)}",
+           round=1)
+    if symmetric:
+        trace_entry(trace, "GatheringPattern", 5, few_names(Gp), "cor-Pasym-Pord",
+               "G' is in O_S: gathering is not possible", branch="not-possible", round=1)
+    else:
+        trace_entry(trace, "GatheringPattern", 6, few_names(Gp), "cor-Pasym-Pord",
+               "G' is in O_A: call MakeAsym(G_t), then ElectLeader(G')", branch="possible",
+               round=1)
+    moves: list = []
+    complete = True
+    ma_outcome = None
+    current, cur_rings, cur_Gp = config, ring_data, Gp
+    orderable = gathering
+    if config.n == 1:
+        # a single robot: nothing to make asymmetric (MakeAsym's branches need a G_t
+        # with a circle); ElectLeader elects it (it is at C)
+        el = elect_leader(Gp, trace, orientation, reading, degree, 1)
+        return _finish(limits, bounded, config,
+                       orderable, gathering, el.leader, [], True, trace, G, Gp,
+                       None, el.branch, polar)
+    rnd = 1
+    while True:
+        gt = cur_Gp[-1]
+        if not is_symmetric_polygon(gt):
+            break
+        if rnd > max_rounds:
+            trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
+                   f"G_t is still symmetric after {max_rounds} rounds", holds=False,
+                   round=rnd)
+            complete = False
+            break
+        if rnd > 1:
+            trace_entry(trace, "MakeAsym", 6, [gt.name], "MakeAsym",
+                   f"after MakeAsym's moves G_t = {gt.name} is still symmetric "
+                   f"({lines_text(gt, polar)})", holds=False, round=rnd)
+        result = make_asym(current, cur_rings, cur_Gp, trace, orientation, reading, rnd,
+                           limits)
+        ma_outcome = result.outcome if ma_outcome is None else ma_outcome
+        moves.extend(result.moves)
+        if result.outcome == "not-orderable":
+            if rnd == 1:
+                orderable = False
+            el = None
+            return _finish(limits, bounded, config,
+                           orderable, gathering, None, moves, complete, trace, G, Gp,
+                           ma_outcome, el, polar)
+        if result.outcome == "undecided" or result.config is None:
+            complete = False
+            return _finish(limits, bounded, config,
+                           orderable, gathering, None, moves, complete, trace, G, Gp,
+                           ma_outcome, None, polar)
+        new = result.config
+        if ring_data.polar and new.polar is not None and polar_sec(new.polar) is None:
+            # the moves changed the SEC (its centre left C): the paper says this cannot
+            # happen; analysing the new configuration would need the Cartesian path in a
+            # cyclotomic field of the moved turns' denominators -- we stop here
+            trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
+                   "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
+                   "not); the configuration after the moves is not analysed", holds=False,
+                   round=rnd)
+            return _finish(limits, bounded, config,
+                           orderable, gathering, None, moves, False, trace, G, Gp,
+                           ma_outcome, None, polar)
+        try:
+            new_rings = levels_of(new)
+        except (ArithmeticError, NotImplementedError, InputError) as err:
+            trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
+                   f"exactsym cannot analyse the configuration after the moves ({err})",
+                   round=rnd)
+            return _finish(limits, bounded, config,
+                           orderable, gathering, None, moves, False, trace, G, Gp,
+                           ma_outcome, None, polar)
+        if not _same_sec(ring_data, new_rings):
+            trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
+                   "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
+                   "not)", holds=False, round=rnd)
+        if check_vl:
+            _check_vl_move(trace, current, new, result, orientation, reading, rnd, limits)
+        rnd += 1
+        current, cur_rings = new, new_rings
+        G2 = concentric_polygons(current, cur_rings)
+        stats2: dict = {}
+        cur_Gp = preprocess(G2, [], limits, stats2)
+        if not stats2.get("complete", True):
+            bounded["preprocess_complete"] = False
+        trace_entry(trace, "GatheringPattern", 3, few_names(cur_Gp), "Preprocess",
+               f"after the moves, G' = ({family_text(cur_Gp)})", round=rnd)
+    el = elect_leader(cur_Gp, trace, orientation, reading, degree, rnd)
+    moves.extend(el.moves)
+    leader = el.leader
+    complete = complete and el.computed
+    return _finish(limits, bounded, config,
+                   orderable, gathering, leader, moves, complete, trace, G, Gp,
+                   ma_outcome, el.branch, polar)
+
+
+def _finish(limits: Limits, bounded: dict, config, orderable, gathering, leader, moves,
+            complete, trace, G, Gp, ma, el, polar) -> PaperResult:
+    if not bounded.get("preprocess_complete", True):
+        complete, leader = False, None        # G' is not the one the paper computes
+    first = moves[0]["robot"] if moves else leader
+    trace, omitted = compact_trace(trace, limits.trace_entries)
+    bounded["trace_entries_omitted"] = omitted
+    if limits.described is not None and max(len(G), len(Gp)) > limits.described:
+        bounded["polygons_described"] = limits.described
+    return PaperResult(orderable, gathering, leader, moves, first, complete, trace,
+                       describe(G, polar, limits.described),
+                       describe(Gp, polar, limits.described), ma, el, bounded, tuple(G))
+
+
+def _same_sec(a: Levels, b: Levels) -> bool:
+    return a.sec.centre[0] == b.sec.centre[0] and a.sec.centre[1] == b.sec.centre[1] and \
+        a.sec.radius_squared == b.sec.radius_squared
+
+
+def _check_vl_move(trace, before: Configuration, after: Configuration, result: MakeAsymResult,
+                   orientation, reading, rnd, limits: Limits | None = None) -> None:
+    """``lem-vl-move``: "When v_l is moving no other robot will be selected as leader".
+    We stop the last moving robot half way (polar configurations: half the turn, or half
+    way out radially) and run one round of the procedure there: its first actor must be
+    the same robot (or nobody moves and ElectLeader elects it)."""
+    if not result.moves or before.radii is None or after.radii is None:
+        return
+    last = result.moves[-1]
+    v = last["robot"]
+    (r2a, ta), (r2b, tb) = before.polar[v], after.polar[v]
+    if r2a == r2b:
+        half_way = Polar(after.radius(v), ta + (normal_turn(tb - ta + HALF) - HALF) / 2)
+    else:
+        half_way = Polar((before.radius(v) + after.radius(v)) / 2, tb)
+    try:
+        mid = after.moved(v, half_way)
+    except MoveImpossible:
+        return
+    sub = paper_procedure(mid, orientation=orientation, reading=reading, max_rounds=1,
+                          claims=False, check_vl=False, limits=limits)
+    actor = sub.first_actor
+    holds = actor == v or actor is None and sub.leader == v
+    trace_entry(trace, "MakeAsym", last["line"], [], "lem-vl-move",
+           f"with robot {v} half way, the procedure's first robot to act is {actor}",
+           robots=[actor] if actor is not None else None, holds=holds, round=rnd)

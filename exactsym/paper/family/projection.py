@@ -1,0 +1,144 @@
+"""Radial projection G_ij and the type 4 test (Section 3, ``obs-type-4``).
+
+"the vertices of G_i are projected radially on the circumference of the enclosing circle
+of G_j; construct a polygon G_ij with the full set of vertices on the circle":
+:func:`radial_projection` takes directions only and puts the union on the target's circle.
+Two vertices on one ray are merged into one vertex whose label lists both robots (set
+semantics), and the projection records the coincidences (a finding: ``obs-gcd``,
+``obs-type-4`` count n_i + n_j vertices).  The robot at C is never projected.  A vertex
+"of G_t" in a projection is mapped back to the robot of its label lying on G_t's circle
+(:func:`robot_in`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+from .. import polygon as P
+from ...exact import FieldElement, fmpq, rational_sqrt
+from ..circle_polygon import CirclePolygon, polygon_from_directions
+from .concentric import Ring, polygon_name
+from ..keys import line_value
+
+
+@dataclass(frozen=True)
+class Projection:
+    """G_ij: ``ring`` on the target's circle, ``coincident``: pairs of labels (source
+    vertex, target vertex) that lay on one ray and were merged into one vertex."""
+    ring: Ring
+    coincident: tuple
+
+
+def scale_to(r2_to, r2_from):
+    """sqrt(r2_to / r2_from) when rational, else None."""
+    ratio = r2_to / r2_from
+    if isinstance(ratio, FieldElement):
+        if not ratio.is_rational():
+            return None
+        ratio = ratio.rational()
+    return rational_sqrt(fmpq(ratio))
+
+
+def radial_projection(source: Ring, target: Ring, name: str | None = None) -> Projection:
+    """G_{source,target}: the vertices of ``source`` projected radially onto the circle of
+    ``target``, together with target's own vertices (coincident rays merged)."""
+    if source.polygon is None or target.polygon is None:
+        raise ValueError("the robot at the centre C has no direction: it cannot be projected")
+    polar = target.polygon.polar
+    merged: dict = {}
+    order = []
+    coincident = []
+    tgt = target.polygon
+    tkeys = target.ray_keys
+    skeys = source.ray_keys
+    for lab, d, key in zip(tgt.labels, tgt.directions, tkeys):
+        merged[key] = [lab, d]
+        order.append(key)
+    scale = None
+    if not polar and source.radius_squared != target.radius_squared:
+        scale = scale_to(target.radius_squared, source.radius_squared)
+    for lab, d, key in zip(source.polygon.labels, source.polygon.directions, skeys):
+        if key in merged:
+            if source is not target:
+                coincident.append((lab, merged[key][0]))
+                inner_first = not target.radius_squared < source.radius_squared
+                both = lab + merged[key][0] if inner_first else merged[key][0] + lab
+                merged[key][0] = tuple(dict.fromkeys(both))      # innermost robot first
+            continue
+        if scale is not None:
+            d = (d[0] * scale, d[1] * scale)
+        merged[key] = [lab, d]
+        order.append(key)
+    if polar:
+        order.sort(key=lambda k: merged[k][1])
+        poly = CirclePolygon(tuple(merged[k][0] for k in order),
+                             tuple(merged[k][1] for k in order), True)
+    else:
+        labels = [merged[k][0] for k in order]
+        dirs = [merged[k][1] for k in order]
+        poly = polygon_from_directions(labels, dirs, polar)
+        where = {lab: k for k, lab in zip(order, labels)}
+        order = [where[lab] for lab in poly.labels]
+    levels = tuple(sorted(set(source.levels) | set(target.levels)))
+    robots = tuple(dict.fromkeys(source.robots + target.robots))
+    ring = Ring(name or polygon_name(levels), poly, target.radius_squared, levels, robots, target.own,
+                tuple(order))
+    return Projection(ring, tuple(coincident))
+
+
+def robot_in(label: tuple, ring: Ring) -> int | None:
+    """The robot of ``label`` that belongs to ``ring``: one on its own circle first, else
+    the first (innermost) of its robots; None when the label holds none of them."""
+    own = set(ring.own)
+    for r in label:
+        if r in own:
+            return r
+    members = set(ring.robots)
+    for r in label:
+        if r in members:
+            return r
+    return None
+
+
+def is_type4(ring: Ring) -> tuple[bool, str]:
+    """Whether the polygon is a type 4 polygon (:func:`.polygon.polygon_type`), with the
+    verdict's text.  When the Cartesian edge points cannot be built exactly (vectors of
+    unequal lengths whose ratio is not a rational square) the definition is applied to
+    the vertex strings only (for an odd polygon every line of straight symmetry passes
+    through exactly one vertex, whose even-length string is then a palindrome)."""
+    if ring.polygon is None:
+        return False, "the robot at C"
+    poly = ring.polygon
+    try:
+        verdict = P.polygon_type(poly)
+    except NotImplementedError:
+        n = poly.n
+        lines = len(set(line_value(poly.polar, poly.directions[i])
+                        for i in P.vertex_palindromes(poly)))
+        composite = n >= 4 and any(n % p == 0 for p in range(2, int(n ** 0.5) + 1))
+        ok = n % 2 == 1 and composite and lines > 1 and lines < n and not P.is_regular(poly)
+        return ok, ("type-4" if ok else "not type-4") + f" (vertex strings: {lines} lines)"
+    if verdict is None:
+        return False, "no line of straight symmetry"
+    return str(verdict) == "type-4", f"{verdict} ({verdict.reason})"
+
+
+@lru_cache(maxsize=4096)
+def could_be_type4(m: int) -> bool:
+    """A type 4 polygon has an odd, composite number of vertices (:func:`.polygon.polygon_type`:
+    "odd, n not prime"; and ``is_type4``'s vertex-string test requires the same), so at
+    least 9."""
+    return m >= 9 and m % 2 == 1 and not P.is_prime(m)
+
+
+def radius_less(a: Ring, b: Ring) -> bool:
+    return a.radius_squared < b.radius_squared
+
+
+def coincidence_note(proj: Projection) -> str:
+    if not proj.coincident:
+        return ""
+    pairs = ", ".join(f"{a}~{b}" for a, b in proj.coincident[:4])
+    return (f"; {len(proj.coincident)} vertex pair(s) on a common ray merged into one vertex "
+            f"({pairs}{', ...' if len(proj.coincident) > 4 else ''})")

@@ -1,0 +1,137 @@
+"""The paper layer's exact keys of rays, lines through C and gaps between directions.
+
+One home for the keys both :mod:`exactsym.paper.polygon` and :mod:`exactsym.paper.family`
+compare (the ground truth, :mod:`exactsym.symmetry`, keeps its own: the two sides share
+no logic).  A direction is a rational turn (polar path) or an exact vector from C
+(Cartesian path).  A *line* through C is a direction modulo half a turn: its key is the
+turn of the line in [0, 1/2), or the ray of its doubled angle (``lemma-LOS-Passes-CenterSECP``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
+from .circle_polygon import CirclePolygon
+
+
+HALF = fmpq(1, 2)
+
+
+def cross(u, v):
+    return u[0] * v[1] - u[1] * v[0]
+
+
+def dot(u, v):
+    return u[0] * v[0] + u[1] * v[1]
+
+
+def ccw_gap_key(polar: bool, a, b):
+    """An exact key, strictly increasing in the counter-clockwise angle from direction a
+    to direction b, taken in (0, 1] turns (a full turn when a == b): turns when ``polar``,
+    else exact vectors."""
+    if polar:
+        d = normal_turn(b - a)
+        return d if d != 0 else fmpq(1)
+    c, d = sign(cross(a, b)), dot(a, b)
+    if c > 0:
+        return (0, -sign(d) * d * d / (dot(a, a) * dot(b, b)))
+    if c < 0:
+        return (2, sign(d) * d * d / (dot(a, a) * dot(b, b)))
+    return (1, 0) if sign(d) < 0 else (3, 0)
+
+
+def ray_key(polar: bool, d):
+    """Exact hashable key of the ray from C with direction d (cheap to hash: numbers go
+    through :func:`exactsym.exact.exact_key`)."""
+    if polar:
+        return hashable_key(normal_turn(d))
+    x, y = d
+    if sign(x) != 0:
+        return (sign(x), hashable_key(y / x))
+    return (0, sign(y))
+
+
+def ray_keys(poly: CirclePolygon) -> tuple:
+    return tuple(ray_key(poly.polar, d) for d in poly.directions)
+
+
+def hashable_key(key):
+    """A cheap hashable form of an exact key (a number or a tuple of numbers)."""
+    if isinstance(key, tuple):
+        return tuple(hashable_key(k) for k in key)
+    if isinstance(key, (fmpq, FieldElement)):
+        return exact_key(key)
+    return key
+
+
+@dataclass(frozen=True)
+class LineKey:
+    """A line through C: ``value`` is the exact key of :mod:`.polygon` (the turn of the
+    line in [0, 1/2), or the ray of its doubled angle); equality and hashing use ``h``,
+    a canonical hashable form of it."""
+    h: object
+    value: object = field(compare=False)
+
+    @classmethod
+    def of(cls, value) -> "LineKey":
+        return cls(hashable_key(value), value)
+
+
+def line_value(polar: bool, d):
+    """The key of the line through C with direction d (as :mod:`.polygon` keys lines)."""
+    if polar:
+        t = normal_turn(d)
+        return t - HALF if t >= HALF else t
+    x, y = d
+    return ray_value(x * x - y * y, 2 * x * y)
+
+
+def ray_value(x, y):
+    """:mod:`.polygon`'s key of the ray of direction (x, y): (sign x, y/x) or (0, sign y)."""
+    if sign(x) != 0:
+        return (sign(x), y / x)
+    return (0, sign(y))
+
+
+def bisector_line(polar: bool, a, b):
+    """Key of the line through C bisecting directions a and b (the mirror a <-> b)."""
+    if polar:
+        return line_value(True, (a + b) / 2)
+    prod = (a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0])   # doubled angle
+    return ray_value(*prod)
+
+
+def gap_ids(poly: CirclePolygon) -> list:
+    """Small integers, equal iff the counter-clockwise gaps between consecutive vertices
+    are equal (exact)."""
+    n, dirs = poly.n, poly.directions
+    ids: dict = {}
+    if not poly.polar and n > 1:
+        lengths = [dot(d, d) for d in dirs]
+        if all(x == lengths[0] for x in lengths):
+            # one circle: |a|^2 |b|^2 is the same for every gap, so the undivided key
+            # orders (and identifies) the gaps of this polygon just as well
+            def key(a, b):
+                c, d = sign(cross(a, b)), dot(a, b)
+                if c > 0:
+                    return (0, hashable_key(-sign(d) * d * d))
+                if c < 0:
+                    return (2, hashable_key(sign(d) * d * d))
+                return (1, 0) if sign(d) < 0 else (3, 0)
+            return [ids.setdefault(key(dirs[i], dirs[(i + 1) % n]), len(ids))
+                    for i in range(n)]
+    return [ids.setdefault(hashable_key(ccw_gap_key(poly.polar, dirs[i], dirs[(i + 1) % n])),
+                           len(ids)) for i in range(n)]
+
+
+def angle_order_key(d):
+    """An exact key increasing with the angle of the vector d in [0, 2 pi) from the +x
+    ray (the order of :func:`.circle_polygon.polygon_from_directions`)."""
+    x, y = d
+    sy = sign(y)
+    if sy > 0:
+        return (1, -x / y)
+    if sy < 0:
+        return (3, -x / y)
+    return (0, 0) if sign(x) > 0 else (2, 0)

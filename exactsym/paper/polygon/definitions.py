@@ -1,0 +1,132 @@
+"""The definitions of Section 3 evaluated exactly on one polygon
+(``def-straight-symmetric-poly``, ``def-skew-symmetric-poly``, ``def-symmetric-poly``), and
+Theorem 1 (``theorem1``: the string conditions for asymmetry).
+"""
+
+from __future__ import annotations
+
+from ...exact import normal_turn
+from ..circle_polygon import CirclePolygon
+from ..keys import HALF, line_value, ray_value
+from .strings import string_classes
+
+
+def direction_set(polygon: CirclePolygon):
+    if polygon.polar:
+        return set(polygon.directions)
+    return {ray_value(*d) for d in polygon.directions}
+
+
+def maps_onto_itself(polygon: CirclePolygon, image) -> bool:
+    dirs = direction_set(polygon)
+    if polygon.polar:
+        return all(image(t) in dirs for t in polygon.directions)
+    return all(ray_value(*image(d)) in dirs for d in polygon.directions)
+
+
+def definition_mirrors(polygon: CirclePolygon) -> list:
+    """The lines of straight symmetry of ``def-straight-symmetric-poly`` (as line keys),
+    computed from the definition with exact reflections.  Lines of symmetry of a
+    polygon pass through its centre C (``lemma-LOS-Passes-CenterSECP``; the line through
+    both points of a 2-gon is excluded by the definition: it contains all the points);
+    a single vertex has exactly the line through C (the paper's note).  O(n^2).
+
+    Candidates: the reflection mapping vertex 0 to vertex j, for each j.  Polar:
+    t -> t_0 + t_j - t.  Cartesian, as complex numbers: w -> z_0 z_j conj(w) (up to a
+    positive factor, which directions ignore), whose axis is the line whose doubled
+    angle is the direction of z_0 z_j."""
+    n = polygon.n
+    if n == 0:
+        return []
+    if n == 1:
+        return [line_value(polygon.polar, polygon.directions[0])]
+    found = {}
+    d0 = polygon.directions[0]
+    for dj in polygon.directions:
+        if polygon.polar:
+            image = (lambda c: lambda t: normal_turn(c - t))(d0 + dj)
+            key = line_value(polygon.polar, (d0 + dj) / 2)
+        else:
+            a = d0[0] * dj[0] - d0[1] * dj[1]
+            b = d0[0] * dj[1] + d0[1] * dj[0]
+            image = (lambda a, b: lambda w: (a * w[0] + b * w[1], b * w[0] - a * w[1]))(a, b)
+            key = ray_value(*(a, b))
+        if maps_onto_itself(polygon, image):
+            found[key] = True
+    if n == 2:      # the line through both points contains all of them: not a line of symmetry
+        found.pop(line_value(polygon.polar, polygon.directions[0]), None)
+    return list(found)
+
+
+def is_straight_symmetric(polygon: CirclePolygon) -> bool:
+    """``def-straight-symmetric-poly``: the vertex set has a line of straight symmetry."""
+    return bool(definition_mirrors(polygon))
+
+
+def is_skew_symmetric(polygon: CirclePolygon) -> bool:
+    """``def-skew-symmetric-poly``, read as in ``docs/interpretations.md``: the skewed
+    mirror image across L (reflect across L, then across L' perpendicular to L at the
+    midpoint of the span of the points on L) is, for a line through the centre C with the
+    midpoint taken at C, the point reflection about C; the polygon is skew symmetric iff
+    that half-turn maps its vertex set onto itself (equivalently ``obs-parallel-edge-equal``:
+    every edge has a parallel edge of equal length).  A single vertex is not skew symmetric."""
+    if polygon.n < 2:
+        return False
+    if polygon.polar:
+        return maps_onto_itself(polygon, lambda t: normal_turn(t + HALF))
+    return maps_onto_itself(polygon, lambda d: (-d[0], -d[1]))
+
+
+def is_symmetric(polygon: CirclePolygon) -> bool:
+    """``def-symmetric-poly``: straight or skew symmetric (a single point is symmetric)."""
+    return polygon.n == 1 or is_straight_symmetric(polygon) or is_skew_symmetric(polygon)
+
+
+def theorem1_violations(polygon: CirclePolygon, orientation: int = 1) -> dict:
+    """Which conditions of Theorem 1 (``obs-asymmetric-polygon``) fail, with witnesses:
+    ``{"1": [i with CW_i = ACW_i], "2": [(i, j) with CW_i = CW_j, i < j],
+    "3": [(i, j) with CW_i = ACW_j, i != j]}`` (storage indices; the lists are quadratic in
+    size for very symmetric polygons: use :func:`theorem1_asymmetric` for the verdict)."""
+    cw, acw = string_classes(polygon, orientation)
+    n = polygon.n
+    c1 = [i for i in range(n) if cw[i] == acw[i]]
+    by_cw: dict = {}
+    by_acw: dict = {}
+    for i in range(n):
+        by_cw.setdefault(cw[i], []).append(i)
+        by_acw.setdefault(acw[i], []).append(i)
+    c2 = sorted((a, b) for group in by_cw.values() for x, a in enumerate(group)
+                for b in group[x + 1:])
+    c3 = sorted((i, j) for i in range(n) for j in by_acw.get(cw[i], ()) if j != i)
+    return {"1": c1, "2": c2, "3": c3}
+
+
+def theorem1_asymmetric(polygon: CirclePolygon, orientation: int = 1) -> bool:
+    """Theorem 1 (``obs-asymmetric-polygon``): G is asymmetric iff (1) CW_i != ACW_i for all
+    i, (2) CW_i != CW_j and (3) CW_i != ACW_j for all i != j.  Returns what the theorem's
+    right-hand side says (True: "asymmetric")."""
+    cw, acw = string_classes(polygon, orientation)
+    n = polygon.n
+    if any(cw[i] == acw[i] for i in range(n)) or len(set(cw)) < n:
+        return False
+    where: dict = {}
+    for j in range(n):
+        where.setdefault(acw[j], []).append(j)
+    return not any(len(where.get(cw[i], ())) > 1 or where.get(cw[i], [i])[0] != i
+                   for i in range(n))
+
+
+def theorem1_1_asymmetric(polygon: CirclePolygon, orientation: int = 1) -> bool:
+    """Theorem 1.1: (1) CW_i != ACW_i, (2) ACW_i != ACW_j, (3) ACW_i != CW_j (i != j).
+    Equal to Theorem 1 because reversal is a bijection (the paper's note); computed
+    separately from the classes so tests can confirm it."""
+    cw, acw = string_classes(polygon, orientation)
+    n = polygon.n
+    if any(cw[i] == acw[i] for i in range(n)):
+        return False
+    if len(set(acw)) < n:
+        return False
+    cws: dict = {}
+    for i in range(n):
+        cws.setdefault(cw[i], []).append(i)
+    return not any(j != i for i in range(n) for j in cws.get(acw[i], ()))

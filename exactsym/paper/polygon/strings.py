@@ -1,0 +1,248 @@
+"""The paper's strings of one polygon (Section 3, before ``lemma-straight-sym``):
+CW/ACW strings of vertices and edge points, and their classes (:func:`string_classes`:
+the 2n vertex strings grouped by canonical angle sequence in near-linear time, rolling
+hashes proposing, exact comparison deciding; equal to the literal strings, tested).
+See :mod:`exactsym.paper.polygon` for the readings.
+"""
+
+from __future__ import annotations
+
+from typing import Sequence
+
+from ...exact import fmpq, normal_turn, sign
+from ...strings import cyclic_period, first_occurrence
+from ..circle_polygon import CirclePolygon
+from ..keys import HALF, ccw_gap_key, cross
+
+
+def below_half(polygon: CirclePolygon, a, b, ccw: bool) -> int:
+    """-1, 0, 1: the angle from a to b (counter-clockwise if ``ccw``, else clockwise)
+    compared with half a turn; a != b."""
+    if polygon.polar:
+        d = normal_turn(b - a) if ccw else normal_turn(a - b)
+        return -1 if d < HALF else (0 if d == HALF else 1)
+    c = sign(cross(a, b))
+    c = c if ccw else -c
+    return -1 if c > 0 else (1 if c < 0 else 0)
+
+
+def reflect_direction(polygon: CirclePolygon, w, axis):
+    """Direction of w reflected across the line through C and direction ``axis``."""
+    if polygon.polar:
+        return normal_turn(2 * axis - w)
+    ux, uy = axis
+    a, b = ux * ux - uy * uy, 2 * ux * uy        # u^2 as a complex number; u^2 conj(w)
+    return (a * w[0] + b * w[1], b * w[0] - a * w[1])
+
+
+def perpendicular(polygon: CirclePolygon, direction):
+    if polygon.polar:
+        return normal_turn(direction + fmpq(1, 4))
+    return (-direction[1], direction[0])
+
+
+def check_orientation(orientation: int) -> None:
+    if orientation not in (1, -1):
+        raise ValueError("orientation must be +1 or -1")
+
+
+def cw_string(polygon: CirclePolygon, m: int, orientation: int = 1) -> tuple:
+    """CW_m for the vertex m: distances (keys) from m to v_1..v_{k-1}, v_1 next clockwise."""
+    check_orientation(orientation)
+    k = polygon.n
+    return tuple(polygon.separation(m, (m - orientation * s) % k) for s in range(1, k))
+
+
+def acw_string(polygon: CirclePolygon, m: int, orientation: int = 1) -> tuple:
+    """ACW_m for the vertex m: CW_m reversed."""
+    return cw_string(polygon, m, orientation)[::-1]
+
+
+def cw_string_edge(polygon: CirclePolygon, e: int, orientation: int = 1) -> tuple:
+    """CW_m for m the midpoint of edge e = (e, e+1) (storage order, counter-clockwise):
+    distances to v_1..v_k, v_1 the endpoint next clockwise to m."""
+    check_orientation(orientation)
+    k = polygon.n
+    first = e if orientation == 1 else e + 1
+    return tuple(polygon.separation_from_edge(e, (first - orientation * s) % k) for s in range(k))
+
+
+def acw_string_edge(polygon: CirclePolygon, e: int, orientation: int = 1) -> tuple:
+    return cw_string_edge(polygon, e, orientation)[::-1]
+
+
+def vertex_strings(polygon: CirclePolygon, orientation: int = 1) -> list[tuple[tuple, tuple]]:
+    """``[(CW_v, ACW_v) for every vertex v]`` (storage order): O(n^2) keys."""
+    out = []
+    for i in range(polygon.n):
+        cw = cw_string(polygon, i, orientation)
+        out.append((cw, cw[::-1]))
+    return out
+
+
+def edge_strings(polygon: CirclePolygon, orientation: int = 1) -> list[tuple[tuple, tuple]]:
+    out = []
+    for e in range(polygon.n):
+        cw = cw_string_edge(polygon, e, orientation)
+        out.append((cw, cw[::-1]))
+    return out
+
+
+def string_classes_reference(polygon: CirclePolygon, orientation: int = 1):
+    """``(cw, acw)`` class ids from the literal strings: CW_i == CW_j iff cw[i] == cw[j],
+    CW_i == ACW_j iff cw[i] == acw[j].  O(n^2) keys."""
+    ids: dict = {}
+    cw, acw = [], []
+    for a, b in vertex_strings(polygon, orientation):
+        cw.append(ids.setdefault(a, len(ids)))
+        acw.append(ids.setdefault(b, len(ids)))
+    return cw, acw
+
+
+HASH_MOD = (1 << 61) - 1
+
+
+HASH_BASE = 1_000_003
+
+
+class Hasher:
+    """Polynomial hashes of windows of an int list (they only *propose* equalities)."""
+
+    def __init__(self, seq: Sequence[int]):
+        self.seq = list(seq)
+        pre = [0]
+        for x in self.seq:
+            pre.append((pre[-1] * HASH_BASE + x) % HASH_MOD)
+        self.pre = pre
+
+    def window(self, start: int, length: int, powers) -> int:
+        return (self.pre[start + length] - self.pre[start] * powers[length]) % HASH_MOD
+
+
+def gap_classes(polygon: CirclePolygon):
+    ids: dict = {}
+    n = polygon.n
+    h = [ids.setdefault(ccw_gap_key(polygon.polar, polygon.directions[b],
+                                       polygon.directions[(b + 1) % n]), len(ids) + 1)
+         for b in range(n)]
+    return ids, h
+
+
+def string_classes(polygon: CirclePolygon, orientation: int = 1):
+    """``(cw, acw)`` class ids of the 2n vertex strings (as :func:`string_classes_reference`),
+    in O(n log n) plus O(n) per string equal to an earlier one of another rotation.
+
+    Method: a string CW_i is the sequence d_s = min(theta_s, 1 - theta_s) of the clockwise
+    angles theta_s from v_i; it determines the *canonical* reading (theta_s = d_s up to
+    the first maximum of d, 1 - d_s after), which differs from the true angles in at
+    most one place (the first vertex past half a turn, when it is nearer than the one
+    before).  Two strings are equal iff their canonical gap sequences are equal; these
+    are rotations of the polygon's gap sequence with at most two entries changed, hashed
+    in O(1) each, and every equality the hashes propose is decided by exact comparison.
+    """
+    check_orientation(orientation)
+    n = polygon.n
+    if n <= 3:
+        return string_classes_reference(polygon, orientation)
+    dirs = polygon.directions
+    ids, h = gap_classes(polygon)
+    r_seq = h[::-1]                         # R[k] = h(n-1-k): clockwise reading
+    bases = {True: h + h, False: r_seq + r_seq}    # ccw -> H, cw -> R
+    hashers = {key: Hasher(seq) for key, seq in bases.items()}
+    powers = [1]
+    for _ in range(n + 1):
+        powers.append(powers[-1] * HASH_BASE % HASH_MOD)
+
+    def canonical(i: int, ccw: bool):
+        """(base, start, patches) of the canonical gap sequence of the string of v_i
+        read counter-clockwise (ACW_i) or clockwise (CW_i)."""
+        step = 1 if ccw else -1
+        start = i if ccw else (n - i) % n
+
+        def w(s):
+            return (i + step * s) % n
+        lo, hi = 0, n - 1           # p = number of s in 1..n-1 with angle < 1/2
+        while lo < hi:
+            mid = (lo + hi + 1) // 2
+            if below_half(polygon, dirs[i], dirs[w(mid)], ccw) < 0:
+                lo = mid
+            else:
+                hi = mid - 1
+        p = lo
+        f = p + 1
+        if f > n - 1 or below_half(polygon, dirs[i], dirs[w(f)], ccw) <= 0:
+            return ccw, start, ()
+        if p > 0 and not polygon.separation(i, w(f)) > polygon.separation(i, w(p)):
+            return ccw, start, ()
+        flipped = reflect_direction(polygon, dirs[w(f)], dirs[i])
+        before = dirs[w(f - 1)]
+        after = dirs[w(f + 1)]              # w(n) = i
+        if ccw:
+            g1 = ccw_gap_key(polygon.polar, before, flipped)
+            g2 = ccw_gap_key(polygon.polar, flipped, after)
+        else:
+            g1 = ccw_gap_key(polygon.polar, flipped, before)
+            g2 = ccw_gap_key(polygon.polar, after, flipped)
+        return ccw, start, ((f - 1, ids.setdefault(g1, len(ids) + 1)),
+                            (f, ids.setdefault(g2, len(ids) + 1)))
+
+    def hash_of(form) -> int:
+        base, start, patches = form
+        value = hashers[base].window(start, n, powers)
+        seq = bases[base]
+        for q, new in patches:
+            value = (value + (new - seq[start + q]) * powers[n - 1 - q]) % HASH_MOD
+        return value
+
+    def materialise(form) -> list:
+        base, start, patches = form
+        seq = bases[base][start:start + n]
+        for q, new in patches:
+            seq[q] = new
+        return seq
+
+    period = cyclic_period(h)
+    mirror = first_occurrence(r_seq, h + h[:-1])     # R rotated 0 == H rotated `mirror`
+
+    def true_equal(a, b) -> bool:
+        """The true (unpatched) angle sequences of the forms a, b are equal (exact: from
+        the period of the gap sequence and one occurrence of its reversal)."""
+        sa, sb = a[1], b[1]
+        if a[0] != b[0]:
+            if mirror is None:
+                return False
+            if not a[0]:
+                sa = (mirror + sa) % n
+            else:
+                sb = (mirror + sb) % n
+        return (sa - sb) % period == 0
+    forms = [canonical(i, False) for i in range(n)] + [canonical(i, True) for i in range(n)]
+    groups: dict = {}
+    classes = []
+    next_id = 0
+    for form in forms:
+        key = hash_of(form)
+        members = groups.setdefault(key, [])
+        cls = None
+        mine = None
+        for rep in members:
+            rep_form = rep[0]
+            if true_equal(rep_form, form):
+                cls = rep[1]            # equal angle sequences: equal strings
+                break
+            if mine is None:
+                mine = materialise(form)
+            if rep[2] is None:
+                rep[2] = materialise(rep_form)
+            if rep[2] == mine:
+                cls = rep[1]
+                break
+        if cls is None:
+            cls = next_id
+            next_id += 1
+            members.append([form, cls, mine])
+        classes.append(cls)
+    cw, acw = classes[:n], classes[n:]
+    if orientation == -1:
+        cw, acw = acw, cw
+    return cw, acw
