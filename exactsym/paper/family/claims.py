@@ -25,7 +25,7 @@ from .trace import few_names, trace_entry
 
 def _claim(trace, statement: str, holds: bool, polygons, detail: str, witness=None):
     return trace_entry(trace, "Section 3", None, polygons, statement, detail, holds=holds,
-                  witness=witness)
+                       witness=witness)
 
 
 def sampled_pairs(t: int, count: int):
@@ -125,6 +125,211 @@ def union_lines(rings: Sequence[Ring]):
     return ring.lines, poly.n
 
 
+class _Record:
+    """What the statement checks found: the failures listed (at most ``examples`` per
+    statement, then a count), the instances checked per statement (in first-checked
+    order: the order of the summaries), the statements checked on a part only."""
+
+    def __init__(self, trace: list, examples: int | None):
+        self.trace, self.examples = trace, examples
+        self.out: list[dict] = []
+        self.failures: dict = {}
+        self.checked: dict = {}
+        self.partial: set = set()
+
+    def check(self, statement: str) -> None:
+        self.checked[statement] = self.checked.get(statement, 0) + 1
+
+    def fail(self, statement, polygons, detail, witness=None) -> None:
+        self.failures[statement] = self.failures.get(statement, 0) + 1
+        if self.examples is None or self.failures[statement] <= self.examples:
+            self.out.append(_claim(self.trace, statement, False, polygons, detail, witness))
+
+    def summaries(self) -> None:
+        """One entry per statement failing more than ``examples`` times (the count), and
+        one per statement that holds on every instance checked."""
+        examples = self.examples
+        for statement, count in self.failures.items():
+            if examples is not None and count > examples:
+                checked = self.checked.get(statement, count)
+                self.out.append(_claim(self.trace, statement, False, [],
+                                       f"fails on {count} of the {checked} instance(s) "
+                                       f"checked; the first {examples} are listed",
+                                       {"failures": count, "checked": checked,
+                                        "listed": examples}))
+        for statement, count in self.checked.items():
+            if statement not in self.failures:
+                note = (" (a bounded part of the instances: see paper.bounded)"
+                        if statement in self.partial else "")
+                _claim(self.trace, statement, True, [],
+                       f"holds on the {count} instance(s) checked" + note)
+
+
+# ---------------------------------------------------------------- one function per statement
+def obs_pair_asym_ord(rec: _Record, a: Ring, b: Ring, common) -> None:
+    """``obs-pair-asym-ord``: an asymmetric polygon makes an asymmetric pair."""
+    if not is_symmetric_polygon(a) or not is_symmetric_polygon(b):
+        rec.check("obs-pair-asym-ord")
+        if has_lines(common):
+            rec.fail("obs-pair-asym-ord", [a.name, b.name],
+                     "an asymmetric polygon in a symmetric pair")
+
+
+def obs_merg_asym_pair(rec: _Record, a: Ring, b: Ring, common, proj, polar: bool) -> None:
+    """``obs-merg-asym-pair`` (as stated: no hypothesis on n_i, n_j): an asymmetric pair
+    makes an asymmetric G_ij."""
+    gij = proj.ring
+    if not has_lines(common):
+        rec.check("obs-merg-asym-pair")
+        if is_symmetric_polygon(gij):
+            rec.fail("obs-merg-asym-pair", [a.name, b.name, gij.name],
+                     f"<{a.name}, {b.name}> is an asymmetric pair but G_ij = {gij.name} has "
+                     f"{lines_text(gij, polar)}" + coincidence_note(proj),
+                     {"G_ij lines": lines_text(gij, polar)})
+
+
+def lem_los_gij(rec: _Record, a: Ring, b: Ring, common, proj, polar: bool) -> None:
+    """``lem-los-gij`` (as stated): a line of symmetry of G_ij is a common line of
+    <G_i, G_j>."""
+    gij = proj.ring
+    rec.check("lem-los-gij")
+    extra = _lines_not_in(gij.lines, common)
+    if extra:
+        # the text around lem-los-gij assumes n_i, n_j odd, neither dividing the other,
+        # gcd > 1, a common line
+        context = (is_odd(a) and is_odd(b) and gcd(a.n, b.n) > 1 and has_lines(common)
+                   and a.n % b.n != 0 and b.n % a.n != 0)
+        rec.fail("lem-los-gij", [a.name, b.name, gij.name],
+                 f"G_ij = {gij.name} has {lines_text(gij, polar)}, but "
+                 f"<{a.name}, {b.name}> have {lines_text(common, polar)} in common"
+                 + coincidence_note(proj)
+                 + ("" if context else " (outside the hypotheses of the surrounding text: "
+                    "n_i, n_j odd, neither dividing the other, gcd > 1, a common line)"),
+                 {"line": extra, "n_i": a.n, "n_j": b.n, "within_hypotheses": context,
+                  "coincident_vertices": len(proj.coincident)})
+
+
+def obs_gcd(rec: _Record, a: Ring, b: Ring, common) -> None:
+    """``obs-gcd``: two odd polygons with a common line have gcd(n_i, n_j) common lines."""
+    g = gcd(a.n, b.n)
+    count = "all" if common is ALL_LINES else len(common)
+    rec.check("obs-gcd")
+    if count != g:
+        rec.fail("obs-gcd", [a.name, b.name], f"n_i = {a.n}, n_j = {b.n} odd with a common "
+                 f"line: gcd = {g} but they have {count} common line(s)",
+                 {"gcd": g, "common_lines": count})
+
+
+def obs_type_4(rec: _Record, a: Ring, b: Ring, proj) -> None:
+    """``obs-type-4``: n_i, n_j odd with a common line and gcd > 1 make G_ij type 4."""
+    gij = proj.ring
+    g = gcd(a.n, b.n)
+    ok, why = is_type4(gij)
+    rec.check("obs-type-4")
+    if not ok:
+        neither = a.n % b.n != 0 and b.n % a.n != 0
+        rec.fail("obs-type-4", [a.name, b.name, gij.name],
+                 f"n_i = {a.n}, n_j = {b.n} odd, a common line, gcd = {g} > 1, but "
+                 f"G_ij ({gij.n} vertices) is {why}" + coincidence_note(proj)
+                 + ("" if neither else "; note n_i and n_j divide one another "
+                    "(Preprocess's text excludes that case)"),
+                 {"G_ij vertices": gij.n, "type": why, "neither_divides": neither,
+                  "coincident_vertices": len(proj.coincident)})
+
+
+def theorem_los_g1n(rec: _Record, G: Sequence[Ring], Gp: Sequence[Ring], polar: bool,
+                    limits: Limits) -> None:
+    """``theorem-los-g1n`` on the projection of every polygon onto the outermost circle
+    (within ``limits.union_vertices``), and on every merged polygon of G'."""
+    with_dir = [g for g in G if not g.at_centre]
+    if len(with_dir) >= 2 and limits.union_vertices is not None and \
+            sum(g.n for g in with_dir) > limits.union_vertices:
+        rec.partial.add("theorem-los-g1n")
+    elif len(with_dir) >= 2:
+        whole_lines, whole_n = union_lines(with_dir)
+        whole_name = polygon_name([k for g in with_dir for k in g.levels])
+        common = common_lines(with_dir)
+        rec.check("theorem-los-g1n")
+        extra = _lines_not_in(whole_lines, common)
+        if extra:
+            rec.fail("theorem-los-g1n", few_names(with_dir) + [whole_name],
+                     f"G_(1..n) = {whole_name} (every polygon projected onto the outermost "
+                     f"circle) has {lines_text(whole_lines, polar)}, but the polygons have "
+                     f"{lines_text(common, polar)} in common",
+                     {"line": extra, "within_hypotheses": False})
+    by_level = {g.levels[0]: g for g in G}
+    for g in Gp:
+        if len(g.levels) > 1:
+            parts = [by_level[k] for k in g.levels]
+            common = common_lines(parts)
+            rec.check("theorem-los-g1n")
+            extra = _lines_not_in(g.lines, common)
+            if extra:
+                rec.fail("theorem-los-g1n", few_names(parts) + [g.name],
+                         f"the merged polygon {g.name} of G' has {lines_text(g, polar)}, but "
+                         f"its parts have {lines_text(common, polar)} in common",
+                         {"line": extra, "within_hypotheses": True})
+
+
+def lem_3_pair_sym(rec: _Record, trio) -> None:
+    """``lem-3-pair-sym`` (one direction): three pairwise symmetric polygons of G' have a
+    common line of symmetry (called on pairwise symmetric triples)."""
+    rec.check("lem-3-pair-sym")
+    if not is_symmetric_family(trio):
+        rec.fail("lem-3-pair-sym", [g.name for g in trio],
+                 "pairwise symmetric without a common line")
+
+
+def lem_type4(rec: _Record, trio) -> None:
+    """``lem-type4``: three pairwise symmetric odd polygons of G' with distinct counts,
+    none a multiple of another, have pairwise coprime counts."""
+    counts = [g.n for g in trio]
+    if all(is_odd(g) for g in trio) and len(set(counts)) == 3 and not any(
+            x % y == 0 for x in counts for y in counts if x != y):
+        rec.check("lem-type4")
+        if any(gcd(x, y) > 1 for x in counts for y in counts if x != y):
+            rec.fail("lem-type4", [g.name for g in trio], f"pairwise symmetric with n = "
+                     f"{counts}, not pairwise coprime", {"n": counts})
+
+
+def theorem_sym_pair_symG(rec: _Record, Gp: Sequence[Ring], symmetric_p: bool,
+                          steps: int | None) -> None:
+    """``theorem-sym-pair-symG``: every pair of G' is symmetric iff all polygons of G'
+    have a common line (within the search budget ``steps``)."""
+    try:
+        all_pairs_sym = find_asymmetry_pair(Gp, steps) is None
+    except WorkBudgetExceeded:
+        all_pairs_sym = None
+        rec.partial.add("theorem-sym-pair-symG")
+    if len(Gp) >= 2 and all_pairs_sym is not None:   # one polygon: "every pair" is vacuous
+        rec.checked["theorem-sym-pair-symG"] = 1
+        if all_pairs_sym != symmetric_p:
+            rec.fail("theorem-sym-pair-symG", few_names(Gp),
+                     f"every pair of G' symmetric: {all_pairs_sym}; a common line for all: "
+                     f"{symmetric_p}")
+
+
+def obs1_Gprime_equiG(rec: _Record, G: Sequence[Ring], Gp: Sequence[Ring]) -> None:
+    """``obs1-Gprime-equiG``: in a symmetric G (and G') every pair is symmetric."""
+    for label, fam in (("G", G), ("G'", Gp)):
+        if is_symmetric_family(fam):
+            rec.check("obs1-Gprime-equiG")
+            bad = find_asymmetry_pair(fam)    # None at once: the common line is shared
+            if bad is not None:
+                rec.fail("obs1-Gprime-equiG", [fam[bad[0]].name, fam[bad[1]].name],
+                         f"{label} is symmetric but this pair is not")
+
+
+def Gprime_equiG(rec: _Record, Gp: Sequence[Ring], symmetric_g: bool,
+                 symmetric_p: bool) -> None:
+    """``Gprime-equiG``: G is symmetric iff G' is."""
+    rec.checked["Gprime-equiG"] = 1
+    if symmetric_p != symmetric_g:
+        rec.fail("Gprime-equiG", few_names(Gp), f"G symmetric: {symmetric_g}; G' "
+                 f"symmetric: {symmetric_p}")
+
+
+# ---------------------------------------------------------------- all of them
 def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = None,
                   polar: bool = True, limits: Limits | None = None,
                   stats: dict | None = None) -> list[dict]:
@@ -144,177 +349,47 @@ def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = No
     limits = limits if limits is not None else DEFAULT_LIMITS
     trace = trace if trace is not None else []
     stats = stats if stats is not None else {}
-    out: list[dict] = []
-    failures: dict = {}
-    examples = limits.claim_examples
-    partial: set = set()
-
-    def fail(statement, polygons, detail, witness=None):
-        failures[statement] = failures.get(statement, 0) + 1
-        if examples is None or failures[statement] <= examples:
-            out.append(_claim(trace, statement, False, polygons, detail, witness))
-
-    checked: dict = {}
+    rec = _Record(trace, limits.claim_examples)
     n_robots = sum(len(g.robots) for g in G)
     pairs, total_pairs = select_pairs(G, limits)
     if len(pairs) < total_pairs:
-        partial.update(("obs-pair-asym-ord", "obs-merg-asym-pair", "lem-los-gij", "obs-gcd",
-                        "obs-type-4"))
+        rec.partial.update(("obs-pair-asym-ord", "obs-merg-asym-pair", "lem-los-gij",
+                            "obs-gcd", "obs-type-4"))
     for i, j in pairs:
         a, b = G[i], G[j]
-        names = [a.name, b.name]
         common = intersect_lines(a.lines, b.lines)
-        # obs-pair-asym-ord: an asymmetric polygon makes an asymmetric pair
-        if not is_symmetric_polygon(a) or not is_symmetric_polygon(b):
-            checked["obs-pair-asym-ord"] = checked.get("obs-pair-asym-ord", 0) + 1
-            if has_lines(common):
-                fail("obs-pair-asym-ord", names, "an asymmetric polygon in a symmetric pair")
+        obs_pair_asym_ord(rec, a, b, common)
         if a.at_centre or b.at_centre:
             continue
-        proj = None
-        # obs-merg-asym-pair and lem-los-gij (as stated: no hypothesis on n_i, n_j)
         proj = radial_projection(a, b)
-        gij = proj.ring
-        if not has_lines(common):
-            checked["obs-merg-asym-pair"] = checked.get("obs-merg-asym-pair", 0) + 1
-            if is_symmetric_polygon(gij):
-                fail("obs-merg-asym-pair", names + [gij.name],
-                     f"<{a.name}, {b.name}> is an asymmetric pair but G_ij = {gij.name} has "
-                     f"{lines_text(gij, polar)}" + coincidence_note(proj),
-                     {"G_ij lines": lines_text(gij, polar)})
-        checked["lem-los-gij"] = checked.get("lem-los-gij", 0) + 1
-        extra = _lines_not_in(gij.lines, common)
-        if extra:
-            # the text around lem-los-gij assumes n_i, n_j odd, neither dividing the other,
-            # gcd > 1, a common line
-            context = (is_odd(a) and is_odd(b) and gcd(a.n, b.n) > 1 and has_lines(common)
-                       and a.n % b.n != 0 and b.n % a.n != 0)
-            fail("lem-los-gij", names + [gij.name],
-                 f"G_ij = {gij.name} has {lines_text(gij, polar)}, but "
-                 f"<{a.name}, {b.name}> have {lines_text(common, polar)} in common"
-                 + coincidence_note(proj)
-                 + ("" if context else " (outside the hypotheses of the surrounding text: "
-                    "n_i, n_j odd, neither dividing the other, gcd > 1, a common line)"),
-                 {"line": extra, "n_i": a.n, "n_j": b.n, "within_hypotheses": context,
-                  "coincident_vertices": len(proj.coincident)})
+        obs_merg_asym_pair(rec, a, b, common, proj, polar)
+        lem_los_gij(rec, a, b, common, proj, polar)
         if is_odd(a) and is_odd(b) and has_lines(common):
-            g = gcd(a.n, b.n)
-            count = "all" if common is ALL_LINES else len(common)
-            checked["obs-gcd"] = checked.get("obs-gcd", 0) + 1
-            if count != g:
-                fail("obs-gcd", names, f"n_i = {a.n}, n_j = {b.n} odd with a common line: "
-                     f"gcd = {g} but they have {count} common line(s)",
-                     {"gcd": g, "common_lines": count})
-            if g > 1:
-                ok, why = is_type4(gij)
-                checked["obs-type-4"] = checked.get("obs-type-4", 0) + 1
-                if not ok:
-                    neither = a.n % b.n != 0 and b.n % a.n != 0
-                    fail("obs-type-4", names + [gij.name],
-                         f"n_i = {a.n}, n_j = {b.n} odd, a common line, gcd = {g} > 1, but "
-                         f"G_ij ({gij.n} vertices) is {why}" + coincidence_note(proj)
-                         + ("" if neither else "; note n_i and n_j divide one another "
-                            "(Preprocess's text excludes that case)"),
-                         {"G_ij vertices": gij.n, "type": why, "neither_divides": neither,
-                          "coincident_vertices": len(proj.coincident)})
-    # theorem-los-g1n on the projection of every polygon onto the outermost circle,
-    # and on every merged polygon of G'
-    with_dir = [g for g in G if not g.at_centre]
-    if len(with_dir) >= 2 and limits.union_vertices is not None and \
-            sum(g.n for g in with_dir) > limits.union_vertices:
-        partial.add("theorem-los-g1n")
-    elif len(with_dir) >= 2:
-        whole_lines, whole_n = union_lines(with_dir)
-        whole_name = polygon_name([k for g in with_dir for k in g.levels])
-        common = common_lines(with_dir)
-        checked["theorem-los-g1n"] = checked.get("theorem-los-g1n", 0) + 1
-        extra = _lines_not_in(whole_lines, common)
-        if extra:
-            fail("theorem-los-g1n", few_names(with_dir) + [whole_name],
-                 f"G_(1..n) = {whole_name} (every polygon projected onto the outermost "
-                 f"circle) has {lines_text(whole_lines, polar)}, but the polygons have "
-                 f"{lines_text(common, polar)} in common",
-                 {"line": extra, "within_hypotheses": False})
-    by_level = {g.levels[0]: g for g in G}
-    for g in Gp:
-        if len(g.levels) > 1:
-            parts = [by_level[k] for k in g.levels]
-            common = common_lines(parts)
-            checked["theorem-los-g1n"] = checked.get("theorem-los-g1n", 0) + 1
-            extra = _lines_not_in(g.lines, common)
-            if extra:
-                fail("theorem-los-g1n", few_names(parts) + [g.name],
-                     f"the merged polygon {g.name} of G' has {lines_text(g, polar)}, but its "
-                     f"parts have {lines_text(common, polar)} in common",
-                     {"line": extra, "within_hypotheses": True})
-    # triples of G': lem-type4, lem-3-pair-sym
-    tp = len(Gp)
-    triples, total_triples = select_triples(tp, limits)
+            obs_gcd(rec, a, b, common)
+            if gcd(a.n, b.n) > 1:
+                obs_type_4(rec, a, b, proj)
+    theorem_los_g1n(rec, G, Gp, polar, limits)
+    triples, total_triples = select_triples(len(Gp), limits)
     triples_checked = 0
     for i, j, k in triples:
         triples_checked += 1
         trio = (Gp[i], Gp[j], Gp[k])
-        pairwise = all(is_symmetric_pair(x, y) for x, y in ((trio[0], trio[1]),
-                                                             (trio[1], trio[2]),
-                                                             (trio[0], trio[2])))
-        if not pairwise:
-            continue
-        names = [g.name for g in trio]
-        checked["lem-3-pair-sym"] = checked.get("lem-3-pair-sym", 0) + 1
-        if not is_symmetric_family(trio):
-            fail("lem-3-pair-sym", names, "pairwise symmetric without a common line")
-        counts = [g.n for g in trio]
-        if all(is_odd(g) for g in trio) and len(set(counts)) == 3 and not any(
-                x % y == 0 for x in counts for y in counts if x != y):
-            checked["lem-type4"] = checked.get("lem-type4", 0) + 1
-            if any(gcd(x, y) > 1 for x in counts for y in counts if x != y):
-                fail("lem-type4", names, f"pairwise symmetric with n = {counts}, not "
-                     "pairwise coprime", {"n": counts})
+        if all(is_symmetric_pair(x, y) for x, y in ((trio[0], trio[1]), (trio[1], trio[2]),
+                                                     (trio[0], trio[2]))):
+            lem_3_pair_sym(rec, trio)
+            lem_type4(rec, trio)
     if triples_checked < total_triples:
-        partial.update(("lem-3-pair-sym", "lem-type4"))
-    # theorem-sym-pair-symG on G', obs1-Gprime-equiG on G and G', Gprime-equiG
-    steps = limits.step_budget(n_robots)
+        rec.partial.update(("lem-3-pair-sym", "lem-type4"))
     symmetric_p = is_symmetric_family(Gp)
     symmetric_g = is_symmetric_family(G)
-    try:
-        all_pairs_sym = find_asymmetry_pair(Gp, steps) is None
-    except WorkBudgetExceeded:
-        all_pairs_sym = None
-        partial.add("theorem-sym-pair-symG")
-    if tp >= 2 and all_pairs_sym is not None:   # one polygon: "every pair" is vacuous
-        checked["theorem-sym-pair-symG"] = 1
-        if all_pairs_sym != symmetric_p:
-            fail("theorem-sym-pair-symG", few_names(Gp),
-                 f"every pair of G' symmetric: {all_pairs_sym}; a common line for all: "
-                 f"{symmetric_p}")
-    for label, fam in (("G", G), ("G'", Gp)):
-        if is_symmetric_family(fam):
-            checked["obs1-Gprime-equiG"] = checked.get("obs1-Gprime-equiG", 0) + 1
-            bad = find_asymmetry_pair(fam)    # None at once: the common line is shared
-            if bad is not None:
-                fail("obs1-Gprime-equiG", [fam[bad[0]].name, fam[bad[1]].name],
-                     f"{label} is symmetric but this pair is not")
-    checked["Gprime-equiG"] = 1
-    if symmetric_p != symmetric_g:
-        fail("Gprime-equiG", few_names(Gp), f"G symmetric: {symmetric_g}; G' "
-             f"symmetric: {symmetric_p}")
-    for statement, count in failures.items():
-        if examples is not None and count > examples:
-            out.append(_claim(trace, statement, False, [],
-                              f"fails on {count} of the {checked.get(statement, count)} "
-                              f"instance(s) checked; the first {examples} are listed",
-                              {"failures": count, "checked": checked.get(statement, count),
-                               "listed": examples}))
-    for statement, count in checked.items():
-        if statement not in failures:
-            note = (" (a bounded part of the instances: see paper.bounded)"
-                    if statement in partial else "")
-            _claim(trace, statement, True, [], f"holds on the {count} instance(s) checked"
-                   + note)
+    theorem_sym_pair_symG(rec, Gp, symmetric_p, limits.step_budget(n_robots))
+    obs1_Gprime_equiG(rec, G, Gp)
+    Gprime_equiG(rec, Gp, symmetric_g, symmetric_p)
+    rec.summaries()
     stats.update(pairs_checked=len(pairs), pairs=total_pairs,
                  triples_checked=triples_checked, triples=total_triples,
-                 partial=sorted(partial), failures=dict(sorted(failures.items())))
-    return out
+                 partial=sorted(rec.partial), failures=dict(sorted(rec.failures.items())))
+    return rec.out
 
 
 def _lines_not_in(lines, allowed):
