@@ -259,8 +259,8 @@ def _cartesian_of_polar(radii, turns):
             r = r.rational()
         rational.append(r)
     system = number_system((), turns)
-    return system, [(system.coerce(r) * system.cos_turn(t), system.coerce(r) * system.sin_turn(t))
-                    for r, t in zip(rational, turns)]
+    return system, [(system.coerce(r) * system.cos_turn(t),
+                     system.coerce(r) * system.sin_turn(t)) for r, t in zip(rational, turns)]
 
 
 def _cartesian_position(p, system):

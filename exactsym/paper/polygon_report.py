@@ -102,7 +102,7 @@ def _key_text(key) -> str:
 def level_strings(polygon) -> dict:
     if polygon.n > STRING_LIMIT:
         return {"omitted": f"{polygon.n} vertices: strings are written for at most "
-                           f"{STRING_LIMIT}"}
+                f"{STRING_LIMIT}"}
     strings = paper.vertex_strings(polygon)
     return {"metric": polygon.metric,
             "vertices": list(polygon.labels),
@@ -130,7 +130,7 @@ def shape_key(polygon):
     polygons with equal keys get equal verdicts, labels taken at the same positions."""
     n, dirs = polygon.n, polygon.directions
     return (polygon.polar, n, tuple(_hashable(ccw_gap_key(polygon.polar, dirs[k],
-                                                                    dirs[(k + 1) % n]))
+                                                          dirs[(k + 1) % n]))
                                     for k in range(n)))
 
 

@@ -82,11 +82,12 @@ this configuration: a finding; the audit collects them) and ``"round"``.
 from __future__ import annotations
 
 from .limits import (MAX_QUADRATIC_N, Limits, DEFAULT_LIMITS, UNBOUNDED, WorkBudgetExceeded,
-    MAX_PAIRS, MAX_TRIPLES)
+                     MAX_PAIRS, MAX_TRIPLES)
 from .trace import (BRANCHES, compact_trace)
-from .concentric import (ALL_LINES, Ring, concentric_polygons, lines_of_symmetry,
-    common_lines, is_symmetric_polygon, is_symmetric_pair, is_symmetric_family, line_text,
-    mirror_lines, centrally_symmetric, lines_text, intersect_lines, is_polar, has_lines)
+from .concentric import (ALL_LINES, Ring, concentric_polygons, lines_of_symmetry, common_lines,
+                         is_symmetric_polygon, is_symmetric_pair, is_symmetric_family, line_text,
+                         mirror_lines, centrally_symmetric, lines_text, intersect_lines, is_polar,
+                         has_lines)
 from .projection import (Projection, radial_projection, is_type4)
 from .preprocess import (preprocess, preprocess_literal, LiteralRun, SMALL_FAMILY)
 from .find_asymmetry import (find_asymmetry, find_asymmetry_pair)

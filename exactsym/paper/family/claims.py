@@ -14,8 +14,8 @@ from typing import Iterable, Sequence
 
 from ..circle_polygon import CirclePolygon
 from .concentric import (ALL_LINES, Ring, common_lines, has_lines, intersect_lines, is_odd,
-    is_symmetric_family, is_symmetric_pair, is_symmetric_polygon, line_value_text,
-    lines_text, new_ring, polygon_name)
+                         is_symmetric_family, is_symmetric_pair, is_symmetric_polygon,
+                         line_value_text, lines_text, new_ring, polygon_name)
 from .find_asymmetry import find_asymmetry_pair
 from ..keys import angle_order_key
 from .limits import DEFAULT_LIMITS, END_LEVELS, Limits, WorkBudgetExceeded
@@ -375,7 +375,7 @@ def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = No
         triples_checked += 1
         trio = (Gp[i], Gp[j], Gp[k])
         if all(is_symmetric_pair(x, y) for x, y in ((trio[0], trio[1]), (trio[1], trio[2]),
-                                                     (trio[0], trio[2]))):
+                                                    (trio[0], trio[2]))):
             lem_3_pair_sym(rec, trio)
             lem_type4(rec, trio)
     if triples_checked < total_triples:

@@ -118,7 +118,7 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None) 
         robots = tuple(level.points)
         if k == 0 and sign(level.radius_squared) == 0:      # only the nearest can be C
             out.append(new_ring(f"G{k + 1}", None, level.radius_squared, (k + 1,), robots,
-                                 robots))
+                                robots))
             continue
         if polar:
             dirs = tuple([turns[i][1] for i in robots])
@@ -128,7 +128,7 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None) 
         poly.__dict__.update(labels=tuple([(i,) for i in robots]), directions=dirs,
                              polar=polar)
         out.append(new_ring(f"G{k + 1}", poly, level.radius_squared, (k + 1,), robots,
-                             robots))
+                            robots))
     return tuple(out)
 
 

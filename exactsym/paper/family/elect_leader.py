@@ -27,15 +27,15 @@ def first_of_ring_in_ordering(poly: CirclePolygon, leader: P.AsymLeader, ring: R
 
 
 def elect_leader_asym_on(trace, alg, line, ring_poly: Ring, target: Ring, orientation, reading,
-                statement, branch=None, rnd=None):
+                         statement, branch=None, rnd=None):
     """Elect_Leader_Asym on ``ring_poly`` and the first vertex of ``target`` in its ordering.
     Records a failure when the lexicographic minimum is tied (the polygon is symmetric:
     the claim that it is orderable is false)."""
     poly = ring_poly.polygon
     if poly.n > MAX_QUADRATIC_N:
         trace_entry(trace, alg, line, [ring_poly.name], statement,
-               f"Elect_Leader_Asym not run: {poly.n} vertices (O(n^2) strings; limit "
-               f"{MAX_QUADRATIC_N})", branch=branch, round=rnd)
+                    f"Elect_Leader_Asym not run: {poly.n} vertices (O(n^2) strings; limit "
+                    f"{MAX_QUADRATIC_N})", branch=branch, round=rnd)
         return None, "too-large"
     res = P.elect_leader_asym(poly, orientation, reading)
     idx, robot = first_of_ring_in_ordering(poly, res, target)
@@ -45,14 +45,14 @@ def elect_leader_asym_on(trace, alg, line, ring_poly: Ring, target: Ring, orient
               f"v_l is robot {printed}; the first vertex of {target.name} in the ordering is "
               f"robot {robot}")
     trace_entry(trace, alg, line, [ring_poly.name, target.name], statement, detail,
-           robots=[robot] if robot is not None else None, branch=branch, round=rnd,
-           uses="Elect_Leader_Asym")
+                robots=[robot] if robot is not None else None, branch=branch, round=rnd,
+                uses="Elect_Leader_Asym")
     if res.tie:
         trace_entry(trace, alg, line, [ring_poly.name],
-               "obs-merg-asym-pair" if len(ring_poly.levels) > 1 else "lem-asym-ord",
-               f"{ring_poly.name} is assumed asymmetric (orderable) but the lexicographic "
-               f"minimum of the (CW, ACW) tuples is attained at more than one vertex",
-               holds=False, labelling_dependent=True, round=rnd)
+                    "obs-merg-asym-pair" if len(ring_poly.levels) > 1 else "lem-asym-ord",
+                    f"{ring_poly.name} is assumed asymmetric (orderable) but the lexicographic "
+                    f"minimum of the (CW, ACW) tuples is attained at more than one vertex",
+                    holds=False, labelling_dependent=True, round=rnd)
     return robot, None
 
 
@@ -85,15 +85,15 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
     if g1.at_centre:
         v = g1.robots[0]
         trace_entry(trace, alg, 3, [g1.name], "obs-asymmetric-polygon",
-               f"{g1.name} is the robot {v} at C: Check_Symmetry_Odd reports degree 1 "
-               "(CW = ACW = ())", round=rnd)
+                    f"{g1.name} is the robot {v} at C: Check_Symmetry_Odd reports degree 1 "
+                    "(CW = ACW = ())", round=rnd)
         trace_entry(trace, alg, 6, [g1.name], alg, f"leader: robot {v} (at C)", robots=[v],
-               branch="centre", round=rnd)
+                    branch="centre", round=rnd)
         return ElectLeaderResult(v, "centre")
     poly = g1.polygon
     check = P.check_symmetry(poly, orientation)
     trace_entry(trace, alg, 2 if poly.n % 2 == 0 else 3, [g1.name], "obs-asymmetric-polygon",
-           f"{check.algorithm}({g1.name}): " + "; ".join(check.reports), round=rnd)
+                f"{check.algorithm}({g1.name}): " + "; ".join(check.reports), round=rnd)
     sym = P.elect_leader_sym(poly, orientation, degree) if check.symmetric else None
     if sym is not None and sym.leader is not None:
         branch = "sym-degree-one"
@@ -101,61 +101,61 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
         if poly.n % 2 == 0 and len(axis) >= 2 and \
                 P.cw_string(poly, axis[0], orientation) == P.cw_string(poly, axis[1], orientation):
             trace_entry(trace, alg, 5, [g1.name], "1sym_le",
-                   f"Elect_Leader_Sym: VI = VJ for the two vertices on the line (robots "
-                   f"{[robot_in(poly.labels[a], g1) for a in axis[:2]]}), so 'if VI > VJ "
-                   f"return v_i else v_j' picks by the labelling, not by the geometry",
-                   holds=False, labelling_dependent=True, round=rnd)
+                        f"Elect_Leader_Sym: VI = VJ for the two vertices on the line (robots "
+                        f"{[robot_in(poly.labels[a], g1) for a in axis[:2]]}), so 'if VI > VJ "
+                        f"return v_i else v_j' picks by the labelling, not by the geometry",
+                        holds=False, labelling_dependent=True, round=rnd)
         moved = P.make_sym_to_asym(poly, orientation, degree)
         mover = robot_in(poly.labels[moved.leader], g1) if moved.leader is not None else None
         moves = [{"robot": mover, "algorithm": "Make_SymToAsym", "line": 2, "kind": "epsilon",
                   "amount": number_text(moved.parameter) if moved.parameter is not None
                   else None}] if mover is not None else []
         trace_entry(trace, alg, 5, [g1.name], "1sym_le",
-               f"degree of symmetry one: Make_SymToAsym moves robot {mover} to its right side "
-               f"({'asymmetric now' if moved.asymmetric else 'still symmetric'})",
-               robots=[mover] if mover is not None else None, branch=branch, round=rnd,
-               uses="Make_SymToAsym")
+                    f"degree of symmetry one: Make_SymToAsym moves robot {mover} to its right side "
+                    f"({'asymmetric now' if moved.asymmetric else 'still symmetric'})",
+                    robots=[mover] if mover is not None else None, branch=branch, round=rnd,
+                    uses="Make_SymToAsym")
         if not moved.asymmetric and poly.n > 1:
             trace_entry(trace, alg, 5, [g1.name], "Make_SymToAsym",
-                   "Make_SymToAsym is meant to make G_1 asymmetric; it is not", holds=False,
-                   round=rnd)
+                        "Make_SymToAsym is meant to make G_1 asymmetric; it is not", holds=False,
+                        round=rnd)
         if moved.polygon.n > MAX_QUADRATIC_N:
             return ElectLeaderResult(None, branch, moves, False)
         res = P.elect_leader_asym(moved.polygon, orientation, reading)
         leader = None if res.leader is None else robot_in(moved.polygon.labels[res.leader], g1)
         if res.tie:
             trace_entry(trace, alg, 6, [g1.name], "lem-asym-ord",
-                   "the lexicographic minimum of the (CW, ACW) tuples is tied", holds=False,
-                   labelling_dependent=True, round=rnd)
+                        "the lexicographic minimum of the (CW, ACW) tuples is tied", holds=False,
+                        labelling_dependent=True, round=rnd)
         trace_entry(trace, alg, 6, [g1.name], "lem-asym-ord",
-               f"Elect_Leader_Asym(moved {g1.name}): leader robot {leader}",
-               robots=[leader] if leader is not None else None, branch=branch, round=rnd,
-               uses="Elect_Leader_Asym")
+                    f"Elect_Leader_Asym(moved {g1.name}): leader robot {leader}",
+                    robots=[leader] if leader is not None else None, branch=branch, round=rnd,
+                    uses="Elect_Leader_Asym")
         return ElectLeaderResult(leader, branch, moves)
     if not check.symmetric:
         branch = "asymmetric"
         if poly.n > MAX_QUADRATIC_N:
             trace_entry(trace, alg, 9, [g1.name], alg, "too large for Elect_Leader_Asym",
-                   branch=branch, round=rnd)
+                        branch=branch, round=rnd)
             return ElectLeaderResult(None, branch, [], False)
         res = P.elect_leader_asym(poly, orientation, reading)
         leader = None if res.leader is None else robot_in(poly.labels[res.leader], g1)
         trace_entry(trace, alg, 9, [g1.name], "lem-asym-ord",
-               f"{g1.name} asymmetric: Elect_Leader_Asym elects robot {leader}",
-               robots=[leader] if leader is not None else None, branch=branch, round=rnd,
-               uses="Elect_Leader_Asym")
+                    f"{g1.name} asymmetric: Elect_Leader_Asym elects robot {leader}",
+                    robots=[leader] if leader is not None else None, branch=branch, round=rnd,
+                    uses="Elect_Leader_Asym")
         if res.tie:
             trace_entry(trace, alg, 9, [g1.name], "lem-asym-ord",
-                   "the lexicographic minimum of the (CW, ACW) tuples is tied", holds=False,
-                   labelling_dependent=True, round=rnd)
+                        "the lexicographic minimum of the (CW, ACW) tuples is tied", holds=False,
+                        labelling_dependent=True, round=rnd)
         return ElectLeaderResult(leader, branch)
     branch = "project-1t"
     if gt.at_centre:
         return ElectLeaderResult(None, branch)
     proj = radial_projection(g1, gt)
     trace_entry(trace, alg, 11, [g1.name, gt.name, proj.ring.name], "obs-merg-asym-pair",
-           f"compute G_1t = {proj.ring.name} ({proj.ring.n} vertices)"
-           + coincidence_note(proj), branch=branch, round=rnd)
+                f"compute G_1t = {proj.ring.name} ({proj.ring.n} vertices)"
+                + coincidence_note(proj), branch=branch, round=rnd)
     robot, problem = elect_leader_asym_on(trace, alg, 12, proj.ring, g1, orientation, reading,
-                                 "lem-asym-pair-ord", branch, rnd)
+                                          "lem-asym-pair-ord", branch, rnd)
     return ElectLeaderResult(robot, branch, [], problem is None)

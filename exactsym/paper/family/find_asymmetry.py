@@ -9,7 +9,7 @@ from bisect import bisect_left
 from typing import Sequence
 
 from .concentric import (ALL_LINES, Ring, common_lines, has_lines, intersect_lines,
-    is_symmetric_polygon)
+                         is_symmetric_polygon)
 from .limits import WorkBudgetExceeded
 
 

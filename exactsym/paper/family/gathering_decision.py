@@ -14,7 +14,7 @@ from ...exact import normal_turn
 from ...levels import Levels, levels_of, polar_sec
 from .claims import family_claims
 from .concentric import (common_lines, concentric_polygons, is_polar, is_symmetric_family,
-    is_symmetric_polygon, lines_text)
+                         is_symmetric_polygon, lines_text)
 from .elect_leader import elect_leader
 from ..keys import HALF
 from .limits import DEFAULT_LIMITS, Limits
@@ -84,19 +84,19 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
     G = concentric_polygons(config, ring_data)
     polar = is_polar(G)
     trace_entry(trace, "GatheringPattern", 2, few_names(G), "def-sym-calG",
-           f"G = ({family_text(G)}) about the SEC centre", round=1)
+                f"G = ({family_text(G)}) about the SEC centre", round=1)
     pre_stats: dict = {}
     Gp = preprocess(G, trace, limits, pre_stats)
     literal = preprocess_literal(G, limits=limits)
     if literal.budget_exceeded:
         trace_entry(trace, "Preprocess", 12, few_names(G), "Preprocess",
-               f"as printed: {literal.reason}", kind="budget", round=1)
+                    f"as printed: {literal.reason}", kind="budget", round=1)
     elif not literal.terminated:
         trace_entry(trace, "Preprocess", 12, few_names(G), "Preprocess",
-               f"as printed: {literal.reason}", branch="literal-nontermination",
-               holds=False, kind="literal-reading", round=1)
+                    f"as printed: {literal.reason}", branch="literal-nontermination",
+                    holds=False, kind="literal-reading", round=1)
     trace_entry(trace, "GatheringPattern", 3, few_names(Gp), "Gprime-equiG",
-           f"G' = ({family_text(Gp)})", round=1)
+                f"G' = ({family_text(Gp)})", round=1)
     bounded["preprocess_complete"] = pre_stats.get("complete", True)
     bounded["preprocess_pairs_built"] = pre_stats.get("pairs_built", 0)
     if claims:
@@ -111,15 +111,15 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
     symmetric = is_symmetric_family(Gp)
     gathering = not symmetric
     trace_entry(trace, "GatheringPattern", 4, few_names(Gp), "def-sym-calG",
-           f"common lines of all polygons of G': {lines_text(common_lines(Gp), polar)}",
-           round=1)
+                f"common lines of all polygons of G': {lines_text(common_lines(Gp), polar)}",
+                round=1)
     if symmetric:
         trace_entry(trace, "GatheringPattern", 5, few_names(Gp), "cor-Pasym-Pord",
-               "G' is in O_S: gathering is not possible", branch="not-possible", round=1)
+                    "G' is in O_S: gathering is not possible", branch="not-possible", round=1)
     else:
         trace_entry(trace, "GatheringPattern", 6, few_names(Gp), "cor-Pasym-Pord",
-               "G' is in O_A: call MakeAsym(G_t), then ElectLeader(G')", branch="possible",
-               round=1)
+                    "G' is in O_A: call MakeAsym(G_t), then ElectLeader(G')", branch="possible",
+                    round=1)
     moves: list = []
     complete = True
     ma_outcome = None
@@ -139,14 +139,14 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
             break
         if rnd > max_rounds:
             trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
-                   f"G_t is still symmetric after {max_rounds} rounds", holds=False,
-                   round=rnd)
+                        f"G_t is still symmetric after {max_rounds} rounds", holds=False,
+                        round=rnd)
             complete = False
             break
         if rnd > 1:
             trace_entry(trace, "MakeAsym", 6, [gt.name], "MakeAsym",
-                   f"after MakeAsym's moves G_t = {gt.name} is still symmetric "
-                   f"({lines_text(gt, polar)})", holds=False, round=rnd)
+                        f"after MakeAsym's moves G_t = {gt.name} is still symmetric "
+                        f"({lines_text(gt, polar)})", holds=False, round=rnd)
         result = make_asym(current, cur_rings, cur_Gp, trace, orientation, reading, rnd,
                            limits)
         ma_outcome = result.outcome if ma_outcome is None else ma_outcome
@@ -169,9 +169,9 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
             # happen; analysing the new configuration would need the Cartesian path in a
             # cyclotomic field of the moved turns' denominators -- we stop here
             trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
-                   "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
-                   "not); the configuration after the moves is not analysed", holds=False,
-                   round=rnd)
+                        "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
+                        "not); the configuration after the moves is not analysed", holds=False,
+                        round=rnd)
             return _finish(limits, bounded, config,
                            orderable, gathering, None, moves, False, trace, G, Gp,
                            ma_outcome, None, polar)
@@ -179,15 +179,15 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
             new_rings = levels_of(new)
         except (ArithmeticError, NotImplementedError, InputError) as err:
             trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
-                   f"exactsym cannot analyse the configuration after the moves ({err})",
-                   round=rnd)
+                        f"exactsym cannot analyse the configuration after the moves ({err})",
+                        round=rnd)
             return _finish(limits, bounded, config,
                            orderable, gathering, None, moves, False, trace, G, Gp,
                            ma_outcome, None, polar)
         if not _same_sec(ring_data, new_rings):
             trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
-                   "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
-                   "not)", holds=False, round=rnd)
+                        "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
+                        "not)", holds=False, round=rnd)
         if check_vl:
             _check_vl_move(trace, current, new, result, orientation, reading, rnd, limits)
         rnd += 1
@@ -198,7 +198,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
         if not stats2.get("complete", True):
             bounded["preprocess_complete"] = False
         trace_entry(trace, "GatheringPattern", 3, few_names(cur_Gp), "Preprocess",
-               f"after the moves, G' = ({family_text(cur_Gp)})", round=rnd)
+                    f"after the moves, G' = ({family_text(cur_Gp)})", round=rnd)
     el = elect_leader(cur_Gp, trace, orientation, reading, degree, rnd)
     moves.extend(el.moves)
     leader = el.leader
@@ -251,5 +251,5 @@ def _check_vl_move(trace, before: Configuration, after: Configuration, result: M
     actor = sub.first_actor
     holds = actor == v or actor is None and sub.leader == v
     trace_entry(trace, "MakeAsym", last["line"], [], "lem-vl-move",
-           f"with robot {v} half way, the procedure's first robot to act is {actor}",
-           robots=[actor] if actor is not None else None, holds=holds, round=rnd)
+                f"with robot {v} half way, the procedure's first robot to act is {actor}",
+                robots=[actor] if actor is not None else None, holds=holds, round=rnd)

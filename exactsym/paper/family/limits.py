@@ -7,7 +7,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 
-
 #: Polygons above this size are not given to the O(n^2) string steps of
 #: Elect_Leader_Asym (the leader is then reported as not computed).
 MAX_QUADRATIC_N = 600

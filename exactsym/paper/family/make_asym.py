@@ -18,7 +18,7 @@ from ...exact import fmpq, normal_turn, number_text, sign
 from ...levels import Levels
 from ..circle_polygon import polygon_from_directions
 from .concentric import (Ring, has_lines, intersect_lines, is_symmetric_pair,
-    is_symmetric_polygon, lines_text, new_ring)
+                         is_symmetric_polygon, lines_text, new_ring)
 from .elect_leader import elect_leader_asym_on, first_of_ring_in_ordering
 from .find_asymmetry import find_asymmetry, find_asymmetry_pair
 from ..keys import HALF, ccw_gap_key, dot, ray_key
@@ -217,13 +217,13 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
         moves.append({"robot": robot, "algorithm": alg, "line": line, "kind": "epsilon",
                       "amount": amount})
         trace_entry(trace, alg, line, [Gt.name], alg,
-               f"move robot {robot} by epsilon along its circle ({amount}, clockwise for "
-               f"this observer)" + ("" if ok else f"; no epsilon tried makes {why}"),
-               robots=[robot], branch=branch, round=rnd, uses="epsilon-move")
+                    f"move robot {robot} by epsilon along its circle ({amount}, clockwise for "
+                    f"this observer)" + ("" if ok else f"; no epsilon tried makes {why}"),
+                    robots=[robot], branch=branch, round=rnd, uses="epsilon-move")
         if not ok:
             trace_entry(trace, alg, line, [Gt.name], alg,
-                   f"the move is meant to make {why}, but no epsilon tried does",
-                   holds=False, round=rnd)
+                        f"the move is meant to make {why}, but no epsilon tried does",
+                        holds=False, round=rnd)
 
     def move_out(robot, line, branch):
         target = Gt.own[0]
@@ -231,31 +231,31 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
         moves.append({"robot": robot, "algorithm": alg, "line": line, "kind": "to-G_t-circle"})
         if not ok:
             trace_entry(trace, alg, line, [Gt.name], alg,
-                   f"move robot {robot} to the circle of {Gt.name}: the point is not exact "
-                   "in this number field (ratio of radii not a rational square)",
-                   robots=[robot], branch=branch, round=rnd)
+                        f"move robot {robot} to the circle of {Gt.name}: the point is not exact "
+                        "in this number field (ratio of radii not a rational square)",
+                        robots=[robot], branch=branch, round=rnd)
             return False
         trace_entry(trace, alg, line, [Gp[-2].name if t > 1 else Gt.name, Gt.name], alg,
-               f"move robot {robot} radially to the circle of {Gt.name}", robots=[robot],
-               branch=branch, round=rnd)
+                    f"move robot {robot} radially to the circle of {Gt.name}", robots=[robot],
+                    branch=branch, round=rnd)
         return True
 
     a = find_asymmetry(Gp)
     trace_entry(trace, alg, 1, few_names(Gp), "lem-one-pair-asym-ord",
-           f"FindAsymmetry(G'): {'found ' + Gp[a].name if a is not None else 'none'}",
-           round=rnd)
+                f"FindAsymmetry(G'): {'found ' + Gp[a].name if a is not None else 'none'}",
+                round=rnd)
     if a is not None:
         Ga = Gp[a]
         if Gt.n > 3:
             branch = "asym-polygon-large"
             proj = radial_projection(Ga, Gt)
-            robot, problem = elect_leader_asym_on(trace, alg, 4, proj.ring, Gt, orientation, reading,
-                                         "lem-one-pair-asym-ord", branch, rnd)
+            robot, problem = elect_leader_asym_on(trace, alg, 4, proj.ring, Gt, orientation,
+                                                  reading, "lem-one-pair-asym-ord", branch, rnd)
             if robot is None:
                 return MakeAsymResult("undecided", branch, moves, None)
             move_eps(robot, 5, branch, accept_asym(t - 1), f"{Gt.name} asymmetric")
             trace_entry(trace, alg, 6, [Gt.name], alg,
-                   "Report: an orderable G' where G_t is asymmetric", round=rnd)
+                        "Report: an orderable G' where G_t is asymmetric", round=rnd)
             return MakeAsymResult("orderable", branch, moves, _safe_config(place, trace, rnd))
         return _small_gt(config, place, Gp, Ga, None, trace, orientation, reading, rnd, moves,
                          move_out, polygon_branch=True)
@@ -264,13 +264,13 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
         pair = find_asymmetry_pair(Gp, limits.step_budget(config.n))
     except WorkBudgetExceeded as err:
         trace_entry(trace, alg, 13, few_names(Gp), "lem-all-pair-asym-ord",
-               f"Find_Asymmetry_Pair(G') not carried out: {err} (work budget)", round=rnd,
-               kind="budget")
+                    f"Find_Asymmetry_Pair(G') not carried out: {err} (work budget)", round=rnd,
+                    kind="budget")
         return MakeAsymResult("undecided", "asym-pair-large", moves, None)
     trace_entry(trace, alg, 13, few_names(Gp), "lem-all-pair-asym-ord",
-           "Find_Asymmetry_Pair(G'): " + ("none" if pair is None else
-                                           f"<{Gp[pair[0]].name}, {Gp[pair[1]].name}>"),
-           round=rnd)
+                "Find_Asymmetry_Pair(G'): " + ("none" if pair is None else
+                                               f"<{Gp[pair[0]].name}, {Gp[pair[1]].name}>"),
+                round=rnd)
     if pair is not None:
         gi, gj = Gp[pair[0]], Gp[pair[1]]
         if Gt.n > 3:
@@ -278,12 +278,12 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
             gij = radial_projection(gi, gj).ring if not gi.at_centre else gj
             gijt = radial_projection(gij, Gt).ring
             robot, problem = elect_leader_asym_on(trace, alg, 16, gijt, Gt, orientation, reading,
-                                         "lem-all-pair-asym-ord", branch, rnd)
+                                                  "lem-all-pair-asym-ord", branch, rnd)
             if robot is None:
                 return MakeAsymResult("undecided", branch, moves, None)
             move_eps(robot, 17, branch, accept_asym(t - 1), f"{Gt.name} asymmetric")
             trace_entry(trace, alg, 18, [Gt.name], alg,
-                   "Report: an orderable G where G_t is asymmetric", round=rnd)
+                        "Report: an orderable G where G_t is asymmetric", round=rnd)
             return MakeAsymResult("orderable", branch, moves, _safe_config(place, trace, rnd))
         return _small_gt(config, place, Gp, gi, gj, trace, orientation, reading, rnd, moves,
                          move_out, polygon_branch=False)
@@ -294,19 +294,19 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
         v = gi.robots[0]
         on_line = has_lines(intersect_lines(gi.lines, Gt.lines))
         trace_entry(trace, alg, 25, [gi.name, Gt.name], "obs-v-move",
-               f"{gi.name} is the single robot {v}" + (" (on a line of symmetry of G_t)"
-                                                       if on_line else
-                                                       " (not on a line of symmetry of G_t)"),
-               robots=[v], branch=branch, round=rnd)
+                    f"{gi.name} is the single robot {v}" + (" (on a line of symmetry of G_t)"
+                                                            if on_line else
+                                                            " (not on a line of symmetry of G_t)"),
+                    robots=[v], branch=branch, round=rnd)
         if gi.at_centre:
             first = Gt.own[0] if Gt.polygon is None else robot_in(Gt.polygon.labels[0], Gt)
             ok = _move_off_centre(place, v, first, Gp)
             moves.append({"robot": v, "algorithm": alg, "line": 26, "kind": "off-centre"})
             trace_entry(trace, alg, 26, [gi.name], "obs-v-move",
-                   f"move robot {v} off C by a quarter of the smallest radius, towards robot "
-                   f"{first} (the first vertex of {Gt.name} from this observer's x axis)"
-                   + ("" if ok else ": not exact here"), robots=[v], branch=branch, round=rnd,
-                   labelling_dependent=True)
+                        f"move robot {v} off C by a quarter of the smallest radius, towards robot "
+                        f"{first} (the first vertex of {Gt.name} from this observer's x axis)"
+                        + ("" if ok else ": not exact here"), robots=[v], branch=branch, round=rnd,
+                        labelling_dependent=True)
             if not ok:
                 return MakeAsymResult("undecided", branch, moves, None)
             pair_ok = True
@@ -317,35 +317,35 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
             moves.append({"robot": v, "algorithm": alg, "line": 26, "kind": "epsilon",
                           "amount": amount})
             trace_entry(trace, alg, 26, [gi.name], "obs-v-move",
-                   f"move robot {v} by epsilon ({amount})", robots=[v], branch=branch,
-                   round=rnd)
+                        f"move robot {v} by epsilon ({amount})", robots=[v], branch=branch,
+                        round=rnd)
         if not pair_ok:
             trace_entry(trace, alg, 26, [gi.name, Gt.name], alg,
-                   f"<{gi.name}, {Gt.name}> is meant to become asymmetric, but it stays "
-                   f"symmetric for every epsilon tried ({Gt.name} has "
-                   f"{lines_text(Gt, Gt.polygon.polar if Gt.polygon else True)})",
-                   holds=False, round=rnd)
+                        f"<{gi.name}, {Gt.name}> is meant to become asymmetric, but it stays "
+                        f"symmetric for every epsilon tried ({Gt.name} has "
+                        f"{lines_text(Gt, Gt.polygon.polar if Gt.polygon else True)})",
+                        holds=False, round=rnd)
         try:
             place.configuration()          # raises MoveImpossible when the move is impossible
         except MoveImpossible as err:
             trace_entry(trace, alg, 26, [gi.name], alg, f"the move is impossible: {err}",
-                   holds=False, round=rnd)
+                        holds=False, round=rnd)
             return MakeAsymResult("undecided", branch, moves, None)
         new_gi = _moved_ring(gi, place)
         new_gt = _moved_ring(Gt, place)
         if new_gi.at_centre:
             return MakeAsymResult("undecided", branch, moves, None)
         proj = radial_projection(new_gi, new_gt)
-        robot, problem = elect_leader_asym_on(trace, alg, 27, proj.ring, new_gt, orientation, reading,
-                                     "obs-v-move", branch, rnd)
+        robot, problem = elect_leader_asym_on(trace, alg, 27, proj.ring, new_gt, orientation,
+                                              reading, "obs-v-move", branch, rnd)
         if robot is None:
             return MakeAsymResult("undecided", branch, moves, None)
         _check_v_move(trace, place, gi, Gt, v, robot, orientation, reading, rnd)
         move_eps(robot, 28, branch, accept_asym(t - 1), f"{Gt.name} asymmetric")
         return MakeAsymResult("orderable", branch, moves, _safe_config(place, trace, rnd))
     trace_entry(trace, alg, 29, few_names(Gp), "theorem-sym-pair-symG",
-           "Report: G' is not orderable (no asymmetric polygon, no asymmetric pair, no "
-           "single-vertex polygon)", branch="not-orderable", round=rnd)
+                "Report: G' is not orderable (no asymmetric polygon, no asymmetric pair, no "
+                "single-vertex polygon)", branch="not-orderable", round=rnd)
     return MakeAsymResult("not-orderable", "not-orderable", moves, None)
 
 
@@ -354,7 +354,7 @@ def _safe_config(place: _Placement, trace, rnd):
         return place.configuration()
     except MoveImpossible as err:
         trace_entry(trace, "MakeAsym", None, [], "MakeAsym",
-               f"the moves lead to an invalid configuration: {err}", holds=False, round=rnd)
+                    f"the moves lead to an invalid configuration: {err}", holds=False, round=rnd)
         return None
 
 
@@ -368,7 +368,7 @@ def _small_gt(config, place, Gp, first, second, trace, orientation, reading, rnd
     Gt = Gp[-1]
     if t < 2:
         trace_entry(trace, alg, base, [Gt.name], alg, "there is no G_{t-1}", holds=False,
-               round=rnd)
+                    round=rnd)
         return MakeAsymResult("undecided", f"asym-{kind}-small-asym", moves, None)
     prev = Gp[-2]
     if prev.at_centre:
@@ -377,12 +377,12 @@ def _small_gt(config, place, Gp, first, second, trace, orientation, reading, rnd
         check = P.check_symmetry(prev.polygon, orientation)
         check_sym, deg = check.symmetric, str(check.degree)
     trace_entry(trace, alg, base, [prev.name], alg,
-           f"CheckSymmetry({prev.name}): {'symmetric' if check_sym else 'asymmetric'} "
-           f"(degree {deg})", round=rnd)
+                f"CheckSymmetry({prev.name}): {'symmetric' if check_sym else 'asymmetric'} "
+                f"(degree {deg})", round=rnd)
     if not check_sym:
         branch = f"asym-{kind}-small-asym"
-        robot, problem = elect_leader_asym_on(trace, alg, base + 2, prev, prev, orientation, reading,
-                                     alg, branch, rnd)
+        robot, problem = elect_leader_asym_on(trace, alg, base + 2, prev, prev, orientation,
+                                              reading, alg, branch, rnd)
     else:
         branch = f"asym-{kind}-small-sym"
         if polygon_branch:
@@ -393,17 +393,17 @@ def _small_gt(config, place, Gp, first, second, trace, orientation, reading, rnd
             what = f"G_ij(t-1) = {src.name} projected onto {prev.name}"
         if src.at_centre or prev.at_centre:
             trace_entry(trace, alg, base + 3, [prev.name], alg,
-                   f"{what}: the robot at C cannot be projected", branch=branch, round=rnd)
+                        f"{what}: the robot at C cannot be projected", branch=branch, round=rnd)
             return MakeAsymResult("undecided", branch, moves, None)
         proj = radial_projection(src, prev)
         robot, problem = elect_leader_asym_on(trace, alg, base + 3, proj.ring, prev, orientation,
-                                     reading, alg, branch, rnd)
+                                              reading, alg, branch, rnd)
     if robot is None:
         return MakeAsymResult("undecided", branch, moves, None)
     if not move_out(robot, base + 4, branch):
         return MakeAsymResult("undecided", branch, moves, None)
     trace_entry(trace, alg, base + 5, [Gt.name], alg,
-           "Report: an orderable G' where G_t is asymmetric", round=rnd)
+                "Report: an orderable G' where G_t is asymmetric", round=rnd)
     return MakeAsymResult("orderable", branch, moves, _safe_config(place, trace, rnd))
 
 
@@ -426,7 +426,7 @@ def _moved_ring(ring: Ring, place: _Placement) -> Ring:
         return ring
     moved = polygon_from_directions(poly.labels, dirs, poly.polar)
     return new_ring(ring.name, moved, ring.radius_squared, ring.levels, ring.robots,
-                     ring.own)
+                    ring.own)
 
 
 def _move_off_centre(place: _Placement, v: int, towards: int, Gp) -> bool:
@@ -463,8 +463,8 @@ def _check_v_move(trace, place, gi, Gt, v, robot, orientation, reading, rnd):
             res = P.elect_leader_asym(proj.polygon, orientation, reading)
             _, other = first_of_ring_in_ordering(proj.polygon, res, half_gt)
             trace_entry(trace, "MakeAsym", 27, [gi.name, Gt.name], "obs-v-move",
-                   f"with robot {v} half way, the first vertex of {Gt.name} in the ordering "
-                   f"of G_it is robot {other} (robot {robot} with v epsilon apart)",
-                   holds=other == robot, round=rnd)
+                        f"with robot {v} half way, the first vertex of {Gt.name} in the ordering "
+                        f"of G_it is robot {other} (robot {robot} with v epsilon apart)",
+                        holds=other == robot, round=rnd)
     finally:
         place.set_turn(v, saved)

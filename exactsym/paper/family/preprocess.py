@@ -15,7 +15,7 @@ from typing import Sequence
 from .concentric import Ring, is_odd
 from .limits import DEFAULT_LIMITS, Limits, WorkBudgetExceeded
 from .projection import (coincidence_note, could_be_type4, is_type4, radial_projection,
-    radius_less)
+                         radius_less)
 from .trace import trace_entry
 
 
@@ -285,10 +285,10 @@ def preprocess(G: Sequence[Ring], trace: list | None = None, limits: Limits | No
                         new = proj.ring
                         inner, outer = (gi, gj) if radius_less(gi, gj) else (gj, gi)
                         trace_entry(trace, "Preprocess", 9, [gi.name, gj.name, new.name],
-                               "obs-type-4",
-                               f"G_ij = {new.name} ({new.n} vertices) is {why}: replace "
-                               f"{gi.name} and {gj.name} by it (on the circle of {outer.name})"
-                               + coincidence_note(proj), branch="odd-merge-type4")
+                                    "obs-type-4",
+                                    f"G_ij = {new.name} ({new.n} vertices) is {why}: replace "
+                                    f"{gi.name} and {gj.name} by it (on the circle of {outer.name})"
+                                    + coincidence_note(proj), branch="odd-merge-type4")
                         pairs.spend(2 * len(G))
                         G[index_of(G, outer)] = new
                         G.pop(index_of(G, inner))
@@ -308,14 +308,14 @@ def preprocess(G: Sequence[Ring], trace: list | None = None, limits: Limits | No
     except WorkBudgetExceeded as err:
         complete = False
         trace_entry(trace, "Preprocess", None, [g.name for g in G[:8]], "Preprocess",
-               f"Preprocess stopped: its pair scan exceeded the work budget ({err}); G' "
-               f"below holds the merges made so far, and the procedure is reported as not "
-               f"carried out exactly", branch=None, kind="budget")
+                    f"Preprocess stopped: its pair scan exceeded the work budget ({err}); G' "
+                    f"below holds the merges made so far, and the procedure is reported as not "
+                    f"carried out exactly", branch=None, kind="budget")
     if omitted:
         trace_entry(trace, "Preprocess", None, [], "Preprocess",
-               f"{sum(omitted.values())} further entries of the scan omitted ("
-               + ", ".join(f"{v} {k}" for k, v in sorted(omitted.items())) + ")",
-               omitted=dict(sorted(omitted.items())))
+                    f"{sum(omitted.values())} further entries of the scan omitted ("
+                    + ", ".join(f"{v} {k}" for k, v in sorted(omitted.items())) + ")",
+                    omitted=dict(sorted(omitted.items())))
     stats.update(complete=complete, pairs_built=pairs.built, steps=pairs.steps,
                  passes=passes)
     return tuple(G)
@@ -374,13 +374,13 @@ def _preprocess_unfiltered(G: Sequence[Ring], trace: list | None = None) -> tupl
             gi = G[i]
             if gi.at_centre:
                 trace_entry(trace, "Preprocess", 3, [gi.name], "Preprocess",
-                       "the robot at C has no direction: not projected, skipped",
-                       branch="skip-centre")
+                            "the robot at C has no direction: not projected, skipped",
+                            branch="skip-centre")
                 i += 1
                 continue
             if not is_odd(gi):
                 trace_entry(trace, "Preprocess", 12, [gi.name], "Preprocess",
-                       f"{gi.name} has {gi.n} (even) vertices: i++", branch="skip-i-even")
+                            f"{gi.name} has {gi.n} (even) vertices: i++", branch="skip-i-even")
                 i += 1
                 continue
             restart = True
@@ -401,10 +401,10 @@ def _preprocess_unfiltered(G: Sequence[Ring], trace: list | None = None) -> tupl
                     if ok:
                         new = proj.ring
                         trace_entry(trace, "Preprocess", 9, [gi.name, gj.name, new.name],
-                               "obs-type-4",
-                               f"G_ij = {new.name} ({new.n} vertices) is {why}: replace "
-                               f"{gi.name} and {gj.name} by it (on the circle of {outer.name})"
-                               + coincidence_note(proj), branch="odd-merge-type4")
+                                    "obs-type-4",
+                                    f"G_ij = {new.name} ({new.n} vertices) is {why}: replace "
+                                    f"{gi.name} and {gj.name} by it (on the circle of {outer.name})"
+                                    + coincidence_note(proj), branch="odd-merge-type4")
                         G[index_of(G, outer)] = new
                         G.pop(index_of(G, inner))
                         gi = new
@@ -416,14 +416,14 @@ def _preprocess_unfiltered(G: Sequence[Ring], trace: list | None = None) -> tupl
                                     + coincidence_note(proj) + ")")
                 if rejected:
                     trace_entry(trace, "Preprocess", 10, [gi.name], "Preprocess",
-                           "G_ij is not type 4 for G_j = " + "; ".join(rejected[:12])
-                           + (f"; ... ({len(rejected)} in all)" if len(rejected) > 12 else "")
-                           + ": j++", branch="odd-pair-not-type4")
+                                "G_ij is not type 4 for G_j = " + "; ".join(rejected[:12])
+                                + (f"; ... ({len(rejected)} in all)" if len(rejected) > 12 else "")
+                                + ": j++", branch="odd-pair-not-type4")
                 if skipped:
                     trace_entry(trace, "Preprocess", 11, [gi.name], "Preprocess",
-                           f"j = i or G_j even: j++ past {', '.join(skipped[:12])}"
-                           + (f", ... ({len(skipped)} in all)" if len(skipped) > 12 else ""),
-                           branch="skip-j-even-or-same")
+                                f"j = i or G_j even: j++ past {', '.join(skipped[:12])}"
+                                + (f", ... ({len(skipped)} in all)" if len(skipped) > 12 else ""),
+                                branch="skip-j-even-or-same")
             i += 1
     return tuple(G)
 

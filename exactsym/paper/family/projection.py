@@ -82,8 +82,8 @@ def radial_projection(source: Ring, target: Ring, name: str | None = None) -> Pr
         order = [where[lab] for lab in poly.labels]
     levels = tuple(sorted(set(source.levels) | set(target.levels)))
     robots = tuple(dict.fromkeys(source.robots + target.robots))
-    ring = Ring(name or polygon_name(levels), poly, target.radius_squared, levels, robots, target.own,
-                tuple(order))
+    ring = Ring(name or polygon_name(levels), poly, target.radius_squared, levels, robots,
+                target.own, tuple(order))
     return Projection(ring, tuple(coincident))
 
 

@@ -32,7 +32,7 @@ BRANCHES = {
 
 
 def trace_entry(trace: list, algorithm: str, line, polygons, statement: str, detail: str,
-           **extra) -> dict:
+                **extra) -> dict:
     e = {"algorithm": algorithm, "line": line, "polygons": list(polygons),
          "statement": statement, "detail": detail}
     e.update({k: v for k, v in extra.items() if v is not None})

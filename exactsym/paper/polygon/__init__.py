@@ -43,16 +43,17 @@ from __future__ import annotations
 from __future__ import annotations
 
 from .strings import (cw_string, acw_string, cw_string_edge, acw_string_edge, vertex_strings,
-    edge_strings, string_classes, string_classes_reference, perpendicular)
+                      edge_strings, string_classes, string_classes_reference, perpendicular)
 from .definitions import (is_straight_symmetric, is_skew_symmetric, is_symmetric,
-    definition_mirrors, theorem1_asymmetric, theorem1_1_asymmetric, theorem1_violations)
+                          definition_mirrors, theorem1_asymmetric, theorem1_1_asymmetric,
+                          theorem1_violations)
 from .types import (vertex_palindromes, edge_palindromes, StraightLine, straight_lines,
-    is_regular, is_prime, TypeVerdict, polygon_type)
-from .check_symmetry import (CheckResult, check_symmetry_odd, check_symmetry_even,
-    check_symmetry, check_symmetry_odd_reference, check_symmetry_even_reference,
-    check_symmetry_odd_literal)
+                    is_regular, is_prime, TypeVerdict, polygon_type)
+from .check_symmetry import (CheckResult, check_symmetry_odd, check_symmetry_even, check_symmetry,
+                             check_symmetry_odd_reference, check_symmetry_even_reference,
+                             check_symmetry_odd_literal)
 from .leaders import (SymLeader, elect_leader_sym, MoveResult, make_sym_to_asym, AsymLeader,
-    elect_leader_asym, remove_vertex, reflect_polygon)
+                      elect_leader_asym, remove_vertex, reflect_polygon)
 
 __all__ = [
     "cw_string",

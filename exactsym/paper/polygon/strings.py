@@ -123,7 +123,7 @@ def gap_classes(polygon: CirclePolygon):
     ids: dict = {}
     n = polygon.n
     h = [ids.setdefault(ccw_gap_key(polygon.polar, polygon.directions[b],
-                                       polygon.directions[(b + 1) % n]), len(ids) + 1)
+                                    polygon.directions[(b + 1) % n]), len(ids) + 1)
          for b in range(n)]
     return ids, h
 

@@ -9,8 +9,8 @@ from dataclasses import dataclass
 from ...exact import fmpq, normal_turn
 from ..circle_polygon import CirclePolygon
 from ..keys import ccw_gap_key, line_value
-from .strings import (HASH_BASE, HASH_MOD, Hasher, cw_string_edge, gap_classes,
-    perpendicular, string_classes, vertex_strings)
+from .strings import (HASH_BASE, HASH_MOD, Hasher, cw_string_edge, gap_classes, perpendicular,
+                      string_classes, vertex_strings)
 
 
 def vertex_palindromes(polygon: CirclePolygon) -> list[int]:
