@@ -1,6 +1,6 @@
 """Errors a user can cause. Each names where in the input it happened.
 
-Exit code 2 of the command line (``../shared/spec/cli-1.md``) is exactly "an
+Exit code 2 of the command line (``docs/cli.md``) is exactly "an
 :class:`InputError` was raised"; anything else reaching the user is a bug.
 """
 

@@ -1,5 +1,5 @@
 """Tokenizer and recursive-descent parser for the expressions of configuration
-format 1 (``../shared/spec/config-format-1.md``, ``docs/format.md``).
+format 1 (``docs/format.md``).
 
 Grammar, loosest binding first::
 

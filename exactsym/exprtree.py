@@ -1,4 +1,4 @@
-"""Expression trees of the configuration format (``../shared/spec/config-format-1.md``).
+"""Expression trees of the configuration format (``docs/format.md``).
 
 The parser (:mod:`exactsym.expr`) builds them; the number kernel
 (:mod:`exactsym.exact`) evaluates them.  Nothing here evaluates Python code.

@@ -1,5 +1,4 @@
-"""Reading configuration files (format 1, ``../shared/spec/config-format-1.md`` and
-``docs/format.md``) into an unevaluated description.
+"""Reading configuration files (format 1, ``docs/format.md``) into an unevaluated description.
 
 The expressions are parsed (:mod:`exactsym.expr`) but not evaluated: the number
 kernel evaluates them and checks what needs exact numbers (distinct points,

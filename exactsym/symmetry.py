@@ -1,6 +1,6 @@
 """Ground truth: the symmetry group of a configuration as a finite subgroup of O(2).
 
-Independent of the paper's algorithms (``../shared/style.md``: ground truth and
+Independent of the paper's algorithms (``docs/architecture.md``: ground truth and
 paper-faithful code never share logic).  Every isometry mapping a finite set P
 onto itself fixes the centre C of its smallest enclosing circle (the SEC of P is
 unique, so it is mapped onto itself).  About C, the points of P lie on *rays*;
@@ -91,7 +91,7 @@ class _Layout:
 @dataclass(frozen=True)
 class SymmetryGroup:
     """The symmetry group of a configuration (``exactsym check``: ``group``, ``orderable``,
-    ``ordering``, ``leader`` of ``../shared/spec/cli-1.md``).
+    ``ordering``, ``leader`` of ``docs/cli.md``).
 
     ``name``: ``"Ck"`` (k rotations, no mirror), ``"Dk"`` (k rotations, k mirrors)
     or ``"O2"`` for a single point (then ``rotations == mirrors == 0`` stand for
@@ -330,7 +330,7 @@ def _cartesian_rays(points, centre, integers: bool | None = None):
 def symmetry_group(config: Configuration, rings: Levels | None = None) -> SymmetryGroup:
     """The symmetry group of ``config`` (all isometries of the plane mapping its point
     set onto itself), with the canonical ordering and the leader of
-    ``../shared/spec/cli-1.md``.  ``rings`` (from :func:`exactsym.levels.levels_of`) is
+    ``docs/cli.md``.  ``rings`` (from :func:`exactsym.levels.levels_of`) is
     computed when not given.  O(n log n) exact operations; never raises on a valid
     configuration.
 

@@ -1,7 +1,7 @@
 """Exact real numbers: the rationals and real elements of one number field.
 
 This module owns exactness for the whole project (the CGAL "kernel" of
-``../shared/style.md``): algorithms only use ``+ - * /``, ``**`` with an integer,
+``docs/architecture.md``): algorithms only use ``+ - * /``, ``**`` with an integer,
 ``== < <= > >=``, :func:`sign` and ``hash`` on the numbers it makes, never floats.
 
 * Rationals are python-flint ``fmpq`` (about 9 times faster than ``Fraction``).

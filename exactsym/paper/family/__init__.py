@@ -9,7 +9,7 @@ and :mod:`.trace`; this package re-exports their public names.
 Section 3 from ``def-sym-pair`` to ``cor-Pasym-Pord`` and the algorithms of Section 4
 that work on G: ``ElectLeader``, ``Preprocess``, ``MakeAsym`` (with the helpers it names
 but does not give, ``FindAsymmetry`` and ``Find_Asymmetry_Pair``) and the decision of
-``GatheringPattern``.  Single polygons are :mod:`.polygon`'s business (Check_Symmetry_*,
+``GatheringPattern``.  Single polygons are :mod:`exactsym.paper.polygon`'s business (Check_Symmetry_*,
 Elect_Leader_Sym, Make_SymToAsym, Elect_Leader_Asym, polygon types); this module calls
 them and never re-implements them.  It never imports the ground truth
 (:mod:`exactsym.symmetry`): the audit (:mod:`exactsym.audit`) compares the two.
@@ -22,10 +22,10 @@ Lines of symmetry and "common line" (``def-sym-pair``, ``def-sym-calG``)
     (``lemma-LOS-Passes-CenterSECP``), so it is a direction modulo half a turn and is
     held as an exact *line key*: on the polar path the turn of the line in [0, 1/2), on
     the Cartesian path the ray of the doubled angle (the keys of
-    :func:`.polygon.definition_mirrors`).  :func:`lines_of_symmetry` returns
+    :func:`exactsym.paper.polygon.definition_mirrors`).  :func:`lines_of_symmetry` returns
 
     * :data:`ALL_LINES` when the polygon is skew symmetric (the half-turn about C maps it
-      onto itself, :func:`.polygon.is_skew_symmetric`): by ``lem-skew-los`` *every* line
+      onto itself, :func:`exactsym.paper.polygon.is_skew_symmetric`): by ``lem-skew-los`` *every* line
       through C is then a line of (skew) symmetry; likewise for the robot at C (a
       singleton: ``def-symmetric-conf`` says every line through it is a line of symmetry);
     * otherwise the finite set of its lines of straight symmetry (exact mirrors, from the

@@ -104,7 +104,7 @@ def new_ring(name, polygon, radius_squared, levels, robots, own, keys=()) -> Rin
 def concentric_polygons(config: Configuration, ring_data: Levels | None = None) -> tuple:
     """G_1, ..., G_t of ``config`` (Section 3: "Elements of G are sorted according to
     their distances from the center"), as :class:`Ring`\\ s with tuple labels (the
-    polygons of :func:`.circle_polygon.level_polygon`, labels wrapped in tuples)."""
+    polygons of :func:`exactsym.paper.circle_polygon.level_polygon`, labels wrapped in tuples)."""
     ring_data = ring_data if ring_data is not None else levels_of(config)
     out = []
     polar = ring_data.polar
@@ -134,7 +134,7 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None) 
 
 def mirror_lines(poly: CirclePolygon, seq: list | None = None) -> list:
     """The lines of straight symmetry of ``poly`` (``def-straight-symmetric-poly``), as
-    the line keys of :func:`.polygon.definition_mirrors`, in O(n) after the angular
+    the line keys of :func:`exactsym.paper.polygon.definition_mirrors`, in O(n) after the angular
     order: a reflection maps v_i to v_{s-i} iff the counter-clockwise gap sequence g
     satisfies g_i = g_{s-1-i} for all i, i.e. iff g occurs in the doubled reversed
     sequence (exact ids, KMP); its axis bisects v_0 and v_s.  The line through both
@@ -159,7 +159,7 @@ def mirror_lines(poly: CirclePolygon, seq: list | None = None) -> list:
 
 def centrally_symmetric(poly: CirclePolygon, seq: list | None = None) -> bool:
     """``def-skew-symmetric-poly`` (the half-turn about C maps the polygon onto itself, as
-    :func:`.polygon.is_skew_symmetric` reads it), in O(n): n even and the gap sequence
+    :func:`exactsym.paper.polygon.is_skew_symmetric` reads it), in O(n): n even and the gap sequence
     has period n/2 (then n/2 consecutive gaps make half a turn)."""
     n = poly.n
     if n < 2 or n % 2:

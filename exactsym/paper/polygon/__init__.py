@@ -19,7 +19,7 @@ v_1, ..., v_n" (n = k-1 for a vertex m, n = k for a point m on an edge) and
 counter-clockwise, so for the observer of ``orientation = +1`` (same handedness
 as the file's axes) "next clockwise" is the previous index; an observer of the
 other handedness (``orientation = -1``) swaps CW and ACW.  Distances are exact
-*keys* (:mod:`.circle_polygon`): strictly increasing maps preserve equality and
+*keys* (:mod:`exactsym.paper.circle_polygon`): strictly increasing maps preserve equality and
 lexicographic order, which is all the paper uses.  For m on an edge we take the
 edge's midpoint (where the edge's perpendicular bisector meets the polygon).
 
