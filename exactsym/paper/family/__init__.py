@@ -9,9 +9,9 @@ and :mod:`.trace`; this package re-exports their public names.
 Section 3 from ``def-sym-pair`` to ``cor-Pasym-Pord`` and the algorithms of Section 4
 that work on G: ``ElectLeader``, ``Preprocess``, ``MakeAsym`` (with the helpers it names
 but does not give, ``FindAsymmetry`` and ``Find_Asymmetry_Pair``) and the decision of
-``GatheringPattern``.  Single polygons are :mod:`exactsym.paper.polygon`'s business (Check_Symmetry_*,
-Elect_Leader_Sym, Make_SymToAsym, Elect_Leader_Asym, polygon types); this module calls
-them and never re-implements them.  It never imports the ground truth
+``GatheringPattern``.  Single polygons are :mod:`exactsym.paper.polygon`'s business
+(Check_Symmetry_*, Elect_Leader_Sym, Make_SymToAsym, Elect_Leader_Asym, polygon types); this
+package calls them and never re-implements them.  It never imports the ground truth
 (:mod:`exactsym.symmetry`): the audit (:mod:`exactsym.audit`) compares the two.
 
 Every reading chosen where the paper is ambiguous is listed in
@@ -25,8 +25,8 @@ Lines of symmetry and "common line" (``def-sym-pair``, ``def-sym-calG``)
     :func:`exactsym.paper.polygon.definition_mirrors`).  :func:`lines_of_symmetry` returns
 
     * :data:`ALL_LINES` when the polygon is skew symmetric (the half-turn about C maps it
-      onto itself, :func:`exactsym.paper.polygon.is_skew_symmetric`): by ``lem-skew-los`` *every* line
-      through C is then a line of (skew) symmetry; likewise for the robot at C (a
+      onto itself, :func:`exactsym.paper.polygon.is_skew_symmetric`): by ``lem-skew-los``
+      *every* line through C is then a line of (skew) symmetry; likewise for the robot at C (a
       singleton: ``def-symmetric-conf`` says every line through it is a line of symmetry);
     * otherwise the finite set of its lines of straight symmetry (exact mirrors, from the
       definition; a single vertex has exactly the line through C and it, the paper's

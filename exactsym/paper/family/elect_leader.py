@@ -73,9 +73,9 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
 
     Lines 1-3: Check_Symmetry_Even/Odd(G_1).  Line 4: "G_1 is symmetric with degree of
     symmetry one and the line passes through a single vertex or two vertices" -- exactly
-    when :func:`exactsym.paper.polygon.elect_leader_sym` elects a leader; then Make_SymToAsym(G_1) and
-    Elect_Leader_Asym on the moved G_1.  Line 8: G_1 asymmetric (as Check_Symmetry
-    reports): Elect_Leader_Asym(G_1).  Line 11-12: G_1t (G_1 projected onto G_t's
+    when :func:`exactsym.paper.polygon.elect_leader_sym` elects a leader; then
+    Make_SymToAsym(G_1) and Elect_Leader_Asym on the moved G_1.  Line 8: G_1 asymmetric (as
+    Check_Symmetry reports): Elect_Leader_Asym(G_1).  Line 11-12: G_1t (G_1 projected onto G_t's
     circle) and Elect_Leader_Asym(G_1t); the output must be "a leader vertex from G_1":
     the first vertex of G_1 in the ordering of G_1t.  The robot at C as G_1 is a single
     vertex with CW = ACW = (): it is elected (it cannot move on a circle of radius 0)."""

@@ -102,8 +102,8 @@ def robot_in(label: tuple, ring: Ring) -> int | None:
 
 
 def is_type4(ring: Ring) -> tuple[bool, str]:
-    """Whether the polygon is a type 4 polygon (:func:`exactsym.paper.polygon.polygon_type`), with the
-    verdict's text.  When the Cartesian edge points cannot be built exactly (vectors of
+    """Whether the polygon is a type 4 polygon (:func:`exactsym.paper.polygon.polygon_type`),
+    with the verdict's text.  When the Cartesian edge points cannot be built exactly (vectors of
     unequal lengths whose ratio is not a rational square) the definition is applied to
     the vertex strings only (for an odd polygon every line of straight symmetry passes
     through exactly one vertex, whose even-length string is then a palindrome)."""
@@ -126,9 +126,9 @@ def is_type4(ring: Ring) -> tuple[bool, str]:
 
 @lru_cache(maxsize=4096)
 def could_be_type4(m: int) -> bool:
-    """A type 4 polygon has an odd, composite number of vertices (:func:`exactsym.paper.polygon.polygon_type`:
-    "odd, n not prime"; and ``is_type4``'s vertex-string test requires the same), so at
-    least 9."""
+    """A type 4 polygon has an odd, composite number of vertices
+    (:func:`exactsym.paper.polygon.polygon_type`: "odd, n not prime"; and ``is_type4``'s
+    vertex-string test requires the same), so at least 9."""
     return m >= 9 and m % 2 == 1 and not P.is_prime(m)
 
 
