@@ -240,6 +240,19 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
                     branch=branch, round=rnd)
         return True
 
+    def elect_on_gt_and_move(projected: Ring, line: int, statement: str, branch: str,
+                             family: str) -> MakeAsymResult:
+        """Lines 4-6 / 16-18 (|G_t| > 3): Elect_Leader_Asym on the polygon projected onto
+        G_t's circle, move the first robot of G_t in its ordering by epsilon, report."""
+        robot, _ = elect_leader_asym_on(trace, alg, line, projected, Gt, orientation, reading,
+                                        statement, branch, rnd)
+        if robot is None:
+            return MakeAsymResult("undecided", branch, moves, None)
+        move_eps(robot, line + 1, branch, accept_asym(t - 1), f"{Gt.name} asymmetric")
+        trace_entry(trace, alg, line + 2, [Gt.name], alg,
+                    f"Report: an orderable {family} where G_t is asymmetric", round=rnd)
+        return MakeAsymResult("orderable", branch, moves, _safe_config(place, trace, rnd))
+
     a = find_asymmetry(Gp)
     trace_entry(trace, alg, 1, few_names(Gp), "lem-one-pair-asym-ord",
                 f"FindAsymmetry(G'): {'found ' + Gp[a].name if a is not None else 'none'}",
@@ -247,16 +260,8 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
     if a is not None:
         Ga = Gp[a]
         if Gt.n > 3:
-            branch = "asym-polygon-large"
-            proj = radial_projection(Ga, Gt)
-            robot, problem = elect_leader_asym_on(trace, alg, 4, proj.ring, Gt, orientation,
-                                                  reading, "lem-one-pair-asym-ord", branch, rnd)
-            if robot is None:
-                return MakeAsymResult("undecided", branch, moves, None)
-            move_eps(robot, 5, branch, accept_asym(t - 1), f"{Gt.name} asymmetric")
-            trace_entry(trace, alg, 6, [Gt.name], alg,
-                        "Report: an orderable G' where G_t is asymmetric", round=rnd)
-            return MakeAsymResult("orderable", branch, moves, _safe_config(place, trace, rnd))
+            return elect_on_gt_and_move(radial_projection(Ga, Gt).ring, 4,
+                                        "lem-one-pair-asym-ord", "asym-polygon-large", "G'")
         return _small_gt(config, place, Gp, Ga, None, trace, orientation, reading, rnd, moves,
                          move_out, polygon_branch=True)
     limits = limits if limits is not None else DEFAULT_LIMITS
@@ -274,17 +279,9 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
     if pair is not None:
         gi, gj = Gp[pair[0]], Gp[pair[1]]
         if Gt.n > 3:
-            branch = "asym-pair-large"
             gij = radial_projection(gi, gj).ring if not gi.at_centre else gj
-            gijt = radial_projection(gij, Gt).ring
-            robot, problem = elect_leader_asym_on(trace, alg, 16, gijt, Gt, orientation, reading,
-                                                  "lem-all-pair-asym-ord", branch, rnd)
-            if robot is None:
-                return MakeAsymResult("undecided", branch, moves, None)
-            move_eps(robot, 17, branch, accept_asym(t - 1), f"{Gt.name} asymmetric")
-            trace_entry(trace, alg, 18, [Gt.name], alg,
-                        "Report: an orderable G where G_t is asymmetric", round=rnd)
-            return MakeAsymResult("orderable", branch, moves, _safe_config(place, trace, rnd))
+            return elect_on_gt_and_move(radial_projection(gij, Gt).ring, 16,
+                                        "lem-all-pair-asym-ord", "asym-pair-large", "G")
         return _small_gt(config, place, Gp, gi, gj, trace, orientation, reading, rnd, moves,
                          move_out, polygon_branch=False)
     single = next((k for k, g in enumerate(Gp) if g.n == 1), None)
