@@ -66,7 +66,7 @@ def report_text(analysis: Analysis) -> str:
     return "\n".join(lines)
 
 
-def check_report(config: Configuration, strings: bool = False) -> dict:
+def check_report(config: Configuration, *, strings: bool = False) -> dict:
     """:func:`report_json` of the whole analysis (every part) of ``config``."""
     return report_json(analyse(config, options=Options(strings=strings)))
 

