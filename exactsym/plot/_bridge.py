@@ -141,9 +141,12 @@ def _paper(config, ring, result, centre) -> tuple[Paper, int]:
         polygon = level_polygon(config, ring, k)
         check = paper_polygon.check_symmetry(polygon)
         reach = math.sqrt(_float(level.radius_squared))
+        # the lines as the strings find them (lemma-straight-sym), when the test reports
+        # straight symmetry at all (Check_Symmetry_Even may report skew only)
         straight = tuple(Line(f"G{k + 1}", centre, _line_angle(line.key, polygon.polar),
                               reach, "straight", line.key)
-                         for line in paper_polygon.straight_lines(polygon))
+                         for line in paper_polygon.straight_lines(polygon)) \
+            if check.straight else ()
         labels = polygon.labels
         n = len(labels)
         pairs = tuple((labels[i], labels[i + n // 2]) for i in range(n // 2)) \

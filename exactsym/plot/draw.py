@@ -147,22 +147,24 @@ def _draw(fig, scene: Scene, show_paper: bool, show_audit: bool) -> None:
 
     # ground truth: mirrors and rotation
     for j, line in enumerate(scene.mirrors):
-        _line(ax, line, color=COLOURS["mirror"], lw=1.1, ls="-", gid=f"mirror-{j}", zorder=2)
+        _line(ax, line, color=COLOURS["mirror"], lw=3.0, alpha=0.45, ls="-", gid=f"mirror-{j}",
+              zorder=2)
     if scene.mirrors:
         shown = "" if len(scene.mirrors) == scene.mirrors_total else \
             f", {len(scene.mirrors)} drawn"
-        legend(Line2D([], [], color=COLOURS["mirror"], lw=1.1),
+        legend(Line2D([], [], color=COLOURS["mirror"], lw=3.0, alpha=0.45),
                f"mirrors (truth): {scene.mirrors_total}{shown}")
     if scene.rotation is not None:
         k = scene.rotation.order
-        ax.plot([cx], [cy], marker=(max(k, 3), 0, 0) if k < 40 else "o", ms=11,
-                mfc="white", mec=COLOURS["rotation"], mew=1.6, ls="none", gid="centre",
-                zorder=6)
-        ax.annotate(f"{k}", (cx, cy), ha="center", va="center", fontsize=7,
-                    color=COLOURS["rotation"], gid="rotation-order", zorder=7)
-        legend(Line2D([], [], marker=(max(k, 3), 0, 0) if k < 40 else "o", ms=9, mfc="white",
-                      mec=COLOURS["rotation"], ls="none"),
-               f"rotation centre C, order {k} (truth)")
+        marker = _rotation_marker(k)
+        ax.plot([cx], [cy], marker=marker, ms=11, mfc="white", mec=COLOURS["rotation"],
+                mew=1.6, ls="none", gid="centre", zorder=6)
+        ax.annotate(f"k={k}", (cx, cy), xytext=(8, -12), textcoords="offset points",
+                    fontsize=8, color=COLOURS["rotation"], weight="bold",
+                    gid="rotation-order", zorder=7)
+        legend(Line2D([], [], marker=marker, ms=9, mfc="white", mec=COLOURS["rotation"],
+                      mew=1.6, ls="none"),
+               f"rotation centre C, order k = {k} (truth: rotations by 1/{k} turn)")
     else:
         ax.plot([cx], [cy], marker="+", ms=8, color=COLOURS["sec"], ls="none", gid="centre",
                 zorder=6)
@@ -191,6 +193,14 @@ def _draw(fig, scene: Scene, show_paper: bool, show_audit: bool) -> None:
                frameon=False, fontsize=8, handlelength=2.2)
 
 
+def _rotation_marker(k: int):
+    """A marker with the rotation's symmetry where one exists: a thin diamond for k = 2,
+    a regular k-gon for 3 <= k < 13, a circle above."""
+    if k == 2:
+        return "d"
+    return (k, 0, 0) if k < 13 else "o"
+
+
 def _short(text: str, width: int) -> str:
     return text if len(text) <= width else text[:width - 3] + "..."
 
@@ -217,9 +227,10 @@ def _draw_robots(ax, scene: Scene, fat: bool, legend) -> None:
     else:
         rho = 1.0 if fat else _point_radius(scene)
         for r in scene.robots:
+            # fat discs are translucent: the lines through them stay visible
             ax.add_patch(CirclePatch(r.xy, rho, fc=COLOURS["robot"] if fat else COLOURS["point"],
-                                     ec=COLOURS["robot_edge"], lw=0.8, gid=f"robot-{r.index}",
-                                     zorder=4))
+                                     alpha=0.75 if fat else 1.0, ec=COLOURS["robot_edge"],
+                                     lw=0.8, gid=f"robot-{r.index}", zorder=4))
         what = "robots as unit discs (fat)" if fat else "robots (points)"
         legend(Line2D([], [], marker="o", ms=7 if fat else 4,
                       mfc=COLOURS["robot"] if fat else COLOURS["point"],
@@ -242,7 +253,8 @@ def _draw_robots(ax, scene: Scene, fat: bool, legend) -> None:
             legend(Line2D([], [], ls="none", marker="$\\#$", color="#666666", ms=6),
                    "#k: place in the canonical ordering")
     if scene.leader is not None:
-        ax.add_patch(CirclePatch(xy[scene.leader], rho * 1.6 + 0.006 * R, fill=False,
+        ring = rho * 1.2 if fat else rho * 1.6 + 0.006 * R
+        ax.add_patch(CirclePatch(xy[scene.leader], ring, fill=False,
                                  ec=COLOURS["leader"], lw=2.2, gid="leader", zorder=6))
         legend(Line2D([], [], marker="o", ms=9, mfc="none", mec=COLOURS["leader"], mew=2,
                       ls="none"), f"leader (truth): robot {scene.leader}")
@@ -269,7 +281,7 @@ def _draw_paper(ax, scene: Scene, legend) -> None:
                "paper: lines of straight symmetry its tests report (per level)")
     if any_skew:
         legend(Line2D([], [], color=COLOURS["skew"], lw=1.0, ls=(0, (1, 2))),
-               "paper: skew symmetry (half-turn about C) it reports: swapped pairs")
+               "paper: skew symmetry reported (a half-turn about C): the vertex pairs i, i + n/2 it would swap")
     if not any_straight and not any_skew:
         legend(Line2D([], [], ls="none"), "paper: no level symmetric by its tests")
     if paper.leader is not None:
