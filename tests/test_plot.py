@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 
-import exactsym.plot as plot_pkg
+import importlib
+plot_pkg = importlib.import_module("exactsym.plot")
 from exactsym.configuration import Configuration, load
 from exactsym.exact import fmpq as Q
 from exactsym.plot import PlotUnavailable, plot

@@ -196,7 +196,7 @@ def _witness(d: dict, centre, xy, reach) -> tuple:
         turn = fmpq(*map(int, str(w["line"]).split("/"))) if "/" in str(w["line"]) \
             else fmpq(int(w["line"]))
         line = Line("witness", centre, 2 * math.pi * _float(turn), reach, "witness", turn)
-        return ("line", (), (), None, line, f"line at {w['line']} turn")
+        return ("line", (), (), None, line, f"line through C at {w['line']} turn")
     return ("none", (), (), None, None, "no drawable witness; says: " + str(d.get("says", "")))
 
 

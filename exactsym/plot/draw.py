@@ -47,6 +47,7 @@ COLOURS = {
     "sec": "#444444", "level": "#9aa5b1", "robot": "#cfe3f7", "robot_edge": "#1f4e79",
     "point": "#1f4e79", "leader": "#e69f00", "mirror": "#009e73", "rotation": "#009e73",
     "paper": "#cc79a7", "skew": "#56b4e9", "paper_leader": "#cc79a7", "witness": "#d55e00",
+    "witness_line": "#8c7aa9",
 }
 
 
@@ -308,7 +309,12 @@ def _draw_audit(ax, scene: Scene, legend) -> None:
     xy = {r.index: r.xy for r in scene.robots}
     levels = {c.label: c for c in scene.levels}
     styles = ["-", (0, (6, 2)), (0, (2, 2)), (0, (6, 2, 2, 2))]
-    for j, w in enumerate(scene.audit):
+    # the symmetries the paper misses first and boldest; lines of merged polygons
+    # (G_ij) thin and grey; statements with nothing to draw last
+    priority = {"rotation": 0, "mirror": 1, "robots": 2, "levels": 3, "line": 4, "none": 5}
+    order = sorted(range(len(scene.audit)), key=lambda j: priority.get(scene.audit[j].kind, 9))
+    for j in order:
+        w = scene.audit[j]
         label = f"{_statements(w.statements)}: {_short(w.text, 100)}"
         gid = f"witness-{j}"
         ls = styles[j % len(styles)]
@@ -330,9 +336,12 @@ def _draw_audit(ax, scene: Scene, legend) -> None:
                                          color=COLOURS["witness"], lw=0, gid=f"{gid}-head",
                                          zorder=7))
             legend(Line2D([], [], color=COLOURS["witness"], lw=1.8, ls=ls), label)
-        elif w.kind in ("mirror", "line"):
+        elif w.kind == "mirror":
             _line(ax, w.line, color=COLOURS["witness"], lw=1.8, ls=ls, gid=gid, zorder=7)
             legend(Line2D([], [], color=COLOURS["witness"], lw=1.8, ls=ls), label)
+        elif w.kind == "line":
+            _line(ax, w.line, color=COLOURS["witness_line"], lw=0.9, ls=ls, gid=gid, zorder=3)
+            legend(Line2D([], [], color=COLOURS["witness_line"], lw=0.9, ls=ls), label)
         elif w.kind == "robots":
             for i, r in enumerate(w.robots):
                 ax.add_patch(CirclePatch(xy[r], 0.06 * R, fill=False, lw=1.8, ls=ls,
@@ -353,4 +362,4 @@ def _draw_audit(ax, scene: Scene, legend) -> None:
 
 def _statements(labels) -> str:
     labels = list(labels)
-    return ", ".join(labels[:3]) + (f" +{len(labels) - 3}" if len(labels) > 3 else "")
+    return ", ".join(labels[:5]) + (f" +{len(labels) - 5} more" if len(labels) > 5 else "")
