@@ -238,3 +238,33 @@ def test_missing_matplotlib_names_the_plot_extra(monkeypatch, capsys, tmp_path):
 def test_docstring_examples_run():
     result = doctest.testmod(plot_pkg, optionflags=doctest.ELLIPSIS)
     assert result.attempted >= 4 and result.failed == 0
+
+
+def test_many_mirrors_are_not_painted_as_a_disc(tmp_path):
+    turns = ", ".join(f'{{ r = "1", turn = "{k}/30" }}' for k in range(30))
+    case = tmp_path / "thirty.toml"
+    case.write_text(f'format = 1\nname = "regular 30-gon"\npoints = [{turns}]\n')
+    out = tmp_path / "thirty.svg"
+    plot(case, out)
+    ids = _svg(out)
+    assert _ids(ids, "mirror-") == ["mirror-0"] and len(_ids(ids, "robot-")) == 30
+    text = " ".join("".join(t.itertext()) for t in ET.parse(out).getroot().iter(f"{SVG}text"))
+    assert "30, 1 drawn" in text and "k=30" in text
+
+
+def test_paper_skew_claim_is_drawn_as_the_pairs_it_would_swap(tmp_path):
+    """d3-hexagon: Check_Symmetry_Even reports skew symmetry only; the pairs i, i + 3 it
+    would swap are drawn, and (the hexagon has no half-turn) they miss the centre."""
+    out = tmp_path / "d3.svg"
+    plot(CASES / "discrepancies/d3-hexagon.toml", out, show_paper=True)
+    ids = _svg(out)
+    assert not any(i.startswith("paper-line-") for i in ids)
+    skew = sorted(i for i in ids if i.startswith("paper-skew-"))
+    assert skew == ["paper-skew-G1-0", "paper-skew-G1-1", "paper-skew-G1-2"]
+    centre = _centre(ids["sec"])
+    misses = 0
+    for i in skew:
+        (ax, ay), (bx, by) = _path_points(ids[i])[:2]
+        mid = np.array([(ax + bx) / 2, (ay + by) / 2])
+        misses += not np.allclose(mid, centre, atol=0.5)
+    assert misses >= 2

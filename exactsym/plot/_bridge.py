@@ -26,8 +26,9 @@ from .scene import Circle, Line, Paper, PaperLevel, Robot, Rotation, Scene, Witn
 
 __all__ = ["scene_of", "load_configuration", "Configuration", "InputError"]
 
-#: At most this many ground-truth mirrors are drawn (a regular 1000-gon has 1000).
-MAX_MIRRORS = 72
+#: Up to this many ground-truth mirrors are all drawn; above, only the first (a regular
+#: 1000-gon has 1000: drawn, they would paint a disc).
+MAX_MIRRORS = 24
 #: The paper's per-level tests are drawn for at most this many levels of at most
 #: :data:`MAX_PAPER_VERTICES` vertices (the rest are listed as not drawn).
 MAX_PAPER_LEVELS = 60
@@ -88,7 +89,8 @@ def scene_of(config: Configuration, *, show_paper: bool = False,
 
     mirrors, total = _mirrors(group, centre, sec_r)
     rotation = Rotation(centre, group.rotations) if group.rotations > 1 else None
-    title = config.name or str(config.source)
+    title = config.name or (str(config.source) if not str(config.source).startswith("<")
+                            else "configuration")
     notes = []
     paper = witnesses = None
     if show_paper or show_audit:
@@ -96,9 +98,9 @@ def scene_of(config: Configuration, *, show_paper: bool = False,
         if show_paper:
             paper, skipped = _paper(config, ring, result, centre)
             if skipped:
-                notes.append(f"paper's tests not drawn on {skipped} level(s) "
-                             f"(more than {MAX_PAPER_LEVELS} levels or "
-                             f"{MAX_PAPER_VERTICES} vertices)")
+                notes.append(f"paper's tests not drawn on {skipped} level(s): past the "
+                             f"first {MAX_PAPER_LEVELS}, or over {MAX_PAPER_VERTICES} "
+                             "vertices")
         if show_audit:
             found = run_audit(config, ring, result)
             witnesses = _witnesses(found["discrepancies"], centre, xy, sec_r)
@@ -124,7 +126,7 @@ def _mirrors(group, centre, reach) -> tuple[tuple[Line, ...], int]:
         first = math.atan2(_float(s), _float(c)) / 2
         exact = g.matrix
     lines = []
-    for j in range(min(m, MAX_MIRRORS)):
+    for j in range(m if m <= MAX_MIRRORS else 1):
         lines.append(Line("mirror", centre, first + j * math.pi / m, reach, "mirror",
                           exact if j == 0 else None))
     return tuple(lines), m

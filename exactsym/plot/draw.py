@@ -152,7 +152,8 @@ def _draw(fig, scene: Scene, show_paper: bool, show_audit: bool) -> None:
               zorder=2)
     if scene.mirrors:
         shown = "" if len(scene.mirrors) == scene.mirrors_total else \
-            f", {len(scene.mirrors)} drawn"
+            f", {len(scene.mirrors)} drawn (the others: multiples of 1/{2 * scene.mirrors_total}" \
+            " turn from it)"
         legend(Line2D([], [], color=COLOURS["mirror"], lw=3.0, alpha=0.45),
                f"mirrors (truth): {scene.mirrors_total}{shown}")
     if scene.rotation is not None:
@@ -189,7 +190,7 @@ def _draw(fig, scene: Scene, show_paper: bool, show_audit: bool) -> None:
     fig.text(0.01, 0.925, f"n = {scene.n}, model {scene.model}; {group}", fontsize=9,
              va="top")
     for k, note in enumerate(scene.notes):
-        fig.text(0.58, 0.02 + 0.025 * k, _short(note, 70), fontsize=7)
+        fig.text(0.58, 0.02 + 0.025 * k, textwrap.fill(note, 75), fontsize=7)
     fig.legend(handles=handles, loc="upper left", bbox_to_anchor=(0.57, 0.9),
                frameon=False, fontsize=8, handlelength=2.2)
 
@@ -283,8 +284,10 @@ def _draw_paper(ax, scene: Scene, legend) -> None:
     if any_skew:
         legend(Line2D([], [], color=COLOURS["skew"], lw=1.0, ls=(0, (1, 2))),
                "paper: skew symmetry reported (a half-turn about C): the vertex pairs i, i + n/2 it would swap")
-    if not any_straight and not any_skew:
-        legend(Line2D([], [], ls="none"), "paper: no level symmetric by its tests")
+    if not paper.levels:
+        legend(Line2D([], [], ls="none"), "paper's tests: not drawn (see the note below)")
+    elif not any_straight and not any_skew:
+        legend(Line2D([], [], ls="none"), "paper: no level drawn is symmetric by its tests")
     if paper.leader is not None:
         R = _scale(scene)
         s = 0.07 * R if scene.model != "fat" else 2.6
