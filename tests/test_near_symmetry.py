@@ -59,6 +59,15 @@ def test_the_bound_is_tight_enough_to_be_false_for_a_smaller_one():
                    for (x, y), (qx, qy) in zip(config.points, hint.candidate.points))
 
 
+def test_the_shipped_decimal_hexagon_case():
+    from pathlib import Path
+    from exactsym.configuration import load
+    config = load(Path(__file__).resolve().parent.parent / "cases/examples/decimal-hexagon.toml")
+    hint = near_symmetry_hint(config)
+    assert (hint.exact_group, hint.candidate_group, hint.bound) == ("D2", "D6", Q(5, 10 ** 7))
+    assert _proved(config, hint)
+
+
 def test_moved_pentagon_and_heptagon():
     """Metamorphic: an exact rotation (3/5, 4/5) and a translation keep the hint."""
     for k in (5, 7):
