@@ -115,6 +115,8 @@ def _propose(P, c, tol, n, exact_order):
     at_centre = int((((P - c) ** 2).sum(1) < tol * tol).sum())
     best = None
     for k in range(n, 0, -1):
+        if best is not None and 2 * k <= best[0]:
+            break                   # neither C_k nor D_k beats the C_k' found
         if 2 * k <= exact_order or (n - at_centre) % k:
             continue
         rho = _match(P, _float_rotation(P, c, k), tol) if k > 1 else list(range(n))
@@ -139,8 +141,6 @@ def _propose(P, c, tol, n, exact_order):
                 return (k, rho, phi, sigma)
         if k > exact_order and best is None:
             best = (k, rho, None, None)
-        if best is not None and 2 * k <= best[0]:
-            break
     return best
 
 

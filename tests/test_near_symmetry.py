@@ -78,6 +78,19 @@ def test_moved_pentagon_and_heptagon():
         assert float(hint.bound) < 1e-5 and _proved(config, hint)
 
 
+def test_decimal_chiral_nine_gon_is_near_c3_without_a_mirror():
+    pts = []
+    for r, t in [(4, 0), (4, 1 / 3), (4, 2 / 3), (3, 1 / 10), (3, 13 / 30), (3, 23 / 30),
+                 (2, 1 / 4), (2, 7 / 12), (2, 11 / 12)]:
+        x, y = (Fraction(round(r * f(2 * math.pi * t), 6)).limit_denominator(10 ** 6)
+                for f in (math.cos, math.sin))
+        pts.append((Q(x.numerator, x.denominator), Q(y.numerator, y.denominator)))
+    config = Configuration.from_points(pts)
+    hint = near_symmetry_hint(config)
+    assert (hint.exact_group, hint.candidate_group) == ("C1", "C3")
+    assert float(hint.bound) < 1e-6 and _proved(config, hint)
+
+
 def test_no_hint_when_exactly_symmetric_or_far_from_symmetry():
     square = Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -1)])
     assert near_symmetry_hint(square) is None
