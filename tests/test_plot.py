@@ -14,8 +14,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 
-import importlib
-plot_pkg = importlib.import_module("exactsym.plot")
+import exactsym.plot as plot_pkg
 from exactsym.configuration import Configuration, load
 from exactsym.exact import fmpq as Q
 from exactsym.plot import PlotUnavailable, plot
