@@ -246,14 +246,15 @@ def _draw_robots(ax, scene: Scene, fat: bool, legend) -> None:
                 ax.text(x, y, str(r.index), ha="center", va="center", fontsize=size,
                         gid=f"label-{r.index}", zorder=5)
             else:
-                ax.annotate(str(r.index), (x, y), xytext=(4, 4), textcoords="offset points",
+                # offset past the rings drawn around a robot (leader, witnesses)
+                ax.annotate(str(r.index), (x, y), xytext=(9, 8), textcoords="offset points",
                             fontsize=size, gid=f"label-{r.index}", zorder=5)
             if r.rank is not None:
-                ax.annotate(f"#{r.rank}", (x, y), xytext=(4, -10), textcoords="offset points",
-                            fontsize=6, color="#666666", gid=f"rank-{r.index}", zorder=5)
+                ax.annotate(f"#{r.rank}", (x, y), xytext=(9, -14), textcoords="offset points",
+                            fontsize=7, color="#555555", gid=f"rank-{r.index}", zorder=5)
         if any(r.rank is not None for r in scene.robots):
-            legend(Line2D([], [], ls="none", marker="$\\#$", color="#666666", ms=6),
-                   "#k: place in the canonical ordering")
+            legend(Line2D([], [], ls="none"), "#k beside a robot: its place in the canonical "
+                   "ordering (truth)")
     if scene.leader is not None:
         ring = rho * 1.2 if fat else rho * 1.6 + 0.006 * R
         ax.add_patch(CirclePatch(xy[scene.leader], ring, fill=False,
@@ -347,7 +348,7 @@ def _draw_audit(ax, scene: Scene, legend) -> None:
             legend(Line2D([], [], color=COLOURS["witness_line"], lw=0.9, ls=ls), label)
         elif w.kind == "robots":
             for i, r in enumerate(w.robots):
-                ax.add_patch(CirclePatch(xy[r], 0.06 * R, fill=False, lw=1.8, ls=ls,
+                ax.add_patch(CirclePatch(xy[r], 0.05 * R, fill=False, lw=1.8, ls=ls,
                                          ec=COLOURS["witness"], gid=f"{gid}-{i}", zorder=7))
             legend(Line2D([], [], marker="o", ms=10, mfc="none", mec=COLOURS["witness"],
                           ls="none"), label)
