@@ -95,3 +95,12 @@ def test_run_cli(tmp_path, capsys):
     assert (tmp_path / "r.png").stat().st_size > 1000
     assert main([str(tmp_path / "missing.json")]) == 2
     assert "missing.json" in capsys.readouterr().err
+
+
+def test_arc_through_its_end_points_in_either_sense():
+    ccw = Arc.through((1.0, 1.0), (3.0, 1.0), (1.0, 3.0), 1)         # a quarter turn up
+    assert ccw.radius == 2 and ccw.end_angle - ccw.start_angle == pytest.approx(math.pi / 2)
+    assert ccw.end == pytest.approx((1.0, 3.0)) and ccw.at(0.5)[1] > 1
+    cw = Arc.through((1.0, 1.0), (3.0, 1.0), (1.0, 3.0), -1)         # three quarters down
+    assert cw.end_angle - cw.start_angle == pytest.approx(-3 * math.pi / 2)
+    assert cw.end == pytest.approx((1.0, 3.0)) and cw.at(0.5)[1] < 1

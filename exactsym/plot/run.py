@@ -51,6 +51,15 @@ class Arc:
         return (self.centre[0] + self.radius * math.cos(a),
                 self.centre[1] + self.radius * math.sin(a))
 
+    @classmethod
+    def through(cls, centre: Point, start: Point, end: Point, sense: int) -> "Arc":
+        """The arc about ``centre`` from ``start`` to ``end`` (both on one circle),
+        counter-clockwise when ``sense > 0``, going the short way round in that sense."""
+        a0 = math.atan2(start[1] - centre[1], start[0] - centre[0])
+        a1 = math.atan2(end[1] - centre[1], end[0] - centre[0])
+        sweep = (a1 - a0) % (2 * math.pi) if sense > 0 else -((a0 - a1) % (2 * math.pi))
+        return cls(tuple(centre), math.dist(start, centre), a0, a0 + sweep)
+
     @property
     def start(self) -> Point:
         return self.at(0.0)
