@@ -267,3 +267,18 @@ def test_paper_skew_claim_is_drawn_as_the_pairs_it_would_swap(tmp_path):
         mid = np.array([(ax + bx) / 2, (ay + by) / 2])
         misses += not np.allclose(mid, centre, atol=0.5)
     assert misses >= 2
+
+
+def test_an_analysis_is_drawn_from_its_results(tmp_path):
+    """An object with ``config`` (and ``truth``, ``paper``, ``audit``) is drawn from what it
+    holds: a stand-in whose truth says D4 draws four mirrors although the points are C1."""
+    from types import SimpleNamespace
+    from exactsym.symmetry import symmetry_group
+    square = Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -1)])
+    skewed = Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -2)])
+    out = tmp_path / "a.svg"
+    plot(SimpleNamespace(config=skewed, truth=symmetry_group(square), paper=None, audit=None),
+         out)
+    assert len(_ids(_svg(out), "mirror-")) == 4
+    plot(skewed, out)
+    assert len(_ids(_svg(out), "mirror-")) == 1

@@ -18,7 +18,8 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
     given, and return the matplotlib ``Figure``.
 
     ``config_or_analysis``: a :class:`exactsym.configuration.Configuration`, a path to
-    a configuration file, or an object with a ``config`` attribute (an analysis).
+    a configuration file, or an object with a ``config`` attribute (an analysis: its
+    ``truth``, ``paper`` and ``audit``, when present, are drawn instead of recomputed).
     ``show_paper``: also draw the lines of symmetry the paper's tests report per level
     (straight: dashed; skew: the pairs the half-turn swaps, dotted) and the paper's
     leader (a square).  ``show_audit``: also draw the witness of each statement of the
@@ -47,7 +48,10 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
     config = getattr(config_or_analysis, "config", config_or_analysis)
     if isinstance(config, (str, bytes)) or hasattr(config, "__fspath__"):
         config = _bridge.load_configuration(config)
-    scene = _bridge.scene_of(config, show_paper=show_paper, show_audit=show_audit)
+    # an analysis's results are reused (attributes truth, paper, audit when present)
+    reuse = {} if config is config_or_analysis else {
+        key: getattr(config_or_analysis, key, None) for key in ("truth", "paper", "audit")}
+    scene = _bridge.scene_of(config, show_paper=show_paper, show_audit=show_audit, **reuse)
     fig = figure(scene, show_paper=show_paper, show_audit=show_audit)
     if path is not None:
         save(fig, path)

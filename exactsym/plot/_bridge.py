@@ -62,12 +62,14 @@ def _line_angle(key, polar: bool) -> float:
     return math.atan2(s * _float(q), s) / 2
 
 
-def scene_of(config: Configuration, *, show_paper: bool = False,
-             show_audit: bool = False) -> Scene:
+def scene_of(config: Configuration, *, show_paper: bool = False, show_audit: bool = False,
+             truth=None, paper=None, audit=None) -> Scene:
     """The :class:`Scene` of ``config``: ground truth always, the paper's tests and the
-    audit's witnesses when asked (they run the paper's algorithms: slower)."""
+    audit's witnesses when asked (they run the paper's algorithms: slower).  ``truth``
+    (a SymmetryGroup), ``paper`` (the family layer's PaperResult) and ``audit`` (the
+    audit's dict), when given (say from an analysis), are used instead of recomputed."""
     ring = compute_rings(config)
-    group = symmetry_group(config, ring)
+    group = truth if truth is not None else symmetry_group(config, ring)
     centre_exact = ring.sec.centre
     centre = (_float(centre_exact[0]), _float(centre_exact[1]))
     if config.polar is not None:
@@ -94,7 +96,7 @@ def scene_of(config: Configuration, *, show_paper: bool = False,
     notes = []
     paper = witnesses = None
     if show_paper or show_audit:
-        result = paper_family.paper_procedure(config, ring)
+        result = paper if paper is not None else paper_family.paper_procedure(config, ring)
         if show_paper:
             paper, skipped = _paper(config, ring, result, centre)
             if skipped:
@@ -102,7 +104,7 @@ def scene_of(config: Configuration, *, show_paper: bool = False,
                              f"first {MAX_PAPER_LEVELS}, or over {MAX_PAPER_VERTICES} "
                              "vertices")
         if show_audit:
-            found = run_audit(config, ring, result)
+            found = audit if audit is not None else run_audit(config, ring, result)
             witnesses = _witnesses(found["discrepancies"], centre, xy, sec_r)
     return Scene(title=title, model=config.model, robots=robots, centre=centre,
                  centre_exact=tuple(centre_exact), sec=sec, levels=levels, group=group.name,
