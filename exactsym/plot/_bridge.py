@@ -201,7 +201,7 @@ def _witness(d: dict, centre, xy, reach) -> tuple:
             else fmpq(int(w["line"]))
         line = Line("witness", centre, 2 * math.pi * _float(turn), reach, "witness", turn)
         return ("line", (), (), None, line, f"line through C at {w['line']} turn")
-    return ("none", (), (), None, None, "no drawable witness; says: " + str(d.get("says", "")))
+    return ("none", (), (), None, None, "says " + str(d.get("says", "")))
 
 
 def _witnesses(discrepancies, centre, xy, reach) -> tuple[Witness, ...]:

@@ -191,8 +191,9 @@ def _draw(fig, scene: Scene, show_paper: bool, show_audit: bool) -> None:
              va="top")
     for k, note in enumerate(scene.notes):
         fig.text(0.58, 0.02 + 0.025 * k, textwrap.fill(note, 75), fontsize=7)
+    lines = sum(h.get_label().count("\n") + 1 for h in handles)
     fig.legend(handles=handles, loc="upper left", bbox_to_anchor=(0.57, 0.9),
-               frameon=False, fontsize=8, handlelength=2.2)
+               frameon=False, fontsize=8 if lines <= 34 else 6, handlelength=2.2)
 
 
 def _rotation_marker(k: int):
@@ -361,7 +362,7 @@ def _draw_audit(ax, scene: Scene, legend) -> None:
                                              zorder=2))
             legend(Line2D([], [], color=COLOURS["witness"], lw=3, alpha=0.5, ls=ls), label)
         else:
-            legend(Line2D([], [], ls="none"), label + " (nothing to draw)")
+            legend(Line2D([], [], ls="none"), label + " (no witness to draw)")
 
 
 def _statements(labels) -> str:
