@@ -16,6 +16,7 @@ import json
 import sys
 
 from . import audit_cli, cases_cli, certify_cli
+from .plot import cli as plot_cli
 from .analysis import Options, analyse
 from .configuration import load
 from .errors import EXIT_BUG, EXIT_FALSE, EXIT_INPUT, EXIT_OK, InputError
@@ -60,6 +61,8 @@ COMMANDS = {
                certify_cli.add_verify_arguments, certify_cli.run_verify),
     "cases": ("run the case library (every file under DIR)",
               cases_cli.add_arguments, cases_cli.run),
+    "plot": ("draw a configuration (needs the 'plot' extra: matplotlib)",
+             plot_cli.add_arguments, plot_cli.run),
 }
 
 

@@ -1,0 +1,221 @@
+"""The one place where the plot package reads the library: results -> :class:`.scene.Scene`.
+
+Every import from the rest of exactsym is in this module (plus the stable public names
+of :mod:`exactsym.exact`), so that a change of the library's layout touches one file.
+Coordinates become floats here, only for drawing (through the kernel's ``float`` of
+its numbers, and ``arb`` balls for polar points); nothing drawn decides anything.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from flint import arb
+
+from ..exact import fmpq
+from ..configuration import Configuration, load
+from ..errors import InputError
+from ..levels import levels_of as compute_rings
+from ..symmetry import symmetry_group
+from ..paper import polygon as paper_polygon
+from ..paper.circle_polygon import level_polygon
+from ..paper import family as paper_family
+from ..audit import audit as run_audit
+from .scene import Circle, Line, Paper, PaperLevel, Robot, Rotation, Scene, Witness
+
+__all__ = ["scene_of", "load_configuration", "Configuration", "InputError"]
+
+#: Up to this many ground-truth mirrors are all drawn; above, only the first (a regular
+#: 1000-gon has 1000: drawn, they would paint a disc).
+MAX_MIRRORS = 24
+#: The paper's per-level tests are drawn for at most this many levels of at most
+#: :data:`MAX_PAPER_VERTICES` vertices (the rest are listed as not drawn).
+MAX_PAPER_LEVELS = 60
+MAX_PAPER_VERTICES = 400
+
+
+def load_configuration(path) -> Configuration:
+    """Read a configuration file (the library's reader and validation)."""
+    return load(path)
+
+
+def _float(x) -> float:
+    """A float copy of an exact number, for drawing only."""
+    return float(x)
+
+
+def _polar_xy(r2, turn) -> tuple[float, float]:
+    r = arb(fmpq(r2)).sqrt()
+    t2 = arb(2 * fmpq(turn))
+    return (float((r * t2.cos_pi()).mid()), float((r * t2.sin_pi()).mid()))
+
+
+def _line_angle(key, polar: bool) -> float:
+    """Float angle of a line through C from the paper layer's exact line key: the turn
+    of the line (polar) or ``(sign x, y/x)`` of its doubled angle's ray (Cartesian)."""
+    if polar:
+        return 2 * math.pi * _float(key)
+    s, q = key
+    if s == 0:
+        return q * math.pi / 4
+    return math.atan2(s * _float(q), s) / 2
+
+
+def scene_of(config: Configuration, *, show_paper: bool = False, show_audit: bool = False,
+             truth=None, paper=None, audit=None) -> Scene:
+    """The :class:`Scene` of ``config``: ground truth always, the paper's tests and the
+    audit's witnesses when asked (they run the paper's algorithms: slower).  ``truth``
+    (a SymmetryGroup), ``paper`` (the family layer's PaperResult) and ``audit`` (the
+    audit's dict), when given (say from an analysis), are used instead of recomputed."""
+    ring = compute_rings(config)
+    group = truth if truth is not None else symmetry_group(config, ring)
+    centre_exact = ring.sec.centre
+    centre = (_float(centre_exact[0]), _float(centre_exact[1]))
+    if config.polar is not None:
+        xy = [_polar_xy(r2, t) for r2, t in config.polar]
+        exact = list(config.polar)
+    else:
+        xy = [(_float(x), _float(y)) for x, y in config.points]
+        exact = list(config.points)
+    rank = {}
+    if group.ordering is not None:
+        rank = {i: k for k, i in enumerate(group.ordering)}
+    robots = tuple(Robot(i, tuple(exact[i]), config.polar is not None, xy[i], rank.get(i))
+                   for i in range(config.n))
+    sec_r = math.sqrt(_float(ring.sec.radius_squared))
+    sec = Circle("SEC", centre, ring.sec.radius_squared, sec_r, ())
+    levels = tuple(Circle(f"G{k + 1}", centre, level.radius_squared,
+                          math.sqrt(_float(level.radius_squared)), tuple(level.points))
+                   for k, level in enumerate(ring.levels))
+
+    mirrors, total = _mirrors(group, centre, sec_r)
+    rotation = Rotation(centre, group.rotations) if group.rotations > 1 else None
+    title = config.name or (str(config.source) if not str(config.source).startswith("<")
+                            else "configuration")
+    notes = []
+    paper = witnesses = None
+    if show_paper or show_audit:
+        result = paper if paper is not None else paper_family.paper_procedure(config, ring)
+        if show_paper:
+            paper, skipped = _paper(config, ring, result, centre)
+            if skipped:
+                notes.append(f"paper's tests not drawn on {skipped} level(s): past the "
+                             f"first {MAX_PAPER_LEVELS}, or over {MAX_PAPER_VERTICES} "
+                             "vertices")
+        if show_audit:
+            found = audit if audit is not None else run_audit(config, ring, result)
+            witnesses = _witnesses(found["discrepancies"], centre, xy, sec_r)
+    return Scene(title=title, model=config.model, robots=robots, centre=centre,
+                 centre_exact=tuple(centre_exact), sec=sec, levels=levels, group=group.name,
+                 rotation=rotation, mirrors=mirrors, mirrors_total=total,
+                 leader=group.leader, orderable=group.orderable, paper=paper,
+                 audit=witnesses, notes=tuple(notes))
+
+
+def _mirrors(group, centre, reach) -> tuple[tuple[Line, ...], int]:
+    """The ground truth's mirrors: one exact reflection gives the first; the others are
+    at multiples of pi/k from it (float angles, for drawing)."""
+    m = group.mirrors
+    if not m or group.mirror is None:
+        return (), m
+    g = group.mirror
+    if g.turn is not None:
+        first = 2 * math.pi * _float(g.turn)
+        exact = g.turn
+    else:
+        (c, s), _ = g.matrix            # ((cos 2a, sin 2a), (sin 2a, -cos 2a))
+        first = math.atan2(_float(s), _float(c)) / 2
+        exact = g.matrix
+    lines = []
+    for j in range(m if m <= MAX_MIRRORS else 1):
+        lines.append(Line("mirror", centre, first + j * math.pi / m, reach, "mirror",
+                          exact if j == 0 else None))
+    return tuple(lines), m
+
+
+def _paper(config, ring, result, centre) -> tuple[Paper, int]:
+    levels, skipped = [], 0
+    for k, level in enumerate(ring.levels):
+        if ring.levels[k].radius_squared == 0:
+            continue
+        if len(levels) >= MAX_PAPER_LEVELS or len(level.points) > MAX_PAPER_VERTICES:
+            skipped += 1
+            continue
+        polygon = level_polygon(config, ring, k)
+        check = paper_polygon.check_symmetry(polygon)
+        reach = math.sqrt(_float(level.radius_squared))
+        # the lines as the strings find them (lemma-straight-sym), when the test reports
+        # straight symmetry at all (Check_Symmetry_Even may report skew only)
+        straight = tuple(Line(f"G{k + 1}", centre, _line_angle(line.key, polygon.polar),
+                              reach, "straight", line.key)
+                         for line in paper_polygon.straight_lines(polygon)) \
+            if check.straight else ()
+        labels = polygon.labels
+        n = len(labels)
+        pairs = tuple((labels[i], labels[i + n // 2]) for i in range(n // 2)) \
+            if check.skew and n % 2 == 0 else ()
+        levels.append(PaperLevel(k + 1, check.algorithm, check.symmetric, straight,
+                                 check.skew, pairs))
+    return Paper(tuple(levels), result.leader, result.orderable), skipped
+
+
+_MAPS = re.compile(r"robot (\d+) -> robot (\d+)")
+_LEVEL = re.compile(r"G\(?([\d,]+)")
+
+
+def _ccw_angle(centre, a, b) -> float:
+    ax, ay = a[0] - centre[0], a[1] - centre[1]
+    bx, by = b[0] - centre[0], b[1] - centre[1]
+    return math.atan2(ax * by - ay * bx, ax * bx + ay * by) % (2 * math.pi)
+
+
+def _witness(d: dict, centre, xy, reach) -> tuple:
+    """``(kind, robots, levels, angle, line, text)`` of one discrepancy's witness (the
+    audit's dicts: ``maps`` "robot a -> robot b" with ``symmetry``; ``leaders``;
+    ``pair`` of level names; ``line`` as a turn)."""
+    w = d.get("witness") or {}
+    maps = _MAPS.search(str(w.get("maps", "")))
+    if maps:
+        a, b = int(maps.group(1)), int(maps.group(2))
+        what = str(w.get("symmetry", ""))
+        if what.startswith(("mirror", "reflection")):
+            mx, my = (xy[a][0] + xy[b][0]) / 2 - centre[0], (xy[a][1] + xy[b][1]) / 2 - centre[1]
+            if math.hypot(mx, my) < 1e-12 * (1 + reach):     # a, b opposite: the perpendicular
+                mx, my = -(xy[b][1] - xy[a][1]), xy[b][0] - xy[a][0]
+            line = Line("witness", centre, math.atan2(my, mx), reach, "witness")
+            return ("mirror", (a, b), (), None, line, f"{what or 'mirror'}: robot {a} -> {b}")
+        angle = _ccw_angle(centre, xy[a], xy[b])
+        return ("rotation", (a, b), (), angle, None, f"{what or 'rotation'}: robot {a} -> {b}")
+    if "leaders" in w:
+        leaders = tuple(x for x in w["leaders"] if x is not None)
+        frames = " / ".join(w.get("frames", ()))
+        return ("robots", leaders, (), None, None,
+                f"leader {' vs '.join(map(str, leaders))} ({frames} frames)")
+    if "pair" in w:
+        levels = tuple(int(x) for name in w["pair"] for m in [_LEVEL.match(str(name))] if m
+                       for x in m.group(1).split(","))
+        return ("levels", (), levels, None, None, f"pair {', '.join(map(str, w['pair']))}")
+    if "line" in w and re.fullmatch(r"-?\d+(/\d+)?", str(w["line"])):
+        turn = fmpq(*map(int, str(w["line"]).split("/"))) if "/" in str(w["line"]) \
+            else fmpq(int(w["line"]))
+        line = Line("witness", centre, 2 * math.pi * _float(turn), reach, "witness", turn)
+        return ("line", (), (), None, line, f"line through C at {w['line']} turn")
+    return ("none", (), (), None, None, "says " + str(d.get("says", "")))
+
+
+def _witnesses(discrepancies, centre, xy, reach) -> tuple[Witness, ...]:
+    """One :class:`Witness` per distinct drawable witness, naming every statement that
+    it witnesses (the audit lists a statement once per failing level or pair)."""
+    merged: dict = {}
+    for d in discrepancies:
+        kind, robots, levels, angle, line, text = _witness(d, centre, xy, reach)
+        # one entry per drawn thing; statements without a drawable witness, one each
+        key = (kind, robots, levels, text if kind == "line" else
+               d["statement"] if kind == "none" else None)
+        entry = merged.setdefault(key, [[], kind, robots, levels, angle, line, text])
+        if d["statement"] not in entry[0]:
+            entry[0].append(d["statement"])
+    return tuple(Witness(tuple(st), text, kind, robots, levels,
+                         centre if kind == "rotation" else None, angle, line)
+                 for st, kind, robots, levels, angle, line, text in merged.values())
