@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .errors import InputError
+from .labels import ALGORITHMS, STATEMENTS, is_label, unknown_label_message
 
 CASE_SUFFIXES = (".toml", ".txt")
 
@@ -51,8 +52,11 @@ def run_case(path) -> CaseResult:
 
 
 def run_cases(directory="cases", lemma: str | None = None) -> list[CaseResult]:
-    """Every case under ``directory`` (only those tagged ``lemma`` when given)."""
+    """Every case under ``directory`` (only those tagged ``lemma`` when given; an unknown
+    label is an :class:`InputError` naming the nearest known one)."""
     from .cli import _load_plugins
+    if lemma is not None and not is_label(lemma):
+        raise InputError(f"--lemma: {unknown_label_message(lemma)}")
     _load_plugins()
     results = []
     for path in case_files(directory):
@@ -62,8 +66,27 @@ def run_cases(directory="cases", lemma: str | None = None) -> list[CaseResult]:
     return results
 
 
+def label_counts(directory="cases") -> dict:
+    """Every known label (exactsym.labels) -> the number of case files under ``directory``
+    tagged with it (0 included), in the paper's order."""
+    from .config import read_config
+    counts = {label: 0 for label in STATEMENTS + ALGORITHMS}
+    for path in case_files(directory):
+        try:
+            lemmas = read_config(path).lemmas
+        except InputError:
+            continue
+        for label in set(lemmas):
+            counts[label] += 1
+    return counts
+
+
 def _cmd_cases(args) -> int:
     from .cli import EXIT_FALSE, EXIT_OK
+    if getattr(args, "labels", False):
+        for label, count in label_counts(args.directory).items():
+            print(f"{count:4d}  {label}")
+        return EXIT_OK
     results = run_cases(args.directory, args.lemma)
     for result in results:
         print(f"{'PASS' if result.passed else 'FAIL'}  {result.path}  "
@@ -79,6 +102,8 @@ def _register(sub) -> None:
     cases = sub.add_parser("cases", help="run the case library (every file under DIR)")
     cases.add_argument("directory", nargs="?", default="cases", metavar="DIR")
     cases.add_argument("--lemma", metavar="LABEL", help="only the cases tagged with LABEL")
+    cases.add_argument("--labels", action="store_true",
+                       help="list every known label with the number of cases tagged with it")
 
 
 def _install() -> None:

@@ -1,0 +1,42 @@
+"""The one place where the ledger calls the analysis (to re-run evidence cases).
+
+Today it loads a configuration and computes ``exactsym.report.check_report`` (truth,
+paper, audit) and the ``[expect]`` comparison; after the pipeline refactor it is
+re-pointed at ``exactsym.analysis.analyse``.  Nothing else in :mod:`exactsym.ledger`
+imports the analysis.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..errors import InputError
+
+__all__ = ["CaseAnalysis", "analyse_case"]
+
+
+@dataclass(frozen=True)
+class CaseAnalysis:
+    """What the ledger needs from one case file: whether it could be read, the failed
+    ``[expect]`` claims, and the labels the audit lists as false on it."""
+    path: str
+    error: str | None
+    expect_failures: tuple[str, ...]
+    audit_false: frozenset[str]
+
+
+def analyse_case(path) -> CaseAnalysis:
+    """Load ``path`` and analyse it once (the caller caches per file)."""
+    from ..cli import _load_plugins
+    from ..configuration import load
+    from ..report import check_report, failed_expectations
+    _load_plugins()
+    try:
+        config = load(Path(path))
+    except InputError as err:
+        return CaseAnalysis(str(path), str(err), (), frozenset())
+    report = check_report(config, {"strings": False})
+    audit = report.get("audit") or {}
+    false = frozenset(d["statement"] for d in audit.get("discrepancies", ()))
+    return CaseAnalysis(str(path), None, tuple(failed_expectations(config, report)), false)
