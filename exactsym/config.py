@@ -430,6 +430,7 @@ class _TomlReader:
             if not isinstance(lemma, str):
                 raise self.error(f"lemmas must be strings, not {_describe(lemma)}",
                                  self.where.key("lemmas"))
+        for lemma in data.get("lemmas", []):
             if not is_label(lemma):     # a typo never passes silently (exactsym.labels)
                 raise self.error(f"lemmas: {unknown_label_message(lemma)}",
                                  self.where.value(lemma, self.where.key("lemmas") or 0))

@@ -37,7 +37,7 @@ WITNESSES = {
         [(1, [Q(1, 4), Q(1, 20), Q(9, 20)]),
          (2, [Q(0), Q(1, 10), Q(1, 4), Q(1, 2), Q(3, 5), Q(3, 4)])]),
     "two_gon_on_mirror": (
-        "cases/discrepancies/family-two-gon-on-mirror.toml",
+        "cases/family/two-gon-on-mirror.toml",
         [(1, [Q(0), Q(1, 2)]), (2, [Q(0), Q(2, 5), Q(3, 5)])]),
     "collinear_five": (
         "cases/discrepancies/family-collinear-five.toml",

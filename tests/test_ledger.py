@@ -300,3 +300,38 @@ def test_uses_contain_every_extracted_ref(ledger):
     by = ledger.by_label()
     for s in er.statements(text):
         assert set(s["refs"]) <= set(by[s["label"]].uses), s["label"]
+
+
+# ---------------------------------------------------------------- refutation certificates
+def _refutation(label, case):
+    from exactsym.configuration import load
+    from exactsym.refutation import make_refutation
+    return json.loads(json.dumps(make_refutation(load(ROOT / case), label)))
+
+
+def test_refutation_certificates_verify_and_reject_tampering():
+    from exactsym import checker
+    from exactsym.certificate import CertificateError
+    obj = _refutation("Pasym-Pord", "cases/discrepancies/family-chiral-c3-ring.toml")
+    ok, why = checker.verify_refutation(obj)
+    assert ok and "order 3" in why
+    assert checker.verify_refutation({**obj, "label": "lem-sym-notord"})[0] is False
+    bad = json.loads(json.dumps(obj))
+    bad["certificate"]["claim"]["orderable"] = True
+    assert checker.verify_refutation(bad)[0] is False
+    # one level is part of lem-asym-ord's premise: two rings of the C3 family do not refute it
+    with pytest.raises(CertificateError, match="not one polygon"):
+        _refutation("lem-asym-ord", "cases/discrepancies/family-c3-two-triangles.toml")
+    with pytest.raises(CertificateError, match="in O_S"):
+        _refutation("Pasym-Pord", "cases/family/regular-d3-not-orderable.toml")
+    with pytest.raises(CertificateError, match="nearest known label: 'Pasym-Pord'"):
+        _refutation("Pasym-Pard", "cases/discrepancies/family-chiral-c3-ring.toml")
+
+
+def test_shipped_refutation_certificates_match_their_cases(ledger):
+    from exactsym import checker
+    for s in ledger.statements:
+        for e in s.evidence:
+            if e.kind == "certificate":
+                obj = json.loads((ROOT / e.path).read_text())
+                assert checker.verify_refutation(obj)[0] and obj["label"] == s.label

@@ -61,6 +61,8 @@ def _evidence_text(s: Statement) -> str:
             parts.append(f"`{e.path}`{mark}")
         elif e.kind == "script":
             parts.append(f"`{e.path}` {' '.join(str(a) for a in e.args)}".rstrip())
+        elif e.kind == "certificate":
+            parts.append(f"`{e.path}` (refutation certificate)")
         elif e.kind == "witnesses":
             parts.append(f"`{e.path}` ({e.refuted_readings} readings)")
         else:

@@ -6,6 +6,7 @@
 * a script: ``check(*args)`` of the proofs/ module returns without AssertionError;
 * witnesses: ``proofs/witnesses.py`` refutes the label under exactly ``refuted_readings``
   readings;
+* a refutation certificate: the standalone checker accepts it, for this label;
 * a sweep summary (JSON, docs/ledger.md): it names the label, its counts are integers,
   a failure names an existing smallest case, and a label graded ``proved`` has none.
 
@@ -141,6 +142,20 @@ def check_evidence(ledger: Ledger, root: Path,
                 if got != e.refuted_readings:
                     out.append(Mismatch(s.label, _describe(e), f"refuted under {got} "
                                         f"readings, the ledger says {e.refuted_readings}"))
+            elif e.kind == "certificate":
+                from .. import checker      # the standalone checker, standard library only
+                try:
+                    obj = json.loads(path.read_text(encoding="utf-8"))
+                except ValueError as err:
+                    out.append(Mismatch(s.label, _describe(e), f"not JSON: {err}"))
+                    continue
+                ok, why = checker.verify_refutation(obj)
+                if not ok or obj.get("label") != s.label:
+                    out.append(Mismatch(s.label, _describe(e), why if not ok else
+                                        f"it refutes {obj.get('label')!r}"))
+                elif s.grade != "refuted":
+                    out.append(Mismatch(s.label, _describe(e), "a valid refutation of a "
+                                        f"statement graded {s.grade!r}"))
             elif e.kind == "sweep":
                 try:
                     sweep = load_sweep(path)
