@@ -188,7 +188,7 @@ def test_docs_audit_is_generated_from_the_ledger(ledger):
 
 def test_rests_on_refuted_in_the_real_ledger(ledger):
     sup = support(ledger)
-    assert "lem-type4" in sup["lem-3-pair-sym"].rests_on_refuted
+    assert "lem-type4" in sup["lem-3-pair-sym"].rests_on_reading
     assert "obs-exh-poly" in sup["lem-3-pair-sym"].rests_on_refuted
     assert "lem-los-gij" in sup["Gprime-equiG"].rests_on_refuted
     assert sup["lemma-sym-ord"].rests_only_on_proved
