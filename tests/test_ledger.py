@@ -345,3 +345,15 @@ def test_checked_by_names_an_existing_function(ledger):
             continue
         module, _, attr = s.checked_by.rpartition(".")
         assert callable(getattr(importlib.import_module(module), attr)), s.label
+
+
+def test_witnesses_are_the_case_files():
+    """proofs/witnesses.py checks the same points as the case file it names."""
+    import tomllib
+    from fractions import Fraction as Q
+    wit = _proofs_module("witnesses")
+    for name, (case, _) in wit.WITNESSES.items():
+        with open(ROOT / case, "rb") as fh:
+            points = tomllib.load(fh)["points"]
+        in_case = {(Q(p["r"]), Q(p["turn"]) % 1) for p in points}
+        assert {(Q(r), Q(t) % 1) for r, t in wit._points(name)} == in_case, name
