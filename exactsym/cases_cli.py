@@ -17,6 +17,8 @@ from pathlib import Path
 from .analysis import analyse
 from .configuration import load
 from .errors import EXIT_FALSE, EXIT_OK, InputError
+from .fileformat import read_config
+from .labels import ALGORITHMS, STATEMENTS, is_label, unknown_label_message
 from .report import failed_expectations, report_json
 
 CASE_SUFFIXES = (".toml", ".txt")
@@ -52,7 +54,10 @@ def run_case(path) -> CaseResult:
 
 
 def run_cases(directory="cases", lemma: str | None = None) -> list[CaseResult]:
-    """Every case under ``directory`` (only those tagged ``lemma`` when given)."""
+    """Every case under ``directory`` (only those tagged ``lemma`` when given; an unknown
+    label is an :class:`InputError` naming the nearest known one)."""
+    if lemma is not None and not is_label(lemma):
+        raise InputError(f"--lemma: {unknown_label_message(lemma)}")
     results = []
     for path in case_files(directory):
         result = run_case(path)
@@ -61,7 +66,25 @@ def run_cases(directory="cases", lemma: str | None = None) -> list[CaseResult]:
     return results
 
 
+def label_counts(directory="cases") -> dict:
+    """Every known label (exactsym.labels) -> the number of case files under ``directory``
+    tagged with it (0 included), in the paper's order."""
+    counts = {label: 0 for label in STATEMENTS + ALGORITHMS}
+    for path in case_files(directory):
+        try:
+            lemmas = read_config(path).lemmas
+        except InputError:
+            continue
+        for label in set(lemmas):
+            counts[label] += 1
+    return counts
+
+
 def run(args) -> int:
+    if args.labels:
+        for label, count in label_counts(args.directory).items():
+            print(f"{count:4d}  {label}")
+        return EXIT_OK
     results = run_cases(args.directory, args.lemma)
     for result in results:
         print(f"{'PASS' if result.passed else 'FAIL'}  {result.path}  "
@@ -76,3 +99,5 @@ def run(args) -> int:
 def add_arguments(parser) -> None:
     parser.add_argument("directory", nargs="?", default="cases", metavar="DIR")
     parser.add_argument("--lemma", metavar="LABEL", help="only the cases tagged with LABEL")
+    parser.add_argument("--labels", action="store_true",
+                        help="list every known label with the number of cases tagged with it")

@@ -18,6 +18,9 @@ def add_certify_arguments(certify) -> None:
     certify.add_argument("file", help="configuration file ('-' for standard input)")
     certify.add_argument("-o", "--output", required=True, metavar="CERT.json",
                          help="where to write the certificate ('-' for standard output)")
+    certify.add_argument("--refutes", metavar="LABEL", default=None,
+                         help="write a refutation certificate of LABEL instead "
+                         "(exactsym.refutation)")
 
 
 def add_verify_arguments(verify) -> None:
@@ -30,10 +33,15 @@ def run_certify(args) -> int:
     from .configuration import load
     config = load(args.file)
     try:
-        cert = make_certificate(config)
+        if args.refutes:
+            from .refutation import make_refutation
+            cert = make_refutation(config, args.refutes)
+        else:
+            cert = make_certificate(config)
     except CertificateError as err:
         raise InputError(f"{config.source}: cannot certify: {err}") from None
-    ok, message = checker.verify_certificate(json.loads(json.dumps(cert)))
+    verify = checker.verify_refutation if args.refutes else checker.verify_certificate
+    ok, message = verify(json.loads(json.dumps(cert)))
     if not ok:   # the tool's own verdict failed the independent check: a bug, say so
         print(f"exactsym: internal error: the certificate does not verify ({message}); "
               "please report it with the input file", file=sys.stderr)
@@ -67,7 +75,9 @@ def run_verify(args) -> int:
         raise InputError(f"{path}:{err.lineno}:{err.colno}: not JSON: {err.msg}") from None
     except (ValueError, RecursionError) as err:
         raise InputError(f"{path}: not JSON: {err}") from None
-    ok, message = checker.verify_certificate(cert)
+    verify = checker.verify_refutation if isinstance(cert, dict) and \
+        cert.get("format") == "exactsym-refutation" else checker.verify_certificate
+    ok, message = verify(cert)
     if ok:
         print(f"{path}: valid: {message}")
         return EXIT_OK

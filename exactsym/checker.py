@@ -497,6 +497,58 @@ def verify_certificate(cert) -> tuple[bool, str]:
         return False, f"malformed certificate ({type(err).__name__}: {err})"
 
 
+# ------------------------------------------------------------------ refutations
+# A refutation certificate (docs/certificates.md, "Refutations") wraps a group certificate:
+# once that proves G (the group of P) and its orderability, the premise "P is in O_A" and
+# the conclusion "P is orderable" are facts about G, derived here and nowhere else.
+REFUTABLE = {"Pasym-Pord": "P is orderable if P is in O_A",
+             "lem-asym-ord": "an asymmetric polygon is orderable"}
+
+
+def _one_level(config) -> bool:
+    """All points at one distance from c (rational coordinates only)."""
+    pts = config["points"]
+    need(all(isinstance(v, (str, int)) for p in pts for v in p),
+         "one level: only rational coordinates are supported")
+    if config["coordinates"] == "polar":
+        return len({frac(p[0]) for p in pts}) == 1
+    xs, ys = [frac(p[0]) for p in pts], [frac(p[1]) for p in pts]
+    cx, cy = sum(xs) / len(xs), sum(ys) / len(ys)
+    return len({(x - cx) ** 2 + (y - cy) ** 2 for x, y in zip(xs, ys)}) == 1
+
+
+def verify_refutation(obj) -> tuple[bool, str]:
+    """``(True, summary)`` when the refutation certificate shows a configuration meeting the
+    premise of ``obj["label"]`` (P in O_A: at least two points, no mirror that moves a
+    point, no half-turn; for lem-asym-ord also one level) whose conclusion "orderable" is
+    false -- all derived from the group its embedded certificate proves."""
+    try:
+        need(isinstance(obj, dict) and obj.get("format") == "exactsym-refutation"
+             and obj.get("version") == 1, "not an exactsym refutation of version 1")
+        label = obj.get("label")
+        need(label in REFUTABLE, f"no refutation by symmetry facts for {label!r}")
+        cert = obj["certificate"]
+        ok, why = verify_certificate(cert)
+        need(ok, f"the embedded certificate is invalid: {why}")
+        name, orderable = cert["claim"]["group"], cert["claim"]["orderable"]
+        n = len(cert["configuration"]["points"])
+        k = 1 if name == "O2" else int(name[1:])
+        # A reflection in G moves a point unless G = D1 fixes every point (orderable); a
+        # half-turn is in G iff k is even.
+        no_moving_mirror = name.startswith("C") or (name == "D1" and orderable)
+        need(n >= 2 and no_moving_mirror and k % 2 == 1,
+             f"the premise fails: group {name} on {n} point(s) is in O_S")
+        if label == "lem-asym-ord":
+            need(_one_level(cert["configuration"]), "the premise fails: not one polygon")
+        need(orderable is False, f"the conclusion holds: group {name} is orderable")
+        return True, (f"{label} refuted: group {name} has no mirror moving a point and no "
+                      f"half-turn, yet its rotation of order {k} moves a point")
+    except Invalid as err:
+        return False, str(err)
+    except (KeyError, TypeError, ValueError, IndexError, AttributeError) as err:
+        return False, f"malformed refutation ({type(err).__name__}: {err})"
+
+
 def main(argv: list | None = None) -> int:
     args = sys.argv[1:] if argv is None else argv
     if len(args) != 1:
@@ -508,7 +560,9 @@ def main(argv: list | None = None) -> int:
     except (OSError, ValueError, RecursionError) as err:
         print(f"{args[0]}: unreadable certificate: {err}", file=sys.stderr)
         return 2
-    ok, message = verify_certificate(cert)
+    verify = verify_refutation if isinstance(cert, dict) and \
+        cert.get("format") == "exactsym-refutation" else verify_certificate
+    ok, message = verify(cert)
     print(f"{args[0]}: {'valid' if ok else 'INVALID'}: {message}",
           file=sys.stdout if ok else sys.stderr)
     return 0 if ok else 1

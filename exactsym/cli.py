@@ -16,6 +16,7 @@ import json
 import sys
 
 from . import audit_cli, cases_cli, certify_cli
+from .ledger import cli as ledger_cli
 from .plot import cli as plot_cli
 from .analysis import Options, analyse
 from .configuration import load
@@ -61,6 +62,8 @@ COMMANDS = {
                certify_cli.add_verify_arguments, certify_cli.run_verify),
     "cases": ("run the case library (every file under DIR)",
               cases_cli.add_arguments, cases_cli.run),
+    "ledger": ("the statement ledger (proofs/): grades, dependencies, docs/audit.md; --check "
+               "re-runs the evidence", ledger_cli.add_arguments, ledger_cli.run),
     "plot": ("draw a configuration (needs the 'plot' extra: matplotlib)",
              plot_cli.add_arguments, plot_cli.run),
 }

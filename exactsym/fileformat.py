@@ -21,6 +21,7 @@ from typing import Mapping
 from .errors import ExpressionError, InputError
 from .expr import MAX_LENGTH, parse_expression, tokenize
 from .exprtree import Const, Node
+from .labels import is_label, unknown_label_message
 
 
 class ExpressionText(str):
@@ -428,6 +429,10 @@ class _TomlReader:
             if not isinstance(lemma, str):
                 raise self.error(f"lemmas must be strings, not {_describe(lemma)}",
                                  self.where.key("lemmas"))
+        for lemma in data.get("lemmas", []):
+            if not is_label(lemma):     # a typo never passes silently (exactsym.labels)
+                raise self.error(f"lemmas: {unknown_label_message(lemma)}",
+                                 self.where.value(lemma, self.where.key("lemmas") or 0))
         return ConfigFile(source=self.source, points=self.points(data),
                           name=data.get("name"), notes=data.get("notes"),
                           model=data.get("model", "points"),

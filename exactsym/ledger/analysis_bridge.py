@@ -1,0 +1,40 @@
+"""The one place where the ledger calls the analysis (to re-run evidence cases).
+
+It loads a configuration, runs :func:`exactsym.analysis.analyse` (truth, paper, audit)
+and the ``[expect]`` comparison.  Nothing else in :mod:`exactsym.ledger` imports the
+analysis.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..errors import InputError
+
+__all__ = ["CaseAnalysis", "analyse_case"]
+
+
+@dataclass(frozen=True)
+class CaseAnalysis:
+    """What the ledger needs from one case file: whether it could be read, the failed
+    ``[expect]`` claims, and the labels the audit lists as false on it."""
+    path: str
+    error: str | None
+    expect_failures: tuple[str, ...]
+    audit_false: frozenset[str]
+
+
+def analyse_case(path) -> CaseAnalysis:
+    """Load ``path`` and analyse it once (the caller caches per file)."""
+    from ..analysis import analyse
+    from ..configuration import load
+    from ..report import failed_expectations, report_json
+    try:
+        config = load(Path(path))
+    except InputError as err:
+        return CaseAnalysis(str(path), str(err), (), frozenset())
+    report = report_json(analyse(config))
+    audit = report.get("audit") or {}
+    false = frozenset(d["statement"] for d in audit.get("discrepancies", ()))
+    return CaseAnalysis(str(path), None, tuple(failed_expectations(config, report)), false)

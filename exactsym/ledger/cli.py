@@ -1,0 +1,104 @@
+"""``exactsym ledger [--json] [--check] [--no-write] [--root DIR]`` (also ``python -m
+exactsym.ledger``).
+
+Loads and validates ``proofs/statements.toml`` (an unknown label exits 2 naming the
+nearest known one), builds the dependency graph, writes ``docs/audit.md`` from it (unless
+``--no-write``), and prints a summary -- or, with ``--json``, ``{"statements": [{"label",
+"kind", "grade", "readings", "uses", "evidence", "rests_on_refuted"}, ...]}``.  Every
+file the evidence names must exist (exit 1 otherwise); ``--check`` also re-runs every
+piece of evidence (exit 1 on any mismatch, each printed on standard error).
+
+The lead wires it into ``exactsym`` with :func:`add_arguments` and :func:`run`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from ..errors import InputError
+from .audit_doc import render
+from .evidence import check_evidence, missing_files
+from .graph import dependency_graph, support
+from .model import load_ledger
+
+__all__ = ["add_arguments", "run", "main", "find_root", "ledger_json"]
+
+LEDGER = Path("proofs") / "statements.toml"
+AUDIT = Path("docs") / "audit.md"
+EXIT_OK, EXIT_FALSE, EXIT_INPUT = 0, 1, 2
+
+
+def find_root(start: Path | None = None) -> Path:
+    """The nearest directory at or above ``start`` (default: the working directory)
+    holding proofs/statements.toml, else the source tree this package is in."""
+    here = (start or Path.cwd()).resolve()
+    for d in (here, *here.parents):
+        if (d / LEDGER).is_file():
+            return d
+    return Path(__file__).resolve().parents[2]
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--json", action="store_true", help="print the ledger as JSON")
+    parser.add_argument("--check", action="store_true",
+                        help="re-run every piece of evidence (exit 1 on a mismatch)")
+    parser.add_argument("--no-write", action="store_true",
+                        help="do not write docs/audit.md")
+    parser.add_argument("--root", metavar="DIR", default=None,
+                        help="the repository root (default: found from the working "
+                        "directory)")
+
+
+def ledger_json(ledger, sup) -> dict:
+    return {"statements": [
+        {"label": s.label, "kind": s.kind, "grade": s.grade, "readings": list(s.readings),
+         "uses": list(s.uses) + [c for c in s.calls if c not in s.uses],
+         "evidence": [e.as_dict() for e in s.evidence],
+         "rests_on_refuted": list(sup[s.label].rests_on_refuted)}
+        for s in ledger.statements]}
+
+
+def run(args) -> int:
+    root = Path(args.root) if args.root else find_root()
+    ledger = load_ledger(root / LEDGER)
+    graph = dependency_graph(ledger)
+    sup = support(ledger, graph)
+    if not args.no_write:
+        text = render(ledger, sup)
+        target = root / AUDIT
+        if not target.is_file() or target.read_text(encoding="utf-8") != text:
+            target.write_text(text, encoding="utf-8")
+    problems = (check_evidence(ledger, root) if args.check
+                else missing_files(ledger, root))
+    if args.json:
+        print(json.dumps(ledger_json(ledger, sup), indent=2))
+    else:
+        counts: dict[str, int] = {}
+        for s in ledger.statements:
+            counts[s.grade] = counts.get(s.grade, 0) + 1
+        print(f"{len(ledger.statements)} statements: " +
+              ", ".join(f"{k} {v}" for k, v in counts.items()))
+        resting = [s.label for s in ledger.statements if sup[s.label].rests_on_refuted
+                   and s.grade not in ("refuted",)]
+        print(f"{len(resting)} not refuted themselves but resting on a refuted statement: "
+              + ", ".join(resting))
+        if args.check:
+            print(f"evidence re-run: {len(problems)} mismatch(es)")
+    for p in problems:
+        print(f"ledger: {p}", file=sys.stderr)
+    return EXIT_FALSE if problems else EXIT_OK
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m exactsym.ledger",
+                                     description="The statement ledger (proofs/).")
+    add_arguments(parser)
+    args = parser.parse_args(argv)
+    try:
+        return run(args)
+    except InputError as err:
+        print(f"exactsym ledger: {err}", file=sys.stderr)
+        return EXIT_INPUT

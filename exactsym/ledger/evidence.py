@@ -1,0 +1,175 @@
+"""Re-run the ledger's evidence and confirm each verdict (``--check``).
+
+* a case: analysed once per file (:mod:`.analysis_bridge`); its ``[expect]`` block must
+  hold, and for ``audit-false`` / ``audit-true`` the audit must (not) list the label;
+* a proof text: the file exists;
+* a script: ``check(*args)`` of the proofs/ module returns without AssertionError;
+* witnesses: ``proofs/witnesses.py`` refutes the label under exactly ``refuted_readings``
+  readings;
+* a refutation certificate: the standalone checker accepts it, for this label;
+* a sweep summary (JSON, docs/ledger.md): it names the label, its counts are integers,
+  a failure names an existing smallest case, and a label graded ``proved`` has none.
+
+:func:`missing_files` is the cheap part (every file named exists), run on every
+invocation; :func:`check_evidence` runs everything.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+from .model import Evidence, Ledger
+
+__all__ = ["Mismatch", "missing_files", "check_evidence", "load_sweep", "SWEEP_KEYS"]
+
+#: Keys of a sweep summary file and their types.
+SWEEP_KEYS = {"format": int, "label": str, "family": str, "configurations": int,
+              "failures": int, "smallest_case": (str, type(None))}
+
+
+@dataclass(frozen=True)
+class Mismatch:
+    label: str
+    evidence: str
+    message: str
+
+    def __str__(self) -> str:
+        return f"{self.label}: {self.evidence}: {self.message}"
+
+
+def _describe(e: Evidence) -> str:
+    extra = f" ({e.verdict})" if e.verdict else ""
+    args = f" {list(e.args)}" if e.args else ""
+    return f"{e.kind} {e.path}{args}{extra}"
+
+
+def missing_files(ledger: Ledger, root: Path) -> list[Mismatch]:
+    out = []
+    for s in ledger.statements:
+        for e in s.evidence:
+            if not (root / e.path).is_file():
+                out.append(Mismatch(s.label, _describe(e), "file not found"))
+    return out
+
+
+def _module(path: Path):
+    """A proofs/*.py file as a module (proofs/ is not a package: loaded by path, with its
+    folder on sys.path for its own sibling imports)."""
+    name = "exactsym_proofs_" + path.stem
+    if name in sys.modules:
+        return sys.modules[name]
+    folder = str(path.parent)
+    if folder not in sys.path:
+        sys.path.insert(0, folder)
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def load_sweep(path: Path) -> dict:
+    """A sweep summary: one JSON object with :data:`SWEEP_KEYS` (ValueError otherwise)."""
+    data = json.loads(path.read_text(encoding="utf-8"))
+    if not isinstance(data, dict):
+        raise ValueError("a sweep summary is one JSON object")
+    for key, types in SWEEP_KEYS.items():
+        if key not in data or not isinstance(data[key], types) or isinstance(data[key], bool):
+            raise ValueError(f"sweep summary key {key!r} missing or of the wrong type")
+    if data["format"] != 1:
+        raise ValueError("sweep summary format must be 1")
+    return data
+
+
+def check_evidence(ledger: Ledger, root: Path,
+                   analyse: Callable | None = None,
+                   progress: Callable[[str], None] | None = None) -> list[Mismatch]:
+    """Every mismatch between the ledger's evidence and what re-running it shows."""
+    if analyse is None:
+        from .analysis_bridge import analyse_case as analyse
+    cases: dict[str, object] = {}
+    scripts: dict[tuple, str | None] = {}
+    witness_result = None
+    out = missing_files(ledger, root)
+    missing = {(m.label, m.evidence) for m in out}
+    for s in ledger.statements:
+        for e in s.evidence:
+            if (s.label, _describe(e)) in missing:
+                continue
+            path = root / e.path
+            if e.kind == "case":
+                if e.path not in cases:
+                    if progress:
+                        progress(e.path)
+                    cases[e.path] = analyse(path)
+                a = cases[e.path]
+                if a.error:
+                    out.append(Mismatch(s.label, _describe(e), f"cannot be read: {a.error}"))
+                    continue
+                for failure in a.expect_failures:
+                    out.append(Mismatch(s.label, _describe(e), f"[expect] fails: {failure}"))
+                listed = s.label in a.audit_false
+                if e.verdict == "audit-false" and not listed:
+                    out.append(Mismatch(s.label, _describe(e), "the audit does not find "
+                                        f"{s.label} false here (it lists: "
+                                        f"{', '.join(sorted(a.audit_false)) or 'nothing'})"))
+                if e.verdict == "audit-true" and listed:
+                    out.append(Mismatch(s.label, _describe(e), f"the audit finds {s.label} "
+                                        "false here"))
+            elif e.kind == "script":
+                key = (e.path, e.args)
+                if key not in scripts:
+                    if progress:
+                        progress(f"{e.path} {list(e.args)}")
+                    try:
+                        _module(path).check(*e.args)
+                        scripts[key] = None
+                    except AssertionError as err:
+                        scripts[key] = f"check{tuple(e.args)} failed: {err}"
+                if scripts[key]:
+                    out.append(Mismatch(s.label, _describe(e), scripts[key]))
+            elif e.kind == "witnesses":
+                if witness_result is None:
+                    if progress:
+                        progress(e.path)
+                    witness_result = _module(path).check()
+                got = len(witness_result["refutations"].get(s.label, {}))
+                if got != e.refuted_readings:
+                    out.append(Mismatch(s.label, _describe(e), f"refuted under {got} "
+                                        f"readings, the ledger says {e.refuted_readings}"))
+            elif e.kind == "certificate":
+                from .. import checker      # the standalone checker, standard library only
+                try:
+                    obj = json.loads(path.read_text(encoding="utf-8"))
+                except ValueError as err:
+                    out.append(Mismatch(s.label, _describe(e), f"not JSON: {err}"))
+                    continue
+                ok, why = checker.verify_refutation(obj)
+                if not ok or obj.get("label") != s.label:
+                    out.append(Mismatch(s.label, _describe(e), why if not ok else
+                                        f"it refutes {obj.get('label')!r}"))
+                elif s.grade != "refuted":
+                    out.append(Mismatch(s.label, _describe(e), "a valid refutation of a "
+                                        f"statement graded {s.grade!r}"))
+            elif e.kind == "sweep":
+                try:
+                    sweep = load_sweep(path)
+                except ValueError as err:
+                    out.append(Mismatch(s.label, _describe(e), str(err)))
+                    continue
+                if sweep["label"] != s.label:
+                    out.append(Mismatch(s.label, _describe(e),
+                                        f"the sweep is about {sweep['label']!r}"))
+                if sweep["failures"] and not (sweep["smallest_case"] and
+                                              (root / sweep["smallest_case"]).is_file()):
+                    out.append(Mismatch(s.label, _describe(e), "failures without an "
+                                        "existing smallest case"))
+                if sweep["failures"] and s.grade == "proved":
+                    out.append(Mismatch(s.label, _describe(e), "a sweep fails on a "
+                                        "statement graded proved"))
+    return out
