@@ -1,0 +1,129 @@
+"""The one place where the gathering simulator imports the rest of exactsym.
+
+The paper layer (Preprocess, MakeAsym, ElectLeader on concentric polygons) works on
+:class:`~exactsym.configuration.Configuration` objects whose numbers live in one
+number system of the kernel; the simulator holds points as multiquadratic elements.
+:func:`paper_decision` converts a snapshot of R, runs GatheringPattern's decision and
+the leader election exactly as the paper layer implements them, and returns who moves
+and where (targets of epsilon moves are rebuilt here, in the multiquadratic field, from
+the paper layer's rotation parameters: the same rational rotation about the SEC centre).
+
+When the kernel cannot hold the snapshot's numbers (a field over the size limit), the
+decision is ``complete=False``: the simulator then stops as undecided rather than guess.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+
+from ..configuration import Configuration
+from ..errors import InputError
+from ..exact import evaluate, fmpq, number_system
+from ..expr import parse_expression
+from ..levels import rings as compute_rings
+from ..paper.family import (concentric_polygons, elect_leader, is_symmetric_family,
+                            is_symmetric_polygon, make_asym, preprocess)
+
+__all__ = ["PaperDecision", "paper_decision", "configuration_of", "GatheringInputError",
+           "read_case"]
+
+GatheringInputError = InputError
+
+
+@dataclass(frozen=True)
+class PaperMove:
+    """A move the paper's leader election makes: ``robot`` (index in the snapshot),
+    ``algorithm`` (MakeAsym or Make_SymToAsym), ``kind`` ("epsilon", "to-G_t-circle",
+    "off-centre"), ``tau`` (the rational rotation parameter of an epsilon move)."""
+    robot: int
+    algorithm: str
+    kind: str
+    tau: Fraction | None
+    target_ring_robot: int | None = None
+
+
+@dataclass(frozen=True)
+class PaperDecision:
+    possible: bool          # GatheringPattern: G' not in O_S
+    orderable: bool         # MakeAsym did not report "not orderable"
+    moves: tuple            # PaperMove, in the order the paper makes them
+    leader: int | None      # ElectLeader's robot (after MakeAsym's moves)
+    complete: bool
+    detail: str = ""
+
+
+def configuration_of(points) -> Configuration:
+    """A kernel configuration of MQ points (rational when they all are)."""
+    if all(x.is_rational() and y.is_rational() for x, y in points):
+        return Configuration.from_points([(x.to_fmpq(), y.to_fmpq()) for x, y in points])
+    exprs = [parse_expression(c.text()) for p in points for c in p]
+    system = number_system(exprs)
+    vals = [evaluate(e, system) for e in exprs]
+    return Configuration.from_points(list(zip(vals[0::2], vals[1::2])), system=system)
+
+
+def _tau(amount) -> Fraction | None:
+    if amount is None:
+        return None
+    text = str(amount).replace("rotation with tau =", "").strip()
+    try:
+        return Fraction(text)
+    except ValueError:
+        return None
+
+
+def paper_decision(points, orientation: int = 1, all_moves: bool = False) -> PaperDecision:
+    """GatheringPattern lines 1-6 on the snapshot ``points`` of R (MQ pairs), as seen by an
+    observer of handedness ``orientation``.  ``all_moves``: the leader is elected after
+    MakeAsym's moves (reading A3 "all in one cycle"); otherwise, when MakeAsym moves, the
+    leader is not needed (only the first move is made)."""
+    try:
+        config = configuration_of(points)
+        ring_data = compute_rings(config)
+    except (InputError, ArithmeticError, NotImplementedError, ValueError) as err:
+        return PaperDecision(False, False, (), None, False, f"kernel: {err}")
+    G = concentric_polygons(config, ring_data)
+    Gp = preprocess(G, [])
+    if is_symmetric_family(Gp):
+        return PaperDecision(False, False, (), None, True, "G' is in O_S")
+    trace: list = []
+    moves: list = []
+    current, cur_rings, cur_Gp = config, ring_data, Gp
+    if is_symmetric_polygon(Gp[-1]):
+        res = make_asym(config, ring_data, Gp, trace, orientation)
+        if res.outcome == "not-orderable":
+            return PaperDecision(True, False, (), None, True, "MakeAsym: not orderable")
+        for m in res.moves:
+            moves.append(PaperMove(m["robot"], m["algorithm"], m["kind"], _tau(m.get("amount")),
+                                   Gp[-1].own[0] if m["kind"] == "to-G_t-circle" else None))
+        if res.outcome != "orderable" or res.config is None:
+            return PaperDecision(True, True, tuple(moves), None, False,
+                                 f"MakeAsym: {res.outcome}")
+        if not all_moves:
+            return PaperDecision(True, True, tuple(moves), None, True, "MakeAsym moves first")
+        current = res.config
+        try:
+            cur_rings = compute_rings(current)
+        except (InputError, ArithmeticError, NotImplementedError) as err:
+            return PaperDecision(True, True, tuple(moves), None, False, f"kernel: {err}")
+        cur_Gp = preprocess(concentric_polygons(current, cur_rings), [])
+    el = elect_leader(cur_Gp, trace, orientation)
+    for m in el.moves:
+        moves.append(PaperMove(m["robot"], m["algorithm"], m["kind"], _tau(m.get("amount"))))
+    return PaperDecision(True, True, tuple(moves), el.leader, el.computed,
+                         f"ElectLeader: {el.branch}")
+
+
+def read_case(path):
+    """Read a case file (configuration format 1): ``(points as fmpq pairs, name, expect,
+    source)``; raises :class:`InputError` with the file location."""
+    from ..config import read_config
+    from ..configuration import from_file
+    config = from_file(read_config(path))
+    pts = []
+    for x, y in config.points:
+        if not (isinstance(x, fmpq) and isinstance(y, fmpq)):
+            raise InputError("the gathering simulator needs rational coordinates", config.source)
+        pts.append((x, y))
+    return pts, config.name, dict(config.expect), config.source
