@@ -109,7 +109,7 @@ class Checker:
             if d2.status == "undecided":
                 continue
             theirs = _plan(paths2, d2)
-            if theirs != mine:
+            if not _same_plan(mine, theirs):
                 raise Violation("I9", t, sorted(set(mine) | set(theirs)),
                                 f"a Look in frame {frame.as_list()} plans {_plan_text(mine)}, "
                                 f"one in frame {other.as_list()} plans {_plan_text(theirs)}")
@@ -153,8 +153,8 @@ class Checker:
                 self.undecided_fresh += 1
                 return
             plan = _plan(paths, d)
-            want = {i: rob.target if rob.role == "leader" else rob.role}
-            if plan != want:
+            want = {i: (rob.role, rob.target)}
+            if not _same_plan(plan, want):
                 raise Violation("I3", t, sorted(set(plan) | {i}),
                                 f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
                                 f"Look now plans {_plan_text(plan)} ({d.status}: {d.detail})")
@@ -183,22 +183,33 @@ class Checker:
 
 
 def _plan(paths, decision) -> dict:
-    """Mover -> final target; the target of an epsilon move (MakeAsym, Make_SymToAsym) is
-    not compared: its sense is the mover's own choice (reading A8) and a fresh Look during
-    it asks for a further epsilon."""
+    """Mover -> (role, final target)."""
     out = {}
     for r, p in paths.items():
         if p:
             m = decision.move_of(r)
-            out[r] = p[-1].final if m is None or m.role == "leader" else m.role
+            out[r] = (m.role if m is not None else "leader", p[-1].final)
     return out
+
+
+def _same_plan(a: dict, b: dict) -> bool:
+    """Same movers, and the same final target for each, except where either plan starts
+    with an epsilon move (MakeAsym, Make_SymToAsym): its sense is the mover's own choice
+    (reading A8) and a fresh Look during it asks for a further epsilon."""
+    if set(a) != set(b):
+        return False
+    for r in a:
+        (role_a, ta), (role_b, tb) = a[r], b[r]
+        if role_a == role_b == "leader" and ta != tb:
+            return False
+    return True
 
 
 def _plan_text(plan: dict) -> str:
     if not plan:
         return "no move"
-    return ", ".join(f"robot {r} to {g.fmt_point(p)}" if isinstance(p, tuple) else
-                     f"robot {r} ({p} epsilon move)" for r, p in sorted(plan.items()))
+    return ", ".join(f"robot {r} ({role}) to {g.fmt_point(p)}"
+                     for r, (role, p) in sorted(plan.items()))
 
 
 def _piece_text(piece) -> str:
