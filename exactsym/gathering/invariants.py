@@ -165,6 +165,8 @@ class Checker:
         rob = world.robots[i]
         pts = world.positions()
         centre = rob.centre
+        if centre is None:            # a move the adversary made up (tests): no Look
+            return
         pat = recognise(pts, centre, world.readings.lone)
         if self._on("I8"):
             lost = self.in_pattern - set(pat.robots) - {i}

@@ -29,7 +29,7 @@ def result_dict(res: Result) -> dict:
 
 def trace_dict(points, res: Result, settings: dict) -> dict:
     return {"format": FORMAT, "version": VERSION,
-            "points": [[str(Fraction(x)), str(Fraction(y))] for x, y in points],
+            "points": [[str(Fraction(str(x))), str(Fraction(str(y)))] for x, y in points],
             "settings": settings, "actions": res.actions, "result": result_dict(res)}
 
 
@@ -66,7 +66,7 @@ def replay(data: dict, points=None) -> Result:
     """Re-run the trace's actions; ``points`` (from a configuration file) must equal the
     trace's own points (else :class:`TraceMismatch`)."""
     own = trace_points(data)
-    if points is not None and [tuple(map(Fraction, p)) for p in points] != own:
+    if points is not None and [(Fraction(str(x)), Fraction(str(y))) for x, y in points] != own:
         raise TraceMismatch("the trace was recorded on other starting points than the file's")
     s = data["settings"]
     try:
