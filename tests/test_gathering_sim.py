@@ -294,3 +294,15 @@ def test_cli_bad_options_and_trace(tmp_path, capsys):
     other = _case(tmp_path, OBSTACLE)
     assert main(["replay", str(trace), str(other)]) == 2
     assert "other starting points" in capsys.readouterr().err
+
+
+def test_search_finds_a_shortest_violation():
+    from exactsym.gathering.search import exhaustive, search_violation
+    settings = {"readings": Readings().as_dict(), "invariants": sorted(ALL_ON - {"I9"}),
+                "rigid": True, "delta": None, "max_events": 50}
+    found = exhaustive(ONE_CIRCLE, settings, max_depth=4)
+    assert [a["a"] for a in found] == ["look", "look"]          # two Looks, two handednesses
+    assert {a["robot"] for a in found} == {2, 3}
+    assert exhaustive(ONE_CIRCLE, settings, max_depth=1) is None  # one action never suffices
+    res = search_violation(ONE_CIRCLE, settings, max_depth=4)
+    assert res.violation["invariant"] == "I2" and res.events == 2

@@ -126,10 +126,17 @@ def run(args) -> int:
         return _fail(str(err))
     except (ValueError, ZeroDivisionError) as err:
         return _fail(str(err))
+    note = None
     if args.search:
         from .search import search_violation
         found = search_violation(points, settings)
-        res = found if found is not None else run_settings(points, settings)
+        if found is not None:
+            note = (f"search: a shortest violating schedule found, {len(found.actions)} "
+                    "adversary actions (breadth-first, or the shortest of the random restarts)")
+            res = found
+        else:
+            note = "search: no violation within the bounds; the seeded run follows"
+            res = run_settings(points, settings)
     else:
         res = run_settings(points, settings, progress=not args.json)
     failures = expectation_failures(expect, res)
@@ -140,9 +147,11 @@ def run(args) -> int:
             return _fail(f"cannot write the trace: {err}")
     if args.json:
         out = result_dict(res)
-        out.update(settings=settings, expect_failures=failures)
+        out.update(settings=settings, expect_failures=failures, search=note)
         print(json.dumps(out))
     else:
+        if note:
+            print(note)
         print(_text(res, settings))
         if res.outcome == "max-events" and args.trace:
             print(f"stopped at --max-events; trace written to {args.trace}")
