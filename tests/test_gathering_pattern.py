@@ -194,3 +194,17 @@ def test_sec_claim_witness_more_than_three_on_the_circle():
     moved = pts[:4] + [g.rotate(pts[4], MQ.rational(cs), MQ.rational(sn))]
     c1, r1 = g.smallest_enclosing_circle(moved)
     assert c1 != c0 and (r1 - r0).sign() < 0
+
+
+def test_literal_definition_fails_exactly_with_a_lone_last_robot():
+    """Def. 1's 'touches at least 1 robot of its layer' fails for complete patterns whose
+    last layer holds one robot: n = 2, 8, 20, 38, 63, ... (1 + full layers + 1)."""
+    lone_ns, total = [], 1
+    for L in range(1, 6):
+        lone_ns.append(total + 1)
+        total += capacity(L)
+    assert lone_ns[:4] == [2, 8, 20, 38]
+    for n in range(2, 70):
+        pts = generate(n)
+        pat = recognise(pts, pts[0])
+        assert bool(definition_defects(pts, pat, lone="reject")) == (n in lone_ns)

@@ -306,3 +306,20 @@ def test_search_finds_a_shortest_violation():
     assert exhaustive(ONE_CIRCLE, settings, max_depth=1) is None  # one action never suffices
     res = search_violation(ONE_CIRCLE, settings, max_depth=4)
     assert res.violation["invariant"] == "I2" and res.events == 2
+
+
+@pytest.mark.parametrize("k", [3, 7, 10])
+@pytest.mark.parametrize("readings", [Readings(), Readings(A3="all", EL="unordered"),
+                                      Readings(A1="sec-r")])
+def test_two_robots_left_is_not_possible(k, readings):
+    """Once R has two robots left (a complete pattern of k robots about the SEC centre),
+    G' is two points, always symmetric: GatheringPattern reports 'not possible' whatever
+    the reading, so the literal algorithm never gathers (the conclusion's claim)."""
+    pts = tuple(generate(k)) + (g.point(30, 1), g.point(-30, -1))
+    d = decide(pts, readings)
+    assert d.pattern.robots == frozenset(range(k)) and d.status == "not-possible"
+
+
+def test_unordered_reading_rescues_handedness():
+    w = world(ONE_CIRCLE, readings=Readings(EL="unordered"))
+    assert w.snapshot_decision(IDENTITY)[0].leader == w.snapshot_decision(MIRROR)[0].leader

@@ -73,11 +73,14 @@ def _tau(amount) -> Fraction | None:
         return None
 
 
-def paper_decision(points, orientation: int = 1, all_moves: bool = False) -> PaperDecision:
+def paper_decision(points, orientation: int = 1, all_moves: bool = False,
+                   reading: str = "literal") -> PaperDecision:
     """GatheringPattern lines 1-6 on the snapshot ``points`` of R (MQ pairs), as seen by an
     observer of handedness ``orientation``.  ``all_moves``: the leader is elected after
     MakeAsym's moves (reading A3 "all in one cycle"); otherwise, when MakeAsym moves, the
-    leader is not needed (only the first move is made)."""
+    leader is not needed (only the first move is made).  ``reading``: the paper layer's
+    reading of Elect_Leader_Asym's tuples ("literal": (CW, ACW) in the observer's
+    handedness; "unordered": each tuple sorted, the same in both handednesses)."""
     try:
         config = configuration_of(points)
         ring_data = compute_rings(config)
@@ -91,7 +94,7 @@ def paper_decision(points, orientation: int = 1, all_moves: bool = False) -> Pap
     moves: list = []
     current, cur_rings, cur_Gp = config, ring_data, Gp
     if is_symmetric_polygon(Gp[-1]):
-        res = make_asym(config, ring_data, Gp, trace, orientation)
+        res = make_asym(config, ring_data, Gp, trace, orientation, reading)
         if res.outcome == "not-orderable":
             return PaperDecision(True, False, (), None, True, "MakeAsym: not orderable")
         for m in res.moves:
@@ -108,7 +111,7 @@ def paper_decision(points, orientation: int = 1, all_moves: bool = False) -> Pap
         except (InputError, ArithmeticError, NotImplementedError) as err:
             return PaperDecision(True, True, tuple(moves), None, False, f"kernel: {err}")
         cur_Gp = preprocess(concentric_polygons(current, cur_rings), [])
-    el = elect_leader(cur_Gp, trace, orientation)
+    el = elect_leader(cur_Gp, trace, orientation, reading)
     for m in el.moves:
         moves.append(PaperMove(m["robot"], m["algorithm"], m["kind"], _tau(m.get("amount"))))
     return PaperDecision(True, True, tuple(moves), el.leader, el.computed,

@@ -30,6 +30,9 @@ end of the layer's chain), ``straight`` (the segment to that slot), ``arc-radial
 arc on the mover's own circle to the slot's ray, then radially in).  A6: the nearer
 end; on a tie the counter-clockwise way of the mover's own frame.
 Epsilon moves (A8): the paper layer's rational rotations about the SEC centre of R.
+EL: the paper layer's reading of Elect_Leader_Asym's tuples {CW, ACW}: ``literal``
+(ordered pairs in the observer's handedness, default) or ``unordered`` (sorted pairs,
+the same for both handednesses).
 """
 
 from __future__ import annotations
@@ -52,6 +55,7 @@ READINGS = {
     "A7": ("largest",),
     "A8": ("rational-rotation",),
     "lone": ("accept", "reject"),
+    "EL": ("literal", "unordered"),
 }
 
 
@@ -65,6 +69,7 @@ class Readings:
     A7: str = "largest"
     A8: str = "rational-rotation"
     lone: str = "accept"
+    EL: str = "literal"
 
     def as_dict(self) -> dict:
         return {k: getattr(self, k) for k in READINGS}
@@ -127,7 +132,7 @@ def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> De
     if not R:
         return Decision("terminated", (), centre, pat, None, "R is empty")
     rpts = [pts[i] for i in R]
-    d = paper_decision(rpts, 1, readings.A3 == "all")
+    d = paper_decision(rpts, 1, readings.A3 == "all", readings.EL)
     if not d.complete:
         return Decision("undecided", (), centre, pat, None, d.detail)
     if not d.possible or not d.orderable:
