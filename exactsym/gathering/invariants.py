@@ -62,7 +62,7 @@ class Checker:
     enabled: frozenset = frozenset(ALL)
     counts: dict = field(default_factory=lambda: {k: 0 for k in ALL})
     in_pattern: set = field(default_factory=set)       # robots ever recognised in P
-    undecided_fresh: int = 0                            # I3 Looks the kernel could not hold
+    undecided_fresh: int = 0      # I3 / I9 Looks skipped: the kernel could not hold them
     frames: tuple = ()                                  # extra frames for I9 (besides mirror)
 
     def _on(self, key) -> bool:
@@ -107,6 +107,7 @@ class Checker:
                 continue
             d2, paths2 = world.snapshot_decision(other)
             if d2.status == "undecided":
+                self.undecided_fresh += 1
                 continue
             theirs = _plan(paths2, d2)
             if not _same_plan(mine, theirs):

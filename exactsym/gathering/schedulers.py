@@ -125,7 +125,9 @@ def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Re
                    "centre_robot": pat.centre_robot,
                    "layers": [list(layer) for layer in pat.layers],
                    "size": len(pat.robots)}
-    return Result(outcome, detail, world.events, world.looks, dict(checker.counts), violation,
+    checks = dict(checker.counts)
+    checks["skipped"] = checker.undecided_fresh   # I3/I9 Looks the kernel could not hold
+    return Result(outcome, detail, world.events, world.looks, checks, violation,
                   pattern, r.actions)
 
 
