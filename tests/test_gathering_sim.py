@@ -323,3 +323,16 @@ def test_two_robots_left_is_not_possible(k, readings):
 def test_unordered_reading_rescues_handedness():
     w = world(ONE_CIRCLE, readings=Readings(EL="unordered"))
     assert w.snapshot_decision(IDENTITY)[0].leader == w.snapshot_decision(MIRROR)[0].leader
+
+
+@pytest.mark.parametrize("case", [OBSTACLE, ONE_CIRCLE])
+def test_runs_are_invariant_under_an_exact_similarity(case):
+    """Rotating (Pythagorean), scaling by 1 and translating the input changes no outcome,
+    event count or violation: every Look is made in a frame anyway."""
+    c, s = F(3, 5), F(4, 5)
+    moved = [(c * x - s * y + 7, s * x + c * y - F(1, 3)) for x, y in case]
+    for readings in (Readings(), Readings(A3="all")):
+        a = run(case, "async", 5, readings, max_events=60, reflections=False)
+        b = run(moved, "async", 5, readings, max_events=60, reflections=False)
+        assert (a.outcome, a.events, a.looks, a.label) == (b.outcome, b.events, b.looks, b.label)
+        assert (a.violation or {}).get("robots") == (b.violation or {}).get("robots")

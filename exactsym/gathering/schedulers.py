@@ -179,16 +179,13 @@ def _centralised(r: _Run, rng, reflections):
 
 
 def _finish_move(r: _Run, i, rng):
+    """Robot ``i`` completes its move; non-rigid: the adversary may stop at a rational point
+    of a piece, and end the move there once delta is covered."""
     w = r.world
     while w.robots[i].busy:
         if not w.rigid and rng.random() < 0.3:
             stop = Fraction(rng.randint(1, 3), 4)
-            rob = w.robots[i]
-            try:
-                r.advance(i, stop, end=_may_end(w, i, stop))
-            except ValueError:
-                r.advance(i, stop)
-            del rob
+            r.advance(i, stop, end=_may_end(w, i, stop))
         else:
             r.advance(i)
 
@@ -202,31 +199,28 @@ def _may_end(w: World, i, stop) -> bool:
 
 
 def _synchronous(r: _Run, rng, reflections, subset: bool):
+    """FSYNC (everyone) or SSYNC (a random subset) Looks at one configuration, then the
+    movers move in turn.  Reaching here, a fresh Look plans a move (``_terminal``)."""
     w = r.world
-    idle_rounds, since_growth = 0, 0
+    since_growth = 0
     while True:
         end = _terminal(w)
         if end:
             return end
         active = [i for i in range(w.n) if not subset or rng.random() < 0.5] or \
             [rng.randrange(w.n)]
-        # everyone in ``active`` Looks at the same configuration, then they move
         for i in active:
             r.look(i, random_frame(rng, reflections))
         movers = [i for i in active if w.robots[i].busy]
         roles = [w.robots[i].role for i in movers]
         for i in movers:
             _finish_move(r, i, rng)
-        idle_rounds = 0 if movers else idle_rounds + (1 if not subset or
-                                                     len(active) == w.n else 0)
-        since_growth = 0 if any(x.startswith("leader") for x in roles) else since_growth + (1 if movers else 0)
-        if subset and not movers:
-            # an SSYNC round in which the active robots stay: check whether anyone would move
-            d = _status(w)
-            if d.status == "move":
-                continue
-            idle_rounds = 2
-        stall = _stall(w, idle_rounds, since_growth)
+        if movers:
+            grew = any(x.startswith("leader") for x in roles)
+            since_growth = 0 if grew else since_growth + 1
+        elif not subset:
+            return "stalled", "every robot Looked and none moved, R not empty"
+        stall = _stall(w, 0, since_growth)
         if stall:
             return stall
 
