@@ -336,3 +336,20 @@ def test_runs_are_invariant_under_an_exact_similarity(case):
         b = run(moved, "async", 5, readings, max_events=60, reflections=False)
         assert (a.outcome, a.events, a.looks, a.label) == (b.outcome, b.events, b.looks, b.label)
         assert (a.violation or {}).get("robots") == (b.violation or {}).get("robots")
+
+
+def test_slide_direction_nearer_end_and_inside_the_chain_arc():
+    from exactsym.gathering.pattern import recognise
+    from exactsym.gathering.robot import form_pattern_path
+    c = g.point(0, 0)
+    base = tuple(generate(2))            # centre and one robot at (2, 0)
+    # from about 100 degrees: the ccw end's slot (60 degrees) is nearer, clockwise
+    p = g.point(-3, 17)
+    path = form_pattern_path(p, base + (p,), recognise(base + (p,), c), c, Readings())
+    assert path[-1].sense == -1 and path[-1].final[1].sign() > 0
+    # from about 30 degrees: the radial arrival lies between the robot and its slot: the
+    # short way, counter-clockwise to the 60-degree slot (and the plan overlaps: I5)
+    p = g.point(17, 10)
+    path = form_pattern_path(p, base + (p,), recognise(base + (p,), c), c, Readings())
+    assert len(path) == 2 and path[-1].sense == 1 and path[-1].final[1].sign() > 0
+    assert g.piece_hits(path[0], base[1])

@@ -215,12 +215,18 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1) 
     s_ccw = slot(centre, pts[chain[-1]], l, 1)      # past the counter-clockwise end
     s_cw = slot(centre, pts[chain[0]], l, -1)       # past the clockwise end
     vq, v1, v2 = g.sub(q, centre), g.sub(s_ccw, centre), g.sub(s_cw, centre)
-    to_ccw_end = g.angle_key(v1, vq)    # clockwise from q back to s_ccw
-    to_cw_end = g.angle_key(vq, v2)     # counter-clockwise from q on to s_cw
-    if g.angle_less(to_ccw_end, to_cw_end):
-        target, sense = s_ccw, -1
+    # the free arc runs counter-clockwise from s_ccw to s_cw; all three vectors have the
+    # length 2l, so angle keys compare angles
+    if not g.angle_less(g.angle_key(v1, v2), g.angle_key(v1, vq)):
+        # q on the free arc: back (clockwise) to s_ccw, or on (counter-clockwise) to s_cw;
+        # the nearer, a tie by the own counter-clockwise sense
+        back, on = g.angle_key(v1, vq), g.angle_key(vq, v2)
+        target, sense = (s_ccw, -1) if g.angle_less(back, on) else (s_cw, 1)
     else:
-        target, sense = s_cw, 1          # nearer, or a tie: own counter-clockwise
+        # q inside the chain's own arc (its radial arrival overlaps the chain: I5 reports
+        # it): the shorter turn, counter-clockwise to s_ccw or clockwise to s_cw
+        on, back = g.angle_key(vq, v1), g.angle_key(v2, vq)
+        target, sense = (s_cw, -1) if g.angle_less(back, on) else (s_ccw, 1)
     if readings.A5 == "straight":
         return [g.Segment(p, target)]
     if readings.A5 == "arc-radial":
