@@ -353,3 +353,20 @@ def test_slide_direction_nearer_end_and_inside_the_chain_arc():
     path = form_pattern_path(p, base + (p,), recognise(base + (p,), c), c, Readings())
     assert len(path) == 2 and path[-1].sense == 1 and path[-1].final[1].sign() > 0
     assert g.piece_hits(path[0], base[1])
+
+
+def test_critical_points_of_a_segment_and_an_arc():
+    from exactsym.exact.multiquadratic import MQ, sqrt_rational
+    from exactsym.gathering.invariants import critical_points
+    w = world([(10, -10), (0, 12), (20, 0), (-20, 0), (0, -20)])
+    seg = g.Segment(g.point(10, -10), g.point(-10, -10))
+    pts = {str(p[0]): p for _, p in critical_points(seg, g.point(0, 0), w, 0)}
+    # on the line through C and robot 1: x = 0; as far from C as robot 1: x = +-sqrt(44)
+    assert g.point(0, -10) in pts.values()
+    assert (2 * sqrt_rational(11), MQ.rational(-10)) in pts.values()
+    assert (-2 * sqrt_rational(11), MQ.rational(-10)) in pts.values()
+    arc = g.Arc(g.point(0, 0), g.point(5, 0), g.point(0, 5), 1)
+    crossings = [p for _, p in critical_points(arc, g.point(0, 0), world(
+        [(5, 0), (8, 8), (0, -9), (-30, 1), (30, 2)]), 0)]
+    r = sqrt_rational(F(25, 2))
+    assert (r, r) in crossings and len(crossings) == 2      # robots 1 and 4 (3.8 degrees)

@@ -147,18 +147,32 @@ class Checker:
             if d.centre != rob.centre:
                 raise Violation("I6", t, [i], f"C moved from {g.fmt_point(rob.centre)} to "
                                 f"{g.fmt_point(d.centre)} while robot {i} moves")
-        if rob.path and self._on("I3"):
-            from .world import IDENTITY
-            d, paths = world.snapshot_decision(IDENTITY)
-            if d.status == "undecided":
-                self.undecided_fresh += 1
-                return
-            plan = _plan(paths, d)
-            want = {i: (rob.role, rob.target)}
-            if not _same_plan(plan, want):
-                raise Violation("I3", t, sorted(set(plan) | {i}),
-                                f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
-                                f"Look now plans {_plan_text(plan)} ({d.status}: {d.detail})")
+        if self._on("I3"):
+            # the critical instants inside the piece, then (unless it was the last piece)
+            # its end: the fresh Look must name the same mover and target
+            end = rob.pos
+            try:
+                for where, point in critical_points(piece, rob.centre, world, i):
+                    rob.pos = point
+                    self._fresh_look(world, i, t, f" ({where})")
+            finally:
+                rob.pos = end
+            if rob.path:
+                self._fresh_look(world, i, t, "")
+
+    def _fresh_look(self, world, i, t, where: str):
+        from .world import IDENTITY
+        rob = world.robots[i]
+        d, paths = world.snapshot_decision(IDENTITY)
+        if d.status == "undecided":
+            self.undecided_fresh += 1
+            return
+        plan = _plan(paths, d)
+        if not _same_plan(plan, {i: (rob.role, rob.target)}):
+            raise Violation("I3", t, sorted(set(plan) | {i}),
+                            f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
+                            f"Look with robot {i} at {g.fmt_point(rob.pos)}{where} plans "
+                            f"{_plan_text(plan)} ({d.status}: {d.detail})")
 
     # -- after an arrival ----------------------------------------------------------------
     def after_arrival(self, world, i):
@@ -183,6 +197,53 @@ class Checker:
                                 f"{g.fmt_point(rob.pos)} but is not in the recognised pattern "
                                 f"about {g.fmt_point(centre)}: P did not grow")
         self.in_pattern |= set(pat.robots)
+
+
+def critical_points(piece, centre, world, mover: int) -> list:
+    """Exact points strictly inside ``piece`` where the mover's relation to another robot
+    changes: on a segment, where it is collinear with C and that robot (a ray crossing:
+    angular orders, levels' polygons and mirror lines change there) and where its distance
+    to C equals that robot's (the levels change; kept when the instant needs no new
+    nested radical); on an arc about C, where it crosses the ray of that robot.
+    ``[(description, point)]``."""
+    if centre is None:
+        return []
+    out = []
+    for k, other in enumerate(world.robots):
+        if k == mover:
+            continue
+        w = g.sub(other.pos, centre)
+        if w[0].is_zero() and w[1].is_zero():
+            continue
+        if isinstance(piece, g.Segment):
+            a, d = g.sub(piece.start, centre), g.sub(piece.end, piece.start)
+            den = g.cross(d, w)
+            if not den.is_zero():
+                tt = -g.cross(a, w) / den
+                if tt.sign() > 0 and (tt - 1).sign() < 0:
+                    out.append((f"on the ray of robot {k}", piece.at(tt)))
+            # |a + t d|^2 = |w|^2: (d.d) t^2 + 2 (a.d) t + (a.a - w.w) = 0
+            A, B, C0 = g.dot(d, d), g.dot(a, d) * 2, g.dot(a, a) - g.dot(w, w)
+            disc = B * B - A * C0 * 4
+            if disc.is_rational() and disc.sign() >= 0 and not A.is_zero():
+                from ..exact.multiquadratic import sqrt_rational
+                root = sqrt_rational(disc.to_fmpq())
+                for tt in ((-B - root) / (A * 2), (-B + root) / (A * 2)):
+                    if tt.sign() > 0 and (tt - 1).sign() < 0:
+                        out.append((f"as far from C as robot {k}", piece.at(tt)))
+        else:
+            w2 = g.dot(w, w)
+            r2 = g.dist2(piece.start, piece.centre)
+            ratio = r2 / w2
+            if ratio.is_rational():
+                from ..exact.multiquadratic import sqrt_rational
+                scale = sqrt_rational(ratio.to_fmpq())
+                for sgn in (1, -1):
+                    q = g.add(piece.centre, g.scale(w, scale * sgn))
+                    if q != piece.start and q != piece.end and \
+                            piece.contains_direction(g.sub(q, piece.centre)):
+                        out.append((f"on the ray of robot {k}", q))
+    return out
 
 
 def _plan(paths, decision) -> dict:
