@@ -101,6 +101,14 @@ def paper_decision(points, orientation: int = 1, all_moves: bool = False,
             moves.append(PaperMove(m["robot"], m["algorithm"], m["kind"], _tau(m.get("amount")),
                                    Gp[-1].own[0] if m["kind"] == "to-G_t-circle" else None))
         if res.outcome != "orderable" or res.config is None:
+            # the paper layer could not place a robot exactly (a radial move to G_t's
+            # circle by an irrational ratio): the simulator places it in the
+            # multiquadratic field, which suffices when only the first move is made
+            placeable = bool(moves) and all(m.kind in ("epsilon", "to-G_t-circle")
+                                            for m in moves)
+            if res.outcome == "undecided" and placeable and not all_moves:
+                return PaperDecision(True, True, tuple(moves), None, True,
+                                     "MakeAsym moves first (placed by the simulator)")
             return PaperDecision(True, True, tuple(moves), None, False,
                                  f"MakeAsym: {res.outcome}")
         if not all_moves:

@@ -132,45 +132,61 @@ def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> De
     if not R:
         return Decision("terminated", (), centre, pat, None, "R is empty")
     rpts = [pts[i] for i in R]
-    d = paper_decision(rpts, 1, readings.A3 == "all", readings.EL)
-    if not d.complete:
-        return Decision("undecided", (), centre, pat, None, d.detail)
-    if not d.possible or not d.orderable:
-        return Decision("not-possible", (), centre, pat, None, d.detail)
-    centre_r = g.smallest_enclosing_circle(rpts)[0] if d.moves else None
-    moves: dict = {}
+    moves: dict = {}          # robot -> pieces, in the snapshot's frame
     order: list = []
-    try:
-        for pm in (d.moves if readings.A3 == "all" else d.moves[:1]):
-            robot = R[pm.robot]
-            start = moves[robot][-1].final if robot in moves else pts[robot]
-            piece = _paper_move(pm, start, centre_r, pts, R)
-            if piece is None:
-                return Decision("undecided", (), centre, pat, None,
-                                f"{pm.algorithm} move of kind {pm.kind} is not simulated")
-            if robot not in moves:
-                order.append(robot)
-            moves[robot] = moves.get(robot, []) + piece
-        leader = R[d.leader] if d.leader is not None else None
-        if leader is not None and (readings.A3 == "all" or not d.moves):
-            start = moves[leader][-1].final if leader in moves else pts[leader]
-            path = form_pattern_path(start, pts, pat, centre, readings, unit)
-            if leader not in moves:
-                order.append(leader)
-            moves[leader] = moves.get(leader, []) + path
-    except ValueError as err:
-        return Decision("undecided", (), centre, pat, None, str(err))
-    if leader is None and not moves:
-        return Decision("stay", (), centre, pat, None,
-                        f"the paper elects no leader among the {len(R)} robots of R ({d.detail})")
-    roles = {R[pm.robot]: pm.algorithm for pm in d.moves}
-    if readings.A3 == "all" and leader is not None:
-        # the leader's path starts with its own epsilon move: "leader+epsilon"
+    roles: dict = {}
+    current = list(pts)       # positions after the moves named so far (A3 = all)
+    leader = None
+    detail = ""
+    # A3 = all: MakeAsym's moves, then (every robot recomputing on the moved positions,
+    # as the paper layer's rounds do) ElectLeader's, then the leader's FormGPattern
+    for _round in range(3 if readings.A3 == "all" else 1):
+        rpts = [current[i] for i in R]
+        d = paper_decision(rpts, 1, False, readings.EL)
+        detail = d.detail
+        if not d.complete:
+            return Decision("undecided", (), centre, pat, None, d.detail)
+        if not d.possible or not d.orderable:
+            if _round == 0:
+                return Decision("not-possible", (), centre, pat, None, d.detail)
+            return Decision("undecided", (), centre, pat, None,
+                            f"after MakeAsym's moves: {d.detail}")
+        centre_r = g.smallest_enclosing_circle(rpts)[0] if d.moves else None
+        try:
+            for pm in (d.moves if readings.A3 == "all" else d.moves[:1]):
+                robot = R[pm.robot]
+                piece = _paper_move(pm, current[robot], centre_r, current, R)
+                if piece is None:
+                    return Decision("undecided", (), centre, pat, None,
+                                    f"{pm.algorithm} move of kind {pm.kind} is not simulated")
+                if robot not in moves:
+                    order.append(robot)
+                moves[robot] = moves.get(robot, []) + piece
+                roles[robot] = pm.algorithm
+                current[robot] = piece[-1].final
+        except ValueError as err:
+            return Decision("undecided", (), centre, pat, None, str(err))
+        made_asym = bool(d.moves) and all(pm.algorithm == "MakeAsym" for pm in d.moves)
+        if not made_asym or readings.A3 == "first":
+            leader = R[d.leader] if d.leader is not None else None
+            break
+    else:
+        return Decision("undecided", (), centre, pat, None, "MakeAsym moves for 3 rounds")
+    if leader is not None and (readings.A3 == "all" or not moves):
+        try:
+            path = form_pattern_path(current[leader], current, pat, centre, readings, unit)
+        except ValueError as err:
+            return Decision("undecided", (), centre, pat, None, str(err))
+        if leader not in moves:
+            order.append(leader)
+        moves[leader] = moves.get(leader, []) + path
+        # A3 = all: the leader's path may start with its own epsilon move
         roles[leader] = "leader+epsilon" if leader in roles else "leader"
-    elif leader is not None and not d.moves:
-        roles[leader] = "leader"
+    if not moves:
+        return Decision("stay", (), centre, pat, None,
+                        f"the paper elects no leader among the {len(R)} robots of R ({detail})")
     out = tuple(Move(r, tuple(moves[r]), roles[r]) for r in order)
-    return Decision("move", out, centre, pat, leader, d.detail)
+    return Decision("move", out, centre, pat, leader, detail)
 
 
 def _paper_move(pm, start, centre_r, pts, R):
