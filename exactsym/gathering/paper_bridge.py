@@ -73,14 +73,13 @@ def _tau(amount) -> Fraction | None:
         return None
 
 
-def paper_decision(points, orientation: int = 1, all_moves: bool = False,
-                   reading: str = "literal") -> PaperDecision:
+def paper_decision(points, orientation: int = 1, reading: str = "literal") -> PaperDecision:
     """GatheringPattern lines 1-6 on the snapshot ``points`` of R (MQ pairs), as seen by an
-    observer of handedness ``orientation``.  ``all_moves``: the leader is elected after
-    MakeAsym's moves (reading A3 "all in one cycle"); otherwise, when MakeAsym moves, the
-    leader is not needed (only the first move is made).  ``reading``: the paper layer's
-    reading of Elect_Leader_Asym's tuples ("literal": (CW, ACW) in the observer's
-    handedness; "unordered": each tuple sorted, the same in both handednesses)."""
+    observer of handedness ``orientation``: "not possible" (G' in O_S), MakeAsym's moves
+    when G_t is symmetric (the caller recomputes on the moved positions for the leader,
+    as every oblivious robot would), else ElectLeader's moves and leader.  ``reading``:
+    the paper layer's reading of Elect_Leader_Asym's tuples ("literal": (CW, ACW) in the
+    observer's handedness; "unordered": each tuple sorted, the same in both)."""
     try:
         config = configuration_of(points)
         ring_data = compute_rings(config)
@@ -91,38 +90,24 @@ def paper_decision(points, orientation: int = 1, all_moves: bool = False,
     if is_symmetric_family(Gp):
         return PaperDecision(False, False, (), None, True, "G' is in O_S")
     trace: list = []
-    moves: list = []
-    current, cur_rings, cur_Gp = config, ring_data, Gp
     if is_symmetric_polygon(Gp[-1]):
         res = make_asym(config, ring_data, Gp, trace, orientation, reading)
         if res.outcome == "not-orderable":
             return PaperDecision(True, False, (), None, True, "MakeAsym: not orderable")
-        for m in res.moves:
-            moves.append(PaperMove(m["robot"], m["algorithm"], m["kind"], _tau(m.get("amount")),
-                                   Gp[-1].own[0] if m["kind"] == "to-G_t-circle" else None))
-        if res.outcome != "orderable" or res.config is None:
-            # the paper layer could not place a robot exactly (a radial move to G_t's
-            # circle by an irrational ratio): the simulator places it in the
-            # multiquadratic field, which suffices when only the first move is made
-            placeable = bool(moves) and all(m.kind in ("epsilon", "to-G_t-circle")
-                                            for m in moves)
-            if res.outcome == "undecided" and placeable and not all_moves:
-                return PaperDecision(True, True, tuple(moves), None, True,
-                                     "MakeAsym moves first (placed by the simulator)")
-            return PaperDecision(True, True, tuple(moves), None, False,
-                                 f"MakeAsym: {res.outcome}")
-        if not all_moves:
-            return PaperDecision(True, True, tuple(moves), None, True, "MakeAsym moves first")
-        current = res.config
-        try:
-            cur_rings = compute_rings(current)
-        except (InputError, ArithmeticError, NotImplementedError) as err:
-            return PaperDecision(True, True, tuple(moves), None, False, f"kernel: {err}")
-        cur_Gp = preprocess(concentric_polygons(current, cur_rings), [])
-    el = elect_leader(cur_Gp, trace, orientation, reading)
-    for m in el.moves:
-        moves.append(PaperMove(m["robot"], m["algorithm"], m["kind"], _tau(m.get("amount"))))
-    return PaperDecision(True, True, tuple(moves), el.leader, el.computed,
+        moves = tuple(PaperMove(m["robot"], m["algorithm"], m["kind"], _tau(m.get("amount")),
+                                Gp[-1].own[0] if m["kind"] == "to-G_t-circle" else None)
+                      for m in res.moves)
+        # "undecided": the paper layer could not place a robot exactly (a radial move to
+        # G_t's circle by an irrational ratio); the simulator places it in the
+        # multiquadratic field
+        placeable = bool(moves) and all(m.kind in ("epsilon", "to-G_t-circle") for m in moves)
+        if res.outcome == "orderable" or (res.outcome == "undecided" and placeable):
+            return PaperDecision(True, True, moves, None, True, "MakeAsym moves first")
+        return PaperDecision(True, True, moves, None, False, f"MakeAsym: {res.outcome}")
+    el = elect_leader(Gp, trace, orientation, reading)
+    moves = tuple(PaperMove(m["robot"], m["algorithm"], m["kind"], _tau(m.get("amount")))
+                  for m in el.moves)
+    return PaperDecision(True, True, moves, el.leader, el.computed,
                          f"ElectLeader: {el.branch}")
 
 

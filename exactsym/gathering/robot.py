@@ -142,7 +142,7 @@ def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> De
     # as the paper layer's rounds do) ElectLeader's, then the leader's FormGPattern
     for _round in range(3 if readings.A3 == "all" else 1):
         rpts = [current[i] for i in R]
-        d = paper_decision(rpts, 1, False, readings.EL)
+        d = paper_decision(rpts, 1, readings.EL)
         detail = d.detail
         if not d.complete:
             return Decision("undecided", (), centre, pat, None, d.detail)
