@@ -4,7 +4,6 @@ from fractions import Fraction as F
 from math import acos, floor, pi
 
 import pytest
-from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym.exact.multiquadratic import MQ, sqrt_rational

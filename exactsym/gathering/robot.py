@@ -44,7 +44,7 @@ from ..exact.multiquadratic import MQ, sqrt_rational
 from flint import fmpq
 from . import geometry as g
 from .paper_bridge import paper_decision
-from .pattern import Pattern, capacity, recognise, slot
+from .pattern import Pattern, recognise, slot
 
 READINGS = {
     "A1": ("sec-all", "sec-r"),
@@ -263,4 +263,4 @@ def path_end(path):
 
 
 __all__ = ["Readings", "READINGS", "Decision", "Move", "compute", "decide",
-           "form_pattern_path", "capacity"]
+           "form_pattern_path"]
