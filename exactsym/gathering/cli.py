@@ -69,7 +69,11 @@ def _settings(args, expect: dict) -> dict:
         base.update(r.split("=", 1) for r in args.reading)
         s["readings"] = Readings(**base).as_dict()
     if args.non_rigid is not None:
-        delta = Fraction(args.non_rigid)
+        try:
+            delta = Fraction(args.non_rigid)
+        except (ValueError, ZeroDivisionError):
+            raise ValueError(f"--non-rigid needs a rational DELTA, not {args.non_rigid!r}") \
+                from None
         if delta <= 0:
             raise ValueError("--non-rigid needs a positive DELTA")
         s["rigid"], s["delta"] = False, str(delta)
