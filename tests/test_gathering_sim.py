@@ -370,3 +370,9 @@ def test_critical_points_of_a_segment_and_an_arc():
         [(5, 0), (8, 8), (0, -9), (-30, 1), (30, 2)]), 0)]
     r = sqrt_rational(F(25, 2))
     assert (r, r) in crossings and len(crossings) == 2      # robots 1 and 4 (3.8 degrees)
+
+
+def test_a_complete_pattern_is_gathered():
+    res = run(generate(7), "async", 0, max_events=20)
+    assert res.outcome == "gathered" and res.events == 0
+    assert res.pattern["size"] == 7 and res.pattern["layers"] == [[1, 2, 3, 4, 5, 6]]

@@ -105,7 +105,7 @@ class World:
 
     def __init__(self, points, readings: Readings = Readings(), rigid: bool = True,
                  delta: Fraction | None = None, checker=None):
-        self.robots = [RobotState((MQ.rational(x), MQ.rational(y))) for x, y in points]
+        self.robots = [RobotState((MQ.coerce(x), MQ.coerce(y))) for x, y in points]
         self.readings = readings
         self.rigid = rigid
         self.delta = delta
