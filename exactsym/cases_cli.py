@@ -19,7 +19,8 @@ from .configuration import load
 from .errors import EXIT_FALSE, EXIT_OK, InputError
 from .fileformat import read_config
 from .labels import ALGORITHMS, STATEMENTS, is_label, unknown_label_message
-from .report import failed_expectations, report_json
+from .gathering.cases import run_case_file
+from .report import GATHER_PREFIX, failed_expectations, report_json
 
 CASE_SUFFIXES = (".toml", ".txt")
 
@@ -49,8 +50,10 @@ def run_case(path) -> CaseResult:
         config = load(path)
     except InputError as err:
         return CaseResult(str(path), (), (f"cannot be read: {err}",))
-    report = report_json(analyse(config))
-    return CaseResult(str(path), tuple(config.lemmas), tuple(failed_expectations(config, report)))
+    failures = failed_expectations(config, report_json(analyse(config)))
+    if any(key.startswith(GATHER_PREFIX) for key in config.expect):
+        failures += run_case_file(path).failures     # the gathering run the case describes
+    return CaseResult(str(path), tuple(config.lemmas), tuple(failures))
 
 
 def run_cases(directory="cases", lemma: str | None = None) -> list[CaseResult]:

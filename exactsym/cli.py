@@ -16,6 +16,7 @@ import json
 import sys
 
 from . import audit_cli, cases_cli, certify_cli
+from .gathering import cli as gather_cli
 from .ledger import cli as ledger_cli
 from .plot import cli as plot_cli
 from .analysis import Options, analyse
@@ -62,6 +63,11 @@ COMMANDS = {
                certify_cli.add_verify_arguments, certify_cli.run_verify),
     "cases": ("run the case library (every file under DIR)",
               cases_cli.add_arguments, cases_cli.run),
+    "gather": ("simulate the paper's gathering algorithm under an adversarial scheduler "
+               "(exit 1 when an [expect] claim is false)", gather_cli.add_arguments,
+               gather_cli.run),
+    "replay": ("re-run a gathering trace exactly, event for event",
+               gather_cli.add_replay_arguments, gather_cli.run_replay),
     "ledger": ("the statement ledger (proofs/): grades, dependencies, docs/audit.md; --check "
                "re-runs the evidence", ledger_cli.add_arguments, ledger_cli.run),
     "plot": ("draw a configuration (needs the 'plot' extra: matplotlib)",

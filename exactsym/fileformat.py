@@ -57,6 +57,11 @@ EXPECT_KEYS: dict[str, type | tuple] = {
     # the paper on the whole configuration (exactsym.paper.family)
     "paper_leader": int,            # the robot ElectLeader elects; -1: none
     "audit_agrees": bool,           # exactsym.audit finds no false statement
+    # the gathering simulator (exactsym.gathering.cases): the outcome and the run's setting
+    "gather_outcome": str, "gather_label": str, "gather_invariant": str,
+    "gather_robots": list, "gather_scheduler": str, "gather_seed": int,
+    "gather_readings": list, "gather_invariants": list, "gather_max_events": int,
+    "gather_non_rigid": ExpressionText,
 }
 
 TOP_LEVEL_KEYS = ("format", "name", "notes", "model", "lemmas", "points", "expect")

@@ -41,7 +41,12 @@ def test_unknown_part_is_an_error():
 
 
 def test_every_expect_key_has_exactly_one_check():
-    assert set(EXPECTATIONS) == set(EXPECT_KEYS)
+    from exactsym.gathering.cases import CHECKED_KEYS, SETTING_KEYS
+    from exactsym.report import GATHER_PREFIX
+    check_keys = {k for k in EXPECT_KEYS if not k.startswith(GATHER_PREFIX)}
+    assert set(EXPECTATIONS) == check_keys
+    assert {k for k in EXPECT_KEYS if k.startswith(GATHER_PREFIX)} == \
+        set(CHECKED_KEYS) | set(SETTING_KEYS)
 
 
 def test_every_command_of_the_table_is_reachable_and_has_help():

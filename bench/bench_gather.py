@@ -1,0 +1,143 @@
+"""Benchmark of the exact gathering simulator, against a float simulator of the same run in
+the same process.  Run: ``python bench/bench_gather.py`` (about a minute).
+
+1. The cost of one Look (``robot.decide``: SEC, pattern recogniser, the paper layer's
+   Preprocess / MakeAsym / ElectLeader, FormGPattern) as n grows, cache cleared.
+2. A 30-robot run with every invariant on (centralised and ASYNC schedulers, default
+   readings, 300 events): events per second.
+3. The float baseline: the same action sequence replayed with float positions, a float
+   SEC, float segment/arc collision tests against every robot and a float "nearest robot
+   to the SEC centre" leader per Look: what an epsilon-based simulator pays per event.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+import time
+from fractions import Fraction
+
+from exactsym.gathering import robot
+from exactsym.gathering.geometry import point
+from exactsym.gathering.invariants import Checker
+from exactsym.gathering.robot import Readings
+from exactsym.gathering.schedulers import run
+
+
+def random_config(n: int, seed: int = 1, spread: int = 12):
+    rng = random.Random(seed)
+    pts = []
+    while len(pts) < n:
+        p = (Fraction(rng.randint(-spread * n, spread * n), rng.randint(1, 3)),
+             Fraction(rng.randint(-spread * n, spread * n), rng.randint(1, 3)))
+        if all((p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2 > 9 for q in pts):
+            pts.append(p)
+    return pts
+
+
+def time_one_look(n: int, repeat: int = 3) -> float:
+    pts = tuple(point(*p) for p in random_config(n))
+    best = math.inf
+    for _ in range(repeat):
+        robot.decide.cache_clear()
+        t = time.perf_counter()
+        robot.decide(pts, Readings())
+        best = min(best, time.perf_counter() - t)
+    return best
+
+
+# -- the float baseline ----------------------------------------------------------------
+def _fsec(pts):
+    order = list(range(len(pts)))
+    random.Random(len(pts)).shuffle(order)
+    P = [pts[i] for i in order]
+
+    def c2(a, b):
+        cx, cy = (a[0] + b[0]) / 2, (a[1] + b[1]) / 2
+        return cx, cy, (a[0] - cx) ** 2 + (a[1] - cy) ** 2
+
+    def c3(a, b, c):
+        bx, by, cx, cy = b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]
+        d = 2 * (bx * cy - by * cx)
+        if abs(d) < 1e-12:
+            return max((c2(a, b), c2(a, c), c2(b, c)), key=lambda t: t[2])
+        b2, cc2 = bx * bx + by * by, cx * cx + cy * cy
+        ux, uy = (cy * b2 - by * cc2) / d, (bx * cc2 - cx * b2) / d
+        return a[0] + ux, a[1] + uy, ux * ux + uy * uy
+
+    def inside(c, p):
+        return (p[0] - c[0]) ** 2 + (p[1] - c[1]) ** 2 <= c[2] * (1 + 1e-12)
+    c = (P[0][0], P[0][1], 0.0)
+    for i in range(1, len(P)):
+        if inside(c, P[i]):
+            continue
+        c = (P[i][0], P[i][1], 0.0)
+        for j in range(i):
+            if inside(c, P[j]):
+                continue
+            c = c2(P[i], P[j])
+            for k in range(j):
+                if not inside(c, P[k]):
+                    c = c3(P[i], P[j], P[k])
+    return c
+
+
+def _fseg_hits(a, b, q):
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    L = dx * dx + dy * dy
+    t = 0.0 if L == 0 else max(0.0, min(1.0, ((q[0] - a[0]) * dx + (q[1] - a[1]) * dy) / L))
+    x, y = a[0] + t * dx - q[0], a[1] + t * dy - q[1]
+    return x * x + y * y < 4 - 1e-9
+
+
+def float_replay(points, actions) -> int:
+    """Replay the action list with floats: per Look a float SEC and nearest robot and a
+    radial target; per advance a collision test of the segment against every robot."""
+    pos = [(float(x), float(y)) for x, y in points]
+    target = {}
+    hits = 0
+    for act in actions:
+        i = act["robot"]
+        if act["a"] == "look":
+            cx, cy, _ = _fsec(pos)
+            d = [(p[0] - cx) ** 2 + (p[1] - cy) ** 2 for p in pos]
+            lead = min(range(len(pos)), key=d.__getitem__)
+            if lead == i and d[i] > 1e-9:
+                s = 2 / math.sqrt(d[i])
+                target[i] = (cx + (pos[i][0] - cx) * s, cy + (pos[i][1] - cy) * s)
+                hits += sum(_fseg_hits(pos[i], target[i], q) for k, q in enumerate(pos)
+                            if k != i)
+        else:
+            goal = target.get(i, pos[i])
+            f = 0.5 if act.get("stop") else 1.0
+            new = (pos[i][0] + f * (goal[0] - pos[i][0]), pos[i][1] + f * (goal[1] - pos[i][1]))
+            hits += sum(_fseg_hits(pos[i], new, q) for k, q in enumerate(pos) if k != i)
+            pos[i] = new
+            _fsec(pos)              # the I6 check recomputes C
+    return hits
+
+
+def main() -> None:
+    print("one Look (decide, cache cleared) as n grows:")
+    for n in (5, 10, 20, 30, 50, 80):
+        print(f"  n = {n:3d}: {time_one_look(n) * 1000:8.2f} ms")
+    pts = random_config(30)
+    for scheduler, readings in (("centralised", Readings()), ("async", Readings()),
+                                ("centralised", Readings(A3="all"))):
+        robot.decide.cache_clear()
+        t = time.perf_counter()
+        res = run(pts, scheduler, 1, readings, max_events=300, checker=Checker())
+        exact = time.perf_counter() - t
+        t = time.perf_counter()
+        float_replay(pts, res.actions)
+        flt = time.perf_counter() - t
+        checks = sum(res.checks.values())
+        print(f"30 robots, {scheduler}, A3={readings.A3}, every invariant on: {res.outcome} "
+              f"({res.label or '-'}) after {res.events} "
+              f"events ({res.looks} Looks, {checks} invariant checks) in {exact:.2f} s = "
+              f"{res.events / exact:.0f} events/s; float replay {flt * 1000:.1f} ms "
+              f"({res.events / flt:.0f} events/s); ratio {exact / flt:.0f}x")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,199 @@
+"""``gather FILE`` and ``replay TRACE``: thin command-line front ends.
+
+``add_arguments(parser)`` / ``run(args)`` for ``gather`` and ``add_replay_arguments`` /
+``run_replay`` for ``replay`` let the main CLI wire the commands; :func:`main` builds a
+standalone parser (``python -m exactsym.gathering gather FILE ...``).
+Exit codes: 0 done and every ``[expect]`` gathering claim holds; 1 done but a claim is
+false (or a replay diverges); 2 unusable input (one line on stderr).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from fractions import Fraction
+
+from .cases import expectation_failures, run_settings, settings_of
+from .invariants import ALL
+from .paper_bridge import GatheringInputError, read_case
+from .robot import READINGS, Readings
+from .schedulers import SCHEDULERS, TraceMismatch
+from .trace import read_trace, replay, result_dict, same_result, write_trace
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("file", help="configuration file (format 1), rational points")
+    parser.add_argument("--scheduler", choices=SCHEDULERS, default=None,
+                        help="adversary policy (default: the case's, else async)")
+    rig = parser.add_mutually_exclusive_group()
+    rig.add_argument("--rigid", action="store_true", help="moves reach their target (default)")
+    rig.add_argument("--non-rigid", metavar="DELTA", default=None,
+                     help="the adversary may stop a move after DELTA (a rational)")
+    parser.add_argument("--reading", action="append", default=None, metavar="A1=...",
+                        help="a reading switch: " + "; ".join(
+                            f"{k}={'|'.join(v)}" for k, v in READINGS.items()))
+    parser.add_argument("--seed", type=int, default=None)
+    parser.add_argument("--search", action="store_true",
+                        help="search the adversary's choices for a shortest violation")
+    parser.add_argument("--max-events", type=int, default=None)
+    parser.add_argument("--invariants", default=None,
+                        help="comma-separated invariants to check (default: all, I1..I10)")
+    parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    parser.add_argument("--trace", metavar="OUT", default=None, help="write the trace here")
+
+
+def add_replay_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("trace", help="a trace written by gather --trace")
+    parser.add_argument("file", nargs="?", default=None,
+                        help="the configuration file the trace must match (optional)")
+    parser.add_argument("--json", action="store_true")
+
+
+def _fail(msg: str) -> int:
+    print(f"exactsym gather: {msg}", file=sys.stderr)
+    return 2
+
+
+def _settings(args, expect: dict) -> dict:
+    s = settings_of(expect)
+    if args.scheduler:
+        s["scheduler"] = args.scheduler
+    if args.seed is not None:
+        s["seed"] = args.seed
+    if args.max_events is not None:
+        s["max_events"] = args.max_events
+    if args.reading:
+        Readings.parse(args.reading)                    # validates every item
+        base = dict(s["readings"])
+        base.update(r.split("=", 1) for r in args.reading)
+        s["readings"] = Readings(**base).as_dict()
+    if args.non_rigid is not None:
+        try:
+            delta = Fraction(args.non_rigid)
+        except (ValueError, ZeroDivisionError):
+            raise ValueError(f"--non-rigid needs a rational DELTA, not {args.non_rigid!r}") \
+                from None
+        if delta <= 0:
+            raise ValueError("--non-rigid needs a positive DELTA")
+        s["rigid"], s["delta"] = False, str(delta)
+    elif args.rigid:
+        s["rigid"], s["delta"] = True, None
+    if args.invariants is not None:
+        inv = [x.strip() for x in args.invariants.split(",") if x.strip()]
+        bad = [x for x in inv if x not in ALL]
+        if bad:
+            raise ValueError(f"unknown invariants {bad} (the invariants are {', '.join(ALL)})")
+        s["invariants"] = inv
+    return s
+
+
+def _validate_start(points, source) -> None:
+    n = len(points)
+    if n < 5:
+        raise GatheringInputError(f"gathering needs at least 5 robots, the file has {n}",
+                                  source)
+    for i in range(n):
+        for j in range(i + 1, n):
+            dx, dy = points[i][0] - points[j][0], points[i][1] - points[j][1]
+            if dx * dx + dy * dy <= 4:
+                raise GatheringInputError(f"robots {i} and {j} overlap or touch at the start "
+                                          "(centres at most 2 apart)", source)
+
+
+def _text(res, settings) -> str:
+    lines = [f"outcome: {res.outcome}" + (f" ({res.label})" if res.label else ""),
+             f"detail: {res.detail}",
+             f"scheduler: {settings['scheduler']}, seed {settings['seed']}, "
+             f"{'rigid' if settings['rigid'] else 'non-rigid ' + settings['delta']}, readings "
+             + ", ".join(f"{k}={v}" for k, v in settings["readings"].items()),
+             f"events: {res.events}, Looks: {res.looks}",
+             "invariant checks: " + ", ".join(f"{k} {v}" for k, v in res.checks.items())]
+    if res.violation:
+        v = res.violation
+        lines.append(f"violation: {v['invariant']} ({v['label']}) at event {v['instant']}, "
+                     f"robots {v['robots']}")
+    if res.pattern:
+        p = res.pattern
+        lines.append(f"final pattern: {p['size']} robots about ({p['centre'][0]}, "
+                     f"{p['centre'][1]}), centre robot {p['centre_robot']}, layers "
+                     f"{p['layers']}")
+    return "\n".join(lines)
+
+
+def run(args) -> int:
+    try:
+        points, _name, expect, source = read_case(args.file)
+        _validate_start(points, source)
+        settings = _settings(args, expect)
+    except GatheringInputError as err:
+        return _fail(str(err))
+    except (ValueError, ZeroDivisionError) as err:
+        return _fail(str(err))
+    note = None
+    if args.search:
+        from .search import search_violation
+        found = search_violation(points, settings)
+        if found is not None:
+            note = (f"search: a shortest violating schedule found, {len(found.actions)} "
+                    "adversary actions (breadth-first, or the shortest of the random restarts)")
+            res = found
+        else:
+            note = "search: no violation within the bounds; the seeded run follows"
+            res = run_settings(points, settings)
+    else:
+        res = run_settings(points, settings, progress=not args.json)
+    failures = expectation_failures(expect, res)
+    if args.trace:
+        try:
+            write_trace(args.trace, points, res, settings)
+        except OSError as err:
+            return _fail(f"cannot write the trace: {err}")
+    if args.json:
+        out = result_dict(res)
+        out.update(settings=settings, expect_failures=failures, search=note)
+        print(json.dumps(out))
+    else:
+        if note:
+            print(note)
+        print(_text(res, settings))
+        if res.outcome == "max-events" and args.trace:
+            print(f"stopped at --max-events; trace written to {args.trace}")
+    for f in failures:
+        print(f"{args.file}: {f}", file=sys.stderr)
+    return 1 if failures else 0
+
+
+def run_replay(args) -> int:
+    try:
+        data = read_trace(args.trace)
+        points = None
+        if args.file is not None:
+            points = read_case(args.file)[0]
+        res = replay(data, points)
+    except TraceMismatch as err:
+        return _fail(str(err))
+    except GatheringInputError as err:
+        return _fail(str(err))
+    diff = same_result(data["result"], res)
+    if args.json:
+        print(json.dumps({"replayed": result_dict(res), "differs_on": diff}))
+    else:
+        print(f"replayed {len(data['actions'])} actions: outcome {res.outcome}"
+              + (f" ({res.label})" if res.label else "")
+              + f", {res.events} events, {res.looks} Looks")
+        print("identical to the recorded run" if not diff else
+              f"DIFFERS from the recorded run on: {', '.join(diff)}")
+    return 1 if diff else 0
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m exactsym.gathering")
+    sub = parser.add_subparsers(dest="command", required=True)
+    add_arguments(sub.add_parser("gather", help="run the gathering simulator on a file"))
+    add_replay_arguments(sub.add_parser("replay", help="re-run a trace exactly"))
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:
+        return int(exc.code or 0)
+    return run(args) if args.command == "gather" else run_replay(args)

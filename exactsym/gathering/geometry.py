@@ -1,0 +1,282 @@
+"""Exact plane geometry for the gathering simulator: points, paths, collision predicates.
+
+Points are pairs of :class:`~exactsym.exact.multiquadratic.MQ` (multiquadratic field
+elements); no angle, ``atan2`` or ``arcsin`` is ever computed: angular comparisons use
+signs of cross and dot products.  Paths are sequences of :class:`Segment` and
+:class:`Arc` pieces (circular arcs about a centre, each at most a quarter turn, so that
+"is this direction inside the arc" is two cross-product signs).
+
+Predicates (CGAL style: they return bools or small ints and are exact):
+
+* :func:`segment_min_dist2_less` -- does a disc moving along a segment come closer than
+  ``d`` to a fixed point (the closest point of a segment is the clamped projection);
+* :func:`arc_min_dist2_less` -- the same along an arc (the closest point of a circle arc
+  to ``q`` is the radial projection of ``q`` when its direction is inside the arc, else
+  an end point);
+* :func:`linear_motions_min_dist2_less` -- two discs moving along segments at once over
+  the same time interval (the squared distance is a quadratic in time: its vertex).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..exact.multiquadratic import MQ, mq, sqrt_rational
+
+Point = tuple  # (MQ, MQ)
+
+ZERO = MQ()
+ONE = MQ.rational(1)
+
+
+def point(x, y) -> Point:
+    return (mq(x), mq(y))
+
+
+def add(p, q):
+    return (p[0] + q[0], p[1] + q[1])
+
+
+def sub(p, q):
+    return (p[0] - q[0], p[1] - q[1])
+
+
+def scale(p, s):
+    return (p[0] * s, p[1] * s)
+
+
+def dot(u, v):
+    return u[0] * v[0] + u[1] * v[1]
+
+
+def cross(u, v):
+    return u[0] * v[1] - u[1] * v[0]
+
+
+def dist2(p, q):
+    d = sub(p, q)
+    return dot(d, d)
+
+
+def rotate(u, c, s):
+    """``u`` rotated by the rotation with cosine ``c`` and sine ``s``."""
+    return (u[0] * c - u[1] * s, u[0] * s + u[1] * c)
+
+
+def quarter(u, sense: int):
+    """``u`` turned a quarter turn counter-clockwise (``sense = 1``) or clockwise."""
+    return (-u[1], u[0]) if sense > 0 else (u[1], -u[0])
+
+
+def radial_point(centre, p, radius: int):
+    """The point at distance ``radius`` from ``centre`` on the ray towards ``p``:
+    ``centre + radius * (p - centre) / |p - centre|``.  ``|p - centre|^2`` must be
+    rational (it is for every robot that has not yet slid along an arc)."""
+    v = sub(p, centre)
+    r2 = dot(v, v)
+    if not r2.is_rational():
+        # p already lies on a circle about the centre whose radius is known only through
+        # its square in a larger field; the simulator never asks for this (see robot.py)
+        raise ValueError("radial_point needs a rational squared distance")
+    inv = sqrt_rational(1 / r2.to_fmpq())   # 1/|v|, a single radical
+    return add(centre, scale(v, inv * radius))
+
+
+def angle_key(u, v):
+    """A key ordering the counter-clockwise angle from ``u`` to ``v`` in [0, 2 pi) when
+    all compared pairs have the same ``|u| |v|``: ``(half, t)``, ``t`` increasing with
+    the angle inside each half turn."""
+    c, s = dot(u, v), cross(u, v)
+    if s.sign() > 0 or (s.sign() == 0 and c.sign() > 0):
+        return (0, -c)
+    return (1, c)
+
+
+def angle_less(k1, k2) -> bool:
+    """Compare two :func:`angle_key` values exactly."""
+    if k1[0] != k2[0]:
+        return k1[0] < k2[0]
+    return k1[1] < k2[1]
+
+
+@dataclass(frozen=True)
+class Segment:
+    start: Point
+    end: Point
+
+    @property
+    def final(self):
+        return self.end
+
+    def at(self, f):
+        """The point at rational fraction ``f`` of the way."""
+        return add(self.start, scale(sub(self.end, self.start), f))
+
+    def split(self, f):
+        mid = self.at(f)
+        return Segment(self.start, mid), Segment(mid, self.end)
+
+
+@dataclass(frozen=True)
+class Arc:
+    """From ``start`` to ``end`` about ``centre``, counter-clockwise when ``sense = 1``;
+    at most a quarter turn (:func:`arc_path` splits longer ones)."""
+    centre: Point
+    start: Point
+    end: Point
+    sense: int
+
+    @property
+    def final(self):
+        return self.end
+
+    def contains_direction(self, w) -> bool:
+        """Is the ray from the centre along ``w`` inside the (closed) arc?"""
+        a, b = sub(self.start, self.centre), sub(self.end, self.centre)
+        if self.sense > 0:
+            return cross(a, w).sign() >= 0 and cross(w, b).sign() >= 0 and dot(a, w).sign() + \
+                dot(b, w).sign() > -2
+        return cross(w, a).sign() >= 0 and cross(b, w).sign() >= 0 and dot(a, w).sign() + \
+            dot(b, w).sign() > -2
+
+    def at(self, f):
+        """The point of the arc reached by the rational rotation whose half-angle tangent is
+        ``f`` times that of the whole arc (``0 <= f <= 1``, stays in the same field)."""
+        a, b = sub(self.start, self.centre), sub(self.end, self.centre)
+        r2 = dot(a, a)
+        cos_t, sin_t = dot(a, b) / r2, cross(a, b) / r2      # of the whole arc
+        tan_half = sin_t / (1 + cos_t)                         # arc <= quarter turn
+        t = tan_half * f
+        den = 1 + t * t
+        return add(self.centre, rotate(a, (1 - t * t) / den, (2 * t) / den))
+
+    def split(self, f):
+        mid = self.at(f)
+        return Arc(self.centre, self.start, mid, self.sense), Arc(self.centre, mid, self.end,
+                                                                  self.sense)
+
+
+def arc_path(centre, start, end, sense: int) -> list:
+    """Arc pieces of at most a quarter turn from ``start`` to ``end`` (same circle)."""
+    pieces = []
+    cur = start
+    b = sub(end, centre)
+    for _ in range(4):
+        a = sub(cur, centre)
+        key = angle_key(a, b) if sense > 0 else angle_key(b, a)
+        if key[0] == 0 and dot(a, b).sign() >= 0:      # at most a quarter turn left
+            break
+        nxt = add(centre, quarter(a, sense))
+        pieces.append(Arc(centre, cur, nxt, sense))
+        cur = nxt
+    if cur != end:
+        pieces.append(Arc(centre, cur, end, sense))
+    return pieces
+
+
+def segment_min_dist2_less(a, b, q, d2) -> bool:
+    """Does some point of segment ``ab`` lie at squared distance ``< d2`` from ``q``?"""
+    ab = sub(b, a)
+    aq = sub(q, a)
+    t_num = dot(aq, ab)
+    den = dot(ab, ab)
+    if den.is_zero() or t_num.sign() <= 0:
+        return (dist2(a, q) - d2).sign() < 0
+    if (t_num - den).sign() >= 0:
+        return (dist2(b, q) - d2).sign() < 0
+    # perpendicular foot inside: |aq|^2 - (aq.ab)^2/|ab|^2 < d2
+    return (dot(aq, aq) * den - t_num * t_num - d2 * den).sign() < 0
+
+
+def arc_min_dist2_less(arc: Arc, q, d2) -> bool:
+    """Does some point of ``arc`` lie at squared distance ``< d2`` from ``q``?"""
+    if (dist2(arc.start, q) - d2).sign() < 0 or (dist2(arc.end, q) - d2).sign() < 0:
+        return True
+    w = sub(q, arc.centre)
+    if w[0].is_zero() and w[1].is_zero():
+        return False                                  # all points equally far: ends decide
+    if not arc.contains_direction(w):
+        return False
+    # nearest point: radial projection; distance (rho - |w|)^2 < d2  with rho^2 = r2
+    r2 = dist2(arc.start, arc.centre)
+    w2 = dot(w, w)
+    # (rho - |w|)^2 < d2  <=>  r2 + w2 - d2 < 2 rho |w|  (and the lhs may be negative)
+    lhs = r2 + w2 - d2
+    if lhs.sign() < 0:
+        return True
+    return (lhs * lhs - 4 * r2 * w2).sign() < 0
+
+
+def piece_hits(piece, q, d2=4) -> bool:
+    d2 = mq(d2)
+    if isinstance(piece, Segment):
+        return segment_min_dist2_less(piece.start, piece.end, q, d2)
+    return arc_min_dist2_less(piece, q, d2)
+
+
+def linear_motions_min_dist2_less(a0, a1, b0, b1, d2) -> bool:
+    """Two discs move at constant speed over the same time interval [0, 1], from ``a0``
+    to ``a1`` and from ``b0`` to ``b1``: is their squared distance ever ``< d2``?
+    ``|D0 + t (D1 - D0)|^2`` is a quadratic in t: check the ends and the vertex."""
+    d0, d1 = sub(a0, b0), sub(a1, b1)
+    return segment_min_dist2_less(d0, d1, (ZERO, ZERO), mq(d2))
+
+
+def piece_endpoints_max_dist2(piece, c):
+    """The largest squared distance from ``c`` over the piece when ``c`` is the arc's
+    centre (arcs keep it constant) or for a segment (a convex function: an end point)."""
+    a, b = dist2(piece.start, c), dist2(piece.end, c)
+    return a if a >= b else b
+
+
+def fmt_point(p) -> str:
+    return f"({p[0].text()}, {p[1].text()})"
+
+
+# -- the smallest enclosing circle over multiquadratic points -------------------------
+def _circle2(a, b):
+    c = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    return c, dist2(c, a)
+
+
+def _circle3(a, b, c):
+    ab, ac = sub(b, a), sub(c, a)
+    d = cross(ab, ac) * 2
+    if d.is_zero():          # collinear: the circle on the farthest pair
+        pairs = [(a, b), (a, c), (b, c)]
+        far = pairs[0]
+        for p in pairs[1:]:
+            if dist2(*p) > dist2(*far):
+                far = p
+        return _circle2(*far)
+    b2, c2 = dot(ab, ab), dot(ac, ac)
+    ux = (b2 * ac[1] - c2 * ab[1]) / d
+    uy = (c2 * ab[0] - b2 * ac[0]) / d
+    centre = (a[0] + ux, a[1] + uy)
+    return centre, dist2(centre, a)
+
+
+def smallest_enclosing_circle(points) -> tuple:
+    """``(centre, radius^2)`` of the SEC of MQ points (Welzl, iterative move-to-front, in a
+    fixed pseudo-random order; the SEC is unique so the order does not matter)."""
+    import random
+    order = list(range(len(points)))
+    random.Random(len(points)).shuffle(order)
+    pts = [points[i] for i in order]
+
+    def inside(circ, p):
+        return (dist2(circ[0], p) - circ[1]).sign() <= 0
+
+    circ = (pts[0], ZERO)
+    for i in range(1, len(pts)):
+        if inside(circ, pts[i]):
+            continue
+        circ = (pts[i], ZERO)
+        for j in range(i):
+            if inside(circ, pts[j]):
+                continue
+            circ = _circle2(pts[i], pts[j])
+            for k in range(j):
+                if not inside(circ, pts[k]):
+                    circ = _circle3(pts[i], pts[j], pts[k])
+    return circ

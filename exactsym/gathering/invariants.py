@@ -1,0 +1,283 @@
+"""Run-time invariants I1-I10 of spec section 4, each tied to the paper's label.
+
+:class:`Checker` is told about every Look, every advance along a path piece and every
+arrival (:class:`.world.World` calls it).  A violation raises :class:`Violation` naming
+the invariant, the label, the instant (event number), the robots and an exact witness.
+``counts`` records how many times each invariant was checked.
+
+Exactness of the "at any instant" checks:
+
+* I1 along a piece is the exact minimum distance over the whole segment or arc
+  (:mod:`.geometry`), not a sample;
+* I4 over a piece reduces to its end points: the distance to C is convex along a segment
+  and constant along an arc about C (the only arcs FormGPattern makes), and the other
+  robots are still;
+* I3, I6 and I9 are checked at the end of every piece and at every adversary stop
+  point (rational instants).  The critical parameters inside a piece (where two distances
+  to C become equal, where the SEC's support changes) are NOT isolated yet: a change that
+  appears and disappears strictly inside one piece is missed (docs/gathering.md).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from . import geometry as g
+from .pattern import definition_defects, recognise
+
+LABELS = {
+    "I1": "gather-no-obstacle",
+    "I2": "lem-vl-move",
+    "I3": "obs-v-move",
+    "I4": "gather-min-distance",
+    "I5": "gather-no-obstacle",
+    "I6": "MakeAsym-SEC",
+    "I7": "FormGPattern",
+    "I8": "gathering_pattern",
+    "I9": "no-chirality",
+    "I10": "conclusion-progress",
+}
+
+
+class Violation(Exception):
+    def __init__(self, invariant: str, instant: int, robots, witness: str):
+        self.invariant = invariant
+        self.label = LABELS[invariant]
+        self.instant = instant
+        self.robots = tuple(robots)
+        self.witness = witness
+        super().__init__(f"{invariant} ({self.label}) violated at event {instant}, robots "
+                         f"{list(self.robots)}: {witness}")
+
+    def as_dict(self) -> dict:
+        return {"invariant": self.invariant, "label": self.label, "instant": self.instant,
+                "robots": list(self.robots), "witness": self.witness}
+
+
+ALL = tuple(f"I{k}" for k in range(1, 11))
+
+
+@dataclass
+class Checker:
+    enabled: frozenset = frozenset(ALL)
+    counts: dict = field(default_factory=lambda: {k: 0 for k in ALL})
+    in_pattern: set = field(default_factory=set)       # robots ever recognised in P
+    undecided_fresh: int = 0      # I3 / I9 Looks skipped: the kernel could not hold them
+    frames: tuple = ()                                  # extra frames for I9 (besides mirror)
+
+    def _on(self, key) -> bool:
+        if key in self.enabled:
+            self.counts[key] += 1
+            return True
+        return False
+
+    # -- after a Look -------------------------------------------------------------------
+    def after_look(self, world, i, frame, decision, paths):
+        t = world.events
+        self.in_pattern |= set(decision.pattern.robots)
+        mine = paths.get(i)
+        if self._on("I2"):
+            busy = world.busy()
+            if len(busy) > 1:
+                raise Violation("I2", t, busy, f"robots {busy} have pending moves at once "
+                                f"(robot {i} has just Looked)")
+        if not mine:
+            return
+        if self._on("I7") and i in self.in_pattern:
+            raise Violation("I7", t, [i], f"robot {i} was in the pattern and plans a move")
+        if self._on("I5"):
+            for k, rob in enumerate(world.robots):
+                if k == i:
+                    continue
+                for piece in mine:
+                    if g.piece_hits(piece, rob.pos):
+                        raise Violation("I5", t, [i, k], f"the planned path of robot {i} "
+                                        f"{_piece_text(piece)} passes within 2 of robot {k} at "
+                                        f"{g.fmt_point(rob.pos)}")
+        if self._on("I4") and (world.robots[i].role or "").startswith("leader"):
+            self._nearest(world, i, t, strict=False)
+        if self._on("I9"):
+            self._frames_agree(world, i, frame, paths, decision, t)
+
+    def _frames_agree(self, world, i, frame, paths, decision, t):
+        from .world import IDENTITY, MIRROR
+        mine = _plan(paths, decision)
+        for other in (IDENTITY, MIRROR) + tuple(self.frames):
+            if other == frame:
+                continue
+            d2, paths2 = world.snapshot_decision(other)
+            if d2.status == "undecided":
+                self.undecided_fresh += 1
+                continue
+            theirs = _plan(paths2, d2)
+            if not _same_plan(mine, theirs):
+                raise Violation("I9", t, sorted(set(mine) | set(theirs)),
+                                f"a Look in frame {frame.as_list()} plans {_plan_text(mine)}, "
+                                f"one in frame {other.as_list()} plans {_plan_text(theirs)}")
+
+    def _nearest(self, world, i, t, strict: bool):
+        """The lemma: the mover's distance to C is the minimum over R (at the Look a tie is
+        allowed: "no other robot is inside the circle of radius d"; once moving, strictly)."""
+        rob = world.robots[i]
+        d_i = g.dist2(rob.pos, rob.centre)
+        for k in rob.r_set:
+            if k == i:
+                continue
+            d_k = g.dist2(world.robots[k].pos, rob.centre)
+            if (d_i - d_k).sign() > (-1 if strict else 0):
+                raise Violation("I4", t, [i, k], f"moving robot {i} is at squared distance "
+                                f"{d_i.text()} from C = {g.fmt_point(rob.centre)}, robot {k} "
+                                f"of R at {d_k.text()}")
+
+    # -- after an advance ----------------------------------------------------------------
+    def after_advance(self, world, i, piece):
+        t = world.events
+        rob = world.robots[i]
+        if self._on("I1"):
+            for k, other in enumerate(world.robots):
+                if k != i and g.piece_hits(piece, other.pos):
+                    raise Violation("I1", t, sorted((i, k)), f"robot {i} moving "
+                                    f"{_piece_text(piece)} comes closer than 2 to robot {k} "
+                                    f"at {g.fmt_point(other.pos)}")
+        if (rob.role or "").startswith("leader") and self._on("I4"):
+            self._nearest(world, i, t, strict=True)
+        if self._on("I6") and rob.centre is not None:
+            from .world import IDENTITY
+            d, _ = world.snapshot_decision(IDENTITY)
+            if d.centre != rob.centre:
+                raise Violation("I6", t, [i], f"C moved from {g.fmt_point(rob.centre)} to "
+                                f"{g.fmt_point(d.centre)} while robot {i} moves")
+        if self._on("I3"):
+            # the critical instants inside the piece, then (unless it was the last piece)
+            # its end: the fresh Look must name the same mover and target
+            end = rob.pos
+            try:
+                for where, point in critical_points(piece, rob.centre, world, i):
+                    rob.pos = point
+                    self._fresh_look(world, i, t, f" ({where})")
+            finally:
+                rob.pos = end
+            if rob.path:
+                self._fresh_look(world, i, t, "")
+
+    def _fresh_look(self, world, i, t, where: str):
+        from .world import IDENTITY
+        rob = world.robots[i]
+        d, paths = world.snapshot_decision(IDENTITY)
+        if d.status == "undecided":
+            self.undecided_fresh += 1
+            return
+        plan = _plan(paths, d)
+        if not _same_plan(plan, {i: (rob.role, rob.target)}):
+            raise Violation("I3", t, sorted(set(plan) | {i}),
+                            f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
+                            f"Look with robot {i} at {g.fmt_point(rob.pos)}{where} plans "
+                            f"{_plan_text(plan)} ({d.status}: {d.detail})")
+
+    # -- after an arrival ----------------------------------------------------------------
+    def after_arrival(self, world, i):
+        t = world.events
+        rob = world.robots[i]
+        pts = world.positions()
+        centre = rob.centre
+        if centre is None:            # a move the adversary made up (tests): no Look
+            return
+        pat = recognise(pts, centre, world.readings.lone)
+        if self._on("I8"):
+            lost = self.in_pattern - set(pat.robots) - {i}
+            defects = definition_defects(pts, pat, world.readings.lone)
+            if lost:
+                raise Violation("I8", t, sorted(lost), f"robots {sorted(lost)} were in the "
+                                f"pattern and are no longer (C = {g.fmt_point(centre)})")
+            if defects:
+                raise Violation("I8", t, [i], "; ".join(defects))
+        if (rob.role or "").startswith("leader") and self._on("I10"):
+            if i not in pat.robots:
+                raise Violation("I10", t, [i], f"leader {i} arrived at "
+                                f"{g.fmt_point(rob.pos)} but is not in the recognised pattern "
+                                f"about {g.fmt_point(centre)}: P did not grow")
+        self.in_pattern |= set(pat.robots)
+
+
+def critical_points(piece, centre, world, mover: int) -> list:
+    """Exact points strictly inside ``piece`` where the mover's relation to another robot
+    changes: on a segment, where it is collinear with C and that robot (a ray crossing:
+    angular orders, levels' polygons and mirror lines change there) and where its distance
+    to C equals that robot's (the levels change; kept when the instant needs no new
+    nested radical); on an arc about C, where it crosses the ray of that robot.
+    ``[(description, point)]``."""
+    if centre is None:
+        return []
+    out = []
+    for k, other in enumerate(world.robots):
+        if k == mover:
+            continue
+        w = g.sub(other.pos, centre)
+        if w[0].is_zero() and w[1].is_zero():
+            continue
+        if isinstance(piece, g.Segment):
+            a, d = g.sub(piece.start, centre), g.sub(piece.end, piece.start)
+            den = g.cross(d, w)
+            if not den.is_zero():
+                tt = -g.cross(a, w) / den
+                if tt.sign() > 0 and (tt - 1).sign() < 0:
+                    out.append((f"on the ray of robot {k}", piece.at(tt)))
+            # |a + t d|^2 = |w|^2: (d.d) t^2 + 2 (a.d) t + (a.a - w.w) = 0
+            A, B, C0 = g.dot(d, d), g.dot(a, d) * 2, g.dot(a, a) - g.dot(w, w)
+            disc = B * B - A * C0 * 4
+            if disc.is_rational() and disc.sign() >= 0 and not A.is_zero():
+                from ..exact.multiquadratic import sqrt_rational
+                root = sqrt_rational(disc.to_fmpq())
+                for tt in ((-B - root) / (A * 2), (-B + root) / (A * 2)):
+                    if tt.sign() > 0 and (tt - 1).sign() < 0:
+                        out.append((f"as far from C as robot {k}", piece.at(tt)))
+        else:
+            w2 = g.dot(w, w)
+            r2 = g.dist2(piece.start, piece.centre)
+            ratio = r2 / w2
+            if ratio.is_rational():
+                from ..exact.multiquadratic import sqrt_rational
+                scale = sqrt_rational(ratio.to_fmpq())
+                for sgn in (1, -1):
+                    q = g.add(piece.centre, g.scale(w, scale * sgn))
+                    if q != piece.start and q != piece.end and \
+                            piece.contains_direction(g.sub(q, piece.centre)):
+                        out.append((f"on the ray of robot {k}", q))
+    return out
+
+
+def _plan(paths, decision) -> dict:
+    """Mover -> (role, final target)."""
+    out = {}
+    for r, p in paths.items():
+        if p:
+            m = decision.move_of(r)
+            out[r] = (m.role if m is not None else "leader", p[-1].final)
+    return out
+
+
+def _same_plan(a: dict, b: dict) -> bool:
+    """Same movers, and the same final target for each, except where either plan starts
+    with an epsilon move (MakeAsym, Make_SymToAsym): its sense is the mover's own choice
+    (reading A8) and a fresh Look during it asks for a further epsilon."""
+    if set(a) != set(b):
+        return False
+    for r in a:
+        (role_a, ta), (role_b, tb) = a[r], b[r]
+        if role_a == role_b == "leader" and ta != tb:
+            return False
+    return True
+
+
+def _plan_text(plan: dict) -> str:
+    if not plan:
+        return "no move"
+    return ", ".join(f"robot {r} ({role}) to {g.fmt_point(p)}"
+                     for r, (role, p) in sorted(plan.items()))
+
+
+def _piece_text(piece) -> str:
+    if isinstance(piece, g.Segment):
+        return f"along the segment {g.fmt_point(piece.start)} -> {g.fmt_point(piece.end)}"
+    return (f"along the arc about {g.fmt_point(piece.centre)} from {g.fmt_point(piece.start)} "
+            f"to {g.fmt_point(piece.end)}")

@@ -1,0 +1,289 @@
+"""Schedulers (the adversary's policies) and the run loop.
+
+Every scheduler produces a sequence of adversary actions (:mod:`.world`): ``look`` with a
+frame, ``advance`` with an optional stop fraction and end flag.  The run records them;
+:func:`replay` feeds a recorded sequence back, so a run is reproduced event for event.
+
+* ``centralised`` -- one robot at a time, atomically: it Looks and completes its move;
+* ``fsync`` -- every robot Looks at the same instant, then the movers move (one after the
+  other: an interleaving), then the next round;
+* ``ssync`` -- a random non-empty subset Looks at the same instant, then they move;
+* ``async`` -- each event picks a random robot: an idle one Looks, a busy one advances
+  (possibly to a random rational point of its piece), so Looks are taken mid-motion and
+  moves are made on stale snapshots.
+
+Frames are random rational similarities (Pythagorean rotation, scale, translation and a
+random reflection), one per Look, seeded.
+"""
+
+from __future__ import annotations
+
+import random
+import sys
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+from .invariants import Checker, Violation
+from .pattern import recognise
+from .robot import Readings
+from .world import IDENTITY, Frame, World
+
+SCHEDULERS = ("centralised", "fsync", "ssync", "async")
+
+
+class TraceMismatch(Exception):
+    """A recorded action that cannot be applied (the trace is not of this configuration)."""
+
+
+@dataclass
+class Result:
+    outcome: str                  # gathered | stalled | violated | not-possible | undecided | max-events
+    detail: str
+    events: int
+    looks: int
+    checks: dict
+    violation: dict | None
+    pattern: dict
+    actions: list = field(default_factory=list)
+
+    @property
+    def label(self) -> str | None:
+        return self.violation["label"] if self.violation else None
+
+
+def random_frame(rng: random.Random, reflections: bool = True) -> Frame:
+    t = Fraction(rng.randint(-9, 9), rng.randint(1, 9))
+    s = Fraction(rng.randint(1, 6), rng.randint(1, 4))
+    a, b = (1 - t * t) / (1 + t * t) * s, 2 * t / (1 + t * t) * s
+    return Frame(a, b, reflections and rng.random() < 0.5, Fraction(rng.randint(-20, 20), 3),
+                 Fraction(rng.randint(-20, 20), 7))
+
+
+class _Run:
+    def __init__(self, world: World, max_events: int, progress: bool):
+        self.world = world
+        self.max_events = max_events
+        self.actions: list = []
+        self.progress = progress
+        self.last_decision = None
+
+    def look(self, i, frame):
+        self.actions.append({"a": "look", "robot": i, "frame": frame.as_list()})
+        self.last_decision = self.world.look(i, frame)
+        self._tick()
+        return self.last_decision
+
+    def advance(self, i, stop=None, end=False):
+        self.actions.append({"a": "advance", "robot": i,
+                             "stop": None if stop is None else str(stop), "end": end})
+        self.world.advance(i, stop, end)
+        self._tick()
+
+    def _tick(self):
+        w = self.world
+        if self.progress and w.events % 100 == 0:
+            print(f"gather: {w.events} events, {w.looks} Looks", file=sys.stderr, flush=True)
+        if w.events >= self.max_events:
+            raise _MaxEvents()
+
+
+class _MaxEvents(Exception):
+    pass
+
+
+def _status(world: World):
+    """``(status, detail)`` of a fresh Look in the world frame when nobody is busy."""
+    d, _ = world.snapshot_decision(IDENTITY)
+    return d
+
+
+def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Readings(),
+        rigid: bool = True, delta: Fraction | None = None, max_events: int = 2000,
+        checker: Checker | None = None, progress: bool = False, reflections: bool = True,
+        actions: list | None = None) -> Result:
+    """Run the gathering algorithm; ``actions`` replays a recorded adversary instead."""
+    checker = checker if checker is not None else Checker()
+    world = World(points, readings, rigid, delta, checker)
+    r = _Run(world, max_events, progress)
+    rng = random.Random(seed)
+    outcome, detail, violation = "max-events", f"stopped after {max_events} events", None
+    try:
+        if actions is not None:
+            outcome, detail = _replay(r, actions)
+        else:
+            outcome, detail = _POLICIES[scheduler](r, rng, reflections)
+    except Violation as v:
+        outcome, detail, violation = "violated", str(v), v.as_dict()
+    except _MaxEvents:
+        pass
+    pts = world.positions()
+    centre = _status(world).centre if not world.busy() else None
+    pattern = {}
+    if centre is not None:
+        pat = recognise(pts, centre, readings.lone)
+        pattern = {"centre": [centre[0].text(), centre[1].text()],
+                   "centre_robot": pat.centre_robot,
+                   "layers": [list(layer) for layer in pat.layers],
+                   "size": len(pat.robots)}
+    checks = dict(checker.counts)
+    checks["skipped"] = checker.undecided_fresh   # I3/I9 Looks the kernel could not hold
+    return Result(outcome, detail, world.events, world.looks, checks, violation,
+                  pattern, r.actions)
+
+
+def _terminal(world: World):
+    """When nobody is busy: "gathered", "not-possible", "undecided" or None (go on)."""
+    d = _status(world)
+    if d.status == "terminated":
+        return "gathered", f"all {world.n} robots are in the pattern"
+    if d.status == "not-possible":
+        return "not-possible", d.detail
+    if d.status == "undecided":
+        return "undecided", d.detail
+    if d.status == "stay":
+        return "stalled", d.detail
+    return None
+
+
+def _stall(world: World, idle_rounds: int, leader_free: int):
+    if idle_rounds >= 2:
+        return "stalled", "a round in which every robot Looked and none moved, R not empty"
+    if leader_free > 3 * world.n + 10:
+        return "stalled", (f"{leader_free} moves in a row without the pattern growing "
+                           "(MakeAsym / Make_SymToAsym moves repeat: progress, I10)")
+    return None
+
+
+def _centralised(r: _Run, rng, reflections):
+    w = r.world
+    idle_rounds, since_growth, size = 0, 0, -1
+    while True:
+        end = _terminal(w)
+        if end:
+            return end
+        moved = False
+        order = list(range(w.n))
+        rng.shuffle(order)
+        for i in order:
+            r.look(i, random_frame(rng, reflections))
+            if w.robots[i].busy:
+                role = w.robots[i].role
+                _finish_move(r, i, rng)
+                moved = True
+                since_growth = 0 if role.startswith("leader") else since_growth + 1
+                break
+        idle_rounds = 0 if moved else idle_rounds + 1
+        stall = _stall(w, idle_rounds, since_growth)
+        if stall:
+            return stall
+
+
+def _finish_move(r: _Run, i, rng):
+    """Robot ``i`` completes its move; non-rigid: the adversary may stop at a rational point
+    of a piece, and end the move there once delta is covered."""
+    w = r.world
+    while w.robots[i].busy:
+        if not w.rigid and rng.random() < 0.3:
+            stop = Fraction(rng.randint(1, 3), 4)
+            r.advance(i, stop, end=_may_end(w, i, stop))
+        else:
+            r.advance(i)
+
+
+def _may_end(w: World, i, stop) -> bool:
+    from ..exact.multiquadratic import MQ
+    from . import geometry as g
+    rob = w.robots[i]
+    pos = rob.path[0].split(MQ.rational(stop))[0].final if stop else rob.path[0].final
+    return (g.dist2(rob.start, pos) - MQ.rational(w.delta) ** 2).sign() >= 0
+
+
+def _synchronous(r: _Run, rng, reflections, subset: bool):
+    """FSYNC (everyone) or SSYNC (a random subset) Looks at one configuration, then the
+    movers move in turn.  Reaching here, a fresh Look plans a move (``_terminal``)."""
+    w = r.world
+    since_growth = 0
+    while True:
+        end = _terminal(w)
+        if end:
+            return end
+        active = [i for i in range(w.n) if not subset or rng.random() < 0.5] or \
+            [rng.randrange(w.n)]
+        for i in active:
+            r.look(i, random_frame(rng, reflections))
+        movers = [i for i in active if w.robots[i].busy]
+        roles = [w.robots[i].role for i in movers]
+        for i in movers:
+            _finish_move(r, i, rng)
+        if movers:
+            grew = any(x.startswith("leader") for x in roles)
+            since_growth = 0 if grew else since_growth + 1
+        elif not subset:
+            return "stalled", "every robot Looked and none moved, R not empty"
+        stall = _stall(w, 0, since_growth)
+        if stall:
+            return stall
+
+
+def _fsync(r, rng, reflections):
+    return _synchronous(r, rng, reflections, subset=False)
+
+
+def _ssync(r, rng, reflections):
+    return _synchronous(r, rng, reflections, subset=True)
+
+
+def _async(r: _Run, rng, reflections):
+    w = r.world
+    since_growth, quiet = 0, 0
+    while True:
+        if not w.busy():
+            end = _terminal(w)
+            if end:
+                return end
+            d = _status(w)
+            if d.status != "move":
+                quiet += 1
+                if quiet > 2:
+                    return "stalled", "nobody moves while R is not empty"
+        i = rng.randrange(w.n)
+        rob = w.robots[i]
+        if rob.busy:
+            role = rob.role
+            if rng.random() < 0.3:
+                stop = Fraction(rng.randint(1, 3), 4)
+                end = not w.rigid and rng.random() < 0.3 and _may_end(w, i, stop)
+                r.advance(i, stop, end)
+            else:
+                r.advance(i)
+            if not w.robots[i].busy:
+                since_growth = 0 if role.startswith("leader") else since_growth + 1
+        else:
+            r.look(i, random_frame(rng, reflections))
+        stall = _stall(w, 0, since_growth)
+        if stall:
+            return stall
+
+
+def _replay(r: _Run, actions):
+    w = r.world
+    for k, act in enumerate(actions):
+        try:
+            if act["a"] == "look":
+                r.look(int(act["robot"]), Frame.from_list(act["frame"]))
+            elif act["a"] == "advance":
+                stop = act.get("stop")
+                r.advance(int(act["robot"]), None if stop is None else Fraction(stop),
+                          bool(act.get("end", False)))
+            else:
+                raise TraceMismatch(f"action {k}: unknown kind {act['a']!r}")
+        except (ValueError, IndexError, KeyError, TypeError) as err:
+            raise TraceMismatch(f"action {k} cannot be applied: {err}") from None
+    if not w.busy():
+        end = _terminal(w)
+        if end:
+            return end
+    return "stopped", f"the trace ends after {len(actions)} actions"
+
+
+_POLICIES = {"centralised": _centralised, "fsync": _fsync, "ssync": _ssync, "async": _async}

@@ -1,0 +1,180 @@
+"""The world of the gathering simulator: unit discs, Looks in adversary frames, moves.
+
+Model (spec section 1; ``docs/gathering.md``): robots are unit discs whose centres are
+exact multiquadratic points.  A robot is idle, or holds a pending path computed at its
+last Look (ASYNC: the path may be stale when it moves).  The adversary's actions are
+plain data (Pactole's demon):
+
+* ``look(i, frame)`` -- robot i takes a snapshot of every centre in ``frame`` (a rational
+  similarity, reflections included), runs :func:`.robot.decide` on it and keeps its own
+  path, mapped back to the world's frame;
+* ``advance(i, stop, end)`` -- robot i moves along the current piece of its path to the
+  piece's end, or to the rational fraction ``stop`` of it (non-rigid); ``end``: the
+  adversary ends the move there (non-rigid, allowed once the straight distance from the
+  move's start is at least delta, which is never more than the distance travelled).
+
+Moves happen one robot at a time (an interleaving of the continuous motions): between
+two advances a snapshot sees robots part-way along their paths.  Collisions along each
+piece are decided exactly (:mod:`.geometry`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+from math import isqrt
+
+from flint import fmpq
+
+from ..exact.multiquadratic import MQ
+from . import geometry as g
+from .robot import Readings, decide
+
+
+@dataclass(frozen=True)
+class Frame:
+    """``local = M (x - t)``; ``M = [[a, -b], [b, a]]`` or, reflected,
+    ``[[a, b], [b, -a]]``; ``a, b`` rational, not both zero."""
+    a: Fraction = Fraction(1)
+    b: Fraction = Fraction(0)
+    reflect: bool = False
+    tx: Fraction = Fraction(0)
+    ty: Fraction = Fraction(0)
+
+    @property
+    def unit(self) -> Fraction:
+        """The robot radius seen in this frame (the similarity's scale)."""
+        n = self.a * self.a + self.b * self.b
+        num, den = isqrt(n.numerator), isqrt(n.denominator)
+        if num * num != n.numerator or den * den != n.denominator or n == 0:
+            raise ValueError(f"frame scale sqrt({n}) is not rational")
+        return Fraction(num, den)
+
+    def to_local(self, p):
+        x, y = p[0] - self.tx, p[1] - self.ty
+        if self.reflect:
+            return (x * self.a + y * self.b, x * self.b - y * self.a)
+        return (x * self.a - y * self.b, x * self.b + y * self.a)
+
+    def to_world(self, p):
+        n = self.a * self.a + self.b * self.b
+        x, y = p
+        if self.reflect:
+            u, v = (x * self.a + y * self.b) / n, (x * self.b - y * self.a) / n
+        else:
+            u, v = (x * self.a + y * self.b) / n, (-x * self.b + y * self.a) / n
+        return (u + self.tx, v + self.ty)
+
+    def piece_to_world(self, piece):
+        if isinstance(piece, g.Segment):
+            return g.Segment(self.to_world(piece.start), self.to_world(piece.end))
+        return g.Arc(self.to_world(piece.centre), self.to_world(piece.start),
+                     self.to_world(piece.end), -piece.sense if self.reflect else piece.sense)
+
+    def as_list(self) -> list:
+        return [str(self.a), str(self.b), self.reflect, str(self.tx), str(self.ty)]
+
+    @staticmethod
+    def from_list(items) -> "Frame":
+        a, b, r, tx, ty = items
+        return Frame(Fraction(a), Fraction(b), bool(r), Fraction(tx), Fraction(ty))
+
+
+IDENTITY = Frame()
+MIRROR = Frame(reflect=True)
+
+
+@dataclass
+class RobotState:
+    pos: tuple
+    path: list = field(default_factory=list)    # remaining pieces, world frame
+    role: str | None = None
+    look_index: int | None = None               # event index of the Look
+    start: tuple | None = None                  # where the current move began
+    target: tuple | None = None                 # final point of the planned path
+    centre: tuple | None = None                 # C at the Look (world frame)
+    r_set: frozenset = frozenset()              # R at the Look (world indices)
+
+    @property
+    def busy(self) -> bool:
+        return bool(self.path)
+
+
+class World:
+    """Positions and pending moves; the invariant checker is told about every action."""
+
+    def __init__(self, points, readings: Readings = Readings(), rigid: bool = True,
+                 delta: Fraction | None = None, checker=None):
+        self.robots = [RobotState((MQ.coerce(x), MQ.coerce(y))) for x, y in points]
+        self.readings = readings
+        self.rigid = rigid
+        self.delta = delta
+        self.checker = checker
+        self.events = 0
+        self.looks = 0
+
+    @property
+    def n(self) -> int:
+        return len(self.robots)
+
+    def positions(self) -> tuple:
+        return tuple(r.pos for r in self.robots)
+
+    def snapshot_decision(self, frame: Frame):
+        """The decision every robot would reach on a fresh Look now in ``frame``, with
+        its moves mapped to the world frame: ``(decision, {robot: world path})``."""
+        local = tuple(frame.to_local(p) for p in self.positions())
+        d = decide(local, self.readings, fmpq(frame.unit.numerator, frame.unit.denominator))
+        paths = {m.robot: [frame.piece_to_world(pc) for pc in m.path] for m in d.moves}
+        return d, paths
+
+    def look(self, i: int, frame: Frame):
+        """Robot ``i`` Looks in ``frame``; returns the decision (in ``frame``)."""
+        rob = self.robots[i]
+        if rob.busy:
+            raise ValueError(f"robot {i} Looks while it has a pending move")
+        self.events += 1
+        self.looks += 1
+        d, paths = self.snapshot_decision(frame)
+        if i in paths and paths[i]:
+            rob.path = list(paths[i])
+            rob.role = d.move_of(i).role
+            rob.look_index = self.events
+            rob.start = rob.pos
+            rob.target = paths[i][-1].final
+            rob.centre = frame.to_world(d.centre)
+            rob.r_set = frozenset(k for k in range(self.n) if k not in d.pattern.robots)
+        if self.checker is not None:
+            self.checker.after_look(self, i, frame, d, paths)
+        return d
+
+    def advance(self, i: int, stop: Fraction | None = None, end: bool = False):
+        """Robot ``i`` moves along its current piece (to ``stop`` of it, or to its end);
+        ``end`` stops the whole move there (non-rigid only)."""
+        rob = self.robots[i]
+        if not rob.busy:
+            raise ValueError(f"robot {i} has no pending move")
+        if end and self.rigid:
+            raise ValueError("a rigid move cannot be stopped early")
+        self.events += 1
+        piece = rob.path[0]
+        if stop is not None and 0 < stop < 1:
+            done, rest = piece.split(MQ.rational(stop))
+            rob.path[0] = rest
+        else:
+            done = piece
+            rob.path.pop(0)
+        rob.pos = done.final
+        if end:
+            if (g.dist2(rob.start, rob.pos) - MQ.rational(self.delta) ** 2).sign() < 0:
+                raise ValueError(f"robot {i} cannot be stopped before delta")
+            rob.path = []
+        if self.checker is not None:
+            self.checker.after_advance(self, i, done)
+        if not rob.path:
+            if self.checker is not None:
+                self.checker.after_arrival(self, i)
+            rob.role, rob.look_index, rob.target = None, None, None
+
+    def busy(self) -> list:
+        return [i for i, r in enumerate(self.robots) if r.busy]
