@@ -19,7 +19,7 @@ import sys
 
 from . import __version__, audit_cli, cases_cli, certify_cli
 from .ledger import cli as ledger_cli
-from .plot import cli as plot_cli
+from .pictures import cli as plot_cli
 from .analysis import Options, analyse
 from .configuration import load
 from .errors import EXIT_BUG, EXIT_FALSE, EXIT_INPUT, EXIT_OK, InputError

@@ -59,7 +59,13 @@ def _words_used(lines: list[str]) -> list[str]:
 
 def plain(value) -> str:
     """Any JSON value in words: yes/no, none, lists cut, mappings as ``key value``
-    pairs, numbers in prose with their decimals; never a Python repr."""
+    pairs, numbers in prose with their decimals; never a Python repr.
+
+    >>> plain({"straight": True, "skew": False, "mirrors": 3, "leader": None})
+    'straight yes; skew no; mirrors 3; leader none'
+    >>> plain({"witness": {"line": "1/8", "slope": "sqrt(2)"}, "robots": [3, 4]})
+    'witness (line 1/8; slope sqrt(2) ≈ 1.41421); robots 3, 4'
+    """
     if value is None:
         return "none"
     if isinstance(value, bool):

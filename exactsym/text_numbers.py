@@ -57,7 +57,11 @@ def _ball(x, sqrt: bool = False):
 
 def approx(x, sqrt: bool = False) -> str:
     """``x`` (or ``sqrt(x)``) to :data:`DIGITS` significant digits, from a certified
-    enclosure: ``approx(fmpq(1, 7)) == '0.142857'``."""
+    enclosure.
+
+    >>> approx(fmpq(1, 7)), approx(fmpq(2), sqrt=True)
+    ('0.142857', '1.41421')
+    """
     ball = _ball(x, sqrt)
     if ball.is_zero():
         return "0"
@@ -66,7 +70,17 @@ def approx(x, sqrt: bool = False) -> str:
 
 def number(x) -> str:
     """The exact text of ``x`` with a decimal beside it when irrational; by its decimal
-    only (and the length of the exact text) when the exact text is long."""
+    only (and the length of the exact text) when the exact text is long.
+
+    >>> number(fmpq(3, 7))
+    '3/7'
+    >>> number(fmpq(10**60, 7))
+    '≈ 1.42857e+59 (exact: 63 characters, in --json)'
+    >>> from exactsym.expr import parse_expression
+    >>> node = parse_expression("sqrt(2)")
+    >>> number(evaluate(node, number_system([node]))).endswith(" ≈ 1.41421")
+    True
+    """
     text = number_text(x)
     if len(text) > LONG:
         return _long(text, approx(x))
@@ -80,7 +94,11 @@ def _long(text: str, decimal: str) -> str:
 def square_root(x) -> str:
     """The text of ``sqrt(x)`` for ``x >= 0`` exact: rational when ``x`` is a rational
     square, ``p*sqrt(m)/q`` for other rationals (square factors taken out while they are
-    small), ``sqrt(...)`` otherwise; with its decimal when irrational."""
+    small), ``sqrt(...)`` otherwise; with its decimal when irrational.
+
+    >>> square_root(fmpq(16)), square_root(fmpq(8)), square_root(fmpq(85, 9))
+    ('4', '2*sqrt(2) ≈ 2.82843', 'sqrt(85)/3 ≈ 3.07318')
+    """
     if isinstance(x, FieldElement) and x.is_rational():
         x = x.rational()
     if isinstance(x, FieldElement):
@@ -125,7 +143,11 @@ _IRRATIONAL_NAMES = {"sqrt", "cos", "sin"}
 def annotated(text: str) -> str:
     """``text`` with a decimal after every irrational number written in it (in the
     configuration syntax, as :func:`number_text` writes them), and long ones replaced by
-    their decimal.  Text that does not parse as a number is left as it is."""
+    their decimal.  Text that does not parse as a number is left as it is.
+
+    >>> annotated("a mirror at 1/8 turn, slope sqrt(2) - 1, through (sqrt(3)/2, 1/2)")
+    'a mirror at 1/8 turn, slope sqrt(2) - 1 ≈ 0.414214, through (sqrt(3)/2 ≈ 0.866025, 1/2)'
+    """
     if not any(name in text for name in _IRRATIONAL_NAMES):
         return text
     tokens = [(m.lastgroup, m.group(), m.start()) for m in _TOKEN.finditer(text)]
@@ -188,7 +210,13 @@ def _expression_span(run) -> tuple[int, int, str] | None:
 
 
 def listed(indices, limit: int = LISTED) -> str:
-    """``"6, 7, 8"``; past ``limit`` entries ``"0, 1, ..., 11, ... (100,000 in all)"``."""
+    """The robots ``indices``, cut after ``limit`` of them.
+
+    >>> listed([6, 7, 8])
+    '6, 7, 8'
+    >>> listed(range(100_000))
+    '0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, ... (100,000 in all)'
+    """
     indices = list(indices)
     if len(indices) <= limit:
         return ", ".join(map(str, indices))
