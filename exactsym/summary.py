@@ -73,7 +73,7 @@ def plain(value) -> str:
     if isinstance(value, (int, float)):
         return str(value)
     if isinstance(value, str):
-        return annotated(value)
+        return prose(value)
     if isinstance(value, dict):
         return "; ".join(f"{key.replace('_', ' ')} " + (f"({plain(v)})" if isinstance(v, dict)
                                                          and len(v) > 1 else plain(v))
@@ -84,7 +84,7 @@ def plain(value) -> str:
         shown = [plain(v) for v in value[:8]]
         more = f", ... ({len(value)} in all)" if len(value) > 8 else ""
         return ", ".join(shown) + more if shown else "none"
-    return annotated(str(value))
+    return prose(value)
 
 
 def _row(label: str, text: str) -> str:
@@ -132,11 +132,16 @@ def summary_text(analysis: Analysis, verbose: bool = False, hint: bool = True) -
 
 def _head(analysis: Analysis, report: dict) -> list[str]:
     config, levels = analysis.config, analysis.levels
-    title = config.name or "configuration"
-    source = "" if config.source == "<memory>" else f"  ({config.source})"
-    kind = "fat robots (unit discs)" if config.model == "fat" else "point robots"
+    known = config.source != "<memory>"
+    title = (config.name or "") + (f"  ({config.source})" if config.name and known else
+                                   config.source if known else "")
+    title = title or "configuration"
+    kind = ("fat robot" if config.model == "fat" else "point robot") + \
+        ("s" if config.n != 1 else "") + (" (unit discs)" if config.model == "fat" else "")
     field = report["number_field"]
     field_text = "rational" if field == "Q" else f"exact, in the number field {field}"
+    if config.polar is not None:
+        field_text = f"polar (radius, turn), {field_text}"
     counts = [len(level.points) for level in levels.levels]
     t = len(counts)
     if t <= 12:
@@ -145,7 +150,7 @@ def _head(analysis: Analysis, report: dict) -> list[str]:
         per_level = (f"{sum(1 for c in counts if c == 1):,} with one robot, the largest "
                      f"with {max(counts):,}")
     return [
-        title + source,
+        title,
         _row("robots", f"{config.n:,} {kind}; coordinates {field_text}"),
         _row("SEC", f"smallest enclosing circle: centre C = {_point(levels.sec.centre)}, "
                     f"radius {square_root(levels.sec.radius_squared)}"),
@@ -194,7 +199,7 @@ def _mirror_place(group) -> str:
     at_centre = getattr(layout, "centre_index", None)
     on = [i for i, j in enumerate(perm) if i == j and i != at_centre]
     if on:
-        return f" (one through robot {on[0]})"
+        return f" (one through robot{'s' if len(on) > 1 else ''} {listed(on, 4)})"
     swapped = next((i for i, j in enumerate(perm) if i != j), None)
     if swapped is None:
         return ""
@@ -230,11 +235,21 @@ def _by_statement(discrepancies: list) -> list[tuple[str, list]]:
     return list(groups.items())
 
 
+_PYTHON_WORDS = re.compile(r"\b(None|True|False)\b")
+
+
+def prose(text) -> str:
+    """A sentence written by another layer, for the screen: numbers with their decimals
+    (:func:`annotated`), Python's None/True/False as none/yes/no."""
+    return _PYTHON_WORDS.sub(lambda m: {"None": "none", "True": "yes", "False": "no"}[m[1]],
+                             annotated(str(text)))
+
+
 def _discrepancy_text(d: dict) -> str:
     truth = str(d.get("truth", ""))
     if truth.startswith("false here: "):
         truth = truth[len("false here: "):]
-    return f"says {annotated(str(d.get('says', '')))}; here: {annotated(truth)}"
+    return f"says {prose(d.get('says', ''))}; here: {prose(truth)}"
 
 
 def _audit_rows(audit: dict, verbose: bool, source: str) -> list[str]:

@@ -142,13 +142,16 @@ _IRRATIONAL_NAMES = {"sqrt", "cos", "sin"}
 
 def annotated(text: str) -> str:
     """``text`` with a decimal after every irrational number written in it (in the
-    configuration syntax, as :func:`number_text` writes them), and long ones replaced by
-    their decimal.  Text that does not parse as a number is left as it is.
+    configuration syntax, as :func:`number_text` writes them), and long numbers
+    (rational or not) replaced by their decimal.  Text that does not parse as a number is left as it is.
 
     >>> annotated("a mirror at 1/8 turn, slope sqrt(2) - 1, through (sqrt(3)/2, 1/2)")
     'a mirror at 1/8 turn, slope sqrt(2) - 1 ≈ 0.414214, through (sqrt(3)/2 ≈ 0.866025, 1/2)'
+    >>> annotated(f"ray (-1, {10**45}/7)")
+    'ray (-1, ≈ 1.42857e+44 (exact: 48 characters, in --json))'
     """
-    if not any(name in text for name in _IRRATIONAL_NAMES):
+    if not any(name in text for name in _IRRATIONAL_NAMES) and \
+            not re.search(r"[0-9]{%d}" % (LONG // 2), text):
         return text
     tokens = [(m.lastgroup, m.group(), m.start()) for m in _TOKEN.finditer(text)]
     out, last, i = [], 0, 0
@@ -176,7 +179,8 @@ def _in_expression(token) -> bool:
 def _expression_span(run) -> tuple[int, int, str] | None:
     """The part of a run of expression tokens that is an irrational number: (start,
     end, text shown); None when there is none."""
-    if not any(kind == "name" and value in _IRRATIONAL_NAMES for kind, value, _ in run):
+    irrational = any(kind == "name" and value in _IRRATIONAL_NAMES for kind, value, _ in run)
+    if not irrational and sum(len(value) for kind, value, _ in run if kind == "num") <= LONG:
         return None
     start = run[0][2]
     source = "".join(value for _, value, _ in run)
@@ -202,10 +206,11 @@ def _expression_span(run) -> tuple[int, int, str] | None:
         value = evaluate(node, number_system([node]))
     except (ExpressionError, ArithmeticError, ValueError):
         return None
+    if len(piece) > LONG:
+        return start + lo, start + hi, _long(piece, approx(value))
     if not is_irrational(value):
         return None
-    shown = _long(piece, approx(value)) if len(piece) > LONG else \
-        f"{piece} ≈ {approx(value)}"
+    shown = f"{piece} ≈ {approx(value)}"
     return start + lo, start + hi, shown
 
 
