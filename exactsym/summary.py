@@ -34,7 +34,7 @@ WORDS = (
     ("O_A / O_S", re.compile(r"\bO_[AS]\b"),
      "the paper's asymmetric / symmetric configurations (by lines of symmetry only)"),
     ("straight", re.compile(r"\bstraight\b"), "a mirror line through C"),
-    ("skew", re.compile(r"\bskew"), "the paper's 'skew line': a half-turn about C"),
+    ("skew", re.compile(r"\bskew"), 'the paper\'s "skew line": a half-turn about C'),
     ("<G_i, G_j>", re.compile(r"<G"), "a pair of levels; symmetric when they have a common "
                                        "line of symmetry, asymmetric otherwise"),
     ("G_ij", re.compile(r"\bG_ij\b|\bG\(\d"),
