@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import re
 
+from flint import fmpq
+
 from .analysis import Analysis
 from .text_numbers import annotated, approx, is_irrational, listed, number, square_root
 
@@ -384,34 +386,35 @@ def _all_strings(report: dict) -> list[str]:
 
 
 def _symmetry_lines(group) -> list[str]:
+    """Every symmetry (the first 12): what it is, in the user's terms, and the robots it
+    moves.  :meth:`SymmetryGroup.symmetries` yields the identity, the rotations by j/k
+    turn (j = 1..k-1), then the mirrors."""
     if group.name == "O2":
         return ["  a single robot: every rotation about it, every mirror through it"]
     lines = []
-    for g in group.symmetries():
-        what = _isometry_name(g, group)
+    centre = getattr(getattr(group, "_layout", None), "centre_index", None)
+    total = group.rotations + group.mirrors
+    for index, g in enumerate(group.symmetries()):
+        if index == 12 and total > 12:
+            lines.append(f"  ... ({total:,} symmetries in all)")
+            break
         moved = [(i, j) for i, j in enumerate(g.permutation) if i != j]
         fixed = [i for i, j in enumerate(g.permutation) if i == j]
-        text = "identity" if not moved and g.kind == "rotation" and len(lines) == 0 else what
+        if index == 0:
+            what = "identity"
+        elif index < group.rotations:
+            what = f"rotation by {number(fmpq(index, group.rotations))} turn about C"
+        else:
+            on = [i for i in fixed if i != centre]
+            what = "mirror in the line through C" + (
+                f" at {number(g.turn)} turn" if g.turn is not None else "") + (
+                f" and robot {on[0]}" if on else
+                f", between robots {moved[0][0]} and {moved[0][1]}" if moved else "")
         shown = ", ".join(f"{i}->{j}" for i, j in moved[:6]) + \
             (f", ... ({len(moved):,} robots moved)" if len(moved) > 6 else "")
-        lines.append(f"  {text}: " + (f"moves {shown}; " if moved else "")
+        lines.append(f"  {what}: " + (f"moves {shown}; " if moved else "")
                      + (f"fixes {listed(fixed)}" if fixed else "fixes no robot"))
-        if len(lines) >= 12:
-            lines.append(f"  ... ({group.rotations + group.mirrors:,} symmetries in all)")
-            break
     return lines
-
-
-def _isometry_name(g, group) -> str:
-    if g.kind == "rotation":
-        if g.turn is not None:
-            return f"rotation by {number(g.turn)} turn about C"
-        return "rotation about C"
-    if g.turn is not None:
-        return f"mirror in the line through C at {number(g.turn)} turn"
-    (a, b), (c, d) = g.matrix
-    return f"mirror in the line through C along ({_short_number(1 + a)}, {_short_number(c)})" \
-        if a != -1 else "mirror in the line through C along (0, 1)"
 
 
 def _trace(paper: dict) -> list[str]:
