@@ -19,7 +19,7 @@ from flint import fmpq
 from .analysis import Analysis
 from .text_numbers import annotated, approx, is_irrational, listed, number, square_root
 
-__all__ = ["summary_text", "one_line", "plain", "GLOSSARY_PAGE", "WORDS"]
+__all__ = ["summary_text", "one_line", "plain", "prose", "GLOSSARY_PAGE", "WORDS"]
 
 GLOSSARY_PAGE = "docs/glossary.md"
 #: Per-level detail, trace entries and discrepancies shown with --verbose before "... more".
@@ -77,7 +77,7 @@ def plain(value) -> str:
     if isinstance(value, str):
         return prose(value)
     if isinstance(value, dict):
-        return "; ".join(f"{key.replace('_', ' ')} " + (f"({plain(v)})" if isinstance(v, dict)
+        return "; ".join(f"{_key(key)} " + (f"({plain(v)})" if isinstance(v, dict)
                                                          and len(v) > 1 else plain(v))
                          for key, v in value.items())
     if isinstance(value, (list, tuple)):
@@ -87,6 +87,13 @@ def plain(value) -> str:
         more = f", ... ({len(value)} in all)" if len(value) > 8 else ""
         return ", ".join(shown) + more if shown else "none"
     return prose(value)
+
+
+def _key(key) -> str:
+    """A JSON key in words: ``in_O_S`` stays (the paper's name), ``first_actor`` is
+    ``first actor``."""
+    key = str(key)
+    return key.replace("_", " ") if re.fullmatch(r"[a-z0-9_]+", key) else key
 
 
 def _row(label: str, text: str) -> str:
@@ -296,7 +303,7 @@ def _detail(analysis: Analysis, report: dict) -> list[str]:
         rest = {key: value for key, value in paper.items()
                 if key not in ("trace", "orderable", "leader", "gathering_possible", "moves",
                                "first_actor", "complete", "G", "G_prime")}
-        lines += [f"  {key.replace('_', ' ')}: {plain(value)}" for key, value in rest.items()]
+        lines += [f"  {_key(key)}: {plain(value)}" for key, value in rest.items()]
     audit = report.get("audit")
     if audit and audit.get("discrepancies"):
         lines += ["", "audit, every instance:"]

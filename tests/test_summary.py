@@ -190,3 +190,13 @@ def test_one_line_per_file(monkeypatch):
     line = one_line(analyse(load("cases/examples/chiral-nine-gon.toml")))
     assert line == ("cases/examples/chiral-nine-gon.toml: 9 robots, C3, not orderable, "
                     "no leader; paper: orderable, leader 6; audit: 8 statements false")
+
+
+def test_the_audit_command_prints_no_python_value(capsys, monkeypatch):
+    from exactsym.cli import main
+    monkeypatch.chdir(ROOT)
+    for path in CASES:
+        main(["audit", str(path.relative_to(ROOT))])
+        out = capsys.readouterr().out
+        for line in out.splitlines():
+            assert not REPR.search(line), (path, line)
