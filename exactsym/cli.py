@@ -16,6 +16,7 @@ import io
 import json
 import os
 import sys
+import textwrap
 
 from . import __version__, audit_cli, cases_cli, certify_cli
 from .ledger import cli as ledger_cli
@@ -85,7 +86,8 @@ def _check_several(args) -> int:
 
 #: name -> (help, add the arguments to a subparser, run: args -> exit code)
 COMMANDS = {
-    "check": ("analyse a configuration file ('-' for standard input)",
+    "check": ("analyse configuration files ('-' for standard input): a summary of each "
+              "(one line per file when several; --verbose: the detail; --json: everything)",
               _check_arguments, _check),
     "audit": ("the paper's family algorithms against the ground truth (exit 1 when some "
               "statement fails on the configuration)", audit_cli.add_arguments, audit_cli.run),
@@ -140,7 +142,7 @@ def _reject_options_that_do_not_apply(args) -> None:
 
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="exactsym", description="Exact checker for the leader election and "
-                     "gathering algorithms of Gan Chaudhuri and Mukhopadhyaya.",
+                     "gathering algorithms\nof Gan Chaudhuri and Mukhopadhyaya.",
                      epilog="example: exactsym check cases/examples/chiral-nine-gon.toml\n"
                             "help on a command: exactsym COMMAND --help",
                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -150,8 +152,8 @@ def build_parser() -> argparse.ArgumentParser:
         examples = EXAMPLES.get(name, [])
         epilog = ("example" + ("s" if len(examples) > 1 else "") + ":\n" +
                   "\n".join("  " + e for e in examples)) if examples else None
-        add_arguments(sub.add_parser(name, help=text, description=text[:1].upper() + text[1:]
-                                     + ".", epilog=epilog,
+        description = textwrap.fill(text[:1].upper() + text[1:] + ".", 88)
+        add_arguments(sub.add_parser(name, help=text, description=description, epilog=epilog,
                                      formatter_class=argparse.RawDescriptionHelpFormatter))
     return parser
 
