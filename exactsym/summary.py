@@ -264,7 +264,12 @@ def _discrepancy_text(d: dict) -> str:
 def _audit_rows(audit: dict, verbose: bool, source: str) -> list[str]:
     disc = audit.get("discrepancies") or []
     if not disc:
-        return [_row("audit", "agrees: no statement of the paper checked here is false")]
+        covered = audit.get("covered")       # how many statements were checked, when told
+        count = len(covered) if isinstance(covered, (list, tuple, dict)) else covered \
+            if isinstance(covered, int) and not isinstance(covered, bool) else None
+        checked = f"none of the {count} statements of the paper checked here" \
+            if count else "no statement of the paper checked here"
+        return [_row("audit", f"agrees: {checked} is false")]
     groups = _by_statement(disc)
     width = max(len(label) for label, _ in groups)
     rows = [_row("audit", f"{len(groups)} statement{'s' if len(groups) != 1 else ''} of the "

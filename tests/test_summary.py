@@ -200,3 +200,19 @@ def test_the_audit_command_prints_no_python_value(capsys, monkeypatch):
         out = capsys.readouterr().out
         for line in out.splitlines():
             assert not REPR.search(line), (path, line)
+
+
+def test_the_audit_line_counts_the_statements_checked_when_told(monkeypatch):
+    import exactsym.report as report
+    original = report.report_json
+
+    def covered(analysis):
+        out = original(analysis)
+        out["audit"]["covered"] = ["Pasym-Pord", "lem-asym-ord", "Psym-Gsym"]
+        return out
+
+    monkeypatch.chdir(ROOT)
+    monkeypatch.setattr(report, "report_json", covered)
+    text = text_of("cases/discrepancies/d3-hexagon.toml")
+    assert "audit      agrees: none of the 3 statements of the paper checked here is false" \
+        in text.splitlines()
