@@ -31,8 +31,8 @@ LABEL, AUDIT_LINE = 11, 220
 #: in the "words" lines at its end (``docs/glossary.md`` has them all).  term -> (how
 #: to find it, what it means)
 WORDS = (
-    ("P, G", re.compile(r"\bP is\b|\bG_P\b|\bG is\b"),
-     "P: this configuration; G (G_P): its levels, as the paper's family of polygons"),
+    ("P", re.compile(r"\bP is\b|\bG_P\b|\bG is\b"),
+     "this configuration; G (or G_P): its levels, as the paper's family of polygons"),
     ("O_A / O_S", re.compile(r"\bO_[AS]\b"),
      "the paper's asymmetric / symmetric configurations (by lines of symmetry only)"),
     ("straight", re.compile(r"\bstraight\b"), "a mirror line through C"),
@@ -376,7 +376,8 @@ def _leader_name(key: str) -> str:
 def _strings(entry: dict, vertices_shown: int = 12) -> list[str]:
     vertices = entry.get("vertices") or []
     cw, acw = entry.get("cw") or [], entry.get("acw") or []
-    out = [f"strings ({plain(entry.get('metric', ''))}):"]
+    metric = str(entry.get("metric", "")).replace("-", " ")
+    out = [f"strings ({plain(metric)}):"]
     for i, vertex in enumerate(vertices[:vertices_shown]):
         a = plain(cw[i]) if i < len(cw) else "?"
         b = plain(acw[i]) if i < len(acw) else "?"
@@ -390,7 +391,7 @@ def _all_strings(report: dict) -> list[str]:
     lines = []
     for k, entry in enumerate(report["levels"][:MAX_LEVELS], 1):
         if entry.get("strings"):
-            lines += [f"  G{k} " + t if j == 0 else "  " + t
+            lines += [f"  G{k}, " + t[len("strings ("):-2] + ":" if j == 0 else "  " + t
                       for j, t in enumerate(_strings(entry["strings"]))]
     if len(report["levels"]) > MAX_LEVELS:
         lines.append(f"  ... ({len(report['levels']):,} levels in all)")

@@ -158,7 +158,7 @@ def test_strings_are_shown_in_text_mode(monkeypatch):
     monkeypatch.chdir(ROOT)
     text = text_of("cases/polygon/kite-polar.toml", strings=True)
     assert "strings (CW and ACW of each robot, per level):" in text
-    assert "  G1 strings (angular-distance):" in text
+    assert "  G1, angular distance:" in text
     assert "    robot 0: CW 1/3, 1/2, 1/3  ACW 1/3, 1/2, 1/3" in text
     assert "strings" not in text_of("cases/polygon/kite-polar.toml")
 
