@@ -1,0 +1,273 @@
+"""Families of configurations for a sweep: exact, deterministic enumerators with a size.
+
+A family is written as text on the command line (``docs/sweeps.md``):
+
+* ``roots:M:K[:RINGS]`` -- K robots on the M-th roots of unity (rays at turns j/M) of up
+  to RINGS concentric circles; RINGS is a count R (radii 1..R) or a list of radii
+  (``1,3/2``); one configuration per class under rotation and reflection, generated as a
+  canonical bracelet (:mod:`.canonical`);
+* ``grid:N:K`` -- K robots on the N x N integer grid, one per class under its 8 symmetries
+  (orderly generation);
+* ``random:K:SEED:COUNT`` -- COUNT sets of K rational points (coordinates p/q, |p| <= 8,
+  1 <= q <= 4), item i drawn from its own generator seeded with (SEED, i);
+* ``perturb:FILE:EPS:COUNT`` -- COUNT exact perturbations of FILE's points, each
+  coordinate (polar files: each turn, and each radius written as a rational) moved by a
+  multiple of EPS/16 in [-EPS, EPS];
+* ``gather:BUDGET:FAMILY`` -- the configurations of FAMILY as starting configurations of
+  the gathering simulator, BUDGET adversary steps per run.
+
+K may be an integer, ``<=K`` (1..K) or ``A..B``.  Every item is a :class:`SweepItem`:
+its key (the canonical form as text: a sweep's results are keyed by it), its points as
+configuration-file text, and what orders counterexamples (:func:`rank`).
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+from fractions import Fraction
+from math import lcm
+from typing import Iterator
+
+from .canonical import (bracelets, burnside_count, dihedral_permutations, gap_bracelets,
+                        gaps_to_positions, orderly_subsets, square_permutations)
+
+__all__ = ["Family", "SweepItem", "FamilyError", "parse_family", "family_size",
+           "family_items", "rank"]
+
+
+class FamilyError(ValueError):
+    """A family text the user wrote that cannot be read (exit 2)."""
+
+
+@dataclass(frozen=True)
+class SweepItem:
+    """One configuration of a family: ``points`` are ``("polar", r, turn)`` or
+    ``("xy", x, y)`` with exact numbers as text; ``size`` is M (roots) or N (grid), else 0;
+    ``denominator`` the lcm of the denominators of every number written."""
+    key: str
+    n: int
+    denominator: int
+    size: int
+    points: tuple
+
+
+@dataclass(frozen=True)
+class Family:
+    text: str
+    kind: str
+    counts: tuple = ()            # robot counts K, increasing
+    m: int = 0                    # roots: M; grid: N
+    radii: tuple = ()             # roots: the circles' radii (Fractions), increasing
+    seed: str = ""
+    count: int = 0                # random / perturb: number of draws
+    eps: Fraction = Fraction(0)
+    file: str = ""
+    base_points: tuple = ()       # perturb: the file's points (SweepItem form)
+    budget: int = 0               # gather: adversary steps per run
+    inner: "Family | None" = None
+
+
+def rank(item: SweepItem) -> tuple:
+    """Smaller is a better counterexample: fewest robots, then smallest denominators, then
+    smallest M (or N), then the key (deterministic ties)."""
+    return (item.n, item.denominator, item.size, item.key)
+
+
+def _int(text: str, what: str, family: str, low: int = 1) -> int:
+    if not text.strip().isdigit() or int(text) < low:
+        raise FamilyError(f"family {family!r}: {what} must be an integer >= {low}, not {text!r}")
+    return int(text)
+
+
+def _counts(text: str, family: str) -> tuple:
+    t = text.strip()
+    if t.startswith("<="):
+        return tuple(range(1, _int(t[2:], "K", family) + 1))
+    if ".." in t:
+        a, b = t.split("..", 1)
+        lo, hi = _int(a, "K", family), _int(b, "K", family)
+        if lo > hi:
+            raise FamilyError(f"family {family!r}: empty range of K {t!r}")
+        return tuple(range(lo, hi + 1))
+    return (_int(t, "K", family),)
+
+
+def _fraction(text: str, what: str, family: str) -> Fraction:
+    try:
+        value = Fraction(text.strip())          # "3/2", "0.01": exact, never eval
+    except (ValueError, ZeroDivisionError):
+        raise FamilyError(f"family {family!r}: {what} must be a rational number, "
+                          f"not {text!r}") from None
+    return value
+
+
+def parse_family(text: str, load_points=None) -> Family:
+    """Read a family text; ``load_points(path) -> tuple of points`` reads perturb's file
+    (:func:`exactsym.sweep.analysis_bridge.file_points`)."""
+    parts = text.split(":")
+    kind = parts[0]
+    if kind == "roots" and len(parts) in (3, 4):
+        m = _int(parts[1], "M", text)
+        radii = (Fraction(1),)
+        if len(parts) == 4:
+            ring = parts[3]
+            if "," in ring or "/" in ring or "." in ring:
+                radii = tuple(sorted({_fraction(r, "a radius", text) for r in ring.split(",")}))
+            else:
+                radii = tuple(Fraction(r) for r in range(1, _int(ring, "RINGS", text) + 1))
+            if radii[0] <= 0:
+                raise FamilyError(f"family {text!r}: radii must be positive")
+        counts = tuple(k for k in _counts(parts[2], text) if k <= m * len(radii))
+        return Family(text, "roots", counts=counts, m=m, radii=radii)
+    if kind == "grid" and len(parts) == 3:
+        n = _int(parts[1], "N", text)
+        counts = tuple(k for k in _counts(parts[2], text) if k <= n * n)
+        return Family(text, "grid", counts=counts, m=n)
+    if kind == "random" and len(parts) == 4:
+        return Family(text, "random", counts=_counts(parts[1], text), seed=parts[2],
+                      count=_int(parts[3], "COUNT", text, low=0))
+    if kind == "perturb" and len(parts) >= 4:
+        path = ":".join(parts[1:-2])
+        eps = _fraction(parts[-2], "EPS", text)
+        if eps <= 0:
+            raise FamilyError(f"family {text!r}: EPS must be positive")
+        points = tuple(load_points(path)) if load_points is not None else ()
+        return Family(text, "perturb", file=path, eps=eps,
+                      count=_int(parts[-1], "COUNT", text, low=0), base_points=points,
+                      counts=(len(points),))
+    if kind == "gather" and len(parts) >= 3:
+        inner = parse_family(":".join(parts[2:]), load_points)
+        if inner.kind == "gather":
+            raise FamilyError(f"family {text!r}: gather of gather")
+        return Family(text, "gather", budget=_int(parts[1], "BUDGET", text), inner=inner,
+                      counts=inner.counts)
+    raise FamilyError(f"unknown family {text!r}: expected roots:M:K[:RINGS], grid:N:K, "
+                      "random:K:SEED:COUNT, perturb:FILE:EPS:COUNT or gather:BUDGET:FAMILY")
+
+
+def family_size(family: Family) -> int:
+    """The number of items :func:`family_items` yields (exact; for random and perturb the
+    number of draws, of which equal sets count once in a sweep)."""
+    if family.kind == "roots":
+        perms = dihedral_permutations(family.m, len(family.radii))
+        return sum(burnside_count(perms, k) for k in family.counts)
+    if family.kind == "grid":
+        perms = square_permutations(family.m)
+        return sum(burnside_count(perms, k) for k in family.counts)
+    if family.kind in ("random", "perturb"):
+        return family.count
+    return family_size(family.inner)
+
+
+def family_items(family: Family) -> Iterator[SweepItem]:
+    """Every item of the family, in a fixed order (the same on every run)."""
+    if family.kind == "roots":
+        yield from _roots(family)
+    elif family.kind == "grid":
+        yield from _grid(family)
+    elif family.kind == "random":
+        yield from _random(family)
+    elif family.kind == "perturb":
+        yield from _perturb(family)
+    else:
+        yield from family_items(family.inner)
+
+
+def _text(q: Fraction) -> str:
+    return str(q.numerator) if q.denominator == 1 else f"{q.numerator}/{q.denominator}"
+
+
+def _roots_item(family: Family, cells: list[tuple[int, int]]) -> SweepItem:
+    """``cells``: (ring, vertex) pairs; turned so that the first robot is at turn 0."""
+    m = family.m
+    j0 = cells[0][1]
+    points, den = [], 1
+    for ring, j in sorted(cells, key=lambda c: ((c[1] - j0) % m, c[0])):
+        turn = Fraction((j - j0) % m, m)
+        r = family.radii[ring]
+        den = lcm(den, turn.denominator, r.denominator)
+        points.append(("polar", _text(r), _text(turn)))
+    return SweepItem("", len(cells), den, m, tuple(points))
+
+
+def _roots(family: Family) -> Iterator[SweepItem]:
+    m, rings = family.m, len(family.radii)
+    radii = ",".join(_text(r) for r in family.radii)
+    for k in family.counts:
+        if rings == 1:
+            for gaps in gap_bracelets(m, k):
+                cells = [(0, j) for j in gaps_to_positions(gaps)]
+                item = _roots_item(family, cells)
+                yield _keyed(item, f"roots:{m}:{radii}:" + ",".join(map(str, gaps)))
+        else:
+            for beads in bracelets(m, k, 1 << rings):
+                cells = [(r, j) for j, b in enumerate(beads) for r in range(rings) if b >> r & 1]
+                item = _roots_item(family, cells)
+                yield _keyed(item, f"roots:{m}:{radii}:" + ".".join(map(str, beads)))
+
+
+def _keyed(item: SweepItem, key: str) -> SweepItem:
+    return SweepItem(key, item.n, item.denominator, item.size, item.points)
+
+
+def _grid(family: Family) -> Iterator[SweepItem]:
+    n = family.m
+    perms = square_permutations(n)
+    for k in family.counts:
+        for cells in orderly_subsets(n * n, k, perms):
+            points = tuple(("xy", str(c // n), str(c % n)) for c in cells)
+            yield SweepItem(f"grid:{n}:" + ",".join(map(str, cells)), k, 1, n, points)
+
+
+def _point_set_item(prefix: str, coords: list[tuple[Fraction, Fraction]]) -> SweepItem:
+    coords = sorted(set(coords))
+    den = 1
+    for x, y in coords:
+        den = lcm(den, x.denominator, y.denominator)
+    points = tuple(("xy", _text(x), _text(y)) for x, y in coords)
+    key = prefix + ";".join(f"{x} {y}" for _, x, y in points)
+    return SweepItem(key, len(points), den, 0, points)
+
+
+def _random(family: Family) -> Iterator[SweepItem]:
+    for i in range(family.count):
+        k = family.counts[i % len(family.counts)]
+        rng = random.Random(f"{family.seed}:{i}")
+        coords: set = set()
+        while len(coords) < k:
+            coords.add((Fraction(rng.randint(-8, 8), rng.randint(1, 4)),
+                        Fraction(rng.randint(-8, 8), rng.randint(1, 4))))
+        yield _point_set_item("random:", list(coords))
+
+
+def _perturb(family: Family) -> Iterator[SweepItem]:
+    eps = family.eps
+    base = family.base_points
+    for i in range(family.count):
+        rng = random.Random(f"perturb:{eps}:{i}")
+        while True:
+            def move(text: str) -> Fraction:
+                return Fraction(text) + eps * Fraction(rng.randint(-16, 16), 16)
+            if base and base[0][0] == "polar":
+                pts = []
+                for _, r, turn in base:
+                    try:
+                        r_new = _text(move(r))
+                    except (ValueError, ZeroDivisionError):
+                        r_new = r                    # an irrational radius stays as written
+                    pts.append(("polar", r_new, _text(move(turn) % 1)))
+                if len(set(pts)) == len(pts) and all(not p[1].startswith("-") for p in pts):
+                    pts.sort(key=lambda p: (Fraction(p[2]), p[1]))
+                    den = 1
+                    for _, r, t in pts:
+                        den = lcm(den, Fraction(t).denominator)
+                    key = "perturb:" + ";".join(f"{r}@{t}" for _, r, t in pts)
+                    yield SweepItem(key, len(pts), den, 0, tuple(pts))
+                    break
+            else:
+                coords = [(move(x), move(y)) for _, x, y in base]
+                if len(set(coords)) == len(coords):
+                    yield _point_set_item("perturb:", coords)
+                    break
+
