@@ -1,0 +1,111 @@
+"""A sweep's results file: JSON lines, one record per configuration, keyed by its canonical
+form (``docs/sweeps.md``).
+
+The first line is the header ``{"sweep": {"format": 1, "family": ..., "what": ...}}``;
+every other line is a record ``{"key", "n", "denominator", "size", "status", "failed",
+"applicable", ...}`` written with sorted keys and no timing, so two runs over the same
+family write the same set of lines.  Records carry their points only when they are
+needed later (a statement failed, or the analysis raised): a counterexample's case file
+and a failure's input are rebuilt from the file alone.
+
+A sweep killed while writing leaves at most one partial last line; :func:`open_for_append`
+cuts it, so a resumed sweep starts from whole records and never counts one twice.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+from typing import Iterator
+
+__all__ = ["FORMAT", "ResultsError", "header", "open_for_append", "read_records",
+           "read_header", "record_line"]
+
+FORMAT = 1
+
+
+class ResultsError(ValueError):
+    """A results file that cannot be used as asked (exit 2)."""
+
+
+def header(family: str, what: str) -> dict:
+    return {"sweep": {"format": FORMAT, "family": family, "what": what}}
+
+
+def record_line(record: dict) -> str:
+    return json.dumps(record, sort_keys=True, separators=(",", ":")) + "\n"
+
+
+def _cut_partial_tail(path: Path) -> None:
+    """Drop a last line without its newline (a write the sweep was killed in)."""
+    size = path.stat().st_size
+    if size == 0:
+        return
+    with open(path, "rb+") as f:
+        f.seek(size - 1)
+        if f.read(1) == b"\n":
+            return
+        block = 1 << 16
+        pos = size
+        while pos > 0:
+            start = max(0, pos - block)
+            f.seek(start)
+            chunk = f.read(pos - start)
+            nl = chunk.rfind(b"\n")
+            if nl >= 0:
+                f.truncate(start + nl + 1)
+                return
+            pos = start
+        f.truncate(0)
+
+
+def read_header(path) -> dict | None:
+    with open(path, encoding="utf-8") as f:
+        first = f.readline()
+    if not first.endswith("\n"):
+        return None
+    try:
+        data = json.loads(first)
+    except json.JSONDecodeError:
+        return None
+    return data.get("sweep") if isinstance(data, dict) else None
+
+
+def read_records(path) -> Iterator[dict]:
+    """Every whole record of the file, in file order (a partial last line is skipped)."""
+    with open(path, encoding="utf-8") as f:
+        f.readline()
+        for line in f:
+            if not line.endswith("\n"):
+                break
+            yield json.loads(line)
+
+
+def open_for_append(path, family: str, what: str, resume: bool):
+    """``(handle, done_keys)``: a new file with its header, or, with ``resume``, the
+    existing file (partial last line cut) and the keys it already holds.  Raises
+    :class:`ResultsError` when the file exists without ``resume``, or belongs to another
+    family or analysis."""
+    path = Path(path)
+    done: set = set()
+    if path.exists() and path.stat().st_size > 0:
+        if not resume:
+            raise ResultsError(f"{path}: results file exists; use --resume to continue it "
+                               "or choose another --out")
+        head = read_header(path)
+        if head is None or head.get("format") != FORMAT:
+            raise ResultsError(f"{path}: not a sweep results file (format {FORMAT})")
+        if head.get("family") != family or head.get("what") != what:
+            raise ResultsError(f"{path}: holds a sweep of {head.get('family')} --what "
+                               f"{head.get('what')}, not {family} --what {what}")
+        _cut_partial_tail(path)
+        done = {r["key"] for r in read_records(path)}
+        handle = open(path, "a", encoding="utf-8")
+    else:
+        if path.parent and not path.parent.exists():
+            os.makedirs(path.parent, exist_ok=True)
+        handle = open(path, "w", encoding="utf-8")
+        handle.write(json.dumps(header(family, what), sort_keys=True) + "\n")
+        handle.flush()
+    return handle, done
