@@ -197,9 +197,9 @@ def _roots(family: Family) -> Iterator[SweepItem]:
     for k in family.counts:
         if rings == 1:
             for gaps in gap_bracelets(m, k):
-                cells = [(0, j) for j in gaps_to_positions(gaps)]
-                item = _roots_item(family, cells)
-                yield _keyed(item, f"roots:{m}:{radii}:" + ",".join(map(str, gaps)))
+                positions = gaps_to_positions(gaps)     # unique per class, like the gaps
+                item = _roots_item(family, [(0, j) for j in positions])
+                yield _keyed(item, f"roots:{m}:{radii}:" + ",".join(map(str, positions)))
         else:
             for beads in bracelets(m, k, 1 << rings):
                 cells = [(r, j) for j, b in enumerate(beads) for r in range(rings) if b >> r & 1]
