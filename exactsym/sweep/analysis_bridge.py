@@ -188,7 +188,7 @@ def _audit_hypotheses(n: int, res, result) -> set:
 
 # ---------------------------------------------------------------- gathering (hook)
 def require_gathering():
-    """The gathering simulator module, or :class:`GatheringUnavailable`.
+    """The gathering simulator's entry point, or :class:`GatheringUnavailable`.
 
     Interface the sweep needs from it (to be wired by the lead):
     ``exactsym.gathering.sweep_run(config, budget: int) -> dict`` with keys
@@ -196,20 +196,20 @@ def require_gathering():
     adversary steps), ``failed`` (labels of the statements or invariants found false
     during the run) and ``steps`` (int)."""
     try:
-        from .. import gathering
+        from ..gathering import sweep_run
     except ModuleNotFoundError as err:
-        if err.name not in ("exactsym.gathering",):
+        if err.name != "exactsym.gathering":
             raise
         raise GatheringUnavailable("gathering simulator not available: exactsym.gathering "
                                    "cannot be imported in this tree") from None
-    if not hasattr(gathering, "sweep_run"):
+    except ImportError:
         raise GatheringUnavailable("gathering simulator not available: exactsym.gathering "
-                                   "has no sweep_run(config, budget)")
-    return gathering
+                                   "has no sweep_run(config, budget)") from None
+    return sweep_run
 
 
 def _gather(config, budget: int) -> dict:
-    run = require_gathering().sweep_run(config, budget)
+    run = require_gathering()(config, budget)
     failed = set(run.get("failed", ()))
     if not run.get("gathered", False):
         failed.add("gathering-within-budget")
