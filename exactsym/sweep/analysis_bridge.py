@@ -35,7 +35,7 @@ from __future__ import annotations
 
 from .casefile import case_text
 
-__all__ = ["analyse", "discrepancy_text", "expect_block", "check_case_file", "file_points",
+__all__ = ["analyse", "warm_up", "discrepancy_text", "expect_block", "check_case_file", "file_points",
            "statement_labels", "require_gathering", "GatheringUnavailable", "WHATS",
            "BridgeInputError"]
 
@@ -91,6 +91,15 @@ def _q(x) -> str:
 
 
 # ---------------------------------------------------------------- the analyses
+def warm_up(what: str) -> None:
+    """Import what ``analyse(what, ...)`` needs (a worker does it once, before the clock
+    of its first batch: the imports take about a second)."""
+    from .. import audit, symmetry  # noqa: F401
+    from ..paper import family  # noqa: F401
+    if what == "gather":
+        require_gathering()
+
+
 def statement_labels(what: str) -> tuple:
     """Every label ``analyse(what, ...)`` can report as failed, in the paper's order."""
     if what in ("audit", "paper"):

@@ -27,6 +27,7 @@ from itertools import islice
 from typing import Iterator, TextIO
 
 from .families import Family, SweepItem, family_items, family_size
+from .analysis_bridge import warm_up
 from .job import analyse_batch, error_record
 from .results import open_for_append, record_line
 
@@ -221,6 +222,7 @@ def _distributed(todo, what, budget, handle, done, total, options, progress) -> 
     try:
         if cluster is not None:
             client.wait_for_workers(options.workers)
+        client.run(warm_up, what)          # every worker imports the analysis once, now
         workers = max(1, len(client.scheduler_info(n_workers=-1).get("workers", {})))
         link = getattr(client, "dashboard_link", None) if has_dashboard else None
         if options.progress is not None:
