@@ -33,6 +33,8 @@ that fails is applicable.  Truth has no statements (``applicable`` is None).
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 from .casefile import case_text
 
 __all__ = ["analyse", "warm_up", "discrepancy_text", "expect_block", "check_case_file", "file_points",
@@ -79,8 +81,8 @@ def file_points(path: str) -> tuple:
     except InputError as err:
         raise BridgeInputError(str(err)) from None
     if config.polar is not None and config.specs:
-        return tuple(("polar", s.texts[0] if s.texts else "1",
-                      f"{s.turn.numerator}/{s.turn.denominator}") for s in config.specs)
+        return tuple(("polar", s.texts[0] if s.texts else "1", str(Fraction(s.turn)))
+                     for s in config.specs)
     if not isinstance(config.system, RationalSystem):
         raise BridgeInputError(f"{path}: perturb needs rational Cartesian or polar points")
     return tuple(("xy", _q(x), _q(y)) for x, y in config.points)

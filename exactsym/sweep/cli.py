@@ -100,13 +100,17 @@ def _run(args) -> int:
     if args.json:
         data = summary_json(summary, cases)
         data.update(complete=sweep.complete, new=sweep.new, skipped=sweep.skipped,
-                    seconds=round(sweep.seconds, 3), evidence=str(evidence_path))
+                    seconds=round(sweep.seconds, 3), workers=sweep.workers,
+                    utilisation=None if sweep.utilisation is None else
+                    round(sweep.utilisation, 3), evidence=str(evidence_path))
         print(json.dumps(data, indent=1))
     else:
         print(summary_table(summary, cases))
         print(f"this run: {sweep.new:,} new, {sweep.skipped:,} already in {args.out}, "
               f"{sweep.seconds:.1f} s on "
               f"{'this process' if args.serial else f'{sweep.workers} worker(s)'}"
+              + ("" if sweep.utilisation is None else
+                 f" (workers analysing {sweep.utilisation:.0%} of the time)")
               + ("" if sweep.complete else "; stopped early: continue with --resume"))
         print(f"evidence for the ledger: {evidence_path}")
     failing = [e.label for e in summary.labels if e.failures]

@@ -31,7 +31,10 @@ from .analysis_bridge import warm_up
 from .job import analyse_batch, error_record
 from .results import open_for_append, record_line
 
-__all__ = ["SweepOptions", "SweepRun", "run_sweep", "timed_batch"]
+__all__ = ["SweepOptions", "SweepRun", "run_sweep", "timed_batch", "DEFAULT_GATHER_BUDGET"]
+
+#: Adversary steps per gathering run when the family is not a ``gather:BUDGET:...`` one.
+DEFAULT_GATHER_BUDGET = 1000
 
 
 @dataclass(frozen=True)
@@ -49,7 +52,9 @@ class SweepOptions:
 class SweepRun:
     """What one run did: ``new`` records written, ``skipped`` (already in the file),
     ``errors`` and ``failing`` (records with a failed statement) among the new ones,
-    ``complete`` (False when stopped by ``stop_after``), ``dashboard`` link if any."""
+    ``complete`` (False when stopped by ``stop_after``), ``dashboard`` link if any;
+    ``seconds`` from the first batch (a LocalCluster's start excluded), ``busy`` the
+    workers' analysing time summed."""
     new: int
     skipped: int
     errors: int
@@ -59,6 +64,15 @@ class SweepRun:
     workers: int
     batches: int
     dashboard: str | None = None
+    busy: float = 0.0                    # seconds the workers spent analysing
+
+    @property
+    def utilisation(self) -> float | None:
+        """Share of the workers' time spent analysing (1 - overhead), from the first
+        batch on; None for a serial run."""
+        if not self.workers or self.seconds <= 0:
+            return None
+        return self.busy / (self.seconds * self.workers)
 
 
 def timed_batch(items: list, what: str, budget: int = 0) -> tuple[list, float]:
@@ -154,7 +168,7 @@ def run_sweep(family: Family, what: str, out, resume: bool = False,
     total = family_size(family)
     progress = _Progress(options.progress, total, len(done), f"sweep {family.text}")
     todo = _todo(family, done)
-    budget = family.budget
+    budget = family.budget if family.kind == "gather" else DEFAULT_GATHER_BUDGET
     try:
         if options.serial:
             return _serial(todo, what, budget, handle, done, total, options, progress)
@@ -229,6 +243,8 @@ def _distributed(todo, what, budget, handle, done, total, options, progress) -> 
             options.progress.write(f"sweep: {workers} worker(s); dashboard: "
                                    f"{link or 'not available (needs bokeh)'}\n")
         progress.start = progress.last = time.monotonic()   # rate without the cluster's start
+        start = time.perf_counter()
+        busy = 0.0
         writer = _Writer(handle, options, progress)
         sizer = _Sizer(options, workers, total - len(done))
         pending: dict = {}
@@ -257,6 +273,7 @@ def _distributed(todo, what, budget, handle, done, total, options, progress) -> 
                            for item in batch]
                 seconds = 0.0
             sizer.observe(len(batch), seconds)
+            busy += seconds
             writer.write(records)
             batches += 1
             if writer.stop():
@@ -271,7 +288,7 @@ def _distributed(todo, what, budget, handle, done, total, options, progress) -> 
         complete = not pending and exhausted or (not pending and next(todo, None) is None)
         progress.show(writer.new, writer.failing, writer.errors, final=True)
         return SweepRun(writer.new, len(done), writer.errors, writer.failing,
-                        time.perf_counter() - start, complete, workers, batches, link)
+                        time.perf_counter() - start, complete, workers, batches, link, busy)
     finally:
         client.close()
         if cluster is not None:

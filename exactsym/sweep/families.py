@@ -11,8 +11,10 @@ A family is written as text on the command line (``docs/sweeps.md``):
 * ``random:K:SEED:COUNT`` -- COUNT sets of K rational points (coordinates p/q, |p| <= 8,
   1 <= q <= 4), item i drawn from its own generator seeded with (SEED, i);
 * ``perturb:FILE:EPS:COUNT`` -- COUNT exact perturbations of FILE's points, each
-  coordinate (polar files: each turn, and each radius written as a rational) moved by a
-  multiple of EPS/16 in [-EPS, EPS];
+  coordinate moved by a multiple of EPS/16 in [-EPS, EPS]; in a polar file each radius
+  written as a rational moves and the turns stay (a turn moved by a rational would put the
+  points in a cyclotomic field of large degree -- Q(zeta_800) for EPS = 1/50 -- where one
+  configuration takes minutes);
 * ``gather:BUDGET:FAMILY`` -- the configurations of FAMILY as starting configurations of
   the gathering simulator, BUDGET adversary steps per run.
 
@@ -256,7 +258,7 @@ def _perturb(family: Family) -> Iterator[SweepItem]:
                         r_new = _text(move(r))
                     except (ValueError, ZeroDivisionError):
                         r_new = r                    # an irrational radius stays as written
-                    pts.append(("polar", r_new, _text(move(turn) % 1)))
+                    pts.append(("polar", r_new, turn))
                 if len(set(pts)) == len(pts) and all(not p[1].startswith("-") for p in pts):
                     pts.sort(key=lambda p: (Fraction(p[2]), p[1]))
                     den = 1
