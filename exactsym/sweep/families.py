@@ -243,6 +243,13 @@ def _random(family: Family) -> Iterator[SweepItem]:
         yield _point_set_item("random:", list(coords))
 
 
+def _denominator(text: str) -> int:
+    try:
+        return Fraction(text).denominator
+    except (ValueError, ZeroDivisionError):
+        return 1                                    # an irrational radius as written
+
+
 def _perturb(family: Family) -> Iterator[SweepItem]:
     eps = family.eps
     base = family.base_points
@@ -263,7 +270,7 @@ def _perturb(family: Family) -> Iterator[SweepItem]:
                     pts.sort(key=lambda p: (Fraction(p[2]), p[1]))
                     den = 1
                     for _, r, t in pts:
-                        den = lcm(den, Fraction(t).denominator)
+                        den = lcm(den, Fraction(t).denominator, _denominator(r))
                     key = "perturb:" + ";".join(f"{r}@{t}" for _, r, t in pts)
                     yield SweepItem(key, len(pts), den, 0, tuple(pts))
                     break
