@@ -13,6 +13,7 @@ import time
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from exactsym.sweep import analysis_bridge as bridge
 from exactsym.sweep import job
@@ -224,3 +225,25 @@ def test_gather_runs_through_the_simulator_interface(tmp_path, monkeypatch):
     summary = summarise(out)
     within = next(e for e in summary.labels if e.label == "gathering-within-budget")
     assert within.failures == 3 and within.smallest["n"] == 2       # the 2-robot classes
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.integers(0, 60), max_size=80))
+def test_index_set_is_a_set_held_as_intervals(indices):
+    from exactsym.sweep.results import IndexSet
+    s, plain = IndexSet(), set()
+    for i in indices:
+        assert s.add(i) == (i not in plain)
+        plain.add(i)
+    assert len(s) == len(plain)
+    assert all((i in s) == (i in plain) for i in range(-1, 62))
+    intervals = s.intervals()
+    assert all(a < b for a, b in intervals)
+    assert all(b1 < a2 for (_, b1), (a2, _) in zip(intervals, intervals[1:]))   # merged
+
+
+def test_resume_refuses_another_family(serial_run, tmp_path, capsys):
+    out = tmp_path / "other.jsonl"
+    out.write_text(Path(serial_run).read_text())
+    assert main(["roots:12:<=4", "--serial", "--resume", "--out", str(out)]) == 2
+    assert "holds a sweep of roots:12:<=5" in capsys.readouterr().err

@@ -11,7 +11,7 @@ batch is sized to take about ``batch_seconds`` (1 s: Dask's cost per task, a few
 milliseconds, is then well under 1 %), but never more than a quarter of a worker's share
 of what remains, so small sweeps still spread over every worker.  At most two batches
 per worker are in flight, so a family of any size streams in constant memory (besides
-the set of keys already done).
+the few gaps in the indices already done: :class:`.results.IndexSet`).
 
 A batch whose worker dies is recorded configuration by configuration as errors (with
 their input); the sweep goes on.
@@ -22,14 +22,14 @@ from __future__ import annotations
 import logging
 import sys
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from itertools import islice
 from typing import Iterator, TextIO
 
-from .families import Family, SweepItem, family_items, family_size
+from .families import ENUMERATION, Family, SweepItem, family_items, family_size
 from .analysis_bridge import warm_up
 from .job import analyse_batch, error_record
-from .results import open_for_append, record_line
+from .results import IndexSet, open_for_append, record_line
 
 __all__ = ["SweepOptions", "SweepRun", "run_sweep", "timed_batch", "DEFAULT_GATHER_BUDGET"]
 
@@ -122,17 +122,24 @@ def _duration(seconds: float) -> str:
     return f"{seconds // 3600}h{seconds // 60 % 60:02d}m"
 
 
-def _todo(family: Family, done: set) -> Iterator[SweepItem]:
-    """The family's items not yet in the file, each key once (random draws may repeat)."""
+def _todo(family: Family, done: IndexSet) -> Iterator[SweepItem]:
+    """The family's items not yet in the file, numbered by their enumeration index; a
+    random draw equal to an earlier one is skipped (its key is kept for this run only)."""
     repeats = family.kind in ("random", "perturb") or \
         (family.inner is not None and family.inner.kind in ("random", "perturb"))
-    seen = set(done)
-    for item in family_items(family):
-        if item.key in seen:
-            continue
+    seen: set = set()
+    intervals = done.intervals()
+    k = 0
+    for i, item in enumerate(family_items(family)):
         if repeats:
+            if item.key in seen:
+                continue
             seen.add(item.key)
-        yield item
+        while k < len(intervals) and intervals[k][1] <= i:
+            k += 1
+        if k < len(intervals) and intervals[k][0] <= i:
+            continue                          # already in the file
+        yield replace(item, index=i)
 
 
 class _Sizer:
@@ -164,7 +171,7 @@ class _Sizer:
 def run_sweep(family: Family, what: str, out, resume: bool = False,
               options: SweepOptions = SweepOptions()) -> SweepRun:
     """Sweep ``family`` with the analysis ``what`` into the results file ``out``."""
-    handle, done = open_for_append(out, family.text, what, resume)
+    handle, done = open_for_append(out, family.text, what, resume, ENUMERATION)
     total = family_size(family)
     progress = _Progress(options.progress, total, len(done), f"sweep {family.text}")
     todo = _todo(family, done)

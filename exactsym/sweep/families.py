@@ -35,7 +35,11 @@ from .canonical import (bracelets, burnside_count, dihedral_permutations, gap_br
                         gaps_to_positions, orderly_subsets, square_permutations)
 
 __all__ = ["Family", "SweepItem", "FamilyError", "parse_family", "family_size",
-           "family_items", "rank"]
+           "family_items", "rank", "ENUMERATION"]
+
+#: Version of the enumerators' order: a results file records it, and ``--resume`` refuses a
+#: file of another version (its indices would name other configurations).
+ENUMERATION = 1
 
 
 class FamilyError(ValueError):
@@ -52,6 +56,7 @@ class SweepItem:
     denominator: int
     size: int
     points: tuple
+    index: int = -1               # position in the family's enumeration (set by the engine)
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,8 @@ __all__ = ["analyse_batch", "analyse_item", "error_record"]
 
 
 def _base(item: SweepItem) -> dict:
-    return {"key": item.key, "n": item.n, "denominator": item.denominator, "size": item.size}
+    return {"index": item.index, "key": item.key, "n": item.n, "denominator": item.denominator,
+            "size": item.size}
 
 
 def error_record(item: SweepItem, message: str) -> dict:

@@ -1,10 +1,13 @@
 """A sweep's results file: JSON lines, one record per configuration, keyed by its canonical
 form (``docs/sweeps.md``).
 
-The first line is the header ``{"sweep": {"format": 1, "family": ..., "what": ...}}``;
-every other line is a record ``{"key", "n", "denominator", "size", "status", "failed",
-"applicable", ...}`` written with sorted keys and no timing, so two runs over the same
-family write the same set of lines.  Records carry their points only when they are
+The first line is the header ``{"sweep": {"format": 1, "family": ..., "what": ...,
+"enumeration": ...}}``; every other line is a record ``{"index", "key", "n",
+"denominator", "size", "status", "failed", "applicable", ...}`` written with sorted keys
+and no timing, so two runs over the same family write the same set of lines.  ``index``
+is the configuration's position in the family's enumeration (deterministic for a given
+``enumeration`` version): what ``--resume`` skips by, in memory proportional to the gaps
+(:class:`IndexSet`), not to the sweep.  Records carry their points only when they are
 needed later (a statement failed, or the analysis raised): a counterexample's case file
 and a failure's input are rebuilt from the file alone.
 
@@ -16,11 +19,12 @@ from __future__ import annotations
 
 import json
 import os
+from bisect import bisect_right
 from pathlib import Path
 from typing import Iterator
 
-__all__ = ["FORMAT", "ResultsError", "header", "open_for_append", "read_records",
-           "read_header", "record_line"]
+__all__ = ["FORMAT", "ResultsError", "IndexSet", "header", "open_for_append",
+           "read_records", "read_header", "record_line"]
 
 FORMAT = 1
 
@@ -29,8 +33,50 @@ class ResultsError(ValueError):
     """A results file that cannot be used as asked (exit 2)."""
 
 
-def header(family: str, what: str) -> dict:
-    return {"sweep": {"format": FORMAT, "family": family, "what": what}}
+class IndexSet:
+    """A set of enumeration indices held as disjoint sorted intervals [start, end): a
+    sweep's records arrive nearly in order (a few batches in flight), so the set of done
+    configurations of a sweep of any size takes memory for its few gaps only."""
+
+    def __init__(self):
+        self.starts: list[int] = []
+        self.ends: list[int] = []
+        self.count = 0
+
+    def __len__(self) -> int:
+        return self.count
+
+    def __contains__(self, i: int) -> bool:
+        k = bisect_right(self.starts, i) - 1
+        return k >= 0 and i < self.ends[k]
+
+    def add(self, i: int) -> bool:
+        """Add ``i``; False when it was already there."""
+        k = bisect_right(self.starts, i) - 1
+        if k >= 0 and i < self.ends[k]:
+            return False
+        self.count += 1
+        joins_left = k >= 0 and self.ends[k] == i
+        joins_right = k + 1 < len(self.starts) and self.starts[k + 1] == i + 1
+        if joins_left and joins_right:
+            self.ends[k] = self.ends[k + 1]
+            del self.starts[k + 1], self.ends[k + 1]
+        elif joins_left:
+            self.ends[k] = i + 1
+        elif joins_right:
+            self.starts[k + 1] = i
+        else:
+            self.starts.insert(k + 1, i)
+            self.ends.insert(k + 1, i + 1)
+        return True
+
+    def intervals(self) -> list[tuple[int, int]]:
+        return list(zip(self.starts, self.ends))
+
+
+def header(family: str, what: str, enumeration: int) -> dict:
+    return {"sweep": {"format": FORMAT, "family": family, "what": what,
+                      "enumeration": enumeration}}
 
 
 def record_line(record: dict) -> str:
@@ -82,13 +128,14 @@ def read_records(path) -> Iterator[dict]:
             yield json.loads(line)
 
 
-def open_for_append(path, family: str, what: str, resume: bool):
-    """``(handle, done_keys)``: a new file with its header, or, with ``resume``, the
-    existing file (partial last line cut) and the keys it already holds.  Raises
-    :class:`ResultsError` when the file exists without ``resume``, or belongs to another
-    family or analysis."""
+def open_for_append(path, family: str, what: str, resume: bool, enumeration: int):
+    """``(handle, done)``: a new file with its header, or, with ``resume``, the existing
+    file (partial last line cut) and the :class:`IndexSet` of the enumeration indices it
+    already holds.  Raises :class:`ResultsError` when the file exists without ``resume``,
+    or belongs to another family, analysis or version of the enumerators
+    (``enumeration``: the indices would name other configurations)."""
     path = Path(path)
-    done: set = set()
+    done = IndexSet()
     if path.exists() and path.stat().st_size > 0:
         if not resume:
             raise ResultsError(f"{path}: results file exists; use --resume to continue it "
@@ -99,13 +146,18 @@ def open_for_append(path, family: str, what: str, resume: bool):
         if head.get("family") != family or head.get("what") != what:
             raise ResultsError(f"{path}: holds a sweep of {head.get('family')} --what "
                                f"{head.get('what')}, not {family} --what {what}")
+        if head.get("enumeration") != enumeration:
+            raise ResultsError(f"{path}: written by another version of the enumerators "
+                               f"({head.get('enumeration')}, now {enumeration}); start a "
+                               "new results file")
         _cut_partial_tail(path)
-        done = {r["key"] for r in read_records(path)}
+        for record in read_records(path):
+            done.add(record["index"])
         handle = open(path, "a", encoding="utf-8")
     else:
         if path.parent and not path.parent.exists():
             os.makedirs(path.parent, exist_ok=True)
         handle = open(path, "w", encoding="utf-8")
-        handle.write(json.dumps(header(family, what), sort_keys=True) + "\n")
+        handle.write(json.dumps(header(family, what, enumeration), sort_keys=True) + "\n")
         handle.flush()
     return handle, done

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from . import analysis_bridge as bridge
 from .casefile import case_text
-from .results import read_header, read_records
+from .results import IndexSet, read_header, read_records
 
 __all__ = ["Summary", "LabelSummary", "summarise", "write_cases", "ledger_evidence",
            "summary_json", "summary_table", "EVIDENCE_FORMAT"]
@@ -49,12 +49,13 @@ def _rank(record: dict) -> tuple:
 
 
 def summarise(path) -> Summary:
-    """Summarise the results file at ``path`` (each key counted once)."""
+    """Summarise the results file at ``path`` (each configuration counted once: records
+    are told apart by their enumeration index)."""
     head = read_header(path)
     if head is None:
         raise ValueError(f"{path}: not a sweep results file")
     what = head["what"]
-    seen: set = set()
+    seen = IndexSet()
     configurations = errors = 0
     error_examples: list = []
     applicable: dict = {}
@@ -64,9 +65,8 @@ def summarise(path) -> Summary:
     tracks = what in ("audit", "paper")
     for record in read_records(path):
         key = record["key"]
-        if key in seen:
+        if not seen.add(record["index"]):
             continue
-        seen.add(key)
         if record["status"] != "ok":
             errors += 1
             if len(error_examples) < 5:
