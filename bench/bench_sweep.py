@@ -26,7 +26,7 @@ from pathlib import Path
 
 from exactsym.sweep.canonical import burnside_count, dihedral_permutations, gap_bracelets
 from exactsym.sweep.engine import SweepOptions, run_sweep
-from exactsym.sweep.families import SweepItem, family_items, family_size, parse_family
+from exactsym.sweep.families import SweepItem, family_items, parse_family
 from exactsym.sweep.job import analyse_batch
 
 FAMILIES = ["roots:12:<=6", "grid:4:<=4", "random:3..6:1:150"]

@@ -20,14 +20,13 @@ their input); the sweep goes on.
 from __future__ import annotations
 
 import logging
-import sys
 import time
 from dataclasses import dataclass, replace
 from itertools import islice
 from typing import Iterator, TextIO
 
-from .families import ENUMERATION, Family, SweepItem, family_items, family_size
 from .analysis_bridge import warm_up
+from .families import ENUMERATION, Family, SweepItem, family_items, family_size
 from .job import analyse_batch, error_record
 from .results import IndexSet, open_for_append, record_line
 

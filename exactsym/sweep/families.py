@@ -258,30 +258,38 @@ def _denominator(text: str) -> int:
 def _perturb(family: Family) -> Iterator[SweepItem]:
     eps = family.eps
     base = family.base_points
+    polar = bool(base) and base[0][0] == "polar"
     for i in range(family.count):
         rng = random.Random(f"perturb:{eps}:{i}")
-        while True:
-            def move(text: str) -> Fraction:
-                return Fraction(text) + eps * Fraction(rng.randint(-16, 16), 16)
-            if base and base[0][0] == "polar":
-                pts = []
-                for _, r, turn in base:
-                    try:
-                        r_new = _text(move(r))
-                    except (ValueError, ZeroDivisionError):
-                        r_new = r                    # an irrational radius stays as written
-                    pts.append(("polar", r_new, turn))
-                if len(set(pts)) == len(pts) and all(not p[1].startswith("-") for p in pts):
-                    pts.sort(key=lambda p: (Fraction(p[2]), p[1]))
-                    den = 1
-                    for _, r, t in pts:
-                        den = lcm(den, Fraction(t).denominator, _denominator(r))
-                    key = "perturb:" + ";".join(f"{r}@{t}" for _, r, t in pts)
-                    yield SweepItem(key, len(pts), den, 0, tuple(pts))
-                    break
-            else:
-                coords = [(move(x), move(y)) for _, x, y in base]
-                if len(set(coords)) == len(coords):
-                    yield _point_set_item("perturb:", coords)
-                    break
+        while True:                                  # redraw until the points are distinct
+            item = _perturbed_polar(base, eps, rng) if polar else _perturbed_xy(base, eps, rng)
+            if item is not None:
+                yield item
+                break
 
+
+def _moved(text: str, eps: Fraction, rng: random.Random) -> Fraction:
+    return Fraction(text) + eps * Fraction(rng.randint(-16, 16), 16)
+
+
+def _perturbed_xy(base, eps, rng) -> SweepItem | None:
+    coords = [(_moved(x, eps, rng), _moved(y, eps, rng)) for _, x, y in base]
+    return _point_set_item("perturb:", coords) if len(set(coords)) == len(coords) else None
+
+
+def _perturbed_polar(base, eps, rng) -> SweepItem | None:
+    pts = []
+    for _, r, turn in base:
+        try:
+            r_new = _text(_moved(r, eps, rng))
+        except (ValueError, ZeroDivisionError):
+            r_new = r                                # an irrational radius stays as written
+        pts.append(("polar", r_new, turn))
+    if len(set(pts)) != len(pts) or any(p[1].startswith("-") for p in pts):
+        return None
+    pts.sort(key=lambda p: (Fraction(p[2]), p[1]))
+    den = 1
+    for _, r, t in pts:
+        den = lcm(den, Fraction(t).denominator, _denominator(r))
+    key = "perturb:" + ";".join(f"{r}@{t}" for _, r, t in pts)
+    return SweepItem(key, len(pts), den, 0, tuple(pts))
