@@ -247,3 +247,15 @@ def test_resume_refuses_another_family(serial_run, tmp_path, capsys):
     out.write_text(Path(serial_run).read_text())
     assert main(["roots:12:<=4", "--serial", "--resume", "--out", str(out)]) == 2
     assert "holds a sweep of roots:12:<=5" in capsys.readouterr().err
+
+
+def test_command_on_an_existing_scheduler(serial_run, tmp_path, capsys):
+    from distributed import LocalCluster
+    out = tmp_path / "sched.jsonl"
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
+                      dashboard_address=None) as cluster:
+        code = main([FAMILY, "--what", "audit", "--scheduler", cluster.scheduler_address,
+                     "--out", str(out), "--json"])
+    data = json.loads(capsys.readouterr().out)
+    assert code == 1 and data["workers"] == 1 and data["complete"]
+    assert _lines(out) == _lines(serial_run)
