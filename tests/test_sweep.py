@@ -259,3 +259,23 @@ def test_command_on_an_existing_scheduler(serial_run, tmp_path, capsys):
     data = json.loads(capsys.readouterr().out)
     assert code == 1 and data["workers"] == 1 and data["complete"]
     assert _lines(out) == _lines(serial_run)
+
+
+def test_a_configuration_over_the_time_limit_is_recorded_and_the_sweep_goes_on(tmp_path,
+                                                                               monkeypatch):
+    real = bridge.analyse
+
+    def slow(what, points, budget=0):
+        if len(points) == 2 and points[1][2] == "1/2":
+            time.sleep(1.5)
+        return real(what, points, budget)
+
+    monkeypatch.setattr(bridge, "analyse", slow)
+    out = tmp_path / "slow.jsonl"
+    run = run_sweep(parse_family("roots:12:<=2"), "truth", out,
+                    options=SweepOptions(serial=True, timeout=0.2))
+    records = list(read_records(out))
+    late = [r for r in records if r.get("timeout")]
+    assert run.complete and len(records) == 1 + 6
+    assert [r["key"] for r in late] == ["roots:12:1:0,6"]          # the diameter
+    assert late[0]["status"] == "error" and late[0]["points"]

@@ -18,7 +18,7 @@ import sys
 from pathlib import Path
 
 from . import analysis_bridge as bridge
-from .engine import SweepOptions, run_sweep
+from .engine import DEFAULT_TIMEOUT, SweepOptions, run_sweep
 from .families import FamilyError, parse_family
 from .results import ResultsError
 from .summary import ledger_evidence, summarise, summary_json, summary_table, write_cases
@@ -55,6 +55,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "suffix, plus .evidence.json)")
     parser.add_argument("--batch-size", type=int, metavar="N",
                         help="configurations per Dask task (default: adaptive, ~1 s each)")
+    parser.add_argument("--timeout", type=float, default=DEFAULT_TIMEOUT, metavar="SECONDS",
+                        help="record a configuration taking longer as an error "
+                             f"(default {DEFAULT_TIMEOUT:g}; 0: no limit)")
     parser.add_argument("--stop-after", type=int, metavar="N",
                         help="stop after N new results, as an interrupted sweep would")
 
@@ -90,7 +93,8 @@ def _run(args) -> int:
         raise FamilyError("a gather: family is swept with --what gather")
     options = SweepOptions(workers=args.workers or 2, scheduler=args.scheduler,
                            serial=args.serial, batch_size=args.batch_size,
-                           stop_after=args.stop_after, progress=sys.stderr)
+                           stop_after=args.stop_after, progress=sys.stderr,
+                           timeout=args.timeout if args.timeout and args.timeout > 0 else None)
     sweep = run_sweep(family, args.what, args.out, args.resume, options)
     summary = summarise(args.out)
     cases_dir, evidence_path = _paths(args)

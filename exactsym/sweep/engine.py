@@ -13,8 +13,10 @@ of what remains, so small sweeps still spread over every worker.  At most two ba
 per worker are in flight, so a family of any size streams in constant memory (besides
 the few gaps in the indices already done: :class:`.results.IndexSet`).
 
-A batch whose worker dies is recorded configuration by configuration as errors (with
-their input); the sweep goes on.
+A batch whose worker dies is sent again (up to :data:`BATCH_ATTEMPTS` times), then
+recorded configuration by configuration as errors (with their input); the sweep goes on.
+A configuration that overruns ``timeout`` is recorded as an error (:mod:`.job`) and its
+worker is restarted (the thread cannot be stopped); batches lost with it are sent again.
 """
 
 from __future__ import annotations
@@ -35,6 +37,13 @@ __all__ = ["SweepOptions", "SweepRun", "run_sweep", "timed_batch", "DEFAULT_GATH
 #: Adversary steps per gathering run when the family is not a ``gather:BUDGET:...`` one.
 DEFAULT_GATHER_BUDGET = 1000
 
+#: Times a batch is sent before its configurations are recorded as errors (a batch is
+#: lost when its worker dies or is restarted, not when a configuration raises).
+BATCH_ATTEMPTS = 3
+
+#: Seconds one configuration may take before it is recorded as an error (``--timeout``).
+DEFAULT_TIMEOUT = 600.0
+
 
 @dataclass(frozen=True)
 class SweepOptions:
@@ -44,6 +53,7 @@ class SweepOptions:
     batch_size: int | None = None        # fixed size (None: adaptive)
     batch_seconds: float = 1.0
     stop_after: int | None = None        # stop once this many new records are written
+    timeout: float | None = DEFAULT_TIMEOUT   # seconds per configuration (None: no limit)
     progress: TextIO | None = None
 
 
@@ -74,11 +84,19 @@ class SweepRun:
         return self.busy / (self.seconds * self.workers)
 
 
-def timed_batch(items: list, what: str, budget: int = 0) -> tuple[list, float]:
-    """The records of ``items`` and the seconds the analysis took (worker side)."""
+def timed_batch(items: list, what: str, budget: int = 0, timeout: float | None = None,
+                in_worker: bool = False) -> tuple[list, float, str | None]:
+    """The records of ``items``, the seconds the analysis took (worker side) and, when a
+    configuration overran ``timeout`` on a Dask worker, that worker's address (its
+    thread still runs: the engine restarts it)."""
     start = time.perf_counter()
-    records = analyse_batch(items, what, budget)
-    return records, time.perf_counter() - start
+    records = analyse_batch(items, what, budget, timeout)
+    seconds = time.perf_counter() - start
+    stuck = None
+    if in_worker and any(r.get("timeout") for r in records):
+        from distributed import get_worker
+        stuck = get_worker().address
+    return records, seconds, stuck
 
 
 class _Progress:
@@ -209,7 +227,7 @@ def _serial(todo, what, budget, handle, done, total, options, progress) -> Sweep
         batch = list(islice(todo, sizer.size()))
         if not batch:
             break
-        records, seconds = timed_batch(batch, what, budget)
+        records, seconds, _ = timed_batch(batch, what, budget, options.timeout)
         sizer.observe(len(batch), seconds)
         writer.write(records)
         batches += 1
@@ -253,31 +271,39 @@ def _distributed(todo, what, budget, handle, done, total, options, progress) -> 
         busy = 0.0
         writer = _Writer(handle, options, progress)
         sizer = _Sizer(options, workers, total - len(done))
-        pending: dict = {}
+        pending: dict = {}                 # future -> (batch, attempts so far)
         batches, exhausted = 0, False
 
-        def submit() -> bool:
+        def send(batch: list, attempts: int):
+            fut = client.submit(timed_batch, batch, what, budget, options.timeout, True,
+                                pure=False)
+            pending[fut] = (batch, attempts)
+            return fut
+
+        def submit():
             batch = list(islice(todo, sizer.size()))
-            if not batch:
-                return False
-            fut = client.submit(timed_batch, batch, what, budget, pure=False)
-            pending[fut] = batch
-            return True
+            return send(batch, 0) if batch else None
 
         queue = as_completed()
         for _ in range(2 * workers):
-            if not submit():
+            fut = submit()
+            if fut is None:
                 exhausted = True
                 break
-        queue.update(pending)
+            queue.add(fut)
         for fut in queue:
-            batch = pending.pop(fut)
+            batch, attempts = pending.pop(fut)
             try:
-                records, seconds = fut.result()
-            except Exception as err:          # a worker died: record the batch, go on
-                records = [error_record(item, f"batch failed: {type(err).__name__}: {err}")
-                           for item in batch]
-                seconds = 0.0
+                records, seconds, stuck = fut.result()
+            except Exception as err:          # the worker died or was restarted
+                if attempts + 1 < BATCH_ATTEMPTS:
+                    queue.add(send(batch, attempts + 1))
+                    continue
+                records = [error_record(item, f"batch failed {BATCH_ATTEMPTS} times: "
+                                        f"{type(err).__name__}: {err}") for item in batch]
+                seconds, stuck = 0.0, None
+            if stuck is not None:             # a configuration's thread still runs there
+                client.restart_workers([stuck], raise_for_error=False)
             sizer.observe(len(batch), seconds)
             busy += seconds
             writer.write(records)
@@ -287,10 +313,11 @@ def _distributed(todo, what, budget, handle, done, total, options, progress) -> 
                     other.cancel()
                 break
             if not exhausted:
-                if submit():
-                    queue.add(next(reversed(pending)))
-                else:
+                nxt = submit()
+                if nxt is None:
                     exhausted = True
+                else:
+                    queue.add(nxt)
         complete = not pending and exhausted or (not pending and next(todo, None) is None)
         progress.show(writer.new, writer.failing, writer.errors, final=True)
         return SweepRun(writer.new, len(done), writer.errors, writer.failing,
