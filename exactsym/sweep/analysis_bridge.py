@@ -103,12 +103,15 @@ def warm_up(what: str) -> None:
 
 
 def statement_labels(what: str) -> tuple:
-    """Every label ``analyse(what, ...)`` can report as failed, in the paper's order."""
+    """Every label ``analyse(what, ...)`` checks, in the paper's order (``paper``: not the
+    statements about orderability, which need the truth)."""
     if what in ("audit", "paper"):
         from ..audit import CLAIMS, STATEMENT_ORDER
         labels = list(STATEMENT_ORDER) + [c for c in CLAIMS if c not in STATEMENT_ORDER]
         if what == "audit":
             labels += [c for c in _AUDIT_CONCLUSIONS if c not in labels]
+        else:                         # the paper alone cannot check the truth's statements
+            labels = [c for c in labels if c not in _AUDIT_OWN]
         return tuple(labels)
     return ()
 
