@@ -158,3 +158,11 @@ def test_gap_bracelets_stream_without_materialising():
     # a family far too large to list starts at once (roots:60 with 10 robots)
     first = list(islice(gap_bracelets(60, 10), 3))
     assert len(first) == 3 and all(sum(g) == 50 for g in first)
+
+
+@pytest.mark.parametrize("text", ["roots:12:<=6", "roots:6:2..5:2", "grid:4:<=4"])
+def test_families_start_after_any_key(text):
+    family = parse_family(text)
+    items = list(family_items(family))
+    for i in range(0, len(items), max(1, len(items) // 17)):
+        assert list(family_items(family, after=items[i].key)) == items[i + 1:]

@@ -28,9 +28,10 @@ from itertools import islice
 from typing import Iterator, TextIO
 
 from .analysis_bridge import warm_up
-from .families import ENUMERATION, Family, SweepItem, family_items, family_size
+from .families import (ENUMERATION, Family, SweepItem, can_jump, family_items,
+                       family_size)
 from .job import analyse_batch, error_record
-from .results import IndexSet, open_for_append, record_line
+from .results import IndexSet, key_of, open_for_append, record_line
 
 __all__ = ["SweepOptions", "SweepRun", "run_sweep", "timed_batch", "DEFAULT_GATHER_BUDGET"]
 
@@ -139,15 +140,23 @@ def _duration(seconds: float) -> str:
     return f"{seconds // 3600}h{seconds // 60 % 60:02d}m"
 
 
-def _todo(family: Family, done: IndexSet) -> Iterator[SweepItem]:
-    """The family's items not yet in the file, numbered by their enumeration index; a
-    random draw equal to an earlier one is skipped (its key is kept for this run only)."""
-    repeats = family.kind in ("random", "perturb") or \
-        (family.inner is not None and family.inner.kind in ("random", "perturb"))
+def _todo(family: Family, done: IndexSet, prefix_key: str | None) -> Iterator[SweepItem]:
+    """The family's items not yet in the file, numbered by their enumeration index.
+
+    When the file holds the indices 0..e-1 and the family can start after a key
+    (``prefix_key``, the key of index e-1), enumeration starts there instead of
+    replaying the prefix.  A random draw equal to an earlier one is skipped (its key is
+    kept for this run only)."""
+    repeats = not can_jump(family)
     seen: set = set()
     intervals = done.intervals()
+    first = 0
+    items = family_items(family)
+    if prefix_key is not None and can_jump(family):
+        first = intervals[0][1]
+        items = family_items(family, after=prefix_key)
     k = 0
-    for i, item in enumerate(family_items(family)):
+    for i, item in enumerate(items, first):
         if repeats:
             if item.key in seen:
                 continue
@@ -191,7 +200,11 @@ def run_sweep(family: Family, what: str, out, resume: bool = False,
     handle, done = open_for_append(out, family.text, what, resume, ENUMERATION)
     total = family_size(family)
     progress = _Progress(options.progress, total, len(done), f"sweep {family.text}")
-    todo = _todo(family, done)
+    intervals = done.intervals()
+    prefix_key = None
+    if can_jump(family) and intervals and intervals[0][0] == 0:
+        prefix_key = key_of(out, intervals[0][1] - 1)
+    todo = _todo(family, done, prefix_key)
     budget = family.budget if family.kind == "gather" else DEFAULT_GATHER_BUDGET
     try:
         if options.serial:

@@ -35,7 +35,7 @@ from .canonical import (bracelets, burnside_count, dihedral_permutations, gap_br
                         gaps_to_positions, orderly_subsets, square_permutations)
 
 __all__ = ["Family", "SweepItem", "FamilyError", "parse_family", "family_size",
-           "family_items", "rank", "ENUMERATION"]
+           "family_items", "can_jump", "rank", "ENUMERATION"]
 
 #: Version of the enumerators' order: a results file records it, and ``--resume`` refuses a
 #: file of another version (its indices would name other configurations).
@@ -167,18 +167,48 @@ def family_size(family: Family) -> int:
     return family_size(family.inner)
 
 
-def family_items(family: Family) -> Iterator[SweepItem]:
-    """Every item of the family, in a fixed order (the same on every run)."""
+def family_items(family: Family, after: str | None = None) -> Iterator[SweepItem]:
+    """Every item of the family, in a fixed order (the same on every run); with ``after``
+    (the key of one of its items; roots and grid families only, see :func:`can_jump`)
+    the items that follow it, generated from its canonical form without replaying the
+    ones before."""
+    if after is not None and not can_jump(family):
+        raise ValueError(f"family {family.text!r} cannot start after a key")
     if family.kind == "roots":
-        yield from _roots(family)
+        yield from _roots(family, after)
     elif family.kind == "grid":
-        yield from _grid(family)
+        yield from _grid(family, after)
     elif family.kind == "random":
         yield from _random(family)
     elif family.kind == "perturb":
         yield from _perturb(family)
     else:
-        yield from family_items(family.inner)
+        yield from family_items(family.inner, after)
+
+
+def can_jump(family: Family) -> bool:
+    """Whether :func:`family_items` can start after a key (random draws cannot: an equal
+    earlier draw must be seen to be skipped)."""
+    return family.kind in ("roots", "grid") or (family.kind == "gather" and
+                                                can_jump(family.inner))
+
+
+def _start(family: Family, after: str | None) -> tuple[int | None, tuple | None]:
+    """(robot count, canonical form) of the item keyed ``after``, or (None, None)."""
+    if after is None:
+        return None, None
+    form = after.rsplit(":", 1)[1]
+    if family.kind == "roots" and len(family.radii) == 1:
+        positions = [int(x) for x in form.split(",")]
+        m = family.m
+        gaps = tuple(b - a - 1 for a, b in zip(positions, positions[1:])) + \
+            (m - positions[-1] - 1 + positions[0],)
+        return len(positions), gaps
+    if family.kind == "roots":
+        beads = tuple(int(x) for x in form.split("."))
+        return sum(bin(b).count("1") for b in beads), beads
+    cells = tuple(int(x) for x in form.split(","))
+    return len(cells), cells
 
 
 def _text(q: Fraction) -> str:
@@ -198,17 +228,21 @@ def _roots_item(family: Family, cells: list[tuple[int, int]]) -> SweepItem:
     return SweepItem("", len(cells), den, m, tuple(points))
 
 
-def _roots(family: Family) -> Iterator[SweepItem]:
+def _roots(family: Family, after: str | None = None) -> Iterator[SweepItem]:
     m, rings = family.m, len(family.radii)
     radii = ",".join(_text(r) for r in family.radii)
+    k0, form = _start(family, after)
     for k in family.counts:
+        if k0 is not None and k < k0:
+            continue
+        start = form if k == k0 else None
         if rings == 1:
-            for gaps in gap_bracelets(m, k):
+            for gaps in gap_bracelets(m, k, start_after=start):
                 positions = gaps_to_positions(gaps)     # unique per class, like the gaps
                 item = _roots_item(family, [(0, j) for j in positions])
                 yield _keyed(item, f"roots:{m}:{radii}:" + ",".join(map(str, positions)))
         else:
-            for beads in bracelets(m, k, 1 << rings):
+            for beads in bracelets(m, k, 1 << rings, start_after=start):
                 cells = [(r, j) for j, b in enumerate(beads) for r in range(rings) if b >> r & 1]
                 item = _roots_item(family, cells)
                 yield _keyed(item, f"roots:{m}:{radii}:" + ".".join(map(str, beads)))
@@ -218,11 +252,15 @@ def _keyed(item: SweepItem, key: str) -> SweepItem:
     return SweepItem(key, item.n, item.denominator, item.size, item.points)
 
 
-def _grid(family: Family) -> Iterator[SweepItem]:
+def _grid(family: Family, after: str | None = None) -> Iterator[SweepItem]:
     n = family.m
     perms = square_permutations(n)
+    k0, form = _start(family, after)
     for k in family.counts:
-        for cells in orderly_subsets(n * n, k, perms):
+        if k0 is not None and k < k0:
+            continue
+        start = form if k == k0 else None
+        for cells in orderly_subsets(n * n, k, perms, start_after=start):
             points = tuple(("xy", str(c // n), str(c % n)) for c in cells)
             yield SweepItem(f"grid:{n}:" + ",".join(map(str, cells)), k, 1, n, points)
 

@@ -24,7 +24,7 @@ from pathlib import Path
 from typing import Iterator
 
 __all__ = ["FORMAT", "ResultsError", "IndexSet", "header", "open_for_append",
-           "read_records", "read_header", "record_line"]
+           "read_records", "read_header", "record_line", "key_of"]
 
 FORMAT = 1
 
@@ -126,6 +126,14 @@ def read_records(path) -> Iterator[dict]:
             if not line.endswith("\n"):
                 break
             yield json.loads(line)
+
+
+def key_of(path, index: int) -> str | None:
+    """The key of the record with enumeration index ``index`` (None if absent)."""
+    for record in read_records(path):
+        if record["index"] == index:
+            return record["key"]
+    return None
 
 
 def open_for_append(path, family: str, what: str, resume: bool, enumeration: int):
