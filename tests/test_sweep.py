@@ -117,8 +117,10 @@ def test_killed_subprocess_resumes_to_the_same_records(serial_run, tmp_path):
         if out.exists() and len(out.read_text().splitlines()) > 20:
             break
         time.sleep(0.005)
+    assert proc.poll() is None                    # killed half-way, not after the end
     proc.send_signal(signal.SIGKILL)
     proc.wait()
+    assert 1 < len(out.read_text().splitlines()) < 87
     code = main([FAMILY, "--what", "audit", "--serial", "--resume", "--out", str(out),
                  "--json"])
     assert code == 1                              # some statement fails in this family
