@@ -22,6 +22,7 @@ from . import __version__, audit_cli, cases_cli, certify_cli
 from .gathering import cli as gather_cli
 from .ledger import cli as ledger_cli
 from .pictures import cli as plot_cli
+from .sweep import cli as sweep_cli
 from .analysis import Options, analyse
 from .configuration import load
 from .errors import EXIT_BUG, EXIT_FALSE, EXIT_INPUT, EXIT_OK, InputError
@@ -105,6 +106,9 @@ COMMANDS = {
                gather_cli.add_replay_arguments, gather_cli.run_replay),
     "ledger": ("the statement ledger (proofs/): grades, dependencies, docs/audit.md; --check "
                "re-runs the evidence", ledger_cli.add_arguments, ledger_cli.run),
+    "sweep": ("search a whole family of configurations for counterexamples, serially or "
+              "on a Dask cluster (exit 1 when some statement fails)",
+              sweep_cli.add_arguments, sweep_cli.run),
     "plot": ("draw a configuration (needs the 'plot' extra: matplotlib)",
              plot_cli.add_arguments, plot_cli.run),
 }
@@ -126,6 +130,9 @@ EXAMPLES = {
                "exactsym gather FILE --search --reading A3=all"],
     "replay": ["exactsym replay run.json"],
     "ledger": ["exactsym ledger --check --no-write"],
+    "sweep": ["exactsym sweep 'roots:12:<=6' --what audit --workers 2 --out r12.jsonl",
+              "exactsym sweep 'grid:4:<=4' --what paper --serial --out g4.jsonl --json",
+              "exactsym sweep 'roots:12:<=6' --what audit --out r12.jsonl --resume"],
     "plot": ["exactsym plot cases/examples/chiral-nine-gon.toml -o nine.svg --show-audit"],
 }
 
