@@ -454,10 +454,7 @@ def _trace(paper: dict) -> list[str]:
 def _near_symmetry(analysis: Analysis) -> str | None:
     """The near-symmetry hint (:mod:`exactsym.near_symmetry`), or None."""
     from .near_symmetry import near_symmetry_hint
-    try:
-        found = near_symmetry_hint(analysis.config)
-    except Exception:           # a hint must never break the report
-        return None
+    found = near_symmetry_hint(analysis.config)
     return None if found is None else found.text
 
 
