@@ -10,9 +10,8 @@ from ...exact import fmpq, normal_turn
 from ..circle_polygon import CirclePolygon, polygon_from_directions
 from ..keys import ccw_gap_key
 from .check_symmetry import CheckResult, check_symmetry, visit_order
-from .definitions import theorem1_asymmetric
+from .definitions import definition_mirrors, theorem1_asymmetric
 from .strings import check_orientation, cw_string, vertex_strings
-from .types import straight_lines
 
 
 @dataclass(frozen=True)
@@ -35,12 +34,14 @@ def elect_leader_sym(polygon: CirclePolygon, orientation: int = 1,
 
     ``degree="paper"`` uses the degree the check reports (for even n that is deg_sym/2,
     which for a line through two vertices is (n+2)/4, so the branch "degree = 1" is only
-    reached for n = 2: a finding); ``degree="lines"`` uses the number of distinct lines
-    found from the strings instead (the evident intent)."""
+    reached for n = 2: a finding); ``degree="lines"`` uses the number of lines of
+    straight symmetry instead (the evident intent), counted by the definition (exact
+    mirrors, :func:`exactsym.paper.polygon.definition_mirrors`), not from the strings,
+    which can find more lines than there are (``lemma-straight-sym``)."""
     check = check_symmetry(polygon, orientation)
     n = polygon.n
     if degree == "lines":
-        deg = fmpq(len(straight_lines(polygon)))
+        deg = fmpq(len(definition_mirrors(polygon)))
     elif degree == "paper":
         deg = check.degree
     else:
