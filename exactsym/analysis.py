@@ -25,7 +25,7 @@ from .symmetry import SymmetryGroup, symmetry_group
 #: The parts :func:`analyse` can compute, in the order it computes them.
 PARTS = ("truth", "polygons", "family", "audit")
 #: What each part needs besides the levels (always computed).
-NEEDS = {"truth": (), "polygons": (), "family": (), "audit": ("truth", "family")}
+NEEDS = {"truth": (), "polygons": (), "family": (), "audit": ("truth", "polygons", "family")}
 
 
 @dataclass(frozen=True)
@@ -83,7 +83,7 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
         audited = run_audit(config, levels, paper, {"reading": options.reading,
                                                     "degree": options.degree,
                                                     "invariance": options.invariance},
-                            group=truth) if "audit" in wanted else None
+                            group=truth, level_verdicts=verdicts) if "audit" in wanted else None
     return Analysis(config, options, levels, truth, verdicts, strings, paper, audited)
 
 

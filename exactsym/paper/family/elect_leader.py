@@ -91,11 +91,13 @@ def line_four(poly: CirclePolygon, check: P.CheckResult, degree: str = "paper"):
 @dataclass
 class ElectLeaderResult:
     """``leader``: the configuration index elected (None when none); ``moves``: robots
-    moved by Make_SymToAsym; ``branch``: see :data:`BRANCHES`."""
+    moved by Make_SymToAsym; ``branch``: see :data:`BRANCHES`; ``moved_to``: the moved
+    robot's direction from C after Make_SymToAsym (a turn, or a vector from C)."""
     leader: int | None
     branch: str
     moves: list = field(default_factory=list)
     computed: bool = True
+    moved_to: dict = field(default_factory=dict)    # robot -> its direction after the move
 
 
 def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
@@ -155,8 +157,14 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
             trace_entry(trace, alg, 5, [g1.name], "Make_SymToAsym",
                         "Make_SymToAsym is meant to make G_1 asymmetric; it is not", holds=False,
                         round=rnd)
+        moved_to = {}
+        if mover is not None:
+            label = poly.labels[moved.leader]
+            moved_to = {mover: next(d for lab, d in zip(moved.polygon.labels,
+                                                        moved.polygon.directions)
+                                    if lab == label)}
         if moved.polygon.n > MAX_QUADRATIC_N:
-            return ElectLeaderResult(None, branch, moves, False)
+            return ElectLeaderResult(None, branch, moves, False, moved_to)
         res = P.elect_leader_asym(moved.polygon, orientation, reading)
         leader = None if res.leader is None else robot_in(moved.polygon.labels[res.leader], g1)
         if res.tie:
@@ -167,7 +175,7 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
                     f"Elect_Leader_Asym(moved {g1.name}): leader robot {leader}",
                     robots=[leader] if leader is not None else None, branch=branch, round=rnd,
                     uses="Elect_Leader_Asym")
-        return ElectLeaderResult(leader, branch, moves)
+        return ElectLeaderResult(leader, branch, moves, True, moved_to)
     if not check.symmetric:
         branch = "asymmetric"
         if poly.n > MAX_QUADRATIC_N:
