@@ -85,7 +85,8 @@ def line_four(poly: CirclePolygon, check: P.CheckResult, degree: str = "paper"):
     if on not in (1, 2):
         return False, "degree one, but the line of symmetry (by the definition) passes " \
                       "through no vertex"
-    return True, f"degree one, the line of symmetry passes through {on} vertex(es)"
+    return True, ("degree one, the line of symmetry passes through "
+                  + ("a single vertex" if on == 1 else "two vertices"))
 
 
 @dataclass
