@@ -131,6 +131,19 @@ def test_line_four_by_the_definition():
     assert not line_four(equilateral, P.check_symmetry(equilateral))[0]
 
 
+def test_elect_leader_sym_line_by_the_definition():
+    """Elect_Leader_Sym's even branch: "the line of symmetry passes through a vertex" by
+    the exact mirror; the strings' spurious CW = ACW vertices are not on it."""
+    two_gon = polar(["0", "1/10"])
+    assert P.elect_leader_sym(two_gon).leader is None          # its mirror meets no vertex
+    trapezoid = polar(["1/10", "3/10", "7/10", "9/10"])        # mirror through two edges
+    assert P.check_symmetry(trapezoid).axis_vertices            # spurious CW = ACW vertices
+    assert P.elect_leader_sym(trapezoid, degree="lines").leader is None
+    kite = polar(["0", "1/3", "1/2", "2/3"])                   # mirror through 0 and 1/2
+    assert P.elect_leader_sym(kite).leader is None              # the check's degree is 3/2
+    assert [P.elect_leader_sym(kite, o, degree="lines").leader for o in (1, -1)] == [0, 0]
+
+
 def test_two_gon_g1_elects_through_g1t():
     rep = report("family/two-gon-g1-leader.toml")
     assert rep["paper"]["leader"] == 0 and rep["paper"]["elect_leader"] == "project-1t"
