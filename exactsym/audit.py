@@ -1,10 +1,13 @@
-"""The paper against the ground truth, on one configuration.
+"""The paper against the ground truth, and against its own definitions, on one configuration.
 
 :func:`audit` runs the paper's family algorithms (:mod:`exactsym.paper.family`) and the
 ground truth (:mod:`exactsym.symmetry`), and lists every statement of the paper whose
 claim is false on this configuration, in the paper's order, each as
-``{"statement": label, "says": ..., "truth": ..., "witness": ...}``:
+``{"statement": label, "says": ..., "truth": ..., "witness": ..., "kind": ...}``:
 
+* the per-level statements (:mod:`exactsym.audit_levels`: Theorem 1, ``lemma-straight-sym``,
+  the two checks, ``obs-exh-poly``, ``lemma-sym-regular``, Elect_Leader_Asym), from the
+  polygon layer's verdicts of each level;
 * statements about orderability, checked against the truth: ``lemma-sym-ord``,
   ``lem-asym-ord`` (each level), ``lem-sym-notord`` and ``lem-asym-pair-ord`` (each pair of
   levels: the union of the two levels, symmetries about C), ``lem-all-pair-asym-ord``,
@@ -12,18 +15,26 @@ claim is false on this configuration, in the paper's order, each as
 * statements the paper's own notions contradict (recorded by the family layer with
   ``holds`` False: ``obs-gcd``, ``lem-los-gij``, ``obs-merg-asym-pair``, ... and the
   algorithms' guarantees: MakeAsym's "G_t is asymmetric", an unchanged SEC,
-  ``obs-v-move``, ``lem-vl-move``, ties in Elect_Leader_Asym).  Defects of the *literal*
-  reading of a printed loop (non-termination) are documented in the trace and in
-  ``docs/interpretations.md`` but are not discrepancies of the configuration;
-* the conclusions: ``paper.orderable`` against the truth's ``orderable``; when the truth
-  is orderable the paper's leader must not depend on the observer: the procedure is
-  recomputed on exactly transformed inputs (a reflection; a rotation, scaling and, for
-  Cartesian inputs, translation), indices mapped back, and two frames electing
-  different leaders (or moving different robots) are the witness; when the truth is not
-  orderable the first robot the paper makes act must be fixed by every symmetry.
+  ``obs-v-move``, ``lem-vl-move``, ties in Elect_Leader_Asym);
+* the conclusions: ``paper.orderable`` against the truth's ``orderable`` (GatheringPattern,
+  for n >= 5 only); when the truth is orderable the paper's leader must not depend on the
+  observer: the procedure is recomputed on exactly transformed inputs (a reflection; a
+  rotation, scaling and, for Cartesian inputs, translation), indices mapped back, and two
+  frames electing different leaders (or moving different robots) are the witness
+  (:func:`_frame_difference` tells the sense of an epsilon move and the reading of
+  Elect_Leader_Asym apart); when the truth is not orderable the first robot the paper
+  makes act must be fixed by every symmetry.
 
-``agrees`` is True iff the list is empty; ``conclusions_agree`` only looks at the
-conclusions.  The audit is outside :mod:`exactsym.paper` and may use both sides.
+``kind``: ``claim``, ``algorithm``, ``conclusion``, or ``reading`` (false under the reading
+in effect; ``reading`` and ``rescued_by`` name it and the reading that rescues the paper).
+``notes`` lists, in the same shape, what is *not* a discrepancy: defects of the literal
+reading of a printed loop (``literal-reading``), failures outside a statement's hypotheses
+(``outside-hypotheses``: ``lem-los-gij``, ``theorem-los-g1n``), GatheringPattern below
+n = 5 (``out-of-scope``), frames that differ only in the sense of an epsilon move
+(``epsilon-sense``).  ``covered``: the labels evaluated on this configuration, in the
+paper's order.  ``agrees`` is True iff ``discrepancies`` is empty; ``conclusions_agree``
+only looks at the conclusions.  The audit is outside :mod:`exactsym.paper` and may use
+both sides.
 
 The statements on levels and pairs of levels are checked within the family layer's
 budgets (:class:`exactsym.paper.family.Limits`: the same selection of pairs as
@@ -34,7 +45,7 @@ was checked (``docs/interpretations.md``, "Bounds of the family layer").
 
 from __future__ import annotations
 
-from .audit_levels import LEVEL_STATEMENTS, level_findings
+from .audit_levels import level_findings
 from .configuration import Configuration, Similarity, no_cycle_collection
 from .exact import fmpq, number_text
 from .labels import ALGORITHMS, STATEMENTS

@@ -54,11 +54,11 @@ def level_findings(config, levels, verdicts) -> tuple[list, list, set]:
     ``verdicts``: per level, the polygon layer's ``"paper"`` entry (None for the robot at
     C).  A level whose definitions were not evaluated (above the polygon layer's
     ``DEFINITION_LIMIT``) is skipped, and so are levels of one or two robots: the
-    statements are about convex polygons (a 2-gon's strings also find the line through both
-    vertices, a line of symmetry only under the reading that allows lines containing every
-    vertex; ``def-straight-symmetric-conf`` excludes it).  ``covered``: the statements evaluated on at least
-    one level meeting their hypotheses.  Levels of one shape give one entry each (the
-    audit merges equal claims and counts them)."""
+    statements are about convex polygons (a 2-gon's strings also find the line through
+    both vertices, a line of symmetry only under the reading that allows lines containing
+    every vertex; ``def-straight-symmetric-conf`` excludes it).  ``covered``: the
+    statements evaluated on at least one level meeting their hypotheses.  Levels of one
+    shape give one entry each (the audit merges equal claims and counts them)."""
     found, notes, covered = [], [], set()
     for index, v in enumerate(verdicts):
         n = len(levels.levels[index].points)
@@ -74,7 +74,8 @@ def level_findings(config, levels, verdicts) -> tuple[list, list, set]:
         if v["theorem1_symmetric"] != symmetric_def:
             found.append(_entry(
                 "obs-asymmetric-polygon",
-                f"Theorem 1 calls {name} {'symmetric' if v['theorem1_symmetric'] else 'asymmetric'}",
+                f"Theorem 1 calls {name} "
+                f"{'symmetric' if v['theorem1_symmetric'] else 'asymmetric'}",
                 f"{name} is {'symmetric' if symmetric_def else 'asymmetric'} by the definitions "
                 f"({mirrors} mirror(s), {'' if skew else 'not '}skew symmetric)", where))
         if straight:

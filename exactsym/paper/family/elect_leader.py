@@ -150,7 +150,8 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
                   "amount": number_text(moved.parameter) if moved.parameter is not None
                   else None}] if mover is not None else []
         trace_entry(trace, alg, 5, [g1.name], "Elect_Leader_Sym",
-                    f"degree of symmetry one: Make_SymToAsym moves robot {mover} to its right side "
+                    f"degree of symmetry one: Make_SymToAsym moves robot {mover} to its right "
+                    f"side "
                     f"({'asymmetric now' if moved.asymmetric else 'still symmetric'})",
                     robots=[mover] if mover is not None else None, branch=branch, round=rnd,
                     uses="Make_SymToAsym")
