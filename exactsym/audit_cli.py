@@ -32,13 +32,21 @@ def run(args) -> int:
               f"{truth['leader']}")
         print(f"paper: {'orderable' if res.orderable else 'not orderable'}, leader "
               f"{res.leader}, moves {[m['robot'] for m in res.moves]}")
+        covered = result.get("covered", [])
         if result["agrees"]:
-            print("audit: the paper agrees with the truth on this configuration")
+            print(f"audit: no statement is false here; {len(covered)} covered: "
+                  + ", ".join(covered))
+        else:
+            print(f"audit: {len(covered)} statements covered: " + ", ".join(covered))
         for d in result["discrepancies"]:
             print(f"- {d['statement']} ({d['kind']})\n    says:  {d['says']}\n"
                   f"    truth: {d['truth']}")
+            if d.get("rescued_by"):
+                print(f"    under the reading: {d['reading']}; rescued by: {d['rescued_by']}")
             if d.get("witness"):
                 print(f"    witness: {json.dumps(d['witness'], default=str)}")
+        for d in result.get("notes", []):
+            print(f"  note: {d['statement']} ({d['kind']}): {d['truth']}")
     if not result["agrees"]:
         print(f"{config.source}: the audit finds {len(result['discrepancies'])} "
               f"discrepancy(ies); the first: {result['discrepancies'][0]['statement']}",
