@@ -34,7 +34,7 @@ def run(args) -> int:
               f"{res.leader}, moves {[m['robot'] for m in res.moves]}")
         covered = result.get("covered", [])
         if result["agrees"]:
-            print(f"audit: no statement is false here; {len(covered)} covered: "
+            print(f"audit: the paper agrees: no statement is false here; {len(covered)} covered: "
                   + ", ".join(covered))
         else:
             print(f"audit: {len(covered)} statements covered: " + ", ".join(covered))

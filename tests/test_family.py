@@ -336,7 +336,8 @@ def test_audit_command_exit_codes_and_json():
     assert data["audit"]["truth"]["group"] == "C3"
     good = _exactsym("audit", str(FAMILY / "gcd-9-15-merge.toml"))
     assert good.returncode == 0, good.stderr
-    assert "agrees" in good.stdout
+    assert "audit: the paper agrees: no statement is false here; " in good.stdout
+    assert "GatheringPattern" in good.stdout.splitlines()[2]          # the covered labels
     missing = _exactsym("audit", str(FAMILY / "no-such-file.toml"))
     assert missing.returncode == 2 and "Traceback" not in missing.stderr
 
