@@ -517,29 +517,41 @@ def _frame_difference(config: Configuration, paper: F.PaperResult, res: F.PaperR
     disappears with Elect_Leader_Asym's unordered reading ({CW, ACW} as a set), it is
     ``Elect_Leader_Asym`` refuted under the literal reading (kind ``reading``), not a
     failure of ``lem-asym-ord``."""
-    first, second, continued = paper, res, False
+    first, second, continued, where = paper, res, False, config
     if frame == "reflection" and _actions(paper)[0] == _actions(res)[0] and \
             any(m.get("kind") == "epsilon" for m in paper.moves) and \
             paper.final_config is not None:
-        try:
-            q0 = _procedure(paper.final_config, "identity", kw)
-            qf = _procedure(paper.final_config, frame, kw)
-        except (ArithmeticError, NotImplementedError, ValueError):
-            q0 = qf = None
-        if q0 is not None and q0.complete and qf.complete:
+        # both senses: the configuration after the identity frame's moves, and the one
+        # after the reflected frame's (the mover may take either sense)
+        after = [c for c in (paper.final_config, res.final_config) if c is not None]
+        runs = []
+        for c in after:
+            try:
+                q0, qf = _procedure(c, "identity", kw), _procedure(c, frame, kw)
+            except (ArithmeticError, NotImplementedError, ValueError):
+                break
+            if not (q0.complete and qf.complete):
+                break
+            runs.append((c, q0, qf))
+        if len(runs) == len(after):
             eps = [m for m in paper.moves if m.get("kind") == "epsilon"]
             movers = [m["robot"] for m in eps]
-            if _actions(q0) == _actions(qf):
+            bad = [(c, q0, qf) for c, q0, qf in runs if _actions(q0) != _actions(qf)]
+            if not bad:
+                elected = [q0.leader for _, q0, _ in runs]
                 return None, _d(
-                    eps[-1]["algorithm"], "the leader does not depend on the choice of origin and "
-                    "coordinate system",
+                    eps[-1]["algorithm"],
+                    "the leader does not depend on the choice of origin and coordinate system",
                     f"the frames differ only in the sense of the epsilon move of robot(s) "
-                    f"{movers} (clockwise for each observer; only the mover chooses): on "
-                    f"the configuration after the move both elect robot {q0.leader}",
+                    f"{movers} (clockwise for each observer; only the mover chooses): after "
+                    f"the move every frame elects one robot: "
+                    + ", ".join(f"robot {x} ({sense})" for x, sense in
+                                zip(elected, ("this observer's sense", "the other sense"))),
                     {"frames": ["identity", frame], "epsilon_movers": movers,
-                     "leader_after_move": q0.leader}, kind="epsilon-sense")
-            first, second, continued = q0, qf, True
-    where = paper.final_config if continued else config
+                     "leader_after_move": elected[0], "leaders_after_move": elected},
+                    kind="epsilon-sense")
+            where, first, second = bad[0]
+            continued = True
     if frame == "reflection" and kw.get("reading", "literal") == "literal":
         try:
             u0 = _procedure(where, "identity", kw, reading="unordered")

@@ -237,8 +237,10 @@ def test_epsilon_sense_is_not_a_discrepancy():
     rep = report("family/type3-pentagon-and-asym-ring.toml")
     assert rep["audit"]["agrees"]
     sense = [d for d in rep["audit"]["notes"] if d["kind"] == "epsilon-sense"]
-    assert [(d["statement"], d["witness"]["epsilon_movers"], d["witness"]["leader_after_move"])
-            for d in sense] == [("Make_SymToAsym", [0], 2)]
+    assert [(d["statement"], d["witness"]["epsilon_movers"], d["witness"]["leaders_after_move"])
+            for d in sense] == [("Make_SymToAsym", [0], [2, 1])]
+    assert sense[0]["truth"].endswith("robot 2 (this observer's sense), robot 1 (the other "
+                                      "sense)")
 
 
 def test_gathering_pattern_out_of_scope_below_five_robots():
