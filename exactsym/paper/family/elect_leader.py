@@ -136,7 +136,7 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
                     f": {why}", round=rnd)
     if line4:
         branch = "sym-degree-one"
-        axis = list(check.axis_vertices)
+        axis = list(P.vertices_on_line(poly, mirror_lines(poly)[0].value))   # on the mirror
         if poly.n % 2 == 0 and len(axis) >= 2 and \
                 P.cw_string(poly, axis[0], orientation) == P.cw_string(poly, axis[1], orientation):
             trace_entry(trace, alg, 5, [g1.name], "Elect_Leader_Sym",
