@@ -510,9 +510,10 @@ def _frame_difference(config: Configuration, paper: F.PaperResult, res: F.PaperR
     (b) A reflected frame turns "clockwise for this observer" into the other sense: when
     both frames move the same robots and one move is an epsilon move, the two only differ
     in the sense the mover chose (only that robot moves, and it picks one sense).  The
-    comparison then continues on the configuration after the identity frame's moves
-    (``paper.final_config``): both frames must elect the same robot there; if they do,
-    that is a note (``epsilon-sense``), not a discrepancy.
+    comparison then continues on the configuration after the moves in either sense
+    (``final_config`` of both results; robots are oblivious and recompute): on each, both
+    frames must act alike; if they do, that is a note (``epsilon-sense``), not a
+    discrepancy; else the first configuration where they do not is compared below.
     (c) A reflected frame is an observer of the other handedness: when the difference
     disappears with Elect_Leader_Asym's unordered reading ({CW, ACW} as a set), it is
     ``Elect_Leader_Asym`` refuted under the literal reading (kind ``reading``), not a
