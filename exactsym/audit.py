@@ -421,6 +421,7 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
         ordered.extend(rest)
     ordered = _dedupe(ordered)
     ordered.extend(conclusions)
+    covered.update(d["statement"] for d in ordered)       # found false: evaluated here
     return {"agrees": not ordered, "conclusions_agree": not conclusions,
             "discrepancies": ordered,
             "notes": _dedupe(notes),

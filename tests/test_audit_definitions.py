@@ -19,7 +19,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from exactsym.analysis import analyse
-from exactsym.audit import audit
+from exactsym.audit import DISCREPANCY_KINDS, NOTE_KINDS, audit
 from exactsym.audit_levels import level_findings
 from exactsym.configuration import Configuration, load
 from exactsym.exact import fmpq
@@ -271,11 +271,17 @@ def test_make_asym_sec_finding_names_the_sense():
     assert "counter-clockwise keeps the SEC" in sec[0]["truth"]
 
 
-def test_no_1sym_le_attribution_anywhere():
+def test_no_1sym_le_attribution_and_known_kinds_on_every_case():
     for path in sorted(CASES.rglob("*.toml")):
         rep = report(str(path.relative_to(CASES)))
-        assert "1sym_le" not in [d["statement"] for d in rep["audit"]["discrepancies"]]
+        audited = rep["audit"]
+        assert "1sym_le" not in [d["statement"] for d in audited["discrepancies"]]
         assert "1sym_le" not in [e["statement"] for e in rep["paper"]["trace"]]
+        assert {d["kind"] for d in audited["discrepancies"]} <= set(DISCREPANCY_KINDS)
+        assert {d["kind"] for d in audited["notes"]} <= set(NOTE_KINDS)
+        assert audited["agrees"] == (not audited["discrepancies"])
+        # a statement found false was evaluated here
+        assert {d["statement"] for d in audited["discrepancies"]} <= set(audited["covered"])
 
 
 # ---------------------------------------------------------------- metamorphic
