@@ -25,7 +25,7 @@ from .symmetry import SymmetryGroup, symmetry_group
 #: The parts :func:`analyse` can compute, in the order it computes them.
 PARTS = ("truth", "polygons", "family", "audit")
 #: What each part needs besides the levels (always computed).
-NEEDS = {"truth": (), "polygons": (), "family": (), "audit": ("truth", "family")}
+NEEDS = {"truth": (), "polygons": (), "family": (), "audit": ("truth", "polygons", "family")}
 
 
 @dataclass(frozen=True)
@@ -68,7 +68,9 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
     >>> from exactsym import analyse, load, report_text
     >>> a = analyse(load("cases/discrepancies/d3-hexagon.toml"))
     >>> a.truth.name, a.truth.mirrors, a.truth.orderable, a.audit["agrees"]
-    ('D3', 3, False, True)
+    ('D3', 3, False, False)
+    >>> [d["statement"] for d in a.audit["discrepancies"]]
+    ['obs-exh-poly', 'Check_Symmetry_Even']
     >>> [len(level.points) for level in a.levels.levels]
     [6]
     >>> print(report_text(a).splitlines()[4])
@@ -95,7 +97,7 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
         audited = run_audit(config, levels, paper, {"reading": options.reading,
                                                     "degree": options.degree,
                                                     "invariance": options.invariance},
-                            group=truth) if "audit" in wanted else None
+                            group=truth, level_verdicts=verdicts) if "audit" in wanted else None
     return Analysis(config, options, levels, truth, verdicts, strings, paper, audited)
 
 

@@ -124,7 +124,7 @@ EXPECTATIONS = {
     "paper_skew": _level("skew"),
     "paper_degree": _level("degree"),
     "paper_type": _level("type"),
-    "paper_lines": _level("lines"),
+    "paper_lines_by_strings": _level("lines_by_strings"),
     "paper_theorem1_symmetric": _level("theorem1_symmetric"),
     "paper_loop_terminates": _level("loop_terminates"),
     "paper_def_straight": _level("definition", "straight"),

@@ -274,7 +274,7 @@ def _audit_rows(audit: dict, verbose: bool, source: str) -> list[str]:
     width = max(len(label) for label, _ in groups)
     rows = [_row("audit", f"{len(groups)} statement{'s' if len(groups) != 1 else ''} of the "
                           f"paper false here ({len(disc)} instance"
-                          f"{'s' if len(disc) != 1 else ''}; the witnesses: exactsym audit {source}):")]
+                          f"{'s' if len(disc) != 1 else ''}; the witnesses: exactsym audit {source if not source.startswith('<') else 'FILE'}):")]
     for label, items in groups:
         count = f"({len(items)}x)" if len(items) > 1 else ""
         line = f"  {label:<{width}} {count:>5}  {_discrepancy_text(items[0])}"
