@@ -4,7 +4,7 @@ Thin: parse, call :func:`.engine.run_sweep` and :mod:`.summary`, print.  The lea
 into ``exactsym`` with :func:`add_arguments` and :func:`run`; :func:`main` is the same
 command on its own (``python -m exactsym.sweep``).
 
-Exit codes (``shared/spec/cli-1.md``): 0 done and no statement fails on any configuration
+Exit codes (``docs/cli.md``): 0 done and no statement fails on any configuration
 examined; 1 some statement fails, or some configuration could not be analysed (both named
 on stderr); 2 unusable family, results file or command line (or the gathering simulator
 is missing); 3 an internal error.
