@@ -78,9 +78,11 @@ def test_smallest_counterexamples_are_smallest_and_load_back_as_passing_cases(se
         assert bridge.check_case_file(cases[entry.label]) == []
         text = Path(cases[entry.label]).read_text()
         assert "[expect]" in text and "audit_agrees = false" in text
-    # a singleton is in O_S by def-symmetric-conf yet orderable (docs/audit.md, finding 6)
+    # a singleton is in O_S by def-symmetric-conf yet orderable: outside Pasym-Pord's
+    # hypotheses (lemma 1, n > 1), so not a failure; one ring of at most 5 robots on the
+    # 12th roots has no chiral (C3) configuration, so Pasym-Pord does not fail here
     pasym = next(e for e in summary.labels if e.label == "Pasym-Pord")
-    assert pasym.smallest["n"] == 1 and pasym.failures == 1
+    assert pasym.smallest is None and pasym.failures == 0 and pasym.outside == 1
 
 
 def test_rank_orders_robots_then_denominators_then_size():
@@ -275,3 +277,31 @@ def test_a_configuration_over_the_time_limit_is_recorded_and_the_sweep_goes_on(t
     assert run.complete and len(records) == 1 + 6
     assert [r["key"] for r in late] == ["roots:12:1:0,6"]          # the diameter
     assert late[0]["status"] == "error" and late[0]["points"]
+
+
+def test_a_single_robot_is_outside_the_hypotheses_of_pasym_pord():
+    # One robot is in O_S by def-symmetric-conf and trivially orderable: the literal
+    # "only if" of Pasym-Pord fails, but its proof is lemma 1 (n > 1): not a failure.
+    one = bridge.analyse("audit", [("polar", "1", "0")])
+    assert {"Pasym-Pord", "cor-Pasym-Pord"} <= set(one["outside"])
+    assert not {"Pasym-Pord", "cor-Pasym-Pord"} & set(one["failed"])
+    assert not {"Pasym-Pord", "cor-Pasym-Pord", "GatheringPattern"} & set(one["applicable"])
+    # three robots of a chiral C3 ring (turns 0, 1/3, 2/3 plus 1/12 shifts) do refute it
+    c3 = [("polar", "1", t) for t in ("0", "1/3", "2/3")] + \
+        [("polar", "2", t) for t in ("1/12", "5/12", "3/4")]
+    res = bridge.analyse("audit", c3)
+    assert "Pasym-Pord" in res["failed"] and res["outside"] == []
+    assert res["truth"]["group"] == "C3"
+
+
+def test_gathering_pattern_is_applicable_from_five_robots_only(serial_run):
+    for record in read_records(serial_run):
+        if record["status"] == "ok":
+            assert ("GatheringPattern" in record["applicable"]) == (record["n"] >= 5)
+            assert set(record["outside"]) <= {"Pasym-Pord", "cor-Pasym-Pord"}
+            assert not record["outside"] or record["n"] == 1
+    summary = summarise(serial_run)
+    by = {e.label: e for e in summary.labels}
+    assert by["Pasym-Pord"].outside == 1 and by["cor-Pasym-Pord"].outside == 1
+    evidence = {i["statement"]: i for i in ledger_evidence(summary, {})["evidence"]}
+    assert "outside its hypotheses" in evidence["Pasym-Pord"]["text"]

@@ -17,15 +17,18 @@ What it offers, all on plain data (points as in :class:`.families.SweepItem`):
 
 "Applicable" (the statement's hypotheses held on the configuration) is derived as follows
 (``docs/sweeps.md``): for the audit's own statements from the same data the audit uses
-(``lemma-sym-ord``: n > 1 and P in O_S; the iff statements ``Psym-Gsym``, ``Pasym-Pord``,
-``cor-Pasym-Pord`` and the conclusion ``GatheringPattern``: every configuration;
+(``lemma-sym-ord``: n > 1 and P in O_S; ``Psym-Gsym``: every configuration; ``Pasym-Pord``
+and ``cor-Pasym-Pord``: n > 1 (see :data:`_MIN_N`); the conclusion ``GatheringPattern``:
+n >= 5;
 ``lem-asym-ord``: an asymmetric level, or a true orderable configuration whose leader is
 checked for observer independence; ``lem-sym-notord`` / ``lem-asym-pair-ord``: a
 symmetric / asymmetric pair among the pairs the audit checks; ``lem-all-pair-asym-ord`` /
 ``lem-one-pair-asym-ord``: Find_Asymmetry_Pair / FindAsymmetry finds one); for every
 other label, the paper's trace shows it on this configuration (a claim checked on at
 least one instance -- an entry with ``holds`` -- or an algorithm that ran).  A label
-that fails is applicable.  Truth has no statements (``applicable`` is None).
+that fails within its hypotheses is applicable; a failure outside them (a single robot
+for ``Pasym-Pord``) is moved from ``failed`` to ``outside`` and counts as neither.  Truth
+has no statements (``applicable`` is None).
 """
 
 from __future__ import annotations
@@ -48,6 +51,14 @@ _AUDIT_OWN = ("lemma-sym-ord", "lem-asym-ord", "lem-sym-notord", "lem-asym-pair-
               "lem-all-pair-asym-ord", "lem-one-pair-asym-ord", "Psym-Gsym", "Pasym-Pord",
               "cor-Pasym-Pord")
 _ALWAYS = ("Psym-Gsym", "Pasym-Pord", "cor-Pasym-Pord", "GatheringPattern")
+#: The least number of robots within each statement's hypotheses, where the audit's own
+#: test does not say it.  ``Pasym-Pord`` / ``cor-Pasym-Pord``: a single robot is in O_S by
+#: def-symmetric-conf and trivially orderable, so the "only if" direction fails on it
+#: literally; but that direction's proof is lemma-sym-ord ("lemma 1"), stated for a
+#: non-singleton set, so the theorem is read with lemma 1's hypothesis n > 1 (the C3
+#: configurations refute both statements with n >= 3 anyway).  ``GatheringPattern``: the
+#: gathering algorithm is for n >= 5 robots (the audit lists no discrepancy below that).
+_MIN_N = {"Pasym-Pord": 2, "cor-Pasym-Pord": 2, "GatheringPattern": 5}
 
 
 class BridgeInputError(ValueError):
@@ -160,8 +171,11 @@ def _audit(config) -> dict:
     failed = {d["statement"] for d in result["discrepancies"]}
     _, named = _paper_findings(res)
     applicable = named | failed | set(_ALWAYS) | _audit_hypotheses(config.n, res, result)
+    below = {label for label, least in _MIN_N.items() if config.n < least}
+    outside, failed, applicable = failed & below, failed - below, applicable - below
     truth = result["truth"]
     return {"failed": sorted(failed), "applicable": sorted(applicable),
+            "outside": sorted(outside),
             "truth": {"group": truth["group"], "orderable": truth["orderable"]},
             "paper": _paper_summary(res)}
 

@@ -69,7 +69,7 @@ def analyse_item(item: SweepItem, what: str, budget: int = 0,
     except Exception as err:                # recorded with the input; the sweep goes on
         return error_record(item, f"{type(err).__name__}: {err}")
     record = dict(_base(item), status="ok", **result)
-    if record["failed"]:
+    if record["failed"] or record.get("outside"):
         record["points"] = [list(p) for p in item.points]
     return record
 

@@ -31,6 +31,7 @@ class LabelSummary:
     applicable: int | None            # configurations where its hypotheses hold
     failures: int                     # configurations where it is false
     smallest: dict | None = None      # the record of the smallest counterexample
+    outside: int = 0                  # false only outside its hypotheses (not counted)
 
 
 @dataclass(frozen=True)
@@ -61,6 +62,7 @@ def summarise(path) -> Summary:
     applicable: dict = {}
     failures: dict = {}
     smallest: dict = {}
+    outside: dict = {}
     groups: dict = {}
     tracks = what in ("audit", "paper")
     for record in read_records(path):
@@ -78,15 +80,18 @@ def summarise(path) -> Summary:
             groups[name] = groups.get(name, 0) + 1
         for label in record.get("applicable") or ():
             applicable[label] = applicable.get(label, 0) + 1
+        for label in record.get("outside") or ():
+            outside[label] = outside.get(label, 0) + 1
         for label in record["failed"]:
             failures[label] = failures.get(label, 0) + 1
             best = smallest.get(label)
             if best is None or _rank(record) < _rank(best):
                 smallest[label] = record
     order = list(bridge.statement_labels(what))
-    order += sorted((set(failures) | set(applicable)) - set(order))
+    order += sorted((set(failures) | set(applicable) | set(outside)) - set(order))
     labels = tuple(LabelSummary(label, applicable.get(label, 0) if tracks else None,
-                                failures.get(label, 0), smallest.get(label))
+                                failures.get(label, 0), smallest.get(label),
+                                outside.get(label, 0))
                    for label in order)
     return Summary(head["family"], what, configurations, errors, labels,
                    tuple(error_examples), dict(sorted(groups.items())))
@@ -140,6 +145,7 @@ def summary_json(summary: Summary, cases: dict) -> dict:
                            if e.applicable is not None},
             "smallest": {e.label: _smallest_data(e, cases) for e in summary.labels
                          if e.smallest is not None},
+            "outside": {e.label: e.outside for e in summary.labels if e.outside},
             "groups": summary.groups}
 
 
@@ -165,9 +171,13 @@ def ledger_evidence(summary: Summary, cases: dict, results: str | None = None) -
             text = f"holds on all {n:,} configurations of {fam}"
             if e.applicable is not None and e.applicable != n:
                 text += f" (its hypotheses hold on {e.applicable:,} of them)"
+        if e.outside:
+            text += (f"; false on {e.outside:,} configuration(s) outside its hypotheses, "
+                     "not counted")
         items.append({"statement": e.label, "verdict": verdict, "text": text + caveat,
                       "configurations": n, "applicable": e.applicable,
-                      "failures": e.failures, "smallest": _smallest_data(e, cases)})
+                      "failures": e.failures, "outside": e.outside,
+                      "smallest": _smallest_data(e, cases)})
     return {"format": EVIDENCE_FORMAT, "source": "exactsym sweep", "family": fam,
             "what": summary.what, "results": results, "configurations": n,
             "errors": summary.errors, "evidence": items}
@@ -183,13 +193,15 @@ def summary_table(summary: Summary, cases: dict) -> str:
         lines.append("groups: " + ", ".join(f"{g} {c:,}" for g, c in summary.groups.items()))
     rows = [("statement", "hypotheses hold", "fails", "smallest counterexample")]
     for e in summary.labels:
-        if not e.failures and not e.applicable:
+        if not e.failures and not e.applicable and not e.outside:
             continue
         s = e.smallest
         small = "-" if s is None else \
             f"{s['n']} robot{'s' if s['n'] != 1 else ''}, denominator {s['denominator']}: {s['key']}"
         if s is not None and e.label in cases:
             small += f"  -> {cases[e.label]}"
+        if e.outside:
+            small += f"  ({e.outside:,} outside its hypotheses, not counted)"
         rows.append((e.label, "-" if e.applicable is None else f"{e.applicable:,}",
                      f"{e.failures:,}", small))
     if len(rows) > 1:
