@@ -298,10 +298,29 @@ def test_gathering_pattern_is_applicable_from_five_robots_only(serial_run):
     for record in read_records(serial_run):
         if record["status"] == "ok":
             assert ("GatheringPattern" in record["applicable"]) == (record["n"] >= 5)
-            assert set(record["outside"]) <= {"Pasym-Pord", "cor-Pasym-Pord"}
-            assert not record["outside"] or record["n"] == 1
+            assert ("MakeAsym" in record["applicable"] + record["failed"]) <= \
+                (record["n"] >= 5)
+            assert set(record["outside"]) <= {"Pasym-Pord", "cor-Pasym-Pord", "MakeAsym"}
+            assert not set(record["outside"]) - {"MakeAsym"} or record["n"] == 1
     summary = summarise(serial_run)
     by = {e.label: e for e in summary.labels}
     assert by["Pasym-Pord"].outside == 1 and by["cor-Pasym-Pord"].outside == 1
     evidence = {i["statement"]: i for i in ledger_evidence(summary, {})["evidence"]}
     assert "outside its hypotheses" in evidence["Pasym-Pord"]["text"]
+
+
+def test_reading_and_procedure_findings_are_not_failures():
+    # a scalene triangle on the grid: orderable (C1); the audit blames lem-asym-ord for
+    # the paper electing nobody, differently in mirrored frames: the claim holds
+    tri = [("xy", "0", "0"), ("xy", "1", "0"), ("xy", "2", "1")]
+    res = bridge.analyse("audit", tri)
+    assert res["truth"]["orderable"] and "lem-asym-ord" in res["procedure"]
+    assert "lem-asym-ord" not in res["failed"] and "lem-asym-ord" in res["applicable"]
+    # the isosceles right triangle: lemma-straight-sym false only under the literal reading
+    right = [("polar", "1", t) for t in ("0", "1/4", "1/2")]
+    res = bridge.analyse("audit", right)
+    assert "lemma-straight-sym" in res["reading"] and "lemma-straight-sym" not in res["failed"]
+    # a C3 ring is a genuine counterexample to lem-asym-ord: not orderable
+    c3 = [("polar", "1", f"{t}/24") for t in (0, 1, 3, 8, 9, 11, 16, 17, 19)]
+    res = bridge.analyse("audit", c3)
+    assert res["truth"]["group"] == "C3" and "lem-asym-ord" in res["failed"]
