@@ -49,6 +49,13 @@ at once which theorems lose their proof. The reasoning behind every grade is in
 `docs/interpretations.md` ("The ledger's re-grading"); the ledger's format in
 `docs/ledger.md`. Case paths are relative to the repository root; `exactsym ledger
 --check` re-runs every piece of evidence.
+
+A sweep summary (`proofs/sweeps/`) says what `exactsym sweep --what audit` found on a
+whole family, under the audit's readings (for example the mixed reading of "common
+line"): "holds" there is holds-on-cases, never a proof; a failure's smallest
+counterexample is a case file in `cases/sweeps/` that `--check` re-runs. A single robot
+(Pasym-Pord, cor-Pasym-Pord) and fewer than 5 robots (GatheringPattern, MakeAsym) are
+outside the statements' hypotheses and never counted as failures.
 """
 
 

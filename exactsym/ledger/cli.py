@@ -60,6 +60,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--save", metavar="NAME", default=None,
                         help="with one --sweep: copy it to proofs/sweeps/NAME.json and its "
                         "smallest counterexamples to cases/sweeps/NAME/")
+    parser.add_argument("--no-cases", action="store_true",
+                        help="with --save: copy no case file (a summary cited for what "
+                        "holds only)")
     parser.add_argument("--root", metavar="DIR", default=None,
                         help="the repository root (default: found from the working "
                         "directory)")
@@ -89,7 +92,8 @@ def sweep_texts(ledger, root: Path) -> dict:
     return out
 
 
-def sweep_report(ledger, root: Path, paths: list, save: str | None) -> list[str]:
+def sweep_report(ledger, root: Path, paths: list, save: str | None,
+                 no_cases: bool = False) -> list[str]:
     """Print what each sweep evidence file finds against the ledger's grades; returns the
     inconsistencies."""
     by = ledger.by_label()
@@ -105,17 +109,15 @@ def sweep_report(ledger, root: Path, paths: list, save: str | None) -> list[str]
             s = by.get(item["statement"])
             if s is None or item["verdict"] == "vacuous":
                 continue
-            said = consistency(s, str(path), data, root) \
-                if item["verdict"] == "holds" else []
-            if item["verdict"] == "fails" and s.grade not in ("refuted",
-                                                              "refuted-under-reading"):
-                said = [f"grade {s.grade!r} must change"]
+            # only a failure can contradict a grade; a citation is checked by --check
+            said = [f"grade {s.grade!r} must change"] if item["verdict"] == "fails" and \
+                s.grade not in ("refuted", "refuted-under-reading") else []
             mark = "ok " if not said else "BAD"
             print(f"  {mark} {s.label} ({s.grade}): {item['text']}"
                   + (f" -- {'; '.join(said)}" if said else ""))
             problems += [f"{s.label}: sweep {path}: {p}" for p in said]
         if save:
-            out, cases = import_sweep(path, root, save)
+            out, cases = import_sweep(path, root, save, () if no_cases else None)
             print(f"saved {out.relative_to(root)} and {len(cases)} case file(s) in "
                   f"cases/sweeps/{save}/")
     return problems
@@ -129,7 +131,7 @@ def run(args) -> int:
     if args.sweep:
         if args.save and len(args.sweep) != 1:
             raise InputError("--save takes exactly one --sweep")
-        problems = sweep_report(ledger, root, args.sweep, args.save)
+        problems = sweep_report(ledger, root, args.sweep, args.save, args.no_cases)
         for p in problems:
             print(f"ledger: {p}", file=sys.stderr)
         return EXIT_FALSE if problems else EXIT_OK

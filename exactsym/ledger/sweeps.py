@@ -165,40 +165,53 @@ def _slug(text: str) -> str:
     return re.sub(r"[^A-Za-z0-9_-]+", "_", text.replace("<=", "le")).strip("_")
 
 
+def _lemmas_line(text: str, labels: list) -> str:
+    """The case file ``text`` with its ``lemmas`` line naming every label in ``labels``."""
+    line = "lemmas = [" + ", ".join(json.dumps(x) for x in labels) + "]"
+    return re.sub(r"(?m)^lemmas = \[.*\]$", line, text, count=1)
+
+
 def import_sweep(evidence_path, root, name: str | None = None,
                  labels: tuple | None = None) -> tuple[Path, list[Path]]:
     """Copy the sweep evidence at ``evidence_path`` into the tree: ``proofs/sweeps/NAME.json``
     (NAME from the family by default), without the results file's path; the smallest
     counterexamples of the failing ``labels`` (default: every failing label) copied to
-    ``cases/sweeps/NAME/`` and named by their tree path, the others' ``case`` set to null.
-    Returns (the summary's path, the case files written)."""
+    ``cases/sweeps/NAME/``, one file per configuration (named by the first label, its
+    ``lemmas`` listing every label it is the smallest counterexample of), and named by
+    their tree path; the others' ``case`` set to null.  Returns (the summary's path, the
+    case files written)."""
     source = Path(evidence_path)
     data = load_sweep(source)
     root = Path(root)
-    name = name or _slug(data["family"] + ("-" + data["what"] if data.get("what") else ""))
+    name = name or _slug(data["family"])
     cases_dir = Path("cases") / "sweeps" / name
-    written = []
+    by_key: dict = {}                                # smallest key -> (target, labels)
     for item in data["evidence"]:
         small = item.get("smallest")
         if not small:
             continue
-        wanted = labels is None or item["statement"] in labels
         case = small.get("case")
-        found = Path(case) if case and Path(case).is_absolute() else \
-            (source.parent / case if case else None)
-        if wanted and found is not None and not found.is_file() and case:
-            found = Path(case)                  # relative to the working directory
-        if wanted and found is not None and found.is_file():
-            target = cases_dir / found.name
-            (root / cases_dir).mkdir(parents=True, exist_ok=True)
-            shutil.copyfile(found, root / target)
-            written.append(root / target)
-            small["case"] = target.as_posix()
+        found = None
+        if case and (labels is None or item["statement"] in labels):
+            found = Path(case) if Path(case).is_absolute() else source.parent / case
+            found = found if found.is_file() else Path(case)
+        if found is not None and found.is_file():
+            key = small.get("key") or str(found)
+            if key not in by_key:
+                by_key[key] = (cases_dir / found.name, found, [])
+            by_key[key][2].append(item["statement"])
+            small["case"] = by_key[key][0].as_posix()
         else:
             small["case"] = None
         if case and case in item["text"]:           # the text named the machine's path
             item["text"] = item["text"].replace(
                 f" ({case})" if small["case"] is None else case, small["case"] or "")
+    written = []
+    for target, found, named in by_key.values():
+        (root / cases_dir).mkdir(parents=True, exist_ok=True)
+        text = _lemmas_line(found.read_text(encoding="utf-8"), named)
+        (root / target).write_text(text, encoding="utf-8")
+        written.append(root / target)
     data["results"] = None                       # a path of the machine that ran it
     out = root / "proofs" / "sweeps" / f"{name}.json"
     out.parent.mkdir(parents=True, exist_ok=True)
