@@ -324,3 +324,37 @@ def test_reading_and_procedure_findings_are_not_failures():
     c3 = [("polar", "1", f"{t}/24") for t in (0, 1, 3, 8, 9, 11, 16, 17, 19)]
     res = bridge.analyse("audit", c3)
     assert res["truth"]["group"] == "C3" and "lem-asym-ord" in res["failed"]
+
+
+def _records(path) -> list:
+    return sorted(json.dumps(r, sort_keys=True) for r in read_records(path))
+
+
+def test_killed_gzip_sweep_resumes_to_the_same_records(serial_run, tmp_path):
+    """A .gz results file: killed with SIGKILL half-way (the gzip member left unterminated,
+    maybe a torn block), resumed, it holds the same records as the plain serial run."""
+    out = tmp_path / "killed.jsonl.gz"
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    proc = subprocess.Popen([sys.executable, "-m", "exactsym.sweep", FAMILY, "--what", "audit",
+                             "--serial", "--batch-size", "1", "--out", str(out)],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and proc.poll() is None:
+        if out.exists() and len(list(read_records(out))) > 20:
+            break
+        time.sleep(0.005)
+    assert proc.poll() is None                    # killed half-way, not after the end
+    proc.send_signal(signal.SIGKILL)
+    proc.wait()
+    assert 20 <= len(list(read_records(out))) < 86
+    with open(out, "ab") as f:                    # a torn compressed block after the kill
+        f.write(b"\x1f\x8b\x08\x00garbage")
+    code = main([FAMILY, "--what", "audit", "--serial", "--resume", "--out", str(out),
+                 "--json"])
+    assert code == 1
+    assert _records(out) == _records(serial_run)
+    assert out.stat().st_size * 5 < serial_run.stat().st_size      # it is compressed
+    # and a second resume of the complete file adds nothing
+    again = run_sweep(parse_family(FAMILY), "audit", out, resume=True,
+                      options=SweepOptions(serial=True))
+    assert again.new == 0 and again.skipped == 86 and _records(out) == _records(serial_run)
