@@ -509,7 +509,8 @@ REFUTABLE = {"Pasym-Pord": "P is orderable if P is in O_A",
              "lem-all-pair-asym-ord": "if G_P has an asymmetric pair, P is orderable",
              "obs-merg-asym-pair": "if <G_i, G_j> is an asymmetric pair, G_ij is asymmetric",
              "lemma-sym-regular": "a convex polygon with more than one line of symmetry, "
-                                  "each through a vertex, is regular"}
+                                  "each through a vertex, is regular",
+             "obs-exh-poly": "every straight symmetric polygon is of type 0, 1, 2, 3 or 4"}
 
 
 def _one_level(config) -> bool:
@@ -622,6 +623,26 @@ def _premise(label, obj, P: set, name: str, k: int, n: int) -> str:
     raise Invalid(f"no refutation by symmetry facts for {label!r}")
 
 
+def _no_type(P: set, name: str, k: int, n: int, axes: set) -> str:
+    """obs-exh-poly: P is one straight symmetric polygon (group Dk, k mirrors) that fits
+    none of the types, each decided from n, k and the mirrors through vertices: 0 regular
+    (k = n); 1 n even, k = 2, no mirror through a vertex; 2 n even, k = 1 (one mirror of an
+    even polygon fixes 0 or 2 vertices: it passes through two vertices or two edges); 3 n
+    odd, k = 1 (it fixes one vertex: a vertex and an edge); 4 n odd and not prime, 1 < k < n."""
+    need(len(_levels(P)) == 1 and n >= 3, "the premise fails: not one polygon with >= 3 "
+         "vertices")
+    need(name.startswith("D"), f"the premise fails: group {name} has no mirror")
+    through = {x for x in axes if any((t - x) % Fraction(1, 2) == 0 for _, t in P)}
+    prime = n > 1 and all(n % d for d in range(2, isqrt(n) + 1))
+    types = {0: k == n, 1: n % 2 == 0 and k == 2 and not through,
+             2: n % 2 == 0 and k == 1, 3: n % 2 == 1 and k == 1,
+             4: n % 2 == 1 and not prime and 1 < k < n}
+    fits = [t for t, holds in types.items() if holds]
+    need(not fits, f"the conclusion holds: it is of type {fits[0] if fits else ''}")
+    return (f"one polygon of {n} vertices with group {name}: {k} mirrors "
+            f"({len(through)} through a vertex), not regular, fits none of the types 0-4")
+
+
 def _merged_asymmetric(obj, P: set) -> str:
     """obs-merg-asym-pair: the pair is asymmetric, and G_ij -- G_i projected radially onto
     G_j's circle, with G_j (the checker builds it) -- has a mirror or the half-turn."""
@@ -658,6 +679,10 @@ def verify_refutation(obj) -> tuple[bool, str]:
         if label == "obs-merg-asym-pair":
             return True, f"{label} refuted: " + _merged_asymmetric(
                 obj, set(_keys(cert["configuration"])))
+        if label == "obs-exh-poly":
+            P = set(_keys(cert["configuration"]))
+            return True, f"{label} refuted: " + _no_type(P, name, k, n,
+                                                         _part(cert, P, "P")[2])
         if label in ("Pasym-Pord", "lem-asym-ord"):
             # A reflection in G moves a point unless G = D1 fixes every point (orderable); a
             # half-turn is in G iff k is even.

@@ -53,6 +53,9 @@ PREMISES = {
     "lemma-sym-regular": (["one level (points on a circle: a convex polygon)",
                            "more than one line of symmetry, all mirrors (k odd), each "
                            "through a vertex"], "regular (a rotation of order n)"),
+    "obs-exh-poly": (["one level (a convex polygon) with a mirror: straight symmetric"],
+                     "of type 0, 1, 2, 3 or 4 (decided from n, the number of mirrors and "
+                     "the mirrors through vertices)"),
 }
 
 
@@ -101,7 +104,7 @@ def _merged(config, a_idx, b_idx) -> dict:
 
 
 def _parts(config, label: str) -> dict:
-    if label in ("Pasym-Pord", "lem-asym-ord", "lemma-sym-regular"):
+    if label in ("Pasym-Pord", "lem-asym-ord", "lemma-sym-regular", "obs-exh-poly"):
         return {}
     if config.polar is None or config.radii is None:
         raise CertificateError(f"{label}: refutations about the polygons of G_P are "

@@ -21,7 +21,8 @@ TRIANGLES = "cases/discrepancies/family-c3-two-triangles.toml"
 NONAGON = "cases/polygon/d3-nonagon-type4.toml"
 WITNESS = {"cor-Pasym-Pord": RING, "lem-one-pair-asym-ord": RING,
            "lem-asym-pair-ord": TRIANGLES, "lem-all-pair-asym-ord": TRIANGLES,
-           "obs-merg-asym-pair": TRIANGLES, "lemma-sym-regular": NONAGON}
+           "obs-merg-asym-pair": TRIANGLES, "lemma-sym-regular": NONAGON,
+           "obs-exh-poly": "cases/discrepancies/d3-hexagon.toml"}
 
 
 @pytest.fixture(scope="module")
@@ -110,6 +111,19 @@ def test_configurations_that_do_not_refute_are_refused():
     with pytest.raises(CertificateError, match="regular"):
         make_refutation(load(ROOT / "cases/polygon/regular-pentagon-polar.toml"),
                         "lemma-sym-regular")
+
+
+def test_each_type_of_obs_exh_poly_is_recognised():
+    # a polygon of each type makes the checker say which type it is: no refutation
+    for case, kind in (("cases/polygon/regular-pentagon-polar.toml", "type 0"),
+                       ("cases/polygon/kite-polar.toml", "type 2"),
+                       ("cases/discrepancies/isosceles-triangle.toml", "type 3"),
+                       (NONAGON, "type 4")):
+        with pytest.raises(CertificateError, match=kind):
+            make_refutation(load(ROOT / case), "obs-exh-poly")
+    for case in ("d4-octagon", "d2-octagon-vertex-lines"):   # the other two witnesses
+        obj = make_refutation(load(ROOT / f"cases/discrepancies/{case}.toml"), "obs-exh-poly")
+        assert checker.verify_refutation(json.loads(json.dumps(obj)))[0]
 
 
 def test_shipped_certificates_are_the_ones_certify_writes(made):
