@@ -358,3 +358,14 @@ def test_killed_gzip_sweep_resumes_to_the_same_records(serial_run, tmp_path):
     again = run_sweep(parse_family(FAMILY), "audit", out, resume=True,
                       options=SweepOptions(serial=True))
     assert again.new == 0 and again.skipped == 86 and _records(out) == _records(serial_run)
+
+
+def test_paper_sweep_sets_aside_instances_outside_the_hypotheses(tmp_path):
+    # the family layer marks lem-los-gij / theorem-los-g1n instances outside the text's
+    # hypotheses (within_hypotheses false), and MakeAsym runs below 5 robots here
+    out = tmp_path / "p.jsonl.gz"
+    run_sweep(parse_family("grid:4:<=4"), "paper", out, options=SweepOptions(serial=True))
+    by = {e.label: e for e in summarise(out).labels}
+    for label in ("lem-los-gij", "theorem-los-g1n", "MakeAsym"):
+        assert by[label].failures == 0 and by[label].outside > 0, label
+    assert by["MakeAsym"].applicable == 0 and by["obs-merg-asym-pair"].failures > 0

@@ -157,10 +157,18 @@ def _paper_summary(res) -> dict:
     return {"orderable": res.orderable, "leader": res.leader, "complete": res.complete}
 
 
+def _outside_instance(e) -> bool:
+    """A trace entry the family layer marks outside the statement's hypotheses (the audit
+    makes it a note, ``exactsym.audit.HYPOTHESIS_MARKED``)."""
+    witness = e.get("witness")
+    return isinstance(witness, dict) and witness.get("within_hypotheses") is False
+
+
 def _paper_findings(res) -> tuple[set, set]:
     """(labels false on the configuration, labels the trace names) from the paper alone."""
     failed = {e["statement"] for e in res.trace
-              if e.get("holds") is False and e.get("kind") != "literal-reading"}
+              if e.get("holds") is False and e.get("kind") != "literal-reading"
+              and not _outside_instance(e)}
     named = {e["algorithm"] for e in res.trace} | \
         {e["statement"] for e in res.trace if "holds" in e}
     return failed, named - set(_AUDIT_OWN) - {"Section 3"}
@@ -170,8 +178,12 @@ def _paper(config) -> dict:
     from ..analysis import analyse as run_analysis
     res = run_analysis(config, sections=("family",)).paper
     failed, named = _paper_findings(res)
-    return {"failed": sorted(failed), "applicable": sorted(named | failed),
-            "paper": _paper_summary(res)}
+    outside = {e["statement"] for e in res.trace
+               if e.get("holds") is False and _outside_instance(e)} - failed
+    below = {label for label, least in _MIN_N.items() if config.n < least}
+    outside |= failed & below
+    return {"failed": sorted(failed - below), "applicable": sorted((named | failed) - below),
+            "outside": sorted(outside), "paper": _paper_summary(res)}
 
 
 def _audit(config) -> dict:
