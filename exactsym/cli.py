@@ -129,10 +129,12 @@ EXAMPLES = {
                "exactsym gather FILE --scheduler async --seed 3 --trace run.json",
                "exactsym gather FILE --search --reading A3=all"],
     "replay": ["exactsym replay run.json"],
-    "ledger": ["exactsym ledger --check --no-write"],
+    "ledger": ["exactsym ledger --check --no-write",
+               "exactsym ledger --sweep r12.evidence.json --save roots_12_le6"],
     "sweep": ["exactsym sweep 'roots:12:<=6' --what audit --workers 2 --out r12.jsonl",
               "exactsym sweep 'grid:4:<=4' --what paper --serial --out g4.jsonl --json",
-              "exactsym sweep 'roots:12:<=6' --what audit --out r12.jsonl --resume"],
+              "exactsym sweep 'roots:12:<=6' --what audit --out r12.jsonl --resume",
+              "exactsym sweep 'roots:24:<=6' --what audit --out r24.jsonl.gz"],
     "plot": ["exactsym plot cases/examples/chiral-nine-gon.toml -o nine.svg --show-audit"],
 }
 

@@ -78,9 +78,11 @@ def test_smallest_counterexamples_are_smallest_and_load_back_as_passing_cases(se
         assert bridge.check_case_file(cases[entry.label]) == []
         text = Path(cases[entry.label]).read_text()
         assert "[expect]" in text and "audit_agrees = false" in text
-    # a singleton is in O_S by def-symmetric-conf yet orderable (docs/audit.md, finding 6)
+    # a singleton is in O_S by def-symmetric-conf yet orderable: outside Pasym-Pord's
+    # hypotheses (lemma 1, n > 1), so not a failure; one ring of at most 5 robots on the
+    # 12th roots has no chiral (C3) configuration, so Pasym-Pord does not fail here
     pasym = next(e for e in summary.labels if e.label == "Pasym-Pord")
-    assert pasym.smallest["n"] == 1 and pasym.failures == 1
+    assert pasym.smallest is None and pasym.failures == 0 and pasym.outside == 1
 
 
 def test_rank_orders_robots_then_denominators_then_size():
@@ -275,3 +277,95 @@ def test_a_configuration_over_the_time_limit_is_recorded_and_the_sweep_goes_on(t
     assert run.complete and len(records) == 1 + 6
     assert [r["key"] for r in late] == ["roots:12:1:0,6"]          # the diameter
     assert late[0]["status"] == "error" and late[0]["points"]
+
+
+def test_a_single_robot_is_outside_the_hypotheses_of_pasym_pord():
+    # One robot is in O_S by def-symmetric-conf and trivially orderable: the literal
+    # "only if" of Pasym-Pord fails, but its proof is lemma 1 (n > 1): not a failure.
+    one = bridge.analyse("audit", [("polar", "1", "0")])
+    assert {"Pasym-Pord", "cor-Pasym-Pord"} <= set(one["outside"])
+    assert not {"Pasym-Pord", "cor-Pasym-Pord"} & set(one["failed"])
+    assert not {"Pasym-Pord", "cor-Pasym-Pord", "GatheringPattern"} & set(one["applicable"])
+    # three robots of a chiral C3 ring (turns 0, 1/3, 2/3 plus 1/12 shifts) do refute it
+    c3 = [("polar", "1", t) for t in ("0", "1/3", "2/3")] + \
+        [("polar", "2", t) for t in ("1/12", "5/12", "3/4")]
+    res = bridge.analyse("audit", c3)
+    assert "Pasym-Pord" in res["failed"] and res["outside"] == []
+    assert res["truth"]["group"] == "C3"
+
+
+def test_gathering_pattern_is_applicable_from_five_robots_only(serial_run):
+    for record in read_records(serial_run):
+        if record["status"] == "ok":
+            assert ("GatheringPattern" in record["applicable"]) == (record["n"] >= 5)
+            assert ("MakeAsym" in record["applicable"] + record["failed"]) <= \
+                (record["n"] >= 5)
+            assert set(record["outside"]) <= {"Pasym-Pord", "cor-Pasym-Pord", "MakeAsym"}
+            assert not set(record["outside"]) - {"MakeAsym"} or record["n"] == 1
+    summary = summarise(serial_run)
+    by = {e.label: e for e in summary.labels}
+    assert by["Pasym-Pord"].outside == 1 and by["cor-Pasym-Pord"].outside == 1
+    evidence = {i["statement"]: i for i in ledger_evidence(summary, {})["evidence"]}
+    assert "outside its hypotheses" in evidence["Pasym-Pord"]["text"]
+
+
+def test_reading_and_procedure_findings_are_not_failures():
+    # a scalene triangle on the grid: orderable (C1); the audit blames lem-asym-ord for
+    # the paper electing nobody, differently in mirrored frames: the claim holds
+    tri = [("xy", "0", "0"), ("xy", "1", "0"), ("xy", "2", "1")]
+    res = bridge.analyse("audit", tri)
+    assert res["truth"]["orderable"] and "lem-asym-ord" in res["procedure"]
+    assert "lem-asym-ord" not in res["failed"] and "lem-asym-ord" in res["applicable"]
+    # the isosceles right triangle: lemma-straight-sym false only under the literal reading
+    right = [("polar", "1", t) for t in ("0", "1/4", "1/2")]
+    res = bridge.analyse("audit", right)
+    assert "lemma-straight-sym" in res["reading"] and "lemma-straight-sym" not in res["failed"]
+    # a C3 ring is a genuine counterexample to lem-asym-ord: not orderable
+    c3 = [("polar", "1", f"{t}/24") for t in (0, 1, 3, 8, 9, 11, 16, 17, 19)]
+    res = bridge.analyse("audit", c3)
+    assert res["truth"]["group"] == "C3" and "lem-asym-ord" in res["failed"]
+
+
+def _records(path) -> list:
+    return sorted(json.dumps(r, sort_keys=True) for r in read_records(path))
+
+
+def test_killed_gzip_sweep_resumes_to_the_same_records(serial_run, tmp_path):
+    """A .gz results file: killed with SIGKILL half-way (the gzip member left unterminated,
+    maybe a torn block), resumed, it holds the same records as the plain serial run."""
+    out = tmp_path / "killed.jsonl.gz"
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    proc = subprocess.Popen([sys.executable, "-m", "exactsym.sweep", FAMILY, "--what", "audit",
+                             "--serial", "--batch-size", "1", "--out", str(out)],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and proc.poll() is None:
+        if out.exists() and len(list(read_records(out))) > 20:
+            break
+        time.sleep(0.005)
+    assert proc.poll() is None                    # killed half-way, not after the end
+    proc.send_signal(signal.SIGKILL)
+    proc.wait()
+    assert 20 <= len(list(read_records(out))) < 86
+    with open(out, "ab") as f:                    # a torn compressed block after the kill
+        f.write(b"\x1f\x8b\x08\x00garbage")
+    code = main([FAMILY, "--what", "audit", "--serial", "--resume", "--out", str(out),
+                 "--json"])
+    assert code == 1
+    assert _records(out) == _records(serial_run)
+    assert out.stat().st_size * 5 < serial_run.stat().st_size      # it is compressed
+    # and a second resume of the complete file adds nothing
+    again = run_sweep(parse_family(FAMILY), "audit", out, resume=True,
+                      options=SweepOptions(serial=True))
+    assert again.new == 0 and again.skipped == 86 and _records(out) == _records(serial_run)
+
+
+def test_paper_sweep_sets_aside_instances_outside_the_hypotheses(tmp_path):
+    # the family layer marks lem-los-gij / theorem-los-g1n instances outside the text's
+    # hypotheses (within_hypotheses false), and MakeAsym runs below 5 robots here
+    out = tmp_path / "p.jsonl.gz"
+    run_sweep(parse_family("grid:4:<=4"), "paper", out, options=SweepOptions(serial=True))
+    by = {e.label: e for e in summarise(out).labels}
+    for label in ("lem-los-gij", "theorem-los-g1n", "MakeAsym"):
+        assert by[label].failures == 0 and by[label].outside > 0, label
+    assert by["MakeAsym"].applicable == 0 and by["obs-merg-asym-pair"].failures > 0

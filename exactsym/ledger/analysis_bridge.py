@@ -23,6 +23,7 @@ class CaseAnalysis:
     error: str | None
     expect_failures: tuple[str, ...]
     audit_false: frozenset[str]
+    n: int | None = None              # robots
 
 
 def analyse_case(path) -> CaseAnalysis:
@@ -37,4 +38,5 @@ def analyse_case(path) -> CaseAnalysis:
     report = report_json(analyse(config))
     audit = report.get("audit") or {}
     false = frozenset(d["statement"] for d in audit.get("discrepancies", ()))
-    return CaseAnalysis(str(path), None, tuple(failed_expectations(config, report)), false)
+    return CaseAnalysis(str(path), None, tuple(failed_expectations(config, report)), false,
+                        config.n)

@@ -49,10 +49,17 @@ at once which theorems lose their proof. The reasoning behind every grade is in
 `docs/interpretations.md` ("The ledger's re-grading"); the ledger's format in
 `docs/ledger.md`. Case paths are relative to the repository root; `exactsym ledger
 --check` re-runs every piece of evidence.
+
+A sweep summary (`proofs/sweeps/`) says what `exactsym sweep --what audit` found on a
+whole family, under the audit's readings (for example the mixed reading of "common
+line"): "holds" there is holds-on-cases, never a proof; a failure's smallest
+counterexample is a case file in `cases/sweeps/` that `--check` re-runs. A single robot
+(Pasym-Pord, cor-Pasym-Pord) and fewer than 5 robots (GatheringPattern, MakeAsym) are
+outside the statements' hypotheses and never counted as failures.
 """
 
 
-def _evidence_text(s: Statement) -> str:
+def _evidence_text(s: Statement, sweeps: dict) -> str:
     parts = []
     for e in s.evidence:
         if e.kind == "case":
@@ -63,6 +70,9 @@ def _evidence_text(s: Statement) -> str:
             parts.append(f"`{e.path}` {' '.join(str(a) for a in e.args)}".rstrip())
         elif e.kind == "certificate":
             parts.append(f"`{e.path}` (refutation certificate)")
+        elif e.kind == "sweep":
+            said = sweeps.get((s.label, e.path))
+            parts.append(f"`{e.path}` (sweep: {said})" if said else f"`{e.path}` (sweep)")
         elif e.kind == "witnesses":
             parts.append(f"`{e.path}` ({e.refuted_readings} readings)")
         else:
@@ -74,7 +84,7 @@ def _cell(text: str) -> str:
     return text.replace("|", "\\|").replace("\n", " ")
 
 
-def _row(s: Statement, sup: Support) -> str:
+def _row(s: Statement, sup: Support, sweeps: dict) -> str:
     finding = s.finding
     if s.grade == "refuted-under-reading":
         finding += (f" *Fails under:* {'; '.join(s.fails_under)}. *Rescued by:* "
@@ -83,10 +93,13 @@ def _row(s: Statement, sup: Support) -> str:
     reading = ", ".join(f"*`{x}`*" for x in sup.rests_on_reading)
     rests = ", ".join(p for p in (rests, reading) if p) or "--"
     return (f"| `{s.label}` | {s.kind} | **{s.grade}** | {_cell(finding)} | "
-            f"{_cell(_evidence_text(s))} | {rests} |")
+            f"{_cell(_evidence_text(s, sweeps))} | {rests} |")
 
 
-def render(ledger: Ledger, support: dict[str, Support]) -> str:
+def render(ledger: Ledger, support: dict[str, Support], sweeps: dict | None = None) -> str:
+    """The text of docs/audit.md; ``sweeps`` maps (label, summary path) to what the sweep
+    says about the label (:func:`exactsym.ledger.cli.sweep_texts`)."""
+    sweeps = sweeps or {}
     counts = Counter(s.grade for s in ledger.statements)
     lines = [HEADER, "## Grades", "",
              "| grade | statements |", "| --- | --- |"]
@@ -104,7 +117,7 @@ def render(ledger: Ledger, support: dict[str, Support]) -> str:
             lines += ["", f"## {starts[s.label]}", "",
                       "| label | kind | grade | what exactsym finds | evidence | rests on |",
                       "| --- | --- | --- | --- | --- | --- |"]
-        lines.append(_row(s, support[s.label]))
+        lines.append(_row(s, support[s.label], sweeps))
     changed = [s for s in ledger.statements if s.changed]
     if changed:
         lines += ["", "## Changed by the re-grading (issue 10)", ""]

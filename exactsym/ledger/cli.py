@@ -8,6 +8,12 @@ nearest known one), builds the dependency graph, writes ``docs/audit.md`` from i
 file the evidence names must exist (exit 1 otherwise); ``--check`` also re-runs every
 piece of evidence (exit 1 on any mismatch, each printed on standard error).
 
+``--sweep EVIDENCE.json`` (repeatable) reads a sweep's evidence file and says, for every
+statement of the ledger it reports on, what the sweep found and whether that is
+consistent with the grade (:mod:`.sweeps`; exit 1 if not); ``--save NAME`` then copies it
+into the tree as ``proofs/sweeps/NAME.json`` with the smallest counterexamples in
+``cases/sweeps/NAME/``, ready to be cited as ``{sweep = "proofs/sweeps/NAME.json"}``.
+
 The lead wires it into ``exactsym`` with :func:`add_arguments` and :func:`run`.
 """
 
@@ -23,6 +29,7 @@ from .audit_doc import render
 from .evidence import check_evidence, missing_files
 from .graph import dependency_graph, support
 from .model import load_ledger
+from .sweeps import SweepError, consistency, import_sweep, load_sweep, sweep_item
 
 __all__ = ["add_arguments", "run", "main", "find_root", "ledger_json"]
 
@@ -47,6 +54,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="re-run every piece of evidence (exit 1 on a mismatch)")
     parser.add_argument("--no-write", action="store_true",
                         help="do not write docs/audit.md")
+    parser.add_argument("--sweep", metavar="EVIDENCE", action="append", default=[],
+                        help="a sweep's evidence file (RESULTS.evidence.json): say what it "
+                        "finds for each statement and whether the grade agrees")
+    parser.add_argument("--save", metavar="NAME", default=None,
+                        help="with one --sweep: copy it to proofs/sweeps/NAME.json and its "
+                        "smallest counterexamples to cases/sweeps/NAME/")
+    parser.add_argument("--no-cases", action="store_true",
+                        help="with --save: copy no case file (a summary cited for what "
+                        "holds only)")
     parser.add_argument("--root", metavar="DIR", default=None,
                         help="the repository root (default: found from the working "
                         "directory)")
@@ -61,13 +77,66 @@ def ledger_json(ledger, sup) -> dict:
         for s in ledger.statements]}
 
 
+def sweep_texts(ledger, root: Path) -> dict:
+    """(label, path) -> what the cited sweep summary says about the label."""
+    out = {}
+    for s in ledger.statements:
+        for e in s.evidence:
+            if e.kind == "sweep":
+                try:
+                    item = sweep_item(load_sweep(root / e.path), s.label)
+                except (SweepError, OSError):
+                    continue
+                if item:
+                    out[(s.label, e.path)] = item["text"]
+    return out
+
+
+def sweep_report(ledger, root: Path, paths: list, save: str | None,
+                 no_cases: bool = False) -> list[str]:
+    """Print what each sweep evidence file finds against the ledger's grades; returns the
+    inconsistencies."""
+    by = ledger.by_label()
+    problems = []
+    for path in paths:
+        try:
+            data = load_sweep(path)
+        except (SweepError, OSError) as err:
+            raise InputError(f"not a sweep evidence file: {err}", str(path)) from None
+        print(f"sweep {data['family']} --what {data.get('what')}: "
+              f"{data['configurations']:,} configurations")
+        for item in data["evidence"]:
+            s = by.get(item["statement"])
+            if s is None or item["verdict"] == "vacuous":
+                continue
+            # only a failure can contradict a grade; a citation is checked by --check
+            said = [f"grade {s.grade!r} must change"] if item["verdict"] == "fails" and \
+                s.grade not in ("refuted", "refuted-under-reading") else []
+            mark = "ok " if not said else "BAD"
+            print(f"  {mark} {s.label} ({s.grade}): {item['text']}"
+                  + (f" -- {'; '.join(said)}" if said else ""))
+            problems += [f"{s.label}: sweep {path}: {p}" for p in said]
+        if save:
+            out, cases = import_sweep(path, root, save, () if no_cases else None)
+            print(f"saved {out.relative_to(root)} and {len(cases)} case file(s) in "
+                  f"cases/sweeps/{save}/")
+    return problems
+
+
 def run(args) -> int:
     root = Path(args.root) if args.root else find_root()
     ledger = load_ledger(root / LEDGER)
     graph = dependency_graph(ledger)
     sup = support(ledger, graph)
+    if args.sweep:
+        if args.save and len(args.sweep) != 1:
+            raise InputError("--save takes exactly one --sweep")
+        problems = sweep_report(ledger, root, args.sweep, args.save, args.no_cases)
+        for p in problems:
+            print(f"ledger: {p}", file=sys.stderr)
+        return EXIT_FALSE if problems else EXIT_OK
     if not args.no_write:
-        text = render(ledger, sup)
+        text = render(ledger, sup, sweep_texts(ledger, root))
         target = root / AUDIT
         if not target.is_file() or target.read_text(encoding="utf-8") != text:
             target.write_text(text, encoding="utf-8")

@@ -7,8 +7,9 @@
 * witnesses: ``proofs/witnesses.py`` refutes the label under exactly ``refuted_readings``
   readings;
 * a refutation certificate: the standalone checker accepts it, for this label;
-* a sweep summary (JSON, docs/ledger.md): it names the label, its counts are integers,
-  a failure names an existing smallest case, and a label graded ``proved`` has none.
+* a sweep summary (:mod:`.sweeps`): well formed, reports on the label, its verdict is
+  consistent with the grade, and a failure's smallest case is re-run like an
+  ``audit-false`` case (and has the summary's number of robots).
 
 :func:`missing_files` is the cheap part (every file named exists), run on every
 invocation; :func:`check_evidence` runs everything.
@@ -24,12 +25,9 @@ from pathlib import Path
 from typing import Callable
 
 from .model import Evidence, Ledger
+from .sweeps import SweepError, consistency, load_sweep, needs_case
 
-__all__ = ["Mismatch", "missing_files", "check_evidence", "load_sweep", "SWEEP_KEYS"]
-
-#: Keys of a sweep summary file and their types.
-SWEEP_KEYS = {"format": int, "label": str, "family": str, "configurations": int,
-              "failures": int, "smallest_case": (str, type(None))}
+__all__ = ["Mismatch", "missing_files", "check_evidence", "load_sweep"]
 
 
 @dataclass(frozen=True)
@@ -71,19 +69,6 @@ def _module(path: Path):
     sys.modules[name] = module
     spec.loader.exec_module(module)
     return module
-
-
-def load_sweep(path: Path) -> dict:
-    """A sweep summary: one JSON object with :data:`SWEEP_KEYS` (ValueError otherwise)."""
-    data = json.loads(path.read_text(encoding="utf-8"))
-    if not isinstance(data, dict):
-        raise ValueError("a sweep summary is one JSON object")
-    for key, types in SWEEP_KEYS.items():
-        if key not in data or not isinstance(data[key], types) or isinstance(data[key], bool):
-            raise ValueError(f"sweep summary key {key!r} missing or of the wrong type")
-    if data["format"] != 1:
-        raise ValueError("sweep summary format must be 1")
-    return data
 
 
 def check_evidence(ledger: Ledger, root: Path,
@@ -159,17 +144,30 @@ def check_evidence(ledger: Ledger, root: Path,
             elif e.kind == "sweep":
                 try:
                     sweep = load_sweep(path)
-                except ValueError as err:
+                except (SweepError, OSError) as err:
                     out.append(Mismatch(s.label, _describe(e), str(err)))
                     continue
-                if sweep["label"] != s.label:
-                    out.append(Mismatch(s.label, _describe(e),
-                                        f"the sweep is about {sweep['label']!r}"))
-                if sweep["failures"] and not (sweep["smallest_case"] and
-                                              (root / sweep["smallest_case"]).is_file()):
-                    out.append(Mismatch(s.label, _describe(e), "failures without an "
-                                        "existing smallest case"))
-                if sweep["failures"] and s.grade == "proved":
-                    out.append(Mismatch(s.label, _describe(e), "a sweep fails on a "
-                                        "statement graded proved"))
+                problems = consistency(s, e.path, sweep, root)
+                out.extend(Mismatch(s.label, _describe(e), p) for p in problems)
+                small = None if problems else needs_case(s, sweep)
+                if small:
+                    case, robots = small
+                    if case not in cases:
+                        if progress:
+                            progress(case)
+                        cases[case] = analyse(root / case)
+                    out.extend(Mismatch(s.label, _describe(e), f"smallest case {case}: {p}")
+                               for p in _case_problems(cases[case], s.label, robots))
+    return out
+
+
+def _case_problems(a, label: str, robots: int | None) -> list[str]:
+    """Why the analysed case ``a`` is not a counterexample to ``label`` with ``robots``."""
+    if a.error:
+        return [f"cannot be read: {a.error}"]
+    out = [f"[expect] fails: {f}" for f in a.expect_failures]
+    if label not in a.audit_false:
+        out.append(f"the audit does not find {label} false here")
+    if robots is not None and a.n is not None and a.n != robots:
+        out.append(f"it has {a.n} robots, the sweep says {robots}")
     return out

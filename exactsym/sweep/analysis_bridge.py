@@ -17,15 +17,21 @@ What it offers, all on plain data (points as in :class:`.families.SweepItem`):
 
 "Applicable" (the statement's hypotheses held on the configuration) is derived as follows
 (``docs/sweeps.md``): for the audit's own statements from the same data the audit uses
-(``lemma-sym-ord``: n > 1 and P in O_S; the iff statements ``Psym-Gsym``, ``Pasym-Pord``,
-``cor-Pasym-Pord`` and the conclusion ``GatheringPattern``: every configuration;
+(``lemma-sym-ord``: n > 1 and P in O_S; ``Psym-Gsym``: every configuration; ``Pasym-Pord``
+and ``cor-Pasym-Pord``: n > 1 (see :data:`_MIN_N`); the conclusion ``GatheringPattern``
+and ``MakeAsym``: n >= 5;
 ``lem-asym-ord``: an asymmetric level, or a true orderable configuration whose leader is
 checked for observer independence; ``lem-sym-notord`` / ``lem-asym-pair-ord``: a
 symmetric / asymmetric pair among the pairs the audit checks; ``lem-all-pair-asym-ord`` /
 ``lem-one-pair-asym-ord``: Find_Asymmetry_Pair / FindAsymmetry finds one); for every
 other label, the paper's trace shows it on this configuration (a claim checked on at
 least one instance -- an entry with ``holds`` -- or an algorithm that ran).  A label
-that fails is applicable.  Truth has no statements (``applicable`` is None).
+that fails within its hypotheses is applicable; a failure outside them (a single robot
+for ``Pasym-Pord``) is moved from ``failed`` to ``outside`` and counts as neither; a label
+the audit finds false only under a named reading is in ``reading``, and one whose claim
+holds while the audit blames it for the paper's procedure in ``procedure`` (:func:`_split`):
+neither is a failure.  Truth
+has no statements (``applicable`` is None).
 """
 
 from __future__ import annotations
@@ -48,6 +54,21 @@ _AUDIT_OWN = ("lemma-sym-ord", "lem-asym-ord", "lem-sym-notord", "lem-asym-pair-
               "lem-all-pair-asym-ord", "lem-one-pair-asym-ord", "Psym-Gsym", "Pasym-Pord",
               "cor-Pasym-Pord")
 _ALWAYS = ("Psym-Gsym", "Pasym-Pord", "cor-Pasym-Pord", "GatheringPattern")
+#: The least number of robots within each statement's hypotheses, where the audit's own
+#: test does not say it.  ``Pasym-Pord`` / ``cor-Pasym-Pord``: a single robot is in O_S by
+#: def-symmetric-conf and trivially orderable, so the "only if" direction fails on it
+#: literally; but that direction's proof is lemma-sym-ord ("lemma 1"), stated for a
+#: non-singleton set, so the theorem is read with lemma 1's hypothesis n > 1 (the C3
+#: configurations refute both statements with n >= 3 anyway).  ``GatheringPattern``: the
+#: gathering algorithm is for n >= 5 robots (the audit lists no discrepancy below that),
+#: and so is ``MakeAsym``, one of its steps (its ledger entry's hypothesis ``n >= 5``;
+#: the audit still lists it below 5, e.g. on an isosceles triangle: outside, not counted).
+#: Lemmas whose claim is "... is orderable" and to which the audit also attributes the
+#: paper's leader depending on the observer (a discrepancy of kind ``conclusion``): on a
+#: configuration that is orderable the claim holds, and the fault is the procedure's
+#: (Elect_Leader_Asym on a triangle elects nobody, differently in mirrored frames).
+_ORDERABLE_CLAIMS = ("lem-asym-ord",)
+_MIN_N = {"Pasym-Pord": 2, "cor-Pasym-Pord": 2, "GatheringPattern": 5, "MakeAsym": 5}
 
 
 class BridgeInputError(ValueError):
@@ -136,10 +157,18 @@ def _paper_summary(res) -> dict:
     return {"orderable": res.orderable, "leader": res.leader, "complete": res.complete}
 
 
+def _outside_instance(e) -> bool:
+    """A trace entry the family layer marks outside the statement's hypotheses (the audit
+    makes it a note, ``exactsym.audit.HYPOTHESIS_MARKED``)."""
+    witness = e.get("witness")
+    return isinstance(witness, dict) and witness.get("within_hypotheses") is False
+
+
 def _paper_findings(res) -> tuple[set, set]:
     """(labels false on the configuration, labels the trace names) from the paper alone."""
     failed = {e["statement"] for e in res.trace
-              if e.get("holds") is False and e.get("kind") != "literal-reading"}
+              if e.get("holds") is False and e.get("kind") != "literal-reading"
+              and not _outside_instance(e)}
     named = {e["algorithm"] for e in res.trace} | \
         {e["statement"] for e in res.trace if "holds" in e}
     return failed, named - set(_AUDIT_OWN) - {"Section 3"}
@@ -149,21 +178,56 @@ def _paper(config) -> dict:
     from ..analysis import analyse as run_analysis
     res = run_analysis(config, sections=("family",)).paper
     failed, named = _paper_findings(res)
-    return {"failed": sorted(failed), "applicable": sorted(named | failed),
-            "paper": _paper_summary(res)}
+    outside = {e["statement"] for e in res.trace
+               if e.get("holds") is False and _outside_instance(e)} - failed
+    below = {label for label, least in _MIN_N.items() if config.n < least}
+    outside |= failed & below
+    return {"failed": sorted(failed - below), "applicable": sorted((named | failed) - below),
+            "outside": sorted(outside), "paper": _paper_summary(res)}
 
 
 def _audit(config) -> dict:
     from ..analysis import analyse as run_analysis
     analysis = run_analysis(config, sections=("audit",))
     res, result = analysis.paper, analysis.audit
-    failed = {d["statement"] for d in result["discrepancies"]}
-    _, named = _paper_findings(res)
-    applicable = named | failed | set(_ALWAYS) | _audit_hypotheses(config.n, res, result)
     truth = result["truth"]
+    failed, reading, procedure = _split(result["discrepancies"], truth["orderable"])
+    _, named = _paper_findings(res)
+    applicable = named | failed | reading | procedure | set(_ALWAYS) | \
+        _audit_hypotheses(config.n, res, result)
+    below = {label for label, least in _MIN_N.items() if config.n < least}
+    outside = (failed | reading | procedure) & below
+    failed, reading, procedure, applicable = (x - below for x in (failed, reading,
+                                                                  procedure, applicable))
     return {"failed": sorted(failed), "applicable": sorted(applicable),
+            "outside": sorted(outside), "reading": sorted(reading),
+            "procedure": sorted(procedure),
             "truth": {"group": truth["group"], "orderable": truth["orderable"]},
             "paper": _paper_summary(res)}
+
+
+def _split(discrepancies, orderable: bool) -> tuple[set, set, set]:
+    """(failed, reading, procedure): the labels the audit lists, by what the entries say.
+    A label fails when some entry is false outright; it is ``reading`` when every entry is
+    of kind ``reading`` (false under the reading in effect, rescued by another); it is
+    ``procedure`` when the only entries are conclusions about the paper's leader on a
+    configuration its claim says is orderable and that is orderable
+    (:data:`_ORDERABLE_CLAIMS`): the fault is the procedure's, the claim holds."""
+    kinds: dict = {}
+    for d in discrepancies:
+        kinds.setdefault(d["statement"], set()).add(d.get("kind"))
+    failed, reading, procedure = set(), set(), set()
+    for label, ks in kinds.items():
+        genuine = ks - {"reading"}
+        if label in _ORDERABLE_CLAIMS and orderable:
+            genuine -= {"conclusion"}
+        if genuine:
+            failed.add(label)
+        elif "reading" in ks:
+            reading.add(label)
+        else:
+            procedure.add(label)
+    return failed, reading, procedure
 
 
 def _audit_hypotheses(n: int, res, result) -> set:

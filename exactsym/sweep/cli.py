@@ -65,6 +65,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def _paths(args) -> tuple[Path, Path]:
     out = Path(args.out)
     stem = out.with_suffix("") if out.suffix else out
+    if out.suffix == ".gz" and stem.suffix:          # r.jsonl.gz: r-cases, r.evidence.json
+        stem = stem.with_suffix("")
     cases = Path(args.cases) if args.cases else Path(f"{stem}-cases")
     evidence = Path(args.evidence) if args.evidence else Path(f"{stem}.evidence.json")
     return cases, evidence

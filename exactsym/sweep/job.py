@@ -18,7 +18,10 @@ import threading
 from . import analysis_bridge as bridge
 from .families import SweepItem
 
-__all__ = ["analyse_batch", "analyse_item", "error_record", "ConfigurationTimeout"]
+#: Record keys of labels found false but not counted as failures (analysis_bridge).
+SET_ASIDE = ("outside", "reading", "procedure")
+
+__all__ = ["SET_ASIDE", "analyse_batch", "analyse_item", "error_record", "ConfigurationTimeout"]
 
 
 class ConfigurationTimeout(Exception):
@@ -69,7 +72,7 @@ def analyse_item(item: SweepItem, what: str, budget: int = 0,
     except Exception as err:                # recorded with the input; the sweep goes on
         return error_record(item, f"{type(err).__name__}: {err}")
     record = dict(_base(item), status="ok", **result)
-    if record["failed"]:
+    if record["failed"] or any(record.get(k) for k in SET_ASIDE):
         record["points"] = [list(p) for p in item.points]
     return record
 

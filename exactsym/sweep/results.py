@@ -13,12 +13,21 @@ and a failure's input are rebuilt from the file alone.
 
 A sweep killed while writing leaves at most one partial last line; :func:`open_for_append`
 cuts it, so a resumed sweep starts from whole records and never counts one twice.
+
+**Compressed** (a name ending in ``.gz``): the same lines, gzip'd.  Each batch is
+written and sync-flushed (``Z_SYNC_FLUSH``), so everything up to the last whole batch
+decompresses even when the sweep is killed before the gzip member is closed; the reader
+(:func:`_gz_lines`) decompresses member after member and stops quietly at a truncated or
+unterminated end.  ``--resume`` on a ``.gz`` file rewrites its whole records into a fresh
+file (one pass over it, done once per resume) and then appends new gzip members.
 """
 
 from __future__ import annotations
 
+import gzip
 import json
 import os
+import zlib
 from bisect import bisect_right
 from pathlib import Path
 from typing import Iterator
@@ -79,6 +88,52 @@ def header(family: str, what: str, enumeration: int) -> dict:
                       "enumeration": enumeration}}
 
 
+def compressed(path) -> bool:
+    return str(path).endswith(".gz")
+
+
+def _gz_lines(path) -> Iterator[str]:
+    """The whole lines of a gzip file, member after member; stops at a truncated or
+    unterminated end (a killed sweep), dropping a partial last line.  A damaged piece is
+    fed again byte by byte from a copy of the decompressor, so everything before the
+    damage is kept."""
+    dec, buf, data = zlib.decompressobj(wbits=31), b"", b""
+    with open(path, "rb") as f:
+        while True:
+            data = data or f.read(1 << 12)
+            if not data:
+                break
+            piece, data = data, b""
+            saved = dec.copy()
+            try:
+                buf += dec.decompress(piece)
+            except zlib.error:
+                dec = saved
+                for k in range(len(piece)):
+                    try:
+                        buf += dec.decompress(piece[k:k + 1])
+                    except zlib.error:
+                        break
+                    if dec.eof:
+                        break
+                data = b"" if not dec.eof else dec.unused_data + piece[k + 1:]
+                if not dec.eof:
+                    f.seek(0, os.SEEK_END)      # nothing after the damage is trusted
+            if dec.eof:                         # next member, if any
+                data, dec = dec.unused_data + data, zlib.decompressobj(wbits=31)
+            *lines, buf = buf.split(b"\n")
+            for line in lines:
+                yield line.decode("utf-8") + "\n"
+
+
+def _lines(path) -> Iterator[str]:
+    if compressed(path):
+        yield from _gz_lines(path)
+        return
+    with open(path, encoding="utf-8") as f:
+        yield from f
+
+
 def record_line(record: dict) -> str:
     return json.dumps(record, sort_keys=True, separators=(",", ":")) + "\n"
 
@@ -107,8 +162,7 @@ def _cut_partial_tail(path: Path) -> None:
 
 
 def read_header(path) -> dict | None:
-    with open(path, encoding="utf-8") as f:
-        first = f.readline()
+    first = next(iter(_lines(path)), "")
     if not first.endswith("\n"):
         return None
     try:
@@ -120,12 +174,18 @@ def read_header(path) -> dict | None:
 
 def read_records(path) -> Iterator[dict]:
     """Every whole record of the file, in file order (a partial last line is skipped)."""
-    with open(path, encoding="utf-8") as f:
-        f.readline()
-        for line in f:
-            if not line.endswith("\n"):
+    lines = _lines(path)
+    next(lines, None)
+    for line in lines:
+        if not line.endswith("\n"):
+            break
+        try:
+            record = json.loads(line)
+        except json.JSONDecodeError:
+            if compressed(path):                # a damaged compressed tail: stop there
                 break
-            yield json.loads(line)
+            raise
+        yield record
 
 
 def key_of(path, index: int) -> str | None:
@@ -134,6 +194,26 @@ def key_of(path, index: int) -> str | None:
         if record["index"] == index:
             return record["key"]
     return None
+
+
+def _open(path: Path, mode: str):
+    if compressed(path):
+        return gzip.open(path, mode + "t", encoding="utf-8", compresslevel=6)
+    return open(path, mode, encoding="utf-8")
+
+
+def _rewrite_whole(path: Path) -> None:
+    """Replace a gzip results file by one holding exactly its whole lines (an unterminated
+    member or a damaged tail of a killed sweep cannot be appended to)."""
+    tmp = path.with_name(path.name + ".resume-tmp")
+    with gzip.open(tmp, "wt", encoding="utf-8", compresslevel=6) as out:
+        for line in _gz_lines(path):
+            try:
+                json.loads(line)
+            except json.JSONDecodeError:        # a damaged tail: nothing after it is kept
+                break
+            out.write(line)
+    os.replace(tmp, path)
 
 
 def open_for_append(path, family: str, what: str, resume: bool, enumeration: int):
@@ -158,14 +238,17 @@ def open_for_append(path, family: str, what: str, resume: bool, enumeration: int
             raise ResultsError(f"{path}: written by another version of the enumerators "
                                f"({head.get('enumeration')}, now {enumeration}); start a "
                                "new results file")
-        _cut_partial_tail(path)
+        if compressed(path):
+            _rewrite_whole(path)
+        else:
+            _cut_partial_tail(path)
         for record in read_records(path):
             done.add(record["index"])
-        handle = open(path, "a", encoding="utf-8")
+        handle = _open(path, "a")
     else:
         if path.parent and not path.parent.exists():
             os.makedirs(path.parent, exist_ok=True)
-        handle = open(path, "w", encoding="utf-8")
+        handle = _open(path, "w")
         handle.write(json.dumps(header(family, what, enumeration), sort_keys=True) + "\n")
         handle.flush()
     return handle, done

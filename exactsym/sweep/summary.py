@@ -17,6 +17,7 @@ from pathlib import Path
 
 from . import analysis_bridge as bridge
 from .casefile import case_text
+from .job import SET_ASIDE
 from .results import IndexSet, read_header, read_records
 
 __all__ = ["Summary", "LabelSummary", "summarise", "write_cases", "ledger_evidence",
@@ -31,6 +32,9 @@ class LabelSummary:
     applicable: int | None            # configurations where its hypotheses hold
     failures: int                     # configurations where it is false
     smallest: dict | None = None      # the record of the smallest counterexample
+    outside: int = 0                  # false only outside its hypotheses (not counted)
+    reading: int = 0                  # false only under a reading the audit names
+    procedure: int = 0                # the claim holds; the audit blames the procedure
 
 
 @dataclass(frozen=True)
@@ -61,6 +65,7 @@ def summarise(path) -> Summary:
     applicable: dict = {}
     failures: dict = {}
     smallest: dict = {}
+    aside: dict = {k: {} for k in SET_ASIDE}
     groups: dict = {}
     tracks = what in ("audit", "paper")
     for record in read_records(path):
@@ -78,15 +83,20 @@ def summarise(path) -> Summary:
             groups[name] = groups.get(name, 0) + 1
         for label in record.get("applicable") or ():
             applicable[label] = applicable.get(label, 0) + 1
+        for kind, counts in aside.items():
+            for label in record.get(kind) or ():
+                counts[label] = counts.get(label, 0) + 1
         for label in record["failed"]:
             failures[label] = failures.get(label, 0) + 1
             best = smallest.get(label)
             if best is None or _rank(record) < _rank(best):
                 smallest[label] = record
     order = list(bridge.statement_labels(what))
-    order += sorted((set(failures) | set(applicable)) - set(order))
+    order += sorted((set(failures) | set(applicable) | set().union(*aside.values()))
+                    - set(order))
     labels = tuple(LabelSummary(label, applicable.get(label, 0) if tracks else None,
-                                failures.get(label, 0), smallest.get(label))
+                                failures.get(label, 0), smallest.get(label),
+                                **{k: aside[k].get(label, 0) for k in SET_ASIDE})
                    for label in order)
     return Summary(head["family"], what, configurations, errors, labels,
                    tuple(error_examples), dict(sorted(groups.items())))
@@ -140,7 +150,20 @@ def summary_json(summary: Summary, cases: dict) -> dict:
                            if e.applicable is not None},
             "smallest": {e.label: _smallest_data(e, cases) for e in summary.labels
                          if e.smallest is not None},
+            **{k: {e.label: getattr(e, k) for e in summary.labels if getattr(e, k)}
+               for k in SET_ASIDE},
             "groups": summary.groups}
+
+
+_ASIDE_TEXT = {"outside": "outside its hypotheses",
+               "reading": "only under a reading the audit names (rescued by another)",
+               "procedure": "by the paper's procedure while the claim holds"}
+
+
+def _aside_text(e: LabelSummary) -> str:
+    """What was found false but not counted, in words (empty when nothing)."""
+    parts = [f"{getattr(e, k):,} {_ASIDE_TEXT[k]}" for k in SET_ASIDE if getattr(e, k)]
+    return f"; false, not counted: {', '.join(parts)}" if parts else ""
 
 
 def ledger_evidence(summary: Summary, cases: dict, results: str | None = None) -> dict:
@@ -165,9 +188,12 @@ def ledger_evidence(summary: Summary, cases: dict, results: str | None = None) -
             text = f"holds on all {n:,} configurations of {fam}"
             if e.applicable is not None and e.applicable != n:
                 text += f" (its hypotheses hold on {e.applicable:,} of them)"
+        text += _aside_text(e)
         items.append({"statement": e.label, "verdict": verdict, "text": text + caveat,
                       "configurations": n, "applicable": e.applicable,
-                      "failures": e.failures, "smallest": _smallest_data(e, cases)})
+                      "failures": e.failures, "outside": e.outside,
+                      "reading": e.reading, "procedure": e.procedure,
+                      "smallest": _smallest_data(e, cases)})
     return {"format": EVIDENCE_FORMAT, "source": "exactsym sweep", "family": fam,
             "what": summary.what, "results": results, "configurations": n,
             "errors": summary.errors, "evidence": items}
@@ -183,13 +209,16 @@ def summary_table(summary: Summary, cases: dict) -> str:
         lines.append("groups: " + ", ".join(f"{g} {c:,}" for g, c in summary.groups.items()))
     rows = [("statement", "hypotheses hold", "fails", "smallest counterexample")]
     for e in summary.labels:
-        if not e.failures and not e.applicable:
+        if not e.failures and not e.applicable and not _aside_text(e):
             continue
         s = e.smallest
         small = "-" if s is None else \
             f"{s['n']} robot{'s' if s['n'] != 1 else ''}, denominator {s['denominator']}: {s['key']}"
         if s is not None and e.label in cases:
             small += f"  -> {cases[e.label]}"
+        small += _aside_text(e).replace("; false, not counted", "  (not counted")
+        if _aside_text(e):
+            small += ")"
         rows.append((e.label, "-" if e.applicable is None else f"{e.applicable:,}",
                      f"{e.failures:,}", small))
     if len(rows) > 1:
