@@ -13,13 +13,15 @@ import argparse
 import json
 import sys
 from fractions import Fraction
+from pathlib import Path
 
+from . import drawing
 from .cases import expectation_failures, run_settings, settings_of
 from .invariants import ALL
 from .paper_bridge import GatheringInputError, read_case
 from .robot import READINGS, Readings
 from .schedulers import SCHEDULERS, TraceMismatch
-from .trace import read_trace, replay, result_dict, same_result, write_trace
+from .trace import read_trace, replay, result_dict, same_result, trace_points, write_trace
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -41,6 +43,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="comma-separated invariants to check (default: all, I1..I10)")
     parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
     parser.add_argument("--trace", metavar="OUT", default=None, help="write the trace here")
+    drawing.add_arguments(parser)
 
 
 def add_replay_arguments(parser: argparse.ArgumentParser) -> None:
@@ -48,6 +51,7 @@ def add_replay_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", nargs="?", default=None,
                         help="the configuration file the trace must match (optional)")
     parser.add_argument("--json", action="store_true")
+    drawing.add_arguments(parser)
 
 
 def _fail(msg: str) -> int:
@@ -121,6 +125,21 @@ def _text(res, settings) -> str:
     return "\n".join(lines)
 
 
+def _pictures(points, res, args, name: str) -> int | None:
+    """Write the pictures asked for (messages on stderr when --json); 2 on failure."""
+    if not drawing.wants_pictures(args):
+        return None
+    try:
+        lines = drawing.write_pictures(points, res, args, name)
+    except drawing.PicturesUnavailable as err:
+        return _fail(str(err))
+    except (OSError, ValueError) as err:
+        return _fail(f"cannot write the pictures: {err}")
+    for line in lines:
+        print(f"picture: {line}", file=sys.stderr if args.json else sys.stdout)
+    return None
+
+
 def run(args) -> int:
     try:
         points, _name, expect, source = read_case(args.file)
@@ -146,7 +165,7 @@ def run(args) -> int:
     failures = expectation_failures(expect, res)
     if args.trace:
         try:
-            write_trace(args.trace, points, res, settings)
+            write_trace(args.trace, points, res, settings, Path(args.file).name)
         except OSError as err:
             return _fail(f"cannot write the trace: {err}")
     if args.json:
@@ -159,6 +178,9 @@ def run(args) -> int:
         print(_text(res, settings))
         if res.outcome == "max-events" and args.trace:
             print(f"stopped at --max-events; trace written to {args.trace}")
+    failed = _pictures(points, res, args, Path(args.file).name)
+    if failed:
+        return failed
     for f in failures:
         print(f"{args.file}: {f}", file=sys.stderr)
     return 1 if failures else 0
@@ -184,6 +206,10 @@ def run_replay(args) -> int:
               + f", {res.events} events, {res.looks} Looks")
         print("identical to the recorded run" if not diff else
               f"DIFFERS from the recorded run on: {', '.join(diff)}")
+    failed = _pictures(points if points is not None else trace_points(data), res, args,
+                       data.get("name") or Path(args.trace).name)
+    if failed:
+        return failed
     return 1 if diff else 0
 
 

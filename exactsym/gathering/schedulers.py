@@ -45,6 +45,7 @@ class Result:
     violation: dict | None
     pattern: dict
     actions: list = field(default_factory=list)
+    log: tuple = ()               # world.Step per Look and advance: the paths, exact
 
     @property
     def label(self) -> str | None:
@@ -128,7 +129,7 @@ def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Re
     checks = dict(checker.counts)
     checks["skipped"] = checker.undecided_fresh   # I3/I9 Looks the kernel could not hold
     return Result(outcome, detail, world.events, world.looks, checks, violation,
-                  pattern, r.actions)
+                  pattern, r.actions, tuple(world.log))
 
 
 def _terminal(world: World):

@@ -84,6 +84,20 @@ IDENTITY = Frame()
 MIRROR = Frame(reflect=True)
 
 
+@dataclass(frozen=True)
+class Step:
+    """One entry of a run's path log: at event ``event`` robot ``robot`` Looked
+    (``kind = "look"``; ``pieces``: the path it planned, world frame, empty when it
+    stays; ``centre``: the C it saw) or advanced (``kind = "advance"``; ``pieces``: the
+    one piece it moved along).  Exact; converted to floats only to draw
+    (:mod:`.drawing`)."""
+    event: int
+    robot: int
+    kind: str
+    pieces: tuple
+    centre: tuple | None = None
+
+
 @dataclass
 class RobotState:
     pos: tuple
@@ -112,6 +126,7 @@ class World:
         self.checker = checker
         self.events = 0
         self.looks = 0
+        self.log: list = []       # Step per Look and per advance (what a picture draws)
 
     @property
     def n(self) -> int:
@@ -144,6 +159,8 @@ class World:
             rob.target = paths[i][-1].final
             rob.centre = frame.to_world(d.centre)
             rob.r_set = frozenset(k for k in range(self.n) if k not in d.pattern.robots)
+        self.log.append(Step(self.events, i, "look", tuple(paths.get(i) or ()),
+                             frame.to_world(d.centre)))
         if self.checker is not None:
             self.checker.after_look(self, i, frame, d, paths)
         return d
@@ -169,6 +186,7 @@ class World:
             if (g.dist2(rob.start, rob.pos) - MQ.rational(self.delta) ** 2).sign() < 0:
                 raise ValueError(f"robot {i} cannot be stopped before delta")
             rob.path = []
+        self.log.append(Step(self.events, i, "advance", (done,)))
         if self.checker is not None:
             self.checker.after_advance(self, i, done)
         if not rob.path:
