@@ -35,6 +35,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--reading", action="append", default=None, metavar="A1=...",
                         help="a reading switch: " + "; ".join(
                             f"{k}={'|'.join(v)}" for k, v in READINGS.items()))
+    parser.add_argument("--algorithm", choices=("paper", "corrected"), default=None,
+                        help="paper: GatheringPattern and FormGPattern as printed (default, "
+                        "or the case's gather_algorithm); corrected: a repaired variant "
+                        "(docs/gathering.md)")
     parser.add_argument("--seed", type=int, default=None)
     parser.add_argument("--search", action="store_true",
                         help="search the adversary's choices for a shortest violation")
@@ -65,6 +69,8 @@ def _settings(args, expect: dict) -> dict:
         s["scheduler"] = args.scheduler
     if args.seed is not None:
         s["seed"] = args.seed
+    if args.algorithm is not None:
+        s["algorithm"] = args.algorithm
     if args.max_events is not None:
         s["max_events"] = args.max_events
     if args.reading:
@@ -108,6 +114,7 @@ def _validate_start(points, source) -> None:
 def _text(res, settings) -> str:
     lines = [f"outcome: {res.outcome}" + (f" ({res.label})" if res.label else ""),
              f"detail: {res.detail}",
+             f"algorithm: {settings.get('algorithm', 'paper')}, "
              f"scheduler: {settings['scheduler']}, seed {settings['seed']}, "
              f"{'rigid' if settings['rigid'] else 'non-rigid ' + settings['delta']}, readings "
              + ", ".join(f"{k}={v}" for k, v in settings["readings"].items()),

@@ -101,10 +101,12 @@ def _status(world: World):
 def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Readings(),
         rigid: bool = True, delta: Fraction | None = None, max_events: int = 2000,
         checker: Checker | None = None, progress: bool = False, reflections: bool = True,
-        actions: list | None = None) -> Result:
-    """Run the gathering algorithm; ``actions`` replays a recorded adversary instead."""
+        actions: list | None = None, algorithm: str = "paper") -> Result:
+    """Run the gathering algorithm (``algorithm``: "paper", the paper's GatheringPattern
+    and FormGPattern, or "corrected", :mod:`.corrected`); ``actions`` replays a recorded
+    adversary instead."""
     checker = checker if checker is not None else Checker()
-    world = World(points, readings, rigid, delta, checker)
+    world = World(points, readings, rigid, delta, checker, algorithm)
     r = _Run(world, max_events, progress)
     rng = random.Random(seed)
     outcome, detail, violation = "max-events", f"stopped after {max_events} events", None

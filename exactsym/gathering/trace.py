@@ -74,11 +74,13 @@ def replay(data: dict, points=None) -> Result:
         readings = Readings(**s.get("readings", {}))
         enabled = frozenset(s.get("invariants", ALL))
         delta = None if s.get("delta") is None else Fraction(s["delta"])
+        if s.get("algorithm", "paper") not in ("paper", "corrected"):
+            raise ValueError(f"unknown algorithm {s.get('algorithm')!r}")
     except (TypeError, ValueError) as err:
         raise TraceMismatch(f"trace settings are unusable ({err})") from None
     return run(own, readings=readings, rigid=s.get("rigid", True), delta=delta,
                max_events=int(s.get("max_events", 10 ** 9)), checker=Checker(enabled=enabled),
-               actions=data["actions"])
+               actions=data["actions"], algorithm=s.get("algorithm", "paper"))
 
 
 def same_result(recorded: dict, res: Result) -> list:

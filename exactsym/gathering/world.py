@@ -28,7 +28,8 @@ from flint import fmpq
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
-from .robot import Readings, decide
+from .corrected import decide_for
+from .robot import Readings
 
 
 @dataclass(frozen=True)
@@ -118,7 +119,9 @@ class World:
     """Positions and pending moves; the invariant checker is told about every action."""
 
     def __init__(self, points, readings: Readings = Readings(), rigid: bool = True,
-                 delta: Fraction | None = None, checker=None):
+                 delta: Fraction | None = None, checker=None, algorithm: str = "paper"):
+        self.algorithm = algorithm
+        self.decide = decide_for(algorithm)     # robot.decide or corrected.decide_corrected
         self.robots = [RobotState((MQ.coerce(x), MQ.coerce(y))) for x, y in points]
         self.readings = readings
         self.rigid = rigid
@@ -139,7 +142,8 @@ class World:
         """The decision every robot would reach on a fresh Look now in ``frame``, with
         its moves mapped to the world frame: ``(decision, {robot: world path})``."""
         local = tuple(frame.to_local(p) for p in self.positions())
-        d = decide(local, self.readings, fmpq(frame.unit.numerator, frame.unit.denominator))
+        d = self.decide(local, self.readings,
+                        fmpq(frame.unit.numerator, frame.unit.denominator))
         paths = {m.robot: [frame.piece_to_world(pc) for pc in m.path] for m in d.moves}
         return d, paths
 
