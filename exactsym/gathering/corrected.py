@@ -19,9 +19,10 @@ products, never by a sense of rotation of the observer's frame).
 2. **P** = the pattern about C, **R** = the others; R empty: terminated.
 3. **The mover**: the robot of R nearest to C (the paper's gather-min-distance, so I4
    holds); several equally near: the first, in order of distance to its target slot
-   (nearest first), whose path exists; still tied: the one whose sorted squared
-   distances to the other robots are lexicographically smallest (needs no handedness);
-   equal profiles: stay (no asymmetry is used).
+   (nearest first), whose path exists; still tied: preferring movers after whose move
+   the robots left in R have pairwise different profiles (sorted squared distances to
+   the others), the one whose own profile is lexicographically smallest (needs no
+   handedness); equal profiles: stay (no asymmetry is used).
    A mover is allowed only if C cannot change during its move: when M = 1 the SEC of the
    other robots must be the SEC of all (the mover is not needed to support it); when
    M >= 2 and several robots tie for the centre, for every other candidate k the robots
@@ -29,22 +30,25 @@ products, never by a sense of rotation of the observer's frame).
    distances), or, when the mover is the last robot of R, every point of its path must be
    nearer to C than to k.
 4. **The target**: C when nobody is at C; else, with l the last layer of P, the radial
-   point at 2(l + 1) when layer l is full (a lone robot starts the next layer), or the
+   point at 2 when P is the robot at C alone, the point at 2(l + 1) on the ray of the
+   robot of layer l nearest in angle when layer l is full (a lone robot starts the next
+   layer), or the
    free slot next to an end of layer l's chain: while P has at most 4 robots, the one
    farther from the robots of R that stay (so the centre stays unique in f), else the
    one nearer to the mover in angle (the larger dot product; a tie: stay).  Robots
    within 2 of an empty C other than the nearest: the farthest of them first moves
    radially out to distance 2 (C cannot be taken while two robots are that close).
-5. **Collision-free paths** (radii only decrease or stay, so I4 holds along the path):
+5. **Collision-free paths** (distances to C never grow, so I4 holds along the path):
    to C: the segment, or else a detour -- an arc about C on the mover's circle by a
    rational rotation (tan of the half angle 1/16, 1/8, ..., 1; the sense away from the
    blocking robot, both senses when robots block on both sides), then the segment to C;
-   to a slot: radially to radius h, along the circle of radius h about C to the slot's
-   ray, radially to the slot, for h = the mover's own radius, h = 2l + 2 (outside the
-   layer's chain) and h = 2l (the paper's path, last: a mover on the layer's circle beside
-   a chain of one makes two chains tie); to a new layer: the radial segment.
-   The first path free of every other robot (closer than 2 nowhere, touching allowed)
-   is taken; none: stay.
+   to a point of a layer: the paths of :func:`_to_slot_paths` (along the mover's own
+   circle then radially in; a segment to the target's ray outside the layer then
+   radially in; the straight segment), each of which a fresh Look finds again from any
+   of its points.  The paper's path along the layer's own circle is not used: a mover
+   there beside a chain of one robot makes two chains tie, and P shrinks while it
+   moves.  The first path free of every other robot (closer than 2 nowhere, touching
+   allowed) that keeps C is taken; none: stay.
 6. **The final robots**: no leader election at all -- the rule above is the same for
    two or three robots left as for many (nearest to C, ties by the slot geometry), so
    an asymmetric triangle of three (where the paper's Elect_Leader_Asym elects nobody)
@@ -58,6 +62,7 @@ new layer that is blocked, and a tie of the centre rule with no allowed mover.
 from __future__ import annotations
 
 from functools import lru_cache
+from math import isqrt
 
 from flint import fmpq
 
@@ -191,38 +196,76 @@ def _paths_to_centre(p, centre, pts, mover, unit2):
             yield g.arc_path(centre, p, q, sense) + [g.Segment(q, centre)]
 
 
-def _to_slot_paths(p, centre, target, l, unit):
-    """Radially to radius h, along the circle of radius h to the slot's ray, radially in;
-    h = the mover's own radius, 2l + 2, 2l; each the shorter way round, then the longer."""
+def _ray_point(centre, p, h):
+    """A rational point on the ray from C through ``p`` at distance at least ``h``, less
+    than 1/8 beyond (the first of ``C + e m/den``, ``e`` the ray's primitive integer
+    direction, ``den = 8 (isqrt|e|^2 + 1)``, m = 1, 2, ...), found alike from every point
+    of the ray; None when C is irrational or the ray's slope is."""
+    v = g.sub(p, centre)
+    if not (centre[0].is_rational() and centre[1].is_rational()):
+        return None
+    if v[1].is_zero():
+        e = (1 if v[0].sign() > 0 else -1, 0)
+    else:
+        ratio = v[0] / v[1]
+        if not ratio.is_rational():
+            return None
+        q = ratio.to_fmpq()
+        e = (int(q.p), int(q.q))
+        if (v[1].sign() < 0) == (e[1] > 0):
+            e = (-e[0], -e[1])
+    e2 = e[0] * e[0] + e[1] * e[1]
+    den = 8 * (isqrt(e2) + 1)                       # steps of |e|/den < 1/8 along the ray
+    need = den * den * fmpq(h) * fmpq(h) / e2       # m^2 >= den^2 h^2 / |e|^2
+    m = max(1, isqrt(int(need.p) // int(need.q)))
+    while m * m < need:
+        m += 1
+    k = fmpq(m, den)
+    return (centre[0] + k * e[0], centre[1] + k * e[1])
+
+
+def _to_slot_paths(p, centre, target, l, unit, limit2=None):
+    """Paths to a point of layer l (``|target - C| = 2l unit``) that the mover finds
+    again from any point of them (so a fresh Look on the way plans the same target):
+
+    * on the target's ray: the segment;
+    * along the mover's own circle about C, the shorter way, to the target's ray, then
+      radially in (needs a rational squared radius: every point of the arc has it, and
+      the radial part is on the target's ray);
+    * for h = 2l + 2, 2l + 4, 2l + 6 with h^2 < ``limit2`` (the squared distance of R's
+      next robot to C: the mover stays the nearest; the condition does not change on the
+      way): radially in to the rational point of the mover's ray just beyond radius h
+      (:func:`_ray_point`, the same from every point of the ray), along that circle to
+      the target's ray, radially in; then the segment to the target's ray at radius h
+      and radially in (a point of the segment finds the same path);
+    * the segment to the target.
+
+    The mover's distance to C stays below ``limit2`` along them (I4)."""
     v = g.sub(p, centre)
     w = g.sub(target, centre)                          # |w| = 2l unit
     if g.cross(v, w).is_zero() and g.dot(v, w).sign() > 0:
-        yield [g.Segment(p, target)]                   # already on the slot's ray
+        yield [g.Segment(p, target)]                   # already on the target's ray
         return
     r2 = g.dot(v, v)
-    if not r2.is_rational():
-        return
-    rho = sqrt_rational(r2.to_fmpq())
-    # on the layer's own circle last: a mover there beside a chain of one robot makes
-    # two chains tie, and the pattern about C shrinks while it moves
-    heights = [rho, MQ.rational((2 * l + 2) * unit), MQ.rational(2 * l * unit)]
-    seen = []
-    for h in heights:
-        if (h - rho).sign() > 0 or any(h == x for x in seen):
-            continue
-        seen.append(h)
-        a = g.add(centre, g.scale(v, h / rho)) if h != rho else p
-        b = g.add(centre, g.scale(w, h / (2 * l * unit)))
-        short = 1 if g.cross(g.sub(a, centre), w).sign() > 0 else -1
-        for sense in (short, -short):      # the shorter way round, then the longer
-            pieces = [] if a == p else [g.Segment(p, a)]
-            if a != b:
-                pieces += g.arc_path(centre, a, b, sense)
-            elif sense != short:
-                continue
-            if b != target:
-                pieces.append(g.Segment(b, target))
-            yield pieces
+    two_l = 2 * l * unit
+    if r2.is_rational():
+        rho = sqrt_rational(r2.to_fmpq())
+        b = g.add(centre, g.scale(w, rho / two_l))
+        sense = 1 if g.cross(v, w).sign() > 0 else -1
+        yield g.arc_path(centre, p, b, sense) + [g.Segment(b, target)]
+    for h in (two_l + 2 * unit, two_l + 4 * unit, two_l + 6 * unit):
+        if limit2 is not None and (limit2 - h * h).sign() <= 0:
+            continue            # I4: the mover stays strictly nearer to C than R's others
+        a = _ray_point(centre, p, h)
+        if a is not None and (r2 - g.dist2(a, centre)).sign() >= 0:
+            ra = sqrt_rational(g.dist2(a, centre).to_fmpq())
+            b = g.add(centre, g.scale(w, ra / two_l))
+            sense = 1 if g.cross(v, w).sign() > 0 else -1
+            pieces = ([g.Segment(p, a)] if a != p else []) + g.arc_path(centre, a, b, sense)
+            yield pieces + [g.Segment(b, target)]
+        b = g.add(centre, g.scale(w, fmpq(h) / two_l))
+        yield [g.Segment(p, b), g.Segment(b, target)]
+    yield [g.Segment(p, target)]
 
 
 def _target(p, centre, pat, pts, unit, stay):
@@ -234,8 +277,20 @@ def _target(p, centre, pat, pts, unit, stay):
     if pat.centre_robot is None:
         return centre, 0, "centre"
     l = pat.last_layer
+    v = g.sub(p, centre)
     if pat.last_full():
-        return g.radial_point(centre, p, 2 * (l + 1) * unit), l + 1, "new-layer"
+        if l == 0:
+            return g.radial_point(centre, p, 2 * unit), 1, "new-layer"
+        # a lone robot starts layer l + 1 on the ray of the robot of layer l nearest in
+        # angle (a point that does not depend on where the mover is on its way)
+        ring = pat.layers[-1]
+        dots = [(g.dot(v, g.sub(pts[k], centre)), k) for k in ring]
+        top = max((d for d, _ in dots), key=_Key)
+        nearest = [k for d, k in dots if d == top]
+        if len(nearest) > 1:
+            return None, l + 1, "slot"
+        ray = g.sub(pts[nearest[0]], centre)
+        return g.add(centre, g.scale(ray, fmpq(l + 1, l))), l + 1, "slot"
     chain = pat.layers[-1]
     s_ccw = slot(centre, pts[chain[-1]], l, 1)
     s_cw = slot(centre, pts[chain[0]], l, -1)
@@ -245,7 +300,6 @@ def _target(p, centre, pat, pts, unit, stay):
         c = (_far2(pts, s_ccw, stay) - _far2(pts, s_cw, stay)).sign()
         if c:
             return (s_ccw if c > 0 else s_cw), l, "slot"
-    v = g.sub(p, centre)
     a, b = g.dot(v, g.sub(s_ccw, centre)), g.dot(v, g.sub(s_cw, centre))
     c = (a - b).sign()
     if c == 0:
@@ -257,6 +311,16 @@ def _profile(pts, i):
     """The squared distances from robot i to the others, sorted: a tie-break that needs
     no handedness (equal profiles: no choice without asymmetry)."""
     return sorted((g.dist2(pts[i], q) for j, q in enumerate(pts) if j != i), key=_Key)
+
+
+def _distinct_after(pts, option, R) -> bool:
+    """After ``option`` = (robot, path) is made, do the other robots of R have pairwise
+    different distance profiles?"""
+    i, path = option
+    after = list(pts)
+    after[i] = path[-1].final
+    rest = [_profile(after, j) for j in R if j != i]
+    return all(_profile_less(a, b) != 0 for k, a in enumerate(rest) for b in rest[k + 1:])
 
 
 def _profile_less(a, b) -> int:
@@ -306,6 +370,10 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
                                       len(tied) > 1)) is not None]
         if len(found) > 1:
             # the smallest profile of distances to the others; equal profiles: stay
+            # ... preferring a mover after whose move the robots left in R still have
+            # pairwise different profiles (ties can still be broken then)
+            breakable = [f for f in found if _distinct_after(pts, f, R)]
+            found = breakable or found
             profiles = {f[0]: _profile(pts, f[0]) for f in found}
             best = found[0]
             for f in found[1:]:
@@ -361,7 +429,9 @@ def _first_path(option, pts, centre, cands, R, unit, pat, tied_start):
     elif kind == "new-layer":
         paths = iter([[g.Segment(pts[i], target)]])
     else:
-        paths = _to_slot_paths(pts[i], centre, target, l, unit)
+        others = [g.dist2(pts[j], centre) for j in R if j != i]
+        limit2 = min(others, key=_Key) if others else None
+        paths = _to_slot_paths(pts[i], centre, target, l, unit, limit2)
     for path in paths:
         if not path or (tied_start and isinstance(path[0], g.Arc)):
             continue                    # tied at the Look: the first piece must go in (I4)
