@@ -196,24 +196,42 @@ def _paths_to_centre(p, centre, pts, mover, unit2):
             yield g.arc_path(centre, p, q, sense) + [g.Segment(q, centre)]
 
 
+def _ray_direction(centre, p):
+    """The primitive integer direction of the ray from C through ``p`` (the same from
+    every point of the ray), or None when C is irrational or the slope is."""
+    v = g.sub(p, centre)
+    if not (centre[0].is_rational() and centre[1].is_rational()):
+        return None
+    if v[1].is_zero():
+        return (1 if v[0].sign() > 0 else -1, 0)
+    ratio = v[0] / v[1]
+    if not ratio.is_rational():
+        return None
+    q = ratio.to_fmpq()
+    e = (int(q.p), int(q.q))
+    if (v[1].sign() < 0) == (e[1] > 0):
+        e = (-e[0], -e[1])
+    return e
+
+
+def _layer_one_point(centre, p, unit):
+    """The point of layer 1 on the mover's ray: by the ray's integer direction when it has
+    one (so a robot stopped on its way finds the same point), else by its radius."""
+    e = _ray_direction(centre, p)
+    if e is None:
+        return g.radial_point(centre, p, 2 * unit)
+    k = sqrt_rational(fmpq(1, e[0] * e[0] + e[1] * e[1])) * (2 * unit)
+    return (centre[0] + k * e[0], centre[1] + k * e[1])
+
+
 def _ray_point(centre, p, h):
     """A rational point on the ray from C through ``p`` at distance at least ``h``, less
     than 1/8 beyond (the first of ``C + e m/den``, ``e`` the ray's primitive integer
     direction, ``den = 8 (isqrt|e|^2 + 1)``, m = 1, 2, ...), found alike from every point
     of the ray; None when C is irrational or the ray's slope is."""
-    v = g.sub(p, centre)
-    if not (centre[0].is_rational() and centre[1].is_rational()):
+    e = _ray_direction(centre, p)
+    if e is None:
         return None
-    if v[1].is_zero():
-        e = (1 if v[0].sign() > 0 else -1, 0)
-    else:
-        ratio = v[0] / v[1]
-        if not ratio.is_rational():
-            return None
-        q = ratio.to_fmpq()
-        e = (int(q.p), int(q.q))
-        if (v[1].sign() < 0) == (e[1] > 0):
-            e = (-e[0], -e[1])
     e2 = e[0] * e[0] + e[1] * e[1]
     den = 8 * (isqrt(e2) + 1)                       # steps of |e|/den < 1/8 along the ray
     need = den * den * fmpq(h) * fmpq(h) / e2       # m^2 >= den^2 h^2 / |e|^2
@@ -280,7 +298,7 @@ def _target(p, centre, pat, pts, unit, stay):
     v = g.sub(p, centre)
     if pat.last_full():
         if l == 0:
-            return g.radial_point(centre, p, 2 * unit), 1, "new-layer"
+            return _layer_one_point(centre, p, unit), 1, "new-layer"
         # a lone robot starts layer l + 1 on the ray of the robot of layer l nearest in
         # angle (a point that does not depend on where the mover is on its way)
         ring = pat.layers[-1]
