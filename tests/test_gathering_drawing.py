@@ -139,3 +139,20 @@ def test_planned_paths_and_contact_points_survive_the_json_form():
     pic = drawing.run_picture(points, res, "case")
     assert pic.violation.at is not None
     assert run_from_dict(json.loads(json.dumps(run_to_dict(pic)))) == pic
+
+
+def test_a_gathered_run_has_one_frame_per_event_and_ends_in_the_pattern():
+    from exactsym.gathering.cases import run_case_file
+    path = ROOT / "cases/gathering/corrected-obstacle-beside-path.toml"
+    points = read_case(path)[0]
+    res = run_case_file(path).result
+    assert res.outcome == "gathered"
+    pic = drawing.run_picture(points, res, "corrected")
+    assert pic.violation is None and pic.planned == ()
+    assert len(frame_times(pic)) == res.events + 1
+    from exactsym.plot.run import position
+    ends = [position(pic, i, res.events) for i in range(len(points))]
+    c = pic.layers[0].centre
+    # every robot ends at C or on layer 1 (distance 2), drawn from the exact log
+    assert sorted(round(((x - c[0]) ** 2 + (y - c[1]) ** 2) ** 0.5, 9) for x, y in ends) == \
+        [0.0, 2.0, 2.0, 2.0, 2.0]
