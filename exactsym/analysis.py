@@ -25,7 +25,7 @@ from .symmetry import SymmetryGroup, symmetry_group
 #: The parts :func:`analyse` can compute, in the order it computes them.
 PARTS = ("truth", "polygons", "family", "audit")
 #: What each part needs besides the levels (always computed).
-NEEDS = {"truth": (), "polygons": (), "family": (), "audit": ("truth", "family")}
+NEEDS = {"truth": (), "polygons": (), "family": (), "audit": ("truth", "polygons", "family")}
 
 
 @dataclass(frozen=True)
@@ -63,7 +63,21 @@ class Analysis:
 
 def analyse(config: Configuration, sections=PARTS, options: Options | None = None) -> Analysis:
     """Compute ``sections`` (names from :data:`PARTS`, and what they need) of ``config``,
-    each once, in the order of :data:`PARTS`.  Raises ValueError for an unknown name."""
+    each once, in the order of :data:`PARTS`.  Raises ValueError for an unknown name.
+
+    >>> from exactsym import analyse, load, report_text
+    >>> a = analyse(load("cases/discrepancies/d3-hexagon.toml"))
+    >>> a.truth.name, a.truth.mirrors, a.truth.orderable, a.audit["agrees"]
+    ('D3', 3, False, False)
+    >>> [d["statement"] for d in a.audit["discrepancies"]]
+    ['obs-exh-poly', 'Check_Symmetry_Even']
+    >>> [len(level.points) for level in a.levels.levels]
+    [6]
+    >>> print(report_text(a).splitlines()[4])
+    symmetry   D3: 3 rotations about C (by multiples of 1/3 turn), 3 mirror lines through C (one between robots 0 and 1, which it swaps)
+    >>> analyse(a.config, sections=["truth"]).paper is None     # only what is asked for
+    True
+    """
     options = options if options is not None else Options()
     wanted = set(sections)
     unknown = wanted - set(PARTS)
@@ -83,7 +97,7 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
         audited = run_audit(config, levels, paper, {"reading": options.reading,
                                                     "degree": options.degree,
                                                     "invariance": options.invariance},
-                            group=truth) if "audit" in wanted else None
+                            group=truth, level_verdicts=verdicts) if "audit" in wanted else None
     return Analysis(config, options, levels, truth, verdicts, strings, paper, audited)
 
 

@@ -1,10 +1,13 @@
-"""The paper against the ground truth, on one configuration.
+"""The paper against the ground truth, and against its own definitions, on one configuration.
 
 :func:`audit` runs the paper's family algorithms (:mod:`exactsym.paper.family`) and the
 ground truth (:mod:`exactsym.symmetry`), and lists every statement of the paper whose
 claim is false on this configuration, in the paper's order, each as
-``{"statement": label, "says": ..., "truth": ..., "witness": ...}``:
+``{"statement": label, "says": ..., "truth": ..., "witness": ..., "kind": ...}``:
 
+* the per-level statements (:mod:`exactsym.audit_levels`: Theorem 1, ``lemma-straight-sym``,
+  the two checks, ``obs-exh-poly``, ``lemma-sym-regular``, Elect_Leader_Asym), from the
+  polygon layer's verdicts of each level;
 * statements about orderability, checked against the truth: ``lemma-sym-ord``,
   ``lem-asym-ord`` (each level), ``lem-sym-notord`` and ``lem-asym-pair-ord`` (each pair of
   levels: the union of the two levels, symmetries about C), ``lem-all-pair-asym-ord``,
@@ -12,18 +15,26 @@ claim is false on this configuration, in the paper's order, each as
 * statements the paper's own notions contradict (recorded by the family layer with
   ``holds`` False: ``obs-gcd``, ``lem-los-gij``, ``obs-merg-asym-pair``, ... and the
   algorithms' guarantees: MakeAsym's "G_t is asymmetric", an unchanged SEC,
-  ``obs-v-move``, ``lem-vl-move``, ties in Elect_Leader_Asym).  Defects of the *literal*
-  reading of a printed loop (non-termination) are documented in the trace and in
-  ``docs/interpretations.md`` but are not discrepancies of the configuration;
-* the conclusions: ``paper.orderable`` against the truth's ``orderable``; when the truth
-  is orderable the paper's leader must not depend on the observer: the procedure is
-  recomputed on exactly transformed inputs (a reflection; a rotation, scaling and, for
-  Cartesian inputs, translation), indices mapped back, and two frames electing
-  different leaders (or moving different robots) are the witness; when the truth is not
-  orderable the first robot the paper makes act must be fixed by every symmetry.
+  ``obs-v-move``, ``lem-vl-move``, ties in Elect_Leader_Asym);
+* the conclusions: ``paper.orderable`` against the truth's ``orderable`` (GatheringPattern,
+  for n >= 5 only); when the truth is orderable the paper's leader must not depend on the
+  observer: the procedure is recomputed on exactly transformed inputs (a reflection; a
+  rotation, scaling and, for Cartesian inputs, translation), indices mapped back, and two
+  frames electing different leaders (or moving different robots) are the witness
+  (:func:`_frame_difference` tells the sense of an epsilon move and the reading of
+  Elect_Leader_Asym apart); when the truth is not orderable the first robot the paper
+  makes act must be fixed by every symmetry.
 
-``agrees`` is True iff the list is empty; ``conclusions_agree`` only looks at the
-conclusions.  The audit is outside :mod:`exactsym.paper` and may use both sides.
+``kind``: ``claim``, ``algorithm``, ``conclusion``, or ``reading`` (false under the reading
+in effect; ``reading`` and ``rescued_by`` name it and the reading that rescues the paper).
+``notes`` lists, in the same shape, what is *not* a discrepancy: defects of the literal
+reading of a printed loop (``literal-reading``), failures outside a statement's hypotheses
+(``outside-hypotheses``: ``lem-los-gij``, ``theorem-los-g1n``), GatheringPattern below
+n = 5 (``out-of-scope``), frames that differ only in the sense of an epsilon move
+(``epsilon-sense``).  ``covered``: the labels evaluated on this configuration, in the
+paper's order.  ``agrees`` is True iff ``discrepancies`` is empty; ``conclusions_agree``
+only looks at the conclusions.  The audit is outside :mod:`exactsym.paper` and may use
+both sides.
 
 The statements on levels and pairs of levels are checked within the family layer's
 budgets (:class:`exactsym.paper.family.Limits`: the same selection of pairs as
@@ -34,10 +45,13 @@ was checked (``docs/interpretations.md``, "Bounds of the family layer").
 
 from __future__ import annotations
 
+from .audit_levels import level_findings
 from .configuration import Configuration, Similarity, no_cycle_collection
 from .exact import fmpq, number_text
+from .labels import ALGORITHMS, STATEMENTS
 from .levels import Level, Levels, levels_of
 from .paper import family as F
+from .paper.polygon_report import level_reports
 from .symmetry import SymmetryGroup, symmetry_group
 
 __all__ = ["audit", "truth_in_O_S", "group_about_centre", "transformed", "FRAMES",
@@ -45,12 +59,25 @@ __all__ = ["audit", "truth_in_O_S", "group_about_centre", "transformed", "FRAMES
 
 #: The order in which statements are listed (the paper's order, then the algorithms).
 STATEMENT_ORDER = [
+    "lemma-straight-sym", "obs-asymmetric-polygon", "lemma-sym-regular", "obs-exh-poly",
     "lemma-sym-ord", "lem-asym-ord", "obs-pair-asym-ord", "lem-sym-notord",
     "obs-merg-asym-pair", "lem-asym-pair-ord", "lem-all-pair-asym-ord",
     "lem-one-pair-asym-ord", "obs-gcd", "lem-los-gij", "theorem-los-g1n", "obs-type-4",
     "lem-type4", "lem-3-pair-sym", "theorem-sym-pair-symG", "obs1-Gprime-equiG",
-    "Gprime-equiG", "Psym-Gsym", "Pasym-Pord", "cor-Pasym-Pord",
+    "Gprime-equiG", "Psym-Gsym", "Pasym-Pord", "cor-Pasym-Pord", "Check_Symmetry_Odd",
+    "Check_Symmetry_Even", "Elect_Leader_Asym",
 ]
+
+#: The statements whose instances the family layer marks ``within_hypotheses``: an
+#: instance outside them is a note of kind ``outside-hypotheses``, not a discrepancy.
+HYPOTHESIS_MARKED = ("lem-los-gij", "theorem-los-g1n", "obs-gcd", "obs-type-4")
+
+#: The paper's gathering algorithm is for n >= 5 robots (GatheringPattern's hypothesis).
+GATHERING_MIN_N = 5
+
+#: Kinds of entry: a discrepancy (``agrees`` False) or a note (``notes``: not one).
+DISCREPANCY_KINDS = ("claim", "algorithm", "conclusion", "reading")
+NOTE_KINDS = ("literal-reading", "outside-hypotheses", "out-of-scope", "epsilon-sense")
 
 FRAMES = ("identity", "reflection", "similarity")
 
@@ -87,8 +114,8 @@ CLAIMS = {
     "obs-v-move": "the leader selected through G_it is the same whether v is moving or "
                   "epsilon apart",
     "lem-vl-move": "while v_l moves, no other robot is selected as leader",
-    "1sym_le": "with one line of symmetry through two vertices, Elect_Leader_Sym elects "
-               "a leader (the same for every observer)",
+    "Elect_Leader_Sym": "with degree of symmetry one and the line through two vertices, "
+                        "Elect_Leader_Sym elects the same leader for every observer",
 }
 
 
@@ -197,21 +224,22 @@ def _d(statement, says, truth, witness=None, kind="claim") -> dict:
 
 def audit(config: Configuration, ring_data: Levels | None = None,
           paper: F.PaperResult | None = None, options: dict | None = None,
-          group: SymmetryGroup | None = None) -> dict:
+          group: SymmetryGroup | None = None, level_verdicts: tuple | None = None) -> dict:
     """See :func:`_audit` (run with the cyclic garbage collector paused)."""
     with no_cycle_collection():
-        return _audit(config, ring_data, paper, options, group)
+        return _audit(config, ring_data, paper, options, group, level_verdicts)
 
 
 def _audit(config: Configuration, ring_data: Levels | None = None,
            paper: F.PaperResult | None = None, options: dict | None = None,
-           group: SymmetryGroup | None = None) -> dict:
+           group: SymmetryGroup | None = None, level_verdicts: tuple | None = None) -> dict:
     """The audit of ``config`` (see the module docstring); ``paper`` is recomputed when
     not given, and so is the true ``group``.  Options: ``reading``, ``degree`` (passed to
     the paper), ``invariance`` (default True: recompute the paper in the other frames),
     ``limits`` (:class:`exactsym.paper.family.Limits`, default the family layer's: the
     statements on levels and pairs of levels are checked within its budgets, and the
-    frames are recomputed with it; ``bounded`` in the result says what was checked)."""
+    frames are recomputed with it; ``bounded`` in the result says what was checked).
+    ``level_verdicts``: the polygon layer's verdicts per level (computed when not given)."""
     options = options or {}
     limits = options.get("limits") or F.DEFAULT_LIMITS
     ring_data = ring_data if ring_data is not None else levels_of(config)
@@ -229,9 +257,21 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
     failures: dict[str, int] = {}
     examples = limits.claim_examples
     bounded: dict = {}
+    notes: list = []
+    covered: set = set()
 
     def add(d):
         found.setdefault(d["statement"], []).append(d)
+
+    # the per-level statements (Section 3 and 4.1 on each level polygon)
+    if level_verdicts is None:
+        level_verdicts = level_reports(config, ring_data)[0]
+    level_found, level_notes, level_covered = level_findings(config, ring_data,
+                                                             level_verdicts)
+    for d in level_found:
+        add(d)
+    notes.extend(level_notes)
+    covered |= level_covered
 
     def add_counted(d):
         """A statement checked on many levels or pairs: its first failures, then a count."""
@@ -241,6 +281,8 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
 
     whole_witness = _symmetry_witness(group, list(range(n)))
     # lemma-sym-ord (n > 1): in O_S => not orderable
+    if n > 1 and in_os:
+        covered.add("lemma-sym-ord")
     if n > 1 and in_os and group.orderable:
         add(_d("lemma-sym-ord", "P is in O_S, hence not orderable", "P is orderable",
                whole_witness))
@@ -251,6 +293,8 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
         asym_checked = asym_levels[:cap // 2] + asym_levels[len(asym_levels) - cap // 2:]
     else:
         asym_checked = asym_levels
+    if asym_checked:
+        covered.add("lem-asym-ord")
     for g in asym_checked:
         sub, robots = group_about_centre(config, ring_data, g.robots, g.levels)
         if not sub.orderable:
@@ -268,6 +312,7 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
         sym = F.is_symmetric_pair(a, b)
         sub, robots = group_about_centre(config, ring_data, a.robots + b.robots,
                                          a.levels + b.levels)
+        covered.add("lem-sym-notord" if sym else "lem-asym-pair-ord")
         if sym and sub.orderable:
             common = F.intersect_lines(a.lines, b.lines)
             add_counted(_d("lem-sym-notord",
@@ -295,22 +340,42 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
     except F.WorkBudgetExceeded:
         asym_pair = None
         bounded["lem_all_pair_asym_ord"] = "not checked: Find_Asymmetry_Pair over budget"
+    if asym_pair is not None:
+        covered.add("lem-all-pair-asym-ord")
     if asym_pair is not None and not group.orderable:
         a, b = G[asym_pair[0]], G[asym_pair[1]]
         add(_d("lem-all-pair-asym-ord", f"<{a.name}, {b.name}> is an asymmetric pair, hence "
                "G is orderable", f"P is not orderable (group {group.name})", whole_witness))
     asym_poly = F.find_asymmetry(G)
+    if asym_poly is not None:
+        covered.add("lem-one-pair-asym-ord")
     if asym_poly is not None and not group.orderable:
         add(_d("lem-one-pair-asym-ord", f"{G[asym_poly].name} is an asymmetric polygon, "
                "hence G is orderable", f"P is not orderable (group {group.name})",
                whole_witness))
     # paper-internal claims recorded by the family layer
     for e in paper.trace:
-        if e.get("holds") is False and e.get("kind") != "literal-reading":
-            add(_d(e["statement"], CLAIMS.get(e["statement"], e["statement"]),
-                   f"false here: {e['detail']}", e.get("witness"),
-                   kind="claim" if e["algorithm"] == "Section 3" else "algorithm"))
+        holds = e.get("holds")
+        if holds is None:
+            continue
+        witness = e.get("witness")
+        outside = (e["statement"] in HYPOTHESIS_MARKED and isinstance(witness, dict)
+                   and witness.get("within_hypotheses") is False)
+        if holds is True or not outside:
+            covered.add(e["statement"])
+        if holds is not False:
+            continue
+        entry = _d(e["statement"], CLAIMS.get(e["statement"], e["statement"]),
+                   f"false here: {e['detail']}", witness,
+                   kind="claim" if e["algorithm"] == "Section 3" else "algorithm")
+        if e.get("kind") == "literal-reading":
+            notes.append(dict(entry, kind="literal-reading"))
+        elif outside:
+            notes.append(dict(entry, kind="outside-hypotheses"))
+        else:
+            add(entry)
     # theorems
+    covered.update(("Psym-Gsym", "Pasym-Pord", "cor-Pasym-Pord"))
     g_sym = F.is_symmetric_family(G)
     if g_sym != in_os:
         add(_d("Psym-Gsym", f"P is in O_S iff G_P is; G_P is {'in O_S' if g_sym else 'in O_A'}"
@@ -330,14 +395,25 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
     # conclusions
     conclusions = []
     if paper.orderable != group.orderable:
-        conclusions.append(_d("GatheringPattern",
-                              f"{'orderable' if paper.orderable else 'not orderable'}"
-                              f" (gathering {'possible' if paper.gathering_possible else 'not possible'}"
-                              f", MakeAsym: {paper.make_asym})",
-                              f"{'orderable' if group.orderable else 'not orderable'} "
-                              f"(group {group.name})", whole_witness, kind="conclusion"))
-    leader_info = _leader_check(config, ring_data, paper, group, kw, options)
+        entry = _d("GatheringPattern",
+                   f"{'orderable' if paper.orderable else 'not orderable'}"
+                   f" (gathering {'possible' if paper.gathering_possible else 'not possible'}"
+                   f", MakeAsym: {paper.make_asym})",
+                   f"{'orderable' if group.orderable else 'not orderable'} "
+                   f"(group {group.name})", whole_witness, kind="conclusion")
+        if n >= GATHERING_MIN_N:
+            conclusions.append(entry)
+        else:
+            notes.append(dict(entry, kind="out-of-scope",
+                              truth=entry["truth"] + f"; out of scope: the paper's gathering "
+                              f"algorithm is for n >= {GATHERING_MIN_N} robots (n = {n})"))
+    if n >= GATHERING_MIN_N:
+        covered.add("GatheringPattern")
+    leader_info, leader_notes = _leader_check(config, ring_data, paper, group, kw, options)
     conclusions.extend(leader_info)
+    notes.extend(leader_notes)
+    if paper.complete:
+        covered.add("ElectLeader")
     ordered = []
     for label in STATEMENT_ORDER:
         ordered.extend(found.pop(label, []))
@@ -345,11 +421,22 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
         ordered.extend(rest)
     ordered = _dedupe(ordered)
     ordered.extend(conclusions)
+    covered.update(d["statement"] for d in ordered)       # found false: evaluated here
     return {"agrees": not ordered, "conclusions_agree": not conclusions,
             "discrepancies": ordered,
+            "notes": _dedupe(notes),
+            "covered": _paper_order(covered),
             "truth": {"group": group.name, "orderable": group.orderable,
                       "leader": group.leader, "in_O_S": in_os},
             "bounded": bounded}
+
+
+_ORDER = {label: k for k, label in enumerate(STATEMENTS + ALGORITHMS)}
+
+
+def _paper_order(labels) -> list:
+    """``labels`` in the paper's order (``exactsym.labels``)."""
+    return sorted(labels, key=lambda label: (_ORDER.get(label, len(_ORDER)), label))
 
 
 def _dedupe(items: list) -> list:
@@ -367,48 +454,37 @@ def _dedupe(items: list) -> list:
     return out
 
 
-def _leader_check(config, ring_data, paper, group, kw, options) -> list:
-    out = []
+def _leader_check(config, ring_data, paper, group, kw, options) -> tuple[list, list]:
+    """``(discrepancies, notes)`` of the conclusions about the leader (see the module
+    docstring; :func:`_frame_difference` for two frames that disagree)."""
+    out, notes = [], []
     if not paper.complete:
-        return out
+        return out, notes
     if group.orderable:
         if paper.orderable and paper.leader is None:
             out.append(_d("ElectLeader", "G is orderable but no leader is elected",
                           f"orderable (group {group.name}); a leader exists "
                           f"(e.g. robot {group.leader})", None, kind="conclusion"))
         if not options.get("invariance", True):
-            return out
-        results = {"identity": paper}
-        for frame in FRAMES[1:]:
-            other = transformed(config, ring_data, frame)
-            results[frame] = F.paper_procedure(other, **kw, claims=False, check_vl=False)
+            return out, notes
         base = _actions(paper)
         for frame in FRAMES[1:]:
-            res = results[frame]
+            res = F.paper_procedure(transformed(config, ring_data, frame), **kw, claims=False,
+                                    check_vl=False)
             if not res.complete or _actions(res) == base:
                 continue
-            step = _first_difference(paper, res)
-            statement = "lem-asym-ord"
-            if step is not None and step[3] != "Elect_Leader_Asym":
-                statement = step[0]
-            out.append(_d(statement,
-                          "the leader does not depend on the choice of origin and "
-                          "coordinate system",
-                          f"leader {paper.leader} (moves {list(base[0])}) in "
-                          f"{FRAME_TEXT['identity']}, leader {res.leader} (moves "
-                          f"{list(_actions(res)[0])}) when {FRAME_TEXT[frame]}",
-                          {"frames": ["identity", frame], "leaders": [paper.leader, res.leader],
-                           "moves": [list(base[0]), list(_actions(res)[0])],
-                           "first_different_step": None if step is None else
-                           f"{step[0]} line {step[1]} ({step[3] or step[4]}): robots "
-                           f"{list(step[2])}"},
-                          kind="conclusion"))
-            break
-        return out
+            entry, note = _frame_difference(config, paper, res, frame, kw)
+            if note is not None:
+                notes.append(note)
+            if entry is not None:
+                out.append(entry)
+                if entry["kind"] == "conclusion":
+                    break
+        return out, notes
     # not orderable: the first robot made to act must be fixed by every symmetry
     actor = paper.first_actor
     if actor is None:
-        return out
+        return out, notes
     for g in group.symmetries():
         if g.permutation[actor] != actor:
             out.append(_d("MakeAsym" if paper.moves else "ElectLeader",
@@ -418,7 +494,117 @@ def _leader_check(config, ring_data, paper, group, kw, options) -> list:
                           {"symmetry": g.kind, "maps": f"robot {actor} -> robot "
                            f"{g.permutation[actor]}"}, kind="conclusion"))
             break
-    return out
+    return out, notes
+
+
+def _procedure(config: Configuration, frame: str, kw: dict, **changes) -> F.PaperResult:
+    """The paper's procedure on ``config`` seen in ``frame`` (claims and lem-vl-move off)."""
+    return F.paper_procedure(transformed(config, levels_of(config), frame),
+                             **dict(kw, **changes), claims=False, check_vl=False)
+
+
+def _frame_difference(config: Configuration, paper: F.PaperResult, res: F.PaperResult,
+                      frame: str, kw: dict) -> tuple[dict | None, dict | None]:
+    """``(discrepancy or None, note or None)`` for the identity frame ``paper`` and the
+    frame ``frame`` (result ``res``) acting differently.
+
+    (b) A reflected frame turns "clockwise for this observer" into the other sense: when
+    both frames move the same robots and one move is an epsilon move, the two only differ
+    in the sense the mover chose (only that robot moves, and it picks one sense).  The
+    comparison then continues on the configuration after the moves in either sense
+    (``final_config`` of both results; robots are oblivious and recompute): on each, both
+    frames must act alike; if they do, that is a note (``epsilon-sense``), not a
+    discrepancy; else the first configuration where they do not is compared below.
+    (c) A reflected frame is an observer of the other handedness: when the difference
+    disappears with Elect_Leader_Asym's unordered reading ({CW, ACW} as a set), it is
+    ``Elect_Leader_Asym`` refuted under the literal reading (kind ``reading``), not a
+    failure of ``lem-asym-ord``."""
+    first, second, continued, where = paper, res, False, config
+    if frame == "reflection" and _actions(paper)[0] == _actions(res)[0] and \
+            any(m.get("kind") == "epsilon" for m in paper.moves) and \
+            paper.final_config is not None:
+        # both senses: the configuration after the identity frame's moves, and the one
+        # after the reflected frame's (the mover may take either sense)
+        after = [c for c in (paper.final_config, res.final_config) if c is not None]
+        runs = []
+        for c in after:
+            try:
+                q0, qf = _procedure(c, "identity", kw), _procedure(c, frame, kw)
+            except (ArithmeticError, NotImplementedError, ValueError):
+                break
+            if not (q0.complete and qf.complete):
+                break
+            runs.append((c, q0, qf))
+        if len(runs) == len(after):
+            eps = [m for m in paper.moves if m.get("kind") == "epsilon"]
+            movers = [m["robot"] for m in eps]
+            bad = [(c, q0, qf) for c, q0, qf in runs if _actions(q0) != _actions(qf)]
+            if not bad:
+                elected = [q0.leader for _, q0, _ in runs]
+                return None, _d(
+                    eps[-1]["algorithm"],
+                    "the leader does not depend on the choice of origin and coordinate system",
+                    f"the frames differ only in the sense of the epsilon move of robot(s) "
+                    f"{movers} (clockwise for each observer; only the mover chooses): after "
+                    f"the move every frame elects one robot: "
+                    + ", ".join(f"robot {x} ({sense})" for x, sense in
+                                zip(elected, ("this observer's sense", "the other sense"))),
+                    {"frames": ["identity", frame], "epsilon_movers": movers,
+                     "leader_after_move": elected[0], "leaders_after_move": elected},
+                    kind="epsilon-sense")
+            where, first, second = bad[0]
+            continued = True
+    if frame == "reflection" and kw.get("reading", "literal") == "literal":
+        try:
+            u0 = _procedure(where, "identity", kw, reading="unordered")
+            uf = _procedure(where, frame, kw, reading="unordered")
+        except (ArithmeticError, NotImplementedError, ValueError):
+            u0 = uf = None
+        if u0 is not None and u0.complete and uf.complete and _actions(u0) == _actions(uf):
+            d = _difference_entry("Elect_Leader_Asym", first, second, frame, continued,
+                                  kind="reading")
+            d["reading"] = "literal: the ordered pair (CW, ACW) of Elect_Leader_Asym"
+            d["rescued_by"] = ("unordered: the pair CW, ACW read as a set (the paper writes "
+                               "it in braces); then both frames elect "
+                               f"{_leader_text(u0.leader)} "
+                               f"({_moves_text(_actions(u0)[0])})")
+            return d, None
+    step = _first_difference(first, second)
+    statement = "lem-asym-ord"
+    if step is not None and step[3] != "Elect_Leader_Asym":
+        statement = step[0]
+    return _difference_entry(statement, first, second, frame, continued), None
+
+
+def _leader_text(leader) -> str:
+    return "no leader" if leader is None else f"leader {leader}"
+
+
+def _moves_text(robots) -> str:
+    """The robots a run moves, in words: ``no moves`` or ``moves robots 3, 4``."""
+    robots = list(robots)
+    if not robots:
+        return "no moves"
+    return f"moves robot{'s' if len(robots) > 1 else ''} " + ", ".join(map(str, robots))
+
+
+def _difference_entry(statement, a: F.PaperResult, b: F.PaperResult, frame: str,
+                      continued: bool, kind: str = "conclusion") -> dict:
+    base, other = _actions(a), _actions(b)
+    step = _first_difference(a, b)
+    where = " on the configuration after the moves" if continued else ""
+    witness = {"frames": ["identity", frame], "leaders": [a.leader, b.leader],
+               "moves": [list(base[0]), list(other[0])],
+               "first_different_step": None if step is None else
+               f"{step[0]} line {step[1]} ({step[3] or step[4]}): robots {list(step[2])}"}
+    if continued:
+        witness["after_moves"] = True
+    return _d(statement,
+              "the leader does not depend on the choice of origin and coordinate system",
+              f"{_leader_text(a.leader)} ({_moves_text(base[0])}) in "
+              f"{FRAME_TEXT['identity']}, {_leader_text(b.leader)} ({_moves_text(other[0])}) "
+              f"when {FRAME_TEXT[frame]}{where}",
+              witness, kind=kind)
 
 
 def _first_difference(a: F.PaperResult, b: F.PaperResult):

@@ -26,19 +26,29 @@ def run(args) -> int:
     if args.json:
         print(json.dumps({"paper": paper_json(res), "audit": result}, indent=2))
     else:
+        from .summary import plain, prose      # words on screen, never Python values
         truth = result["truth"]
         print(f"truth: group {truth['group']}, "
               f"{'orderable' if truth['orderable'] else 'not orderable'}, leader "
-              f"{truth['leader']}")
+              f"{plain(truth['leader'])}")
         print(f"paper: {'orderable' if res.orderable else 'not orderable'}, leader "
-              f"{res.leader}, moves {[m['robot'] for m in res.moves]}")
+              f"{plain(res.leader)}, moves {plain([m['robot'] for m in res.moves])}")
+        covered = result.get("covered", [])
         if result["agrees"]:
-            print("audit: the paper agrees with the truth on this configuration")
+            print(f"audit: the paper agrees: no statement is false here; {len(covered)} "
+                  "covered: " + ", ".join(covered))
+        else:
+            print(f"audit: {len(covered)} statements covered: " + ", ".join(covered))
         for d in result["discrepancies"]:
-            print(f"- {d['statement']} ({d['kind']})\n    says:  {d['says']}\n"
-                  f"    truth: {d['truth']}")
+            print(f"- {d['statement']} ({d['kind']})\n    says:  {prose(d['says'])}\n"
+                  f"    truth: {prose(d['truth'])}")
+            if d.get("rescued_by"):
+                print(f"    under the reading: {prose(d['reading'])}; rescued by: "
+                      f"{prose(d['rescued_by'])}")
             if d.get("witness"):
-                print(f"    witness: {json.dumps(d['witness'], default=str)}")
+                print(f"    witness: {plain(d['witness'])}")
+        for d in result.get("notes", []):
+            print(f"  note: {d['statement']} ({d['kind']}): {prose(d['truth'])}")
     if not result["agrees"]:
         print(f"{config.source}: the audit finds {len(result['discrepancies'])} "
               f"discrepancy(ies); the first: {result['discrepancies'][0]['statement']}",

@@ -87,7 +87,16 @@ class Configuration:
 
     @classmethod
     def from_points(cls, points: Iterable, system=None, **kw) -> "Configuration":
-        """From exact ``(x, y)`` pairs (``fmpq``, ``int``, ``Fraction`` or field elements)."""
+        """From exact ``(x, y)`` pairs (``fmpq``, ``int``, ``Fraction`` or field elements);
+        raises :class:`~exactsym.errors.InputError` when two points coincide.
+
+        >>> from fractions import Fraction
+        >>> square = Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -1)])
+        >>> square.n, square.points[1]
+        (4, (0, 1))
+        >>> Configuration.from_points([(0, 0), (Fraction(1, 2), 0)]).points[1]
+        (1/2, 0)
+        """
         from .exact import RationalSystem, as_fmpq
         pts = []
         for x, y in points:
@@ -320,7 +329,23 @@ def no_cycle_collection():
 
 
 def load(path) -> Configuration:
-    """Read, evaluate and validate a configuration file (``"-"`` is standard input)."""
+    """Read, evaluate and validate a configuration file (``"-"`` is standard input;
+    the format: ``docs/format.md``).  Returns a :class:`Configuration` whose points are
+    exact; raises :class:`~exactsym.errors.InputError` (``file:line:col: ...``) on
+    unusable input.
+
+    >>> from exactsym import load
+    >>> config = load("cases/examples/chiral-nine-gon.toml")
+    >>> config.n, config.model, config.name
+    (9, 'points', 'Nine robots with threefold rotational symmetry and no mirror')
+    >>> x, y = config.points[1]           # r = 4 at 1/3 turn: (-2, 2*sqrt(3)), exact
+    >>> x == -2, y * y == 12, y > 0
+    (True, True, True)
+    >>> load("no/such/file.toml")
+    Traceback (most recent call last):
+    ...
+    exactsym.errors.InputError: no/such/file.toml: no such file
+    """
     with no_cycle_collection():
         return from_file(read_config(path))
 

@@ -11,8 +11,9 @@ Grammar, loosest binding first::
                 | ('cos' | 'sin') '(' expression ')'    # a rational multiple of pi
     number     := digits ['.' [digits]] | '.' digits, then optionally ('e' | 'E') ['+' | '-'] digits
 
-Exponents must fold to an integer constant.  ``pi`` is allowed only inside the
-argument of ``cos``/``sin``, which must fold to ``q*pi`` with q rational.
+Exponents must fold to an integer constant.  ``pi`` (or ``π``) is allowed only inside
+the argument of ``cos``/``sin``, which must fold to ``q*pi`` with q rational or be 0;
+there a number written just before pi multiplies it (``cos(2pi/7)``).
 Rational constant subexpressions are folded into :class:`~exactsym.exprtree.Const`
 (while their size stays small); ``sqrt`` is never evaluated here.
 
@@ -39,6 +40,7 @@ MAX_DIGITS = 5_000             # digits in one number literal
 MAX_FOLD_BITS = 100_000        # constants are folded only while they stay this small
 
 FUNCTIONS = ("sqrt", "cos", "sin")
+_PI = ("pi", "π")
 
 _NUMBER = re.compile(r"(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:([eE])([+-]?)([0-9]+))?")
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
@@ -83,6 +85,9 @@ def tokenize(text: str) -> list[Token]:
             match = _NAME.match(text, i)
             tokens.append(Token("name", match.group(), i))
             i = match.end()
+        elif ch == "π":                 # the letter a user may paste: the name pi
+            tokens.append(Token("name", ch, i))
+            i += 1
         elif text.startswith("**", i):
             tokens.append(Token("op", "**", i))
             i += 2
@@ -234,6 +239,12 @@ class _Parser:
         token = self.peek()
         if token.kind == "number":
             self.advance()
+            following = self.peek()
+            if following.kind == "name" and following.text in _PI:
+                if self.trig is None:
+                    self.name()         # outside cos()/sin(): pi's own message
+                self.advance()          # "2pi" inside cos()/sin(): 2*pi, as it is written
+                return _PiMultiple(token.value, offset=token.offset)
             return Const(token.value, offset=token.offset)
         if token.kind == "op" and token.text == "(":
             opening = self.open_paren("")
@@ -249,7 +260,7 @@ class _Parser:
 
     def name(self) -> Node:
         token = self.advance()
-        if token.text == "pi":
+        if token.text in _PI:
             if self.trig is None:
                 raise ExpressionError("pi is transcendental: it may appear only as a rational "
                                       "multiple inside cos() or sin(), as in cos(2*pi/7)",
@@ -269,6 +280,8 @@ class _Parser:
         self.trig = outer
         if token.text == "sqrt":
             return self.sqrt(argument, token.offset)
+        if isinstance(argument, Const) and argument.value == 0:
+            argument = _PiMultiple(Fraction(0), offset=argument.offset)     # cos(0) = cos(0*pi)
         if not isinstance(argument, _PiMultiple):
             raise self.not_pi_multiple(argument.offset, token.text)
         return Trig(token.text, argument.coefficient, offset=token.offset)
@@ -277,7 +290,8 @@ class _Parser:
     def not_pi_multiple(self, offset: int, func: str | None = None) -> ExpressionError:
         func = func or self.trig
         return ExpressionError(f"the argument of {func}() must be a rational multiple of pi, "
-                               "such as 2*pi/7 or -pi/3", offset=offset)
+                               "such as 2*pi/7, 2pi/7 or -pi/3 (radians: 60 degrees is pi/3)",
+                               offset=offset)
 
     def negate(self, node: Node, offset: int) -> Node:
         if isinstance(node, Const):

@@ -44,7 +44,7 @@ EXPECT_KEYS: dict[str, type | tuple] = {
     "paper_skew": (bool, list),
     "paper_degree": (int, str, list),
     "paper_type": (str, list),
-    "paper_lines": (int, list),
+    "paper_lines_by_strings": (int, list),
     "paper_theorem1_symmetric": (bool, list),
     "paper_loop_terminates": (bool, str, list),
     "paper_def_straight": (bool, list),

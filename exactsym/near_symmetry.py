@@ -28,6 +28,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from .configuration import Configuration
+from .errors import InputError
 from .exact import fmpq, number_system
 from .symmetry import symmetry_group
 
@@ -188,7 +189,7 @@ def near_symmetry_hint(config: Configuration, tolerance: float = TOLERANCE
     points, system = candidate
     try:
         q_config = Configuration.from_points(points, system=system, name="candidate")
-    except Exception:           # coincident candidate points: no hint
+    except InputError:          # coincident candidate points: no hint
         return None
     q_group = symmetry_group(q_config)
     if q_group.name == "O2" or _order(q_group) <= exact_order:

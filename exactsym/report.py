@@ -2,8 +2,8 @@
 and the check of a configuration's ``[expect]`` block.
 
 :func:`report_json` returns a JSON-ready dict with the keys of ``docs/cli.md``; exact
-numbers are strings in the configuration syntax.  :func:`report_text` is the table the
-command prints without ``--json``.  Both read the :class:`~exactsym.analysis.Analysis`
+numbers are strings in the configuration syntax.  :func:`report_text` is the summary the
+command prints without ``--json`` (:mod:`exactsym.summary`).  Both read the :class:`~exactsym.analysis.Analysis`
 only (nothing is recomputed here).  To add a section: add its part to
 :func:`exactsym.analysis.analyse`, then one block to each of the two functions below, and
 its ``[expect]`` keys to :data:`EXPECTATIONS` and :data:`exactsym.fileformat.EXPECT_KEYS`.
@@ -15,8 +15,8 @@ from .analysis import Analysis, Options, analyse
 from .configuration import Configuration
 from .exact import evaluate, number_system, number_text
 from .expr import parse_expression
-from .paper.family_report import audit_lines, paper_json, paper_lines
-from .truth_report import table_lines, truth_json
+from .paper.family_report import paper_json
+from .truth_report import truth_json
 
 
 def report_json(analysis: Analysis) -> dict:
@@ -46,24 +46,11 @@ def report_json(analysis: Analysis) -> dict:
     return report
 
 
-def report_text(analysis: Analysis) -> str:
-    """The table ``exactsym check`` prints without ``--json``."""
-    report = report_json(analysis)
-    lines = [f"n = {report['n']}   number field: {report['number_field']}",
-             f"SEC centre ({report['sec']['center'][0]}, {report['sec']['center'][1]}), "
-             f"radius^2 = {report['sec']['radius_squared']}",
-             f"{len(report['levels'])} level(s), nearest first (points counter-clockwise):"]
-    for k, level in enumerate(report["levels"], 1):
-        lines.append(f"  G{k}: radius^2 = {level['radius_squared']}   points {level['points']}")
-        if level.get("paper"):
-            lines.append(f"      paper: {level['paper']}")
-    if analysis.truth is not None:
-        lines.extend(table_lines(analysis.truth))
-    if analysis.paper is not None:
-        lines.extend(paper_lines(analysis.paper))
-    if analysis.audit is not None:
-        lines.extend(audit_lines(analysis.audit))
-    return "\n".join(lines)
+def report_text(analysis: Analysis, verbose: bool = False) -> str:
+    """The text ``exactsym check`` prints without ``--json``: a summary for people, with
+    ``verbose`` the per-level detail (:func:`exactsym.summary.summary_text`)."""
+    from .summary import summary_text
+    return summary_text(analysis, verbose=verbose)
 
 
 def check_report(config: Configuration, *, strings: bool = False) -> dict:
@@ -137,7 +124,7 @@ EXPECTATIONS = {
     "paper_skew": _level("skew"),
     "paper_degree": _level("degree"),
     "paper_type": _level("type"),
-    "paper_lines": _level("lines"),
+    "paper_lines_by_strings": _level("lines_by_strings"),
     "paper_theorem1_symmetric": _level("theorem1_symmetric"),
     "paper_loop_terminates": _level("loop_terminates"),
     "paper_def_straight": _level("definition", "straight"),

@@ -338,6 +338,16 @@ def symmetry_group(config: Configuration, rings: Levels | None = None) -> Symmet
     centre of ``config`` (say, that of a larger configuration), the result is the group
     of the isometries that fix that centre and map the points onto themselves, with
     ``reference`` taken from the sparsest of ``rings.levels``.
+
+    >>> from exactsym import Configuration, symmetry_group
+    >>> group = symmetry_group(Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -1)]))
+    >>> group.name, group.rotations, group.mirrors, group.orderable, group.leader
+    ('D4', 4, 4, False, None)
+    >>> kite = symmetry_group(Configuration.from_points([(0, 2), (1, 0), (0, -1), (-1, 0)]))
+    >>> kite.name, kite.orderable, kite.leader   # robots 0 and 2 lie on the only mirror
+    ('D1', False, 2)
+    >>> len(list(kite.symmetries()))
+    2
     """
     ring = rings if rings is not None else levels_of(config)
     centre = ring.sec.centre

@@ -21,7 +21,8 @@ def test_parts_asked_for_and_what_they_need_are_computed_and_nothing_else():
     assert set(report_json(levels_only)) == {"n", "sec", "levels", "number_field"}
     audited = analyse(config, sections=("audit",))
     assert audited.truth is not None and audited.paper is not None
-    assert audited.level_verdicts is None
+    assert audited.level_verdicts is not None        # the audit covers the per-level statements
+    assert audited.level_strings is None
     assert audited.audit["truth"]["group"] == audited.truth.name
 
 

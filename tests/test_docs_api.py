@@ -14,14 +14,14 @@ def test_api_page_examples(monkeypatch):
 
 
 def test_picture_commands_in_docs_make_the_pictures_shown(tmp_path, monkeypatch):
-    """Each picture command of docs/pictures.md (`python -m exactsym.plot ...`, `exactsym
-    gather ... --plot`), run with its output sent elsewhere, draws the same elements (SVG
-    ids and texts) as the committed picture."""
+    """Each picture command of docs/pictures.md (`exactsym plot ...`, `exactsym gather
+    ... --plot`, `python -m exactsym.pictures.run_cli ...`), run with its output sent
+    elsewhere, draws the same elements (SVG ids and texts) as the committed picture."""
     import shlex
     import xml.etree.ElementTree as ET
 
     from exactsym.cli import main as exactsym_main
-    from exactsym.plot.cli import main as plot_main
+    from exactsym.pictures.run_cli import main as run_main
 
     def content(path):
         root = ET.parse(path).getroot()
@@ -31,14 +31,15 @@ def test_picture_commands_in_docs_make_the_pictures_shown(tmp_path, monkeypatch)
 
     monkeypatch.chdir(ROOT)
     commands = [line.strip() for line in (ROOT / "docs/pictures.md").read_text().splitlines()
-                if line.startswith(("python -m exactsym.plot", "exactsym ")) and
-                "docs/img/" in line]
+                if line.startswith(("exactsym plot", "exactsym gather",
+                                    "python -m exactsym.pictures"))
+                and "docs/img/" in line]
     assert len(commands) == 2 and any(c.startswith("exactsym gather") for c in commands)
     for command in commands:
         words = shlex.split(command)
-        argv = words[1:] if words[0] == "exactsym" else words[3:]
+        run_picture = words[0] == "python"
+        argv = words[3:] if run_picture else words[1:]
         shown = next(a for a in argv if a.startswith("docs/img/"))
         argv[argv.index(shown)] = str(tmp_path / Path(shown).name)
-        main = exactsym_main if words[0] == "exactsym" else plot_main
-        assert main(argv) == 0
+        assert (run_main if run_picture else exactsym_main)(argv) == 0
         assert content(tmp_path / Path(shown).name) == content(ROOT / shown), command

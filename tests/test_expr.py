@@ -107,12 +107,23 @@ def test_trig_in_expressions():
 
 
 @pytest.mark.parametrize("text", [
-    "cos(pi+1)", "cos(1)", "cos(0)", "sin(2/7)", "cos(pi*pi)", "cos(pi^2)", "cos(sqrt(pi))",
+    "cos(pi+1)", "cos(1)", "cos(60)", "sin(2/7)", "cos(pi*pi)", "cos(pi^2)", "cos(sqrt(pi))",
     "cos(sqrt(2)*pi)", "cos(1/pi)", "cos(pi-1)", "cos(2^pi)", "sin(cos(pi))", "cos(sin(pi)*pi)",
 ])
 def test_trig_argument_must_be_a_rational_multiple_of_pi(text):
     err = error(text)
     assert "rational multiple of pi" in err.message or "exponent" in err.message
+
+
+@pytest.mark.parametrize("text, turns", [
+    ("cos(0)", 0), ("sin(0)", 0), ("cos(pi)", F(1, 2)), ("cos(2*pi/7)", F(1, 7)),
+    ("cos(2pi/7)", F(1, 7)), ("cos(2 pi / 7)", F(1, 7)), ("sin(pi*2/7)", F(1, 7)),
+    ("sin(2/7*pi)", F(1, 7)), ("cos(2π/7)", F(1, 7)), ("cos(1.5pi)", F(3, 4)),
+    ("cos(-2pi/3)", F(-1, 3)), ("cos((2pi)/7)", F(1, 7)), ("cos(2*(pi/7))", F(1, 7)),
+])
+def test_every_spelling_of_a_rational_multiple_of_pi(text, turns):
+    """Issue 12: the spellings a user tries for cos(2*pi/7) all give q*pi, q = 2*turns."""
+    assert parse(text) == Trig(text[:3], 2 * F(turns))
 
 
 def test_trig_error_offsets():
@@ -143,7 +154,7 @@ def test_pi_outside_trig_is_transcendental(text, offset):
     ("{1}", 0, "unexpected character"), ("1,2", 1, "unexpected character ','"),
     ("sqrt(2,3)", 6, "','"), ("1;2", 1, "';'"), ("1 @ 2", 2, "'@'"), ("a.b", 0, "unknown name"),
     ("", 0, "empty expression"), ("   ", 0, "empty expression"), ("1 2", 2, "expected an operator"),
-    ("2pi", 1, "expected an operator"), ("(1", 2, "missing ')'"), ("1)", 1, "unbalanced ')'"),
+    ("2pi", 1, "pi is transcendental"), ("(1", 2, "missing ')'"), ("1)", 1, "unbalanced ')'"),
     ("()", 1, "expected"), ("1+", 2, "the end"), ("*1", 0, "expected"), ("1*/2", 2, "expected"),
     ("sqrt 2", 5, "expected '(' after sqrt"), ("sqrt", 4, "'(' after sqrt"),
     ("cos", 3, "'(' after cos"),
@@ -152,7 +163,8 @@ def test_pi_outside_trig_is_transcendental(text, offset):
     ("\u00bd", 0, "unexpected character"), ("\uff11", 0, "unexpected character"),  # ½, １
     ("\u0661", 0, "unexpected character"), ("2\u00b2", 1, "unexpected character"),  # Arabic 1, ²
     ("1\u00a02", 1, "unexpected character"), ("\U0001F600", 0, "unexpected character"),
-    ("π", 0, "unexpected character"), ("√2", 0, "unexpected character"),
+    ("π", 0, "pi is transcendental"), ("√2", 0, "unexpected character"),
+    ("cos(2pi pi)", 8, "expected ')'"), ("sin(sqrt(2)pi)", 11, "expected ')'"),
     ("2^(1/2)", 3, "integer constant"), ("2^0.5", 2, "integer constant"),
     ("2^sqrt(4)", 2, "integer constant"), ("2^cos(pi)", 2, "integer constant"),
     ("sqrt(-2)", 0, "sqrt of a negative number"), ("sqrt(1-2)", 0, "negative"),

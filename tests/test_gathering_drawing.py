@@ -16,7 +16,7 @@ from exactsym.gathering import drawing  # noqa: E402
 from exactsym.gathering.cases import run_settings, settings_of  # noqa: E402
 from exactsym.gathering.paper_bridge import read_case  # noqa: E402
 from exactsym.gathering.schedulers import run  # noqa: E402
-from exactsym.plot.run import frame_times, plot_run  # noqa: E402
+from exactsym.pictures.run import frame_times, plot_run  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases/gathering/obstacle-beside-path.toml"
@@ -81,7 +81,7 @@ def test_collision_along_a_piece_is_drawn_at_the_contact(tmp_path):
     assert len(paths) == advances == len(pic.moves) == 2
     v = pic.violation
     assert res.events - 1 < v.time < res.events
-    from exactsym.plot.run import position
+    from exactsym.pictures.run import position
     pa, pb = position(pic, 0, v.time), position(pic, 1, v.time)
     assert abs(((pa[0] - pb[0]) ** 2 + (pa[1] - pb[1]) ** 2) ** 0.5 - 2.0) < 1e-6
     assert len(frame_times(pic)) == res.events + 2
@@ -121,7 +121,7 @@ def test_frames_gif_and_html_from_the_command(tmp_path, capsys):
 
 
 def test_missing_matplotlib_names_the_plot_extra(tmp_path, monkeypatch, capsys):
-    import exactsym.plot.draw as draw
+    import exactsym.pictures.draw as draw
 
     def unavailable():
         raise draw.PlotUnavailable("no matplotlib")
@@ -134,7 +134,7 @@ def test_missing_matplotlib_names_the_plot_extra(tmp_path, monkeypatch, capsys):
 
 def test_planned_paths_and_contact_points_survive_the_json_form():
     import json
-    from exactsym.plot.run import run_from_dict, run_to_dict
+    from exactsym.pictures.run import run_from_dict, run_to_dict
     points, res = case_run()
     pic = drawing.run_picture(points, res, "case")
     assert pic.violation.at is not None
@@ -150,7 +150,7 @@ def test_a_gathered_run_has_one_frame_per_event_and_ends_in_the_pattern():
     pic = drawing.run_picture(points, res, "corrected")
     assert pic.violation is None and pic.planned == ()
     assert len(frame_times(pic)) == res.events + 1
-    from exactsym.plot.run import position
+    from exactsym.pictures.run import position
     ends = [position(pic, i, res.events) for i in range(len(points))]
     c = pic.layers[0].centre
     # every robot ends at C or on layer 1 (distance 2), drawn from the exact log

@@ -102,7 +102,7 @@ def twelfths_cartesian(ks, scale=1, reflect=False, labels=None):
 def verdicts(polygon):
     check = P.check_symmetry(polygon)
     lines = P.straight_lines(polygon)
-    kind = P.polygon_type(polygon, lines)
+    kind = P.polygon_type(polygon)
     return (check.deg_sym, check.straight, check.skew, check.degree, len(lines),
             None if kind is None else str(kind), P.theorem1_asymmetric(polygon),
             P.is_skew_symmetric(polygon), len(P.definition_mirrors(polygon)))

@@ -40,7 +40,7 @@ def test_large_polygon_is_cheap_and_strings_omitted():
     config = polar_configuration([(1, Fraction(k, n)) for k in range(n)])
     report = check_report(config, strings=True)
     level = report["levels"][0]
-    assert level["paper"]["lines"] == n and level["paper"]["degree"] == n // 2
+    assert level["paper"]["lines_by_strings"] == n and level["paper"]["degree"] == n // 2
     assert "omitted" in level["strings"]
     assert level["paper"]["leader_sym"] is None and level["paper"]["definition"] is None
     json.dumps(report)
@@ -55,7 +55,7 @@ def test_fractional_degree_and_per_level_expectations():
     config.expect.update({"paper_degree": ["3/2"], "paper_type": "type-2",
                           "paper_leader_sym": "none", "paper_straight": [True]})
     assert failed_expectations(config, report) == []
-    config.expect.update({"paper_degree": 1, "paper_lines": [1, 1]})
+    config.expect.update({"paper_degree": 1, "paper_lines_by_strings": [1, 1]})
     assert len(failed_expectations(config, report)) == 2
 
 
@@ -63,4 +63,4 @@ def test_cartesian_configuration_with_other_centre():
     config = Configuration.from_points([(1, 1), (6, 1), (1, 6), (-4, 1), (1, -4)])
     report = check_report(config)
     paper = report["levels"][-1]["paper"]
-    assert paper["type"] == "type-0" and paper["lines"] == 4
+    assert paper["type"] == "type-0" and paper["lines_by_strings"] == 4

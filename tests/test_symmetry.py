@@ -246,7 +246,7 @@ def test_report_section():
         ("D1", False, None, 2)
     assert report["symmetries"] == {"rotations": 1, "mirrors": 1}
     text = report_text(analyse(Configuration.from_points(P((0, 0), (4, 0), (2, 3)))))
-    assert "ground truth: group D1" in text
+    assert "symmetry   D1: no rotation but the identity, 1 mirror line through C" in text
     single = check_report(Configuration.from_points(P((1, 1))))
     assert single["symmetries"] == {"rotations": None, "mirrors": None}
     assert single["ordering"] == [0] and single["leader"] == 0

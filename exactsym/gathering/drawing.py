@@ -1,9 +1,9 @@
 """A simulated run as a picture: the one module of the simulator that imports the
-pictures package (``exactsym.plot.run``, the ``plot`` extra), lazily.
+pictures package (``exactsym.pictures.run``, the ``plot`` extra), lazily.
 
 :func:`run_picture` turns a :class:`.schedulers.Result` -- its path log, one
 :class:`.world.Step` per Look and per advance, exact -- into the plain float data of
-``exactsym.plot.run.Run``.  Floats are made here and only here, for drawing.
+``exactsym.pictures.run.Run``.  Floats are made here and only here, for drawing.
 
 Time in the picture: event ``k`` of the run happens at ``t = k``; an advance at event
 ``k`` moves its robot along its piece during ``[k - 1, k]`` (uniformly: linearly on a
@@ -102,7 +102,7 @@ def _title(name: str, res) -> str:
 
 
 def run_picture(points, res, name: str = "run", model: str = "fat"):
-    """The ``exactsym.plot.run.Run`` of a simulated run (``points``: the start)."""
+    """The ``exactsym.pictures.run.Run`` of a simulated run (``points``: the start)."""
     R = _run_module()
     start = tuple(_xy(p) for p in points)
     now = list(start)                       # positions as the log goes (floats)
@@ -168,10 +168,10 @@ def _parse_centre(items):
 
 
 def _run_module():
-    """``exactsym.plot.run`` (the pictures package; the only import of it here)."""
+    """``exactsym.pictures.run`` (the pictures package; the only import of it here)."""
     try:
-        from ..plot import run as R
-        from ..plot.draw import matplotlib_modules
+        from ..pictures import run as R
+        from ..pictures.draw import matplotlib_modules
         matplotlib_modules()
     except (ImportError, RuntimeError) as err:   # RuntimeError: the PlotUnavailable
         raise PicturesUnavailable(_MISSING) from err
@@ -187,5 +187,5 @@ def write_pictures(points, res, args, name: str = "run") -> list[str]:
     ``--html``); the lines to print.  Raises :class:`PicturesUnavailable` without
     matplotlib, ``ValueError``/``OSError`` for an output that cannot be written."""
     run = run_picture(points, res, name)
-    from ..plot.run_cli import outputs
+    from ..pictures.run_cli import outputs
     return outputs(run, args)

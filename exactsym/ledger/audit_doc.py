@@ -11,10 +11,10 @@ from collections import Counter
 from .graph import Support
 from .model import GRADES, Ledger, Statement
 
-__all__ = ["render", "SECTIONS"]
+__all__ = ["render", "HEADINGS"]
 
 #: Headings and the labels each section starts with (entries follow the ledger's order).
-SECTIONS = (
+HEADINGS = (
     ("Section 2: the gathering pattern", "gathering_pattern"),
     ("Section 3: configurations and the hull", "stmirrorimage"),
     ("Section 3: one polygon", "def-straight-symmetric-poly"),
@@ -98,7 +98,7 @@ def render(ledger: Ledger, support: dict[str, Support]) -> str:
              and support[s.label].rests_only_on_proved and s.grade == "proved"]
     lines += ["", "Proved and resting only on proved statements and definitions: " +
               (", ".join(f"`{x}`" for x in sound) or "none") + ".", ""]
-    starts = {label: title for title, label in SECTIONS}
+    starts = {label: title for title, label in HEADINGS}
     for s in ledger.statements:
         if s.label in starts:
             lines += ["", f"## {starts[s.label]}", "",

@@ -5,13 +5,15 @@
 
     {"straight": bool, "skew": bool, "degree": int or "p/q" string,
      "type": "type-0".."type-4" | "unclassified" | null, "type_reason": str,
-     "symmetric": bool, "theorem1_symmetric": bool, "lines": int, "check": name}
+     "symmetric": bool, "theorem1_symmetric": bool, "lines_by_strings": int, "check": name}
 
 ``straight``/``skew``/``degree``/``symmetric`` are what Check_Symmetry_Odd/Even report
 (efficient versions, equal to the printed loops; the odd check read with i++ after every
 vertex); ``degree`` is deg_sym/2 for even n and may be a fraction (written "3/2");
-``theorem1_symmetric`` is Theorem 1's verdict; ``lines`` and ``type`` come from the
-lines of straight symmetry the strings find (vertex and edge-midpoint palindromes).
+``theorem1_symmetric`` is Theorem 1's verdict; ``lines_by_strings`` counts the lines of
+straight symmetry the strings find (vertex and edge-midpoint palindromes,
+``lemma-straight-sym``), which can exceed the mirrors; ``type`` is the type by its
+definition, from the exact mirrors (:func:`exactsym.paper.polygon.polygon_type`).
 ``loop_terminates`` (odd n): whether Check_Symmetry_Odd *as printed* stops (it does not
 once a vertex has CW = ACW).  ``definition``: ``def-straight-symmetric-poly`` /
 ``def-skew-symmetric-poly`` evaluated exactly, with the number of mirrors (null above
@@ -39,6 +41,7 @@ from ..exact import as_fmpq, exact_key, number_text, sign
 from ..configuration import no_cycle_collection
 from . import polygon as paper
 from .circle_polygon import level_polygon
+from .family.concentric import mirror_lines
 from .keys import ccw_gap_key
 
 #: Largest polygon whose CW/ACW strings are written out (n^2 numbers).
@@ -60,7 +63,8 @@ def level_verdicts(polygon) -> dict:
     n = polygon.n
     check = paper.check_symmetry(polygon)
     lines = paper.straight_lines(polygon)
-    kind = paper.polygon_type(polygon, lines)
+    mirrors = [key.value for key in mirror_lines(polygon)]       # exact, O(n)
+    kind = paper.polygon_type(polygon, mirrors)
     out = {
         "check": check.algorithm,
         "symmetric": check.symmetric,
@@ -69,7 +73,7 @@ def level_verdicts(polygon) -> dict:
         "degree": degree_json(check.degree),
         "loop_terminates": (not check.axis_vertices) if n % 2 else None,
         "theorem1_symmetric": not paper.theorem1_asymmetric(polygon),
-        "lines": len(lines),
+        "lines_by_strings": len(lines),
         "type": None if kind is None else str(kind),
         "type_reason": None if kind is None else kind.reason,
     }

@@ -134,6 +134,7 @@ class _Record:
         self.trace, self.examples = trace, examples
         self.out: list[dict] = []
         self.failures: dict = {}
+        self.within: dict = {}        # statement -> a failure within its hypotheses seen
         self.checked: dict = {}
         self.partial: set = set()
 
@@ -142,6 +143,8 @@ class _Record:
 
     def fail(self, statement, polygons, detail, witness=None) -> None:
         self.failures[statement] = self.failures.get(statement, 0) + 1
+        inside = not (isinstance(witness, dict) and witness.get("within_hypotheses") is False)
+        self.within[statement] = self.within.get(statement, False) or inside
         if self.examples is None or self.failures[statement] <= self.examples:
             self.out.append(_claim(self.trace, statement, False, polygons, detail, witness))
 
@@ -156,7 +159,8 @@ class _Record:
                                        f"fails on {count} of the {checked} instance(s) "
                                        f"checked; the first {examples} are listed",
                                        {"failures": count, "checked": checked,
-                                        "listed": examples}))
+                                        "listed": examples,
+                                        "within_hypotheses": self.within[statement]}))
         for statement, count in self.checked.items():
             if statement not in self.failures:
                 note = (" (a bounded part of the instances: see paper.bounded)"
@@ -210,18 +214,21 @@ def lem_los_gij(rec: _Record, a: Ring, b: Ring, common, proj, polar: bool) -> No
 
 
 def obs_gcd(rec: _Record, a: Ring, b: Ring, common) -> None:
-    """``obs-gcd``: two odd polygons with a common line have gcd(n_i, n_j) common lines."""
+    """``obs-gcd``: two odd polygons with a common line have gcd(n_i, n_j) common lines
+    (called only on pairs meeting these hypotheses: ``within_hypotheses`` True)."""
     g = gcd(a.n, b.n)
     count = "all" if common is ALL_LINES else len(common)
     rec.check("obs-gcd")
     if count != g:
         rec.fail("obs-gcd", [a.name, b.name], f"n_i = {a.n}, n_j = {b.n} odd with a common "
                  f"line: gcd = {g} but they have {count} common line(s)",
-                 {"gcd": g, "common_lines": count})
+                 {"gcd": g, "common_lines": count, "within_hypotheses": True})
 
 
 def obs_type_4(rec: _Record, a: Ring, b: Ring, proj) -> None:
-    """``obs-type-4``: n_i, n_j odd with a common line and gcd > 1 make G_ij type 4."""
+    """``obs-type-4``: n_i, n_j odd with a common line and gcd > 1 make G_ij type 4
+    (called only on pairs meeting these hypotheses: ``within_hypotheses`` True; whether
+    n_i and n_j divide one another is Preprocess's condition, recorded separately)."""
     gij = proj.ring
     g = gcd(a.n, b.n)
     ok, why = is_type4(gij)
@@ -234,7 +241,7 @@ def obs_type_4(rec: _Record, a: Ring, b: Ring, proj) -> None:
                  + ("" if neither else "; note n_i and n_j divide one another "
                     "(Preprocess's text excludes that case)"),
                  {"G_ij vertices": gij.n, "type": why, "neither_divides": neither,
-                  "coincident_vertices": len(proj.coincident)})
+                  "coincident_vertices": len(proj.coincident), "within_hypotheses": True})
 
 
 def theorem_los_g1n(rec: _Record, G: Sequence[Ring], Gp: Sequence[Ring], polar: bool,

@@ -1,5 +1,5 @@
 """``ElectLeader`` (Section 4.2) on G', and Elect_Leader_Asym applied to a polygon of
-G' (``lem-asym-ord``, ``1sym_le``, ``lem-asym-pair-ord``).
+G' (``lem-asym-ord``, ``lem-asym-pair-ord``).
 """
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from typing import Sequence
 from .. import polygon as P
 from ...exact import number_text
 from ..circle_polygon import CirclePolygon
-from .concentric import Ring
+from .concentric import Ring, mirror_lines
 from .limits import MAX_QUADRATIC_N
 from .projection import coincidence_note, radial_projection, robot_in
 from .trace import trace_entry
@@ -56,14 +56,49 @@ def elect_leader_asym_on(trace, alg, line, ring_poly: Ring, target: Ring, orient
     return robot, None
 
 
+def line_four(poly: CirclePolygon, check: P.CheckResult, degree: str = "paper"):
+    """ElectLeader's line 4, "G_1 is symmetric with degree of symmetry one and the line of
+    symmetry passes through either a single vertex or through two vertices": ``(bool,
+    why)``.  "Symmetric" and the degree are what Check_Symmetry_Odd/Even report (the
+    algorithms the paper gives for them, lines 1-3; ``degree="lines"`` reads the degree
+    as the number of lines of straight symmetry, by the definition).  "The line of
+    symmetry" and the vertices on it have no algorithm in the paper: they are evaluated
+    by the definition -- the polygon has exactly one exact mirror
+    (:func:`exactsym.paper.family.mirror_lines`) and it passes through one or two vertices.
+    A 2-gon's only mirror is the perpendicular bisector of its vertices (through none), so
+    line 4 is false for it."""
+    mirrors = [key.value for key in mirror_lines(poly)]
+    if degree == "lines":
+        deg = len(mirrors)
+    elif degree == "paper":
+        deg = check.degree
+    else:
+        raise ValueError("degree must be 'paper' or 'lines'")
+    if not check.symmetric:
+        return False, f"{check.algorithm} reports G_1 asymmetric"
+    if deg != 1:
+        return False, f"degree of symmetry {number_text(deg)}, not one"
+    if len(mirrors) != 1:
+        return False, f"degree one, but G_1 has {len(mirrors)} lines of straight symmetry " \
+                      "by the definition, not one"
+    on = len(P.vertices_on_line(poly, mirrors[0]))
+    if on not in (1, 2):
+        return False, "degree one, but the line of symmetry (by the definition) passes " \
+                      "through no vertex"
+    return True, ("degree one, the line of symmetry passes through "
+                  + ("a single vertex" if on == 1 else "two vertices"))
+
+
 @dataclass
 class ElectLeaderResult:
     """``leader``: the configuration index elected (None when none); ``moves``: robots
-    moved by Make_SymToAsym; ``branch``: see :data:`BRANCHES`."""
+    moved by Make_SymToAsym; ``branch``: see :data:`BRANCHES`; ``moved_to``: the moved
+    robot's direction from C after Make_SymToAsym (a turn, or a vector from C)."""
     leader: int | None
     branch: str
     moves: list = field(default_factory=list)
     computed: bool = True
+    moved_to: dict = field(default_factory=dict)    # robot -> its direction after the move
 
 
 def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
@@ -72,9 +107,10 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
     """``ElectLeader`` (Section 4.2) on G' (meant for G' with G_t asymmetric).
 
     Lines 1-3: Check_Symmetry_Even/Odd(G_1).  Line 4: "G_1 is symmetric with degree of
-    symmetry one and the line passes through a single vertex or two vertices" -- exactly
-    when :func:`exactsym.paper.polygon.elect_leader_sym` elects a leader; then
-    Make_SymToAsym(G_1) and Elect_Leader_Asym on the moved G_1.  Line 8: G_1 asymmetric (as
+    symmetry one and the line passes through a single vertex or two vertices"
+    (:func:`line_four`: symmetry and degree as the check reports them, the line and the
+    vertices on it by the definition); then Make_SymToAsym(G_1) and Elect_Leader_Asym on
+    the moved G_1.  Line 8: G_1 asymmetric (as
     Check_Symmetry reports): Elect_Leader_Asym(G_1).  Line 11-12: G_1t (G_1 projected onto G_t's
     circle) and Elect_Leader_Asym(G_1t); the output must be "a leader vertex from G_1":
     the first vertex of G_1 in the ordering of G_1t.  The robot at C as G_1 is a single
@@ -94,13 +130,16 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
     check = P.check_symmetry(poly, orientation)
     trace_entry(trace, alg, 2 if poly.n % 2 == 0 else 3, [g1.name], "obs-asymmetric-polygon",
                 f"{check.algorithm}({g1.name}): " + "; ".join(check.reports), round=rnd)
-    sym = P.elect_leader_sym(poly, orientation, degree) if check.symmetric else None
-    if sym is not None and sym.leader is not None:
+    line4, why = line_four(poly, check, degree)
+    if check.symmetric:
+        trace_entry(trace, alg, 4, [g1.name], alg, f"line 4 is {'true' if line4 else 'false'}"
+                    f": {why}", round=rnd)
+    if line4:
         branch = "sym-degree-one"
-        axis = list(sym.check.axis_vertices)
+        axis = list(P.vertices_on_line(poly, mirror_lines(poly)[0].value))   # on the mirror
         if poly.n % 2 == 0 and len(axis) >= 2 and \
                 P.cw_string(poly, axis[0], orientation) == P.cw_string(poly, axis[1], orientation):
-            trace_entry(trace, alg, 5, [g1.name], "1sym_le",
+            trace_entry(trace, alg, 5, [g1.name], "Elect_Leader_Sym",
                         f"Elect_Leader_Sym: VI = VJ for the two vertices on the line (robots "
                         f"{[robot_in(poly.labels[a], g1) for a in axis[:2]]}), so 'if VI > VJ "
                         f"return v_i else v_j' picks by the labelling, not by the geometry",
@@ -110,8 +149,9 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
         moves = [{"robot": mover, "algorithm": "Make_SymToAsym", "line": 2, "kind": "epsilon",
                   "amount": number_text(moved.parameter) if moved.parameter is not None
                   else None}] if mover is not None else []
-        trace_entry(trace, alg, 5, [g1.name], "1sym_le",
-                    f"degree of symmetry one: Make_SymToAsym moves robot {mover} to its right side "
+        trace_entry(trace, alg, 5, [g1.name], "Elect_Leader_Sym",
+                    f"degree of symmetry one: Make_SymToAsym moves robot {mover} to its right "
+                    f"side "
                     f"({'asymmetric now' if moved.asymmetric else 'still symmetric'})",
                     robots=[mover] if mover is not None else None, branch=branch, round=rnd,
                     uses="Make_SymToAsym")
@@ -119,8 +159,14 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
             trace_entry(trace, alg, 5, [g1.name], "Make_SymToAsym",
                         "Make_SymToAsym is meant to make G_1 asymmetric; it is not", holds=False,
                         round=rnd)
+        moved_to = {}
+        if mover is not None:
+            label = poly.labels[moved.leader]
+            moved_to = {mover: next(d for lab, d in zip(moved.polygon.labels,
+                                                        moved.polygon.directions)
+                                    if lab == label)}
         if moved.polygon.n > MAX_QUADRATIC_N:
-            return ElectLeaderResult(None, branch, moves, False)
+            return ElectLeaderResult(None, branch, moves, False, moved_to)
         res = P.elect_leader_asym(moved.polygon, orientation, reading)
         leader = None if res.leader is None else robot_in(moved.polygon.labels[res.leader], g1)
         if res.tie:
@@ -131,7 +177,7 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
                     f"Elect_Leader_Asym(moved {g1.name}): leader robot {leader}",
                     robots=[leader] if leader is not None else None, branch=branch, round=rnd,
                     uses="Elect_Leader_Asym")
-        return ElectLeaderResult(leader, branch, moves)
+        return ElectLeaderResult(leader, branch, moves, True, moved_to)
     if not check.symmetric:
         branch = "asymmetric"
         if poly.n > MAX_QUADRATIC_N:

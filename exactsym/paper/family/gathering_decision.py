@@ -33,7 +33,10 @@ class PaperResult:
     (None when none is elected or it cannot be computed); ``moves``: robots moved, in
     order (MakeAsym, Make_SymToAsym); ``first_actor``: the first robot the procedure
     moves, else the leader; ``complete``: False when exactsym could not carry out a step
-    exactly (then the leader is None); ``G``/``Gprime``: names and sizes."""
+    exactly (then the leader is None); ``G``/``Gprime``: names and sizes;
+    ``final_config``: the configuration after every move (MakeAsym's and
+    Make_SymToAsym's), on which ``leader`` is elected (None when nothing moved or when
+    it cannot be built exactly): the audit continues a comparison of frames there."""
     orderable: bool
     gathering_possible: bool
     leader: int | None
@@ -47,6 +50,7 @@ class PaperResult:
     elect_leader: str | None
     bounded: dict = field(default_factory=dict)
     G_rings: tuple = field(default=(), repr=False, compare=False)   # G, as Rings (family.Ring)
+    final_config: Configuration | None = field(default=None, repr=False, compare=False)
 
 
 def paper_procedure(config: Configuration, ring_data: Levels | None = None,
@@ -170,7 +174,8 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
             # cyclotomic field of the moved turns' denominators -- we stop here
             trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
                         "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
-                        "not); the configuration after the moves is not analysed", holds=False,
+                        "not)" + _sense_note(current, new, result, ring_data)
+                        + "; the configuration after the moves is not analysed", holds=False,
                         round=rnd)
             return _finish(limits, bounded, config,
                            orderable, gathering, None, moves, False, trace, G, Gp,
@@ -187,7 +192,8 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
         if not _same_sec(ring_data, new_rings):
             trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
                         "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
-                        "not)", holds=False, round=rnd)
+                        "not)" + _sense_note(current, new, result, ring_data), holds=False,
+                        round=rnd)
         if check_vl:
             _check_vl_move(trace, current, new, result, orientation, reading, rnd, limits)
         rnd += 1
@@ -203,13 +209,29 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
     moves.extend(el.moves)
     leader = el.leader
     complete = complete and el.computed
+    final = _after_move(current, cur_rings, el.moved_to) if moves else None
     return _finish(limits, bounded, config,
                    orderable, gathering, leader, moves, complete, trace, G, Gp,
-                   ma_outcome, el.branch, polar)
+                   ma_outcome, el.branch, polar, final)
+
+
+def _after_move(current: Configuration, rings: Levels, moved_to: dict):
+    """``current`` with the robot Make_SymToAsym moved at its new direction from C (None
+    when that point cannot be built exactly here)."""
+    if not moved_to:
+        return current
+    (v, d), = moved_to.items()
+    try:
+        if rings.polar and current.radii is not None:
+            return current.moved(v, Polar(current.radius(v), d))
+        cx, cy = rings.sec.centre
+        return current.moved(v, (cx + d[0], cy + d[1]))
+    except (MoveImpossible, ArithmeticError, TypeError, ValueError):
+        return None
 
 
 def _finish(limits: Limits, bounded: dict, config, orderable, gathering, leader, moves,
-            complete, trace, G, Gp, ma, el, polar) -> PaperResult:
+            complete, trace, G, Gp, ma, el, polar, final=None) -> PaperResult:
     if not bounded.get("preprocess_complete", True):
         complete, leader = False, None        # G' is not the one the paper computes
     first = moves[0]["robot"] if moves else leader
@@ -219,7 +241,38 @@ def _finish(limits: Limits, bounded: dict, config, orderable, gathering, leader,
         bounded["polygons_described"] = limits.described
     return PaperResult(orderable, gathering, leader, moves, first, complete, trace,
                        describe(G, polar, limits.described),
-                       describe(Gp, polar, limits.described), ma, el, bounded, tuple(G))
+                       describe(Gp, polar, limits.described), ma, el, bounded, tuple(G), final)
+
+
+def _sense_note(before: Configuration, after: Configuration, result: MakeAsymResult,
+                ring_data: Levels) -> str:
+    """Which sense the last epsilon move of MakeAsym took ("clockwise for this observer":
+    the reading of :func:`make_asym`) and whether the same move in the other sense keeps
+    the SEC (the mover may choose it: only one robot moves)."""
+    eps = [m for m in result.moves if m.get("kind") == "epsilon"]
+    if not eps:
+        return ""
+    v = eps[-1]["robot"]
+    head = f": robot {v} moved by epsilon clockwise for this observer"
+    try:
+        if before.radii is not None and after.radii is not None and ring_data.polar:
+            (r2, ta), (_, tb) = before.polar[v], after.polar[v]
+            other = after.moved(v, Polar(after.radius(v), normal_turn(2 * ta - tb)))
+            sec = polar_sec(other.polar)
+            keeps = sec is not None and sec.radius_squared == ring_data.sec.radius_squared
+        else:
+            cx, cy = ring_data.sec.centre
+            (ux, uy), (wx, wy) = ((p[0] - cx, p[1] - cy) for p in (before.points[v],
+                                                                     after.points[v]))
+            norm = ux * ux + uy * uy
+            c, s_ = (ux * wx + uy * wy) / norm, (ux * wy - uy * wx) / norm
+            other = after.moved(v, (cx + ux * c + uy * s_, cy - ux * s_ + uy * c))
+            keeps = _same_sec(ring_data, levels_of(other))
+    except (MoveImpossible, ArithmeticError, InputError, NotImplementedError, TypeError,
+            ValueError):
+        return head + "; the move in the other sense could not be built exactly"
+    return head + ("; the same move counter-clockwise keeps the SEC" if keeps else
+                   "; the same move counter-clockwise changes the SEC too")
 
 
 def _same_sec(a: Levels, b: Levels) -> bool:

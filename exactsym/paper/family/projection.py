@@ -18,8 +18,7 @@ from functools import lru_cache
 from .. import polygon as P
 from ...exact import FieldElement, fmpq, rational_sqrt
 from ..circle_polygon import CirclePolygon, polygon_from_directions
-from .concentric import Ring, polygon_name
-from ..keys import line_value
+from .concentric import Ring, mirror_lines, polygon_name
 
 
 @dataclass(frozen=True)
@@ -102,23 +101,16 @@ def robot_in(label: tuple, ring: Ring) -> int | None:
 
 
 def is_type4(ring: Ring) -> tuple[bool, str]:
-    """Whether the polygon is a type 4 polygon (:func:`exactsym.paper.polygon.polygon_type`),
-    with the verdict's text.  When the Cartesian edge points cannot be built exactly (vectors of
-    unequal lengths whose ratio is not a rational square) the definition is applied to
-    the vertex strings only (for an odd polygon every line of straight symmetry passes
-    through exactly one vertex, whose even-length string is then a palindrome)."""
+    """Preprocess's "G_ij is a type 4 polygon", by the definition: the type of
+    :func:`exactsym.paper.polygon.polygon_type` computed from the exact mirrors of the
+    polygon (:func:`exactsym.paper.family.mirror_lines`, O(n)), never from the lines the
+    CW/ACW strings find (an edge string of odd length has a free middle entry, so the
+    strings can give an asymmetric odd polygon several "lines").  Returns the verdict
+    and its text."""
     if ring.polygon is None:
         return False, "the robot at C"
     poly = ring.polygon
-    try:
-        verdict = P.polygon_type(poly)
-    except NotImplementedError:
-        n = poly.n
-        lines = len(set(line_value(poly.polar, poly.directions[i])
-                        for i in P.vertex_palindromes(poly)))
-        composite = n >= 4 and any(n % p == 0 for p in range(2, int(n ** 0.5) + 1))
-        ok = n % 2 == 1 and composite and lines > 1 and lines < n and not P.is_regular(poly)
-        return ok, ("type-4" if ok else "not type-4") + f" (vertex strings: {lines} lines)"
+    verdict = P.polygon_type(poly, [key.value for key in mirror_lines(poly)])
     if verdict is None:
         return False, "no line of straight symmetry"
     return str(verdict) == "type-4", f"{verdict} ({verdict.reason})"
@@ -126,9 +118,8 @@ def is_type4(ring: Ring) -> tuple[bool, str]:
 
 @lru_cache(maxsize=4096)
 def could_be_type4(m: int) -> bool:
-    """A type 4 polygon has an odd, composite number of vertices
-    (:func:`exactsym.paper.polygon.polygon_type`: "odd, n not prime"; and ``is_type4``'s
-    vertex-string test requires the same), so at least 9."""
+    """A type 4 polygon has an odd, composite number of vertices (k > 1 mirrors of an odd
+    polygon that is not regular: k divides n and 1 < k < n), so at least 9."""
     return m >= 9 and m % 2 == 1 and not P.is_prime(m)
 
 

@@ -48,7 +48,7 @@ from .definitions import (is_straight_symmetric, is_skew_symmetric, is_symmetric
                           definition_mirrors, theorem1_asymmetric, theorem1_1_asymmetric,
                           theorem1_violations)
 from .types import (vertex_palindromes, edge_palindromes, StraightLine, straight_lines,
-                    is_regular, is_prime, TypeVerdict, polygon_type)
+                    is_regular, is_prime, TypeVerdict, polygon_type, vertices_on_line)
 from .check_symmetry import (CheckResult, check_symmetry_odd, check_symmetry_even, check_symmetry,
                              check_symmetry_odd_reference, check_symmetry_even_reference,
                              check_symmetry_odd_literal)
@@ -79,6 +79,7 @@ __all__ = [
     "is_prime",
     "TypeVerdict",
     "polygon_type",
+    "vertices_on_line",
     "CheckResult",
     "check_symmetry_odd",
     "check_symmetry_even",

@@ -10,9 +10,9 @@ from ...exact import fmpq, normal_turn
 from ..circle_polygon import CirclePolygon, polygon_from_directions
 from ..keys import ccw_gap_key
 from .check_symmetry import CheckResult, check_symmetry, visit_order
-from .definitions import theorem1_asymmetric
+from .definitions import definition_mirrors, theorem1_asymmetric
+from .types import vertices_on_line
 from .strings import check_orientation, cw_string, vertex_strings
-from .types import straight_lines
 
 
 @dataclass(frozen=True)
@@ -30,17 +30,20 @@ def elect_leader_sym(polygon: CirclePolygon, orientation: int = 1,
 
     Odd n: Check_Symmetry_Odd; degree > 1: "not possible"; degree = 1: the vertex with
     CW = ACW.  Even n: Check_Symmetry_Even; degree > 1: "not possible"; degree = 1 and
-    the line passes through a vertex: of the vertices v_i, v_j with CW = ACW return v_i if
-    CW(v_i) > CW(v_j) (lexicographically) else v_j.
+    the line passes through a vertex (by the definition: the unique exact mirror): of
+    the vertices v_i, v_j on it (both have CW = ACW) return v_i if CW(v_i) > CW(v_j)
+    (lexicographically) else v_j.
 
     ``degree="paper"`` uses the degree the check reports (for even n that is deg_sym/2,
     which for a line through two vertices is (n+2)/4, so the branch "degree = 1" is only
-    reached for n = 2: a finding); ``degree="lines"`` uses the number of distinct lines
-    found from the strings instead (the evident intent)."""
+    reached for n = 2: a finding); ``degree="lines"`` uses the number of lines of
+    straight symmetry instead (the evident intent), counted by the definition (exact
+    mirrors, :func:`exactsym.paper.polygon.definition_mirrors`), not from the strings,
+    which can find more lines than there are (``lemma-straight-sym``)."""
     check = check_symmetry(polygon, orientation)
     n = polygon.n
     if degree == "lines":
-        deg = fmpq(len(straight_lines(polygon)))
+        deg = fmpq(len(definition_mirrors(polygon)))
     elif degree == "paper":
         deg = check.degree
     else:
@@ -53,11 +56,21 @@ def elect_leader_sym(polygon: CirclePolygon, orientation: int = 1,
     if deg == 1 and n % 2 and len(axis) >= 1:
         return SymLeader(axis[0], polygon.labels[axis[0]], "leader on the line of symmetry",
                          check)
-    if deg == 1 and n % 2 == 0 and axis:
-        if len(axis) == 1:
-            i = axis[0]
+    if deg == 1 and n % 2 == 0:
+        # "the line of symmetry passes through either a single vertex or through two
+        # vertices": a property without an algorithm, evaluated by the definition (the
+        # unique exact mirror and the vertices on it); "find two vertices v_i and v_j
+        # with CW = ACW" read as the vertices on that line (both have CW = ACW; other
+        # vertices may too, by the free middle entry of an odd-length string)
+        mirrors = definition_mirrors(polygon)
+        on = vertices_on_line(polygon, mirrors[0]) if len(mirrors) == 1 else ()
+        if not on:
+            return SymLeader(None, None, "Leader Election is not possible for G (the line "
+                             "of symmetry passes through no vertex)", check)
+        if len(on) == 1:
+            i = on[0]
             return SymLeader(i, polygon.labels[i], "one vertex on the line of symmetry", check)
-        vi, vj = axis[0], axis[1]
+        vi, vj = on[0], on[1]
         VI, VJ = cw_string(polygon, vi, orientation), cw_string(polygon, vj, orientation)
         win = vi if VI > VJ else vj
         return SymLeader(win, polygon.labels[win], "VI > VJ" if win == vi else "VI <= VJ",

@@ -1,14 +1,15 @@
-"""Lines of straight symmetry from palindromic strings and the polygon types of
-Section 3 (``type-0`` .. ``type-4``, ``obs-sym-type-0``, ``lem-sym-type-01``).
+"""Lines of straight symmetry as the CW/ACW strings find them (``lemma-straight-sym``:
+:func:`straight_lines`, reported as ``lines_by_strings``) and the polygon types of Section 3
+(``type-0`` .. ``type-4``) by their definition, from the exact mirrors (:func:`polygon_type`).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ...exact import fmpq, normal_turn
 from ..circle_polygon import CirclePolygon
-from ..keys import ccw_gap_key, line_value
+from ..keys import ccw_gap_key, hashable_key, line_value
+from .definitions import definition_mirrors
 from .strings import (HASH_BASE, HASH_MOD, Hasher, cw_string_edge, gap_classes, perpendicular,
                       string_classes, vertex_strings)
 
@@ -124,66 +125,74 @@ def is_prime(n: int) -> bool:
 
 class TypeVerdict(str):
     """``"type-0"`` .. ``"type-4"`` or ``"unclassified"``; ``.reason`` says why, ``.lines``
-    are the straight lines counted."""
+    are the lines of straight symmetry counted (line keys), ``.through`` the number of
+    vertices on each."""
     reason: str
     lines: tuple
+    through: tuple
 
-    def __new__(cls, name: str, reason: str, lines=()):
+    def __new__(cls, name: str, reason: str, lines=(), through=()):
         obj = super().__new__(cls, name)
         obj.reason = reason
         obj.lines = tuple(lines)
+        obj.through = tuple(through)
         return obj
 
 
-def polygon_type(polygon: CirclePolygon, lines: list[StraightLine] | None = None):
-    """The type (Section 3, after ``lemma-sym-regular``) of a straight symmetric polygon, or
-    None when the strings find no line of straight symmetry.
+def vertices_on_line(polygon: CirclePolygon, key) -> tuple:
+    """The vertices (storage indices) whose direction from C lies on the line ``key``
+    (a line key of :func:`exactsym.paper.polygon.definition_mirrors`)."""
+    return tuple(i for i, d in enumerate(polygon.directions)
+                 if line_value(polygon.polar, d) == key)
 
-    type 0: regular; type 1: even, exactly two perpendicular straight lines through no
-    vertex; type 2: even, exactly one straight line, through two vertices or two edges;
-    type 3: odd, exactly one straight line, through a vertex and an edge; type 4: odd, n
-    not prime, more than one and fewer than n lines.  Otherwise ``"unclassified"`` with a
-    reason (``obs-exh-poly`` claims this never happens)."""
-    if lines is None:
-        lines = straight_lines(polygon)
+
+def polygon_type(polygon: CirclePolygon, mirrors=None):
+    """The type (Section 3, after ``lemma-sym-regular``: ``type-0`` .. ``type-4``) of a
+    straight symmetric polygon by its definition, or None when the polygon has no line of
+    straight symmetry (a skew-only or asymmetric polygon has no type).
+
+    ``mirrors``: its lines of straight symmetry as line keys, default the exact mirrors
+    of the definition (:func:`exactsym.paper.polygon.definition_mirrors`); the family
+    layer passes its O(n) :func:`exactsym.paper.family.mirror_lines`.  The lines the
+    CW/ACW strings find (:func:`straight_lines`) are *not* used: they can exceed the
+    mirrors (``lemma-straight-sym``, reported separately as ``lines_by_strings``).
+
+    Rules: regular -> type 0.  Even n (a mirror passes through 0 or 2 vertices): exactly
+    two mirrors, both through no vertex -> type 1 (two mirrors of an inscribed polygon
+    are perpendicular, else their product would be a rotation of order > 2 and there
+    would be more mirrors); exactly one mirror -> type 2 (through two vertices or two
+    edge midpoints); otherwise "unclassified" (``obs-exh-poly`` says this never
+    happens).  Odd n (every mirror passes through exactly one vertex and one edge
+    midpoint, ``proofs/check_symmetry_odd.md``): one mirror -> type 3; k > 1 mirrors ->
+    type 4 (k divides n, k < n as the polygon is not regular, so n is composite).  An
+    odd polygon is therefore never unclassified."""
+    if mirrors is None:
+        mirrors = definition_mirrors(polygon)
+    mirrors = list(mirrors)
     n = polygon.n
-    if not lines:
+    if not mirrors:
         return None
-    count = len(lines)
+    count = len(mirrors)
+    on_line: dict = {}
+    for d in polygon.directions:
+        k = hashable_key(line_value(polygon.polar, d))
+        on_line[k] = on_line.get(k, 0) + 1
+    through = [on_line.get(hashable_key(key), 0) for key in mirrors]
     if is_regular(polygon):
-        return TypeVerdict("type-0", "regular", lines)
-    through = [len(line.vertices) for line in lines]
+        return TypeVerdict("type-0", "regular", mirrors, through)
+    on_vertices = sum(1 for t in through if t)
     if n % 2 == 0:
-        if count == 2 and all(t == 0 for t in through):
-            a, b = lines
-            if _perpendicular_keys(polygon, a.key, b.key):
-                return TypeVerdict("type-1", "even, two perpendicular lines through no vertex",
-                                   lines)
-            return TypeVerdict("unclassified", "even, two lines through no vertex, not "
-                               "perpendicular", lines)
+        if count == 2 and on_vertices == 0:
+            return TypeVerdict("type-1", "even, two (perpendicular) mirrors through no "
+                               "vertex", mirrors, through)
         if count == 1:
-            line = lines[0]
-            if len(line.vertices) == 2 or (len(line.vertices) == 0 and len(line.edges) == 2):
-                return TypeVerdict("type-2", "even, one line through two vertices or two edges",
-                                   lines)
-            return TypeVerdict("unclassified", f"even, one line through {len(line.vertices)} "
-                               f"vertices and {len(line.edges)} edge midpoints", lines)
-        return TypeVerdict("unclassified", f"even, not regular, {count} lines of straight "
-                           f"symmetry ({sum(1 for t in through if t)} through vertices)", lines)
+            where = "two vertices" if through[0] == 2 else "two edge midpoints"
+            return TypeVerdict("type-2", f"even, one mirror, through {where}", mirrors,
+                               through)
+        return TypeVerdict("unclassified", f"even, not regular, {count} mirrors "
+                           f"({on_vertices} through vertices)", mirrors, through)
     if count == 1:
-        line = lines[0]
-        if len(line.vertices) == 1 and len(line.edges) == 1:
-            return TypeVerdict("type-3", "odd, one line through a vertex and an edge", lines)
-        return TypeVerdict("unclassified", f"odd, one line through {len(line.vertices)} "
-                           f"vertices and {len(line.edges)} edge midpoints", lines)
-    if not is_prime(n) and 1 < count < n:
-        return TypeVerdict("type-4", f"odd composite, {count} lines", lines)
-    return TypeVerdict("unclassified", f"odd, not regular, {count} lines, n = {n}"
-                       + (" prime" if is_prime(n) else ""), lines)
-
-
-def _perpendicular_keys(polygon: CirclePolygon, a, b) -> bool:
-    if polygon.polar:
-        return normal_turn(a - b) in (fmpq(1, 4), fmpq(3, 4))
-    # line keys are rays of the doubled angle: perpendicular lines have opposite rays
-    return a == ((-b[0], b[1]) if b[0] != 0 else (0, -b[1]))
+        return TypeVerdict("type-3", "odd, one mirror, through a vertex and an edge midpoint",
+                           mirrors, through)
+    return TypeVerdict("type-4", f"odd, not regular, {count} mirrors (n = {n} composite)",
+                       mirrors, through)

@@ -31,7 +31,7 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
     extra), ``ValueError`` for an unknown picture format.
 
     >>> from exactsym.configuration import Configuration
-    >>> from exactsym.plot import plot
+    >>> from exactsym.pictures import plot
     >>> square = Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -1)])
     >>> fig = plot(square)
     >>> sorted(a.get_gid() for a in fig.axes[0].lines if (a.get_gid() or "").startswith("mirror"))

@@ -1,4 +1,4 @@
-"""Pictures of a run (exactsym.plot.run) on a synthetic run: positions along segments
+"""Pictures of a run (exactsym.pictures.run) on a synthetic run: positions along segments
 and arcs, the still picture's paths and violation, one frame per event, the GIF and the
 standalone HTML stepper."""
 
@@ -12,10 +12,10 @@ from pathlib import Path
 
 import pytest
 
-from exactsym.plot.run import (Arc, Event, Layer, Move, Run, Segment, Violation, frame_times,
+from exactsym.pictures.run import (Arc, Event, Layer, Move, Run, Segment, Violation, frame_times,
                                plot_run, position, run_from_dict, run_to_dict, write_frames,
                                write_gif, write_html)
-from exactsym.plot.run_cli import main
+from exactsym.pictures.run_cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
 SVG = "{http://www.w3.org/2000/svg}"

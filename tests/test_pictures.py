@@ -1,4 +1,4 @@
-"""Pictures of configurations (exactsym.plot), checked as a person would look at them:
+"""Pictures of configurations (exactsym.pictures), checked as a person would look at them:
 parse the SVG (robots, circles, lines counted and placed where expected), check the PNG
 is the fixed size and not blank, and that the same input gives the same bytes."""
 
@@ -14,11 +14,11 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 
-import exactsym.plot as plot_pkg
+import exactsym.pictures as plot_pkg
 from exactsym.configuration import Configuration, load
 from exactsym.exact import fmpq as Q
-from exactsym.plot import PlotUnavailable, plot
-from exactsym.plot.cli import main
+from exactsym.pictures import PlotUnavailable, plot
+from exactsym.pictures.cli import main
 
 from strategies import rational_group_points, rational_rotations
 
@@ -191,7 +191,7 @@ def test_rotating_the_input_rotates_the_mirrors(points, rotation):
     """Metamorphic: an exact rotation of the input turns every drawn mirror with it."""
     c, s = rotation
     turned = [(c * x - s * y, s * x + c * y) for x, y in points]
-    from exactsym.plot._bridge import scene_of
+    from exactsym.pictures._bridge import scene_of
     a = scene_of(Configuration.from_points(points))
     b = scene_of(Configuration.from_points(turned))
     assert (a.group, len(a.mirrors), a.n) == (b.group, len(b.mirrors), b.n)

@@ -1,8 +1,8 @@
-"""Pictures of a run from its JSON form (:func:`exactsym.plot.run.run_from_dict`).
+"""Pictures of a run from its JSON form (:func:`exactsym.pictures.run.run_from_dict`).
 
-``python -m exactsym.plot.run_cli RUN.json --plot run.svg --frames DIR --gif run.gif
+``python -m exactsym.pictures.run_cli RUN.json --plot run.svg --frames DIR --gif run.gif
 --html run.html``.  :func:`add_arguments` / :func:`outputs` are for ``exactsym gather``
-to reuse once the simulator gives a :class:`exactsym.plot.run.Run`.
+to reuse once the simulator gives a :class:`exactsym.pictures.run.Run`.
 """
 
 from __future__ import annotations
@@ -42,9 +42,9 @@ def outputs(run, args) -> list[str]:
 def main(argv=None) -> int:
     from .draw import PlotUnavailable
     from .run import run_from_dict
-    parser = argparse.ArgumentParser(prog="python -m exactsym.plot.run_cli",
+    parser = argparse.ArgumentParser(prog="python -m exactsym.pictures.run_cli",
                                      description="Draw a run given as JSON.",
-                                     epilog="example: python -m exactsym.plot.run_cli "
+                                     epilog="example: python -m exactsym.pictures.run_cli "
                                             "docs/examples/synthetic-run.json --html run.html")
     parser.add_argument("run", help="the run, as JSON")
     add_arguments(parser)

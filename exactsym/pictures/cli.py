@@ -1,7 +1,7 @@
 """The ``plot`` command: ``exactsym plot FILE [-o OUT] [--show-paper] [--show-audit]``.
 
 :func:`add_arguments` and :func:`run` are for the main command line to wire; :func:`main`
-is a standalone entry (``python -m exactsym.plot FILE -o out.svg``).
+is a standalone entry (``python -m exactsym.pictures FILE -o out.svg``).
 """
 
 from __future__ import annotations
@@ -53,7 +53,7 @@ def run(args) -> int:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(
-        prog="python -m exactsym.plot",
+        prog="python -m exactsym.pictures",
         description="Draw a configuration: robots, SEC, levels, the ground truth's mirrors "
                     "and rotation centre, its leader and ordering.", epilog=EXAMPLE)
     add_arguments(parser)

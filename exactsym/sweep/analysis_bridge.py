@@ -1,0 +1,262 @@
+"""The one place where the sweep touches the rest of exactsym.
+
+Everything the sweep needs from the analysis layers is imported here, and only here
+(besides :mod:`exactsym.exact`), so that when modules move (the analysis pipeline, the configuration reader, the family
+layer, the gathering simulator) one file changes.
+
+What it offers, all on plain data (points as in :class:`.families.SweepItem`):
+
+* :func:`analyse` -- one configuration, ``what`` in ``truth | paper | audit | gather``:
+  ``{"failed": [labels], "applicable": [labels] | None, ...}``;
+* :func:`discrepancy_text` -- what the analysis says about one label (a case file's notes);
+* :func:`expect_block` -- the ``[expect]`` block a counterexample's case file carries;
+* :func:`check_case_file` -- load a case file and compare its ``[expect]`` block with
+  ``exactsym check`` (the messages of ``exactsym cases``);
+* :func:`file_points` -- a configuration file's points as text (``perturb:``);
+* :func:`statement_labels` -- the labels an analysis can report;
+
+"Applicable" (the statement's hypotheses held on the configuration) is derived as follows
+(``docs/sweeps.md``): for the audit's own statements from the same data the audit uses
+(``lemma-sym-ord``: n > 1 and P in O_S; the iff statements ``Psym-Gsym``, ``Pasym-Pord``,
+``cor-Pasym-Pord`` and the conclusion ``GatheringPattern``: every configuration;
+``lem-asym-ord``: an asymmetric level, or a true orderable configuration whose leader is
+checked for observer independence; ``lem-sym-notord`` / ``lem-asym-pair-ord``: a
+symmetric / asymmetric pair among the pairs the audit checks; ``lem-all-pair-asym-ord`` /
+``lem-one-pair-asym-ord``: Find_Asymmetry_Pair / FindAsymmetry finds one); for every
+other label, the paper's trace shows it on this configuration (a claim checked on at
+least one instance -- an entry with ``holds`` -- or an algorithm that ran).  A label
+that fails is applicable.  Truth has no statements (``applicable`` is None).
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from .casefile import case_text
+
+__all__ = ["analyse", "warm_up", "discrepancy_text", "expect_block", "check_case_file", "file_points",
+           "statement_labels", "WHATS",
+           "BridgeInputError"]
+
+WHATS = ("truth", "paper", "audit", "gather")
+
+#: The conclusions the audit reports besides the statements (``exactsym.audit``).
+_AUDIT_CONCLUSIONS = ("GatheringPattern", "ElectLeader", "MakeAsym")
+#: The statements the audit checks itself against the truth (their hypotheses are
+#: derived by :func:`_audit_hypotheses`, never from the paper's trace).
+_AUDIT_OWN = ("lemma-sym-ord", "lem-asym-ord", "lem-sym-notord", "lem-asym-pair-ord",
+              "lem-all-pair-asym-ord", "lem-one-pair-asym-ord", "Psym-Gsym", "Pasym-Pord",
+              "cor-Pasym-Pord")
+_ALWAYS = ("Psym-Gsym", "Pasym-Pord", "cor-Pasym-Pord", "GatheringPattern")
+
+
+class BridgeInputError(ValueError):
+    """A file the user named cannot be used (exit 2); the message names it."""
+
+
+# ---------------------------------------------------------------- configurations
+def configuration(points, source: str = "<sweep>"):
+    """The :class:`exactsym.configuration.Configuration` of ``points``, read from the
+    same text a case file holds (so a worker analyses exactly what is written)."""
+    from ..configuration import from_file
+    from ..fileformat import parse_config_text
+    return from_file(parse_config_text(case_text(points), source, "toml"))
+
+
+def file_points(path: str) -> tuple:
+    """The points of a configuration file as text: polar points as written (radius text,
+    rational turn), Cartesian points when every coordinate is rational."""
+    from ..configuration import load
+    from ..errors import InputError
+    from ..exact import RationalSystem
+    try:
+        config = load(path)
+    except InputError as err:
+        raise BridgeInputError(str(err)) from None
+    if config.polar is not None and config.specs:
+        return tuple(("polar", s.texts[0] if s.texts else "1", str(Fraction(s.turn)))
+                     for s in config.specs)
+    if not isinstance(config.system, RationalSystem):
+        raise BridgeInputError(f"{path}: perturb needs rational Cartesian or polar points")
+    return tuple(("xy", _q(x), _q(y)) for x, y in config.points)
+
+
+def _q(x) -> str:
+    return str(x.p) if x.q == 1 else f"{x.p}/{x.q}"
+
+
+# ---------------------------------------------------------------- the analyses
+def warm_up(what: str) -> None:
+    """Import what ``analyse(what, ...)`` needs (a worker does it once, before the clock
+    of its first batch: the imports take about a second)."""
+    from .. import audit, symmetry  # noqa: F401
+    from ..paper import family  # noqa: F401
+    if what == "gather":
+        from ..gathering import cases  # noqa: F401
+
+
+def statement_labels(what: str) -> tuple:
+    """Every label ``analyse(what, ...)`` checks, in the paper's order (``paper``: not the
+    statements about orderability, which need the truth)."""
+    if what in ("audit", "paper"):
+        from ..audit import CLAIMS, STATEMENT_ORDER
+        labels = list(STATEMENT_ORDER) + [c for c in CLAIMS if c not in STATEMENT_ORDER]
+        if what == "audit":
+            labels += [c for c in _AUDIT_CONCLUSIONS if c not in labels]
+        else:                         # the paper alone cannot check the truth's statements
+            labels = [c for c in labels if c not in _AUDIT_OWN]
+        return tuple(labels)
+    return ()
+
+
+def analyse(what: str, points, budget: int = 0) -> dict:
+    """Run one analysis on the configuration ``points`` (see the module docstring)."""
+    from ..configuration import no_cycle_collection
+    config = configuration(points)
+    with no_cycle_collection():
+        if what == "truth":
+            return _truth(config)
+        if what == "paper":
+            return _paper(config)
+        if what == "audit":
+            return _audit(config)
+        if what == "gather":
+            return _gather(config, budget)
+    raise ValueError(f"unknown analysis {what!r}")
+
+
+def _truth(config) -> dict:
+    from ..symmetry import symmetry_group
+    group = symmetry_group(config)
+    return {"failed": [], "applicable": None,
+            "truth": {"group": group.name, "orderable": group.orderable}}
+
+
+def _paper_summary(res) -> dict:
+    return {"orderable": res.orderable, "leader": res.leader, "complete": res.complete}
+
+
+def _paper_findings(res) -> tuple[set, set]:
+    """(labels false on the configuration, labels the trace names) from the paper alone."""
+    failed = {e["statement"] for e in res.trace
+              if e.get("holds") is False and e.get("kind") != "literal-reading"}
+    named = {e["algorithm"] for e in res.trace} | \
+        {e["statement"] for e in res.trace if "holds" in e}
+    return failed, named - set(_AUDIT_OWN) - {"Section 3"}
+
+
+def _paper(config) -> dict:
+    from ..analysis import analyse as run_analysis
+    res = run_analysis(config, sections=("family",)).paper
+    failed, named = _paper_findings(res)
+    return {"failed": sorted(failed), "applicable": sorted(named | failed),
+            "paper": _paper_summary(res)}
+
+
+def _audit(config) -> dict:
+    from ..analysis import analyse as run_analysis
+    analysis = run_analysis(config, sections=("audit",))
+    res, result = analysis.paper, analysis.audit
+    failed = {d["statement"] for d in result["discrepancies"]}
+    _, named = _paper_findings(res)
+    applicable = named | failed | set(_ALWAYS) | _audit_hypotheses(config.n, res, result)
+    truth = result["truth"]
+    return {"failed": sorted(failed), "applicable": sorted(applicable),
+            "truth": {"group": truth["group"], "orderable": truth["orderable"]},
+            "paper": _paper_summary(res)}
+
+
+def _audit_hypotheses(n: int, res, result) -> set:
+    """The audit's own statements whose hypotheses hold (module docstring)."""
+    from ..paper import family as F
+    truth = result["truth"]
+    out = set()
+    if n > 1 and truth["in_O_S"]:
+        out.add("lemma-sym-ord")
+    G = res.G_rings
+    if any(not F.is_symmetric_polygon(g) for g in G) or (truth["orderable"] and res.complete):
+        out.add("lem-asym-ord")
+    pairs, _ = F.select_pairs(G, F.DEFAULT_LIMITS)
+    for i, j in pairs:
+        out.add("lem-sym-notord" if F.is_symmetric_pair(G[i], G[j]) else "lem-asym-pair-ord")
+    try:
+        if F.find_asymmetry_pair(G, F.DEFAULT_LIMITS.step_budget(n)) is not None:
+            out.add("lem-all-pair-asym-ord")
+    except F.WorkBudgetExceeded:
+        pass
+    if F.find_asymmetry(G) is not None:
+        out.add("lem-one-pair-asym-ord")
+    return out
+
+
+# ---------------------------------------------------------------- gathering
+def _separated(points):
+    """``points`` scaled by the least integer s with every distance > 2 (unit discs apart,
+    the simulator's start condition); an exact similarity, which changes no decision."""
+    d2 = min((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2
+             for i, a in enumerate(points) for b in points[:i])
+    s = 1
+    while s * s * d2 <= 4:
+        s += 1
+    return [(x * s, y * s) for x, y in points]
+
+
+def _gather(config, budget: int) -> dict:
+    """One run of the paper's algorithm (reference readings, seeded ASYNC scheduler,
+    every invariant on) from ``config``, at most ``budget`` events (default 2000).
+    Failed labels: the violated statement, or ``gathering-within-budget`` when the run
+    neither gathered nor violated anything.  Fewer than 5 robots: not applicable."""
+    from ..exact import fmpq
+    from ..gathering.cases import run_settings, settings_of
+    if config.n < 5:
+        return {"failed": [], "applicable": None,
+                "gather": {"outcome": "not-applicable (n < 5)", "gathered": None}}
+    if config.polar is not None or not all(isinstance(c, fmpq) for p in config.points
+                                           for c in p):
+        raise BridgeInputError("the gathering simulator needs rational Cartesian "
+                               "coordinates (use grid: or random: families)")
+    points = _separated([tuple(p) for p in config.points])
+    res = run_settings(points, settings_of({"gather_max_events": budget or 2000}))
+    failed = [res.label] if res.label else \
+        ([] if res.outcome == "gathered" else ["gathering-within-budget"])
+    return {"failed": failed, "applicable": None,
+            "gather": {"outcome": res.outcome, "gathered": res.outcome == "gathered",
+                       "steps": res.events}}
+
+
+# ---------------------------------------------------------------- case files
+def discrepancy_text(what: str, points, label: str) -> str:
+    """What the analysis says about ``label`` on ``points``, in one paragraph."""
+    from ..analysis import analyse as run_analysis
+    analysis = run_analysis(configuration(points),
+                            sections=("audit",) if what == "audit" else ("family",))
+    res = analysis.paper
+    if what == "audit":
+        found = [d for d in analysis.audit["discrepancies"] if d["statement"] == label]
+        return " ".join(f"says: {d['says']}; truth: {d['truth']}." for d in found[:2])
+    if what == "paper":
+        found = [e for e in res.trace if e.get("statement") == label and e.get("holds") is False]
+        return " ".join(f"{e['algorithm']}: {e['detail']}." for e in found[:2])
+    return ""
+
+
+def expect_block(what: str, record: dict) -> dict:
+    """The ``[expect]`` keys a counterexample found by ``what`` can state exactly."""
+    out: dict = {"n": record["n"]}
+    truth, paper = record.get("truth"), record.get("paper")
+    if truth:
+        out["orderable"] = truth["orderable"]
+        out["group"] = truth["group"]
+    if paper:
+        out["paper_orderable"] = paper["orderable"]
+        out["paper_leader"] = -1 if paper["leader"] is None else paper["leader"]
+    if what == "audit":
+        out["audit_agrees"] = not record["failed"]
+    return out
+
+
+def check_case_file(path) -> list[str]:
+    """The ``[expect]`` claims of the case file at ``path`` that ``exactsym check``
+    contradicts (empty: the case passes), as ``exactsym cases`` prints them."""
+    from ..cases_cli import run_case
+    return list(run_case(path).failures)
