@@ -143,3 +143,20 @@ def test_a_tie_no_handedness_can_break_stays():
                 [(3, 4), (3, -4), (-10, 0), (10, 0), (-6, 0)])
     d = decide_corrected(pts)
     assert d.status == "stay" and "tie" in d.detail
+
+
+def test_the_touching_filter_agrees_with_the_exact_test_and_the_recogniser():
+    """The Arb-ball filter of corrected._touching against the plain exact test, on a
+    complete pattern (every pair decided by the exact fallback: balls contain 0) plus
+    robots near it, and the pattern sizes against recognise about every robot."""
+    from exactsym.gathering import corrected
+    from exactsym.gathering import geometry as g
+    from exactsym.gathering.pattern import generate
+    pts = list(generate(9)) + [(MQ.rational(F(41, 10)), MQ.rational(0)),
+                               (MQ.rational(9), MQ.rational(F(1, 3)))]
+    exact = {i for i in range(len(pts)) for j in range(len(pts))
+             if i != j and g.dist2(pts[i], pts[j]) == 4}
+    assert corrected._touching(pts, 1) == exact and len(exact) == 9
+    sizes = corrected._pattern_sizes(pts, Readings(), 1)
+    assert [s for s, _ in sizes] == [len(recognise(pts, q).robots) for q in pts]
+    assert sizes[0][0] == 9

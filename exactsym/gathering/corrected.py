@@ -64,11 +64,11 @@ from __future__ import annotations
 from functools import lru_cache
 from math import isqrt
 
-from flint import fmpq
+from flint import arb, fmpq
 
 from ..exact.multiquadratic import MQ, sqrt_rational
 from . import geometry as g
-from .pattern import recognise, slot
+from .pattern import Pattern, recognise, slot
 from .robot import Decision, Move, Readings
 
 ALGORITHMS = ("paper", "corrected")
@@ -77,10 +77,33 @@ ALGORITHMS = ("paper", "corrected")
 DETOUR_TANGENTS = tuple(fmpq(1, 2 ** k) for k in range(4, -1, -1))
 
 
+def _touching(pts, unit) -> set:
+    """The robots touching another (centres exactly 2 apart): Arb balls first (a rigorous
+    filter: a ball of |p - q|^2 - 4 that excludes 0 settles the pair), the exact test
+    only for the pairs the balls cannot separate."""
+    balls = [(p[0].to_arb(), p[1].to_arb()) for p in pts]
+    four = arb(4 * unit * unit)
+    out = set()
+    for i in range(len(pts)):
+        for j in range(i + 1, len(pts)):
+            dx, dy = balls[i][0] - balls[j][0], balls[i][1] - balls[j][1]
+            if 0 in dx * dx + dy * dy - four and g.dist2(pts[i], pts[j]) == 4 * unit * unit:
+                out |= {i, j}
+    return out
+
+
 def _pattern_sizes(pts, readings, unit):
-    """``[(size, pattern)]`` of the pattern about each robot's position."""
-    return [(len(p.robots), p) for p in
-            (recognise(pts, q, readings.lone, unit) for q in pts)]
+    """``[(size, pattern)]`` of the pattern about each robot's position; a robot that
+    touches nobody has only itself about it (no robot at distance 2: no layer 1)."""
+    touching = _touching(pts, unit)
+    out = []
+    for k, q in enumerate(pts):
+        if k in touching:
+            p = recognise(pts, q, readings.lone, unit)
+        else:
+            p = Pattern(q, k, (), True)
+        out.append((len(p.robots), p))
+    return out
 
 
 def _far2(pts, k_pos, others):
