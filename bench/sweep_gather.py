@@ -7,7 +7,7 @@ readings, and A3=all with EL=unordered) and for the corrected variant
 gathered, violated (by label), stalled, not possible, other (undecided, max-events).
 
 Run: ``python bench/sweep_gather.py [--seeds K] [--n 5-12] [--json OUT]`` (the default,
-3 seeds: 288 runs, about ten minutes on one core; the table is in docs/gathering.md).
+3 seeds: 288 runs, about five minutes on one core; the table is in docs/gathering.md).
 """
 
 from __future__ import annotations
