@@ -1,32 +1,86 @@
-"""Sweep: the paper's algorithm on random separated rational configurations (n = 5..10,
-six each) under a seeded ASYNC adversary, every invariant on, for the default readings
-and for A3=all with EL=unordered; prints how the runs end.
-Run: ``python bench/sweep_gather.py`` (about two minutes)."""
+"""Sweep: where each gathering algorithm gathers and where not.
+
+Random separated rational configurations (``bench_gather.random_config``, seeded), n = 5..12,
+under the four schedulers, every invariant on, for the paper's algorithm (default
+readings, and A3=all with EL=unordered) and for the corrected variant
+(``exactsym.gathering.corrected``); prints one table row per algorithm and scheduler:
+gathered, violated (by label), stalled, not possible, other (undecided, max-events).
+
+Run: ``python bench/sweep_gather.py [--seeds K] [--n 5-12] [--json OUT]`` (the default,
+3 seeds: 288 runs, about five minutes on one core; the table is in docs/gathering.md).
+"""
 
 from __future__ import annotations
 
+import argparse
 import collections
+import json
 import time
 
 from bench_gather import random_config
 
 from exactsym.gathering.robot import Readings
-from exactsym.gathering.schedulers import run
+from exactsym.gathering.schedulers import SCHEDULERS, run
+
+SETTINGS = (("paper", "paper (default readings)", Readings()),
+            ("paper", "paper (A3=all, EL=unordered)", Readings(A3="all", EL="unordered")),
+            ("corrected", "corrected", Readings()))
+
+
+def sweep(ns, seeds: int, max_events: int = 3000):
+    rows: dict = {}
+    failures: list = []
+    for algorithm, title, readings in SETTINGS:
+        for scheduler in SCHEDULERS:
+            tally: collections.Counter = collections.Counter()
+            for n in ns:
+                for seed in range(seeds):
+                    res = run(random_config(n, seed=seed + 100 * n), scheduler, seed, readings,
+                              max_events=max_events, algorithm=algorithm)
+                    key = res.outcome if res.outcome != "violated" else f"violated {res.label}"
+                    tally[key] += 1
+                    if algorithm == "corrected" and res.outcome != "gathered":
+                        failures.append({"n": n, "seed": seed, "scheduler": scheduler,
+                                         "outcome": res.outcome, "label": res.label,
+                                         "detail": res.detail[:200]})
+            rows[(title, scheduler)] = tally
+    return rows, failures
+
+
+def table(rows) -> str:
+    lines = ["| algorithm | scheduler | runs | gathered | violated (label: count) | stalled "
+             "| not possible | other |", "|---|---|---|---|---|---|---|---|"]
+    for (title, scheduler), tally in rows.items():
+        viol = ", ".join(f"{k[9:]}: {v}" for k, v in sorted(tally.items())
+                         if k.startswith("violated"))
+        other = sum(v for k, v in tally.items() if k not in ("gathered", "stalled",
+                    "not-possible") and not k.startswith("violated"))
+        lines.append(f"| {title} | {scheduler} | {sum(tally.values())} | "
+                     f"{tally['gathered']} | {viol or '-'} | {tally['stalled']} | "
+                     f"{tally['not-possible']} | {other} |")
+    return "\n".join(lines)
 
 
 def main() -> None:
-    tally: collections.Counter = collections.Counter()
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--seeds", type=int, default=3)
+    ap.add_argument("--n", default="5-12", help="a range a-b of robot counts")
+    ap.add_argument("--json", default=None, help="also write the tallies and the corrected "
+                    "variant's failures as JSON")
+    args = ap.parse_args()
+    lo, hi = (int(x) for x in args.n.split("-"))
     start = time.perf_counter()
-    for readings in (Readings(), Readings(A3="all", EL="unordered")):
-        for n in (5, 6, 7, 8, 10):
-            for seed in range(6):
-                res = run(random_config(n, seed=seed + 100 * n), "async", seed, readings,
-                          max_events=400)
-                why = res.label if res.outcome == "violated" else res.detail.split("(")[0][:48]
-                tally[(f"A3={readings.A3} EL={readings.EL}", res.outcome, why)] += 1
-    for key, count in sorted(tally.items()):
-        print(f"{count:3d}  {' | '.join(key)}")
-    print(f"{sum(tally.values())} runs in {time.perf_counter() - start:.0f} s")
+    rows, failures = sweep(range(lo, hi + 1), args.seeds)
+    print(table(rows))
+    for f in failures:
+        print(f"corrected, not gathered: {f}")
+    print(f"{sum(sum(t.values()) for t in rows.values())} runs in "
+          f"{time.perf_counter() - start:.0f} s")
+    if args.json:
+        with open(args.json, "w", encoding="utf-8") as fh:
+            json.dump({"rows": [{"algorithm": t, "scheduler": s, "tally": dict(v)}
+                                for (t, s), v in rows.items()], "failures": failures},
+                      fh, indent=1)
 
 
 if __name__ == "__main__":

@@ -14,9 +14,9 @@ def test_api_page_examples(monkeypatch):
 
 
 def test_picture_commands_in_docs_make_the_pictures_shown(tmp_path, monkeypatch):
-    """Each picture command of docs/pictures.md (`exactsym plot ...`, `python -m
-    exactsym.pictures.run_cli ...`), run with its output sent elsewhere, draws the same
-    elements (SVG ids and texts) as the committed picture."""
+    """Each picture command of docs/pictures.md (`exactsym plot ...`, `exactsym gather
+    ... --plot`, `python -m exactsym.pictures.run_cli ...`), run with its output sent
+    elsewhere, draws the same elements (SVG ids and texts) as the committed picture."""
     import shlex
     import xml.etree.ElementTree as ET
 
@@ -31,9 +31,10 @@ def test_picture_commands_in_docs_make_the_pictures_shown(tmp_path, monkeypatch)
 
     monkeypatch.chdir(ROOT)
     commands = [line.strip() for line in (ROOT / "docs/pictures.md").read_text().splitlines()
-                if line.startswith(("exactsym plot", "python -m exactsym.pictures"))
+                if line.startswith(("exactsym plot", "exactsym gather",
+                                    "python -m exactsym.pictures"))
                 and "docs/img/" in line]
-    assert len(commands) == 2
+    assert len(commands) == 2 and any(c.startswith("exactsym gather") for c in commands)
     for command in commands:
         words = shlex.split(command)
         run_picture = words[0] == "python"

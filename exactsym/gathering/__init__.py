@@ -5,5 +5,6 @@ Modules: :mod:`.geometry` (exact points, paths, collision predicates), :mod:`.pa
 :mod:`.schedulers` (the model and the adversary), :mod:`.invariants` (I1-I10),
 :mod:`.trace` (trace files, replay), :mod:`.search` (shortest violating schedules),
 :mod:`.cases` (case-file expectations), :mod:`.cli` (commands), :mod:`.paper_bridge`
-(the only module importing the rest of exactsym).
+(the only module importing the paper layer and the kernel), :mod:`.drawing` (a run as a
+picture: the only module importing the pictures package, lazily).
 """

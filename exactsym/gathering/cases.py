@@ -9,7 +9,8 @@
 * the run's setting, so the expectation is reproducible: ``gather_scheduler``,
   ``gather_seed``, ``gather_readings`` (``["A3=all", ...]``), ``gather_invariants``
   (the invariants checked; default all), ``gather_max_events``, ``gather_non_rigid``
-  (delta, an expression string; absent: rigid).
+  (delta, an expression string; absent: rigid), ``gather_algorithm`` (``paper``, the
+  default, or ``corrected``).
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ from .schedulers import Result, run
 #: The keys compared with a run (the others, :data:`SETTING_KEYS`, set the run up).
 CHECKED_KEYS = ("gather_outcome", "gather_label", "gather_invariant", "gather_robots")
 SETTING_KEYS = ("gather_scheduler", "gather_seed", "gather_readings", "gather_invariants",
-                "gather_max_events", "gather_non_rigid")
+                "gather_max_events", "gather_non_rigid", "gather_algorithm")
 
 
 @dataclass(frozen=True)
@@ -42,7 +43,8 @@ def settings_of(expect: dict) -> dict:
             "readings": Readings.parse(expect.get("gather_readings", ())).as_dict(),
             "invariants": list(expect.get("gather_invariants", ALL)),
             "max_events": int(expect.get("gather_max_events", 2000)),
-            "rigid": delta is None, "delta": None if delta is None else str(Fraction(delta))}
+            "rigid": delta is None, "delta": None if delta is None else str(Fraction(delta)),
+            "algorithm": expect.get("gather_algorithm", "paper")}
 
 
 def run_settings(points, settings: dict, progress: bool = False) -> Result:
@@ -50,7 +52,8 @@ def run_settings(points, settings: dict, progress: bool = False) -> Result:
     return run(points, settings["scheduler"], settings["seed"],
                Readings(**settings["readings"]), settings["rigid"],
                None if delta is None else Fraction(delta), settings["max_events"],
-               Checker(enabled=frozenset(settings["invariants"])), progress)
+               Checker(enabled=frozenset(settings["invariants"])), progress,
+               algorithm=settings.get("algorithm", "paper"))
 
 
 def expectation_failures(expect: dict, res: Result) -> list:

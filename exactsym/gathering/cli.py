@@ -13,13 +13,15 @@ import argparse
 import json
 import sys
 from fractions import Fraction
+from pathlib import Path
 
+from . import drawing
 from .cases import expectation_failures, run_settings, settings_of
 from .invariants import ALL
 from .paper_bridge import GatheringInputError, read_case
 from .robot import READINGS, Readings
 from .schedulers import SCHEDULERS, TraceMismatch
-from .trace import read_trace, replay, result_dict, same_result, write_trace
+from .trace import read_trace, replay, result_dict, same_result, trace_points, write_trace
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -33,6 +35,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--reading", action="append", default=None, metavar="A1=...",
                         help="a reading switch: " + "; ".join(
                             f"{k}={'|'.join(v)}" for k, v in READINGS.items()))
+    parser.add_argument("--algorithm", choices=("paper", "corrected"), default=None,
+                        help="paper: GatheringPattern and FormGPattern as printed (default, "
+                        "or the case's gather_algorithm); corrected: a repaired variant "
+                        "(docs/gathering.md)")
     parser.add_argument("--seed", type=int, default=None)
     parser.add_argument("--search", action="store_true",
                         help="search the adversary's choices for a shortest violation")
@@ -41,6 +47,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="comma-separated invariants to check (default: all, I1..I10)")
     parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
     parser.add_argument("--trace", metavar="OUT", default=None, help="write the trace here")
+    drawing.add_arguments(parser)
 
 
 def add_replay_arguments(parser: argparse.ArgumentParser) -> None:
@@ -48,6 +55,7 @@ def add_replay_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", nargs="?", default=None,
                         help="the configuration file the trace must match (optional)")
     parser.add_argument("--json", action="store_true")
+    drawing.add_arguments(parser)
 
 
 def _fail(msg: str) -> int:
@@ -61,6 +69,8 @@ def _settings(args, expect: dict) -> dict:
         s["scheduler"] = args.scheduler
     if args.seed is not None:
         s["seed"] = args.seed
+    if args.algorithm is not None:
+        s["algorithm"] = args.algorithm
     if args.max_events is not None:
         s["max_events"] = args.max_events
     if args.reading:
@@ -104,6 +114,7 @@ def _validate_start(points, source) -> None:
 def _text(res, settings) -> str:
     lines = [f"outcome: {res.outcome}" + (f" ({res.label})" if res.label else ""),
              f"detail: {res.detail}",
+             f"algorithm: {settings.get('algorithm', 'paper')}, "
              f"scheduler: {settings['scheduler']}, seed {settings['seed']}, "
              f"{'rigid' if settings['rigid'] else 'non-rigid ' + settings['delta']}, readings "
              + ", ".join(f"{k}={v}" for k, v in settings["readings"].items()),
@@ -119,6 +130,21 @@ def _text(res, settings) -> str:
                      f"{p['centre'][1]}), centre robot {p['centre_robot']}, layers "
                      f"{p['layers']}")
     return "\n".join(lines)
+
+
+def _pictures(points, res, args, name: str) -> int | None:
+    """Write the pictures asked for (messages on stderr when --json); 2 on failure."""
+    if not drawing.wants_pictures(args):
+        return None
+    try:
+        lines = drawing.write_pictures(points, res, args, name)
+    except drawing.PicturesUnavailable as err:
+        return _fail(str(err))
+    except (OSError, ValueError) as err:
+        return _fail(f"cannot write the pictures: {err}")
+    for line in lines:
+        print(f"picture: {line}", file=sys.stderr if args.json else sys.stdout)
+    return None
 
 
 def run(args) -> int:
@@ -146,7 +172,7 @@ def run(args) -> int:
     failures = expectation_failures(expect, res)
     if args.trace:
         try:
-            write_trace(args.trace, points, res, settings)
+            write_trace(args.trace, points, res, settings, Path(args.file).name)
         except OSError as err:
             return _fail(f"cannot write the trace: {err}")
     if args.json:
@@ -159,6 +185,9 @@ def run(args) -> int:
         print(_text(res, settings))
         if res.outcome == "max-events" and args.trace:
             print(f"stopped at --max-events; trace written to {args.trace}")
+    failed = _pictures(points, res, args, Path(args.file).name)
+    if failed:
+        return failed
     for f in failures:
         print(f"{args.file}: {f}", file=sys.stderr)
     return 1 if failures else 0
@@ -184,6 +213,10 @@ def run_replay(args) -> int:
               + f", {res.events} events, {res.looks} Looks")
         print("identical to the recorded run" if not diff else
               f"DIFFERS from the recorded run on: {', '.join(diff)}")
+    failed = _pictures(points if points is not None else trace_points(data), res, args,
+                       data.get("name") or Path(args.trace).name)
+    if failed:
+        return failed
     return 1 if diff else 0
 
 

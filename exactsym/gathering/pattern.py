@@ -34,7 +34,7 @@ from functools import lru_cache
 from flint import fmpq
 
 from ..exact.multiquadratic import MQ, sqrt_rational
-from .geometry import add, angle_key, angle_less, dist2, dot, rotate, scale, sub
+from .geometry import add, angle_key, angle_less, cross, dist2, dot, rotate, scale, sub
 
 
 @lru_cache(maxsize=None)
@@ -141,10 +141,16 @@ def _chains(points, members, centre, unit=1):
     order = sorted(members, key=lambda i: _SortKey(angle_key(ref, sub(points[i], centre))))
     m = len(order)
     touching = [_touch(points[order[j]], points[order[(j + 1) % m]], unit) for j in range(m)]
-    if m > 1 and all(touching):
-        return [order]                      # a closed ring
     if m == 1:
         return [order]
+    if m == 2:
+        # one pair: touching[0] and touching[1] are the same contact, not a ring
+        if not touching[0]:
+            return [[order[0]], [order[1]]]
+        a, b = (sub(points[i], centre) for i in order)
+        return [order if cross(a, b).sign() > 0 else order[::-1]]
+    if all(touching):
+        return [order]                      # a closed ring
     # start after a gap
     start = next(j for j in range(m) if not touching[(j - 1) % m])
     chains, cur = [], []

@@ -45,6 +45,7 @@ class Result:
     violation: dict | None
     pattern: dict
     actions: list = field(default_factory=list)
+    log: tuple = ()               # world.Step per Look and advance: the paths, exact
 
     @property
     def label(self) -> str | None:
@@ -100,10 +101,12 @@ def _status(world: World):
 def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Readings(),
         rigid: bool = True, delta: Fraction | None = None, max_events: int = 2000,
         checker: Checker | None = None, progress: bool = False, reflections: bool = True,
-        actions: list | None = None) -> Result:
-    """Run the gathering algorithm; ``actions`` replays a recorded adversary instead."""
+        actions: list | None = None, algorithm: str = "paper") -> Result:
+    """Run the gathering algorithm (``algorithm``: "paper", the paper's GatheringPattern
+    and FormGPattern, or "corrected", :mod:`.corrected`); ``actions`` replays a recorded
+    adversary instead."""
     checker = checker if checker is not None else Checker()
-    world = World(points, readings, rigid, delta, checker)
+    world = World(points, readings, rigid, delta, checker, algorithm)
     r = _Run(world, max_events, progress)
     rng = random.Random(seed)
     outcome, detail, violation = "max-events", f"stopped after {max_events} events", None
@@ -128,7 +131,7 @@ def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Re
     checks = dict(checker.counts)
     checks["skipped"] = checker.undecided_fresh   # I3/I9 Looks the kernel could not hold
     return Result(outcome, detail, world.events, world.looks, checks, violation,
-                  pattern, r.actions)
+                  pattern, r.actions, tuple(world.log))
 
 
 def _terminal(world: World):

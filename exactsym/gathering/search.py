@@ -58,7 +58,8 @@ def exhaustive(points, settings: dict, max_depth: int = 8, max_nodes: int = 1500
     delta = settings.get("delta")
     root = World(points, readings, settings.get("rigid", True),
                  None if delta is None else Fraction(delta),
-                 Checker(enabled=frozenset(settings["invariants"])))
+                 Checker(enabled=frozenset(settings["invariants"])),
+                 settings.get("algorithm", "paper"))
     queue = deque([(root, [])])
     seen = {_key(root)}
     nodes = 0
@@ -95,7 +96,7 @@ def search_violation(points, settings: dict, max_depth: int = 8, max_nodes: int 
                    delta=None if delta is None else Fraction(delta),
                    max_events=len(actions) + 1,
                    checker=Checker(enabled=frozenset(settings["invariants"])),
-                   actions=actions)
+                   actions=actions, algorithm=settings.get("algorithm", "paper"))
     found = exhaustive(points, settings, max_depth, max_nodes)
     if found is not None:
         return replayed(found)
@@ -104,7 +105,8 @@ def search_violation(points, settings: dict, max_depth: int = 8, max_nodes: int 
         delta = settings.get("delta")
         res = run(points, "async", seed, Readings(**settings["readings"]),
                   settings.get("rigid", True), None if delta is None else Fraction(delta),
-                  settings["max_events"], Checker(enabled=frozenset(settings["invariants"])))
+                  settings["max_events"], Checker(enabled=frozenset(settings["invariants"])),
+                  algorithm=settings.get("algorithm", "paper"))
         if res.outcome == "violated" and (best is None or res.events < best.events):
             best = res
     return best

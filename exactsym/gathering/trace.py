@@ -27,15 +27,16 @@ def result_dict(res: Result) -> dict:
             "violation": res.violation, "pattern": res.pattern}
 
 
-def trace_dict(points, res: Result, settings: dict) -> dict:
-    return {"format": FORMAT, "version": VERSION,
+def trace_dict(points, res: Result, settings: dict, name: str | None = None) -> dict:
+    """``name``: what the run is called in pictures (the case file's name)."""
+    return {"format": FORMAT, "version": VERSION, "name": name,
             "points": [[str(Fraction(str(x))), str(Fraction(str(y)))] for x, y in points],
             "settings": settings, "actions": res.actions, "result": result_dict(res)}
 
 
-def write_trace(path, points, res: Result, settings: dict) -> None:
+def write_trace(path, points, res: Result, settings: dict, name: str | None = None) -> None:
     with open(path, "w", encoding="utf-8") as fh:
-        json.dump(trace_dict(points, res, settings), fh, indent=1)
+        json.dump(trace_dict(points, res, settings, name), fh, indent=1)
         fh.write("\n")
 
 
@@ -73,11 +74,13 @@ def replay(data: dict, points=None) -> Result:
         readings = Readings(**s.get("readings", {}))
         enabled = frozenset(s.get("invariants", ALL))
         delta = None if s.get("delta") is None else Fraction(s["delta"])
+        if s.get("algorithm", "paper") not in ("paper", "corrected"):
+            raise ValueError(f"unknown algorithm {s.get('algorithm')!r}")
     except (TypeError, ValueError) as err:
         raise TraceMismatch(f"trace settings are unusable ({err})") from None
     return run(own, readings=readings, rigid=s.get("rigid", True), delta=delta,
                max_events=int(s.get("max_events", 10 ** 9)), checker=Checker(enabled=enabled),
-               actions=data["actions"])
+               actions=data["actions"], algorithm=s.get("algorithm", "paper"))
 
 
 def same_result(recorded: dict, res: Result) -> list:

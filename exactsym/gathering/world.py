@@ -28,7 +28,8 @@ from flint import fmpq
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
-from .robot import Readings, decide
+from .corrected import decide_for
+from .robot import Readings
 
 
 @dataclass(frozen=True)
@@ -84,6 +85,20 @@ IDENTITY = Frame()
 MIRROR = Frame(reflect=True)
 
 
+@dataclass(frozen=True)
+class Step:
+    """One entry of a run's path log: at event ``event`` robot ``robot`` Looked
+    (``kind = "look"``; ``pieces``: the path it planned, world frame, empty when it
+    stays; ``centre``: the C it saw) or advanced (``kind = "advance"``; ``pieces``: the
+    one piece it moved along).  Exact; converted to floats only to draw
+    (:mod:`.drawing`)."""
+    event: int
+    robot: int
+    kind: str
+    pieces: tuple
+    centre: tuple | None = None
+
+
 @dataclass
 class RobotState:
     pos: tuple
@@ -104,7 +119,9 @@ class World:
     """Positions and pending moves; the invariant checker is told about every action."""
 
     def __init__(self, points, readings: Readings = Readings(), rigid: bool = True,
-                 delta: Fraction | None = None, checker=None):
+                 delta: Fraction | None = None, checker=None, algorithm: str = "paper"):
+        self.algorithm = algorithm
+        self.decide = decide_for(algorithm)     # robot.decide or corrected.decide_corrected
         self.robots = [RobotState((MQ.coerce(x), MQ.coerce(y))) for x, y in points]
         self.readings = readings
         self.rigid = rigid
@@ -112,6 +129,7 @@ class World:
         self.checker = checker
         self.events = 0
         self.looks = 0
+        self.log: list = []       # Step per Look and per advance (what a picture draws)
 
     @property
     def n(self) -> int:
@@ -124,7 +142,8 @@ class World:
         """The decision every robot would reach on a fresh Look now in ``frame``, with
         its moves mapped to the world frame: ``(decision, {robot: world path})``."""
         local = tuple(frame.to_local(p) for p in self.positions())
-        d = decide(local, self.readings, fmpq(frame.unit.numerator, frame.unit.denominator))
+        d = self.decide(local, self.readings,
+                        fmpq(frame.unit.numerator, frame.unit.denominator))
         paths = {m.robot: [frame.piece_to_world(pc) for pc in m.path] for m in d.moves}
         return d, paths
 
@@ -144,6 +163,8 @@ class World:
             rob.target = paths[i][-1].final
             rob.centre = frame.to_world(d.centre)
             rob.r_set = frozenset(k for k in range(self.n) if k not in d.pattern.robots)
+        self.log.append(Step(self.events, i, "look", tuple(paths.get(i) or ()),
+                             frame.to_world(d.centre)))
         if self.checker is not None:
             self.checker.after_look(self, i, frame, d, paths)
         return d
@@ -169,6 +190,7 @@ class World:
             if (g.dist2(rob.start, rob.pos) - MQ.rational(self.delta) ** 2).sign() < 0:
                 raise ValueError(f"robot {i} cannot be stopped before delta")
             rob.path = []
+        self.log.append(Step(self.events, i, "advance", (done,)))
         if self.checker is not None:
             self.checker.after_advance(self, i, done)
         if not rob.path:

@@ -1,7 +1,8 @@
 """The one place where the ledger calls the analysis (to re-run evidence cases).
 
 It loads a configuration, runs :func:`exactsym.analysis.analyse` (truth, paper, audit)
-and the ``[expect]`` comparison.  Nothing else in :mod:`exactsym.ledger` imports the
+and the ``[expect]`` comparison; a case with ``gather_*`` claims also runs the gathering
+simulator on the run it describes (:func:`exactsym.gathering.cases.run_case_file`).  Nothing else in :mod:`exactsym.ledger` imports the
 analysis.
 """
 
@@ -30,7 +31,7 @@ def analyse_case(path) -> CaseAnalysis:
     """Load ``path`` and analyse it once (the caller caches per file)."""
     from ..analysis import analyse
     from ..configuration import load
-    from ..report import failed_expectations, report_json
+    from ..report import GATHER_PREFIX, failed_expectations, report_json
     try:
         config = load(Path(path))
     except InputError as err:
@@ -38,5 +39,9 @@ def analyse_case(path) -> CaseAnalysis:
     report = report_json(analyse(config))
     audit = report.get("audit") or {}
     false = frozenset(d["statement"] for d in audit.get("discrepancies", ()))
-    return CaseAnalysis(str(path), None, tuple(failed_expectations(config, report)), false,
-                        config.n)
+    failures = list(failed_expectations(config, report))
+    if any(key.startswith(GATHER_PREFIX) for key in config.expect):
+        # the simulator's claims (gather_outcome, gather_label, ...): run the case's run
+        from ..gathering.cases import run_case_file
+        failures += run_case_file(path).failures
+    return CaseAnalysis(str(path), None, tuple(failures), false, config.n)

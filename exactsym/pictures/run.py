@@ -94,10 +94,13 @@ class Event:
 
 @dataclass(frozen=True)
 class Violation:
-    """Robots ``robots`` collide (or come closer than allowed) at ``time``."""
+    """Robots ``robots`` collide (or come closer than allowed) at ``time``.  ``at``: the
+    two centres where they would touch, when that is not where they are at ``time``
+    (a planned path that is not free): drawn as dashed discs joined by the bar."""
     robots: tuple[int, int]
     time: float
     text: str = "collision"
+    at: tuple[Point, Point] | None = None
 
 
 @dataclass(frozen=True)
@@ -110,6 +113,9 @@ class Run:
     events: tuple[Event, ...] = ()
     violation: Violation | None = None
     notes: tuple[str, ...] = field(default=())
+    #: paths planned but not travelled (a run stopped at the Look that planned them):
+    #: drawn dashed, never moving a robot
+    planned: tuple[Segment | Arc, ...] = field(default=())
 
     def __post_init__(self):
         by_robot: dict = {}
@@ -161,6 +167,8 @@ def run_to_dict(run: Run) -> dict:
     d = asdict(run)
     for m, move in zip(d["moves"], run.moves):
         m["path"]["kind"] = "arc" if isinstance(move.path, Arc) else "segment"
+    for p, path in zip(d["planned"], run.planned):
+        p["kind"] = "arc" if isinstance(path, Arc) else "segment"
     return d
 
 
@@ -181,9 +189,11 @@ def run_from_dict(d: dict) -> Run:
                             for x in d.get("layers", ())),
                events=tuple(Event(float(e["time"]), str(e["text"]), tuple(e.get("robots", ())))
                             for e in d.get("events", ())),
-               violation=None if not v else Violation(tuple(v["robots"]), float(v["time"]),
-                                                      v.get("text", "collision")),
-               notes=tuple(d.get("notes", ())))
+               violation=None if not v else Violation(
+                   tuple(v["robots"]), float(v["time"]), v.get("text", "collision"),
+                   None if not v.get("at") else tuple(tuple(map(float, p)) for p in v["at"])),
+               notes=tuple(d.get("notes", ())),
+               planned=tuple(path(p) for p in d.get("planned", ())))
 
 
 # ---------------------------------------------------------------- drawing
@@ -192,6 +202,11 @@ def _extent(run: Run) -> tuple[float, float, float, float]:
     for m in run.moves:
         for s in (0.0, 0.25, 0.5, 0.75, 1.0):
             x, y = m.path.at(s)
+            xs.append(x)
+            ys.append(y)
+    for path in run.planned:
+        for s in (0.0, 0.25, 0.5, 0.75, 1.0):
+            x, y = path.at(s)
             xs.append(x)
             ys.append(y)
     for layer in run.layers:
@@ -217,12 +232,98 @@ def _path_xy(path, upto: float = 1.0, steps: int = 64):
     return [p[0] for p in pts], [p[1] for p in pts]
 
 
-def draw_run(run: Run, t: float | None = None, prefix: str = ""):
-    """A Figure of ``run``: the whole run (``t`` None: every path, robots where the run
-    ends, the violation) or the instant ``t`` (paths travelled so far)."""
-    matplotlib, Figure = matplotlib_modules()
+#: The zoom beside a violation: half the width of its window (in robot radii), and how
+#: much larger the whole picture must be for the zoom to be drawn.
+ZOOM_HALF = 5.0
+ZOOM_WHEN = 3.0
+
+
+def _draw_scene(ax, run: Run, t, when: float, half: float, prefix: str, handles: list):
+    """Layers, paths, planned paths, robots and the violation into ``ax``; legend
+    handles are appended to ``handles`` when it is not None."""
     from matplotlib.lines import Line2D
     from matplotlib.patches import Circle as CirclePatch
+
+    def handle(**kw):
+        if handles is not None:
+            handles.append(Line2D([], [], **kw))
+
+    for k, layer in enumerate(run.layers):
+        ax.add_patch(CirclePatch(layer.centre, layer.radius, fill=False, ls=(0, (4, 3)),
+                                 ec=COLOURS["level"], lw=1.0, gid=f"{prefix}layer-{k}"))
+    if run.layers:
+        c = run.layers[0].centre
+        ax.plot([c[0]], [c[1]], marker="+", ms=8, color="#444444", ls="none", zorder=2,
+                gid=f"{prefix}pattern-centre")
+        handle(color=COLOURS["level"], ls=(0, (4, 3)), marker="+", mec="#444444",
+               label=f"the pattern's centre C and layers ({len(run.layers)})")
+    for k, m in enumerate(run.moves):
+        done = 1.0 if when >= m.end_time else 0.0 if when <= m.start_time else \
+            (when - m.start_time) / (m.end_time - m.start_time)
+        if t is not None:                   # the whole path, faint, then what is done
+            xs, ys = _path_xy(m.path)
+            ax.plot(xs, ys, color=_colour(m.robot), lw=0.8, alpha=0.25, zorder=2)
+        if done > 0:
+            xs, ys = _path_xy(m.path, done)
+            ax.plot(xs, ys, color=_colour(m.robot), lw=1.6, zorder=3,
+                    gid=f"{prefix}path-{m.robot}-{k}")
+    if run.moves:
+        handle(color="#555555", lw=1.6, label="paths (segments and arcs), one colour per robot")
+    for k, path in enumerate(run.planned):
+        xs, ys = _path_xy(path)
+        ax.plot(xs, ys, color="#d55e00", lw=1.2, ls=(0, (2, 2)), zorder=2,
+                gid=f"{prefix}planned-{k}")
+    if run.planned:
+        handle(color="#d55e00", lw=1.2, ls=(0, (2, 2)), label="planned path, not travelled")
+    fat = run.model == "fat"
+    rho = 1.0 if fat else 0.015 * half
+    hit = set(run.violation.robots) if run.violation and when >= run.violation.time else set()
+    for i, p in enumerate(run.start):
+        ax.add_patch(CirclePatch(p, rho, fill=False, ec=_colour(i), lw=0.8, ls=":",
+                                 gid=f"{prefix}start-{i}", zorder=3))
+        q = position(run, i, when)
+        ax.add_patch(CirclePatch(q, rho, fc=_colour(i), alpha=0.7 if fat else 1.0,
+                                 ec="#d55e00" if i in hit else "#222222",
+                                 lw=2.2 if i in hit else 0.8, gid=f"{prefix}robot-{i}",
+                                 zorder=4))
+        if fat:
+            ax.text(q[0], q[1], str(i), ha="center", va="center", fontsize=8,
+                    gid=f"{prefix}label-{i}", zorder=5, clip_on=True)
+        else:
+            ax.annotate(str(i), q, xytext=(5, 5), textcoords="offset points", fontsize=8,
+                        gid=f"{prefix}label-{i}", zorder=5, annotation_clip=True)
+    handle(marker="o", ls="none", mfc="none", mec="#555555", label="start positions (dotted)")
+    handle(marker="o", ls="none", mfc="#555555", mec="#222222", label=f"robots at t = {when:g}")
+    if hit:
+        a, b = run.violation.robots
+        pa, pb = _witness(run, when)
+        if run.violation.at is not None:
+            for k, q in enumerate((pa, pb)):
+                ax.add_patch(CirclePatch(q, rho, fill=False, ec="#d55e00", lw=1.2,
+                                         ls=(0, (2, 2)), zorder=4,
+                                         gid=f"{prefix}violation-disc-{k}"))
+        ax.plot([pa[0], pb[0]], [pa[1], pb[1]], color="#d55e00", lw=2.4,
+                gid=f"{prefix}violation", zorder=4.5)   # under the robots' numbers
+        handle(color="#d55e00", lw=2.4, label=f"{run.violation.text}: robots {a} and {b} at "
+                                              f"t = {run.violation.time:g}")
+    return hit
+
+
+def _witness(run: Run, when: float):
+    """The two points the violation's bar joins."""
+    if run.violation.at is not None:
+        return run.violation.at
+    a, b = run.violation.robots
+    return position(run, a, when), position(run, b, when)
+
+
+def draw_run(run: Run, t: float | None = None, prefix: str = ""):
+    """A Figure of ``run``: the whole run (``t`` None: every path, robots where the run
+    ends, the violation) or the instant ``t`` (paths travelled so far).  When the
+    violation is shown and the picture is much wider than a few robots, a zoom on the
+    colliding pair is drawn under the legend (SVG ids prefixed ``zoom-``)."""
+    matplotlib, Figure = matplotlib_modules()
+    from matplotlib.patches import Rectangle
 
     with matplotlib.rc_context(RC):
         fig = Figure(figsize=(9.0, 7.0), dpi=DPI)
@@ -235,56 +336,26 @@ def draw_run(run: Run, t: float | None = None, prefix: str = ""):
         ax.set_xlim(cx - half, cx + half)
         ax.set_ylim(cy - half, cy + half)
         when = end_time(run) if t is None else t
-        handles = []
-        for k, layer in enumerate(run.layers):
-            ax.add_patch(CirclePatch(layer.centre, layer.radius, fill=False, ls=(0, (4, 3)),
-                                     ec=COLOURS["level"], lw=1.0, gid=f"{prefix}layer-{k}"))
-        if run.layers:
-            handles.append(Line2D([], [], color=COLOURS["level"], ls=(0, (4, 3)),
-                                  label=f"pattern layers ({len(run.layers)})"))
-        for k, m in enumerate(run.moves):
-            done = 1.0 if when >= m.end_time else 0.0 if when <= m.start_time else \
-                (when - m.start_time) / (m.end_time - m.start_time)
-            if t is not None:                   # the whole path, faint, then what is done
-                xs, ys = _path_xy(m.path)
-                ax.plot(xs, ys, color=_colour(m.robot), lw=0.8, alpha=0.25, zorder=2)
-            if done > 0:
-                xs, ys = _path_xy(m.path, done)
-                ax.plot(xs, ys, color=_colour(m.robot), lw=1.6, zorder=3,
-                        gid=f"{prefix}path-{m.robot}-{k}")
-        if run.moves:
-            handles.append(Line2D([], [], color="#555555", lw=1.6,
-                                  label="paths (segments and arcs), one colour per robot"))
-        fat = run.model == "fat"
-        R = half
-        rho = 1.0 if fat else 0.015 * R
-        hit = set(run.violation.robots) if run.violation and when >= run.violation.time else set()
-        for i, p in enumerate(run.start):
-            ax.add_patch(CirclePatch(p, rho, fill=False, ec=_colour(i), lw=0.8, ls=":",
-                                     gid=f"{prefix}start-{i}", zorder=3))
-            q = position(run, i, when)
-            ax.add_patch(CirclePatch(q, rho, fc=_colour(i), alpha=0.7 if fat else 1.0,
-                                     ec="#d55e00" if i in hit else "#222222",
-                                     lw=2.2 if i in hit else 0.8, gid=f"{prefix}robot-{i}",
-                                     zorder=4))
-            if fat:
-                ax.text(q[0], q[1], str(i), ha="center", va="center", fontsize=8,
-                        gid=f"{prefix}label-{i}", zorder=5)
-            else:
-                ax.annotate(str(i), q, xytext=(5, 5), textcoords="offset points", fontsize=8,
-                            gid=f"{prefix}label-{i}", zorder=5)
-        handles.append(Line2D([], [], marker="o", ls="none", mfc="none", mec="#555555",
-                              label="start positions (dotted)"))
-        handles.append(Line2D([], [], marker="o", ls="none", mfc="#555555", mec="#222222",
-                              label=f"robots at t = {when:g}"))
-        if hit:
+        handles: list = []
+        hit = _draw_scene(ax, run, t, when, half, prefix, handles)
+        if hit and run.model == "fat" and half > ZOOM_WHEN * ZOOM_HALF:
             a, b = run.violation.robots
-            pa, pb = position(run, a, when), position(run, b, when)
-            ax.plot([pa[0], pb[0]], [pa[1], pb[1]], color="#d55e00", lw=2.4,
-                    gid=f"{prefix}violation", zorder=6)
-            handles.append(Line2D([], [], color="#d55e00", lw=2.4,
-                                  label=f"{run.violation.text}: robots {a} and {b} at "
-                                        f"t = {run.violation.time:g}"))
+            pa, pb = _witness(run, when)
+            mx, my = (pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2
+            zoom = fig.add_axes((0.68, 0.04, 0.30, 0.40))
+            zoom.set_aspect("equal")
+            zoom.set_xlim(mx - ZOOM_HALF, mx + ZOOM_HALF)
+            zoom.set_ylim(my - ZOOM_HALF, my + ZOOM_HALF)
+            zoom.set_xticks([])
+            zoom.set_yticks([])
+            for spine in zoom.spines.values():
+                spine.set_edgecolor("#d55e00")
+            zoom.set_title(f"zoom on robots {a} and {b} ({2 * ZOOM_HALF:g} robot radii wide)",
+                           fontsize=8)
+            _draw_scene(zoom, run, t, when, ZOOM_HALF, f"{prefix}zoom-", None)
+            ax.add_patch(Rectangle((mx - ZOOM_HALF, my - ZOOM_HALF), 2 * ZOOM_HALF,
+                                   2 * ZOOM_HALF, fill=False, ec="#d55e00", lw=0.8,
+                                   gid=f"{prefix}zoom-window"))
         title = run.name if t is None else f"{run.name}: t = {t:g}"
         fig.text(0.01, 0.965, title, fontsize=11, weight="bold", va="top")
         now = [e.text for e in run.events if e.time == when] if t is not None else []
