@@ -21,11 +21,15 @@ from typing import Callable, Union
 
 from flint import acb_poly, arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz
 
+from .inverse import inverse_mod
+
 Rational = fmpq
 Number = Union[fmpq, "FieldElement"]
 
 _START_PRECISION = 64
 _MAX_PRECISION = 1 << 22   # a sign that needs more bits than this means a bug upstream
+_XGCD_BITS = 20_000        # fmpq_poly.xgcd is faster below this degree x coefficient bits,
+                           # and in degree <= 32 whatever the coefficients
 
 
 def as_fmpq(value) -> fmpq:
@@ -172,8 +176,12 @@ class FieldElement:
             raise ZeroDivisionError("division by zero")
         if self.poly.degree() == 0:
             return FieldElement(self.field, fmpq_poly([1 / self.poly.coeffs()[0]]))
-        g, s, _ = self.poly.xgcd(self.field.minpoly)
-        return FieldElement(self.field, s / g.coeffs()[0])
+        if self.field.degree <= 32 or \
+                self.field.degree * self.poly.numer().height_bits() <= _XGCD_BITS:
+            g, s, _ = self.poly.xgcd(self.field.minpoly)
+            return FieldElement(self.field, s / g.coeffs()[0])
+        # large coefficients: fmpq_poly.xgcd explodes (minutes); see .inverse
+        return FieldElement(self.field, inverse_mod(self.poly, self.field.minpoly))
 
     def __truediv__(self, other):
         o = self._other(other)
