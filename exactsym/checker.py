@@ -49,11 +49,24 @@ def rat(text) -> tuple[int, int]:
         return text, 1
     num, slash, den = text.partition("/") if isinstance(text, str) else ("?", "", "")
     try:
-        p, q = int(num), (int(den) if slash else 1)
+        p, q = integer(num), (integer(den) if slash else 1)
     except ValueError:
         q = 0
     need(q > 0, f"not an exact rational: {text!r}")
     return p, q
+
+
+def integer(text: str) -> int:
+    """``int(text)`` for a decimal integer of any length: Python's ``int`` refuses strings of
+    more than 4300 digits, so longer ones are read in chunks (no global limit is changed)."""
+    digits = text[1:] if text[:1] in "+-" else text
+    if not (digits.isascii() and digits.isdigit()):
+        raise ValueError(f"not an integer: {text!r}")
+    value = 0
+    for start in range(0, len(digits), 4000):
+        chunk = digits[start:start + 4000]
+        value = value * 10 ** len(chunk) + int(chunk)
+    return -value if text[:1] == "-" else value
 
 
 def frac(text) -> Fraction:

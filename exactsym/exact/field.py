@@ -116,6 +116,45 @@ class NumberField:
         return f"NumberField({self.name}, degree {self.degree})"
 
 
+def _embedding(small: NumberField, large: NumberField):
+    """The map of polynomials representing Q(zeta_a) in Q(zeta_b), a | b, or None."""
+    a, b = small.conductor, large.conductor
+    if a is None or b is None or b % a:
+        return None
+    step = b // a
+
+    def embed(poly: fmpq_poly) -> fmpq_poly:
+        coeffs = [fmpq(0)] * ((len(poly.coeffs()) - 1) * step + 1)
+        for i, c in enumerate(poly.coeffs()):
+            coeffs[i * step] = c
+        return fmpq_poly(coeffs) % large.minpoly
+    return embed
+
+
+def _common(x: "FieldElement", y: "FieldElement"):
+    """``(x, y)`` written in one field: a cyclotomic field holds the elements of its
+    cyclotomic subfields (a polar file's radii and its Cartesian coordinates, issue 9)."""
+    embed = _embedding(y.field, x.field)
+    if embed is not None:
+        return x, FieldElement(x.field, embed(y.poly))
+    embed = _embedding(x.field, y.field)
+    if embed is not None:
+        return FieldElement(y.field, embed(x.poly)), y
+    raise TypeError("elements of two different number fields do not mix")
+
+
+def _mixing(method):
+    """Let a binary operation take an element of another field that one of the two
+    fields contains (see :func:`_common`)."""
+    def wrapper(self, other):
+        if isinstance(other, FieldElement) and other.field is not self.field:
+            self, other = _common(self, other)
+        return method(self, other)
+    wrapper.__name__ = method.__name__
+    wrapper.__doc__ = method.__doc__
+    return wrapper
+
+
 class FieldElement:
     """A real number ``poly(theta)`` of a :class:`NumberField`, exact.
 
@@ -141,16 +180,19 @@ class FieldElement:
         return None
 
     # -- arithmetic ----------------------------------------------------------
+    @_mixing
     def __add__(self, other):
         o = self._other(other)
         return NotImplemented if o is None else FieldElement(self.field, self.poly + o)
 
     __radd__ = __add__
 
+    @_mixing
     def __sub__(self, other):
         o = self._other(other)
         return NotImplemented if o is None else FieldElement(self.field, self.poly - o)
 
+    @_mixing
     def __rsub__(self, other):
         o = self._other(other)
         return NotImplemented if o is None else FieldElement(self.field, o - self.poly)
@@ -161,6 +203,7 @@ class FieldElement:
     def __pos__(self):
         return self
 
+    @_mixing
     def __mul__(self, other):
         o = self._other(other)
         if o is None:
@@ -183,6 +226,7 @@ class FieldElement:
         # large coefficients: fmpq_poly.xgcd explodes (minutes); see .inverse
         return FieldElement(self.field, inverse_mod(self.poly, self.field.minpoly))
 
+    @_mixing
     def __truediv__(self, other):
         o = self._other(other)
         if o is None:
@@ -191,6 +235,7 @@ class FieldElement:
             return FieldElement(self.field, self.poly / o.coeffs()[0])
         return self * FieldElement(self.field, o).inverse()
 
+    @_mixing
     def __rtruediv__(self, other):
         o = self._other(other)
         return NotImplemented if o is None else FieldElement(self.field, o) * self.inverse()
@@ -224,14 +269,17 @@ class FieldElement:
             return (c > 0) - (c < 0)
         return self.field.sign_of(self.poly)
 
+    @_mixing
     def __eq__(self, other):
         o = self._other(other)
         return NotImplemented if o is None else self.poly == o
 
+    @_mixing
     def __ne__(self, other):
         o = self._other(other)
         return NotImplemented if o is None else self.poly != o
 
+    @_mixing
     def _cmp(self, other) -> int | None:
         o = self._other(other)
         if o is None:
