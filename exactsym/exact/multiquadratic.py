@@ -1,0 +1,453 @@
+"""Sparse elements of multiquadratic fields Q(sqrt(a1), sqrt(a2), ...).
+
+An element is ``sum c_m * sqrt(m)`` over squarefree positive integers ``m``
+(``m = 1`` is the rational part) with non-zero ``fmpq`` coefficients.  The square
+roots of distinct squarefree integers are linearly independent over Q, so this
+sparse form is canonical: equality and zero are exact dictionary comparisons, and
+no minimal polynomial or primitive element is ever built.  Products use
+``sqrt(a) sqrt(b) = g sqrt(ab / g^2)`` with ``g = gcd(a, b)``; inverses multiply
+by conjugates; the sign is decided by a float filter with a proven error bound,
+then Arb balls at rising precision, never from a ball that contains zero (a
+non-zero element has a non-zero value, so the loop ends).
+
+Used by the gathering simulator (``docs/gathering.md``): a robot placed at radius
+``2L`` along a rational direction lies in ``Q(sqrt(r))``, a slot of layer ``L`` in
+``Q(sqrt(r), sqrt(4L^2 - 1))``, and predicates between robots in the compositum,
+a field of small degree whose elements have few terms.
+
+Public names: :class:`MQ`, :func:`mq`, :func:`sqrt_rational`, :func:`squarefree_split`.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from math import gcd
+
+from flint import arb, ctx, fmpq, fmpz
+
+from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt
+
+_ULP = 2.0 ** -52
+_MAX_PREC = 1 << 16
+
+
+@lru_cache(maxsize=65536)
+def squarefree_split(n: int) -> tuple[int, int]:
+    """``(s, m)`` with ``n == s*s*m``, ``m`` squarefree, for an integer ``n >= 1``."""
+    if n < 1:
+        raise ValueError("squarefree_split needs a positive integer")
+    s, m = 1, 1
+    for p, e in fmpz(n).factor():
+        p = int(p)
+        s *= p ** (e // 2)
+        if e % 2:
+            m *= p
+    return s, m
+
+
+def _as_fmpq(x) -> fmpq:
+    if isinstance(x, fmpq):
+        return x
+    if isinstance(x, (int, fmpz)):
+        return fmpq(x)
+    num, den = getattr(x, "numerator", None), getattr(x, "denominator", None)
+    if num is not None and den is not None:
+        return fmpq(int(num), int(den))
+    raise TypeError(f"not a rational: {type(x).__name__}")
+
+
+class MQ:
+    """An element of a multiquadratic field: ``{squarefree radicand: fmpq}``.
+
+    Immutable by convention (the dictionary is never changed after construction).
+    Arithmetic with ``int``, ``fmpq`` and ``Fraction`` operands is accepted.
+    """
+
+    __slots__ = ("terms", "_hash")
+
+    def __init__(self, terms: dict | None = None):
+        # ``terms`` must already be canonical: squarefree keys, non-zero fmpq values.
+        self.terms = terms if terms is not None else {}
+        self._hash = None
+
+    # -- construction -------------------------------------------------------
+    @staticmethod
+    def rational(q) -> "MQ":
+        q = _as_fmpq(q)
+        return MQ({1: q} if q != 0 else {})
+
+    @staticmethod
+    def sqrt(q) -> "MQ":
+        """The non-negative square root of a non-negative rational ``q``."""
+        return sqrt_rational(q)
+
+    @staticmethod
+    def coerce(x) -> "MQ":
+        return x if isinstance(x, MQ) else MQ.rational(x)
+
+    # -- inspection ---------------------------------------------------------
+    def is_zero(self) -> bool:
+        return not self.terms
+
+    def is_rational(self) -> bool:
+        return not self.terms or (len(self.terms) == 1 and 1 in self.terms)
+
+    def to_fmpq(self) -> fmpq:
+        """The rational value; ``ValueError`` if the element is irrational."""
+        if not self.is_rational():
+            raise ValueError(f"{self} is not rational")
+        return self.terms.get(1, fmpq(0))
+
+    def radicands(self) -> tuple[int, ...]:
+        return tuple(sorted(m for m in self.terms if m != 1))
+
+    def coefficient(self, m: int) -> fmpq:
+        return self.terms.get(m, fmpq(0))
+
+    # -- arithmetic ---------------------------------------------------------
+    def __add__(self, other):
+        if not isinstance(other, MQ):
+            try:
+                other = MQ.rational(other)
+            except TypeError:
+                return NotImplemented
+        if not other.terms:
+            return self
+        if not self.terms:
+            return other
+        out = dict(self.terms)
+        for m, c in other.terms.items():
+            v = out.get(m)
+            if v is None:
+                out[m] = c
+            else:
+                v = v + c
+                if v == 0:
+                    del out[m]
+                else:
+                    out[m] = v
+        return MQ(out)
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return MQ({m: -c for m, c in self.terms.items()})
+
+    def __pos__(self):
+        return self
+
+    def __sub__(self, other):
+        if not isinstance(other, MQ):
+            try:
+                other = MQ.rational(other)
+            except TypeError:
+                return NotImplemented
+        return self + (-other)
+
+    def __rsub__(self, other):
+        return (-self) + other
+
+    def __mul__(self, other):
+        if not isinstance(other, MQ):
+            try:
+                q = _as_fmpq(other)
+            except TypeError:
+                return NotImplemented
+            if q == 0:
+                return MQ()
+            return MQ({m: c * q for m, c in self.terms.items()})
+        a, b = self.terms, other.terms
+        if not a or not b:
+            return MQ()
+        if len(b) == 1 and 1 in b:
+            q = b[1]
+            return MQ({m: c * q for m, c in a.items()})
+        if len(a) == 1 and 1 in a:
+            q = a[1]
+            return MQ({m: c * q for m, c in b.items()})
+        out: dict = {}
+        for m1, c1 in a.items():
+            for m2, c2 in b.items():
+                if m1 == 1:
+                    m, c = m2, c1 * c2
+                elif m2 == 1:
+                    m, c = m1, c1 * c2
+                elif m1 == m2:
+                    m, c = 1, c1 * c2 * m1
+                else:
+                    g = gcd(m1, m2)
+                    m, c = (m1 // g) * (m2 // g), c1 * c2 * g
+                v = out.get(m)
+                out[m] = c if v is None else v + c
+        return MQ({m: c for m, c in out.items() if c != 0})
+
+    __rmul__ = __mul__
+
+    def conjugate(self, base: int) -> "MQ":
+        """Image under the automorphism ``sqrt(m) -> -sqrt(m)`` when ``base | m`` an odd
+        number of times in a coprime factorisation (``base`` from :func:`_coprime_base`)."""
+        return MQ({m: (-c if m % base == 0 else c) for m, c in self.terms.items()})
+
+    def inverse(self) -> "MQ":
+        """``1 / self`` by conjugation: each step multiplies by the conjugate that flips one
+        element of a coprime base of the radicands, which removes that element."""
+        if not self.terms:
+            raise ZeroDivisionError("inverse of zero")
+        num = MQ.rational(1)
+        x = self
+        while not x.is_rational():
+            base = _coprime_base(x.radicands())
+            b = next(p for p in base if any(m % p == 0 for m in x.terms if m != 1))
+            conj = x.conjugate(b)
+            num = num * conj
+            x = x * conj
+        return num * (1 / x.terms[1])
+
+    def __truediv__(self, other):
+        if not isinstance(other, MQ):
+            try:
+                q = _as_fmpq(other)
+            except TypeError:
+                return NotImplemented
+            if q == 0:
+                raise ZeroDivisionError("division by zero")
+            return MQ({m: c / q for m, c in self.terms.items()})
+        if other.is_rational():
+            return self / other.to_fmpq()
+        return self * other.inverse()
+
+    def __rtruediv__(self, other):
+        return MQ.coerce(other) * self.inverse()
+
+    def __pow__(self, k: int):
+        if not isinstance(k, int):
+            return NotImplemented
+        if k < 0:
+            return self.inverse() ** (-k)
+        out, base = MQ.rational(1), self
+        while k:
+            if k & 1:
+                out = out * base
+            base = base * base
+            k >>= 1
+        return out
+
+    # -- equality, hash, sign ----------------------------------------------
+    def __eq__(self, other):
+        if not isinstance(other, MQ):
+            try:
+                other = MQ.rational(other)
+            except TypeError:
+                return NotImplemented
+        return self.terms == other.terms
+
+    def __hash__(self):
+        if self._hash is None:
+            if self.is_rational():
+                self._hash = hash(self.to_fmpq())   # equal to the rational it equals
+            else:
+                self._hash = hash(frozenset(self.terms.items()))
+        return self._hash
+
+    def sign(self) -> int:
+        """-1, 0 or 1, exactly."""
+        t = self.terms
+        if not t:
+            return 0
+        if len(t) == 1:
+            (c,) = t.values()
+            return 1 if c > 0 else -1
+        signs = {c > 0 for c in t.values()}
+        if len(signs) == 1:
+            return 1 if signs.pop() else -1
+        s = _float_sign(t)
+        return s if s is not None else _arb_sign(t)
+
+    def __lt__(self, other):
+        return (self - other).sign() < 0
+
+    def __le__(self, other):
+        return (self - other).sign() <= 0
+
+    def __gt__(self, other):
+        return (self - other).sign() > 0
+
+    def __ge__(self, other):
+        return (self - other).sign() >= 0
+
+    def __bool__(self):
+        return bool(self.terms)
+
+    def __abs__(self):
+        return -self if self.sign() < 0 else self
+
+    # -- conversions --------------------------------------------------------
+    def to_arb(self, prec: int = 53) -> arb:
+        old = ctx.prec
+        ctx.prec = prec
+        try:
+            total = arb(0)
+            for m, c in self.terms.items():
+                total += arb(c.p) / arb(c.q) * _sqrt_arb(m)
+            return total
+        finally:
+            ctx.prec = old
+
+    def __float__(self):
+        """An approximation for drawing and float baselines; decides nothing."""
+        return float(sum(float(c) * (m ** 0.5) for m, c in self.terms.items()))
+
+    def text(self) -> str:
+        """The value in the configuration expression syntax (``3/4*sqrt(6) - 1/2``):
+        parsing it with :func:`exactsym.expr.parse_expression` and :func:`from_tree`
+        gives back this element."""
+        if not self.terms:
+            return "0"
+        parts = []
+        for m in sorted(self.terms):
+            c = self.terms[m]
+            neg = c < 0
+            mag = -c if neg else c
+            if m == 1:
+                body = str(mag.p) if mag.q == 1 else f"{mag.p}/{mag.q}"
+            else:
+                root = f"sqrt({m})"
+                if mag == 1:
+                    body = root
+                elif mag.q == 1:
+                    body = f"{mag.p}*{root}"
+                elif mag.p == 1:
+                    body = f"{root}/{mag.q}"
+                else:
+                    body = f"{mag.p}/{mag.q}*{root}"
+            if not parts:
+                parts.append(f"-{body}" if neg else body)
+            else:
+                parts.append(f" - {body}" if neg else f" + {body}")
+        return "".join(parts)
+
+    __str__ = text
+
+    def __repr__(self):
+        return f"MQ({self.text()!r})"
+
+
+def mq(x) -> MQ:
+    """Coerce an ``int``, ``fmpq``, ``Fraction`` or :class:`MQ` to :class:`MQ`."""
+    return MQ.coerce(x)
+
+
+def sqrt_rational(q) -> MQ:
+    """``sqrt(q)`` for a rational ``q >= 0``: ``sqrt(p/r) = s/r * sqrt(m)`` with
+    ``p*r = s^2 m`` and ``m`` squarefree."""
+    q = _as_fmpq(q)
+    if q < 0:
+        raise ValueError("square root of a negative rational")
+    if q == 0:
+        return MQ()
+    p, r = int(q.p), int(q.q)
+    s, m = squarefree_split(p * r)
+    return MQ({m: fmpq(s, r)})
+
+
+def from_tree(node: Node) -> MQ:
+    """Evaluate an expression tree (:mod:`exactsym.exprtree`) built from rationals,
+    ``+ - * /``, integer powers and square roots of non-negative rationals.
+    Raises ``ValueError`` for anything else (``cos``, ``pi``, nested radicals)."""
+    if isinstance(node, Const):
+        return MQ.rational(node.value)
+    if isinstance(node, Neg):
+        return -from_tree(node.arg)
+    if isinstance(node, BinOp):
+        a, b = from_tree(node.left), from_tree(node.right)
+        if node.op == "+":
+            return a + b
+        if node.op == "-":
+            return a - b
+        if node.op == "*":
+            return a * b
+        if node.op == "/":
+            return a / b
+        raise ValueError(f"operator {node.op!r} is not supported")
+    if isinstance(node, Pow):
+        return from_tree(node.base) ** int(node.exponent)
+    if isinstance(node, Sqrt):
+        arg = from_tree(node.arg)
+        if not arg.is_rational():
+            raise ValueError("nested radicals are not multiquadratic")
+        return sqrt_rational(arg.to_fmpq())
+    raise ValueError(f"{type(node).__name__} is not multiquadratic")
+
+
+def _coprime_base(radicands) -> list[int]:
+    """Pairwise coprime integers > 1 whose products give every radicand (gcd refinement)."""
+    base: list[int] = []
+    for m in radicands:
+        pending = [m]
+        while pending:
+            x = pending.pop()
+            if x == 1:
+                continue
+            for i, b in enumerate(base):
+                g = gcd(x, b)
+                if g > 1:
+                    del base[i]
+                    pending.extend(y for y in (g, b // g, x // g) if y > 1)
+                    break
+            else:
+                base.append(x)
+    return base
+
+
+@lru_cache(maxsize=4096)
+def _sqrt_arb_at(m: int, prec: int) -> arb:
+    old = ctx.prec
+    ctx.prec = prec
+    try:
+        return arb(m).sqrt()
+    finally:
+        ctx.prec = old
+
+
+def _sqrt_arb(m: int) -> arb:
+    return _sqrt_arb_at(m, ctx.prec)
+
+
+def _float_sign(terms: dict):
+    """The sign from doubles when the sum is provably away from zero, else ``None``.
+    Each term ``c*sqrt(m)`` is within 5 units of rounding (conversions, root, product)
+    and the sum adds one per term, so the error is below ``(k + 6) * 2^-52 * S`` with
+    ``S`` the sum of magnitudes, provided nothing overflowed or went subnormal."""
+    try:
+        vals = [float(c) * (float(m) ** 0.5) for m, c in terms.items()]
+    except OverflowError:
+        return None
+    s_abs = sum(abs(v) for v in vals)
+    if not (1e-280 < s_abs < 1e280):
+        return None
+    total = sum(vals)
+    bound = (len(vals) + 6) * _ULP * s_abs
+    if total > bound:
+        return 1
+    if total < -bound:
+        return -1
+    return None
+
+
+def _arb_sign(terms: dict) -> int:
+    prec = 64
+    while prec <= _MAX_PREC:
+        old = ctx.prec
+        ctx.prec = prec
+        try:
+            total = arb(0)
+            for m, c in terms.items():
+                total += arb(c.p) / arb(c.q) * _sqrt_arb_at(m, prec)
+            if total > 0:
+                return 1
+            if total < 0:
+                return -1
+        finally:
+            ctx.prec = old
+        prec *= 2
+    raise ArithmeticError("sign undecided at maximal precision (non-zero element)")
