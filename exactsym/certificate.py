@@ -32,7 +32,8 @@ from flint import arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz_poly, nmod_poly
 
 from . import checker
 from .configuration import Configuration
-from .exact import FieldElement
+from .exact import FieldElement, cyclotomic
+from .exact.multiquadratic import MQ
 
 FORMAT = "exactsym-certificate"
 VERSION = 1
@@ -85,12 +86,13 @@ class Encoder:
 
     def __init__(self, system, values):
         field = getattr(system, "field", None)
-        self.field = field
         self.spec = None
-        if field is None or all(not isinstance(v, FieldElement) or v.is_rational()
-                                for v in values):
+        if all(not isinstance(v, FieldElement) or v.is_rational() for v in values):
             self.field = None                   # everything is rational: no field at all
             return
+        if field is None:                       # square roots of rationals (MQ elements)
+            field = _field_of_square_roots(values)
+        self.field = field
         if field.conductor is not None:
             self._cyclotomic(field)
         else:
@@ -154,6 +156,8 @@ class Encoder:
             return fmpq(x) if not isinstance(x, fmpq) else x
         if x.is_rational():
             return x.rational()
+        if isinstance(x, MQ):
+            x = self.field(x)                   # the Gauss sums of its square roots
         if self.basis is None:
             return x.poly
         result = fmpq_poly([0])
@@ -173,6 +177,22 @@ class Encoder:
         if value.degree() <= 0:
             return rational_text(value.coeffs()[0] if value.degree() == 0 else 0)
         return [rational_text(c) for c in value.coeffs()]
+
+
+def _field_of_square_roots(values):
+    """The cyclotomic field holding the square roots in ``values`` (multiquadratic elements):
+    its real subfield has a closed-form minimal polynomial, so the checker needs no new proof."""
+    conductor = 4
+    for v in values:
+        if isinstance(v, MQ):
+            for m in v.terms:
+                if m != 1:
+                    conductor = math.lcm(conductor, cyclotomic.sqrt_conductor(m))
+    degree = cyclotomic.euler_phi(conductor)
+    if degree > cyclotomic.MAX_DEGREE:
+        raise CertificateError(f"these square roots need Q(zeta_{conductor}) of degree {degree}, "
+                               f"above the limit {cyclotomic.MAX_DEGREE}")
+    return cyclotomic.cyclotomic_field(conductor)
 
 
 def _primes(limit: int):

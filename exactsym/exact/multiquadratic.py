@@ -26,6 +26,7 @@ from math import gcd
 from flint import arb, ctx, fmpq, fmpz
 
 from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt
+from .field import FieldElement
 
 _ULP = 2.0 ** -52
 _MAX_PREC = 1 << 16
@@ -56,7 +57,15 @@ def _as_fmpq(x) -> fmpq:
     raise TypeError(f"not a rational: {type(x).__name__}")
 
 
-class MQ:
+class _Rational:
+    """``MQ.rational(q)`` builds the element q; ``x.rational()`` is the kernel's name
+    (:class:`~.field.FieldElement`) for the value of a rational element ``x``."""
+
+    def __get__(self, obj, cls):
+        return cls.from_rational if obj is None else obj.to_fmpq
+
+
+class MQ(FieldElement):
     """An element of a multiquadratic field: ``{squarefree radicand: fmpq}``.
 
     Immutable by convention (the dictionary is never changed after construction).
@@ -72,9 +81,11 @@ class MQ:
 
     # -- construction -------------------------------------------------------
     @staticmethod
-    def rational(q) -> "MQ":
+    def from_rational(q) -> "MQ":
         q = _as_fmpq(q)
         return MQ({1: q} if q != 0 else {})
+
+    rational = _Rational()
 
     @staticmethod
     def sqrt(q) -> "MQ":
@@ -292,6 +303,10 @@ class MQ:
             return total
         finally:
             ctx.prec = old
+
+    def enclosure(self, prec: int = 53) -> arb:
+        """An ``arb`` ball around the value (the kernel's name, for filters and drawing)."""
+        return self.to_arb(prec)
 
     def __float__(self):
         """An approximation for drawing and float baselines; decides nothing."""

@@ -10,6 +10,7 @@ from flint import fmpq
 
 from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 from .field import FieldElement, as_fmpq
+from .multiquadratic import MQ
 
 
 def rational_text(q) -> str:
@@ -101,6 +102,8 @@ def number_text(x) -> str:
     """The configuration-syntax text of an exact number."""
     if not isinstance(x, FieldElement):
         return rational_text(x)
+    if isinstance(x, MQ):
+        return x.text()
     if x.is_rational():
         return rational_text(x.rational())
     field = x.field
