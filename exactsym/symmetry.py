@@ -48,6 +48,7 @@ from dataclasses import dataclass, field
 from typing import Iterator, Sequence
 
 from .configuration import Configuration
+from .geometry import PseudoAngle, intern_by_value, sorted_by_value
 from .exact import fmpq
 from .levels import Rings, rings as compute_rings
 from .strings import cyclic_occurrences as occurrences, cyclic_period
@@ -284,7 +285,7 @@ def _directions(points, centre, integers: bool):
                 continue
             vectors[i] = (dx, dy)
             r2s[i] = dx * dx + dy * dy
-            keys[i] = pseudo_angle(dx, dy)
+            keys[i] = PseudoAngle(dx, dy)       # division-free: no field inverse
             idx.append(i)
     return centre_index, idx, vectors, r2s, keys
 
@@ -297,12 +298,15 @@ def _cartesian_rays(points, centre, integers: bool | None = None):
         integers = isinstance(centre[0], fmpq) and isinstance(centre[1], fmpq) and \
             isinstance(points[0][0], fmpq)
     centre_index, idx, vectors, r2s, keys = _directions(points, centre, integers)
-    sort_by_exact_keys(idx, keys)
+    if integers:
+        sort_by_exact_keys(idx, keys)
+    else:
+        idx = sorted_by_value(idx, keys)
     groups: list[list[int]] = []
     last = None
     for i in idx:
         key = keys[i]
-        if key == last:
+        if last is not None and key == last:
             groups[-1].append(i)
         else:
             groups.append([i])
@@ -317,7 +321,7 @@ def _cartesian_rays(points, centre, integers: bool | None = None):
             rays.append(tuple(ray))
             radii.append(tuple([r2s[i] for i in ray]))
     m = len(rays)
-    angle = _pseudo_angle_of_integers if integers else pseudo_angle
+    angle = _pseudo_angle_of_integers if integers else PseudoAngle
     gaps = []
     for a in range(m):
         (ux, uy), (vx, vy) = vectors[rays[a][0]], vectors[rays[(a + 1) % m][0]]
@@ -355,7 +359,9 @@ def symmetry_group(config: Configuration, rings: Rings | None = None) -> Symmetr
     m = len(rays)
 
     # symbols, interned: equal ids iff equal symbols; values are compared only lazily
-    ray_ids, gap_ids = _intern(radii, True), _intern(gaps, False)
+    ray_ids = _intern(radii, True)
+    gap_ids = intern_by_value(gaps) if gaps and isinstance(gaps[0], PseudoAngle) \
+        else _intern(gaps, False)
     width = max(gap_ids) + 1
     ccw = [ray_ids[i] * width + gap_ids[i] for i in range(m)]
     cw = [ray_ids[-i % m] * width + gap_ids[(-i - 1) % m] for i in range(m)]
