@@ -28,7 +28,7 @@ import itertools
 import math
 from fractions import Fraction
 
-from flint import arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz_poly, nmod_poly
+from flint import arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz, fmpz_mat, fmpz_poly, nmod_poly
 
 from . import checker
 from .configuration import Configuration
@@ -139,8 +139,13 @@ class Encoder:
                     and checker.irreducible_mod(coeffs, prime):
                 self._finish(field.enclosure, {"method": "prime", "prime": prime})
                 return
-        raise CertificateError(f"no prime below 5000 proves the minimal polynomial of "
-                               f"{field.name} irreducible; this field cannot be certified")
+        proof = _square_root_proof(field)
+        if proof is not None:
+            self._finish(field.enclosure, proof)
+            return
+        raise CertificateError(f"neither a prime below 5000 nor square roots of integers "
+                               f"prove the minimal polynomial of {field.name} irreducible; "
+                               "this field cannot be certified")
 
     def _finish(self, enclose, proof):
         coeffs = [Fraction(int(c.p), int(c.q)) for c in self.minpoly.coeffs()]
@@ -193,6 +198,64 @@ def _field_of_square_roots(values):
         raise CertificateError(f"these square roots need Q(zeta_{conductor}) of degree {degree}, "
                                f"above the limit {cyclotomic.MAX_DEGREE}")
     return cyclotomic.cyclotomic_field(conductor)
+
+
+def _square_root_proof(field) -> dict | None:
+    """The checker's "square-roots" proof for a multiquadratic field written by a primitive
+    element theta (its Galois group has no element of order d, so no prime works): k = log2 d
+    radicands, products of the primes of the discriminant, no subset product a square, each
+    with a polynomial g in theta, g^2 = a.  g is found as an integer relation between
+    1, theta, ..., theta^(d-1), sqrt(a) (LLL on Arb values) and kept only if g*g == a exactly."""
+    d = field.degree
+    k = d.bit_length() - 1
+    if d < 2 or d != 1 << k:
+        return None
+    disc = fmpz_poly(field.minpoly.numer()).discriminant()
+    primes = [int(p) for p, _ in fmpz(abs(disc)).factor()][:12]
+    theta = field.gen
+    chosen: list[int] = []
+    roots: list = []
+    for mask in range(1, 1 << len(primes)):
+        a = math.prod(p for i, p in enumerate(primes) if mask >> i & 1)
+        if any(_is_square(a * math.prod(c for j, c in enumerate(chosen) if sub >> j & 1))
+               for sub in range(1 << len(chosen))):
+            continue                            # not independent of the chosen ones
+        g = _root_in_field(field, a)
+        if g is not None:
+            chosen.append(a)
+            roots.append(g)
+            if len(chosen) == k:
+                return {"method": "square-roots", "radicands": [str(a) for a in chosen],
+                        "roots": [[rational_text(c) for c in g.coeffs()] for g in roots]}
+    return None
+
+
+def _is_square(n: int) -> bool:
+    return math.isqrt(n) ** 2 == n
+
+
+def _root_in_field(field, a: int):
+    """A polynomial g with g(theta)^2 == a in the field, or None (LLL proposes, exact decides)."""
+    d = field.degree
+    for bits in (64 * d + 256, 256 * d + 1024):
+        with ctx.workprec(bits + 64):
+            theta = field.enclosure(bits + 64)
+            values = [arb(1)]
+            for _ in range(d - 1):
+                values.append(values[-1] * theta)
+            values.append(arb(a).sqrt())
+            scale = arb(2) ** bits
+            column = [int((v * scale).mid().floor().unique_fmpz()) for v in values]
+        rows = [[int(i == j) for j in range(d + 1)] + [column[i]] for i in range(d + 1)]
+        relation = fmpz_mat(rows).lll().tolist()[0] if hasattr(fmpz_mat, "tolist") else \
+            [fmpz_mat(rows).lll()[0, j] for j in range(d + 2)]
+        last = relation[d]
+        if last == 0:
+            continue
+        g = fmpq_poly([fmpq(-int(relation[i]), int(last)) for i in range(d)])
+        if (g * g) % field.minpoly == a:
+            return g
+    return None
 
 
 def _primes(limit: int):
