@@ -55,6 +55,26 @@ def circumcentre(a: Point, b: Point, c: Point) -> Point:
     return (a[0] + (cy * b2 - by * c2) / d, a[1] + (bx * c2 - cx * b2) / d)
 
 
+def circumcentre_homogeneous(a: Point, b: Point, c: Point) -> tuple:
+    """``(X, Y, D)`` with ``D > 0``: the circumcentre is ``(X/D, Y/D)``; nothing is divided
+    (raises ValueError for collinear points)."""
+    bx, by = b[0] - a[0], b[1] - a[1]
+    cx, cy = c[0] - a[0], c[1] - a[1]
+    d = 2 * (bx * cy - by * cx)
+    s = sign(d)
+    if s == 0:
+        raise ValueError("collinear points have no circumcentre")
+    b2, c2 = bx * bx + by * by, cx * cx + cy * cy
+    x, y = a[0] * d + (cy * b2 - by * c2), a[1] * d + (bx * c2 - cx * b2)
+    return (x, y, d) if s > 0 else (-x, -y, -d)
+
+
+def orientation_homogeneous(p: Point, q: Point, o: tuple) -> Turn:
+    """``orientation(p, q, (X/D, Y/D))`` for ``o = (X, Y, D)``, ``D > 0``, without dividing."""
+    x, y, d = o
+    return Turn(sign((q[0] - p[0]) * (y - d * p[1]) - (q[1] - p[1]) * (x - d * p[0])))
+
+
 def half_plane(d: Point) -> int:
     """0 for directions with angle in [0, pi), 1 for [pi, 2 pi); ``d`` must not be zero."""
     sy = sign(d[1])

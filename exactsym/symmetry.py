@@ -243,7 +243,7 @@ def _pseudo_angle_of_integers(x, y) -> fmpq:
     return fmpq(2 * x + 3 * y, x + y) if x < 0 else fmpq(4 * x - 3 * y, x - y)
 
 
-def _directions(points, centre, integers: bool):
+def _directions(points, centre, integers: bool, homogeneous=None):
     """``(centre_index, idx, vectors, r2s, keys)``: for each point i off the centre (listed
     in ``idx``) a vector pointing from the centre to it, its exact squared distance to
     the centre and the pseudo-angle of the vector.
@@ -277,9 +277,10 @@ def _directions(points, centre, integers: bool):
                     fmpq(4 * dx - 3 * dy, dx - dy)
             idx.append(i)
     else:
+        cx, cy, cd = homogeneous if homogeneous is not None else (cx, cy, 1)
         for i in range(n):
             x, y = points[i]
-            dx, dy = x - cx, y - cy
+            dx, dy = cd * x - cx, cd * y - cy       # D (p - centre), D > 0: no division
             if dx == 0 and dy == 0:
                 centre_index = i
                 continue
@@ -290,14 +291,14 @@ def _directions(points, centre, integers: bool):
     return centre_index, idx, vectors, r2s, keys
 
 
-def _cartesian_rays(points, centre, integers: bool | None = None):
+def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=None):
     """``(centre_index, rays, radii, gaps)`` about ``centre``: rays by pseudo-angle.
     ``integers`` (default: when the points and the centre are ``fmpq``) chooses the
     integer arithmetic of :func:`_directions`; both ways give the same result."""
     if integers is None:
         integers = isinstance(centre[0], fmpq) and isinstance(centre[1], fmpq) and \
             isinstance(points[0][0], fmpq)
-    centre_index, idx, vectors, r2s, keys = _directions(points, centre, integers)
+    centre_index, idx, vectors, r2s, keys = _directions(points, centre, integers, homogeneous)
     if integers:
         sort_by_exact_keys(idx, keys)
     else:
@@ -354,7 +355,8 @@ def symmetry_group(config: Configuration, rings: Rings | None = None) -> Symmetr
         points = None
     else:
         points = config.points
-        centre_index, rays, radii, gaps = _cartesian_rays(points, centre)
+        centre_index, rays, radii, gaps = _cartesian_rays(points, centre,
+                                                          homogeneous=ring.sec.homogeneous)
         ray_turns = None
     m = len(rays)
 

@@ -48,3 +48,34 @@ def test_pseudo_angles_filtered_equal_exact(vecs):
     for i in range(n):
         for j in range(n):
             assert (ids[i] == ids[j]) == (exact[i] == exact[j])
+
+
+# -- the SEC with a homogeneous centre, against brute force, on cocircular near-ties ------
+
+from exactsym.sec import sec_by_brute_force, smallest_enclosing_circle  # noqa: E402
+from exactsym.geometry import squared_distance  # noqa: E402
+
+S2, S3 = R2, C7
+
+
+def algebraic_points():
+    coordinate = st.builds(lambda a, b, c: a + b * S2 + c * S3, st.integers(-3, 3),
+                           st.integers(-2, 2), st.integers(-2, 2))
+    point = st.tuples(coordinate, coordinate)
+    # a point nudged by 1e-30 off another's position makes near-ties on the circle
+    return st.lists(point, min_size=2, max_size=6, unique_by=lambda p: (str(p[0]), str(p[1]))
+                    ).flatmap(lambda pts: st.sampled_from([pts, pts + [(pts[0][0] + TINY,
+                                                                        pts[0][1])]]))
+
+
+@settings(max_examples=30, deadline=None)
+@given(algebraic_points())
+def test_homogeneous_sec_equals_brute_force(points):
+    if len({(str(x), str(y)) for x, y in points}) < len(points):
+        return
+    circle = smallest_enclosing_circle(points)
+    brute = sec_by_brute_force(points)
+    assert circle.centre == brute.centre and circle.radius_squared == brute.radius_squared
+    assert all(circle.contains(p) for p in points)
+    assert all(squared_distance(circle.centre, points[i]) == circle.radius_squared
+               for i in circle.support)
