@@ -70,3 +70,24 @@ def test_denestable_radical_is_not_a_coincidence(tmp_path):
     _, (a, b) = evaluate_all([parse_expression("sqrt(3+2*sqrt(2))"),
                               parse_expression("1 + sqrt(2)")])
     assert a == b
+
+
+def test_off_centre_polar_with_large_cyclotomic_field_is_answered(tmp_path):
+    # Q(zeta_20020), degree 5760, was refused ("above the limit 4096")
+    rows = [f'{{ r = "1", turn = "{t}" }}' for t in ("0", "1/7", "2/5", "3/11", "5/13")]
+    config = load(_toml(tmp_path, rows))
+    group = symmetry_group(config)
+    assert group.name == "C1" and sorted(group.ordering) == [0, 1, 2, 3, 4]
+    assert config.system.degree == 5760
+
+
+def test_nine_square_roots_truth(tmp_path):
+    rows = ['["sqrt(2)", "sqrt(3)"]', '["sqrt(5)+sqrt(7)", "sqrt(11)"]',
+            '["sqrt(13)-sqrt(17)", "sqrt(19)+sqrt(23)"]']
+    config = load(_toml(tmp_path, rows))
+    group = symmetry_group(config)
+    assert group.name == "C1"
+    # the SEC is the circumcircle or a diameter circle: all points within, support on it
+    sec = rings(config).sec
+    assert all(sec.contains(p) for p in config.points)
+    assert all(sec.scaled_power(config.points[i]) == 0 for i in sec.support)
