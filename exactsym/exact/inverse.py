@@ -45,8 +45,8 @@ def inverse_mod(poly: fmpq_poly, minpoly: fmpq_poly) -> fmpq_poly:
     den = fmpz(poly.denom())
     m = fmpz_poly(minpoly.numer())
     lead = int(m.coeffs()[-1])
-    residues: list[int] | None = None
-    modulus = 1
+    residues = fmpz_poly([0])           # CRT image so far, coefficients in [0, modulus)
+    modulus = fmpz(1)
     count, target = 0, 4
     i = 0
     while True:
@@ -59,19 +59,17 @@ def inverse_mod(poly: fmpq_poly, minpoly: fmpq_poly) -> fmpq_poly:
         if g.degree() != 0:              # p divides the resultant: skip it
             continue
         s = s * pow(int(g.coeffs()[0]), -1, p)
-        values = [int(c) for c in s.coeffs()]
-        values += [0] * (m.degree() - len(values))
-        if residues is None:
-            residues, modulus = values, p
-        else:                            # CRT, coefficient by coefficient
-            inv = pow(modulus % p, -1, p)
-            residues = [r + modulus * ((v - r) * inv % p) for r, v in zip(residues, values)]
-            modulus *= p
+        # CRT in flint (C): residues += modulus * ((s - residues) / modulus mod p)
+        step = (s - nmod_poly(residues, p)) * pow(int(modulus % p), -1, p)
+        residues = residues + fmpz_poly([int(c) for c in step.coeffs()]) * modulus
+        modulus *= p
         count += 1
         if count < target:
             continue
         target *= 2
-        candidate = _reconstruct(residues, modulus)
+        values = [int(c) for c in residues.coeffs()]
+        values += [0] * (m.degree() - len(values))
+        candidate = _reconstruct(values, int(modulus))
         if candidate is not None:
             u = fmpq_poly(candidate[0]) / candidate[1] * den
             if (poly * u) % minpoly == 1:
