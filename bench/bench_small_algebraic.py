@@ -104,15 +104,14 @@ def main() -> None:
             path = Path(tmp) / "input.toml"
             path.write_text(text)
             t_truth, group = run([sys.executable, "-c", TRUTH, str(path)], opts.timeout)
-            inner = t_truth
-            if group.startswith(("timeout", "exit")):
-                shown = group
-            else:
-                shown = group
+            if group.startswith("timeout"):
+                group = "timeout"
+            elif group.startswith("exit"):
+                group = "refused"
             t_check, outcome = run(exactsym + ["check", "--json", str(path)], opts.timeout)
             if not outcome.startswith(("timeout", "exit")):
                 outcome = "answered"
-            print(f"{name:28} {inner:8.2f} {shown[:8]:>8} {t_check:8.2f}  {outcome}", flush=True)
+            print(f"{name:28} {t_truth:8.2f} {group:>8} {t_check:8.2f}  {outcome}", flush=True)
 
 
 if __name__ == "__main__":
