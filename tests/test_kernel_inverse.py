@@ -38,3 +38,27 @@ def test_inverse_of_large_element_in_large_field():
     inv = inverse_mod(quotient, phi)
     assert (inv * quotient) % phi == 1
     assert inv == (b * inverse_mod(a, phi)) % phi
+
+
+# -- the dense (Karatsuba) product of multiquadratic elements equals the term-by-term one --
+
+from exactsym.exact import multiquadratic as mqm  # noqa: E402
+
+mq_terms = st.dictionaries(st.sampled_from([1, 2, 3, 5, 6, 7, 10, 14, 15, 21, 30, 35, 42, 70,
+                                            105, 210, 11, 22, 33]),
+                           st.builds(fmpq, st.integers(-9, 9).filter(bool), st.integers(1, 4)),
+                           min_size=1, max_size=19)
+
+
+@settings(max_examples=40, deadline=None)
+@given(mq_terms, mq_terms)
+def test_dense_product_equals_term_product(a, b):
+    saved = mqm._DENSE_PRODUCT
+    try:
+        mqm._DENSE_PRODUCT = 10 ** 9
+        slow = mqm.MQ(dict(a)) * mqm.MQ(dict(b))
+        fast = mqm.MQ(mqm._dense_product(
+            dict(a), dict(b), sorted(mqm._coprime_base([m for m in set(a) | set(b) if m != 1]))))
+    finally:
+        mqm._DENSE_PRODUCT = saved
+    assert fast == slow and fast.terms == slow.terms
