@@ -97,5 +97,5 @@ def test_issue_examples_number_text():
         tree = parse_expression(text)
         _, (x,) = evaluate_all([tree])
         printed = number_text(x)
-        assert "sqrtsqrt" not in printed and "sqrtcos" not in printed
+        assert "sqrtsqrt" not in printed and "sqrtcos" not in printed and "(1)*" not in printed
         assert same_value(tree, printed)
