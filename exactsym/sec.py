@@ -165,6 +165,11 @@ def _exact_contains_all(points, circle: Circle, fx, fy) -> bool:
     plus the balls' radii.  The rest are decided exactly, division-free.  A point the
     filter sees well outside makes the caller fall back to exact Welzl."""
     x, y, d = circle.homogeneous
+    if isinstance(d, fmpq) and d == 1 and circle._radius_squared is not None \
+            and isinstance(x, fmpq) and isinstance(y, fmpq):
+        # rational centre: float() of an fmpq is correctly rounded, no ball needed
+        return _float_filtered(points, circle, fx, fy, float(x), float(y),
+                               float(circle._radius_squared), 0.0, 0.0)
     with ctx.workprec(64):
         bd = _ball(d)
         bx, by = _ball(x) / bd, _ball(y) / bd
@@ -176,6 +181,12 @@ def _exact_contains_all(points, circle: Circle, fx, fy) -> bool:
     fcx, fcy, fr2 = float(bx.mid()), float(by.mid()), float(br2.mid())
     rad = float(bx.rad()) + float(by.rad())
     rad2 = float(br2.rad())
+    return _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2)
+
+
+def _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2) -> bool:
+    """The loop of :func:`_exact_contains_all` with the centre and radius as floats within
+    ``rad`` and ``rad2`` of their exact values."""
     if not all(math.isfinite(v) for v in (fcx, fcy, fr2, rad, rad2)):
         raise OverflowError("not representable as floats")
     exact_points = isinstance(points[0][0], fmpq)
