@@ -28,11 +28,12 @@ import itertools
 import math
 from fractions import Fraction
 
-from flint import arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz_poly, nmod_poly
+from flint import arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz, fmpz_mat, fmpz_poly, nmod_poly
 
 from . import checker
 from .configuration import Configuration
-from .exact import FieldElement
+from .exact import FieldElement, cyclotomic
+from .exact.multiquadratic import MQ
 
 FORMAT = "exactsym-certificate"
 VERSION = 1
@@ -85,12 +86,13 @@ class Encoder:
 
     def __init__(self, system, values):
         field = getattr(system, "field", None)
-        self.field = field
         self.spec = None
-        if field is None or all(not isinstance(v, FieldElement) or v.is_rational()
-                                for v in values):
+        if all(not isinstance(v, FieldElement) or v.is_rational() for v in values):
             self.field = None                   # everything is rational: no field at all
             return
+        if field is None:                       # square roots of rationals (MQ elements)
+            field = _field_of_square_roots(values)
+        self.field = field
         if field.conductor is not None:
             self._cyclotomic(field)
         else:
@@ -137,8 +139,13 @@ class Encoder:
                     and checker.irreducible_mod(coeffs, prime):
                 self._finish(field.enclosure, {"method": "prime", "prime": prime})
                 return
-        raise CertificateError(f"no prime below 5000 proves the minimal polynomial of "
-                               f"{field.name} irreducible; this field cannot be certified")
+        proof = _square_root_proof(field)
+        if proof is not None:
+            self._finish(field.enclosure, proof)
+            return
+        raise CertificateError(f"neither a prime below 5000 nor square roots of integers "
+                               f"prove the minimal polynomial of {field.name} irreducible; "
+                               "this field cannot be certified")
 
     def _finish(self, enclose, proof):
         coeffs = [Fraction(int(c.p), int(c.q)) for c in self.minpoly.coeffs()]
@@ -154,6 +161,8 @@ class Encoder:
             return fmpq(x) if not isinstance(x, fmpq) else x
         if x.is_rational():
             return x.rational()
+        if isinstance(x, MQ):
+            x = self.field(x)                   # the Gauss sums of its square roots
         if self.basis is None:
             return x.poly
         result = fmpq_poly([0])
@@ -173,6 +182,80 @@ class Encoder:
         if value.degree() <= 0:
             return rational_text(value.coeffs()[0] if value.degree() == 0 else 0)
         return [rational_text(c) for c in value.coeffs()]
+
+
+def _field_of_square_roots(values):
+    """The cyclotomic field holding the square roots in ``values`` (multiquadratic elements):
+    its real subfield has a closed-form minimal polynomial, so the checker needs no new proof."""
+    conductor = 4
+    for v in values:
+        if isinstance(v, MQ):
+            for m in v.terms:
+                if m != 1:
+                    conductor = math.lcm(conductor, cyclotomic.sqrt_conductor(m))
+    degree = cyclotomic.euler_phi(conductor)
+    if degree > cyclotomic.MAX_DEGREE:
+        raise CertificateError(f"these square roots need Q(zeta_{conductor}) of degree {degree}, "
+                               f"above the limit {cyclotomic.MAX_DEGREE}")
+    return cyclotomic.cyclotomic_field(conductor)
+
+
+def _square_root_proof(field) -> dict | None:
+    """The checker's "square-roots" proof for a multiquadratic field written by a primitive
+    element theta (its Galois group has no element of order d, so no prime works): k = log2 d
+    radicands, products of the primes of the discriminant, no subset product a square, each
+    with a polynomial g in theta, g^2 = a.  g is found as an integer relation between
+    1, theta, ..., theta^(d-1), sqrt(a) (LLL on Arb values) and kept only if g*g == a exactly."""
+    d = field.degree
+    k = d.bit_length() - 1
+    if d < 2 or d != 1 << k:
+        return None
+    disc = fmpz_poly(field.minpoly.numer()).discriminant()
+    primes = [int(p) for p, _ in fmpz(abs(disc)).factor()][:12]
+    theta = field.gen
+    chosen: list[int] = []
+    roots: list = []
+    for mask in range(1, 1 << len(primes)):
+        a = math.prod(p for i, p in enumerate(primes) if mask >> i & 1)
+        if any(_is_square(a * math.prod(c for j, c in enumerate(chosen) if sub >> j & 1))
+               for sub in range(1 << len(chosen))):
+            continue                            # not independent of the chosen ones
+        g = _root_in_field(field, a)
+        if g is not None:
+            chosen.append(a)
+            roots.append(g)
+            if len(chosen) == k:
+                return {"method": "square-roots", "radicands": [str(a) for a in chosen],
+                        "roots": [[rational_text(c) for c in g.coeffs()] for g in roots]}
+    return None
+
+
+def _is_square(n: int) -> bool:
+    return math.isqrt(n) ** 2 == n
+
+
+def _root_in_field(field, a: int):
+    """A polynomial g with g(theta)^2 == a in the field, or None (LLL proposes, exact decides)."""
+    d = field.degree
+    for bits in (64 * d + 256, 256 * d + 1024):
+        with ctx.workprec(bits + 64):
+            theta = field.enclosure(bits + 64)
+            values = [arb(1)]
+            for _ in range(d - 1):
+                values.append(values[-1] * theta)
+            values.append(arb(a).sqrt())
+            scale = arb(2) ** bits
+            column = [int((v * scale).mid().floor().unique_fmpz()) for v in values]
+        rows = [[int(i == j) for j in range(d + 1)] + [column[i]] for i in range(d + 1)]
+        relation = fmpz_mat(rows).lll().tolist()[0] if hasattr(fmpz_mat, "tolist") else \
+            [fmpz_mat(rows).lll()[0, j] for j in range(d + 2)]
+        last = relation[d]
+        if last == 0:
+            continue
+        g = fmpq_poly([fmpq(-int(relation[i]), int(last)) for i in range(d)])
+        if (g * g) % field.minpoly == a:
+            return g
+    return None
 
 
 def _primes(limit: int):

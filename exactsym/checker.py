@@ -49,11 +49,24 @@ def rat(text) -> tuple[int, int]:
         return text, 1
     num, slash, den = text.partition("/") if isinstance(text, str) else ("?", "", "")
     try:
-        p, q = int(num), (int(den) if slash else 1)
+        p, q = integer(num), (integer(den) if slash else 1)
     except ValueError:
         q = 0
     need(q > 0, f"not an exact rational: {text!r}")
     return p, q
+
+
+def integer(text: str) -> int:
+    """``int(text)`` for a decimal integer of any length: Python's ``int`` refuses strings of
+    more than 4300 digits, so longer ones are read in chunks (no global limit is changed)."""
+    digits = text[1:] if text[:1] in "+-" else text
+    if not (digits.isascii() and digits.isdigit()):
+        raise ValueError(f"not an integer: {text!r}")
+    value = 0
+    for start in range(0, len(digits), 4000):
+        chunk = digits[start:start + 4000]
+        value = value * 10 ** len(chunk) + int(chunk)
+    return -value if text[:1] == "-" else value
 
 
 def frac(text) -> Fraction:
@@ -211,10 +224,34 @@ class Field:
             m = proof["conductor"]
             need(isinstance(m, int) and 3 <= m <= 10 ** 6 and psi(m) == self.p,
                  f"the minimal polynomial is not that of 2cos(2pi/{m!r})")
+        elif proof["method"] == "square-roots":
+            self.square_roots(proof["radicands"], proof["roots"])
         else:
             need(proof["method"] == "prime", f"unknown irreducibility proof {proof['method']!r}")
             need(irreducible_mod(self.p, proof["prime"]),
                  f"the minimal polynomial is not irreducible modulo {proof['prime']!r}")
+
+    def square_roots(self, radicands: list, roots: list) -> None:
+        """p is irreducible if it has degree 2^k and Q(theta') holds square roots of k
+        positive integers a_1..a_k, no product of a non-empty subset of which is a square,
+        for every root theta' of p.  Such a_i generate a field of degree 2^k (the square
+        roots of independent elements of Q*/Q*^2 have independent classes: Besicovitch 1940),
+        so every root of p has degree >= 2^k = deg p, and p is its minimal polynomial.  The
+        roots are polynomials g_i with g_i^2 = a_i modulo p: this holds at every root of p,
+        whatever p is, because it is a polynomial identity modulo p."""
+        a = [integer(x) for x in radicands]
+        k = len(a)
+        need(1 <= k <= 16 and self.d == 1 << k and len(roots) == k and all(x > 0 for x in a),
+             "square-roots proof: need k positive radicands and degree 2^k")
+        for mask in range(1, 1 << k):
+            product = prod(x for i, x in enumerate(a) if mask >> i & 1)
+            need(isqrt(product) ** 2 != product,
+                 f"square-roots proof: a product of radicands is a square ({product})")
+        for x, g in zip(a, roots):
+            need(isinstance(g, list), "square-roots proof: a root must be a coefficient list")
+            root = self.num(g)
+            need(root * root == x, f"square-roots proof: the root given for {x} does not "
+                 "square to it")
 
     def make(self, c: list, den: int) -> "Alg":
         """The element (sum c_i theta^i) / den in canonical form: c reduced modulo p (in

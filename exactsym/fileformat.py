@@ -203,8 +203,11 @@ def _parse_txt(text: str, source: str) -> ConfigFile:
     return ConfigFile(source=source, points=tuple(points))
 
 
-_SIMPLE_PAIR = re.compile(r"[ \t]*(([+-]?[0-9]+)(?:/([0-9]*[1-9][0-9]*))?)(?:[ \t]+|[ \t]*,[ \t]*)"
-                          r"(([+-]?[0-9]+)(?:/([0-9]*[1-9][0-9]*))?)[ \t\r]*")
+# Digit runs are capped below Python's int-from-string limit (4300 digits): longer numbers
+# take the general path, which enforces the documented 5,000-digit bound (expr.MAX_DIGITS).
+_SIMPLE_PAIR = re.compile(r"[ \t]*(([+-]?[0-9]{1,4000})(?:/([0-9]{0,3999}[1-9][0-9]{0,3999}))?)"
+                          r"(?:[ \t]+|[ \t]*,[ \t]*)"
+                          r"(([+-]?[0-9]{1,4000})(?:/([0-9]{0,3999}[1-9][0-9]{0,3999}))?)[ \t\r]*")
 
 
 def _txt_pair(line: str, body: int, source: str, number: int) -> list[tuple[str, int, Node]]:

@@ -55,6 +55,26 @@ def circumcentre(a: Point, b: Point, c: Point) -> Point:
     return (a[0] + (cy * b2 - by * c2) / d, a[1] + (bx * c2 - cx * b2) / d)
 
 
+def circumcentre_homogeneous(a: Point, b: Point, c: Point) -> tuple:
+    """``(X, Y, D)`` with ``D > 0``: the circumcentre is ``(X/D, Y/D)``; nothing is divided
+    (raises ValueError for collinear points)."""
+    bx, by = b[0] - a[0], b[1] - a[1]
+    cx, cy = c[0] - a[0], c[1] - a[1]
+    d = 2 * (bx * cy - by * cx)
+    s = sign(d)
+    if s == 0:
+        raise ValueError("collinear points have no circumcentre")
+    b2, c2 = bx * bx + by * by, cx * cx + cy * cy
+    x, y = a[0] * d + (cy * b2 - by * c2), a[1] * d + (bx * c2 - cx * b2)
+    return (x, y, d) if s > 0 else (-x, -y, -d)
+
+
+def orientation_homogeneous(p: Point, q: Point, o: tuple) -> Turn:
+    """``orientation(p, q, (X/D, Y/D))`` for ``o = (X, Y, D)``, ``D > 0``, without dividing."""
+    x, y, d = o
+    return Turn(sign((q[0] - p[0]) * (y - d * p[1]) - (q[1] - p[1]) * (x - d * p[0])))
+
+
 def half_plane(d: Point) -> int:
     """0 for directions with angle in [0, pi), 1 for [pi, 2 pi); ``d`` must not be zero."""
     sy = sign(d[1])
@@ -85,3 +105,107 @@ def angular_sort(centre: Point, points: list[Point], indices: list[int]) -> list
         return compare_directions(di, dj)
 
     return sorted(indices, key=cmp_to_key(cmp))
+
+
+class PseudoAngle:
+    """The diamond angle of a non-zero vector (``symmetry.pseudo_angle``) kept as
+    ``quadrant + num/den`` with ``den > 0``: nothing is divided, so no field inverse is
+    computed (issue 9: 64 inverses in Q(zeta_4620) took 25 s for a 32-point set).
+
+    The quadrants' ranges [0, 1), [1, 2], (2, 3), [3, 4) are disjoint, so values compare by
+    quadrant, then by the sign of ``num1*den2 - num2*den1``.  ``ball(prec)`` is an Arb
+    enclosure, a filter for sorting and grouping; it decides nothing."""
+
+    __slots__ = ("quadrant", "num", "den")
+
+    def __init__(self, x, y):
+        if y >= 0:
+            if x > 0:
+                self.quadrant, self.num, self.den = 0, y, x + y
+            else:
+                self.quadrant, self.num, self.den = 1, -x, y - x
+        elif x < 0:
+            self.quadrant, self.num, self.den = 2, -y, -(x + y)
+        else:
+            self.quadrant, self.num, self.den = 3, x, x - y
+
+    def _cmp(self, other) -> int:
+        if isinstance(other, PseudoAngle):
+            if self.quadrant != other.quadrant:
+                return -1 if self.quadrant < other.quadrant else 1
+            return sign(self.num * other.den - other.num * self.den)
+        return sign(self.num + (self.quadrant - other) * self.den)     # a rational value
+
+    def __eq__(self, other):
+        return self._cmp(other) == 0
+
+    def __ne__(self, other):
+        return self._cmp(other) != 0
+
+    def __lt__(self, other):
+        return self._cmp(other) < 0
+
+    def __le__(self, other):
+        return self._cmp(other) <= 0
+
+    def __gt__(self, other):
+        return self._cmp(other) > 0
+
+    def __ge__(self, other):
+        return self._cmp(other) >= 0
+
+    __hash__ = None     # equal values may have different (num, den): group with intern_by_value
+
+    def ball(self, prec: int = 64):
+        from flint import arb, ctx
+        with ctx.workprec(prec):
+            return self.quadrant + _ball(self.num, prec) / _ball(self.den, prec)
+
+
+def _ball(x, prec: int):
+    from flint import arb
+    if hasattr(x, "enclosure"):
+        return x.enclosure(prec)
+    return arb(x)
+
+
+def sorted_by_value(indices: list, values) -> list:
+    """``indices`` sorted by ``values[i]`` (exact comparisons), stable.  A sort on the
+    midpoints of Arb balls proposes the order; every adjacent pair is then checked exactly
+    and any disorder falls back to the exact comparison sort."""
+    mids = {i: values[i].ball().mid() for i in indices}
+    proposal = sorted(indices, key=lambda i: mids[i])
+    if all(values[a] <= values[b] for a, b in zip(proposal, proposal[1:])):
+        return proposal
+    return sorted(indices, key=cmp_to_key(lambda a, b: values[a]._cmp(values[b])))
+
+
+def intern_by_value(values) -> list[int]:
+    """Small integers, equal iff the values are exactly equal, for values without a hash
+    (:class:`PseudoAngle`).  Arb balls pick the candidates: values whose balls are disjoint
+    differ; only overlapping ones are compared exactly (a sweep over the balls sorted by
+    midpoint, scanning back as far as the widest radius allows)."""
+    balls = [v.ball() for v in values]
+    order = sorted(range(len(values)), key=lambda i: balls[i].mid())
+    ids = [0] * len(values)
+    reps: list[int] = []                       # one index per class, in midpoint order
+    widest = 0.0
+    count = 0
+    for i in order:
+        b = balls[i]
+        widest = max(widest, float(b.rad()))
+        low = float(b.mid()) - float(b.rad()) - widest
+        match = None
+        for r in reversed(reps):
+            if float(balls[r].mid()) < low - abs(low) * 2.0 ** -50:
+                break                          # this ball and all before it end below b
+            if balls[r].overlaps(b) and values[r] == values[i]:
+                match = r
+                break
+        if match is None:
+            ids[i] = count
+            count += 1
+            reps.append(i)
+        else:
+            ids[i] = ids[match]
+    return ids

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 from .configuration import Configuration, no_cycle_collection
 from .exact import exact_key, exact_sorted, fmpq
-from .geometry import angular_sort, squared_distance
+from .geometry import PseudoAngle, angular_sort, sorted_by_value, squared_distance
 from .sec import Circle, smallest_enclosing_circle
 
 
@@ -63,9 +63,28 @@ def _levels_of(config: Configuration) -> Levels:
             return Levels(circle, _polar_levels(config.polar), True)
     points = list(config.points)
     circle = smallest_enclosing_circle(points)
-    return Levels(circle, _group_levels([squared_distance(circle.centre, p) for p in points],
-                                       lambda members: angular_sort(circle.centre, points, members)),
-                 False)
+    x, y, d = circle.homogeneous
+    if isinstance(d, fmpq) and d == 1:
+        return Levels(circle, _group_levels([squared_distance(circle.centre, p) for p in points],
+                                            lambda members: angular_sort(circle.centre, points,
+                                                                         members)), False)
+    # centre X/D kept homogeneous: group by D^2 r^2 and sort by the directions D p - (X, Y),
+    # which point as p - centre does (D > 0); divide by D^2 once per level
+    vectors = [(d * p[0] - x, d * p[1] - y) for p in points]
+    scaled = [vx * vx + vy * vy for vx, vy in vectors]
+    d2 = d * d
+    levels = _group_levels(scaled, lambda members: _angular_order(vectors, members))
+    return Levels(circle, tuple(Level(level.radius_squared / d2, level.points)
+                                for level in levels), False)
+
+
+def _angular_order(vectors, members: list[int]) -> list[int]:
+    """``members`` counter-clockwise from the +x ray (as :func:`angular_sort`), the vector
+    zero first; vectors of one direction keep their order."""
+    at_centre = [i for i in members if vectors[i][0] == 0 and vectors[i][1] == 0]
+    rest = [i for i in members if i not in at_centre]
+    keys = {i: PseudoAngle(*vectors[i]) for i in rest}
+    return at_centre + sorted_by_value(rest, keys)
 
 
 def _group_levels(radii_squared: list, order_level) -> tuple[Level, ...]:

@@ -11,23 +11,71 @@ proposal fails, the exact algorithm runs from scratch.  Floats never decide.
 
 from __future__ import annotations
 
+import math
 import random
-from dataclasses import dataclass
 
-from .exact import sign
-from .geometry import Point, Turn, circumcentre, midpoint, orientation, squared_distance
+from flint import arb, ctx
+
+from .exact import fmpq, sign
+from .geometry import (Point, Turn, circumcentre_homogeneous, midpoint, orientation,
+                       orientation_homogeneous, squared_distance)
 
 _SEED = 20100707
 
 
-@dataclass(frozen=True)
 class Circle:
-    centre: Point
-    radius_squared: object
-    support: tuple[int, ...]     # indices of the points on the circle that determine it
+    """A circle with its centre kept homogeneous: ``homogeneous = (X, Y, D)``, ``D > 0``, the
+    centre being ``(X/D, Y/D)``.  Predicates use the homogeneous form, so no field inverse is
+    computed (issue 9: a circumcentre in Q(sqrt 2, ..., sqrt 23) made every later number
+    dense); ``centre`` and ``radius_squared`` divide once, on first use.  ``support``: indices
+    of the points on the circle that determine it."""
+
+    __slots__ = ("homogeneous", "support", "_through", "_centre", "_radius_squared")
+
+    def __init__(self, centre: Point, radius_squared, support: tuple[int, ...],
+                 homogeneous: tuple | None = None, through: Point | None = None):
+        self.support = support
+        if homogeneous is None:
+            one = centre[0] * 0 + 1
+            homogeneous = (centre[0], centre[1], one)
+        self.homogeneous = homogeneous
+        self._through = through             # a point on the circle (when radius is lazy)
+        self._centre = centre
+        self._radius_squared = radius_squared
+
+    @property
+    def centre(self) -> Point:
+        if self._centre is None:
+            x, y, d = self.homogeneous
+            self._centre = (x / d, y / d)
+        return self._centre
+
+    @property
+    def radius_squared(self):
+        if self._radius_squared is None:
+            self._radius_squared = squared_distance(self.centre, self._through)
+        return self._radius_squared
+
+    def scaled_power(self, p: Point):
+        """``D^2 (|p - centre|^2 - radius^2)``: its sign says outside (+), on (0), inside (-)."""
+        x, y, d = self.homogeneous
+        dx, dy = d * p[0] - x, d * p[1] - y
+        if self._through is not None and self._radius_squared is None:
+            tx, ty = d * self._through[0] - x, d * self._through[1] - y
+            return dx * dx + dy * dy - (tx * tx + ty * ty)
+        return dx * dx + dy * dy - d * d * self.radius_squared
 
     def contains(self, p: Point) -> bool:
-        return squared_distance(self.centre, p) <= self.radius_squared
+        return sign(self.scaled_power(p)) <= 0
+
+    def __eq__(self, other):
+        return isinstance(other, Circle) and self.support == other.support and \
+            self.centre == other.centre and self.radius_squared == other.radius_squared
+
+    __hash__ = None
+
+    def __repr__(self):
+        return f"Circle(homogeneous={self.homogeneous!r}, support={self.support!r})"
 
 
 def _circle(points, support: tuple[int, ...]) -> Circle:
@@ -39,8 +87,11 @@ def _circle(points, support: tuple[int, ...]) -> Circle:
         c = midpoint(a, b)
         return Circle(c, squared_distance(c, a), support)
     a, b, c = (points[i] for i in support)
-    centre = circumcentre(a, b, c)
-    return Circle(centre, squared_distance(centre, a), support)
+    x, y, d = circumcentre_homogeneous(a, b, c)
+    if isinstance(d, fmpq):                  # rationals: dividing is cheap, do it now
+        centre = (x / d, y / d)
+        return Circle(centre, squared_distance(centre, a), support)
+    return Circle(None, None, support, (x, y, d), a)
 
 
 def _welzl(points, order, contains, circle_of):
@@ -99,30 +150,63 @@ def sec_is_minimal(points, circle: Circle) -> bool:
     if len(s) == 2:
         return True
     a, b, c = (points[i] for i in s)
-    o = circle.centre
-    turns = {orientation(a, b, o), orientation(b, c, o), orientation(c, a, o)}
+    o = circle.homogeneous
+    turns = {orientation_homogeneous(a, b, o), orientation_homogeneous(b, c, o),
+             orientation_homogeneous(c, a, o)}
     return not (Turn.LEFT in turns and Turn.RIGHT in turns)
 
 
 def _exact_contains_all(points, circle: Circle, fx, fy) -> bool:
-    """Every point inside or on ``circle``.  A float test with a proven error bound
-    (relative 2^-40, far above the few ulps it can be off, plus an absolute term for
-    underflow) clears the points well inside; the rest are decided exactly.  A point
-    the filter sees well outside makes the caller fall back to exact Welzl."""
-    cx, cy = circle.centre
-    r2 = circle.radius_squared
-    fcx, fcy, fr2 = float(cx), float(cy), float(r2)
+    """Every point inside or on ``circle``.  A float test with a proven error bound clears
+    the points well inside: the centre and squared radius are Arb balls (so a centre kept
+    as X/D is enclosed without dividing exactly), each float coordinate is within a
+    relative 2^-50 of its exact value (fmpq: correctly rounded; algebraic: the midpoint of
+    a 53-bit ball, whose radius is added), and the comparison keeps a relative 2^-40 slack
+    plus the balls' radii.  The rest are decided exactly, division-free.  A point the
+    filter sees well outside makes the caller fall back to exact Welzl."""
+    x, y, d = circle.homogeneous
+    if isinstance(d, fmpq) and d == 1 and circle._radius_squared is not None \
+            and isinstance(x, fmpq) and isinstance(y, fmpq):
+        # rational centre: float() of an fmpq is correctly rounded, no ball needed
+        return _float_filtered(points, circle, fx, fy, float(x), float(y),
+                               float(circle._radius_squared), 0.0, 0.0)
+    with ctx.workprec(64):
+        bd = _ball(d)
+        bx, by = _ball(x) / bd, _ball(y) / bd
+        if circle._radius_squared is not None:
+            br2 = _ball(circle._radius_squared)
+        else:
+            t = circle._through
+            br2 = (_ball(t[0]) - bx) ** 2 + (_ball(t[1]) - by) ** 2
+    fcx, fcy, fr2 = float(bx.mid()), float(by.mid()), float(br2.mid())
+    rad = float(bx.rad()) + float(by.rad())
+    rad2 = float(br2.rad())
+    return _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2)
+
+
+def _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2) -> bool:
+    """The loop of :func:`_exact_contains_all` with the centre and radius as floats within
+    ``rad`` and ``rad2`` of their exact values."""
+    if not all(math.isfinite(v) for v in (fcx, fcy, fr2, rad, rad2)):
+        raise OverflowError("not representable as floats")
+    exact_points = isinstance(points[0][0], fmpq)
     for p, px, py in zip(points, fx, fy):
         d2 = (px - fcx) ** 2 + (py - fcy) ** 2
-        slack = ((abs(px) + abs(fcx)) ** 2 + (abs(py) + abs(fcy)) ** 2 + abs(fr2)) * 2.0 ** -40 + 1e-290
+        slack = ((abs(px) + abs(fcx)) ** 2 + (abs(py) + abs(fcy)) ** 2 + abs(fr2)) * 2.0 ** -40 \
+            + 1e-290 + 4 * (abs(px - fcx) + abs(py - fcy) + rad) * rad + rad2
+        if not exact_points:
+            slack += 4 * (abs(px) + abs(py)) * 2.0 ** -40 * (abs(px - fcx) + abs(py - fcy) + 1)
         if d2 + slack < fr2:
             continue
         if d2 - slack > fr2:
             return False
-        dx, dy = p[0] - cx, p[1] - cy
-        if sign(dx * dx + dy * dy - r2) > 0:
+        if sign(circle.scaled_power(p)) > 0:
             return False
     return True
+
+
+def _ball(v):
+    return v.enclosure(64) if hasattr(v, "enclosure") else arb(v)
 
 
 def smallest_enclosing_circle(points: list[Point]) -> Circle:
@@ -149,7 +233,8 @@ def smallest_enclosing_circle(points: list[Point]) -> Circle:
 
 def _canonical(points, circle: Circle) -> Circle:
     """Report the support sorted by index (the circle itself is unique)."""
-    return Circle(circle.centre, circle.radius_squared, tuple(sorted(circle.support)))
+    return Circle(circle._centre, circle._radius_squared, tuple(sorted(circle.support)),
+                  circle.homogeneous, circle._through)
 
 
 def sec_by_brute_force(points: list[Point]) -> Circle:

@@ -279,7 +279,7 @@ def _audit_rows(audit: dict, verbose: bool, source: str) -> list[str]:
         count = f"({len(items)}x)" if len(items) > 1 else ""
         line = f"  {label:<{width}} {count:>5}  {_discrepancy_text(items[0])}"
         if not verbose and len(line) > AUDIT_LINE:
-            line = line[:AUDIT_LINE - 1].rstrip() + "…"
+            line = _cut(line, AUDIT_LINE)
         rows.append(line)
     return rows
 
@@ -456,6 +456,22 @@ def _near_symmetry(analysis: Analysis) -> str | None:
     from .near_symmetry import near_symmetry_hint
     found = near_symmetry_hint(analysis.config)
     return None if found is None else found.text
+
+
+def _cut(line: str, width: int) -> str:
+    """``line`` cut to ``width`` characters with an ellipsis, never between an irrational
+    number and its decimal: a number whose ``≈`` falls past the cut is dropped whole."""
+    kept = line[:width - 1]
+    last = max(kept.rfind("≈"), 0)
+    pending = re.search(r"\b(sqrt|cos|sin)\(", kept[last:])
+    if pending is not None and "≈" in line[width - 1:]:
+        start = last + pending.start()
+        # back to the start of the expression the function belongs to (after ", " or "(")
+        cut = max(kept.rfind(", ", last, start), kept.rfind("(", last, start))
+        if cut < 0:
+            cut = kept.rfind(" ", last, start)
+        kept = kept[:cut + 1] if cut >= 0 else kept[:start]
+    return kept.rstrip() + "…"
 
 
 def one_line(analysis: Analysis, failures: int = 0) -> str:

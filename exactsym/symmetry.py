@@ -48,6 +48,7 @@ from dataclasses import dataclass, field
 from typing import Iterator, Sequence
 
 from .configuration import Configuration
+from .geometry import PseudoAngle, intern_by_value, sorted_by_value
 from .exact import fmpq
 from .levels import Levels, levels_of
 from .strings import cyclic_occurrences as occurrences, cyclic_period
@@ -242,7 +243,7 @@ def _pseudo_angle_of_integers(x, y) -> fmpq:
     return fmpq(2 * x + 3 * y, x + y) if x < 0 else fmpq(4 * x - 3 * y, x - y)
 
 
-def _directions(points, centre, integers: bool):
+def _directions(points, centre, integers: bool, homogeneous=None):
     """``(centre_index, idx, vectors, r2s, keys)``: for each point i off the centre (listed
     in ``idx``) a vector pointing from the centre to it, its exact squared distance to
     the centre and the pseudo-angle of the vector.
@@ -276,33 +277,37 @@ def _directions(points, centre, integers: bool):
                     fmpq(4 * dx - 3 * dy, dx - dy)
             idx.append(i)
     else:
+        cx, cy, cd = homogeneous if homogeneous is not None else (cx, cy, 1)
         for i in range(n):
             x, y = points[i]
-            dx, dy = x - cx, y - cy
+            dx, dy = cd * x - cx, cd * y - cy       # D (p - centre), D > 0: no division
             if dx == 0 and dy == 0:
                 centre_index = i
                 continue
             vectors[i] = (dx, dy)
             r2s[i] = dx * dx + dy * dy
-            keys[i] = pseudo_angle(dx, dy)
+            keys[i] = PseudoAngle(dx, dy)       # division-free: no field inverse
             idx.append(i)
     return centre_index, idx, vectors, r2s, keys
 
 
-def _cartesian_rays(points, centre, integers: bool | None = None):
+def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=None):
     """``(centre_index, rays, radii, gaps)`` about ``centre``: rays by pseudo-angle.
     ``integers`` (default: when the points and the centre are ``fmpq``) chooses the
     integer arithmetic of :func:`_directions`; both ways give the same result."""
     if integers is None:
         integers = isinstance(centre[0], fmpq) and isinstance(centre[1], fmpq) and \
             isinstance(points[0][0], fmpq)
-    centre_index, idx, vectors, r2s, keys = _directions(points, centre, integers)
-    sort_by_exact_keys(idx, keys)
+    centre_index, idx, vectors, r2s, keys = _directions(points, centre, integers, homogeneous)
+    if integers:
+        sort_by_exact_keys(idx, keys)
+    else:
+        idx = sorted_by_value(idx, keys)
     groups: list[list[int]] = []
     last = None
     for i in idx:
         key = keys[i]
-        if key == last:
+        if last is not None and key == last:
             groups[-1].append(i)
         else:
             groups.append([i])
@@ -317,7 +322,7 @@ def _cartesian_rays(points, centre, integers: bool | None = None):
             rays.append(tuple(ray))
             radii.append(tuple([r2s[i] for i in ray]))
     m = len(rays)
-    angle = _pseudo_angle_of_integers if integers else pseudo_angle
+    angle = _pseudo_angle_of_integers if integers else PseudoAngle
     gaps = []
     for a in range(m):
         (ux, uy), (vx, vy) = vectors[rays[a][0]], vectors[rays[(a + 1) % m][0]]
@@ -360,12 +365,15 @@ def symmetry_group(config: Configuration, rings: Levels | None = None) -> Symmet
         points = None
     else:
         points = config.points
-        centre_index, rays, radii, gaps = _cartesian_rays(points, centre)
+        centre_index, rays, radii, gaps = _cartesian_rays(points, centre,
+                                                          homogeneous=ring.sec.homogeneous)
         ray_turns = None
     m = len(rays)
 
     # symbols, interned: equal ids iff equal symbols; values are compared only lazily
-    ray_ids, gap_ids = _intern(radii, True), _intern(gaps, False)
+    ray_ids = _intern(radii, True)
+    gap_ids = intern_by_value(gaps) if gaps and isinstance(gaps[0], PseudoAngle) \
+        else _intern(gaps, False)
     width = max(gap_ids) + 1
     ccw = [ray_ids[i] * width + gap_ids[i] for i in range(m)]
     cw = [ray_ids[-i % m] * width + gap_ids[(-i - 1) % m] for i in range(m)]

@@ -204,7 +204,7 @@ def test_tampered_points(tmp_path):
     bad["configuration"]["points"][1][1] = ["0", "1/3"]
     caught(bad, "the centre is not the centroid", "is not point")
     bad = base(tmp_path, "c3-polar-irrational-radius")
-    bad["configuration"]["points"][0][0] = ["3", "10", "0", "-10", "0", "3"]
+    bad["configuration"]["points"][0][0] = ["3", "3"]            # 3 + 3 theta, not 3 + 2 sqrt(2)
     caught(bad, "image of point", "the origin is not the centre")
 
 

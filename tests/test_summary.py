@@ -101,6 +101,19 @@ def _cases_text():
         yield path, summary_text(analysis), summary_text(analysis, verbose=True)
 
 
+def _without_field_name(line: str) -> str:
+    """``line`` without the name of a number field (``Q(sqrt(3))``: a field, not a number)."""
+    start = line.find("number field Q(")
+    if start < 0:
+        return line
+    depth, i = 0, start + len("number field Q")
+    for i in range(i, len(line)):
+        depth += {"(": 1, ")": -1}.get(line[i], 0)
+        if depth == 0:
+            break
+    return line[:start] + line[i + 1:]
+
+
 def test_no_python_value_on_screen_and_a_decimal_beside_every_irrational_number(monkeypatch):
     """Every case file, summary and --verbose (with the strings): no dict, list of
     strings or repr; after each sqrt/cos/sin (an irrational number in the configuration
@@ -110,7 +123,7 @@ def test_no_python_value_on_screen_and_a_decimal_beside_every_irrational_number(
     for path, summary, verbose in _cases_text():
         for line in summary.splitlines()[1:] + verbose.splitlines()[1:]:
             assert not REPR.search(line), (path, line)
-            for m in re.finditer(r"\b(sqrt|cos|sin)\(", line):
+            for m in re.finditer(r"\b(sqrt|cos|sin)\(", _without_field_name(line)):
                 irrational += 1
                 assert "≈" in line[m.end():], (path, line)
             checked += 1

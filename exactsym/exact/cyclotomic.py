@@ -17,7 +17,7 @@ from flint import acb, arb, fmpq, fmpq_poly, fmpz, fmpz_poly
 from .field import FieldElement, NumberField
 
 #: Largest field degree phi(M) we build; beyond it arithmetic costs milliseconds.
-MAX_DEGREE = 4096
+MAX_DEGREE = 16384
 
 
 def euler_phi(m: int) -> int:

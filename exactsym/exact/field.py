@@ -21,11 +21,15 @@ from typing import Callable, Union
 
 from flint import acb_poly, arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz
 
+from .inverse import inverse_mod
+
 Rational = fmpq
 Number = Union[fmpq, "FieldElement"]
 
 _START_PRECISION = 64
 _MAX_PRECISION = 1 << 22   # a sign that needs more bits than this means a bug upstream
+_XGCD_BITS = 20_000        # fmpq_poly.xgcd is faster below this degree x coefficient bits,
+                           # and in degree <= 32 whatever the coefficients
 
 
 def as_fmpq(value) -> fmpq:
@@ -76,15 +80,20 @@ class NumberField:
     def element(self, poly: fmpq_poly) -> "FieldElement":
         if poly.degree() >= self.degree:
             poly = poly % self.minpoly
-        return FieldElement(self, poly)
+        return PolyElement(self, poly)
 
     def __call__(self, value) -> "FieldElement":
         """Coerce a rational (or an element of this field) into the field."""
-        if isinstance(value, FieldElement):
-            if value.field is not self:
+        if isinstance(value, PolyElement):
+            if value.field is self:
+                return value
+            embed = _embedding(value.field, self)
+            if embed is None:
                 raise TypeError("elements of two different number fields do not mix")
-            return value
-        return FieldElement(self, fmpq_poly([as_fmpq(value)]))
+            return PolyElement(self, embed(value.poly))
+        if isinstance(value, FieldElement):
+            return _from_multiquadratic(self, value)
+        return PolyElement(self, fmpq_poly([as_fmpq(value)]))
 
     @property
     def gen(self) -> "FieldElement":
@@ -113,6 +122,73 @@ class NumberField:
 
 
 class FieldElement:
+    """An exact real algebraic number of the kernel: a :class:`PolyElement` (a polynomial in
+    the generator of a :class:`NumberField`) or a multiquadratic element
+    (:class:`exactsym.exact.multiquadratic.MQ`).  Both offer ``+ - * / **``, exact
+    comparisons, ``sign()``, ``is_rational()``, ``rational()`` and ``hash``; algorithms only
+    ask ``isinstance(x, FieldElement)`` to tell them from ``fmpq``."""
+
+    __slots__ = ()
+
+
+def _embedding(small: NumberField, large: NumberField):
+    """The map of polynomials representing Q(zeta_a) in Q(zeta_b), a | b, or None."""
+    a, b = small.conductor, large.conductor
+    if a is None or b is None or b % a:
+        return None
+    step = b // a
+
+    def embed(poly: fmpq_poly) -> fmpq_poly:
+        coeffs = [fmpq(0)] * ((len(poly.coeffs()) - 1) * step + 1)
+        for i, c in enumerate(poly.coeffs()):
+            coeffs[i * step] = c
+        return fmpq_poly(coeffs) % large.minpoly
+    return embed
+
+
+def _common(x, y):
+    """``(x, y)`` written in one field: a cyclotomic field holds the elements of its
+    cyclotomic subfields (a polar file's radii and its Cartesian coordinates, issue 9)."""
+    if not isinstance(y, PolyElement):             # a multiquadratic element
+        return x, _from_multiquadratic(x.field, y)
+    if not isinstance(x, PolyElement):
+        return _from_multiquadratic(y.field, x), y
+    embed = _embedding(y.field, x.field)
+    if embed is not None:
+        return x, PolyElement(x.field, embed(y.poly))
+    embed = _embedding(x.field, y.field)
+    if embed is not None:
+        return PolyElement(y.field, embed(x.poly)), y
+    raise TypeError("elements of two different number fields do not mix")
+
+
+def _from_multiquadratic(field: NumberField, x) -> "PolyElement":
+    """A multiquadratic element written in a cyclotomic field holding its square roots."""
+    if field.conductor is None:
+        raise TypeError("elements of two different number fields do not mix")
+    from .cyclotomic import sqrt_conductor, sqrt_element
+    total = field(0)
+    for m, c in x.terms.items():
+        if field.conductor % sqrt_conductor(m):
+            raise TypeError("elements of two different number fields do not mix")
+        total = total + c * (sqrt_element(field, fmpq(m)) if m != 1 else field(1))
+    return total
+
+
+def _mixing(method):
+    """Let a binary operation take an element of another field that one of the two
+    fields contains (see :func:`_common`)."""
+    def wrapper(self, other):
+        if isinstance(other, FieldElement) and (not isinstance(other, PolyElement)
+                                                or other.field is not self.field):
+            self, other = _common(self, other)
+        return method(self, other)
+    wrapper.__name__ = method.__name__
+    wrapper.__doc__ = method.__doc__
+    return wrapper
+
+
+class PolyElement(FieldElement):
     """A real number ``poly(theta)`` of a :class:`NumberField`, exact.
 
     Mixes with ``int`` and ``fmpq`` operands; two elements must share one field.
@@ -126,7 +202,7 @@ class FieldElement:
 
     # -- coercion -----------------------------------------------------------
     def _other(self, other):
-        if isinstance(other, FieldElement):
+        if isinstance(other, PolyElement):
             if other.field is not self.field:
                 raise TypeError("elements of two different number fields do not mix")
             return other.poly
@@ -137,33 +213,37 @@ class FieldElement:
         return None
 
     # -- arithmetic ----------------------------------------------------------
+    @_mixing
     def __add__(self, other):
         o = self._other(other)
-        return NotImplemented if o is None else FieldElement(self.field, self.poly + o)
+        return NotImplemented if o is None else PolyElement(self.field, self.poly + o)
 
     __radd__ = __add__
 
+    @_mixing
     def __sub__(self, other):
         o = self._other(other)
-        return NotImplemented if o is None else FieldElement(self.field, self.poly - o)
+        return NotImplemented if o is None else PolyElement(self.field, self.poly - o)
 
+    @_mixing
     def __rsub__(self, other):
         o = self._other(other)
-        return NotImplemented if o is None else FieldElement(self.field, o - self.poly)
+        return NotImplemented if o is None else PolyElement(self.field, o - self.poly)
 
     def __neg__(self):
-        return FieldElement(self.field, -self.poly)
+        return PolyElement(self.field, -self.poly)
 
     def __pos__(self):
         return self
 
+    @_mixing
     def __mul__(self, other):
         o = self._other(other)
         if o is None:
             return NotImplemented
         if o.degree() <= 0 or self.poly.degree() <= 0:
-            return FieldElement(self.field, self.poly * o)
-        return FieldElement(self.field, (self.poly * o) % self.field.minpoly)
+            return PolyElement(self.field, self.poly * o)
+        return PolyElement(self.field, (self.poly * o) % self.field.minpoly)
 
     __rmul__ = __mul__
 
@@ -171,27 +251,33 @@ class FieldElement:
         if self.poly.is_zero():
             raise ZeroDivisionError("division by zero")
         if self.poly.degree() == 0:
-            return FieldElement(self.field, fmpq_poly([1 / self.poly.coeffs()[0]]))
-        g, s, _ = self.poly.xgcd(self.field.minpoly)
-        return FieldElement(self.field, s / g.coeffs()[0])
+            return PolyElement(self.field, fmpq_poly([1 / self.poly.coeffs()[0]]))
+        if self.field.degree <= 32 or \
+                self.field.degree * self.poly.numer().height_bits() <= _XGCD_BITS:
+            g, s, _ = self.poly.xgcd(self.field.minpoly)
+            return PolyElement(self.field, s / g.coeffs()[0])
+        # large coefficients: fmpq_poly.xgcd explodes (minutes); see .inverse
+        return PolyElement(self.field, inverse_mod(self.poly, self.field.minpoly))
 
+    @_mixing
     def __truediv__(self, other):
         o = self._other(other)
         if o is None:
             return NotImplemented
         if o.degree() == 0:
-            return FieldElement(self.field, self.poly / o.coeffs()[0])
-        return self * FieldElement(self.field, o).inverse()
+            return PolyElement(self.field, self.poly / o.coeffs()[0])
+        return self * PolyElement(self.field, o).inverse()
 
+    @_mixing
     def __rtruediv__(self, other):
         o = self._other(other)
-        return NotImplemented if o is None else FieldElement(self.field, o) * self.inverse()
+        return NotImplemented if o is None else PolyElement(self.field, o) * self.inverse()
 
     def __pow__(self, exponent: int):
         if not isinstance(exponent, int):
             return NotImplemented
         base = self if exponent >= 0 else self.inverse()
-        result = FieldElement(self.field, fmpq_poly([1]))
+        result = PolyElement(self.field, fmpq_poly([1]))
         for bit in bin(abs(exponent))[2:]:
             result = result * result
             if bit == "1":
@@ -216,14 +302,17 @@ class FieldElement:
             return (c > 0) - (c < 0)
         return self.field.sign_of(self.poly)
 
+    @_mixing
     def __eq__(self, other):
         o = self._other(other)
         return NotImplemented if o is None else self.poly == o
 
+    @_mixing
     def __ne__(self, other):
         o = self._other(other)
         return NotImplemented if o is None else self.poly != o
 
+    @_mixing
     def _cmp(self, other) -> int | None:
         o = self._other(other)
         if o is None:
@@ -231,7 +320,7 @@ class FieldElement:
         diff = self.poly - o
         if diff.is_zero():
             return 0
-        return FieldElement(self.field, diff).sign()
+        return PolyElement(self.field, diff).sign()
 
     def __lt__(self, other):
         c = self._cmp(other)
@@ -269,4 +358,4 @@ class FieldElement:
         return float(self.enclosure(53).mid())
 
     def __repr__(self):
-        return f"FieldElement({self.poly} in {self.field.name})"
+        return f"PolyElement({self.poly} in {self.field.name})"

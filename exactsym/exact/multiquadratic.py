@@ -26,6 +26,7 @@ from math import gcd
 from flint import arb, ctx, fmpq, fmpz
 
 from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt
+from .field import FieldElement
 
 _ULP = 2.0 ** -52
 _MAX_PREC = 1 << 16
@@ -56,7 +57,15 @@ def _as_fmpq(x) -> fmpq:
     raise TypeError(f"not a rational: {type(x).__name__}")
 
 
-class MQ:
+class _Rational:
+    """``MQ.rational(q)`` builds the element q; ``x.rational()`` is the kernel's name
+    (:class:`~.field.FieldElement`) for the value of a rational element ``x``."""
+
+    def __get__(self, obj, cls):
+        return cls.from_rational if obj is None else obj.to_fmpq
+
+
+class MQ(FieldElement):
     """An element of a multiquadratic field: ``{squarefree radicand: fmpq}``.
 
     Immutable by convention (the dictionary is never changed after construction).
@@ -72,9 +81,11 @@ class MQ:
 
     # -- construction -------------------------------------------------------
     @staticmethod
-    def rational(q) -> "MQ":
+    def from_rational(q) -> "MQ":
         q = _as_fmpq(q)
         return MQ({1: q} if q != 0 else {})
+
+    rational = _Rational()
 
     @staticmethod
     def sqrt(q) -> "MQ":
@@ -159,6 +170,10 @@ class MQ:
         a, b = self.terms, other.terms
         if not a or not b:
             return MQ()
+        if len(a) * len(b) > _DENSE_PRODUCT:
+            base = sorted(_coprime_base([m for m in set(a) | set(b) if m != 1]))
+            if len(a) * len(b) > 2 * 3 ** len(base):     # Karatsuba does fewer products
+                return MQ(_dense_product(a, b, base))
         if len(b) == 1 and 1 in b:
             q = b[1]
             return MQ({m: c * q for m, c in a.items()})
@@ -293,6 +308,10 @@ class MQ:
         finally:
             ctx.prec = old
 
+    def enclosure(self, prec: int = 53) -> arb:
+        """An ``arb`` ball around the value (the kernel's name, for filters and drawing)."""
+        return self.to_arb(prec)
+
     def __float__(self):
         """An approximation for drawing and float baselines; decides nothing."""
         return float(sum(float(c) * (m ** 0.5) for m, c in self.terms.items()))
@@ -377,6 +396,53 @@ def from_tree(node: Node) -> MQ:
             raise ValueError("nested radicals are not multiquadratic")
         return sqrt_rational(arg.to_fmpq())
     raise ValueError(f"{type(node).__name__} is not multiquadratic")
+
+
+#: term pairs above which a product goes through the dense Karatsuba product (3^k, not 4^k)
+_DENSE_PRODUCT = 1024
+
+
+def _dense_product(a: dict, b: dict, base: list[int]) -> dict:
+    """The product of two elements with many terms.  Over a coprime base b_1..b_k of their
+    radicands the field is the tensor product of the Q[x_i]/(x_i^2 - b_i), so with
+    x = A + B sqrt(b_k), y = C + D sqrt(b_k):
+    xy = (AC + b_k BD) + ((A + B)(C + D) - AC - BD) sqrt(b_k), three half-size products."""
+    k = len(base)
+    size = 1 << k
+
+    def dense(terms):
+        out = [fmpq(0)] * size
+        for m, c in terms.items():
+            mask = 0
+            for i, p in enumerate(base):
+                if m % p == 0:
+                    mask |= 1 << i
+            out[mask] = c
+        return out
+
+    def product(x, y, level):
+        if level == 0:
+            return [x[0] * y[0]]
+        h = 1 << (level - 1)
+        a0, a1, b0, b1 = x[:h], x[h:], y[:h], y[h:]
+        low = product(a0, b0, level - 1)
+        high = product(a1, b1, level - 1)
+        mixed = product([u + v for u, v in zip(a0, a1)], [u + v for u, v in zip(b0, b1)],
+                        level - 1)
+        p = base[level - 1]
+        return [u + p * v for u, v in zip(low, high)] + \
+            [w - u - v for w, u, v in zip(mixed, low, high)]
+
+    result = product(dense(a), dense(b), k)
+    out = {}
+    for mask, c in enumerate(result):
+        if c != 0:
+            m = 1
+            for i in range(k):
+                if mask >> i & 1:
+                    m *= base[i]
+            out[m] = c
+    return out
 
 
 def _coprime_base(radicands) -> list[int]:

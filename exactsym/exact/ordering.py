@@ -13,9 +13,11 @@ from __future__ import annotations
 from flint import fmpq
 
 from .field import FieldElement
+from .multiquadratic import MQ
 
 
 _IRRATIONAL = "field"   # tag of an irrational element's key: no rational key starts with it
+_MULTIQUADRATIC = "sqrt"   # tag of an irrational multiquadratic element's key
 
 
 def exact_key(x):
@@ -31,6 +33,12 @@ def exact_key(x):
     """
     if isinstance(x, fmpq):
         return (int(x.p), int(x.q))
+    if isinstance(x, MQ):
+        if x.is_rational():
+            q = x.rational()
+            return (int(q.p), int(q.q))
+        return (_MULTIQUADRATIC,) + tuple(sorted((m, int(c.p), int(c.q))
+                                                 for m, c in x.terms.items()))
     if isinstance(x, FieldElement):
         if x.is_rational():
             q = x.rational()

@@ -10,6 +10,7 @@ from flint import fmpq
 
 from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 from .field import FieldElement, as_fmpq
+from .multiquadratic import MQ
 
 
 def rational_text(q) -> str:
@@ -18,28 +19,58 @@ def rational_text(q) -> str:
 
 
 def _pi_multiple_text(q: fmpq) -> str:
-    if q == 1:
-        return "pi"
-    if q.q == 1:
-        return f"{q.p}*pi"
-    return f"{q.p}*pi/{q.q}"
+    sign, p = ("-", -q.p) if q < 0 else ("", q.p)
+    head = "pi" if p == 1 else f"{p}*pi"
+    return sign + (head if q.q == 1 else f"{head}/{q.q}")
+
+
+# Binding strength of what a string is, loosest first: a sum, a product or quotient, a
+# negation, a power, an atom (a number, a function call, a parenthesised expression).
+_SUM, _PRODUCT, _NEGATION, _POWER, _ATOM = range(5)
+
+
+def _wrap(text_and_level: tuple[str, int], least: int) -> str:
+    text, level = text_and_level
+    return text if level >= least else f"({text})"
+
+
+def _rational_level(q: fmpq) -> tuple[str, int]:
+    text = rational_text(q)
+    if q < 0:
+        return text, _NEGATION
+    return text, (_PRODUCT if q.q != 1 else _ATOM)
+
+
+def _expression(node: Node) -> tuple[str, int]:
+    """``(text, level)``: the text of ``node`` and how strongly it binds (see ``_SUM``...)."""
+    if isinstance(node, Const):
+        return _rational_level(as_fmpq(node.value))
+    if isinstance(node, Neg):
+        return "-" + _wrap(_expression(node.arg), _POWER), _NEGATION
+    if isinstance(node, BinOp):
+        left, right = _expression(node.left), _expression(node.right)
+        if node.op in "+-":
+            # a - b needs b parenthesised when b is a sum; a + b never does, but a negated
+            # right operand reads better as a subtraction
+            if node.op == "+" and right[1] == _NEGATION and right[0].startswith("-"):
+                return f"{left[0]} - {right[0][1:]}", _SUM
+            return f"{left[0]} {node.op} {_wrap(right, _PRODUCT if node.op == '-' else _SUM)}", _SUM
+        # the grammar reads 2*-3 as 2*(-3), but write the parentheses
+        return f"{_wrap(left, _PRODUCT)}{node.op}{_wrap(right, _POWER)}", _PRODUCT
+    if isinstance(node, Pow):
+        exponent = str(node.exponent) if node.exponent >= 0 else f"({node.exponent})"
+        return f"{_wrap(_expression(node.base), _ATOM)}^{exponent}", _POWER
+    if isinstance(node, Sqrt):
+        return f"sqrt({_expression(node.arg)[0]})", _ATOM
+    if isinstance(node, Trig):
+        return f"{node.func}({_pi_multiple_text(as_fmpq(node.pi_multiple))})", _ATOM
+    raise TypeError(type(node).__name__)
 
 
 def expression_text(node: Node) -> str:
-    """A fully parenthesised string for an expression tree."""
-    if isinstance(node, Const):
-        return f"({rational_text(node.value)})"
-    if isinstance(node, Neg):
-        return f"(-{expression_text(node.arg)})"
-    if isinstance(node, BinOp):
-        return f"({expression_text(node.left)}{node.op}{expression_text(node.right)})"
-    if isinstance(node, Pow):
-        return f"({expression_text(node.base)}^({node.exponent}))"
-    if isinstance(node, Sqrt):
-        return f"sqrt{expression_text(node.arg)}"
-    if isinstance(node, Trig):
-        return f"{node.func}({_pi_multiple_text(as_fmpq(node.pi_multiple))})"
-    raise TypeError(type(node).__name__)
+    """The text of an expression tree with only the parentheses it needs; it parses back
+    (:func:`exactsym.expr.parse_expression`) to an expression of the same value."""
+    return _expression(node)[0]
 
 
 def _sum_text(terms: list[tuple[fmpq, str]]) -> str:
@@ -71,6 +102,8 @@ def number_text(x) -> str:
     """The configuration-syntax text of an exact number."""
     if not isinstance(x, FieldElement):
         return rational_text(x)
+    if isinstance(x, MQ):
+        return x.text()
     if x.is_rational():
         return rational_text(x.rational())
     field = x.field

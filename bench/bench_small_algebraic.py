@@ -1,0 +1,118 @@
+"""Benchmark: the small algebraic inputs of issue 9, truth alone and full ``check``.
+
+Each input is written to a temporary TOML file; for each, the ground truth (load, rings,
+symmetry_group) is timed in a child process, and so is the whole ``exactsym check --json``
+(a subprocess with a timeout).  Run: ``python bench/bench_small_algebraic.py``
+(``--timeout S`` per run, default 60; ``--only NAME`` for one input).
+
+Targets (issue 9): truth < 1 s and full check < 5 s for up to 100 points whose numbers are
+square roots of rationals, cos/sin of rational multiples of pi or nested radicals of depth
+up to 3; asymmetric ones < 0.2 s; a refusal only beyond documented bounds, within a second.
+"""
+
+from __future__ import annotations
+
+import argparse
+import random
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+TRUTH = """
+import sys, time
+from exactsym.configuration import load
+from exactsym.levels import levels_of
+from exactsym.symmetry import symmetry_group
+start = time.perf_counter()
+config = load(sys.argv[1])
+group = symmetry_group(config, levels_of(config))
+print(f"{time.perf_counter() - start:.3f} {group.name}")
+"""
+
+
+def _cartesian(points) -> str:
+    return "format = 1\npoints = [\n" + "".join(f'  ["{x}", "{y}"],\n' for x, y in points) + "]\n"
+
+
+def _polar(points) -> str:
+    return "format = 1\npoints = [\n" + "".join(
+        f'  {{ r = "{r}", turn = "{t}" }},\n' for r, t in points) + "]\n"
+
+
+def inputs() -> dict[str, str]:
+    """The inputs listed in issue 9, by name."""
+    out = {}
+    out["3 points, sqrt 2 3 5 7"] = _cartesian([("sqrt(2)", "sqrt(3)"), ("sqrt(5)", "0"),
+                                                 ("0", "sqrt(7)")])
+    out["3 points, + sqrt(11)"] = _cartesian([("sqrt(2)", "sqrt(3)"), ("sqrt(5)", "sqrt(11)"),
+                                               ("0", "sqrt(7)")])
+    out["nine square roots"] = _cartesian([("sqrt(2)", "sqrt(3)"), ("sqrt(5)+sqrt(7)", "sqrt(11)"),
+                                           ("sqrt(13)-sqrt(17)", "sqrt(19)+sqrt(23)")])
+    out["5-deep nested sqrt"] = _cartesian([("sqrt(2+sqrt(3+sqrt(5+sqrt(7+sqrt(11)))))", "0"),
+                                            ("0", "1"), ("1", "1")])
+    draw = random.Random(1)
+    c4 = []
+    for j in range(8):
+        k = draw.randrange(1, 2310)
+        for q in range(4):
+            c4.append((f"{j + 1}*cos({k + 1155 * q}*pi/2310)", f"{j + 1}*sin({k + 1155 * q}*pi/2310)"))
+    out["32-point C4, pi/2310"] = _cartesian(c4)
+    out["32-point asym, pi/2310"] = _cartesian(c4[:-1] + [("8*cos(7*pi/2310)", "8*sin(7*pi/2310)")])
+    out["k*cos(2pi j/117), 3 pts"] = _cartesian(
+        [(f"{k}*cos(2*pi*{j}/117)", f"{k}*sin(2*pi*{j}/117)") for k, j in ((1, 1), (2, 5), (3, 17))])
+    pentagon = [(f"cos(2*pi*{j}/5)", f"sin(2*pi*{j}/5)") for j in range(5)]
+    out["pentagon moved 1e-300"] = _cartesian([("1 + 1e-300", "0")] + pentagon[1:])
+    out["pentagon moved 1e-1000"] = _cartesian([("1 + 1e-1000", "0")] + pentagon[1:])
+    out["polar sqrt(2),1 at 2/45.."] = _polar([("sqrt(2)", "2/45"), ("1", "47/90"),
+                                               ("sqrt(2)", "59/315")])
+    out["polar 7@1 + 7@sqrt(2)"] = _polar([("1", f"2/45 + {k}/7") for k in range(7)] +
+                                          [("sqrt(2)", f"1/9 + {k}/7") for k in range(7)])
+    out["polar 5, turns 1/7..5/13"] = _polar([("1", t) for t in ("0", "1/7", "2/5", "3/11", "5/13")])
+    out["sqrt(2+sqrt(3)), 1 point"] = _cartesian([("sqrt(2+sqrt(3))", "0")])
+    out["denestable sqrt(3+2sqrt2)"] = _cartesian([("sqrt(3+2*sqrt(2))", "0"), ("1", "0")])
+    out["rhombus sqrt(9+4sqrt2)"] = _polar([("sqrt(9+4*sqrt(2))", "0"), ("sqrt(9+4*sqrt(2))", "1/2"),
+                                            ("3/2", "1/4"), ("3/2", "3/4")])
+    return out
+
+
+def run(args: list[str], timeout: float) -> tuple[float, str]:
+    start = time.perf_counter()
+    try:
+        done = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return time.perf_counter() - start, f"timeout {timeout:.0f} s"
+    elapsed = time.perf_counter() - start
+    if done.returncode not in (0, 1):
+        last = (done.stderr.strip().splitlines() or ["?"])[-1]
+        return elapsed, f"exit {done.returncode}: {last[:70]}"
+    return elapsed, done.stdout.split()[-1] if done.stdout.split() else "?"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--timeout", type=float, default=60.0)
+    parser.add_argument("--only")
+    opts = parser.parse_args()
+    exactsym = [sys.executable, "-m", "exactsym"]
+    print(f"{'input':28} {'truth s':>8} {'group':>8} {'check s':>8}  outcome")
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, text in inputs().items():
+            if opts.only and opts.only not in name:
+                continue
+            path = Path(tmp) / "input.toml"
+            path.write_text(text)
+            t_truth, group = run([sys.executable, "-c", TRUTH, str(path)], opts.timeout)
+            if group.startswith("timeout"):
+                group = "timeout"
+            elif group.startswith("exit"):
+                group = "refused"
+            t_check, outcome = run(exactsym + ["check", "--json", str(path)], opts.timeout)
+            if not outcome.startswith(("timeout", "exit")):
+                outcome = "answered"
+            print(f"{name:28} {t_truth:8.2f} {group:>8} {t_check:8.2f}  {outcome}", flush=True)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,101 @@
+"""Every number exactsym writes reads back to itself (issue 9: ``sqrtsqrt(2)``, ``sqrtcos``).
+
+Law: for every expression tree E, ``parse(text(E))`` and ``parse(number_text(value(E)))``
+have the value of E.  Both are evaluated in one number system with E, so equality is exact.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+from hypothesis import assume, given, settings, strategies as st
+
+from exactsym.errors import ExpressionError
+from exactsym.exact import evaluate_all, expression_text, number_text
+from exactsym.expr import MAX_LENGTH, parse_expression
+from exactsym.exprtree import BinOp, Const, Neg, Pow, Sqrt, Trig
+
+consts = st.builds(lambda p, q: Const(Fraction(p, q)), st.integers(-12, 12), st.integers(1, 5))
+square_roots = st.builds(lambda p, q: Sqrt(Const(Fraction(p, q))), st.integers(0, 30),
+                         st.integers(1, 4))
+trig = st.builds(lambda f, p, q: Trig(f, Fraction(p, q)), st.sampled_from(["cos", "sin"]),
+                 st.integers(-12, 12), st.sampled_from([1, 2, 3, 5, 8, 10, 12]))
+
+
+def trees(atoms):
+    """Expression trees over ``atoms``: sums, products, quotients, negations, small powers."""
+    return st.recursive(atoms, lambda sub: st.one_of(
+        st.builds(BinOp, st.sampled_from("+-*"), sub, sub),
+        st.builds(lambda a, b: BinOp("/", a, BinOp("+", Const(Fraction(3)), BinOp("*", b, b))),
+                  sub, sub),                      # 3 + b^2 is never zero
+        st.builds(Neg, sub),
+        st.builds(Pow, sub, st.integers(0, 3))), max_leaves=6)
+
+
+nested = st.builds(lambda t: Sqrt(BinOp("+", Const(Fraction(5)), BinOp("*", t, t))),
+                   square_roots)                 # sqrt(5 + r^2): a nested radical
+KINDS = {
+    "rational": trees(consts),
+    "square roots": trees(st.one_of(consts, square_roots)),
+    "trigonometry": trees(st.one_of(consts, trig, square_roots)),
+    "nested": trees(st.one_of(consts, square_roots, nested,
+                              st.builds(Sqrt, st.builds(Sqrt, square_roots)))),
+}
+
+
+def same_value(tree, text: str) -> bool:
+    _, (a, b) = evaluate_all([tree, parse_expression(text)])
+    return a == b
+
+
+@pytest.mark.parametrize("kind", sorted(KINDS))
+def test_printed_numbers_read_back(kind):
+    @settings(max_examples=25 if kind != "nested" else 8, deadline=None)
+    @given(KINDS[kind])
+    def law(tree):
+        try:
+            _, (value,) = evaluate_all([tree])
+        except ExpressionError:
+            return                                  # e.g. a power of zero with exponent < 0
+        assert same_value(tree, expression_text(tree))
+        printed = number_text(value)
+        # known limit: a nested radical is written in the power basis of a primitive element,
+        # whose text can exceed the parser's 10,000 characters (test_long_nested_text below)
+        assume(kind != "nested" or len(printed) <= MAX_LENGTH)
+        assert same_value(tree, printed)
+    law()
+
+
+@pytest.mark.xfail(strict=True, reason="nested radicals print in a primitive element's power "
+                   "basis; a tower of quadratic extensions would print them compactly")
+def test_long_nested_text():
+    tree = parse_expression("sqrt(5 + sqrt(2/3)*sqrt(2/3)) + sqrt(sqrt(sqrt(1/2)))")
+    _, (value,) = evaluate_all([tree])
+    assert len(number_text(value)) <= MAX_LENGTH
+
+
+@pytest.mark.parametrize("text, printed", [
+    ("sqrt(sqrt(2))", "sqrt(sqrt(2))"),
+    ("sqrt(cos(pi/5))", "sqrt(cos(pi/5))"),
+    ("(1)*sqrt(2)", "1*sqrt(2)"),
+    ("-(2+3*sqrt(2))", "-(2 + 3*sqrt(2))"),
+    ("2^(-3)*sqrt(2)", "1/8*sqrt(2)"),
+    ("(1/2)^3 - (sqrt(2) - sqrt(3))", "1/8 - (sqrt(2) - sqrt(3))"),
+])
+def test_expression_text_is_short(text, printed):
+    tree = parse_expression(text)
+    assert expression_text(tree) == printed
+    assert same_value(tree, printed)
+
+
+def test_issue_examples_number_text():
+    # (1 + 2*sqrt(2))^2 = 9 + 4*sqrt(2): short text, no "((1)*sqrt(2))"
+    _, (x,) = evaluate_all([parse_expression("(1+2*sqrt(2))^2")])
+    assert number_text(x) == "9 + 4*sqrt(2)"
+    for text in ("sqrt(sqrt(2))", "sqrt(cos(pi/5))", "sqrt(2+sqrt(3)) + 1/3"):
+        tree = parse_expression(text)
+        _, (x,) = evaluate_all([tree])
+        printed = number_text(x)
+        assert "sqrtsqrt" not in printed and "sqrtcos" not in printed and "(1)*" not in printed
+        assert same_value(tree, printed)
