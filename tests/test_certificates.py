@@ -436,22 +436,34 @@ def test_interval_must_isolate_one_root():
 
 
 # ------------------------------------------------------------------ the checker's parts
+CHECKER_MODULES = ("checker", "checker_numbers", "checker_groups", "checker_refutations")
+
+
 def test_checker_imports_only_the_standard_library():
+    """Every checker module imports the standard library and, relatively (or as a sibling file
+    when run as a lone script), the other checker modules: nothing else of exactsym."""
     allowed = {"__future__", "fractions", "json", "math", "sys", "argparse", "dataclasses",
                "typing", "itertools", "functools", "collections", "hashlib"}
-    tree = ast.parse((ROOT / "exactsym" / "checker.py").read_text())
-    imported = set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
-            imported.update(alias.name.split(".")[0] for alias in node.names)
-        elif isinstance(node, ast.ImportFrom):
-            assert node.level == 0, "relative import in the checker"
-            imported.add(node.module.split(".")[0])
-    assert imported <= allowed, imported - allowed
+    assert sorted(p.stem for p in (ROOT / "exactsym").glob("checker*.py")) == \
+        sorted(CHECKER_MODULES)
+    for module in CHECKER_MODULES:
+        tree = ast.parse((ROOT / "exactsym" / f"{module}.py").read_text())
+        imported = set()
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                imported.update(alias.name.split(".")[0] for alias in node.names)
+            elif isinstance(node, ast.ImportFrom):
+                if node.level:
+                    assert node.level == 1 and node.module in CHECKER_MODULES, (module, node.module)
+                elif node.module not in CHECKER_MODULES:
+                    imported.add(node.module.split(".")[0])
+        assert imported <= allowed, (module, imported - allowed)
     code = ("import sys, exactsym.checker; print(sorted(m for m in sys.modules if "
             "m.split('.')[0] in ('exactsym', 'flint', 'sympy', 'networkx')))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
-    assert out.stdout.split() == ["['exactsym',", "'exactsym.checker']"], out
+    assert out.stdout.split() == [
+        "['exactsym',", "'exactsym.checker',", "'exactsym.checker_groups',",
+        "'exactsym.checker_numbers',", "'exactsym.checker_refutations']"], out
 
 
 def test_psi_is_the_minimal_polynomial_of_2cos():
@@ -563,6 +575,12 @@ def test_checker_as_a_program(tmp_path):
     assert done.returncode == 0 and "valid: group D4, orderable false" in done.stdout
     done = run(str(ROOT / "exactsym" / "checker.py"), str(cert_path))   # as a lone script
     assert done.returncode == 0, done.stderr
+    alone = tmp_path / "alone"                  # the four files copied anywhere
+    alone.mkdir()
+    for module in CHECKER_MODULES:
+        (alone / f"{module}.py").write_text((ROOT / "exactsym" / f"{module}.py").read_text())
+    done = run(str(alone / "checker.py"), str(cert_path))
+    assert done.returncode == 0 and "valid: group D4" in done.stdout, done.stderr
     cert = json.loads(cert_path.read_text())
     cert["witness"]["mirror"]["permutation"] = [0, 1, 2, 3]
     cert_path.write_text(json.dumps(cert))
