@@ -381,20 +381,55 @@ def _polar_witness(config, group):
 
 # ------------------------------------------------------------------ the certificate
 
-def make_certificate(config: Configuration, group=None) -> dict:
-    """The certificate of ``config``'s symmetry group (``group`` from
-    :func:`exactsym.symmetry.symmetry_group`, computed when not given)."""
+def _canonical(config, group, polar: bool) -> dict | None:
+    """witness.canonical: the frame ("ccw" or "cw") of a least reading -- read off the
+    ordering: the frame in which its rays follow the counter-clockwise rays of the group's
+    layout -- and, for D1 with no ordering and no point at the centre, the points sorted
+    counter-clockwise (the leader is on the mirror)."""
+    layout = getattr(group, "_layout", None)     # None: one point, or a hand-made group
+    if layout is None:
+        return None
+    rays = [list(r) for r in layout.rays]
+    if not group.orderable:
+        if group.name != "D1" or layout.centre_index is not None:
+            return None
+        return {"orientation": "ccw", "order": [i for r in rays for i in r]}
+    m = len(rays)
+    order = [i for i in group.ordering if i != layout.centre_index]
+    first = next(j for j, r in enumerate(rays) if r[0] == order[0])
+    if m >= 3:
+        nxt = order[len(rays[first])]
+        return {"orientation": "ccw" if rays[(first + 1) % m][0] == nxt else "cw"}
+    if m == 1:
+        return {"orientation": "ccw"}
+    # two rays: the ccw reading from R_first is least iff the angle to the other ray is the
+    # smaller one (below half a turn)
+    a, b = rays[first][0], rays[1 - first][0]
+    if polar:
+        below = (config.polar[b][1] - config.polar[a][1]) % 1 <= fmpq(1, 2)
+    else:
+        (cx, cy), (ax, ay), (bx, by) = group.centre, config.points[a], config.points[b]
+        below = (ax - cx) * (by - cy) - (ay - cy) * (bx - cx) >= 0
+    return {"orientation": "ccw" if below else "cw"}
+
+
+def make_certificate(config: Configuration, group=None, rings=None) -> dict:
+    """The certificate of ``config``'s symmetry group, canonical ordering and leader
+    (``group`` from :func:`exactsym.symmetry.symmetry_group` and ``rings`` from
+    :func:`exactsym.levels.levels_of`, computed when not given)."""
     from .levels import levels_of
+    rings = levels_of(config) if rings is None and (group is None or config.polar is None) \
+        else rings
     if group is None:
         from .symmetry import symmetry_group
-        group = symmetry_group(config, levels_of(config))
+        group = symmetry_group(config, rings)
     # one point: no SEC to check, so a polar file stays polar (no trigonometry needed)
     polar = config.polar is not None and (bool(group.polar) or config.n == 1)
     if polar:
         values = [r2 for r2, _ in config.polar]
         system = config.polar_system
     else:
-        values = [v for p in config.points for v in p]
+        values = [v for p in config.points for v in p] + list(group.centre)
         for iso in (group.rotation_generator, group.mirror):
             if iso is not None:
                 values += [e for row in iso.matrix for e in row]
@@ -412,9 +447,16 @@ def make_certificate(config: Configuration, group=None) -> dict:
         witness = _polar_witness(config, group)
     else:
         witness = _cartesian_witness(config, group, enc)
+        witness["sec"] = {"centre": [enc.text(v) for v in group.centre],
+                          "support": list(rings.sec.support)}
+    canonical = _canonical(config, group, polar) if config.n > 1 else None
+    if canonical is not None:
+        witness["canonical"] = canonical
     return {"format": FORMAT, "version": VERSION,
             "source": {"file": config.source, "name": config.name},
-            "claim": {"group": group.name, "orderable": bool(group.orderable)},
+            "claim": {"group": group.name, "orderable": bool(group.orderable),
+                      "ordering": list(group.ordering) if group.ordering else None,
+                      "leader": group.leader},
             "configuration_sha256": checker.digest(configuration),
             "configuration": configuration,
             "witness": witness}

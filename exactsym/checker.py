@@ -2,7 +2,8 @@
 
 Standard library only; imports nothing from exactsym but its own modules:
 ``checker_numbers`` (exact numbers and number fields), ``checker_groups`` (group
-certificates) and ``checker_refutations`` (refutation certificates).
+certificates), ``checker_ordering`` (the canonical ordering and the leader) and
+``checker_refutations`` (refutation certificates).
 ``python -m exactsym.checker CERT.json`` exits 0 when the certificate proves its claim, 1 when
 it does not (the reason on stderr), 2 when the file is unreadable.  The format is described in
 ``docs/certificates.md``.

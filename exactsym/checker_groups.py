@@ -27,8 +27,10 @@ import json
 from math import lcm
 
 try:
+    from .checker_ordering import check as check_ordering
     from .checker_numbers import Field, Invalid, frac, need, rat, scaled, sgn
 except ImportError:     # run as a lone script (python exactsym/checker.py): a sibling file
+    from checker_ordering import check as check_ordering
     from checker_numbers import Field, Invalid, frac, need, rat, scaled, sgn
 
 
@@ -45,7 +47,7 @@ def reference(witness: dict, n: int) -> int:
     return ref
 
 
-def group(n, ref, level, rot, mir, witness, image_in) -> tuple[str, bool]:
+def group(n, ref, level, rot, mir, witness, image_in) -> tuple[str, bool, list | None]:
     """Order of rho and step 3, given the verified permutations; returns (name, orderable).
     ``image_in(kind, b, w)``: does the isometry of this kind fixing c and taking the reference
     point to point b map point w onto a point of P?"""
@@ -68,7 +70,7 @@ def group(n, ref, level, rot, mir, witness, image_in) -> tuple[str, bool]:
             need(b in inside[kind] or b in refuted, f"the {kind} taking point {ref} to point "
                  f"{b} is neither in the claimed group nor refuted")
     orderable = len(orbit) == 1 and (mir is None or all(mir[i] == i for i in range(n)))
-    return f"{'D' if mir else 'C'}{len(orbit)}", orderable
+    return f"{'D' if mir else 'C'}{len(orbit)}", orderable, mir
 
 
 def distinct(keys: list) -> dict:
@@ -78,7 +80,7 @@ def distinct(keys: list) -> dict:
     return index
 
 
-def cartesian(points: list, field: Field | None, witness: dict) -> tuple[str, bool]:
+def cartesian(points: list, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
     n = len(points)
     if field is None:
         flat, scale = scaled([rat(v) for x, y in points for v in (x, y)])
@@ -89,7 +91,7 @@ def cartesian(points: list, field: Field | None, witness: dict) -> tuple[str, bo
     w = [(n * x - sx, n * y - sy) for x, y in pts]     # n * scale * (p - centroid): exact
     distinct(w)
     if n == 1:
-        return "O2", True
+        return "O2", True, None
 
     def isometry(name, det):                    # step 2 for one generator
         spec = witness.get(name)
@@ -133,7 +135,7 @@ def cartesian(points: list, field: Field | None, witness: dict) -> tuple[str, bo
     return group(n, ref, level, rot, mir, witness, image_in)
 
 
-def polar(points: list, field: Field | None, witness: dict) -> tuple[str, bool]:
+def polar(points: list, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
     n = len(points)
     rot, mir = witness.get("rotation"), witness.get("mirror")
     extra = [rat(rot["turn"])] if rot else []
@@ -152,7 +154,7 @@ def polar(points: list, field: Field | None, witness: dict) -> tuple[str, bool]:
     keys = [key(r, t) for r, t in zip(r2, turns)]
     index = distinct(keys)
     if n == 1:
-        return "O2", True
+        return "O2", True, None
     # Step 1: the origin is the SEC centre iff no point is farther than R and the points at
     # distance R leave no angular gap above half a turn (else a smaller circle holds them all).
     big = next(iter(values))
@@ -207,12 +209,17 @@ def verify_certificate(cert) -> tuple[bool, str]:
         need(isinstance(points, list) and points and all(
             isinstance(p, list) and len(p) == 2 for p in points), "points must be pairs")
         need(kind in ("cartesian", "polar"), f"unknown coordinates {kind!r}")
-        name, orderable = (cartesian if kind == "cartesian" else polar)(points, field, witness)
+        name, orderable, mirror = (cartesian if kind == "cartesian" else polar)(points, field,
+                                                                               witness)
         need(claim["group"] == name, f"the claim says group {claim['group']!r} but the "
              f"witness proves {name}")
         need(claim["orderable"] is orderable, f"the claim says orderable "
              f"{claim['orderable']!r} but group {name} makes it {orderable}")
-        return True, f"group {name}, orderable {str(orderable).lower()}"
+        proved = ""
+        if "ordering" in claim or "leader" in claim:    # optional: older certificates lack them
+            proved = ", " + check_ordering(kind, points, field, witness, claim, name,
+                                           orderable, mirror)
+        return True, f"group {name}, orderable {str(orderable).lower()}{proved}"
     except Invalid as err:
         return False, str(err)
     except (KeyError, TypeError, ValueError, IndexError, AttributeError, ZeroDivisionError) as err:

@@ -26,6 +26,7 @@ from exactsym import checker
 from exactsym.certificate import CertificateError, make_certificate
 from exactsym.cli import main as cli_main
 from exactsym.configuration import Configuration, load
+from exactsym.symmetry import symmetry_group
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "cases" / "examples"
@@ -101,13 +102,18 @@ CASES = {
 @pytest.mark.parametrize("name", sorted(CASES))
 def test_round_trip(tmp_path, name):
     text, group, orderable, coordinates, method = CASES[name]
-    cert = certify(write(tmp_path, "c.txt", text))
+    path = write(tmp_path, "c.txt", text)
+    cert = certify(path)
+    truth = symmetry_group(load(path))
     assert cert["format"] == "exactsym-certificate" and cert["version"] == 1
-    assert cert["claim"] == {"group": group, "orderable": orderable}
+    assert cert["claim"] == {"group": group, "orderable": orderable,
+                             "ordering": list(truth.ordering) if orderable else None,
+                             "leader": truth.leader}
     assert cert["configuration"]["coordinates"] == coordinates
     field = cert["configuration"]["field"]
     assert (field and field["irreducible"]["method"]) == method or (field is None and not method)
-    assert verify(cert) == (True, f"group {group}, orderable {str(orderable).lower()}")
+    proved = "ordering and leader" if orderable else "leader"
+    assert verify(cert) == (True, f"group {group}, orderable {str(orderable).lower()}, {proved}")
 
 
 def test_example_files_round_trip():
@@ -116,7 +122,8 @@ def test_example_files_round_trip():
         ok, message = verify(cert)
         assert ok, (path, message)
     pinwheel = certify(EXAMPLES / "chiral-nine-gon.toml")
-    assert pinwheel["claim"] == {"group": "C3", "orderable": False}
+    assert pinwheel["claim"] == {"group": "C3", "orderable": False, "ordering": None,
+                                 "leader": None}
     assert pinwheel["configuration"]["coordinates"] == "polar"
 
 
@@ -384,12 +391,12 @@ def test_certificate_from_hand_made_group():
     iso = lambda kind, matrix, perm: SimpleNamespace(kind=kind, centre=(one, one), turn=None,
                                                      matrix=matrix, permutation=perm)
     group = SimpleNamespace(
-        name="D4", orderable=False, polar=False, centre=(one, one),
+        name="D4", orderable=False, polar=False, centre=(one, one), ordering=None, leader=None,
         rotation_generator=iso("rotation", ((zero, -one), (one, zero)), (1, 2, 3, 0)),
         mirror=iso("reflection", ((one, zero), (zero, -one)), (3, 2, 1, 0)))
     cert = json.loads(json.dumps(make_certificate(config, group)))
     assert cert["witness"]["refutations"] == {"rotation": [], "reflection": []}
-    assert verify(cert) == (True, "group D4, orderable false")
+    assert verify(cert) == (True, "group D4, orderable false, leader")
     smaller = SimpleNamespace(**{**vars(group), "name": "C4", "mirror": None})
     with pytest.raises(CertificateError, match="symmetry missing from the group"):
         make_certificate(config, smaller)           # certify never writes a false claim
@@ -436,7 +443,8 @@ def test_interval_must_isolate_one_root():
 
 
 # ------------------------------------------------------------------ the checker's parts
-CHECKER_MODULES = ("checker", "checker_numbers", "checker_groups", "checker_refutations")
+CHECKER_MODULES = ("checker", "checker_numbers", "checker_groups", "checker_ordering",
+                   "checker_refutations")
 
 
 def test_checker_imports_only_the_standard_library():
@@ -463,7 +471,8 @@ def test_checker_imports_only_the_standard_library():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert out.stdout.split() == [
         "['exactsym',", "'exactsym.checker',", "'exactsym.checker_groups',",
-        "'exactsym.checker_numbers',", "'exactsym.checker_refutations']"], out
+        "'exactsym.checker_numbers',", "'exactsym.checker_ordering',",
+        "'exactsym.checker_refutations']"], out
 
 
 def test_psi_is_the_minimal_polynomial_of_2cos():
@@ -562,7 +571,8 @@ def test_cli_certify_and_verify(tmp_path, capsys):
     capsys.readouterr()
     assert cli_main(["certify", str(config), "-o", "-"]) == 0
     out, _ = capsys.readouterr()
-    assert json.loads(out)["claim"] == {"group": "D6", "orderable": False}
+    assert json.loads(out)["claim"] == {"group": "D6", "orderable": False, "ordering": None,
+                                     "leader": None}
 
 
 def test_checker_as_a_program(tmp_path):
@@ -575,7 +585,7 @@ def test_checker_as_a_program(tmp_path):
     assert done.returncode == 0 and "valid: group D4, orderable false" in done.stdout
     done = run(str(ROOT / "exactsym" / "checker.py"), str(cert_path))   # as a lone script
     assert done.returncode == 0, done.stderr
-    alone = tmp_path / "alone"                  # the four files copied anywhere
+    alone = tmp_path / "alone"                  # the checker's files copied anywhere
     alone.mkdir()
     for module in CHECKER_MODULES:
         (alone / f"{module}.py").write_text((ROOT / "exactsym" / f"{module}.py").read_text())
