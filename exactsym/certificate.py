@@ -9,7 +9,10 @@ numbers; the checker recomputes everything it needs from the certificate alone.
 Numbers.  Rationals are written ``"p/q"``.  Irrational numbers are written in a field Q(theta)
 with a REAL generator, so that the checker can decide signs with rational intervals:
 
-* a cyclotomic field Q(zeta_M) (square roots and trigonometry): its real elements lie in the real
+* square roots of rationals (the kernel's multiquadratic numbers): natively, ``{"radicands":
+  [p, ...]}`` (the primes of the radicands) with elements ``{m: c}`` = sum c sqrt(m): no field
+  embedding, so any number of distinct square roots certifies;
+* a cyclotomic field Q(zeta_M) (trigonometry): its real elements lie in the real
   subfield Q(theta), theta = 2cos(2pi/M), whose minimal polynomial Psi_M is known in closed form
   (``"irreducible": {"method": "real-cyclotomic", "conductor": M}``).  A real
   x = sum c_k zeta^k equals (x + conj x)/2 = c_0 + sum_k c_k V_k(theta)/2 with
@@ -32,7 +35,7 @@ from flint import arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz, fmpz_mat, fmpz_poly
 
 from . import checker
 from .configuration import Configuration
-from .exact import FieldElement, cyclotomic
+from .exact import FieldElement
 from .exact.multiquadratic import MQ
 
 FORMAT = "exactsym-certificate"
@@ -86,17 +89,30 @@ class Encoder:
 
     def __init__(self, system, values):
         field = getattr(system, "field", None)
-        self.spec = None
+        self.spec = self.radicands = None
         if all(not isinstance(v, FieldElement) or v.is_rational() for v in values):
             self.field = None                   # everything is rational: no field at all
             return
-        if field is None:                       # square roots of rationals (MQ elements)
-            field = _field_of_square_roots(values)
+        if field is None:                       # square roots of rationals (MQ elements):
+            self._square_roots(values)          # written natively, no field embedding
+            return
         self.field = field
         if field.conductor is not None:
             self._cyclotomic(field)
         else:
             self._general(field)
+
+    def _square_roots(self, values):
+        """The field Q(sqrt p) over the primes p of the radicands (pairwise coprime, none a
+        square: the checker's "radicands" field); an element is {radicand: coefficient}."""
+        primes: set = set()
+        for v in values:
+            if isinstance(v, MQ):
+                for m in v.terms:
+                    primes.update(int(p) for p, _ in fmpz(m).factor())
+        self.field = None
+        self.radicands = sorted(primes)
+        self.spec = {"radicands": [str(p) for p in self.radicands]}
 
     # -- the real subfield of Q(zeta_M)
     def _cyclotomic(self, field):
@@ -176,28 +192,18 @@ class Encoder:
         return result
 
     def text(self, x):
+        if self.radicands is not None:
+            if isinstance(x, MQ):
+                if x.is_rational():
+                    return rational_text(x.to_fmpq())
+                return {str(m): rational_text(c) for m, c in sorted(x.terms.items())}
+            return rational_text(x.rational() if isinstance(x, FieldElement) else x)
         value = self.convert(x)
         if isinstance(value, fmpq):
             return rational_text(value)
         if value.degree() <= 0:
             return rational_text(value.coeffs()[0] if value.degree() == 0 else 0)
         return [rational_text(c) for c in value.coeffs()]
-
-
-def _field_of_square_roots(values):
-    """The cyclotomic field holding the square roots in ``values`` (multiquadratic elements):
-    its real subfield has a closed-form minimal polynomial, so the checker needs no new proof."""
-    conductor = 4
-    for v in values:
-        if isinstance(v, MQ):
-            for m in v.terms:
-                if m != 1:
-                    conductor = math.lcm(conductor, cyclotomic.sqrt_conductor(m))
-    degree = cyclotomic.euler_phi(conductor)
-    if degree > cyclotomic.MAX_DEGREE:
-        raise CertificateError(f"these square roots need Q(zeta_{conductor}) of degree {degree}, "
-                               f"above the limit {cyclotomic.MAX_DEGREE}")
-    return cyclotomic.cyclotomic_field(conductor)
 
 
 def _square_root_proof(field) -> dict | None:

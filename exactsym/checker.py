@@ -35,10 +35,10 @@ import sys
 
 try:
     from .checker_numbers import (Alg, Field, Invalid, frac, integer, irreducible_mod, need,
-                                  one_root, peval, psi, rat, sgn)
+                                  number_field, one_root, peval, psi, rat, sgn)
 except ImportError:     # run as a lone script (python exactsym/checker.py): a sibling file
     from checker_numbers import (Alg, Field, Invalid, frac, integer, irreducible_mod, need,
-                                 one_root, peval, psi, rat, sgn)
+                                 number_field, one_root, peval, psi, rat, sgn)
 try:
     from .checker_groups import digest, verify_certificate
 except ImportError:     # run as a lone script (python exactsym/checker.py): a sibling file
@@ -49,7 +49,7 @@ except ImportError:     # run as a lone script (python exactsym/checker.py): a s
     from checker_refutations import REFUTABLE, verify_refutation
 
 __all__ = ["Alg", "Field", "Invalid", "REFUTABLE", "digest", "frac", "integer",
-           "irreducible_mod", "need", "one_root", "peval", "psi", "rat", "sgn",
+           "irreducible_mod", "need", "number_field", "one_root", "peval", "psi", "rat", "sgn",
            "verify_certificate", "verify_refutation", "main"]
 
 

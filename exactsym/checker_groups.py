@@ -28,10 +28,10 @@ from math import lcm
 
 try:
     from .checker_ordering import check as check_ordering
-    from .checker_numbers import Field, Invalid, frac, need, rat, scaled, sgn
+    from .checker_numbers import Field, Invalid, frac, need, number_field, rat, scaled, sgn
 except ImportError:     # run as a lone script (python exactsym/checker.py): a sibling file
     from checker_ordering import check as check_ordering
-    from checker_numbers import Field, Invalid, frac, need, rat, scaled, sgn
+    from checker_numbers import Field, Invalid, frac, need, number_field, rat, scaled, sgn
 
 
 def permutation(spec: dict, n: int, name: str) -> list:
@@ -204,7 +204,7 @@ def verify_certificate(cert) -> tuple[bool, str]:
         # A fingerprint of the configuration: it catches edits; the proof does not rely on it.
         need(cert.get("configuration_sha256") == digest(config),
              "configuration_sha256 does not match the embedded configuration")
-        field = Field(config["field"]) if config.get("field") is not None else None
+        field = number_field(config["field"]) if config.get("field") is not None else None
         points, kind = config["points"], config["coordinates"]
         need(isinstance(points, list) and points and all(
             isinstance(p, list) and len(p) == 2 for p in points), "points must be pairs")

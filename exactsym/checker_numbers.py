@@ -319,4 +319,132 @@ class Alg:
 
 def sgn(v) -> int:
     """The sign of a number (den > 0, so an element has the sign of its numerator)."""
-    return v.f.sign(v.c) if isinstance(v, Alg) else (v > 0) - (v < 0)
+    if isinstance(v, Alg):
+        return v.f.sign(v.c)
+    return v.sign() if isinstance(v, Root) else (v > 0) - (v < 0)
+
+
+# ------------------------------------------------------------------ square roots, natively
+# Q(sqrt a_1, ..., sqrt a_k) for integers a_i > 1, pairwise coprime, none a square.  A product
+# of pairwise coprime integers is a square only if each is, so no product of a non-empty subset
+# is a square, and the square roots of the 2^k subset products P_S are linearly independent
+# over Q (Besicovitch 1940).  So an element sum c_S sqrt(P_S), kept as {P_S: c_S} without zero
+# coefficients, is canonical: == and hash decide equality of real numbers.  Products:
+# sqrt(P_S) sqrt(P_T) = P_(S and T) sqrt(P_(S xor T)), and with coprime radicands
+# P_(S and T) = gcd(P_S, P_T), P_(S xor T) = P_S P_T / gcd^2: no subset is ever enumerated.
+
+class SquareRoots:
+    """The field ``{"radicands": [a_1, ...]}``: checks them, then makes elements."""
+
+    def __init__(self, spec: dict):
+        a = [integer(x) if isinstance(x, str) else x for x in spec["radicands"]]
+        need(a and all(isinstance(x, int) and x > 1 for x in a),
+             "radicands: integers above 1")
+        need(all(isqrt(x) ** 2 != x for x in a), "radicands: one of them is a square")
+        need(all(gcd(x, y) == 1 for i, x in enumerate(a) for y in a[i + 1:]),
+             "radicands: not pairwise coprime")
+        self.radicands = a
+
+    def key(self, text) -> int:
+        """A product of a subset of the radicands (text), checked to be one."""
+        m = integer(text)
+        rest = m
+        for x in self.radicands:
+            if rest % x == 0:
+                rest //= x
+        need(m >= 1 and rest == 1, f"{text!r} is not a product of distinct radicands")
+        return m
+
+    def num(self, value) -> "Root":
+        """A rational, or {"P_S": coefficient, ...}."""
+        if isinstance(value, dict):
+            terms: dict = {}
+            for m, c in value.items():
+                q = frac(c)
+                m = self.key(m)
+                need(m not in terms, f"radicand product {m} given twice")
+                if q:
+                    terms[m] = q
+            return Root(terms)
+        need(not isinstance(value, list), "a square-root field's numbers are rationals or "
+             "{product: coefficient} maps")
+        q = frac(value)
+        return Root({1: q} if q else {})
+
+
+class Root:
+    """sum c_m sqrt(m), canonical (see SquareRoots): exact == and hash; mixes with numbers."""
+    __slots__ = ("t",)
+
+    def __init__(self, terms: dict):
+        self.t = terms
+
+    @staticmethod
+    def _of(o) -> dict:
+        if isinstance(o, Root):
+            return o.t
+        o = Fraction(o)
+        return {1: o} if o else {}
+
+    def __add__(self, o):
+        out = dict(self.t)
+        for m, c in self._of(o).items():
+            s = out.get(m, 0) + c
+            if s:
+                out[m] = s
+            else:
+                out.pop(m, None)
+        return Root(out)
+
+    def __mul__(self, o):
+        out: dict = {}
+        for m, c in self.t.items():
+            for k, d in self._of(o).items():
+                g = gcd(m, k)
+                key = (m // g) * (k // g)
+                s = out.get(key, 0) + c * d * g
+                if s:
+                    out[key] = s
+                else:
+                    out.pop(key, None)
+        return Root(out)
+
+    def __neg__(self):
+        return Root({m: -c for m, c in self.t.items()})
+
+    def __sub__(self, o):
+        return self + (-Root(self._of(o)))
+
+    def __rsub__(self, o):
+        return -self + o
+
+    __radd__, __rmul__ = __add__, __mul__
+
+    def __eq__(self, o):
+        return isinstance(o, (Root, int, Fraction)) and self.t == self._of(o)
+
+    def __hash__(self):
+        return hash(frozenset(self.t.items()))
+
+    def sign(self) -> int:
+        """By rational enclosures sqrt(m) in [isqrt(m 4^b), isqrt(m 4^b) + 1] / 2^b, b rising
+        until 0 is excluded (a non-zero element is a non-zero real: this ends)."""
+        if not self.t:
+            return 0
+        bits = 32
+        while bits < 1 << 20:
+            lo = hi = Fraction(0)
+            for m, c in self.t.items():
+                r = isqrt(m << 2 * bits)
+                a, b = (Fraction(r, 1 << bits), Fraction(r + (r * r != m << 2 * bits),
+                                                         1 << bits))
+                lo, hi = lo + min(c * a, c * b), hi + max(c * a, c * b)
+            if lo > 0 or hi < 0:
+                return 1 if lo > 0 else -1
+            bits *= 2
+        raise Invalid("a sign could not be decided")
+
+
+def number_field(spec: dict):
+    """The field of a certificate: square roots natively, or Q(theta)."""
+    return SquareRoots(spec) if "radicands" in spec else Field(spec)

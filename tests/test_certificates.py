@@ -58,6 +58,9 @@ def polar_lines(*rings) -> str:
 
 # ------------------------------------------------------------------ configurations
 HEXAGON = "1 0\n1/2 sqrt(3)/2\n-1/2 sqrt(3)/2\n-1 0\n-1/2 -sqrt(3)/2\n1/2 -sqrt(3)/2\n"
+# the same hexagon by trigonometry: the real cyclotomic field Q(2cos(2pi/12)) = Q(sqrt(3))
+HEXAGON_TRIG = "".join(f"{sx}cos(pi/3) {sy}sin(pi/3)\n" for sx, sy in
+                       (("", ""), ("-", ""), ("-", "-"), ("", "-"))) + "1 0\n-1 0\n"
 # a chiral C3 set in Cartesian coordinates (sqrt(3)): an equilateral triangle and a turned copy
 CHIRAL_C3 = ("2 0\n-1 sqrt(3)\n-1 -sqrt(3)\n3 1\n-3/2-sqrt(3)/2 3*sqrt(3)/2-1/2\n"
              "-3/2+sqrt(3)/2 -3*sqrt(3)/2-1/2\n")
@@ -76,10 +79,11 @@ CASES = {
     "two-points": ("0 0\n1 1\n", "D2", False, "cartesian", None),
     "one-point": ("5 7\n", "O2", True, "cartesian", None),
     "one-polar-point": ("polar 2 1/3\n", "O2", True, "polar", None),
-    "hexagon-sqrt3": (HEXAGON, "D6", False, "cartesian", "real-cyclotomic"),
-    "chiral-c3-sqrt3": (CHIRAL_C3, "C3", False, "cartesian", "real-cyclotomic"),
+    "hexagon-sqrt3": (HEXAGON, "D6", False, "cartesian", "radicands"),
+    "hexagon-trig": (HEXAGON_TRIG, "D6", False, "cartesian", "real-cyclotomic"),
+    "chiral-c3-sqrt3": (CHIRAL_C3, "C3", False, "cartesian", "radicands"),
     "sqrt2-sqrt3": ("0 0\nsqrt(2) 0\n0 sqrt(3)\n1 1\n", "C1", True, "cartesian",
-                    "real-cyclotomic"),
+                    "radicands"),
     "nested-radical": ("0 0\nsqrt(1+sqrt(2)) 0\n1 1\n", "C1", True, "cartesian", "prime"),
     "d7-polar": (polar_lines((1, [f"{j}/7" for j in range(7)])), "D7", False, "polar", None),
     "d7-polar-two-rings": (polar_lines((3, [f"{j}/7" for j in range(7)]),
@@ -93,7 +97,7 @@ CASES = {
                  None),
     "c3-polar-irrational-radius": (polar_lines(("1+sqrt(2)", ["0", "1/3", "2/3"]),
                                                ("sqrt(5)", ["1/12", "5/12", "3/4"])),
-                                   "C3", False, "polar", "real-cyclotomic"),
+                                   "C3", False, "polar", "radicands"),
     "polar-off-centre": ("polar 1 0\npolar 1 1/5\npolar 2 1/7\n", "C1", True, "cartesian",
                          "real-cyclotomic"),
 }
@@ -111,7 +115,8 @@ def test_round_trip(tmp_path, name):
                              "leader": truth.leader}
     assert cert["configuration"]["coordinates"] == coordinates
     field = cert["configuration"]["field"]
-    assert (field and field["irreducible"]["method"]) == method or (field is None and not method)
+    kind = field and ("radicands" if "radicands" in field else field["irreducible"]["method"])
+    assert kind == method or (field is None and not method)
     proved = "ordering and leader" if orderable else "leader"
     assert verify(cert) == (True, f"group {group}, orderable {str(orderable).lower()}, {proved}")
 
@@ -207,11 +212,13 @@ def test_tampered_points(tmp_path):
     bad = base(tmp_path, "d7-polar")
     bad["configuration"]["points"][2][0] = "-1"
     caught(bad, "a squared radius is negative")
-    bad = base(tmp_path, "hexagon-sqrt3")
-    bad["configuration"]["points"][1][1] = ["0", "1/3"]
-    caught(bad, "the centre is not the centroid", "is not point")
+    for name in ("hexagon-trig", "hexagon-sqrt3"):
+        bad = base(tmp_path, name)
+        bad["configuration"]["points"][1][1] = ["0", "1/3"] if name == "hexagon-trig" else \
+            {"3": "1/3"}
+        caught(bad, "the centre is not the centroid", "is not point")
     bad = base(tmp_path, "c3-polar-irrational-radius")
-    bad["configuration"]["points"][0][0] = ["3", "3"]            # 3 + 3 theta, not 3 + 2 sqrt(2)
+    bad["configuration"]["points"][0][0] = {"1": "3", "2": "3"}  # 3 + 3 sqrt(2), not 3 + 2 sqrt(2)
     caught(bad, "image of point", "the origin is not the centre")
 
 
@@ -243,8 +250,11 @@ def test_tampered_generators(tmp_path):
     bad = copy.deepcopy(cert)                       # the mirror left out: D4 -> C4
     bad["witness"]["mirror"] = None
     caught(bad, "the reflection taking point")
-    bad = base(tmp_path, "hexagon-sqrt3")           # an algebraic matrix entry
+    bad = base(tmp_path, "hexagon-trig")            # an algebraic matrix entry
     bad["witness"]["rotation"]["matrix"][1][0] = ["0", "1/3"]
+    caught(bad, "rotation: the matrix is not orthogonal")
+    bad = base(tmp_path, "hexagon-sqrt3")           # the same, in the square-root field
+    bad["witness"]["rotation"]["matrix"][1][0] = {"3": "1/3"}
     caught(bad, "rotation: the matrix is not orthogonal")
     polar = base(tmp_path, "d7-polar")
     for which, turn in (("rotation", "2/7"), ("rotation", "1/8"), ("mirror", "1/14"),
@@ -313,7 +323,7 @@ def test_tampered_reference(tmp_path):
 
 
 def test_tampered_field(tmp_path):
-    cert = base(tmp_path, "hexagon-sqrt3")
+    cert = base(tmp_path, "hexagon-trig")
     field = cert["configuration"]["field"]
     assert field["minpoly"] == ["-3", "0", "1"] and field["irreducible"]["conductor"] == 12
     for minpoly, reason in ((["-2", "0", "1"], "not that of 2cos(2pi/12)"),
