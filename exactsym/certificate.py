@@ -213,8 +213,16 @@ def _square_root_proof(field) -> dict | None:
     with a polynomial g in theta, g^2 = a.  g is found as an integer relation between
     1, theta, ..., theta^(d-1), sqrt(a) (LLL on Arb values) and kept only if g*g == a exactly."""
     d = field.degree
-    k = d.bit_length() - 1
-    if d < 2 or d != 1 << k:
+    cyclo, e = None, 1
+    if d & (d - 1):                             # not a power of 2: a real cyclotomic part
+        cyclo = _cyclotomic_root(field)
+        if cyclo is None:
+            return None
+        e = cyclo[1]
+        if e % 2 == 0 or d % e:
+            return None
+    k = (d // e).bit_length() - 1
+    if d < 2 or d != math.lcm(1 << k, e):
         return None
     disc = fmpz_poly(field.minpoly.numer()).discriminant()
     primes = [int(p) for p, _ in fmpz(abs(disc)).factor()][:12]
@@ -231,8 +239,44 @@ def _square_root_proof(field) -> dict | None:
             chosen.append(a)
             roots.append(g)
             if len(chosen) == k:
-                return {"method": "square-roots", "radicands": [str(a) for a in chosen],
-                        "roots": [[rational_text(c) for c in g.coeffs()] for g in roots]}
+                proof = {"method": "square-roots", "radicands": [str(a) for a in chosen],
+                         "roots": [[rational_text(c) for c in g.coeffs()] for g in roots]}
+                if cyclo is not None:
+                    proof["cyclotomic"] = {"conductor": cyclo[0], "root": [
+                        rational_text(c) for c in cyclo[2].coeffs()]}
+                return proof
+    return None
+
+
+def _cyclotomic_root(field):
+    """(M, deg Psi_M, h) with h(theta) = 2cos(2pi/M) in the field, for the largest M <= 200
+    whose Psi_M has odd degree dividing the field's (LLL proposes, an exact check decides)."""
+    d = field.degree
+    for m in range(200, 2, -1):
+        psi = checker.psi(m)
+        e = len(psi) - 1
+        if e < 3 or e % 2 == 0 or d % e:
+            continue
+        for bits in (64 * d + 256, 256 * d + 1024, 1024 * d):
+            with ctx.workprec(bits + 64):
+                theta = field.enclosure(bits + 64)
+                values = [arb(1)]
+                for _ in range(d - 1):
+                    values.append(values[-1] * theta)
+                values.append(2 * arb.cos_pi_fmpq(fmpq(2, m)))
+                scale = arb(2) ** bits
+                column = [int((v * scale).mid().floor().unique_fmpz()) for v in values]
+            rows = [[int(i == j) for j in range(d + 1)] + [column[i]] for i in range(d + 1)]
+            lll = fmpz_mat(rows).lll()
+            relation = [lll[0, j] for j in range(d + 2)]
+            if relation[d] == 0:
+                continue
+            h = fmpq_poly([fmpq(-int(relation[i]), int(relation[d])) for i in range(d)])
+            value = fmpq_poly([0])
+            for c in reversed(psi):
+                value = (value * h + c) % field.minpoly
+            if value == 0:
+                return m, e, h
     return None
 
 

@@ -202,24 +202,41 @@ class Field:
             need(isinstance(m, int) and 3 <= m <= 10 ** 6 and psi(m) == self.p,
                  f"the minimal polynomial is not that of 2cos(2pi/{m!r})")
         elif proof["method"] == "square-roots":
-            self.square_roots(proof["radicands"], proof["roots"])
+            self.square_roots(proof["radicands"], proof["roots"], proof.get("cyclotomic"))
         else:
             need(proof["method"] == "prime", f"unknown irreducibility proof {proof['method']!r}")
             need(irreducible_mod(self.p, proof["prime"]),
                  f"the minimal polynomial is not irreducible modulo {proof['prime']!r}")
 
-    def square_roots(self, radicands: list, roots: list) -> None:
+    def square_roots(self, radicands: list, roots: list, cyclo: dict | None = None) -> None:
         """p is irreducible if it has degree 2^k and Q(theta') holds square roots of k
         positive integers a_1..a_k, no product of a non-empty subset of which is a square,
         for every root theta' of p.  Such a_i generate a field of degree 2^k (the square
         roots of independent elements of Q*/Q*^2 have independent classes: Besicovitch 1940),
         so every root of p has degree >= 2^k = deg p, and p is its minimal polynomial.  The
         roots are polynomials g_i with g_i^2 = a_i modulo p: this holds at every root of p,
-        whatever p is, because it is a polynomial identity modulo p."""
+        whatever p is, because it is a polynomial identity modulo p.
+
+        With ``cyclo`` = {"conductor": M, "root": h}, Psi_M(h) = 0 modulo p (again an identity
+        at every root): Q(theta') also holds a root of Psi_M, irreducible of degree e (Gauss),
+        so its degree is divisible by 2^k and by e, hence >= lcm(2^k, e), which must be deg p:
+        a tower, the real cyclotomic field and then square roots, without any intersection
+        argument (e.g. Q(sqrt 2, sqrt 3, cos(2pi/7)): lcm(4, 3) = 12)."""
         a = [integer(x) for x in radicands]
         k = len(a)
-        need(1 <= k <= 16 and self.d == 1 << k and len(roots) == k and all(x > 0 for x in a),
-             "square-roots proof: need k positive radicands and degree 2^k")
+        e = 1
+        if cyclo is not None:
+            m = cyclo["conductor"]
+            need(isinstance(m, int) and 3 <= m <= 10 ** 4, "square-roots proof: bad conductor")
+            psi_m, h = psi(m), self.num(cyclo["root"])
+            e = len(psi_m) - 1
+            value = 0
+            for c in reversed(psi_m):
+                value = value * h + c
+            need(value == 0, f"square-roots proof: the root given is not a root of Psi_{m}")
+        need(0 <= k <= 16 and self.d == lcm(1 << k, e) > 1 and len(roots) == k
+             and all(x > 0 for x in a), "square-roots proof: need k positive radicands and "
+             "degree lcm(2^k, e)")
         for mask in range(1, 1 << k):
             product = prod(x for i, x in enumerate(a) if mask >> i & 1)
             need(isqrt(product) ** 2 != product,
