@@ -9,7 +9,10 @@ numbers; the checker recomputes everything it needs from the certificate alone.
 Numbers.  Rationals are written ``"p/q"``.  Irrational numbers are written in a field Q(theta)
 with a REAL generator, so that the checker can decide signs with rational intervals:
 
-* a cyclotomic field Q(zeta_M) (square roots and trigonometry): its real elements lie in the real
+* square roots of rationals (the kernel's multiquadratic numbers): natively, ``{"radicands":
+  [p, ...]}`` (the primes of the radicands) with elements ``{m: c}`` = sum c sqrt(m): no field
+  embedding, so any number of distinct square roots certifies;
+* a cyclotomic field Q(zeta_M) (trigonometry): its real elements lie in the real
   subfield Q(theta), theta = 2cos(2pi/M), whose minimal polynomial Psi_M is known in closed form
   (``"irreducible": {"method": "real-cyclotomic", "conductor": M}``).  A real
   x = sum c_k zeta^k equals (x + conj x)/2 = c_0 + sum_k c_k V_k(theta)/2 with
@@ -32,7 +35,7 @@ from flint import arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz, fmpz_mat, fmpz_poly
 
 from . import checker
 from .configuration import Configuration
-from .exact import FieldElement, cyclotomic
+from .exact import FieldElement
 from .exact.multiquadratic import MQ
 
 FORMAT = "exactsym-certificate"
@@ -86,17 +89,30 @@ class Encoder:
 
     def __init__(self, system, values):
         field = getattr(system, "field", None)
-        self.spec = None
+        self.spec = self.radicands = None
         if all(not isinstance(v, FieldElement) or v.is_rational() for v in values):
             self.field = None                   # everything is rational: no field at all
             return
-        if field is None:                       # square roots of rationals (MQ elements)
-            field = _field_of_square_roots(values)
+        if field is None:                       # square roots of rationals (MQ elements):
+            self._square_roots(values)          # written natively, no field embedding
+            return
         self.field = field
         if field.conductor is not None:
             self._cyclotomic(field)
         else:
             self._general(field)
+
+    def _square_roots(self, values):
+        """The field Q(sqrt p) over the primes p of the radicands (pairwise coprime, none a
+        square: the checker's "radicands" field); an element is {radicand: coefficient}."""
+        primes: set = set()
+        for v in values:
+            if isinstance(v, MQ):
+                for m in v.terms:
+                    primes.update(int(p) for p, _ in fmpz(m).factor())
+        self.field = None
+        self.radicands = sorted(primes)
+        self.spec = {"radicands": [str(p) for p in self.radicands]}
 
     # -- the real subfield of Q(zeta_M)
     def _cyclotomic(self, field):
@@ -176,28 +192,18 @@ class Encoder:
         return result
 
     def text(self, x):
+        if self.radicands is not None:
+            if isinstance(x, MQ):
+                if x.is_rational():
+                    return rational_text(x.to_fmpq())
+                return {str(m): rational_text(c) for m, c in sorted(x.terms.items())}
+            return rational_text(x.rational() if isinstance(x, FieldElement) else x)
         value = self.convert(x)
         if isinstance(value, fmpq):
             return rational_text(value)
         if value.degree() <= 0:
             return rational_text(value.coeffs()[0] if value.degree() == 0 else 0)
         return [rational_text(c) for c in value.coeffs()]
-
-
-def _field_of_square_roots(values):
-    """The cyclotomic field holding the square roots in ``values`` (multiquadratic elements):
-    its real subfield has a closed-form minimal polynomial, so the checker needs no new proof."""
-    conductor = 4
-    for v in values:
-        if isinstance(v, MQ):
-            for m in v.terms:
-                if m != 1:
-                    conductor = math.lcm(conductor, cyclotomic.sqrt_conductor(m))
-    degree = cyclotomic.euler_phi(conductor)
-    if degree > cyclotomic.MAX_DEGREE:
-        raise CertificateError(f"these square roots need Q(zeta_{conductor}) of degree {degree}, "
-                               f"above the limit {cyclotomic.MAX_DEGREE}")
-    return cyclotomic.cyclotomic_field(conductor)
 
 
 def _square_root_proof(field) -> dict | None:
@@ -207,8 +213,16 @@ def _square_root_proof(field) -> dict | None:
     with a polynomial g in theta, g^2 = a.  g is found as an integer relation between
     1, theta, ..., theta^(d-1), sqrt(a) (LLL on Arb values) and kept only if g*g == a exactly."""
     d = field.degree
-    k = d.bit_length() - 1
-    if d < 2 or d != 1 << k:
+    cyclo, e = None, 1
+    if d & (d - 1):                             # not a power of 2: a real cyclotomic part
+        cyclo = _cyclotomic_root(field)
+        if cyclo is None:
+            return None
+        e = cyclo[1]
+        if e % 2 == 0 or d % e:
+            return None
+    k = (d // e).bit_length() - 1
+    if d < 2 or d != math.lcm(1 << k, e):
         return None
     disc = fmpz_poly(field.minpoly.numer()).discriminant()
     primes = [int(p) for p, _ in fmpz(abs(disc)).factor()][:12]
@@ -225,8 +239,44 @@ def _square_root_proof(field) -> dict | None:
             chosen.append(a)
             roots.append(g)
             if len(chosen) == k:
-                return {"method": "square-roots", "radicands": [str(a) for a in chosen],
-                        "roots": [[rational_text(c) for c in g.coeffs()] for g in roots]}
+                proof = {"method": "square-roots", "radicands": [str(a) for a in chosen],
+                         "roots": [[rational_text(c) for c in g.coeffs()] for g in roots]}
+                if cyclo is not None:
+                    proof["cyclotomic"] = {"conductor": cyclo[0], "root": [
+                        rational_text(c) for c in cyclo[2].coeffs()]}
+                return proof
+    return None
+
+
+def _cyclotomic_root(field):
+    """(M, deg Psi_M, h) with h(theta) = 2cos(2pi/M) in the field, for the largest M <= 200
+    whose Psi_M has odd degree dividing the field's (LLL proposes, an exact check decides)."""
+    d = field.degree
+    for m in range(200, 2, -1):
+        psi = checker.psi(m)
+        e = len(psi) - 1
+        if e < 3 or e % 2 == 0 or d % e:
+            continue
+        for bits in (64 * d + 256, 256 * d + 1024, 1024 * d):
+            with ctx.workprec(bits + 64):
+                theta = field.enclosure(bits + 64)
+                values = [arb(1)]
+                for _ in range(d - 1):
+                    values.append(values[-1] * theta)
+                values.append(2 * arb.cos_pi_fmpq(fmpq(2, m)))
+                scale = arb(2) ** bits
+                column = [int((v * scale).mid().floor().unique_fmpz()) for v in values]
+            rows = [[int(i == j) for j in range(d + 1)] + [column[i]] for i in range(d + 1)]
+            lll = fmpz_mat(rows).lll()
+            relation = [lll[0, j] for j in range(d + 2)]
+            if relation[d] == 0:
+                continue
+            h = fmpq_poly([fmpq(-int(relation[i]), int(relation[d])) for i in range(d)])
+            value = fmpq_poly([0])
+            for c in reversed(psi):
+                value = (value * h + c) % field.minpoly
+            if value == 0:
+                return m, e, h
     return None
 
 
@@ -381,20 +431,55 @@ def _polar_witness(config, group):
 
 # ------------------------------------------------------------------ the certificate
 
-def make_certificate(config: Configuration, group=None) -> dict:
-    """The certificate of ``config``'s symmetry group (``group`` from
-    :func:`exactsym.symmetry.symmetry_group`, computed when not given)."""
+def _canonical(config, group, polar: bool) -> dict | None:
+    """witness.canonical: the frame ("ccw" or "cw") of a least reading -- read off the
+    ordering: the frame in which its rays follow the counter-clockwise rays of the group's
+    layout -- and, for D1 with no ordering and no point at the centre, the points sorted
+    counter-clockwise (the leader is on the mirror)."""
+    layout = getattr(group, "_layout", None)     # None: one point, or a hand-made group
+    if layout is None:
+        return None
+    rays = [list(r) for r in layout.rays]
+    if not group.orderable:
+        if group.name != "D1" or layout.centre_index is not None:
+            return None
+        return {"orientation": "ccw", "order": [i for r in rays for i in r]}
+    m = len(rays)
+    order = [i for i in group.ordering if i != layout.centre_index]
+    first = next(j for j, r in enumerate(rays) if r[0] == order[0])
+    if m >= 3:
+        nxt = order[len(rays[first])]
+        return {"orientation": "ccw" if rays[(first + 1) % m][0] == nxt else "cw"}
+    if m == 1:
+        return {"orientation": "ccw"}
+    # two rays: the ccw reading from R_first is least iff the angle to the other ray is the
+    # smaller one (below half a turn)
+    a, b = rays[first][0], rays[1 - first][0]
+    if polar:
+        below = (config.polar[b][1] - config.polar[a][1]) % 1 <= fmpq(1, 2)
+    else:
+        (cx, cy), (ax, ay), (bx, by) = group.centre, config.points[a], config.points[b]
+        below = (ax - cx) * (by - cy) - (ay - cy) * (bx - cx) >= 0
+    return {"orientation": "ccw" if below else "cw"}
+
+
+def make_certificate(config: Configuration, group=None, rings=None) -> dict:
+    """The certificate of ``config``'s symmetry group, canonical ordering and leader
+    (``group`` from :func:`exactsym.symmetry.symmetry_group` and ``rings`` from
+    :func:`exactsym.levels.levels_of`, computed when not given)."""
     from .levels import levels_of
+    rings = levels_of(config) if rings is None and (group is None or config.polar is None) \
+        else rings
     if group is None:
         from .symmetry import symmetry_group
-        group = symmetry_group(config, levels_of(config))
+        group = symmetry_group(config, rings)
     # one point: no SEC to check, so a polar file stays polar (no trigonometry needed)
     polar = config.polar is not None and (bool(group.polar) or config.n == 1)
     if polar:
         values = [r2 for r2, _ in config.polar]
         system = config.polar_system
     else:
-        values = [v for p in config.points for v in p]
+        values = [v for p in config.points for v in p] + list(group.centre)
         for iso in (group.rotation_generator, group.mirror):
             if iso is not None:
                 values += [e for row in iso.matrix for e in row]
@@ -412,9 +497,16 @@ def make_certificate(config: Configuration, group=None) -> dict:
         witness = _polar_witness(config, group)
     else:
         witness = _cartesian_witness(config, group, enc)
+        witness["sec"] = {"centre": [enc.text(v) for v in group.centre],
+                          "support": list(rings.sec.support)}
+    canonical = _canonical(config, group, polar) if config.n > 1 else None
+    if canonical is not None:
+        witness["canonical"] = canonical
     return {"format": FORMAT, "version": VERSION,
             "source": {"file": config.source, "name": config.name},
-            "claim": {"group": group.name, "orderable": bool(group.orderable)},
+            "claim": {"group": group.name, "orderable": bool(group.orderable),
+                      "ordering": list(group.ordering) if group.ordering else None,
+                      "leader": group.leader},
             "configuration_sha256": checker.digest(configuration),
             "configuration": configuration,
             "witness": witness}

@@ -6,7 +6,7 @@ statements about the polygons of G_P, group certificates of the parts the premis
 (a level; a pair of levels; the merged polygon G_ij).  The checker
 (:func:`exactsym.checker.verify_refutation`, standard library only) verifies every group,
 recomputes the parts from P and derives the premise and the failed conclusion
-(docs/certificates.md, "Refutations").  Labels: :data:`exactsym.checker.REFUTABLE`.
+(docs/certificates.md, "Refutations").  Labels: :data:`exactsym.checker_refutations.REFUTABLE`.
 ``exactsym certify --refutes LABEL FILE -o OUT.json``.
 
 Which part is chosen: the first level (in order of increasing radius) with no mirror and
@@ -22,7 +22,7 @@ import json
 from fractions import Fraction
 from itertools import combinations
 
-from . import checker
+from . import checker_refutations as checker
 from .certificate import CertificateError, make_certificate
 from .configuration import Configuration
 from .labels import is_label, unknown_label_message

@@ -26,6 +26,7 @@ from exactsym import checker
 from exactsym.certificate import CertificateError, make_certificate
 from exactsym.cli import main as cli_main
 from exactsym.configuration import Configuration, load
+from exactsym.symmetry import symmetry_group
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "cases" / "examples"
@@ -57,6 +58,9 @@ def polar_lines(*rings) -> str:
 
 # ------------------------------------------------------------------ configurations
 HEXAGON = "1 0\n1/2 sqrt(3)/2\n-1/2 sqrt(3)/2\n-1 0\n-1/2 -sqrt(3)/2\n1/2 -sqrt(3)/2\n"
+# the same hexagon by trigonometry: the real cyclotomic field Q(2cos(2pi/12)) = Q(sqrt(3))
+HEXAGON_TRIG = "".join(f"{sx}cos(pi/3) {sy}sin(pi/3)\n" for sx, sy in
+                       (("", ""), ("-", ""), ("-", "-"), ("", "-"))) + "1 0\n-1 0\n"
 # a chiral C3 set in Cartesian coordinates (sqrt(3)): an equilateral triangle and a turned copy
 CHIRAL_C3 = ("2 0\n-1 sqrt(3)\n-1 -sqrt(3)\n3 1\n-3/2-sqrt(3)/2 3*sqrt(3)/2-1/2\n"
              "-3/2+sqrt(3)/2 -3*sqrt(3)/2-1/2\n")
@@ -75,10 +79,11 @@ CASES = {
     "two-points": ("0 0\n1 1\n", "D2", False, "cartesian", None),
     "one-point": ("5 7\n", "O2", True, "cartesian", None),
     "one-polar-point": ("polar 2 1/3\n", "O2", True, "polar", None),
-    "hexagon-sqrt3": (HEXAGON, "D6", False, "cartesian", "real-cyclotomic"),
-    "chiral-c3-sqrt3": (CHIRAL_C3, "C3", False, "cartesian", "real-cyclotomic"),
+    "hexagon-sqrt3": (HEXAGON, "D6", False, "cartesian", "radicands"),
+    "hexagon-trig": (HEXAGON_TRIG, "D6", False, "cartesian", "real-cyclotomic"),
+    "chiral-c3-sqrt3": (CHIRAL_C3, "C3", False, "cartesian", "radicands"),
     "sqrt2-sqrt3": ("0 0\nsqrt(2) 0\n0 sqrt(3)\n1 1\n", "C1", True, "cartesian",
-                    "real-cyclotomic"),
+                    "radicands"),
     "nested-radical": ("0 0\nsqrt(1+sqrt(2)) 0\n1 1\n", "C1", True, "cartesian", "prime"),
     "d7-polar": (polar_lines((1, [f"{j}/7" for j in range(7)])), "D7", False, "polar", None),
     "d7-polar-two-rings": (polar_lines((3, [f"{j}/7" for j in range(7)]),
@@ -92,7 +97,7 @@ CASES = {
                  None),
     "c3-polar-irrational-radius": (polar_lines(("1+sqrt(2)", ["0", "1/3", "2/3"]),
                                                ("sqrt(5)", ["1/12", "5/12", "3/4"])),
-                                   "C3", False, "polar", "real-cyclotomic"),
+                                   "C3", False, "polar", "radicands"),
     "polar-off-centre": ("polar 1 0\npolar 1 1/5\npolar 2 1/7\n", "C1", True, "cartesian",
                          "real-cyclotomic"),
 }
@@ -101,13 +106,19 @@ CASES = {
 @pytest.mark.parametrize("name", sorted(CASES))
 def test_round_trip(tmp_path, name):
     text, group, orderable, coordinates, method = CASES[name]
-    cert = certify(write(tmp_path, "c.txt", text))
+    path = write(tmp_path, "c.txt", text)
+    cert = certify(path)
+    truth = symmetry_group(load(path))
     assert cert["format"] == "exactsym-certificate" and cert["version"] == 1
-    assert cert["claim"] == {"group": group, "orderable": orderable}
+    assert cert["claim"] == {"group": group, "orderable": orderable,
+                             "ordering": list(truth.ordering) if orderable else None,
+                             "leader": truth.leader}
     assert cert["configuration"]["coordinates"] == coordinates
     field = cert["configuration"]["field"]
-    assert (field and field["irreducible"]["method"]) == method or (field is None and not method)
-    assert verify(cert) == (True, f"group {group}, orderable {str(orderable).lower()}")
+    kind = field and ("radicands" if "radicands" in field else field["irreducible"]["method"])
+    assert kind == method or (field is None and not method)
+    proved = "ordering and leader" if orderable else "leader"
+    assert verify(cert) == (True, f"group {group}, orderable {str(orderable).lower()}, {proved}")
 
 
 def test_example_files_round_trip():
@@ -116,7 +127,8 @@ def test_example_files_round_trip():
         ok, message = verify(cert)
         assert ok, (path, message)
     pinwheel = certify(EXAMPLES / "chiral-nine-gon.toml")
-    assert pinwheel["claim"] == {"group": "C3", "orderable": False}
+    assert pinwheel["claim"] == {"group": "C3", "orderable": False, "ordering": None,
+                                 "leader": None}
     assert pinwheel["configuration"]["coordinates"] == "polar"
 
 
@@ -200,11 +212,13 @@ def test_tampered_points(tmp_path):
     bad = base(tmp_path, "d7-polar")
     bad["configuration"]["points"][2][0] = "-1"
     caught(bad, "a squared radius is negative")
-    bad = base(tmp_path, "hexagon-sqrt3")
-    bad["configuration"]["points"][1][1] = ["0", "1/3"]
-    caught(bad, "the centre is not the centroid", "is not point")
+    for name in ("hexagon-trig", "hexagon-sqrt3"):
+        bad = base(tmp_path, name)
+        bad["configuration"]["points"][1][1] = ["0", "1/3"] if name == "hexagon-trig" else \
+            {"3": "1/3"}
+        caught(bad, "the centre is not the centroid", "is not point")
     bad = base(tmp_path, "c3-polar-irrational-radius")
-    bad["configuration"]["points"][0][0] = ["3", "3"]            # 3 + 3 theta, not 3 + 2 sqrt(2)
+    bad["configuration"]["points"][0][0] = {"1": "3", "2": "3"}  # 3 + 3 sqrt(2), not 3 + 2 sqrt(2)
     caught(bad, "image of point", "the origin is not the centre")
 
 
@@ -236,8 +250,11 @@ def test_tampered_generators(tmp_path):
     bad = copy.deepcopy(cert)                       # the mirror left out: D4 -> C4
     bad["witness"]["mirror"] = None
     caught(bad, "the reflection taking point")
-    bad = base(tmp_path, "hexagon-sqrt3")           # an algebraic matrix entry
+    bad = base(tmp_path, "hexagon-trig")            # an algebraic matrix entry
     bad["witness"]["rotation"]["matrix"][1][0] = ["0", "1/3"]
+    caught(bad, "rotation: the matrix is not orthogonal")
+    bad = base(tmp_path, "hexagon-sqrt3")           # the same, in the square-root field
+    bad["witness"]["rotation"]["matrix"][1][0] = {"3": "1/3"}
     caught(bad, "rotation: the matrix is not orthogonal")
     polar = base(tmp_path, "d7-polar")
     for which, turn in (("rotation", "2/7"), ("rotation", "1/8"), ("mirror", "1/14"),
@@ -306,7 +323,7 @@ def test_tampered_reference(tmp_path):
 
 
 def test_tampered_field(tmp_path):
-    cert = base(tmp_path, "hexagon-sqrt3")
+    cert = base(tmp_path, "hexagon-trig")
     field = cert["configuration"]["field"]
     assert field["minpoly"] == ["-3", "0", "1"] and field["irreducible"]["conductor"] == 12
     for minpoly, reason in ((["-2", "0", "1"], "not that of 2cos(2pi/12)"),
@@ -384,12 +401,12 @@ def test_certificate_from_hand_made_group():
     iso = lambda kind, matrix, perm: SimpleNamespace(kind=kind, centre=(one, one), turn=None,
                                                      matrix=matrix, permutation=perm)
     group = SimpleNamespace(
-        name="D4", orderable=False, polar=False, centre=(one, one),
+        name="D4", orderable=False, polar=False, centre=(one, one), ordering=None, leader=None,
         rotation_generator=iso("rotation", ((zero, -one), (one, zero)), (1, 2, 3, 0)),
         mirror=iso("reflection", ((one, zero), (zero, -one)), (3, 2, 1, 0)))
     cert = json.loads(json.dumps(make_certificate(config, group)))
     assert cert["witness"]["refutations"] == {"rotation": [], "reflection": []}
-    assert verify(cert) == (True, "group D4, orderable false")
+    assert verify(cert) == (True, "group D4, orderable false, leader")
     smaller = SimpleNamespace(**{**vars(group), "name": "C4", "mirror": None})
     with pytest.raises(CertificateError, match="symmetry missing from the group"):
         make_certificate(config, smaller)           # certify never writes a false claim
@@ -436,22 +453,36 @@ def test_interval_must_isolate_one_root():
 
 
 # ------------------------------------------------------------------ the checker's parts
+CHECKER_MODULES = ("checker", "checker_numbers", "checker_groups", "checker_ordering",
+                   "checker_refutations")
+
+
 def test_checker_imports_only_the_standard_library():
+    """Every checker module imports the standard library and, relatively (or as a sibling file
+    when run as a lone script), the other checker modules: nothing else of exactsym."""
     allowed = {"__future__", "fractions", "json", "math", "sys", "argparse", "dataclasses",
                "typing", "itertools", "functools", "collections", "hashlib"}
-    tree = ast.parse((ROOT / "exactsym" / "checker.py").read_text())
-    imported = set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
-            imported.update(alias.name.split(".")[0] for alias in node.names)
-        elif isinstance(node, ast.ImportFrom):
-            assert node.level == 0, "relative import in the checker"
-            imported.add(node.module.split(".")[0])
-    assert imported <= allowed, imported - allowed
+    assert sorted(p.stem for p in (ROOT / "exactsym").glob("checker*.py")) == \
+        sorted(CHECKER_MODULES)
+    for module in CHECKER_MODULES:
+        tree = ast.parse((ROOT / "exactsym" / f"{module}.py").read_text())
+        imported = set()
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                imported.update(alias.name.split(".")[0] for alias in node.names)
+            elif isinstance(node, ast.ImportFrom):
+                if node.level:
+                    assert node.level == 1 and node.module in CHECKER_MODULES, (module, node.module)
+                elif node.module not in CHECKER_MODULES:
+                    imported.add(node.module.split(".")[0])
+        assert imported <= allowed, (module, imported - allowed)
     code = ("import sys, exactsym.checker; print(sorted(m for m in sys.modules if "
             "m.split('.')[0] in ('exactsym', 'flint', 'sympy', 'networkx')))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
-    assert out.stdout.split() == ["['exactsym',", "'exactsym.checker']"], out
+    assert out.stdout.split() == [
+        "['exactsym',", "'exactsym.checker',", "'exactsym.checker_groups',",
+        "'exactsym.checker_numbers',", "'exactsym.checker_ordering',",
+        "'exactsym.checker_refutations']"], out
 
 
 def test_psi_is_the_minimal_polynomial_of_2cos():
@@ -550,7 +581,8 @@ def test_cli_certify_and_verify(tmp_path, capsys):
     capsys.readouterr()
     assert cli_main(["certify", str(config), "-o", "-"]) == 0
     out, _ = capsys.readouterr()
-    assert json.loads(out)["claim"] == {"group": "D6", "orderable": False}
+    assert json.loads(out)["claim"] == {"group": "D6", "orderable": False, "ordering": None,
+                                     "leader": None}
 
 
 def test_checker_as_a_program(tmp_path):
@@ -563,6 +595,12 @@ def test_checker_as_a_program(tmp_path):
     assert done.returncode == 0 and "valid: group D4, orderable false" in done.stdout
     done = run(str(ROOT / "exactsym" / "checker.py"), str(cert_path))   # as a lone script
     assert done.returncode == 0, done.stderr
+    alone = tmp_path / "alone"                  # the checker's files copied anywhere
+    alone.mkdir()
+    for module in CHECKER_MODULES:
+        (alone / f"{module}.py").write_text((ROOT / "exactsym" / f"{module}.py").read_text())
+    done = run(str(alone / "checker.py"), str(cert_path))
+    assert done.returncode == 0 and "valid: group D4" in done.stdout, done.stderr
     cert = json.loads(cert_path.read_text())
     cert["witness"]["mirror"]["permutation"] = [0, 1, 2, 3]
     cert_path.write_text(json.dumps(cert))

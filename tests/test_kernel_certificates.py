@@ -7,6 +7,8 @@ irreducible by the checker's "square-roots" method instead (``docs/certificates.
 from __future__ import annotations
 
 import copy
+import os
+from fractions import Fraction
 import json
 
 import pytest
@@ -59,8 +61,97 @@ def test_square_root_proofs_are_checked(tmp_path):
     bad = copy.deepcopy(cert)
     bad["configuration"]["field"]["irreducible"]["radicands"] = ["2"]
     bad["configuration"]["field"]["irreducible"]["roots"] = [proof["roots"][0]]
-    _rejected(bad, "degree 2^k")
+    _rejected(bad, "degree lcm(2^k, e)")
     bad = copy.deepcopy(cert)       # another polynomial: interval and roots no longer fit
     bad["configuration"]["field"]["minpoly"] = ["1", "0", "-10", "0", "1"]
     ok, _ = checker.verify_certificate(bad)
     assert not ok
+
+
+# ------------------------------------------------------------------ square roots, natively
+NINE_ROOTS = ['["sqrt(2)", "sqrt(3)"]', '["sqrt(5)+sqrt(7)", "sqrt(11)"]',
+              '["sqrt(13)-sqrt(17)", "sqrt(19)+sqrt(23)"]']
+# the nine-root input takes about a minute (truth and checker): run with EXACTSYM_SLOW=1
+slow = pytest.mark.skipif(not os.environ.get("EXACTSYM_SLOW"), reason="slow: EXACTSYM_SLOW=1")
+FIVE_ROOTS = ['["sqrt(2)", "sqrt(3)"]', '["sqrt(5)+sqrt(7)", "sqrt(11)"]', '["0", "1"]']
+
+
+def test_five_square_roots_certify_natively(tmp_path):
+    """Formerly refused (Q(zeta_9240) and beyond): the field is written as its radicands."""
+    cert = _cert(tmp_path, FIVE_ROOTS)
+    assert cert["configuration"]["field"] == {"radicands": ["2", "3", "5", "7", "11"]}
+    assert cert["claim"]["orderable"] and cert["claim"]["group"] == "C1"
+
+
+@slow
+def test_nine_square_roots_certify_natively(tmp_path):
+    """Formerly refused (Q(zeta_892371480), degree 145,981,440): the field is written as its
+    radicands, no embedding."""
+    cert = _cert(tmp_path, NINE_ROOTS)
+    assert cert["claim"]["group"] == "C1" and cert["claim"]["orderable"]
+    assert cert["configuration"]["field"] == {
+        "radicands": ["2", "3", "5", "7", "11", "13", "17", "19", "23"]}
+    assert cert["configuration"]["points"][2] == [{"13": "1", "17": "-1"}, {"19": "1", "23": "1"}]
+
+
+@pytest.mark.parametrize("points, group", [
+    ([f'["{c}*sqrt(2)", "{s}*sqrt(3)"]' for c, s in ((1, 1), (-1, 1), (-1, -1), (1, -1))],
+     "D2"),
+    (['["sqrt(6)", "0"]', '["0", "sqrt(6)"]', '["-sqrt(6)", "0"]', '["0", "-sqrt(6)"]',
+      '["sqrt(2)", "sqrt(3)"]'], "C1"),
+    (['["1/2", "sqrt(3)/2"]', '["-1", "0"]', '["1/2", "-sqrt(3)/2"]'], "D3"),
+])
+def test_square_root_configurations_certify(tmp_path, points, group):
+    cert = _cert(tmp_path, points)
+    assert cert["claim"]["group"] == group and "radicands" in cert["configuration"]["field"]
+
+
+def test_native_square_roots_are_checked(tmp_path):
+    cert = _cert(tmp_path, FIVE_ROOTS)
+    for radicands, reason in ((["2", "6", "5", "7", "11"], "not pairwise coprime"),
+                              (["4", "3", "5", "7", "11"], "is a square"),
+                              (["1", "3"], "integers above 1"),
+                              (["2", "3", "5", "7"], "not a product of distinct radicands")):
+        bad = copy.deepcopy(cert)
+        bad["configuration"]["field"]["radicands"] = radicands
+        _rejected(bad, reason)
+    bad = copy.deepcopy(cert)                       # sqrt(4) is not a basis element
+    bad["configuration"]["points"][0][0] = {"4": "1"}
+    _rejected(bad, "not a product of distinct radicands")
+    bad = copy.deepcopy(cert)                       # a list is a Q(theta) element, not ours
+    bad["configuration"]["points"][0][0] = ["0", "1"]
+    _rejected(bad, "{product: coefficient} maps")
+    bad = copy.deepcopy(cert)                       # another point: the ordering changes
+    bad["configuration"]["points"][1][0] = {"5": "1", "7": "-1"}
+    ok, _ = checker.verify_certificate(bad)
+    assert not ok
+
+
+def test_square_root_arithmetic_and_signs():
+    field = checker.number_field({"radicands": ["2", "3", "5"]})
+    r2, r3, r6 = (field.num({k: "1"}) for k in ("2", "3", "6"))
+    assert r2 * r3 == r6 and r6 * r6 == 6 and r2 * r6 == 2 * r3
+    assert checker.sgn(r2 + r3 - field.num({"5": "1"}) - Fraction(1, 2)) == 1  # 3.146 - 2.736
+    near = r2 * r3 - Fraction(2449489742783178, 10 ** 15)       # sqrt(6) = 2.449489742783178...
+    assert checker.sgn(near) == 1 and checker.sgn(near - Fraction(1, 10 ** 15)) == -1
+    assert checker.sgn((r2 + r3) * (r3 - r2) - 1) == 0
+
+
+def test_square_roots_over_a_real_cyclotomic_field(tmp_path):
+    """Formerly "cannot certify": Q(sqrt(2+sqrt(3)), cos(2pi/7)) = Q(sqrt 2, sqrt 3, cos(2pi/7)),
+    degree 12, reducible modulo every prime (no element of order 12 in C2 x C6).  The proof
+    names two square roots and a root of Psi_M (odd degree 3): degree lcm(4, 3) = 12."""
+    cert = _cert(tmp_path, ['["sqrt(2+sqrt(3))", "cos(2*pi/7)"]', '["0", "0"]', '["1", "0"]'])
+    proof = cert["configuration"]["field"]["irreducible"]
+    assert proof["method"] == "square-roots" and len(proof["radicands"]) == 2
+    assert len(checker.psi(proof["cyclotomic"]["conductor"])) - 1 == 3
+    bad = copy.deepcopy(cert)
+    root = bad["configuration"]["field"]["irreducible"]["cyclotomic"]["root"]
+    root[0] = str(checker.frac(root[0]) + 1).replace(" ", "")
+    _rejected(bad, "is not a root of Psi_")
+    bad = copy.deepcopy(cert)
+    bad["configuration"]["field"]["irreducible"]["cyclotomic"]["conductor"] = 11   # degree 5
+    _rejected(bad, "is not a root of Psi_11")
+    bad = copy.deepcopy(cert)                       # without the cyclotomic part: 4 != 12
+    del bad["configuration"]["field"]["irreducible"]["cyclotomic"]
+    _rejected(bad, "degree lcm(2^k, e)")

@@ -1,0 +1,226 @@
+"""The checker of group certificates (standard library only; see exactsym.checker).
+
+What a valid certificate proves.  P is the embedded point set, G the group of the isometries g
+of the plane with g(P) = P; the "level" of a point is the set of points as far as it from c.
+ 1. c is fixed by every g in G.  Cartesian: c is the centroid (g is affine and permutes P, so it
+    fixes the mean of P).  Polar: c is the origin, checked to be the centre of the smallest
+    enclosing circle of P, which is unique and so mapped onto itself by every g.
+ 2. H <= G: each generator (a rotation rho about c; for Dk also a reflection mu through c) maps
+    every point i to point perm[i], so it maps P into P and is in G.  A rotation about c fixing
+    a point a != c is the identity, so the order k of rho is the length of the cycle of the
+    reference point a under its permutation, and H = <rho, mu> is exactly Ck or Dk.
+ 3. G <= H: every g in G fixes c, so g is determined by its kind (rotation or reflection) and
+    by b = g(a), a point of P on the level of a.  For each such b and kind, the candidate is in
+    H (b is in the H-orbit of a, computed from the verified permutations) or the witness names
+    a point w whose image under the candidate is not in P: then the candidate is not in G.
+So G = H: the checker names it, derives "orderable" (no element of G moves a point) and
+compares both with the claim.  The cost is linear: O(n) per generator, O(1) per candidate.
+
+Numbers are exact: rationals (ints after scaling by a common denominator, or Fractions), or
+elements of one real number field Q(theta) written as coefficient lists in theta.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from math import lcm
+
+try:
+    from .checker_ordering import check as check_ordering
+    from .checker_numbers import Field, Invalid, frac, need, number_field, rat, scaled, sgn
+except ImportError:     # run as a lone script (python exactsym/checker.py): a sibling file
+    from checker_ordering import check as check_ordering
+    from checker_numbers import Field, Invalid, frac, need, number_field, rat, scaled, sgn
+
+
+def permutation(spec: dict, n: int, name: str) -> list:
+    perm = spec["permutation"]
+    need(isinstance(perm, list) and len(perm) == n and all(
+        isinstance(j, int) and 0 <= j < n for j in perm), f"{name}: not a list of {n} indices")
+    return perm
+
+
+def reference(witness: dict, n: int) -> int:
+    ref = witness["reference"]
+    need(isinstance(ref, int) and 0 <= ref < n, f"bad reference point {ref!r}")
+    return ref
+
+
+def group(n, ref, level, rot, mir, witness, image_in) -> tuple[str, bool, list | None]:
+    """Order of rho and step 3, given the verified permutations; returns (name, orderable).
+    ``image_in(kind, b, w)``: does the isometry of this kind fixing c and taking the reference
+    point to point b map point w onto a point of P?"""
+    orbit, j = [ref], (rot[ref] if rot else ref)
+    while j != ref:                             # rot is a bijection: an injective map of P
+        orbit.append(j)
+        j = rot[j]
+    inside = {"rotation": set(orbit), "reflection": {mir[i] for i in orbit} if mir else set()}
+    on_level, refutations = set(level), witness.get("refutations", {})
+    for kind in ("rotation", "reflection"):
+        refuted = set()
+        for b, w in refutations.get(kind, []):
+            need(b in on_level, f"{kind} refutation: point {b!r} is not on the level of the "
+                 f"reference point {ref}")
+            need(isinstance(w, int) and 0 <= w < n, f"{kind} refutation: bad point {w!r}")
+            need(not image_in(kind, b, w), f"the {kind} taking point {ref} to point {b} maps "
+                 f"point {w} onto a point of the configuration: it refutes nothing")
+            refuted.add(b)
+        for b in level:
+            need(b in inside[kind] or b in refuted, f"the {kind} taking point {ref} to point "
+                 f"{b} is neither in the claimed group nor refuted")
+    orderable = len(orbit) == 1 and (mir is None or all(mir[i] == i for i in range(n)))
+    return f"{'D' if mir else 'C'}{len(orbit)}", orderable, mir
+
+
+def distinct(keys: list) -> dict:
+    index: dict = {}
+    for i, k in enumerate(keys):
+        need(index.setdefault(k, i) == i, f"points {index[k]} and {i} coincide")
+    return index
+
+
+def cartesian(points: list, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
+    n = len(points)
+    if field is None:
+        flat, scale = scaled([rat(v) for x, y in points for v in (x, y)])
+        pts, num = list(zip(flat[0::2], flat[1::2])), frac
+    else:
+        pts, scale, num = [(field.num(x), field.num(y)) for x, y in points], 1, field.num
+    sx, sy = sum(x for x, _ in pts), sum(y for _, y in pts)
+    w = [(n * x - sx, n * y - sy) for x, y in pts]     # n * scale * (p - centroid): exact
+    distinct(w)
+    if n == 1:
+        return "O2", True, None
+
+    def isometry(name, det):                    # step 2 for one generator
+        spec = witness.get(name)
+        if spec is None:
+            return None
+        cx, cy = (num(v) for v in spec["centre"])
+        need(cx * (n * scale) == sx and cy * (n * scale) == sy,
+             f"{name}: the centre is not the centroid of the points")
+        (a, b), (c, d) = [[num(v) for v in row] for row in spec["matrix"]]
+        need(a * a + c * c == 1 and b * b + d * d == 1 and a * b + c * d == 0,
+             f"{name}: the matrix is not orthogonal")
+        need(a * d - b * c == det, f"{name}: the matrix does not have determinant {det}")
+        m = 1 if field else lcm(a.denominator, b.denominator, c.denominator, d.denominator)
+        a, b, c, d = (e * m if field else int(e * m) for e in (a, b, c, d))
+        perm = permutation(spec, n, name)
+        for i, (x, y) in enumerate(w):          # m g(p_i) = m p_perm[i], in the w frame
+            need((m * w[perm[i]][0], m * w[perm[i]][1]) == (a * x + b * y, c * x + d * y),
+                 f"{name}: the image of point {i} is not point {perm[i]}")
+        return perm
+
+    rot, mir, ref = isometry("rotation", 1), isometry("mirror", -1), reference(witness, n)
+    ux, uy = w[ref]
+    s = ux * ux + uy * uy
+    need(s != 0, "the reference point is the centre")
+    level = [i for i, (x, y) in enumerate(w) if x * x + y * y == s]
+    scaled_w: set = set()
+
+    def image_in(kind, b, i):
+        # The isometry about c with u = w[ref] -> v = w[b] (|u|^2 = |v|^2 = s) is the rotation
+        # [[dot, -cross], [cross, dot]] / s or the reflection [[e, f], [f, -e]] / s; s times the
+        # image of w[i] is looked up in s * P, so nothing is divided.
+        if not scaled_w:
+            scaled_w.update((s * x, s * y) for x, y in w)
+        (vx, vy), (x, y) = w[b], w[i]
+        if kind == "rotation":
+            dot, cross = ux * vx + uy * vy, ux * vy - uy * vx
+            return (dot * x - cross * y, cross * x + dot * y) in scaled_w
+        e, f = ux * vx - uy * vy, ux * vy + uy * vx
+        return (e * x + f * y, f * x - e * y) in scaled_w
+
+    return group(n, ref, level, rot, mir, witness, image_in)
+
+
+def polar(points: list, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
+    n = len(points)
+    rot, mir = witness.get("rotation"), witness.get("mirror")
+    extra = [rat(rot["turn"])] if rot else []
+    if mir:
+        p, q = rat(mir["turn"])
+        extra.append((2 * p, q))                # 2 alpha: the reflection is t -> 2 alpha - t
+    turns, T = scaled([rat(t) for _, t in points] + extra)    # whole turns are T
+    r2 = scaled([rat(r) for r, _ in points])[0] if field is None else [
+        field.num(r) for r, _ in points]
+    values = set(r2)
+    need(all(sgn(v) >= 0 for v in values), "a squared radius is negative")
+
+    def key(r, t):                              # the point (r2, turn), the turn taken mod 1
+        return (r, 0) if r == 0 else (r, t % T)
+
+    keys = [key(r, t) for r, t in zip(r2, turns)]
+    index = distinct(keys)
+    if n == 1:
+        return "O2", True, None
+    # Step 1: the origin is the SEC centre iff no point is farther than R and the points at
+    # distance R leave no angular gap above half a turn (else a smaller circle holds them all).
+    big = next(iter(values))
+    for v in values:
+        big = v if sgn(v - big) > 0 else big
+    rim = sorted(t for r, t in keys if r == big)
+    gaps = [b - a for a, b in zip(rim, rim[1:])] + [rim[0] + T - rim[-1]]
+    need(2 * max(gaps) <= T, "the origin is not the centre of the smallest enclosing circle")
+
+    def isometry(name, spec, image):            # step 2 for one generator
+        if spec is None:
+            return None
+        perm = permutation(spec, n, name)
+        for i, (r, t) in enumerate(keys):
+            need(key(r, image(t)) == keys[perm[i]],
+                 f"{name}: the image of point {i} is not point {perm[i]}")
+        return perm
+
+    tau, sigma = turns[n] if rot else None, turns[-1] if mir else None
+    rot = isometry("rotation", rot, lambda t: t + tau)
+    mir = isometry("mirror", mir, lambda t: sigma - t)
+    ref = reference(witness, n)
+    ra, ta = keys[ref]
+    need(ra != 0, "the reference point is the centre")
+    level = [i for i, (r, _) in enumerate(keys) if r == ra]
+
+    def image_in(kind, b, i):                   # rotation by tb - ta; reflection t -> ta + tb - t
+        (r, t), tb = keys[i], keys[b][1]
+        return key(r, t + tb - ta if kind == "rotation" else ta + tb - t) in index
+
+    return group(n, ref, level, rot, mir, witness, image_in)
+
+
+# ------------------------------------------------------------------ the certificate
+
+def digest(configuration) -> str:
+    text = json.dumps(configuration, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def verify_certificate(cert) -> tuple[bool, str]:
+    """``(True, summary)`` when the certificate proves its claim, else ``(False, reason)``."""
+    try:
+        need(isinstance(cert, dict) and cert.get("format") == "exactsym-certificate"
+             and cert.get("version") == 1, "not an exactsym certificate of version 1")
+        config, claim, witness = cert["configuration"], cert["claim"], cert["witness"]
+        # A fingerprint of the configuration: it catches edits; the proof does not rely on it.
+        need(cert.get("configuration_sha256") == digest(config),
+             "configuration_sha256 does not match the embedded configuration")
+        field = number_field(config["field"]) if config.get("field") is not None else None
+        points, kind = config["points"], config["coordinates"]
+        need(isinstance(points, list) and points and all(
+            isinstance(p, list) and len(p) == 2 for p in points), "points must be pairs")
+        need(kind in ("cartesian", "polar"), f"unknown coordinates {kind!r}")
+        name, orderable, mirror = (cartesian if kind == "cartesian" else polar)(points, field,
+                                                                               witness)
+        need(claim["group"] == name, f"the claim says group {claim['group']!r} but the "
+             f"witness proves {name}")
+        need(claim["orderable"] is orderable, f"the claim says orderable "
+             f"{claim['orderable']!r} but group {name} makes it {orderable}")
+        proved = ""
+        if "ordering" in claim or "leader" in claim:    # optional: older certificates lack them
+            proved = ", " + check_ordering(kind, points, field, witness, claim, name,
+                                           orderable, mirror)
+        return True, f"group {name}, orderable {str(orderable).lower()}{proved}"
+    except Invalid as err:
+        return False, str(err)
+    except (KeyError, TypeError, ValueError, IndexError, AttributeError, ZeroDivisionError) as err:
+        return False, f"malformed certificate ({type(err).__name__}: {err})"

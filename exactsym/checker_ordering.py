@@ -1,0 +1,233 @@
+"""The checker of the canonical ordering and the leader (standard library only; see
+exactsym.checker).  The definition, in the checker's own terms (docs/certificates.md,
+"Ordering and leader"):
+
+c is the centre of the smallest enclosing circle (SEC) of P.  About c the points off c lie on
+rays; a frame is the plane as given ("ccw") or mirrored ("cw": y -> -y, a turn t -> -t).  In a
+frame, list the rays counter-clockwise R_0 .. R_(m-1); the symbol of R_j is (the tuple of the
+squared distances to c of its points, increasing; the angle from R_j to R_(j+1), in [0, 2pi)).
+Symbols compare by their tuple (lexicographically, a proper prefix first), then by the angle.
+The reading of a frame from a ray is its cyclic string of symbols from that ray.  The canonical
+reading is the lexicographically least of the 2m readings (both frames, every starting ray);
+the ordering lists the point at c first (if any), then the rays of a least reading, the points
+of a ray by increasing distance.  (Two least readings differ by an isometry of P; when P is
+orderable it moves no point, so every least reading gives the same ordering.)  The leader: the
+first of the ordering when orderable; else the point at c; else, for D1, the nearest point on
+the ray fixed by the mirror whose counter-clockwise reading is least (two fixed rays cannot read
+alike: the half-turn would be a symmetry); else none.
+
+The witness is only the frame of a least reading (and, for D1 without an ordering, the points
+sorted by angle then distance).  The checker verifies that the claimed order is sorted by angle
+in that frame (one comparison per point), builds both frames' strings, and proves the claimed
+reading X least with the Z-algorithm on X + sentinel + (other string doubled): it gives, for
+every other start, the length L of the common prefix with X using O(m) symbol equalities in all;
+one comparison at position L shows that start larger (or L = m: an equal reading).  Linear.
+"""
+
+from __future__ import annotations
+
+try:
+    from .checker_numbers import need, rat, scaled, sgn
+except ImportError:     # run as a lone script (python exactsym/checker.py): a sibling file
+    from checker_numbers import need, rat, scaled, sgn
+
+
+def _cmp(a, b) -> int:
+    return sgn(a - b)
+
+
+class _Plane:
+    """Points about c in one frame: the radius and the direction of each point off c."""
+
+    def __init__(self, polar: bool, r2: list, dirs: list, turn: int):
+        self.polar, self.r2, self.dirs, self.turn = polar, r2, dirs, turn
+
+    def mirrored(self) -> "_Plane":
+        if self.polar:
+            return _Plane(True, self.r2, [None if d is None else -d % self.turn
+                                          for d in self.dirs], self.turn)
+        return _Plane(False, self.r2, [None if d is None else (d[0], -d[1])
+                                       for d in self.dirs], self.turn)
+
+    def angle(self, i: int, j: int):
+        """The angle from the direction of point i to that of point j, in [0, 2pi): a turn
+        (polar, in units of 1/turn) or the vector (u . v, u x v) (Cartesian)."""
+        if self.polar:
+            return (self.dirs[j] - self.dirs[i]) % self.turn
+        (ux, uy), (vx, vy) = self.dirs[i], self.dirs[j]
+        return ux * vx + uy * vy, ux * vy - uy * vx
+
+    def cmp_angle(self, a, b) -> int:
+        if self.polar:
+            return (a > b) - (a < b)
+        # upper half [0, pi) before lower half [pi, 2pi); in one half, the cross product
+        half = [0 if sgn(y) > 0 or (y == 0 and sgn(x) > 0) else 1 for x, y in (a, b)]
+        if half[0] != half[1]:
+            return -1 if half[0] < half[1] else 1
+        return -sgn(a[0] * b[1] - a[1] * b[0])
+
+
+def _rays(plane: _Plane, order: list) -> list:
+    """The rays of ``order`` (points off c), checked to be sorted counter-clockwise from the
+    first point's direction, each ray by increasing distance."""
+    need(order, "the canonical order lists no point off the centre")
+    rays, last = [[order[0]]], plane.angle(order[0], order[0])
+    for i in order[1:]:
+        a = plane.angle(order[0], i)
+        step = plane.cmp_angle(a, last)
+        if step == 0:
+            need(_cmp(plane.r2[i], plane.r2[rays[-1][-1]]) > 0, f"ordering: point {i} is "
+                 "not farther from the centre than the point before it on its ray")
+            rays[-1].append(i)
+        else:
+            need(step > 0, f"ordering: point {i} is not in angular order")
+            rays.append([i])
+        last = a
+    return rays
+
+
+def _symbols(plane: _Plane, rays: list, clockwise: bool) -> list:
+    """The reading from R_0: counter-clockwise, or (clockwise) the string of the mirror image
+    read from R_0: rays R_0, R_-1, ..., each with the angle from the ray before it."""
+    m = len(rays)
+    radii = [tuple(plane.r2[i] for i in ray) for ray in rays]
+    gaps = [plane.angle(rays[j][0], rays[(j + 1) % m][0]) for j in range(m)]
+    if not clockwise:
+        return list(zip(radii, gaps))
+    return [(radii[-j % m], gaps[(-j - 1) % m]) for j in range(m)]
+
+
+def _cmp_symbol(plane: _Plane, s, t) -> int:
+    for x, y in zip(s[0], t[0]):
+        c = _cmp(x, y)
+        if c:
+            return c
+    if len(s[0]) != len(t[0]):
+        return -1 if len(s[0]) < len(t[0]) else 1
+    return plane.cmp_angle(s[1], t[1])
+
+
+def _least(plane: _Plane, x: list, others: list) -> None:
+    """x is no greater than any rotation of any string in ``others`` (Z-algorithm)."""
+    m = len(x)
+    for other in others:
+        s = x + [None] + other + other[:-1]
+        z, left, right = [0] * len(s), 0, 0
+        for i in range(1, 2 * m + 1):          # s[m + 1 + j:]: the rotation by j
+            zi = min(right - i, z[i - left]) if i < right else 0
+            while i + zi < len(s) and zi < m and s[i + zi] is not None and \
+                    _cmp_symbol(plane, s[zi], s[i + zi]) == 0:
+                zi += 1
+            z[i] = zi
+            if i + zi > right:
+                left, right = i, i + zi
+            if i > m and zi < m:
+                need(_cmp_symbol(plane, s[i + zi], x[zi]) > 0, "ordering: the reading from "
+                     f"ray {i - m - 1} is less than the claimed one (they differ at symbol "
+                     f"{zi}): the claimed order is not the canonical one")
+
+
+def _frame(spec: dict) -> bool:
+    need(isinstance(spec, dict) and spec.get("orientation") in ("ccw", "cw"),
+         "witness.canonical.orientation must be \"ccw\" or \"cw\"")
+    return spec["orientation"] == "cw"
+
+
+def _indices(order, n: int, what: str) -> list:
+    need(isinstance(order, list) and all(isinstance(i, int) and not isinstance(i, bool)
+                                         and 0 <= i < n for i in order)
+         and len(set(order)) == len(order), f"{what}: not a list of distinct point indices")
+    return order
+
+
+def _plane(kind: str, points: list, field, witness: dict) -> _Plane:
+    """The points about the SEC centre c (polar: the origin, verified by the group check;
+    Cartesian: c from witness.sec, verified here)."""
+    if kind == "polar":
+        turns, T = scaled([rat(t) for _, t in points])
+        r2 = scaled([rat(r) for r, _ in points])[0] if field is None else [
+            field.num(r) for r, _ in points]
+        return _Plane(True, r2, [None if r == 0 else t % T for r, t in zip(r2, turns)], T)
+    sec = witness["sec"]
+    if field is None:
+        flat, _ = scaled([rat(v) for p in points + [sec["centre"]] for v in p])
+        xy = list(zip(flat[0::2], flat[1::2]))
+    else:
+        xy = [(field.num(x), field.num(y)) for x, y in points + [sec["centre"]]]
+    (cx, cy), xy = xy[-1], xy[:-1]
+    w = [(x - cx, y - cy) for x, y in xy]
+    r2 = [x * x + y * y for x, y in w]
+    # c is the SEC centre: every point within R of c, and c in the convex hull of support
+    # points at distance R (a circle about c' != c misses one of them: the one s with
+    # (s - c) . (c' - c) <= 0 is farther than R from c').
+    support = _indices(sec["support"], len(points), "witness.sec.support")
+    need(1 <= len(support) <= 3, "witness.sec.support: one to three points")
+    big = r2[support[0]]
+    need(all(r2[i] == big for i in support), "sec: the support points are not on one circle")
+    need(all(_cmp(v, big) <= 0 for v in r2), "sec: a point lies outside the circle")
+    if len(support) == 2:
+        (ax, ay), (bx, by) = (w[i] for i in support)
+        need(ax + bx == 0 and ay + by == 0, "sec: the centre is not the midpoint of the support")
+    elif len(support) == 3:
+        turns = {sgn(w[a][0] * w[b][1] - w[a][1] * w[b][0])
+                 for a, b in zip(support, support[1:] + support[:1])}
+        need(not {-1, 1} <= turns, "sec: the centre is outside the support triangle")
+    else:
+        need(big == 0, "sec: one support point must be the centre")
+    return _Plane(False, r2, [None if v == 0 else d for v, d in zip(r2, w)], 1)
+
+
+def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
+          orderable: bool, mirror: list | None) -> str:
+    """Check ``claim.ordering`` and ``claim.leader`` (the group and orderability are proved);
+    returns a phrase for the summary."""
+    n = len(points)
+    ordering, leader = claim["ordering"], claim["leader"]
+    need(leader is None or isinstance(leader, int) and not isinstance(leader, bool),
+         "claim.leader must be a point index or null")
+    if n == 1:
+        need(ordering == [0] and leader == 0, "one point: the ordering is [0], the leader 0")
+        return "ordering and leader"
+    need((ordering is not None) == orderable, "claim.ordering must be given exactly when the "
+         "configuration is orderable")
+    plane = _plane(kind, points, field, witness)
+    centre = [i for i, d in enumerate(plane.dirs) if d is None]
+    if not orderable and (centre or name != "D1"):
+        expected = centre[0] if centre else None
+        need(leader == expected, f"claim.leader must be {expected}: " + (
+            "the point at the centre" if centre else f"no point is fixed by {name}"))
+        return "leader"
+    spec = witness["canonical"]
+    if orderable:
+        order = _indices(ordering, n, "claim.ordering")
+        need(len(order) == n, "claim.ordering: not a list of every point")
+        need(order[:len(centre)] == centre, "claim.ordering: the point at the centre is not "
+             "first")
+        order = order[len(centre):]
+    else:
+        order = _indices(spec["order"], n, "witness.canonical.order")
+        need(sorted(order + centre) == list(range(n)), "witness.canonical.order: not every "
+             "point off the centre")
+    if _frame(spec):
+        plane = plane.mirrored()
+    rays = _rays(plane, order)
+    ccw = _symbols(plane, rays, False)
+    if orderable:
+        _least(plane, ccw, [ccw, _symbols(plane, rays, True)])
+        need(leader == ordering[0], "claim.leader is not the first of the ordering")
+        return "ordering and leader"
+    # D1, no point at c: the rays the mirror fixes (their points are fixed), the least reading
+    fixed = [j for j, ray in enumerate(rays) if mirror[ray[0]] == ray[0]]
+    if not fixed:
+        need(leader is None, "claim.leader must be null: no point lies on the mirror")
+        return "leader"
+    best = fixed[0]
+    for j in fixed[1:]:
+        a, b = ccw[j:] + ccw[:j], ccw[best:] + ccw[:best]
+        c = next((c for c in (_cmp_symbol(plane, s, t) for s, t in zip(a, b)) if c), 0)
+        need(c != 0, "two rays on the mirror read alike")
+        best = j if c < 0 else best
+    need(leader == rays[best][0], f"claim.leader must be point {rays[best][0]}, the nearest "
+         "point of the least-reading ray on the mirror")
+    return "leader"
+
