@@ -26,7 +26,7 @@ from .sweep import cli as sweep_cli
 from .analysis import Options, analyse
 from .configuration import load
 from .errors import EXIT_BUG, EXIT_FALSE, EXIT_INPUT, EXIT_OK, InputError
-from .report import failed_expectations, report_json, report_text
+from .report import failed_expectations, json_text, report_json, report_text
 
 
 class _Parser(argparse.ArgumentParser):
@@ -53,7 +53,7 @@ def _check(args) -> int:
     analysis = analyse(config, options=Options(strings=args.strings))
     report = report_json(analysis)
     if args.json:
-        print(json.dumps(report, indent=None if args.compact else 2))
+        print(json_text(report, compact=args.compact))
     else:
         print(report_text(analysis, verbose=args.verbose))
     failures = failed_expectations(config, report)
