@@ -48,9 +48,9 @@ from __future__ import annotations
 
 from math import gcd
 
-from ..exact import exact_key, fmpq
+from ..exact import exact_key
 from .circle_polygon import CirclePolygon
-from .keys import gap_ids, hashable_key, line_value
+from .keys import gap_ids, hashable_key, integer_directions, integer_gap_key, line_value
 from .polygon.strings import perpendicular
 
 #: Smallest polygon keyed combinatorially (for n <= 3 the edge palindromes compare edge
@@ -65,30 +65,10 @@ def combinatorial_key(polygon: CirclePolygon):
         raise ValueError(f"combinatorial keys are for polygons of at least {MIN_VERTICES} "
                          "vertices")
     if not polygon.polar:
-        vectors = _integer_directions(polygon.directions)
+        vectors = integer_directions(polygon.directions)
         if vectors is not None:
             return _integer_key(vectors)
     return _exact_key(polygon)
-
-
-def _integer_directions(dirs):
-    """The direction vectors times one positive integer, as int pairs of one length, or
-    None (a coordinate that is not an fmpq, or vectors of different lengths)."""
-    den = 1
-    for x, y in dirs:
-        if type(x) is not fmpq or type(y) is not fmpq:
-            return None
-        qx, qy = int(x.q), int(y.q)
-        if den % qx:
-            den = den // gcd(den, qx) * qx
-        if den % qy:
-            den = den // gcd(den, qy) * qy
-    out = [(int(x.p) * (den // int(x.q)), int(y.p) * (den // int(y.q))) for x, y in dirs]
-    x0, y0 = out[0]
-    r2 = x0 * x0 + y0 * y0
-    if any(x * x + y * y != r2 for x, y in out):
-        return None
-    return out
 
 
 def _primitive_line(x: int, y: int) -> tuple:
@@ -115,13 +95,7 @@ def _integer_key(u) -> tuple:
     for i in range(n):
         ax, ay = u[i]
         bx, by = u[(i + 1) % n]
-        c, d = ax * by - ay * bx, ax * bx + ay * by
-        if c > 0:
-            gaps.append((0, -d * abs(d)))
-        elif c < 0:
-            gaps.append((2, d * abs(d)))
-        else:
-            gaps.append((1, 0) if d < 0 else (3, 0))
+        gaps.append(integer_gap_key(u[i], u[(i + 1) % n]))
         wx, wy = ax + bx, ay + by
         if wx == 0 and wy == 0:        # a diameter: m = C; its line is the perpendicular
             diam.append(i)
