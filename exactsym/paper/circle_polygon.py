@@ -61,7 +61,7 @@ bisector would need a square root outside the configuration's field).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cmp_to_key
+from functools import cached_property, cmp_to_key
 
 from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
 from ..geometry import compare_directions
@@ -129,6 +129,42 @@ class CirclePolygon:
         if self.polar:
             return angular_distance(a, b)
         return _cosine_key(a, b)
+
+    @cached_property
+    def one_circle(self) -> bool:
+        """Cartesian: every direction vector has the same length (a level polygon)."""
+        if self.polar or not self.directions:
+            return True
+        first = _dot(self.directions[0], self.directions[0])
+        return all(_dot(d, d) == first for d in self.directions)
+
+    def chord_key(self, i: int, j: int):
+        """An exact key, strictly increasing in the chord |v_i v_j|, for comparing the
+        chords of *this* polygon (the strings, Section 3): :meth:`separation`, or on one
+        circle (:attr:`one_circle`) ``-sign(u.v) (u.v)^2``, the separation times the
+        positive constant ``|u|^2 |v|^2 = r^4`` -- no division (a field inverse can cost
+        seconds in a large number field)."""
+        n = self.n
+        a, b = self.directions[i % n], self.directions[j % n]
+        if self.polar:
+            return angular_distance(a, b)
+        if not self.one_circle:
+            return _cosine_key(a, b)
+        d = _dot(a, b)
+        return -sign(d) * d * d
+
+    def edge_key(self, i: int, j: int):
+        """An exact key, strictly increasing in the distance from m (the point of edge
+        (i, i+1), as :meth:`separation_from_edge`) to vertex j, for comparing the
+        distances from *one* edge point (an edge string CW_m, ACW_m): on one circle the
+        separation times the positive constant ``|w|^2 r^2`` of that edge, no division."""
+        if self.polar or not self.one_circle:
+            return self.separation_from_edge(i, j)
+        w = self.edge_direction(i)
+        if w is None:      # the edge is a diameter: m = C, every vertex at distance r
+            return self._zero()
+        d = _dot(w, self.directions[j % self.n])
+        return -sign(d) * d * d
 
     def edge_direction(self, i: int):
         """Direction (turn or vector) from C of the point m' of the circle on the ray C->m,

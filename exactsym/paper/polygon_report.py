@@ -127,11 +127,14 @@ def level_strings(polygon) -> dict:
     if polygon.n > STRING_LIMIT:
         return {"omitted": f"{polygon.n} vertices: strings are written for at most "
                 f"{STRING_LIMIT}"}
-    strings = paper.vertex_strings(polygon)
+    # the values of the metric (the separation), not the polygon's undivided chord keys
+    n = polygon.n
+    cw = [[_key_text(polygon.separation(i, (i - s) % n)) for s in range(1, n)]
+          for i in range(n)]
     return {"metric": polygon.metric,
             "vertices": list(polygon.labels),
-            "cw": [[_key_text(k) for k in cw] for cw, _ in strings],
-            "acw": [[_key_text(k) for k in acw] for _, acw in strings]}
+            "cw": cw,
+            "acw": [row[::-1] for row in cw]}
 
 
 #: Polygons of MIN_VERTICES to MEMO_LIMIT vertices share their verdicts with every

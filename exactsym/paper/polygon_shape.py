@@ -121,7 +121,7 @@ def _exact_key(polygon: CirclePolygon) -> tuple:
             w = perpendicular(polygon, dirs[i])
         edge_lines.append(hashable_key(line_value(polar, w)))
     lines = [hashable_key(line_value(polar, d)) for d in dirs] + edge_lines
-    chords = [polygon.separation(i, j) for i in range(n) for j in range(i + 1, n)]
+    chords = [polygon.chord_key(i, j) for i in range(n) for j in range(i + 1, n)]
     distinct = {exact_key(c): c for c in chords}
     order = {k: r for r, k in enumerate(sorted(distinct, key=distinct.__getitem__))}
     return (polar, n, tuple(gap_ids(polygon)), tuple(diam), _intern(lines),
