@@ -63,7 +63,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import cached_property, cmp_to_key
 
-from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
+from ..exact import FieldElement, exact_key, fmpq, normal_turn, rational_sqrt, sign
 from ..geometry import compare_directions
 
 __all__ = ["CirclePolygon", "level_polygon", "polygon_from_directions", "angular_distance",
@@ -125,10 +125,29 @@ class CirclePolygon:
     def separation(self, i: int, j: int):
         """Exact key, strictly increasing in the chord |v_i v_j| (equal iff equal chords)."""
         n = self.n
-        a, b = self.directions[i % n], self.directions[j % n]
+        i, j = i % n, j % n
+        a, b = self.directions[i], self.directions[j]
         if self.polar:
             return angular_distance(a, b)
-        return _cosine_key(a, b)
+        d = _dot(a, b)
+        s = sign(d)
+        if s == 0:
+            return d * 0
+        inverse = self.inverse_lengths           # -s d^2 / (|a|^2 |b|^2), one inverse per length
+        return -s * d * d * inverse[i] * inverse[j]
+
+    @cached_property
+    def inverse_lengths(self) -> tuple:
+        """Cartesian: ``1 / |u|^2`` of each direction, one inverse per distinct length."""
+        seen: dict = {}
+        out = []
+        for d in self.directions:
+            length = _dot(d, d)
+            key = exact_key(length)
+            if key not in seen:
+                seen[key] = 1 / length
+            out.append(seen[key])
+        return tuple(out)
 
     @cached_property
     def one_circle(self) -> bool:
