@@ -7,7 +7,7 @@ read as doubles, centroid, polar sort, tolerant rotation test), all in CPU secon
 child process.
 
 Run: ``python bench/bench_check.py`` (``--quick`` skips the 100,000-point cases,
-``--small`` runs only the small algebraic inputs).
+``--small`` runs only the small algebraic inputs; or name cases: ``random100k d4``).
 
 Targets: issue 9, full check at most 6 times the float yardstick on 100,000 random
 rational points and at most 10 times on the 100,000-point D4 set, and under 5 s on small
@@ -105,7 +105,10 @@ def main(argv: list[str]) -> int:
     if len(argv) == 2 and argv[0] == "--child":
         print(json.dumps(run_case(argv[1])))
         return 0
-    if "--small" in argv:
+    named = [a for a in argv if a in CASES]
+    if named:
+        keys = named
+    elif "--small" in argv:
         keys = list(SMALL)
     else:
         keys = [k for k in CASES if not ("--quick" in argv and k in ("random100k", "d4"))]
