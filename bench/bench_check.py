@@ -70,7 +70,7 @@ CASES = {
 
 
 def run_case(key: str) -> dict:
-    from exactsym.configuration import load
+    from exactsym.configuration import load, no_cycle_collection
     from exactsym.levels import levels_of
     from exactsym.report import check_report, json_text
     from exactsym.symmetry import symmetry_group
@@ -82,15 +82,18 @@ def run_case(key: str) -> dict:
     config = load(path)
     group = symmetry_group(config, levels_of(config))
     t1 = clock()
-    config = load(path)
-    report = check_report(config)
-    t_report = clock()
-    text = json_text(report)
+    with no_cycle_collection():        # as the command does
+        config = load(path)
+        report = check_report(config)
+        t_report = clock()
+        text = json_text(report)
     t2 = clock()
-    f0 = clock()
-    if key not in SMALL:
-        float_pipeline(path)
-    yardstick = clock() - f0
+    yardstick = float("inf")
+    for _ in range(1 if key in SMALL else 3):       # the fastest of three: a shared machine
+        f0 = clock()
+        if key not in SMALL:
+            float_pipeline(path)
+        yardstick = min(yardstick, clock() - f0)
     paper, audit = report["paper"], report["audit"]
     return {"truth": t1 - t0, "check": t2 - t1, "json": t2 - t_report, "group": group.name,
             "float": yardstick,
@@ -114,7 +117,7 @@ def main(argv: list[str]) -> int:
         keys = [k for k in CASES if not ("--quick" in argv and k in ("random100k", "d4"))]
     print("CPU seconds; 'truth' = load + rings + symmetry_group, 'check' = load + "
           "check_report (all sections) + JSON text (as the command writes it); "
-          "'(json)' = the JSON text's share; 'float' = the float yardstick on the same file")
+          "'(json)' = the JSON text's share; 'float' = the float yardstick on the same file (fastest of 3)")
     print(f"{'input':<44}{'levels':>7}{'float':>7}{'truth':>8}{'check':>8}{'x float':>8}"
           f"{'(json)':>7}{'RSS MB':>8}{'JSON MB':>8}  target")
     ok = True

@@ -113,7 +113,8 @@ def report_text(analysis: Analysis, verbose: bool = False) -> str:
 
 def check_report(config: Configuration, *, strings: bool = False) -> dict:
     """:func:`report_json` of the whole analysis (every part) of ``config``."""
-    return report_json(analyse(config, options=Options(strings=strings)))
+    with no_cycle_collection():         # one pause for both (see exactsym.cli)
+        return report_json(analyse(config, options=Options(strings=strings)))
 
 
 # ---------------------------------------------------------------- [expect]
