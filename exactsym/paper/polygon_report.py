@@ -196,6 +196,34 @@ def verdict_key(polygon):
     return shape_key(polygon)
 
 
+def _single_relabeller(verdict: dict, label):
+    """``lambda new: _relabelled(verdict, (label,), (new,))`` for a single-vertex
+    polygon, without the per-call lookups (one call per robot on random
+    configurations); None when a label in ``verdict`` is not ``label``."""
+    keys = [k for k in _LABEL_KEYS if verdict.get(k) is not None]
+    asym = verdict.get("leader_asym")
+    asym = asym if isinstance(asym, dict) else None
+    labels = [verdict[k] for k in keys] + \
+        ([x for x in (asym["+1"], asym["-1"]) if x is not None] if asym else [])
+    if any(x != label for x in labels):
+        return None
+    definition = verdict.get("definition")
+    definition = definition if isinstance(definition, dict) else None
+
+    def relabelled(new) -> dict:
+        out = dict(verdict)
+        for k in keys:
+            out[k] = new
+        if asym is not None:
+            out["leader_asym"] = {"+1": None if asym["+1"] is None else new,
+                                  "-1": None if asym["-1"] is None else new,
+                                  "tie": asym["tie"]}
+        if definition is not None:
+            out["definition"] = dict(definition)
+        return out
+    return relabelled
+
+
 class VerdictMemo:
     """:func:`level_verdicts` for many polygons: computed once per shape
     (:func:`verdict_key`), relabelled for the others (a configuration of t levels of one
@@ -261,13 +289,12 @@ def _level_section(config, levels, strings: bool) -> LevelSection:
             # every single vertex has the same shape: no polygon needs building
             if single is None:
                 polygon = level_polygon(config, levels, index)
-                single = (polygon.labels,) + _verdicts_and_type(polygon)
-            try:
-                verdicts.append(_relabelled(single[1], single[0], tuple(level.points)))
-                types.append(single[2])
+                verdict, facts = _verdicts_and_type(polygon)
+                single = (_single_relabeller(verdict, polygon.labels[0]), facts)
+            if single[0] is not None:
+                verdicts.append(single[0](level.points[0]))
+                types.append(single[1])
                 continue
-            except KeyError:        # a label that is not the vertex's: compute it
-                pass
         polygon = level_polygon(config, levels, index)
         verdict, facts = memo.verdicts_and_type(polygon)
         verdicts.append(verdict)
