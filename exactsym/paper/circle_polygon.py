@@ -20,7 +20,11 @@ an exact *key* that is a strictly increasing function of the distance:
 * **Cartesian** (``metric = "signed-squared-cosine"``): for directions ``u, v``
   with angle ``theta`` in ``[0, pi]`` the chord is ``2 r sin(theta/2)``, strictly
   increasing in ``theta``; ``-cos(theta)`` is too, and so is
-  ``-sign(cos) cos^2`` = ``-sign(u.v) (u.v)^2 / (|u|^2 |v|^2)``: the key.
+  ``-sign(cos) cos^2`` = ``-sign(u.v) (u.v)^2 / (|u|^2 |v|^2)``: the key
+  (:meth:`CirclePolygon.separation`).  The strings use :meth:`CirclePolygon.chord_key`:
+  on one circle the same key times the constant ``r^4``, ``-sign(u.v) (u.v)^2``, with no
+  division (an inverse in a number field of large degree can cost seconds); it compares
+  the chords of one polygon, which is all the strings do.
 
 The point m on an edge
 ----------------------
@@ -47,7 +51,10 @@ r, the half edge: every key is then the key of that half edge, ``1/4`` (polar) o
 
 ``m'`` is the midpoint of the arc ``a -> b`` when that arc is below half a turn
 and its antipode when it is above (the chord midpoint is then on the far side
-of C).  Note: an edge key and a vertex key are *not* on one scale (vertex
+of C).  The edge strings (:meth:`CirclePolygon.edge_key`) drop the constant ``|w|^2 r^2`` of
+their edge point likewise: they compare within the strings of one edge point (a
+palindrome test); use :meth:`CirclePolygon.separation_from_edge` to compare across
+edges.  Note: an edge key and a vertex key are *not* on one scale (vertex
 strings start with a chord, edge strings with a half chord); compare strings of
 the same kind only.
 
