@@ -11,7 +11,8 @@ from hypothesis import strategies as st
 
 from exactsym.exact import fmpq
 from exactsym.paper import polygon_report
-from exactsym.paper.circle_polygon import polygon_from_directions
+from exactsym.paper import polygon as P
+from exactsym.paper.circle_polygon import CirclePolygon, polygon_from_directions
 from exactsym.paper.polygon_shape import _exact_key, combinatorial_key
 
 D4 = [((1, 0), (0, 1)), ((0, -1), (1, 0)), ((-1, 0), (0, -1)), ((0, 1), (-1, 0)),
@@ -81,6 +82,13 @@ def test_shared_verdict_is_the_computed_one_cartesian(params, scale):
                             [1000 * k + j for j in range(len(copy))])
             assert combinatorial_key(poly) == _exact_key(poly)
             assert memo.verdicts(poly) == polygon_report.level_verdicts(poly)
+            # the division-free lines of one circle are the lines of the general path
+            # (vertex 0 moved along its ray: the same rays, not one circle any more)
+            d0 = poly.directions[0]
+            off = CirclePolygon(poly.labels, ((2 * d0[0], 2 * d0[1]),) + poly.directions[1:],
+                                False)
+            assert not off.one_circle and poly.one_circle
+            assert P.straight_lines(off) == P.straight_lines(poly)
 
 
 @settings(max_examples=40, deadline=None)

@@ -165,6 +165,27 @@ def gap_ids(poly: CirclePolygon) -> list:
                            len(ids)) for i in range(n)]
 
 
+def circle_line_keys(poly: CirclePolygon):
+    """``(vertex_keys, edge_keys)``: hashable keys of the lines through C of the vertices
+    and of the edge points (the edge's midpoint direction, or the perpendicular of a
+    diameter edge), equal iff the lines are equal, without a division: for a Cartesian
+    polygon on one circle of radius r, the line of v is the ray of v^2 (complex square:
+    its doubled angle) and the line of the edge point of (a, b) the ray of a b (the
+    doubled angle of the arc's bisector; (a + b)^2 = a b (2 + 2 Re(a conj b) / r^2) is a
+    positive multiple of it, and for a diameter a b = -a^2 is the perpendicular's
+    square); all have length r^2, so equal rays are equal vectors.  None for polar
+    polygons or directions of different lengths (use :func:`line_value`)."""
+    if poly.polar or not poly.one_circle:
+        return None
+    dirs, n = poly.directions, poly.n
+    vertex = [(exact_key(x * x - y * y), exact_key(2 * x * y)) for x, y in dirs]
+    edge = []
+    for i in range(n):
+        (ax, ay), (bx, by) = dirs[i], dirs[(i + 1) % n]
+        edge.append((exact_key(ax * bx - ay * by), exact_key(ax * by + ay * bx)))
+    return vertex, edge
+
+
 def angle_order_key(d):
     """An exact key increasing with the angle of the vector d in [0, 2 pi) from the +x
     ray (the order of :func:`.circle_polygon.polygon_from_directions`)."""

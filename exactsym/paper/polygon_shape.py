@@ -50,7 +50,8 @@ from math import gcd
 
 from ..exact import exact_key
 from .circle_polygon import CirclePolygon
-from .keys import gap_ids, hashable_key, integer_directions, integer_gap_key, line_value
+from .keys import (circle_line_keys, gap_ids, hashable_key, integer_directions,
+                   integer_gap_key, line_value)
 from .polygon.strings import perpendicular
 
 #: Smallest polygon keyed combinatorially (for n <= 3 the edge palindromes compare edge
@@ -113,14 +114,19 @@ def _integer_key(u) -> tuple:
 
 def _exact_key(polygon: CirclePolygon) -> tuple:
     n, polar, dirs = polygon.n, polygon.polar, polygon.directions
+    circle = circle_line_keys(polygon)
     diam, edge_lines = [], []
     for i in range(n):
         w = polygon.edge_direction(i)
         if w is None:
             diam.append(i)
             w = perpendicular(polygon, dirs[i])
-        edge_lines.append(hashable_key(line_value(polar, w)))
-    lines = [hashable_key(line_value(polar, d)) for d in dirs] + edge_lines
+        if circle is None:
+            edge_lines.append(hashable_key(line_value(polar, w)))
+    if circle is not None:      # the same equalities without a division
+        lines = list(circle[0]) + list(circle[1])
+    else:
+        lines = [hashable_key(line_value(polar, d)) for d in dirs] + edge_lines
     chords = [polygon.chord_key(i, j) for i in range(n) for j in range(i + 1, n)]
     distinct = {exact_key(c): c for c in chords}
     order = {k: r for r, k in enumerate(sorted(distinct, key=distinct.__getitem__))}
