@@ -19,7 +19,7 @@ from .audit import audit as run_audit
 from .configuration import Configuration, no_cycle_collection
 from .levels import Levels, levels_of
 from .paper.family import PaperResult, paper_procedure
-from .paper.polygon_report import level_reports
+from .paper.polygon_report import level_section
 from .symmetry import SymmetryGroup, symmetry_group
 
 #: The parts :func:`analyse` can compute, in the order it computes them.
@@ -89,15 +89,17 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
     with no_cycle_collection():
         levels = levels_of(config)
         truth = symmetry_group(config, levels) if "truth" in wanted else None
-        verdicts = strings = None
+        verdicts = strings = types = None
         if "polygons" in wanted:
-            verdicts, strings = level_reports(config, levels, options.strings)
+            section = level_section(config, levels, options.strings)
+            verdicts, strings, types = section.verdicts, section.strings, section.types
         paper = paper_procedure(config, levels, reading=options.reading,
                                 degree=options.degree) if "family" in wanted else None
         audited = run_audit(config, levels, paper, {"reading": options.reading,
                                                     "degree": options.degree,
                                                     "invariance": options.invariance},
-                            group=truth, level_verdicts=verdicts) if "audit" in wanted else None
+                            group=truth, level_verdicts=verdicts,
+                            level_types=types) if "audit" in wanted else None
     return Analysis(config, options, levels, truth, verdicts, strings, paper, audited)
 
 

@@ -51,7 +51,7 @@ from .exact import fmpq, number_text
 from .labels import ALGORITHMS, STATEMENTS
 from .levels import Level, Levels, levels_of
 from .paper import family as F
-from .paper.polygon_report import level_reports
+from .paper.polygon_report import level_section
 from .symmetry import SymmetryGroup, symmetry_group
 
 __all__ = ["audit", "truth_in_O_S", "group_about_centre", "transformed", "FRAMES",
@@ -224,22 +224,25 @@ def _d(statement, says, truth, witness=None, kind="claim") -> dict:
 
 def audit(config: Configuration, ring_data: Levels | None = None,
           paper: F.PaperResult | None = None, options: dict | None = None,
-          group: SymmetryGroup | None = None, level_verdicts: tuple | None = None) -> dict:
+          group: SymmetryGroup | None = None, level_verdicts: tuple | None = None,
+          level_types: tuple | None = None) -> dict:
     """See :func:`_audit` (run with the cyclic garbage collector paused)."""
     with no_cycle_collection():
-        return _audit(config, ring_data, paper, options, group, level_verdicts)
+        return _audit(config, ring_data, paper, options, group, level_verdicts, level_types)
 
 
 def _audit(config: Configuration, ring_data: Levels | None = None,
            paper: F.PaperResult | None = None, options: dict | None = None,
-           group: SymmetryGroup | None = None, level_verdicts: tuple | None = None) -> dict:
+           group: SymmetryGroup | None = None, level_verdicts: tuple | None = None,
+           level_types: tuple | None = None) -> dict:
     """The audit of ``config`` (see the module docstring); ``paper`` is recomputed when
     not given, and so is the true ``group``.  Options: ``reading``, ``degree`` (passed to
     the paper), ``invariance`` (default True: recompute the paper in the other frames),
     ``limits`` (:class:`exactsym.paper.family.Limits`, default the family layer's: the
     statements on levels and pairs of levels are checked within its budgets, and the
     frames are recomputed with it; ``bounded`` in the result says what was checked).
-    ``level_verdicts``: the polygon layer's verdicts per level (computed when not given)."""
+    ``level_verdicts``, ``level_types``: the polygon layer's verdicts and type facts per
+    level (:class:`exactsym.paper.polygon_report.LevelSection`; computed when not given)."""
     options = options or {}
     limits = options.get("limits") or F.DEFAULT_LIMITS
     ring_data = ring_data if ring_data is not None else levels_of(config)
@@ -265,9 +268,10 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
 
     # the per-level statements (Section 3 and 4.1 on each level polygon)
     if level_verdicts is None:
-        level_verdicts = level_reports(config, ring_data)[0]
+        section = level_section(config, ring_data)
+        level_verdicts, level_types = section.verdicts, section.types
     level_found, level_notes, level_covered = level_findings(config, ring_data,
-                                                             level_verdicts)
+                                                             level_verdicts, level_types)
     for d in level_found:
         add(d)
     notes.extend(level_notes)

@@ -48,7 +48,7 @@ def _entry(statement, says, truth, witness, kind="claim") -> dict:
             "kind": kind}
 
 
-def level_findings(config, levels, verdicts) -> tuple[list, list, set]:
+def level_findings(config, levels, verdicts, types=None) -> tuple[list, list, set]:
     """``(discrepancies, notes, covered)`` of the per-level statements.
 
     ``verdicts``: per level, the polygon layer's ``"paper"`` entry (None for the robot at
@@ -58,7 +58,10 @@ def level_findings(config, levels, verdicts) -> tuple[list, list, set]:
     both vertices, a line of symmetry only under the reading that allows lines containing
     every vertex; ``def-straight-symmetric-conf`` excludes it).  ``covered``: the
     statements evaluated on at least one level meeting their hypotheses.  Levels of one
-    shape give one entry each (the audit merges equal claims and counts them)."""
+    shape give one entry each (the audit merges equal claims and counts them).  ``types``:
+    per level, the polygon layer's type facts (``(name, every mirror through a vertex)``,
+    :class:`exactsym.paper.polygon_report.LevelSection`); recomputed from the definition
+    when not given."""
     found, notes, covered = [], [], set()
     for index, v in enumerate(verdicts):
         n = len(levels.levels[index].points)
@@ -121,11 +124,14 @@ def level_findings(config, levels, verdicts) -> tuple[list, list, set]:
                                     "symmetric or of type 0-4",
                                     f"{name} fits no type: {v['type_reason']}", where))
         if straight and mirrors >= 2:
-            poly = level_polygon(config, levels, index)
-            kind = P.polygon_type(poly)
-            if kind is not None and all(t > 0 for t in kind.through):
+            if types is not None:
+                facts = types[index]
+            else:
+                kind = P.polygon_type(level_polygon(config, levels, index))
+                facts = None if kind is None else (str(kind), all(t > 0 for t in kind.through))
+            if facts is not None and facts[1]:
                 covered.add("lemma-sym-regular")
-                if str(kind) != "type-0":
+                if facts[0] != "type-0":
                     entry = _entry("lemma-sym-regular", f"{name} has {mirrors} lines of "
                                    "symmetry, all through vertices, hence it is regular",
                                    f"{name} is not regular", where,

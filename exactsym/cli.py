@@ -24,9 +24,9 @@ from .ledger import cli as ledger_cli
 from .pictures import cli as plot_cli
 from .sweep import cli as sweep_cli
 from .analysis import Options, analyse
-from .configuration import load
+from .configuration import load, no_cycle_collection
 from .errors import EXIT_BUG, EXIT_FALSE, EXIT_INPUT, EXIT_OK, InputError
-from .report import failed_expectations, report_json, report_text
+from .report import failed_expectations, json_text, report_json, report_text
 
 
 class _Parser(argparse.ArgumentParser):
@@ -49,13 +49,16 @@ def _check_arguments(parser) -> None:
 def _check(args) -> int:
     if len(args.files) > 1:
         return _check_several(args)
-    config = load(args.files[0])
-    analysis = analyse(config, options=Options(strings=args.strings))
-    report = report_json(analysis)
-    if args.json:
-        print(json.dumps(report, indent=None if args.compact else 2))
-    else:
-        print(report_text(analysis, verbose=args.verbose))
+    # one pause of the cycle collector for the whole command: each re-enabling after a
+    # bulk construction costs a full collection over every object built so far
+    with no_cycle_collection():
+        config = load(args.files[0])
+        analysis = analyse(config, options=Options(strings=args.strings))
+        report = report_json(analysis)
+        if args.json:
+            print(json_text(report, compact=args.compact))
+        else:
+            print(report_text(analysis, verbose=args.verbose))
     failures = failed_expectations(config, report)
     for failure in failures:
         print(f"{config.source}: {failure}", file=sys.stderr)

@@ -20,7 +20,11 @@ an exact *key* that is a strictly increasing function of the distance:
 * **Cartesian** (``metric = "signed-squared-cosine"``): for directions ``u, v``
   with angle ``theta`` in ``[0, pi]`` the chord is ``2 r sin(theta/2)``, strictly
   increasing in ``theta``; ``-cos(theta)`` is too, and so is
-  ``-sign(cos) cos^2`` = ``-sign(u.v) (u.v)^2 / (|u|^2 |v|^2)``: the key.
+  ``-sign(cos) cos^2`` = ``-sign(u.v) (u.v)^2 / (|u|^2 |v|^2)``: the key
+  (:meth:`CirclePolygon.separation`).  The strings use :meth:`CirclePolygon.chord_key`:
+  on one circle the same key times the constant ``r^4``, ``-sign(u.v) (u.v)^2``, with no
+  division (an inverse in a number field of large degree can cost seconds); it compares
+  the chords of one polygon, which is all the strings do.
 
 The point m on an edge
 ----------------------
@@ -47,7 +51,10 @@ r, the half edge: every key is then the key of that half edge, ``1/4`` (polar) o
 
 ``m'`` is the midpoint of the arc ``a -> b`` when that arc is below half a turn
 and its antipode when it is above (the chord midpoint is then on the far side
-of C).  Note: an edge key and a vertex key are *not* on one scale (vertex
+of C).  The edge strings (:meth:`CirclePolygon.edge_key`) drop the constant ``|w|^2 r^2`` of
+their edge point likewise: they compare within the strings of one edge point (a
+palindrome test); use :meth:`CirclePolygon.separation_from_edge` to compare across
+edges.  Note: an edge key and a vertex key are *not* on one scale (vertex
 strings start with a chord, edge strings with a half chord); compare strings of
 the same kind only.
 
@@ -61,9 +68,9 @@ bisector would need a square root outside the configuration's field).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cmp_to_key
+from functools import cached_property, cmp_to_key
 
-from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
+from ..exact import FieldElement, exact_key, fmpq, normal_turn, rational_sqrt, sign
 from ..geometry import compare_directions
 
 __all__ = ["CirclePolygon", "level_polygon", "polygon_from_directions", "angular_distance",
@@ -125,10 +132,65 @@ class CirclePolygon:
     def separation(self, i: int, j: int):
         """Exact key, strictly increasing in the chord |v_i v_j| (equal iff equal chords)."""
         n = self.n
+        i, j = i % n, j % n
+        a, b = self.directions[i], self.directions[j]
+        if self.polar:
+            return angular_distance(a, b)
+        d = _dot(a, b)
+        s = sign(d)
+        if s == 0:
+            return d * 0
+        inverse = self.inverse_lengths           # -s d^2 / (|a|^2 |b|^2), one inverse per length
+        return -s * d * d * inverse[i] * inverse[j]
+
+    @cached_property
+    def inverse_lengths(self) -> tuple:
+        """Cartesian: ``1 / |u|^2`` of each direction, one inverse per distinct length."""
+        seen: dict = {}
+        out = []
+        for d in self.directions:
+            length = _dot(d, d)
+            key = exact_key(length)
+            if key not in seen:
+                seen[key] = 1 / length
+            out.append(seen[key])
+        return tuple(out)
+
+    @cached_property
+    def one_circle(self) -> bool:
+        """Cartesian: every direction vector has the same length (a level polygon)."""
+        if self.polar or not self.directions:
+            return True
+        first = _dot(self.directions[0], self.directions[0])
+        return all(_dot(d, d) == first for d in self.directions)
+
+    def chord_key(self, i: int, j: int):
+        """An exact key, strictly increasing in the chord |v_i v_j|, for comparing the
+        chords of *this* polygon (the strings, Section 3): :meth:`separation`, or on one
+        circle (:attr:`one_circle`) ``-sign(u.v) (u.v)^2``, the separation times the
+        positive constant ``|u|^2 |v|^2 = r^4`` -- no division (a field inverse can cost
+        seconds in a large number field)."""
+        n = self.n
         a, b = self.directions[i % n], self.directions[j % n]
         if self.polar:
             return angular_distance(a, b)
-        return _cosine_key(a, b)
+        if not self.one_circle:
+            return _cosine_key(a, b)
+        d = _dot(a, b)
+        return -sign(d) * d * d
+
+    def edge_key(self, i: int, j: int):
+        """An exact key, strictly increasing in the distance from m (the point of edge
+        (i, i+1), as :meth:`separation_from_edge`) to vertex j, for comparing the
+        distances from *one* edge point (an edge string CW_m, ACW_m): on one circle the
+        separation times the positive constant ``|w|^2 r^2`` of that edge, no division."""
+        if self.polar or not self.one_circle:
+            return self.separation_from_edge(i, j)
+        w = self.edge_direction(i)
+        if w is None:      # the edge is a diameter: m = C, every vertex at distance r
+            return self._zero()
+        d = _dot(w, self.directions[j % self.n])
+        return -sign(d) * d * d
 
     def edge_direction(self, i: int):
         """Direction (turn or vector) from C of the point m' of the circle on the ray C->m,

@@ -10,6 +10,7 @@ turn of the line in [0, 1/2), or the ray of its doubled angle (``lemma-LOS-Passe
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from math import gcd
 
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from .circle_polygon import CirclePolygon
@@ -102,12 +103,51 @@ def bisector_line(polar: bool, a, b):
     return ray_value(*prod)
 
 
+def integer_directions(dirs):
+    """Rational direction vectors of one length, times one positive integer: int pairs
+    of one length (rays, lines and angles unchanged; cheap exact arithmetic without
+    division), or None when a coordinate is not an fmpq or the lengths differ."""
+    den = 1
+    for x, y in dirs:
+        if type(x) is not fmpq or type(y) is not fmpq:
+            return None
+        qx, qy = int(x.q), int(y.q)
+        if den % qx:
+            den = den // gcd(den, qx) * qx
+        if den % qy:
+            den = den // gcd(den, qy) * qy
+    out = [(int(x.p) * (den // int(x.q)), int(y.p) * (den // int(y.q))) for x, y in dirs]
+    x0, y0 = out[0]
+    r2 = x0 * x0 + y0 * y0
+    for x, y in out:
+        if x * x + y * y != r2:
+            return None
+    return out
+
+
+def integer_gap_key(a, b) -> tuple:
+    """For int vectors a, b of one length: a key equal for equal counter-clockwise
+    angles from a to b and increasing with it, (class, value) with class 0 below half a
+    turn, 1 half a turn, 2 above, 3 a full turn (a == b)."""
+    c = a[0] * b[1] - a[1] * b[0]
+    d = a[0] * b[0] + a[1] * b[1]
+    if c > 0:
+        return (0, -d * abs(d))
+    if c < 0:
+        return (2, d * abs(d))
+    return (1, 0) if d < 0 else (3, 0)
+
+
 def gap_ids(poly: CirclePolygon) -> list:
     """Small integers, equal iff the counter-clockwise gaps between consecutive vertices
     are equal (exact)."""
     n, dirs = poly.n, poly.directions
     ids: dict = {}
     if not poly.polar and n > 1:
+        u = integer_directions(dirs)
+        if u is not None:
+            return [ids.setdefault(integer_gap_key(u[i], u[(i + 1) % n]), len(ids))
+                    for i in range(n)]
         lengths = [dot(d, d) for d in dirs]
         if all(x == lengths[0] for x in lengths):
             # one circle: |a|^2 |b|^2 is the same for every gap, so the undivided key
@@ -123,6 +163,27 @@ def gap_ids(poly: CirclePolygon) -> list:
                     for i in range(n)]
     return [ids.setdefault(hashable_key(ccw_gap_key(poly.polar, dirs[i], dirs[(i + 1) % n])),
                            len(ids)) for i in range(n)]
+
+
+def circle_line_keys(poly: CirclePolygon):
+    """``(vertex_keys, edge_keys)``: hashable keys of the lines through C of the vertices
+    and of the edge points (the edge's midpoint direction, or the perpendicular of a
+    diameter edge), equal iff the lines are equal, without a division: for a Cartesian
+    polygon on one circle of radius r, the line of v is the ray of v^2 (complex square:
+    its doubled angle) and the line of the edge point of (a, b) the ray of a b (the
+    doubled angle of the arc's bisector; (a + b)^2 = a b (2 + 2 Re(a conj b) / r^2) is a
+    positive multiple of it, and for a diameter a b = -a^2 is the perpendicular's
+    square); all have length r^2, so equal rays are equal vectors.  None for polar
+    polygons or directions of different lengths (use :func:`line_value`)."""
+    if poly.polar or not poly.one_circle:
+        return None
+    dirs, n = poly.directions, poly.n
+    vertex = [(exact_key(x * x - y * y), exact_key(2 * x * y)) for x, y in dirs]
+    edge = []
+    for i in range(n):
+        (ax, ay), (bx, by) = dirs[i], dirs[(i + 1) % n]
+        edge.append((exact_key(ax * bx - ay * by), exact_key(ax * by + ay * bx)))
+    return vertex, edge
 
 
 def angle_order_key(d):

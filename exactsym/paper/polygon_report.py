@@ -24,10 +24,14 @@ the check's degree / with the number of lines (when the check says symmetric);
 null when no leader is elected; all three null above :data:`LEADER_LIMIT`.
 The level of radius 0 (a robot at C) gets ``"paper": null``.
 
-Verdicts are computed once per polygon *shape* (:func:`shape_key`: equal
-counter-clockwise gaps from vertex 0, i.e. a rotation and scaling keeping the storage
-order) and relabelled by position for the other levels of that shape (every single-robot
-level shares one): a configuration of t levels of one shape costs one computation.
+Verdicts are computed once per polygon *shape* (:func:`verdict_key`: for 4 to
+:data:`MEMO_LIMIT` vertices the combinatorial shape of
+:mod:`exactsym.paper.polygon_shape`, gaps, lines and chord ranks interned to small
+integers, with the proof that equal shapes get equal verdicts; otherwise
+:func:`shape_key`, equal counter-clockwise gaps from vertex 0, i.e. a rotation and
+scaling keeping the storage order) and relabelled by position for the other levels of
+that shape (every single-robot level shares one): a configuration of t levels of one
+shape costs one computation.
 
 With ``options["strings"]`` the entry also gains ``"strings"``:
 ``{"metric": "angular-distance" | "signed-squared-cosine", "cw": [[...], ...],
@@ -37,12 +41,15 @@ axes), or ``{"omitted": reason}`` above :data:`STRING_LIMIT` vertices.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 from ..exact import as_fmpq, exact_key, number_text, sign
 from ..configuration import no_cycle_collection
 from . import polygon as paper
 from .circle_polygon import level_polygon
 from .family.concentric import mirror_lines
 from .keys import ccw_gap_key
+from .polygon_shape import MIN_VERTICES, combinatorial_key
 
 #: Largest polygon whose CW/ACW strings are written out (n^2 numbers).
 STRING_LIMIT = 60
@@ -60,6 +67,19 @@ def degree_json(value):
 
 def level_verdicts(polygon) -> dict:
     """The ``"paper"`` entry for one polygon."""
+    return _verdicts_and_type(polygon)[0]
+
+
+def _type_facts(kind) -> tuple | None:
+    """What the audit reads of a polygon's type (:func:`exactsym.audit_levels.level_findings`,
+    ``lemma-sym-regular``): its name and whether every mirror passes through a vertex."""
+    if kind is None:
+        return None
+    return (str(kind), all(t > 0 for t in kind.through))
+
+
+def _verdicts_and_type(polygon) -> tuple[dict, tuple | None]:
+    """``(level_verdicts(polygon), type facts)`` (:func:`_type_facts`)."""
     n = polygon.n
     check = paper.check_symmetry(polygon)
     lines = paper.straight_lines(polygon)
@@ -96,7 +116,7 @@ def level_verdicts(polygon) -> dict:
                                   "tie": plus.tie or minus.tie}
     else:
         out["leader_sym"] = out["leader_sym_by_lines"] = out["leader_asym"] = None
-    return out
+    return out, _type_facts(kind)
 
 
 def _key_text(key) -> str:
@@ -107,15 +127,20 @@ def level_strings(polygon) -> dict:
     if polygon.n > STRING_LIMIT:
         return {"omitted": f"{polygon.n} vertices: strings are written for at most "
                 f"{STRING_LIMIT}"}
-    strings = paper.vertex_strings(polygon)
+    # the values of the metric (the separation), not the polygon's undivided chord keys
+    n = polygon.n
+    cw = [[_key_text(polygon.separation(i, (i - s) % n)) for s in range(1, n)]
+          for i in range(n)]
     return {"metric": polygon.metric,
             "vertices": list(polygon.labels),
-            "cw": [[_key_text(k) for k in cw] for cw, _ in strings],
-            "acw": [[_key_text(k) for k in acw] for _, acw in strings]}
+            "cw": cw,
+            "acw": [row[::-1] for row in cw]}
 
 
-#: Polygons with at most this many vertices share their verdicts with every polygon of
-#: the same shape (:func:`shape_key`); larger ones are computed one by one.
+#: Polygons of MIN_VERTICES to MEMO_LIMIT vertices share their verdicts with every
+#: polygon of the same combinatorial shape (:func:`exactsym.paper.polygon_shape.combinatorial_key`,
+#: O(n^2) small integers); the others with every polygon of the same exact shape
+#: (:func:`shape_key`, O(n)).
 MEMO_LIMIT = 64
 
 
@@ -160,56 +185,119 @@ def _relabelled(verdict: dict, labels: tuple, new_labels: tuple) -> dict:
     return out
 
 
+def verdict_key(polygon):
+    """The key under which :class:`VerdictMemo` shares verdicts: the combinatorial shape
+    (:func:`exactsym.paper.polygon_shape.combinatorial_key`: gaps, diameters, lines and
+    chord ranks interned to small integers; its docstring proves that equal keys give
+    equal verdicts) for :data:`MIN_VERTICES` to :data:`MEMO_LIMIT` vertices, else the
+    exact shape (:func:`shape_key`)."""
+    if MIN_VERTICES <= polygon.n <= MEMO_LIMIT:
+        return combinatorial_key(polygon)
+    return shape_key(polygon)
+
+
+def _single_relabeller(verdict: dict, label):
+    """``lambda new: _relabelled(verdict, (label,), (new,))`` for a single-vertex
+    polygon, without the per-call lookups (one call per robot on random
+    configurations); None when a label in ``verdict`` is not ``label``."""
+    keys = [k for k in _LABEL_KEYS if verdict.get(k) is not None]
+    asym = verdict.get("leader_asym")
+    asym = asym if isinstance(asym, dict) else None
+    labels = [verdict[k] for k in keys] + \
+        ([x for x in (asym["+1"], asym["-1"]) if x is not None] if asym else [])
+    if any(x != label for x in labels):
+        return None
+    definition = verdict.get("definition")
+    definition = definition if isinstance(definition, dict) else None
+
+    def relabelled(new) -> dict:
+        out = dict(verdict)
+        for k in keys:
+            out[k] = new
+        if asym is not None:
+            out["leader_asym"] = {"+1": None if asym["+1"] is None else new,
+                                  "-1": None if asym["-1"] is None else new,
+                                  "tie": asym["tie"]}
+        if definition is not None:
+            out["definition"] = dict(definition)
+        return out
+    return relabelled
+
+
 class VerdictMemo:
-    """:func:`level_verdicts` for many polygons: computed once per shape (:func:`shape_key`)
-    for polygons of at most :data:`MEMO_LIMIT` vertices, relabelled for the others (a
-    configuration of t levels of one shape -- single robots, rotated regular polygons --
-    costs one computation, not t)."""
+    """:func:`level_verdicts` for many polygons: computed once per shape
+    (:func:`verdict_key`), relabelled for the others (a configuration of t levels of one
+    shape -- single robots, rotated regular polygons, the generic orbits of a dihedral
+    group -- costs one computation, not t).  :meth:`type_facts` gives what the audit
+    reads of the polygon's type, shared the same way."""
 
     def __init__(self):
         self.memo: dict = {}
 
     def verdicts(self, polygon) -> dict:
-        if polygon.n > MEMO_LIMIT:
-            return level_verdicts(polygon)
-        key = shape_key(polygon)
+        return self.verdicts_and_type(polygon)[0]
+
+    def verdicts_and_type(self, polygon) -> tuple[dict, tuple | None]:
+        key = verdict_key(polygon)
         hit = self.memo.get(key)
         if hit is None:
-            hit = self.memo[key] = (polygon.labels, level_verdicts(polygon))
+            verdict, facts = _verdicts_and_type(polygon)
+            self.memo[key] = (polygon.labels, verdict, facts)
+            return verdict, facts
         try:
-            return _relabelled(hit[1], hit[0], polygon.labels)
+            return _relabelled(hit[1], hit[0], polygon.labels), hit[2]
         except KeyError:            # a label that is not a vertex's: compute it
-            return level_verdicts(polygon)
+            return _verdicts_and_type(polygon)
+
+
+@dataclass(frozen=True)
+class LevelSection:
+    """The polygon layer's part of the report, per level of ``levels`` (nearest first):
+    ``verdicts``, the ``"paper"`` entries (None for the robot at C); ``strings``, the
+    ``"strings"`` entries (None when not asked for); ``types``, what the audit reads of
+    each level's type (``(name, every mirror through a vertex)``, None for no type or
+    the robot at C: :func:`_type_facts`)."""
+    verdicts: tuple
+    strings: tuple | None
+    types: tuple
 
 
 def level_reports(config, levels, strings: bool = False) -> tuple[tuple, tuple | None]:
-    """``(verdicts, strings)``: per level of ``levels`` (nearest first) the ``"paper"``
-    entry (None for the robot at C) and, when ``strings``, the ``"strings"`` entry (None
-    for the robot at C; ``strings`` None when not asked for)."""
+    """``(verdicts, strings)`` of :func:`level_section`."""
+    section = level_section(config, levels, strings)
+    return section.verdicts, section.strings
+
+
+def level_section(config, levels, strings: bool = False) -> LevelSection:
+    """The :class:`LevelSection` of ``levels``: one verdict per polygon shape
+    (:class:`VerdictMemo`), relabelled for the others."""
     with no_cycle_collection():
-        return _level_reports(config, levels, strings)
+        return _level_section(config, levels, strings)
 
 
-def _level_reports(config, levels, strings: bool) -> tuple[tuple, tuple | None]:
+def _level_section(config, levels, strings: bool) -> LevelSection:
     memo = VerdictMemo()
     single = None          # the verdict of a single-vertex level, and its label
-    verdicts, texts = [], []
+    verdicts, texts, types = [], [], []
     for index, level in enumerate(levels.levels):
         if index == 0 and sign(level.radius_squared) == 0:
             verdicts.append(None)
             texts.append(None)
+            types.append(None)
             continue
         if len(level.points) == 1 and not strings:
             # every single vertex has the same shape: no polygon needs building
             if single is None:
                 polygon = level_polygon(config, levels, index)
-                single = (polygon.labels, level_verdicts(polygon))
-            try:
-                verdicts.append(_relabelled(single[1], single[0], tuple(level.points)))
+                verdict, facts = _verdicts_and_type(polygon)
+                single = (_single_relabeller(verdict, polygon.labels[0]), facts)
+            if single[0] is not None:
+                verdicts.append(single[0](level.points[0]))
+                types.append(single[1])
                 continue
-            except KeyError:        # a label that is not the vertex's: compute it
-                pass
         polygon = level_polygon(config, levels, index)
-        verdicts.append(memo.verdicts(polygon))
+        verdict, facts = memo.verdicts_and_type(polygon)
+        verdicts.append(verdict)
+        types.append(facts)
         texts.append(level_strings(polygon) if strings else None)
-    return tuple(verdicts), (tuple(texts) if strings else None)
+    return LevelSection(tuple(verdicts), tuple(texts) if strings else None, tuple(types))

@@ -21,7 +21,7 @@ from .concentric import (Ring, has_lines, intersect_lines, is_symmetric_pair,
                          is_symmetric_polygon, lines_text, new_ring)
 from .elect_leader import elect_leader_asym_on, first_of_ring_in_ordering
 from .find_asymmetry import find_asymmetry, find_asymmetry_pair
-from ..keys import HALF, ccw_gap_key, dot, ray_key
+from ..keys import HALF, ccw_gap_key, cross, dot
 from .limits import DEFAULT_LIMITS, Limits, MAX_QUADRATIC_N, WorkBudgetExceeded
 from .projection import radial_projection, robot_in, scale_to
 from .trace import few_names, trace_entry
@@ -161,8 +161,9 @@ def _turn_key(u, v, orientation):
 def _nearest_turn(u, others, orientation):
     """The smallest :func:`_turn_key` from u to a direction of ``others`` off u's ray
     (None when there is none): computed once, so that each epsilon tried costs O(1)."""
-    ray = ray_key(False, u)
-    keys = [_turn_key(u, d, orientation) for d in others if ray_key(False, d) != ray]
+    # off u's ray: not (cross = 0 and dot > 0) -- the rays compared without a division
+    keys = [_turn_key(u, d, orientation) for d in others
+            if sign(cross(u, d)) != 0 or sign(dot(u, d)) <= 0]
     return min(keys) if keys else None
 
 

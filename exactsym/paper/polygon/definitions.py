@@ -5,22 +5,39 @@ Theorem 1 (``theorem1``: the string conditions for asymmetry).
 
 from __future__ import annotations
 
-from ...exact import normal_turn
+from ...exact import exact_key, normal_turn
 from ..circle_polygon import CirclePolygon
 from ..keys import HALF, line_value, ray_value
 from .strings import string_classes
 
 
-def direction_set(polygon: CirclePolygon):
+def _point_key(v) -> tuple:
+    return (exact_key(v[0]), exact_key(v[1]))
+
+
+def direction_set(polygon: CirclePolygon, scale=None):
+    """The vertices' directions as a set of hashable keys: turns (polar); on one circle
+    (:attr:`~exactsym.paper.circle_polygon.CirclePolygon.one_circle`) the vectors times
+    ``scale`` themselves (no division); else the rays (sign x, y/x)."""
     if polygon.polar:
         return set(polygon.directions)
+    if scale is not None:
+        return {_point_key((scale * d[0], scale * d[1])) for d in polygon.directions}
     return {ray_value(*d) for d in polygon.directions}
 
 
-def maps_onto_itself(polygon: CirclePolygon, image) -> bool:
-    dirs = direction_set(polygon)
+def maps_onto_itself(polygon: CirclePolygon, image, scale=None) -> bool:
+    """``image`` maps every vertex direction to a vertex direction.  Cartesian, on one
+    circle of radius r: pass ``scale`` with |image(v)| = scale r for every vertex v; then
+    image(v) points at a vertex iff it *equals* scale times that vertex's vector (same ray
+    and same length), compared exactly without a division."""
     if polygon.polar:
+        dirs = direction_set(polygon)
         return all(image(t) in dirs for t in polygon.directions)
+    if scale is not None and polygon.one_circle:
+        dirs = direction_set(polygon, scale)
+        return all(_point_key(image(d)) in dirs for d in polygon.directions)
+    dirs = direction_set(polygon)
     return all(ray_value(*image(d)) in dirs for d in polygon.directions)
 
 
@@ -42,17 +59,20 @@ def definition_mirrors(polygon: CirclePolygon) -> list:
         return [line_value(polygon.polar, polygon.directions[0])]
     found = {}
     d0 = polygon.directions[0]
+    # on one circle of radius r, |z_0 z_j conj(w)| = r^2 |w|: the images are r^2 times
+    # the reflected vertices
+    scale = None if polygon.polar else d0[0] * d0[0] + d0[1] * d0[1]
     for dj in polygon.directions:
         if polygon.polar:
             image = (lambda c: lambda t: normal_turn(c - t))(d0 + dj)
-            key = line_value(polygon.polar, (d0 + dj) / 2)
+            if maps_onto_itself(polygon, image):
+                found[line_value(polygon.polar, (d0 + dj) / 2)] = True
         else:
             a = d0[0] * dj[0] - d0[1] * dj[1]
             b = d0[0] * dj[1] + d0[1] * dj[0]
             image = (lambda a, b: lambda w: (a * w[0] + b * w[1], b * w[0] - a * w[1]))(a, b)
-            key = ray_value(*(a, b))
-        if maps_onto_itself(polygon, image):
-            found[key] = True
+            if maps_onto_itself(polygon, image, scale):
+                found[ray_value(a, b)] = True
     if n == 2:      # the line through both points contains all of them: not a line of symmetry
         found.pop(line_value(polygon.polar, polygon.directions[0]), None)
     return list(found)
@@ -74,7 +94,7 @@ def is_skew_symmetric(polygon: CirclePolygon) -> bool:
         return False
     if polygon.polar:
         return maps_onto_itself(polygon, lambda t: normal_turn(t + HALF))
-    return maps_onto_itself(polygon, lambda d: (-d[0], -d[1]))
+    return maps_onto_itself(polygon, lambda d: (-d[0], -d[1]), 1)
 
 
 def is_symmetric(polygon: CirclePolygon) -> bool:

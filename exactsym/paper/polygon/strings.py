@@ -47,10 +47,12 @@ def check_orientation(orientation: int) -> None:
 
 
 def cw_string(polygon: CirclePolygon, m: int, orientation: int = 1) -> tuple:
-    """CW_m for the vertex m: distances (keys) from m to v_1..v_{k-1}, v_1 next clockwise."""
+    """CW_m for the vertex m: distances (keys) from m to v_1..v_{k-1}, v_1 next clockwise.
+    The keys are the polygon's :meth:`~exactsym.paper.circle_polygon.CirclePolygon.chord_key`:
+    equal and ordered as the distances, comparable between strings of one polygon."""
     check_orientation(orientation)
     k = polygon.n
-    return tuple(polygon.separation(m, (m - orientation * s) % k) for s in range(1, k))
+    return tuple(polygon.chord_key(m, (m - orientation * s) % k) for s in range(1, k))
 
 
 def acw_string(polygon: CirclePolygon, m: int, orientation: int = 1) -> tuple:
@@ -60,11 +62,13 @@ def acw_string(polygon: CirclePolygon, m: int, orientation: int = 1) -> tuple:
 
 def cw_string_edge(polygon: CirclePolygon, e: int, orientation: int = 1) -> tuple:
     """CW_m for m the midpoint of edge e = (e, e+1) (storage order, counter-clockwise):
-    distances to v_1..v_k, v_1 the endpoint next clockwise to m."""
+    distances to v_1..v_k, v_1 the endpoint next clockwise to m (keys of
+    :meth:`~exactsym.paper.circle_polygon.CirclePolygon.edge_key`: comparable within the
+    strings of one edge point)."""
     check_orientation(orientation)
     k = polygon.n
     first = e if orientation == 1 else e + 1
-    return tuple(polygon.separation_from_edge(e, (first - orientation * s) % k) for s in range(k))
+    return tuple(polygon.edge_key(e, (first - orientation * s) % k) for s in range(k))
 
 
 def acw_string_edge(polygon: CirclePolygon, e: int, orientation: int = 1) -> tuple:
@@ -172,7 +176,7 @@ def string_classes(polygon: CirclePolygon, orientation: int = 1):
         f = p + 1
         if f > n - 1 or below_half(polygon, dirs[i], dirs[w(f)], ccw) <= 0:
             return ccw, start, ()
-        if p > 0 and not polygon.separation(i, w(f)) > polygon.separation(i, w(p)):
+        if p > 0 and not polygon.chord_key(i, w(f)) > polygon.chord_key(i, w(p)):
             return ccw, start, ()
         flipped = reflect_direction(polygon, dirs[w(f)], dirs[i])
         before = dirs[w(f - 1)]

@@ -8,7 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..circle_polygon import CirclePolygon
-from ..keys import ccw_gap_key, hashable_key, line_value
+from ..keys import ccw_gap_key, circle_line_keys, hashable_key, line_value
 from .definitions import definition_mirrors
 from .strings import (HASH_BASE, HASH_MOD, Hasher, cw_string_edge, gap_classes, perpendicular,
                       string_classes, vertex_strings)
@@ -86,6 +86,9 @@ def straight_lines(polygon: CirclePolygon, reference: bool = False) -> list[Stra
         vp = [i for i, (a, b) in enumerate(vertex_strings(polygon)) if a == b]
     else:
         vp = vertex_palindromes(polygon)
+    circle = circle_line_keys(polygon) if n >= 2 else None
+    if circle is not None:
+        return _straight_lines_on_circle(polygon, vp, circle, reference)
     for i in vp:
         found.setdefault(line_value(polygon.polar, polygon.directions[i]), []).append(("vertex", i))
     if n >= 2:
@@ -106,6 +109,31 @@ def straight_lines(polygon: CirclePolygon, reference: bool = False) -> list[Stra
             ekeys.setdefault(line_value(polygon.polar, w), []).append(e)
     return [StraightLine(key, tuple(vkeys.get(key, ())), tuple(ekeys.get(key, ())), tuple(at))
             for key, at in found.items()]
+
+
+def _straight_lines_on_circle(polygon, vp, circle, reference) -> list[StraightLine]:
+    """:func:`straight_lines` with the division-free line keys of
+    :func:`exactsym.paper.keys.circle_line_keys` (same lines, same order); the exact key of
+    a line found is computed once, from its first vertex or edge point."""
+    vk, ek = circle
+    found: dict = {}
+    first: dict = {}
+    for i in vp:
+        found.setdefault(vk[i], []).append(("vertex", i))
+        first.setdefault(vk[i], polygon.directions[i])
+    for e in edge_palindromes(polygon, reference):
+        if ek[e] not in first:
+            w = polygon.edge_direction(e)
+            first[ek[e]] = w if w is not None else perpendicular(polygon, polygon.directions[e])
+        found.setdefault(ek[e], []).append(("edge", e))
+    vkeys: dict = {}
+    for i, k in enumerate(vk):
+        vkeys.setdefault(k, []).append(i)
+    ekeys: dict = {}
+    for e, k in enumerate(ek):
+        ekeys.setdefault(k, []).append(e)
+    return [StraightLine(line_value(False, first[k]), tuple(vkeys.get(k, ())),
+                         tuple(ekeys.get(k, ())), tuple(at)) for k, at in found.items()]
 
 
 def is_regular(polygon: CirclePolygon) -> bool:
