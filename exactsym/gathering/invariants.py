@@ -39,10 +39,18 @@ LABELS = {
 }
 
 
+#: I3 names the statement of the move that a fresh Look contradicts: obs-v-move is about
+#: MakeAsym's epsilon mover (its single-vertex branch); a FormGPattern move contradicts
+#: the sentence before the gathering lemmas (L1642-1643, "the robot for movement remains
+#: invariant"), which belongs to FormGPattern.
+I3_LABEL_OF_ROLE = {"MakeAsym": "obs-v-move", "Make_SymToAsym": "obs-v-move"}
+
+
 class Violation(Exception):
-    def __init__(self, invariant: str, instant: int, robots, witness: str):
+    def __init__(self, invariant: str, instant: int, robots, witness: str,
+                 label: str | None = None):
         self.invariant = invariant
-        self.label = LABELS[invariant]
+        self.label = label or LABELS[invariant]
         self.instant = instant
         self.robots = tuple(robots)
         self.witness = witness
@@ -172,7 +180,8 @@ class Checker:
             raise Violation("I3", t, sorted(set(plan) | {i}),
                             f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
                             f"Look with robot {i} at {g.fmt_point(rob.pos)}{where} plans "
-                            f"{_plan_text(plan)} ({d.status}: {d.detail})")
+                            f"{_plan_text(plan)} ({d.status}: {d.detail})",
+                            label=I3_LABEL_OF_ROLE.get(rob.role, "FormGPattern"))
 
     # -- after an arrival ----------------------------------------------------------------
     def after_arrival(self, world, i):
