@@ -48,13 +48,19 @@ from dataclasses import dataclass, field
 from typing import Iterator, Sequence
 
 from .configuration import Configuration
-from .geometry import PseudoAngle, intern_by_value, sorted_by_value
+import numpy as np
+
+from .geometry import (FILTER_EPS, PseudoAngle, certified_groups, float_differences,
+                       float_pseudo_angles,
+                       intern_by_value, sorted_by_value)
 from .exact import fmpq
 from .levels import Levels, levels_of
 from .strings import cyclic_occurrences as occurrences, cyclic_period
 
 __all__ = ["Isometry", "SymmetryGroup", "symmetry_group", "pseudo_angle", "least_rotation",
            "cyclic_period", "occurrences", "sort_by_exact_keys"]
+
+_FILTER_MIN = 64    # from this many rational points, rays are grouped by certified floats
 
 
 @dataclass(frozen=True)
@@ -330,6 +336,151 @@ def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=No
     return centre_index, rays, radii, gaps
 
 
+def _level_ranks(ring: Levels, n: int):
+    """``rank[i]``: the index of point i's level (nearest first, so ranks order as the
+    squared radii), or None unless the levels hold every point once."""
+    rank = [-1] * n
+    seen = 0
+    for li, level in enumerate(ring.levels):
+        for i in level.points:
+            if not 0 <= i < n or rank[i] != -1:
+                return None
+            rank[i] = li
+            seen += 1
+    return rank if seen == n else None
+
+
+class _LazyGaps:
+    """The exact angle from ray a to ray a + 1 (an ``fmpq`` pseudo-angle), computed from the
+    rays' integer vectors on first use: the float filter interned the gaps, so only the
+    few comparisons of the canonical labelling need values."""
+
+    __slots__ = ("rays", "vector", "cache")
+
+    def __init__(self, rays, vector):
+        self.rays, self.vector, self.cache = rays, vector, {}
+
+    def __len__(self) -> int:
+        return len(self.rays)
+
+    def __getitem__(self, a: int):
+        m = len(self.rays)
+        if not -m <= a < m:
+            raise IndexError(a)
+        a %= m
+        gap = self.cache.get(a)
+        if gap is None:
+            (ux, uy), (vx, vy) = self.vector(self.rays[a][0]), \
+                self.vector(self.rays[(a + 1) % m][0])
+            gap = self.cache[a] = _pseudo_angle_of_integers(ux * vx + uy * vy, ux * vy - uy * vx)
+        return gap
+
+
+def _filtered_rays(points, centre, rank):
+    """:func:`_cartesian_rays` for many rational points, as certified float filters over
+    NumPy arrays (``geometry.float_pseudo_angles``, ``certified_groups``): directions and
+    the angles between consecutive rays are grouped by floats with proven error bounds,
+    and exact integer keys are computed only inside groups the bound cannot split (ties
+    and near-ties).  ``radii`` are tuples of level ranks (same order as the squared
+    radii); returns ``(centre_index, rays, radii, gaps, gap_ids)`` or None when the floats
+    overflow."""
+    diffs = float_differences(points, centre)
+    if diffs is None:
+        return None
+    dx, dy, ex, ey = diffs
+    cx, cy = centre
+    den = cx.q * cy.q // cx.q.gcd(cy.q)
+    a0, b0 = cx.p * (den // cx.q), cy.p * (den // cy.q)
+    vectors: dict = {}
+
+    def vector(i):
+        v = vectors.get(i)
+        if v is None:
+            x, y = points[i]
+            v = vectors[i] = ((x.p * den - a0 * x.q) * y.q, (y.p * den - b0 * y.q) * x.q)
+        return v
+
+    keys, errs, sure = float_pseudo_angles(dx, dy, ex, ey)
+    exact: dict = {}
+    centre_index = None
+    for i in np.flatnonzero(~sure).tolist():
+        vx, vy = vector(i)
+        if not vx and not vy:
+            centre_index = i
+            continue
+        exact[i] = k = _pseudo_angle_of_integers(vx, vy)
+        keys[i], errs[i] = float(k), 2.0 ** -46
+    idx = np.arange(len(points))
+    if centre_index is not None:
+        idx = np.delete(idx, centre_index)
+    order, starts = certified_groups(keys[idx], errs[idx])
+    sorted_idx = idx[order].tolist()
+    rays: list = []
+    if len(starts) == len(sorted_idx):
+        rays = [(i,) for i in sorted_idx]
+    else:
+        bounds = starts.tolist() + [len(sorted_idx)]
+        for g in range(len(bounds) - 1):
+            members = sorted_idx[bounds[g]:bounds[g + 1]]
+            if len(members) == 1:
+                rays.append((members[0],))
+                continue
+            for i in members:
+                if i not in exact:
+                    exact[i] = _pseudo_angle_of_integers(*vector(i))
+            members.sort(key=lambda i: (exact[i], rank[i]))
+            ray = [members[0]]
+            for i in members[1:]:
+                if exact[i] == exact[ray[0]]:
+                    ray.append(i)
+                else:
+                    rays.append(tuple(ray))
+                    ray = [i]
+            rays.append(tuple(ray))
+    radii = [tuple([rank[i] for i in ray]) for ray in rays]
+    gaps = _LazyGaps(rays, vector)
+    return centre_index, rays, radii, gaps, _filtered_gap_ids(rays, gaps, dx, dy, ex, ey)
+
+
+def _filtered_gap_ids(rays, gaps, dx, dy, ex, ey) -> list[int]:
+    """Small integers, equal iff the exact gaps are equal: float gaps (the pseudo-angle of
+    ``(u . v, u x v)``) with a proven bound group them; exact values split the groups.
+    Bound on a dot or cross product of vectors known within Eu, Ev (componentwise), with
+    float sums Su, Sv of absolute components: ``(Su + 2 Eu) Ev + Eu Sv + 2^-50 Su Sv``."""
+    m = len(rays)
+    first = np.fromiter((ray[0] for ray in rays), dtype=np.int64, count=m)
+    ux, uy = dx[first], dy[first]
+    vx, vy = np.roll(ux, -1), np.roll(uy, -1)
+    eu = np.maximum(ex[first], ey[first])
+    ev = np.roll(eu, -1)
+    with np.errstate(all="ignore"):
+        su, sv = np.abs(ux) + np.abs(uy), np.abs(vx) + np.abs(vy)
+        bound = ((su + 2 * eu) * ev + eu * sv + FILTER_EPS * su * sv) * 1.01 + 1e-290
+        keys, errs, sure = float_pseudo_angles(ux * vx + uy * vy, ux * vy - uy * vx,
+                                               bound, bound)
+    for a in np.flatnonzero(~sure).tolist():
+        keys[a], errs[a] = float(gaps[a]), 2.0 ** -46
+    order, starts = certified_groups(keys, errs)
+    ids = [0] * m
+    bounds = starts.tolist() + [m]
+    sorted_a = order.tolist()
+    next_id = 0
+    for g in range(len(bounds) - 1):
+        members = sorted_a[bounds[g]:bounds[g + 1]]
+        if len(members) == 1:
+            ids[members[0]] = next_id
+            next_id += 1
+            continue
+        local: dict = {}
+        for a in members:
+            gap = gaps[a]
+            j = local.setdefault((gap.p, gap.q), next_id)
+            if j == next_id:
+                next_id += 1
+            ids[a] = j
+    return ids
+
+
 # ---------------------------------------------------------------- the group
 
 def symmetry_group(config: Configuration, rings: Levels | None = None) -> SymmetryGroup:
@@ -365,15 +516,25 @@ def symmetry_group(config: Configuration, rings: Levels | None = None) -> Symmet
         points = None
     else:
         points = config.points
-        centre_index, rays, radii, gaps = _cartesian_rays(points, centre,
-                                                          homogeneous=ring.sec.homogeneous)
+        filtered = None
+        if n >= _FILTER_MIN and isinstance(centre[0], fmpq) and isinstance(centre[1], fmpq) \
+                and isinstance(points[0][0], fmpq):
+            rank = _level_ranks(ring, n)
+            if rank is not None:
+                filtered = _filtered_rays(points, centre, rank)
+        if filtered is not None:
+            centre_index, rays, radii, gaps, gap_ids = filtered
+        else:
+            centre_index, rays, radii, gaps = _cartesian_rays(points, centre,
+                                                              homogeneous=ring.sec.homogeneous)
         ray_turns = None
     m = len(rays)
 
     # symbols, interned: equal ids iff equal symbols; values are compared only lazily
     ray_ids = _intern(radii, True)
-    gap_ids = intern_by_value(gaps) if gaps and isinstance(gaps[0], PseudoAngle) \
-        else _intern(gaps, False)
+    if ring.polar or filtered is None:
+        gap_ids = intern_by_value(gaps) if gaps and isinstance(gaps[0], PseudoAngle) \
+            else _intern(gaps, False)
     width = max(gap_ids) + 1
     ccw = [ray_ids[i] * width + gap_ids[i] for i in range(m)]
     cw = [ray_ids[-i % m] * width + gap_ids[(-i - 1) % m] for i in range(m)]
