@@ -274,3 +274,49 @@ def certified_groups(keys, errs):
     lo = np.minimum.accumulate((k - e)[::-1])[::-1]
     cut = hi[:-1] < lo[1:]
     return order, np.flatnonzero(np.concatenate(([True], cut)))
+
+
+def angular_ranks(points, centre) -> list[int] | None:
+    """``rank[i]``: the position of point i when all points are sorted counter-clockwise
+    about ``centre`` from the +x ray (as :func:`angular_sort`; the point at the centre
+    ranks -1), for rational points and centre.  Floats with proven bounds
+    (:func:`float_pseudo_angles`) order whatever they can; points whose quadrant is
+    uncertain, and groups the bounds cannot split, are ordered by the exact rational
+    pseudo-angle.  Points of one direction get distinct ranks in an arbitrary order (no
+    two of them share a level).  None when the floats overflow."""
+    diffs = float_differences(points, centre)
+    if diffs is None:
+        return None
+    dx, dy, ex, ey = diffs
+    keys, errs, sure = float_pseudo_angles(dx, dy, ex, ey)
+    cx, cy = centre
+    exact: dict = {}
+
+    def exact_key(i):
+        key = exact.get(i)
+        if key is None:
+            a = PseudoAngle(points[i][0] - cx, points[i][1] - cy)
+            key = exact[i] = a.quadrant + a.num / a.den
+        return key
+
+    rank = [0] * len(points)
+    at_centre = None
+    for i in np.flatnonzero(~sure).tolist():
+        if points[i][0] == cx and points[i][1] == cy:
+            at_centre = i
+            keys[i], errs[i] = -1.0, 0.5
+            continue
+        keys[i], errs[i] = float(exact_key(i)), 2.0 ** -46
+    order, starts = certified_groups(keys, errs)
+    flat = order.tolist()
+    if len(starts) < len(flat):
+        bounds = starts.tolist() + [len(flat)]
+        for g in range(len(bounds) - 1):
+            a, b = bounds[g], bounds[g + 1]
+            if b - a > 1:
+                flat[a:b] = sorted(flat[a:b], key=exact_key)
+    for position, i in enumerate(flat):
+        rank[i] = position
+    if at_centre is not None:
+        rank[at_centre] = -1
+    return rank

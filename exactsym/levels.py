@@ -17,8 +17,11 @@ from dataclasses import dataclass
 
 from .configuration import Configuration, no_cycle_collection
 from .exact import exact_key, exact_sorted, fmpq
-from .geometry import PseudoAngle, angular_sort, sorted_by_value, squared_distance
+from .geometry import (PseudoAngle, angular_ranks, angular_sort, sorted_by_value,
+                       squared_distance)
 from .sec import Circle, smallest_enclosing_circle
+
+_FILTER_MIN = 64    # from this many rational points, levels are ordered by certified floats
 
 
 @dataclass(frozen=True)
@@ -65,9 +68,19 @@ def _levels_of(config: Configuration) -> Levels:
     circle = smallest_enclosing_circle(points)
     x, y, d = circle.homogeneous
     if isinstance(d, fmpq) and d == 1:
-        return Levels(circle, _group_levels([squared_distance(circle.centre, p) for p in points],
-                                            lambda members: angular_sort(circle.centre, points,
-                                                                         members)), False)
+        centre = circle.centre
+        order_level = None
+        if len(points) >= _FILTER_MIN and isinstance(centre[0], fmpq) \
+                and isinstance(centre[1], fmpq) and isinstance(points[0][0], fmpq):
+            rank = angular_ranks(points, centre)       # one filtered pass over all points
+            if rank is not None:
+                def order_level(members):
+                    return sorted(members, key=rank.__getitem__)
+        if order_level is None:
+            def order_level(members):
+                return angular_sort(centre, points, members)
+        return Levels(circle, _group_levels([squared_distance(centre, p) for p in points],
+                                            order_level), False)
     # centre X/D kept homogeneous: group by D^2 r^2 and sort by the directions D p - (X, Y),
     # which point as p - centre does (D > 0); divide by D^2 once per level
     vectors = [(d * p[0] - x, d * p[1] - y) for p in points]

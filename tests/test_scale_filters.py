@@ -124,3 +124,21 @@ def test_exact_fallback_runs_on_near_ties():
     keys[2], errs[2] = 2.0, 2.0 ** -46
     order, starts = certified_groups(keys, errs)
     assert len(starts) == 2 and sorted(order[:2].tolist()) == [0, 1]
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(seed, min_size=1, max_size=20), st.booleans(), st.lists(nudge, max_size=3))
+def test_filtered_levels_equal_exact(seeds, mirror, nudges):
+    """Levels ordered by one filtered pass (``geometry.angular_ranks``) equal levels
+    ordered by the exact comparison sort (``geometry.angular_sort``)."""
+    import exactsym.levels as levels
+    config = _configuration(seeds, mirror, nudges)
+    saved = levels._FILTER_MIN
+    try:
+        levels._FILTER_MIN = 1
+        fast = levels.levels_of(config)
+        levels._FILTER_MIN = 10 ** 12
+        slow = levels.levels_of(config)
+    finally:
+        levels._FILTER_MIN = saved
+    assert fast.levels == slow.levels
