@@ -23,6 +23,8 @@ from dataclasses import dataclass
 from functools import cached_property
 from typing import Iterable, Mapping, Sequence
 
+import numpy as np
+
 from .fileformat import ConfigFile, PointSpec, read_config
 from .errors import ExpressionError, InputError, MoveImpossible
 from .exact import (FieldElement, RationalSystem, evaluate, exact_key, fmpq, normal_turn,
@@ -216,6 +218,8 @@ def _expressions(specs: Sequence[PointSpec], polar_only: bool):
 
 
 def _system_and_values(exprs: list[Node], owners, turns, source: str):
+    if not turns and all(type(e) is Const for e in exprs):   # plain rationals: Q, no scan
+        return RationalSystem(), [fmpq(e.value.numerator, e.value.denominator) for e in exprs]
     try:
         system = number_system(exprs, turns)
     except ExpressionError as err:
@@ -352,6 +356,10 @@ def load(path) -> Configuration:
 
 def _coincident(config: Configuration) -> tuple[int, int] | None:
     """The first two indices of coincident points, or None."""
+    if config.polar is None and config.n >= 64 and isinstance(config.points[0][0], fmpq):
+        candidates = _equal_float_groups(config.points)
+        if candidates is not None:
+            return _first_coincident(config.points, candidates)
     seen: dict = {}
     keys = config.polar if config.polar is not None else config.points
     for i, (a, b) in enumerate(keys):
@@ -361,6 +369,47 @@ def _coincident(config: Configuration) -> tuple[int, int] | None:
         if j != i:
             return j, i
     return None
+
+
+def _equal_float_groups(points):
+    """Groups (lists of indices, at least two) of rational points whose correctly rounded
+    float pairs are equal: equal points have equal floats, so coincident points are only
+    to be looked for inside these groups.  None if a float is not finite."""
+    try:
+        fx = np.fromiter((float(p[0]) for p in points), dtype=float, count=len(points))
+        fy = np.fromiter((float(p[1]) for p in points), dtype=float, count=len(points))
+    except (OverflowError, ValueError):
+        return None
+    if not (np.isfinite(fx).all() and np.isfinite(fy).all()):
+        return None
+    order = np.lexsort((fy, fx))
+    same = (np.diff(fx[order]) == 0) & (np.diff(fy[order]) == 0)
+    if not same.any():
+        return []
+    groups, current = [], None
+    for a in np.flatnonzero(same).tolist():
+        if current is not None and current[-1] == order[a]:
+            current.append(int(order[a + 1]))
+        else:
+            current = [int(order[a]), int(order[a + 1])]
+            groups.append(current)
+    return groups
+
+
+def _first_coincident(points, groups) -> tuple[int, int] | None:
+    """As the dictionary scan of :func:`_coincident`: the least i with an equal earlier
+    point, and the first such point j; compared exactly inside each float group."""
+    best = None
+    for group in groups:
+        seen: dict = {}
+        for i in sorted(group):
+            x, y = points[i]
+            j = seen.setdefault((exact_key(x), exact_key(y)), i)
+            if j != i:
+                if best is None or i < best[1]:
+                    best = (j, i)
+                break
+    return best
 
 
 def _overlapping(config: Configuration) -> tuple[int, int] | None:

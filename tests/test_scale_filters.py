@@ -142,3 +142,22 @@ def test_filtered_levels_equal_exact(seeds, mirror, nudges):
     finally:
         levels._FILTER_MIN = saved
     assert fast.levels == slow.levels
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.tuples(st.integers(-3, 3), st.integers(-3, 3), st.integers(0, 2)),
+                min_size=64, max_size=120))
+def test_filtered_coincidence_equals_dictionary_scan(raw):
+    """Points 10^-30 apart have equal floats: the filtered duplicate search must still
+    report exactly the first pair the exact dictionary scan reports."""
+    from exactsym.configuration import _coincident
+    from exactsym.exact import exact_key
+    points = [(fmpq(a) + e * TINY, fmpq(b)) for a, b, e in raw]
+    config = Configuration(points=points, system=None)
+    seen, expected = {}, None
+    for i, (x, y) in enumerate(points):
+        j = seen.setdefault((exact_key(x), exact_key(y)), i)
+        if j != i:
+            expected = (j, i)
+            break
+    assert _coincident(config) == expected
