@@ -15,9 +15,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from .configuration import Configuration, no_cycle_collection
 from .exact import exact_key, exact_sorted, fmpq
-from .geometry import (PseudoAngle, angular_ranks, angular_sort, sorted_by_value,
+from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups, sorted_by_value,
                        squared_distance)
 from .sec import Circle, smallest_enclosing_circle
 
@@ -102,6 +104,10 @@ def _angular_order(vectors, members: list[int]) -> list[int]:
 
 def _group_levels(radii_squared: list, order_level) -> tuple[Level, ...]:
     """Levels from each point's squared radius; ``order_level`` sorts one level's indices."""
+    if len(radii_squared) >= _FILTER_MIN and isinstance(radii_squared[0], fmpq):
+        levels = _group_rational_levels(radii_squared, order_level)
+        if levels is not None:
+            return levels
     groups: dict = {}
     for i, r2 in enumerate(radii_squared):
         groups.setdefault(exact_key(r2), [r2]).append(i)
@@ -112,3 +118,36 @@ def _group_levels(radii_squared: list, order_level) -> tuple[Level, ...]:
 def _polar_levels(polar) -> tuple[Level, ...]:
     return _group_levels([r2 for r2, _ in polar],
                          lambda members: sorted(members, key=lambda i: polar[i][1]))
+
+
+def _group_rational_levels(radii_squared: list, order_level) -> tuple[Level, ...] | None:
+    """:func:`_group_levels` for many ``fmpq``: ``float(fmpq)`` is correctly rounded (within
+    a relative 2^-53), so floats with a relative slack of 2^-50 split the values into
+    certainly ordered groups (``geometry.certified_groups``); equal values always share a
+    group, and only groups of two or more are grouped and sorted exactly."""
+    try:
+        approx = np.fromiter((float(v) for v in radii_squared), dtype=float,
+                             count=len(radii_squared))
+    except (OverflowError, ValueError):
+        return None
+    if not np.isfinite(approx).all():
+        return None
+    order, starts = certified_groups(approx, np.abs(approx) * 2.0 ** -50 + 1e-300)
+    flat = order.tolist()
+    levels = []
+    if len(starts) == len(flat):
+        return tuple([Level(radii_squared[i], (i,)) for i in flat])
+    bounds = starts.tolist() + [len(flat)]
+    for g in range(len(bounds) - 1):
+        a, b = bounds[g], bounds[g + 1]
+        if b - a == 1:
+            i = flat[a]
+            levels.append(Level(radii_squared[i], (i,)))
+            continue
+        groups: dict = {}
+        for i in sorted(flat[a:b]):
+            groups.setdefault(exact_key(radii_squared[i]), [radii_squared[i]]).append(i)
+        for group in sorted(groups.values(), key=lambda g: g[0]):
+            levels.append(Level(group[0], tuple(order_level(group[1:]) if len(group) > 2
+                                                else group[1:])))
+    return tuple(levels)

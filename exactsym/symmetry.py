@@ -47,7 +47,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Iterator, Sequence
 
-from .configuration import Configuration
+from .configuration import Configuration, no_cycle_collection
 import numpy as np
 
 from .geometry import (FILTER_EPS, PseudoAngle, certified_groups, float_differences,
@@ -505,7 +505,11 @@ def symmetry_group(config: Configuration, rings: Levels | None = None) -> Symmet
     >>> len(list(kite.symmetries()))
     2
     """
-    ring = rings if rings is not None else levels_of(config)
+    with no_cycle_collection():       # bulk construction: the collector's passes cost more
+        return _symmetry_group(config, rings if rings is not None else levels_of(config))
+
+
+def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     centre = ring.sec.centre
     n = config.n
     if n == 1 and (not config.polar[0][0] if ring.polar else config.points[0] == centre):
