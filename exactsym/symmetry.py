@@ -443,7 +443,8 @@ def _filtered_rays(points, centre, rank):
 
 
 def _filtered_gap_ids(rays, gaps, dx, dy, ex, ey) -> list[int]:
-    """Small integers, equal iff the exact gaps are equal: float gaps (the pseudo-angle of
+    """Small integers, equal iff the exact gaps are equal and ordered as they are (ranks):
+    float gaps (the pseudo-angle of
     ``(u . v, u x v)``) with a proven bound group them; exact values split the groups.
     Bound on a dot or cross product of vectors known within Eu, Ev (componentwise), with
     float sums Su, Sv of absolute components: ``(Su + 2 Eu) Ev + Eu Sv + 2^-50 Su Sv``."""
@@ -474,10 +475,11 @@ def _filtered_gap_ids(rays, gaps, dx, dy, ex, ey) -> list[int]:
         local: dict = {}
         for a in members:
             gap = gaps[a]
-            j = local.setdefault((gap.p, gap.q), next_id)
-            if j == next_id:
-                next_id += 1
-            ids[a] = j
+            local.setdefault((gap.p, gap.q), (gap, []))[1].append(a)
+        for _, same in sorted(local.values(), key=lambda entry: entry[0]):
+            for a in same:
+                ids[a] = next_id
+            next_id += 1
     return ids
 
 
@@ -515,6 +517,7 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     if n == 1 and (not config.polar[0][0] if ring.polar else config.points[0] == centre):
         return SymmetryGroup("O2", 0, 0, centre, ring.polar, None, None, None, True, (0,), 0)
 
+    filtered = None
     if ring.polar:
         centre_index, rays, ray_turns, radii, gaps = _polar_rays(config.polar)
         points = None
@@ -535,14 +538,22 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     m = len(rays)
 
     # symbols, interned: equal ids iff equal symbols; values are compared only lazily
-    ray_ids = _intern(radii, True)
+    if filtered is None:
+        ray_ids = _intern(radii, True)
+    else:                       # ids ranked by value: then ids order as the symbols do
+        distinct = sorted(set(radii))
+        rank_of = {r: k for k, r in enumerate(distinct)}
+        ray_ids = [rank_of[r] for r in radii]
     if ring.polar or filtered is None:
         gap_ids = intern_by_value(gaps) if gaps and isinstance(gaps[0], PseudoAngle) \
             else _intern(gaps, False)
     width = max(gap_ids) + 1
     ccw = [ray_ids[i] * width + gap_ids[i] for i in range(m)]
     cw = [ray_ids[-i % m] * width + gap_ids[(-i - 1) % m] for i in range(m)]
-    ccw_values, cw_values = _Symbols(radii, gaps, False), _Symbols(radii, gaps, True)
+    if filtered is None:
+        ccw_values, cw_values = _Symbols(radii, gaps, False), _Symbols(radii, gaps, True)
+    else:                       # ray and gap ids are ranks: symbols compare as their ids
+        ccw_values, cw_values = ccw, cw
 
     # canonical labelling: least rotation over both orientations
     least = ray_ids[radii.index(min(radii))]          # the least symbols are on these rays:
