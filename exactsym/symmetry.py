@@ -355,13 +355,21 @@ class _LazyGaps:
     rays' integer vectors on first use: the float filter interned the gaps, so only the
     few comparisons of the canonical labelling need values."""
 
-    __slots__ = ("rays", "vector", "cache")
+    __slots__ = ("rays", "vector", "vectors", "cache")
 
-    def __init__(self, rays, vector):
-        self.rays, self.vector, self.cache = rays, vector, {}
+    def __init__(self, rays, vector, vectors):
+        self.rays, self.vector, self.vectors, self.cache = rays, vector, vectors, {}
 
     def __len__(self) -> int:
         return len(self.rays)
+
+    def exact_products(self, gaps):
+        """``(dot, cross)``: object arrays of Python integers, ``u . v`` and ``u x v`` for
+        the integer vectors u, v of the rays at and after each gap in ``gaps``."""
+        m = len(self.rays)
+        u = self.vectors([self.rays[a][0] for a in gaps.tolist()])
+        v = self.vectors([self.rays[(a + 1) % m][0] for a in gaps.tolist()])
+        return u[0] * v[0] + u[1] * v[1], u[0] * v[1] - u[1] * v[0]
 
     def __getitem__(self, a: int):
         m = len(self.rays)
@@ -400,6 +408,16 @@ def _filtered_rays(points, centre, rank):
             v = vectors[i] = ((x.p * den - a0 * x.q) * y.q, (y.p * den - b0 * y.q) * x.q)
         return v
 
+    def vectors_of(indices):
+        """The same integer vectors for many points, as object arrays of Python ints."""
+        def column(values):
+            return np.array([int(v) for v in values] + [None], dtype=object)[:-1]
+        pts = [points[i] for i in indices]
+        xp, xq = column(p[0].p for p in pts), column(p[0].q for p in pts)
+        yp, yq = column(p[1].p for p in pts), column(p[1].q for p in pts)
+        return (xp * iden - ia0 * xq) * yq, (yp * iden - ib0 * yq) * xq
+
+    iden, ia0, ib0 = int(den), int(a0), int(b0)
     keys, errs, sure = float_pseudo_angles(dx, dy, ex, ey)
     exact: dict = {}
     centre_index = None
@@ -438,7 +456,7 @@ def _filtered_rays(points, centre, rank):
                     ray = [i]
             rays.append(tuple(ray))
     radii = [tuple([rank[i] for i in ray]) for ray in rays]
-    gaps = _LazyGaps(rays, vector)
+    gaps = _LazyGaps(rays, vector, vectors_of)
     return centre_index, rays, radii, gaps, _filtered_gap_ids(rays, gaps, dx, dy, ex, ey)
 
 
@@ -462,22 +480,44 @@ def _filtered_gap_ids(rays, gaps, dx, dy, ex, ey) -> list[int]:
     for a in np.flatnonzero(~sure).tolist():
         keys[a], errs[a] = float(gaps[a]), 2.0 ** -46
     order, starts = certified_groups(keys, errs)
+    sizes = np.diff(np.append(starts, m))
+    if len(starts) == m:
+        ids = np.empty(m, dtype=np.int64)
+        ids[order] = np.arange(m)
+        return ids.tolist()
+    # exact (dot, cross) of every gap in a group of two or more, in Python integers over
+    # object arrays; a group whose members all point as its first one is one class
+    pos = np.flatnonzero(np.repeat(sizes > 1, sizes))
+    members = order[pos]
+    dot, crs = gaps.exact_products(members)
+    head = np.repeat(np.arange(len(starts)), sizes)[pos]          # group of each member
+    first_of = {}
+    for k, g in enumerate(head.tolist()):
+        first_of.setdefault(g, k)
+    h = np.fromiter((first_of[g] for g in head.tolist()), dtype=np.int64, count=len(pos))
+    same = np.asarray(dot * crs[h] - crs * dot[h] == 0, dtype=bool) \
+        & (np.asarray(dot > 0, dtype=bool) == np.asarray(dot[h] > 0, dtype=bool)) \
+        & (np.asarray(dot < 0, dtype=bool) == np.asarray(dot[h] < 0, dtype=bool)) \
+        & (np.asarray(crs > 0, dtype=bool) == np.asarray(crs[h] > 0, dtype=bool)) \
+        & (np.asarray(crs < 0, dtype=bool) == np.asarray(crs[h] < 0, dtype=bool))
+    split = set(head[~same].tolist())
     ids = [0] * m
     bounds = starts.tolist() + [m]
     sorted_a = order.tolist()
     next_id = 0
     for g in range(len(bounds) - 1):
-        members = sorted_a[bounds[g]:bounds[g + 1]]
-        if len(members) == 1:
-            ids[members[0]] = next_id
+        group = sorted_a[bounds[g]:bounds[g + 1]]
+        if g not in split:
+            for a in group:
+                ids[a] = next_id
             next_id += 1
             continue
         local: dict = {}
-        for a in members:
+        for a in group:
             gap = gaps[a]
             local.setdefault((gap.p, gap.q), (gap, []))[1].append(a)
-        for _, same in sorted(local.values(), key=lambda entry: entry[0]):
-            for a in same:
+        for _, same_gap in sorted(local.values(), key=lambda entry: entry[0]):
+            for a in same_gap:
                 ids[a] = next_id
             next_id += 1
     return ids
