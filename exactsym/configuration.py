@@ -25,7 +25,7 @@ from typing import Iterable, Mapping, Sequence
 
 import numpy as np
 
-from .fileformat import ConfigFile, PointSpec, read_config
+from .fileformat import ConfigFile, PlainPoints, PointSpec, read_config
 from .errors import ExpressionError, InputError, MoveImpossible
 from .exact import (FieldElement, RationalSystem, evaluate, exact_key, fmpq, normal_turn,
                     number_system, sign)
@@ -78,7 +78,7 @@ class Configuration:
         self.model = model
         self.lemmas = tuple(lemmas)
         self.expect = dict(expect or {})
-        self.specs = tuple(specs)
+        self.specs = specs if isinstance(specs, PlainPoints) else tuple(specs)
         self.polar = tuple(polar) if polar is not None else None
         self.polar_system = polar_system
         self.radii = tuple(radii) if radii is not None else None     # r, when polar
@@ -299,7 +299,9 @@ def from_file(config_file: ConfigFile) -> Configuration:
     common = dict(source=config_file.source, name=config_file.name, notes=config_file.notes,
                   model=config_file.model, lemmas=config_file.lemmas,
                   expect=config_file.expect, specs=specs)
-    if all(spec.is_polar for spec in specs):
+    if isinstance(specs, PlainPoints):        # "p/q p/q" lines only: exact values directly
+        config = Configuration(points=specs.rationals(), system=RationalSystem(), **common)
+    elif all(spec.is_polar for spec in specs):
         exprs, owners = _expressions(specs, polar_only=True)
         system, radii = _system_and_values(exprs, owners, (), config_file.source)
         polar = []
