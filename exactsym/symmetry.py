@@ -367,9 +367,11 @@ class _LazyGaps:
         """``(dot, cross)``: object arrays of Python integers, ``u . v`` and ``u x v`` for
         the integer vectors u, v of the rays at and after each gap in ``gaps``."""
         m = len(self.rays)
-        u = self.vectors([self.rays[a][0] for a in gaps.tolist()])
-        v = self.vectors([self.rays[(a + 1) % m][0] for a in gaps.tolist()])
-        return u[0] * v[0] + u[1] * v[1], u[0] * v[1] - u[1] * v[0]
+        rays = np.unique(np.concatenate((gaps, (gaps + 1) % m)))     # each vector once
+        vx, vy = self.vectors([self.rays[r][0] for r in rays.tolist()])
+        at, after = np.searchsorted(rays, gaps), np.searchsorted(rays, (gaps + 1) % m)
+        ux, uy, wx, wy = vx[at], vy[at], vx[after], vy[after]
+        return ux * wx + uy * wy, ux * wy - uy * wx
 
     def __getitem__(self, a: int):
         m = len(self.rays)
