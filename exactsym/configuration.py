@@ -300,7 +300,7 @@ def from_file(config_file: ConfigFile) -> Configuration:
                   model=config_file.model, lemmas=config_file.lemmas,
                   expect=config_file.expect, specs=specs)
     if isinstance(specs, PlainPoints):        # "p/q p/q" lines only: exact values directly
-        config = Configuration(points=specs.rationals(), system=RationalSystem(), **common)
+        config = Configuration(points=specs.rationals, system=RationalSystem(), **common)
     elif all(spec.is_polar for spec in specs):
         exprs, owners = _expressions(specs, polar_only=True)
         system, radii = _system_and_values(exprs, owners, (), config_file.source)

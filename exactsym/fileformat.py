@@ -18,6 +18,8 @@ from fractions import Fraction
 from pathlib import Path
 from typing import Mapping, Sequence
 
+from flint import fmpq
+
 from .errors import ExpressionError, InputError
 from .expr import MAX_LENGTH, parse_expression, tokenize
 from .exprtree import Const, Node
@@ -172,19 +174,27 @@ def _parse_txt(text: str, source: str) -> ConfigFile:
     """Plain text: one point per line (``x y``, ``x, y`` or ``polar r turn``), ``#`` comments."""
     points: list = []
     simple_line = _SIMPLE_PAIR.fullmatch
-    plain = True        # every point so far a "p/q p/q" line (kept unparsed: PlainPoints)
+    plain = True        # every point so far a "p/q p/q" line (kept as PlainPoints)
+    numbers, lines = [], []
     for number, raw in enumerate(text.split("\n"), start=1):
         simple = simple_line(raw)
         if simple:     # fast path: "p/q p/q" with nothing else on the line (most large inputs)
-            record = (number, simple.groups(), simple.start(1) + 1, simple.start(4) + 1)
-            points.append(record if plain else _plain_spec(len(points), record))
+            _, x_num, x_den, _, y_num, y_den = simple.groups()
+            if plain:
+                points.append((fmpq(int(x_num), int(x_den)) if x_den else fmpq(int(x_num)),
+                               fmpq(int(y_num), int(y_den)) if y_den else fmpq(int(y_num))))
+                numbers.append(number)
+                lines.append(raw)
+            else:
+                points.append(_plain_spec(len(points), number, simple))
             continue
         line = raw.split("#", 1)[0]
         start = len(line) - len(line.lstrip(_SPACE))
         if start == len(line):
             continue
         if plain:
-            points = [_plain_spec(k, record) for k, record in enumerate(points)]
+            points = [_plain_spec(k, numbers[k], simple_line(lines[k]))
+                      for k in range(len(lines))]
             plain = False
         polar = re.match(r"polar(?![A-Za-z0-9_])", line[start:]) is not None
         (t1, c1, e1), (t2, c2, e2) = _txt_pair(line, start + 5 if polar else start,
@@ -201,12 +211,13 @@ def _parse_txt(text: str, source: str) -> ConfigFile:
         raise InputError("no points: write one point per line, as 'x y', 'x, y' or "
                          "'polar r turn'", source)
     if plain:
-        return ConfigFile(source=source, points=PlainPoints(points))
+        return ConfigFile(source=source, points=PlainPoints(numbers, lines, points))
     return ConfigFile(source=source, points=tuple(points))
 
 
-def _plain_spec(index: int, record) -> PointSpec:
-    number, (x_text, x_num, x_den, y_text, y_num, y_den), x_col, y_col = record
+def _plain_spec(index: int, number: int, simple: re.Match) -> PointSpec:
+    x_text, x_num, x_den, y_text, y_num, y_den = simple.groups()
+    x_col, y_col = simple.start(1) + 1, simple.start(4) + 1
     return PointSpec(index, number, x_col,
                      x=Const(Fraction(int(x_num), int(x_den)) if x_den else Fraction(int(x_num))),
                      y=Const(Fraction(int(y_num), int(y_den)) if y_den else Fraction(int(y_num))),
@@ -214,42 +225,33 @@ def _plain_spec(index: int, record) -> PointSpec:
 
 
 class PlainPoints(Sequence):
-    """The points of a plain-text file whose every point is a ``p/q p/q`` line, kept as the
-    matched digit strings: :class:`PointSpec` objects are built on access (for messages),
-    and :meth:`rationals` gives the exact values without expression trees (issue 9: the
-    trees cost more than the whole float baseline on 100,000 points).  Equal to the
-    tuple of its specs."""
+    """The points of a plain-text file whose every point is a ``p/q p/q`` line: the lines
+    and their numbers, and the values as ``fmpq`` pairs (:attr:`rationals`, the numbers as
+    written, reduced).  :class:`PointSpec` objects (expression trees, for messages) are
+    built on access: on 100,000 points they cost more than the whole float baseline
+    (issue 9).  Equal to the tuple of its specs."""
 
-    __slots__ = ("records",)
+    __slots__ = ("numbers", "lines", "rationals")
 
-    def __init__(self, records):
-        self.records = records
+    def __init__(self, numbers: list[int], lines: list[str], rationals: list[tuple]):
+        self.numbers, self.lines, self.rationals = numbers, lines, rationals
 
     def __len__(self) -> int:
-        return len(self.records)
+        return len(self.lines)
 
     def __getitem__(self, index):
         if isinstance(index, slice):
             return tuple(self)[index]
-        n = len(self.records)
+        n = len(self.lines)
         if not -n <= index < n:
             raise IndexError(index)
         index %= n
-        return _plain_spec(index, self.records[index])
+        return _plain_spec(index, self.numbers[index], _SIMPLE_PAIR.fullmatch(self.lines[index]))
 
     def __eq__(self, other):
         return isinstance(other, Sequence) and tuple(self) == tuple(other)
 
     __hash__ = None
-
-    def rationals(self):
-        """The points as pairs of ``fmpq`` (the numbers written, reduced)."""
-        from flint import fmpq
-        out = []
-        for _, (_, x_num, x_den, _, y_num, y_den), _, _ in self.records:
-            out.append((fmpq(int(x_num), int(x_den)) if x_den else fmpq(int(x_num)),
-                        fmpq(int(y_num), int(y_den)) if y_den else fmpq(int(y_num))))
-        return out
 
 
 # Digit runs are capped below Python's int-from-string limit (4300 digits): longer numbers
