@@ -457,9 +457,14 @@ def _filtered_rays(points, centre, rank):
                     rays.append(tuple(ray))
                     ray = [i]
             rays.append(tuple(ray))
-    radii = [tuple([rank[i] for i in ray]) for ray in rays]
+    if len(rays) == len(sorted_idx):     # one point per ray: ids are the ranks of its level
+        ray_ids = np.unique(np.asarray(rank)[idx[order]], return_inverse=True)[1]
+    else:                                # ids ranked by value: they order as the radii do
+        radii = [tuple([rank[i] for i in ray]) for ray in rays]
+        rank_of = {r: k for k, r in enumerate(sorted(set(radii)))}
+        ray_ids = np.array([rank_of[r] for r in radii], dtype=np.int64)
     gaps = _LazyGaps(rays, vector, vectors_of)
-    return centre_index, rays, radii, gaps, _filtered_gap_ids(rays, gaps, dx, dy, ex, ey)
+    return centre_index, rays, ray_ids, gaps, _filtered_gap_ids(rays, gaps, dx, dy, ex, ey)
 
 
 def _filtered_gap_ids(rays, gaps, dx, dy, ex, ey) -> list[int]:
@@ -582,23 +587,24 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     # symbols, interned: equal ids iff equal symbols; values are compared only lazily
     if filtered is None:
         ray_ids = _intern(radii, True)
-    else:                       # ids ranked by value: then ids order as the symbols do
-        distinct = sorted(set(radii))
-        rank_of = {r: k for k, r in enumerate(distinct)}
-        ray_ids = [rank_of[r] for r in radii]
-    if ring.polar or filtered is None:
         gap_ids = intern_by_value(gaps) if gaps and isinstance(gaps[0], PseudoAngle) \
             else _intern(gaps, False)
-    width = max(gap_ids) + 1
-    ccw = [ray_ids[i] * width + gap_ids[i] for i in range(m)]
-    cw = [ray_ids[-i % m] * width + gap_ids[(-i - 1) % m] for i in range(m)]
-    if filtered is None:
+        width = max(gap_ids) + 1
+        ccw = [ray_ids[i] * width + gap_ids[i] for i in range(m)]
+        cw = [ray_ids[-i % m] * width + gap_ids[(-i - 1) % m] for i in range(m)]
         ccw_values, cw_values = _Symbols(radii, gaps, False), _Symbols(radii, gaps, True)
+        least = ray_ids[radii.index(min(radii))]      # the least symbols are on these rays
     else:                       # ray and gap ids are ranks: symbols compare as their ids
+        rid, gid = radii, np.asarray(gap_ids, dtype=np.int64)
+        width = int(gid.max()) + 1
+        back = (-np.arange(m)) % m
+        ccw = (rid * width + gid).tolist()
+        cw = (rid[back] * width + gid[(back - 1) % m]).tolist()
+        ray_ids = rid.tolist()
         ccw_values, cw_values = ccw, cw
+        least = min(ray_ids)
 
     # canonical labelling: least rotation over both orientations
-    least = ray_ids[radii.index(min(radii))]          # the least symbols are on these rays:
     rays_least = [r for r in range(m) if ray_ids[r] == least]
     s = least_rotation(ccw, ccw_values, rays_least)
     t = least_rotation(cw, cw_values, [-r % m for r in rays_least])
