@@ -18,6 +18,7 @@ from exactsym.configuration import Configuration
 from exactsym.exact import fmpq
 from exactsym.geometry import certified_groups, float_differences, float_pseudo_angles
 from exactsym.levels import levels_of
+from exactsym.rays_filtered import filtered_rays, level_ranks
 from exactsym.sec import _circle, _welzl, smallest_enclosing_circle
 from exactsym.symmetry import pseudo_angle
 
@@ -69,8 +70,8 @@ def test_filtered_group_equals_exact(seeds, mirror, nudges):
         symmetry._FILTER_MIN = saved
     if filtered is not None:
         assert _summary(filtered) == _summary(exact)
-    rank = symmetry._level_ranks(ring, config.n)
-    assert rank is not None and symmetry._filtered_rays(config.points, ring.sec.centre,
+    rank = level_ranks(ring, config.n)
+    assert rank is not None and filtered_rays(config.points, ring.sec.centre,
                                                         rank) is not None
     symmetry._FILTER_MIN, low = 1, symmetry._FILTER_MIN
     try:                                     # the filter on small sets too
