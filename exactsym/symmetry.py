@@ -47,9 +47,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Iterator, Sequence
 
-from .configuration import Configuration, no_cycle_collection
 import numpy as np
 
+from .configuration import Configuration, no_cycle_collection
 from .geometry import PseudoAngle, intern_by_value, sorted_by_value
 from .exact import fmpq
 from .levels import Levels, levels_of
