@@ -23,7 +23,9 @@ from dataclasses import dataclass
 from functools import cached_property
 from typing import Iterable, Mapping, Sequence
 
-from .fileformat import ConfigFile, PointSpec, read_config
+import numpy as np
+
+from .fileformat import ConfigFile, PlainPoints, PointSpec, read_config
 from .errors import ExpressionError, InputError, MoveImpossible
 from .exact import (FieldElement, RationalSystem, evaluate, exact_key, fmpq, normal_turn,
                     number_system, sign)
@@ -76,7 +78,7 @@ class Configuration:
         self.model = model
         self.lemmas = tuple(lemmas)
         self.expect = dict(expect or {})
-        self.specs = tuple(specs)
+        self.specs = specs if isinstance(specs, PlainPoints) else tuple(specs)
         self.polar = tuple(polar) if polar is not None else None
         self.polar_system = polar_system
         self.radii = tuple(radii) if radii is not None else None     # r, when polar
@@ -216,6 +218,8 @@ def _expressions(specs: Sequence[PointSpec], polar_only: bool):
 
 
 def _system_and_values(exprs: list[Node], owners, turns, source: str):
+    if not turns and all(type(e) is Const for e in exprs):   # plain rationals: Q, no scan
+        return RationalSystem(), [fmpq(e.value.numerator, e.value.denominator) for e in exprs]
     try:
         system = number_system(exprs, turns)
     except ExpressionError as err:
@@ -295,7 +299,9 @@ def from_file(config_file: ConfigFile) -> Configuration:
     common = dict(source=config_file.source, name=config_file.name, notes=config_file.notes,
                   model=config_file.model, lemmas=config_file.lemmas,
                   expect=config_file.expect, specs=specs)
-    if all(spec.is_polar for spec in specs):
+    if isinstance(specs, PlainPoints):        # "p/q p/q" lines only: exact values directly
+        config = Configuration(points=specs.rationals, system=RationalSystem(), **common)
+    elif all(spec.is_polar for spec in specs):
         exprs, owners = _expressions(specs, polar_only=True)
         system, radii = _system_and_values(exprs, owners, (), config_file.source)
         polar = []
@@ -352,6 +358,10 @@ def load(path) -> Configuration:
 
 def _coincident(config: Configuration) -> tuple[int, int] | None:
     """The first two indices of coincident points, or None."""
+    if config.polar is None and config.n >= 64 and isinstance(config.points[0][0], fmpq):
+        candidates = _equal_float_groups(config.points)
+        if candidates is not None:
+            return _first_coincident(config.points, candidates)
     seen: dict = {}
     keys = config.polar if config.polar is not None else config.points
     for i, (a, b) in enumerate(keys):
@@ -361,6 +371,47 @@ def _coincident(config: Configuration) -> tuple[int, int] | None:
         if j != i:
             return j, i
     return None
+
+
+def _equal_float_groups(points):
+    """Groups (lists of indices, at least two) of rational points whose correctly rounded
+    float pairs are equal: equal points have equal floats, so coincident points are only
+    to be looked for inside these groups.  None if a float is not finite."""
+    try:
+        fx = np.fromiter((float(p[0]) for p in points), dtype=float, count=len(points))
+        fy = np.fromiter((float(p[1]) for p in points), dtype=float, count=len(points))
+    except (OverflowError, ValueError):
+        return None
+    if not (np.isfinite(fx).all() and np.isfinite(fy).all()):
+        return None
+    order = np.lexsort((fy, fx))
+    same = (np.diff(fx[order]) == 0) & (np.diff(fy[order]) == 0)
+    if not same.any():
+        return []
+    groups, current = [], None
+    for a in np.flatnonzero(same).tolist():
+        if current is not None and current[-1] == order[a]:
+            current.append(int(order[a + 1]))
+        else:
+            current = [int(order[a]), int(order[a + 1])]
+            groups.append(current)
+    return groups
+
+
+def _first_coincident(points, groups) -> tuple[int, int] | None:
+    """As the dictionary scan of :func:`_coincident`: the least i with an equal earlier
+    point, and the first such point j; compared exactly inside each float group."""
+    best = None
+    for group in groups:
+        seen: dict = {}
+        for i in sorted(group):
+            x, y = points[i]
+            j = seen.setdefault((exact_key(x), exact_key(y)), i)
+            if j != i:
+                if best is None or i < best[1]:
+                    best = (j, i)
+                break
+    return best
 
 
 def _overlapping(config: Configuration) -> tuple[int, int] | None:

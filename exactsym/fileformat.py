@@ -16,7 +16,9 @@ import types
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
-from typing import Mapping
+from typing import Mapping, Sequence
+
+from flint import fmpq
 
 from .errors import ExpressionError, InputError
 from .expr import MAX_LENGTH, parse_expression, tokenize
@@ -170,22 +172,30 @@ MAX_LINE = 2 * MAX_LENGTH + 100   # characters of one plain-text point (comment 
 
 def _parse_txt(text: str, source: str) -> ConfigFile:
     """Plain text: one point per line (``x y``, ``x, y`` or ``polar r turn``), ``#`` comments."""
-    points: list[PointSpec] = []
+    points: list = []
     simple_line = _SIMPLE_PAIR.fullmatch
+    plain = True        # every point so far a "p/q p/q" line (kept as PlainPoints)
+    numbers, lines = [], []
     for number, raw in enumerate(text.split("\n"), start=1):
         simple = simple_line(raw)
         if simple:     # fast path: "p/q p/q" with nothing else on the line (most large inputs)
-            x_text, x_num, x_den, y_text, y_num, y_den = simple.groups()
-            points.append(PointSpec(
-                len(points), number, simple.start(1) + 1,
-                x=Const(Fraction(int(x_num), int(x_den)) if x_den else Fraction(int(x_num))),
-                y=Const(Fraction(int(y_num), int(y_den)) if y_den else Fraction(int(y_num))),
-                texts=(x_text, y_text), columns=(simple.start(1) + 1, simple.start(4) + 1)))
+            _, x_num, x_den, _, y_num, y_den = simple.groups()
+            if plain:
+                points.append((fmpq(int(x_num), int(x_den)) if x_den else fmpq(int(x_num)),
+                               fmpq(int(y_num), int(y_den)) if y_den else fmpq(int(y_num))))
+                numbers.append(number)
+                lines.append(raw)
+            else:
+                points.append(_plain_spec(len(points), number, simple))
             continue
         line = raw.split("#", 1)[0]
         start = len(line) - len(line.lstrip(_SPACE))
         if start == len(line):
             continue
+        if plain:
+            points = [_plain_spec(k, numbers[k], simple_line(lines[k]))
+                      for k in range(len(lines))]
+            plain = False
         polar = re.match(r"polar(?![A-Za-z0-9_])", line[start:]) is not None
         (t1, c1, e1), (t2, c2, e2) = _txt_pair(line, start + 5 if polar else start,
                                                source, number)
@@ -200,7 +210,48 @@ def _parse_txt(text: str, source: str) -> ConfigFile:
     if not points:
         raise InputError("no points: write one point per line, as 'x y', 'x, y' or "
                          "'polar r turn'", source)
+    if plain:
+        return ConfigFile(source=source, points=PlainPoints(numbers, lines, points))
     return ConfigFile(source=source, points=tuple(points))
+
+
+def _plain_spec(index: int, number: int, simple: re.Match) -> PointSpec:
+    x_text, x_num, x_den, y_text, y_num, y_den = simple.groups()
+    x_col, y_col = simple.start(1) + 1, simple.start(4) + 1
+    return PointSpec(index, number, x_col,
+                     x=Const(Fraction(int(x_num), int(x_den)) if x_den else Fraction(int(x_num))),
+                     y=Const(Fraction(int(y_num), int(y_den)) if y_den else Fraction(int(y_num))),
+                     texts=(x_text, y_text), columns=(x_col, y_col))
+
+
+class PlainPoints(Sequence):
+    """The points of a plain-text file whose every point is a ``p/q p/q`` line: the lines
+    and their numbers, and the values as ``fmpq`` pairs (:attr:`rationals`, the numbers as
+    written, reduced).  :class:`PointSpec` objects (expression trees, for messages) are
+    built on access: on 100,000 points they cost more than the whole float baseline
+    (issue 9).  Equal to the tuple of its specs."""
+
+    __slots__ = ("numbers", "lines", "rationals")
+
+    def __init__(self, numbers: list[int], lines: list[str], rationals: list[tuple]):
+        self.numbers, self.lines, self.rationals = numbers, lines, rationals
+
+    def __len__(self) -> int:
+        return len(self.lines)
+
+    def __getitem__(self, index):
+        if isinstance(index, slice):
+            return tuple(self)[index]
+        n = len(self.lines)
+        if not -n <= index < n:
+            raise IndexError(index)
+        index %= n
+        return _plain_spec(index, self.numbers[index], _SIMPLE_PAIR.fullmatch(self.lines[index]))
+
+    def __eq__(self, other):
+        return isinstance(other, Sequence) and tuple(self) == tuple(other)
+
+    __hash__ = None
 
 
 # Digit runs are capped below Python's int-from-string limit (4300 digits): longer numbers

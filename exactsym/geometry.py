@@ -1,13 +1,17 @@
 """Exact plane geometry: predicates return enums or ints, constructions return exact points.
 
 Points are pairs ``(x, y)`` of exact numbers of :mod:`exactsym.exact` (``fmpq`` or
-``FieldElement`` of one field).  Nothing here rounds.
+``FieldElement`` of one field).  Nothing here rounds, except the float filters at the
+end, whose proven error bounds only split values into certainly ordered groups.
 """
 
 from __future__ import annotations
 
+import math
 from enum import IntEnum
 from functools import cmp_to_key
+
+import numpy as np
 
 from .exact import sign
 
@@ -209,3 +213,110 @@ def intern_by_value(values) -> list[int]:
         else:
             ids[i] = ids[match]
     return ids
+
+
+# ---------------------------------------------------------------- float filters (NumPy)
+#
+# Proven error bounds (docs/numbers.md, "Filtered predicates over arrays"): a float filter
+# only splits values into groups such that every exact value of a group is less than every
+# exact value of the next group; ties and near-ties stay in one group and are decided
+# exactly by the caller.
+
+FILTER_EPS = 2.0 ** -50           # >= 4 units in the last place of a double
+_TINY = 1e-290                    # covers underflow in products of subnormal magnitudes
+
+
+def float_differences(points, origin):
+    """``(dx, dy, ex, ey)``: float arrays with ``|dx - (x - ox)| <= ex`` (likewise y) for
+    rational points and origin (``float(fmpq)`` is within a relative 2^-52 of its value).
+    None when a value is not a finite double."""
+    try:
+        fx = np.fromiter((float(p[0]) for p in points), dtype=float, count=len(points))
+        fy = np.fromiter((float(p[1]) for p in points), dtype=float, count=len(points))
+        ox, oy = float(origin[0]), float(origin[1])
+    except (OverflowError, ValueError):
+        return None
+    if not (np.isfinite(fx).all() and np.isfinite(fy).all() and math.isfinite(ox)
+            and math.isfinite(oy)):
+        return None
+    dx, dy = fx - ox, fy - oy
+    ex = FILTER_EPS * (np.abs(fx) + abs(ox) + np.abs(dx)) + _TINY
+    ey = FILTER_EPS * (np.abs(fy) + abs(oy) + np.abs(dy)) + _TINY
+    return dx, dy, ex, ey
+
+
+def float_pseudo_angles(vx, vy, ex, ey):
+    """``(keys, errs, sure)``: for vectors known within ``ex, ey`` (componentwise), floats
+    ``keys`` within ``errs`` of the exact diamond angle (:class:`PseudoAngle`) where ``sure``;
+    elsewhere (a sign of a component, hence the quadrant, not certified) the caller must
+    supply exact keys.  Bound: with ``s = |x| + |y|`` and ``E = max(ex, ey)``, the ratio
+    ``a / s`` (a one of |x|, |y|) moves by at most ``E / s'`` (s' the float sum, > 2E)."""
+    with np.errstate(all="ignore"):
+        ax, ay = np.abs(vx), np.abs(vy)
+        s = ax + ay
+        big = np.maximum(ex, ey)
+        sure = (ax > ex) & (ay > ey) & (s > 2 * big) & np.isfinite(s)
+        upper = vy > 0
+        quadrant = np.where(upper, np.where(vx > 0, 0.0, 1.0), np.where(vx < 0, 2.0, 3.0))
+        numer = np.where(upper == (vx > 0), ay, ax)
+        keys = quadrant + numer / s
+        errs = big / s * 1.01 + 2.0 ** -46
+    return keys, errs, sure
+
+
+def certified_groups(keys, errs):
+    """``(order, starts)``: ``order`` sorts ``keys``; the groups ``order[starts[g]:
+    starts[g+1]]`` are such that every exact value (within ``errs`` of its key) of one
+    group is strictly less than every exact value of any later group."""
+    order = np.argsort(keys, kind="stable")
+    k, e = keys[order], errs[order]
+    hi = np.maximum.accumulate(k + e)
+    lo = np.minimum.accumulate((k - e)[::-1])[::-1]
+    cut = hi[:-1] < lo[1:]
+    return order, np.flatnonzero(np.concatenate(([True], cut)))
+
+
+def angular_ranks(points, centre) -> list[int] | None:
+    """``rank[i]``: the position of point i when all points are sorted counter-clockwise
+    about ``centre`` from the +x ray (as :func:`angular_sort`; the point at the centre
+    ranks -1), for rational points and centre.  Floats with proven bounds
+    (:func:`float_pseudo_angles`) order whatever they can; points whose quadrant is
+    uncertain, and groups the bounds cannot split, are ordered by the exact rational
+    pseudo-angle.  Points of one direction get distinct ranks in an arbitrary order (no
+    two of them share a level).  None when the floats overflow."""
+    diffs = float_differences(points, centre)
+    if diffs is None:
+        return None
+    dx, dy, ex, ey = diffs
+    keys, errs, sure = float_pseudo_angles(dx, dy, ex, ey)
+    cx, cy = centre
+    exact: dict = {}
+
+    def exact_key(i):
+        key = exact.get(i)
+        if key is None:
+            a = PseudoAngle(points[i][0] - cx, points[i][1] - cy)
+            key = exact[i] = a.quadrant + a.num / a.den
+        return key
+
+    rank = [0] * len(points)
+    at_centre = None
+    for i in np.flatnonzero(~sure).tolist():
+        if points[i][0] == cx and points[i][1] == cy:
+            at_centre = i
+            keys[i], errs[i] = -1.0, 0.5
+            continue
+        keys[i], errs[i] = float(exact_key(i)), 2.0 ** -46
+    order, starts = certified_groups(keys, errs)
+    flat = order.tolist()
+    if len(starts) < len(flat):
+        bounds = starts.tolist() + [len(flat)]
+        for g in range(len(bounds) - 1):
+            a, b = bounds[g], bounds[g + 1]
+            if b - a > 1:
+                flat[a:b] = sorted(flat[a:b], key=exact_key)
+    for position, i in enumerate(flat):
+        rank[i] = position
+    if at_centre is not None:
+        rank[at_centre] = -1
+    return rank

@@ -15,10 +15,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from .configuration import Configuration, no_cycle_collection
 from .exact import exact_key, exact_sorted, fmpq
-from .geometry import PseudoAngle, angular_sort, sorted_by_value, squared_distance
+from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups, sorted_by_value,
+                       squared_distance)
 from .sec import Circle, smallest_enclosing_circle
+
+_FILTER_MIN = 64    # from this many rational points, levels are ordered by certified floats
 
 
 @dataclass(frozen=True)
@@ -65,9 +70,19 @@ def _levels_of(config: Configuration) -> Levels:
     circle = smallest_enclosing_circle(points)
     x, y, d = circle.homogeneous
     if isinstance(d, fmpq) and d == 1:
-        return Levels(circle, _group_levels([squared_distance(circle.centre, p) for p in points],
-                                            lambda members: angular_sort(circle.centre, points,
-                                                                         members)), False)
+        centre = circle.centre
+        order_level = None
+        if len(points) >= _FILTER_MIN and isinstance(centre[0], fmpq) \
+                and isinstance(centre[1], fmpq) and isinstance(points[0][0], fmpq):
+            rank = angular_ranks(points, centre)       # one filtered pass over all points
+            if rank is not None:
+                def order_level(members):
+                    return sorted(members, key=rank.__getitem__)
+        if order_level is None:
+            def order_level(members):
+                return angular_sort(centre, points, members)
+        return Levels(circle, _group_levels([squared_distance(centre, p) for p in points],
+                                            order_level), False)
     # centre X/D kept homogeneous: group by D^2 r^2 and sort by the directions D p - (X, Y),
     # which point as p - centre does (D > 0); divide by D^2 once per level
     vectors = [(d * p[0] - x, d * p[1] - y) for p in points]
@@ -89,6 +104,10 @@ def _angular_order(vectors, members: list[int]) -> list[int]:
 
 def _group_levels(radii_squared: list, order_level) -> tuple[Level, ...]:
     """Levels from each point's squared radius; ``order_level`` sorts one level's indices."""
+    if len(radii_squared) >= _FILTER_MIN and isinstance(radii_squared[0], fmpq):
+        levels = _group_rational_levels(radii_squared, order_level)
+        if levels is not None:
+            return levels
     groups: dict = {}
     for i, r2 in enumerate(radii_squared):
         groups.setdefault(exact_key(r2), [r2]).append(i)
@@ -99,3 +118,36 @@ def _group_levels(radii_squared: list, order_level) -> tuple[Level, ...]:
 def _polar_levels(polar) -> tuple[Level, ...]:
     return _group_levels([r2 for r2, _ in polar],
                          lambda members: sorted(members, key=lambda i: polar[i][1]))
+
+
+def _group_rational_levels(radii_squared: list, order_level) -> tuple[Level, ...] | None:
+    """:func:`_group_levels` for many ``fmpq``: ``float(fmpq)`` is correctly rounded (within
+    a relative 2^-53), so floats with a relative slack of 2^-50 split the values into
+    certainly ordered groups (``geometry.certified_groups``); equal values always share a
+    group, and only groups of two or more are grouped and sorted exactly."""
+    try:
+        approx = np.fromiter((float(v) for v in radii_squared), dtype=float,
+                             count=len(radii_squared))
+    except (OverflowError, ValueError):
+        return None
+    if not np.isfinite(approx).all():
+        return None
+    order, starts = certified_groups(approx, np.abs(approx) * 2.0 ** -50 + 1e-300)
+    flat = order.tolist()
+    levels = []
+    if len(starts) == len(flat):
+        return tuple([Level(radii_squared[i], (i,)) for i in flat])
+    bounds = starts.tolist() + [len(flat)]
+    for g in range(len(bounds) - 1):
+        a, b = bounds[g], bounds[g + 1]
+        if b - a == 1:
+            i = flat[a]
+            levels.append(Level(radii_squared[i], (i,)))
+            continue
+        groups: dict = {}
+        for i in sorted(flat[a:b]):
+            groups.setdefault(exact_key(radii_squared[i]), [radii_squared[i]]).append(i)
+        for group in sorted(groups.values(), key=lambda g: g[0]):
+            levels.append(Level(group[0], tuple(order_level(group[1:]) if len(group) > 2
+                                                else group[1:])))
+    return tuple(levels)

@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 import random
 
+import numpy as np
 from flint import arb, ctx
 
 from .exact import fmpq, sign
@@ -116,29 +117,57 @@ def _welzl(points, order, contains, circle_of):
 
 
 def _float_support(points, order, fx, fy) -> tuple[int, ...]:
+    """The support of the SEC of the float points, by the same move-to-front Welzl as
+    :func:`_welzl` (same order, same circles), with each "first point outside the current
+    circle" found by a NumPy scan over growing chunks instead of one test per point.  It
+    only proposes: the caller verifies the circle exactly."""
+    xs = np.asarray(fx, dtype=float)[order]
+    ys = np.asarray(fy, dtype=float)[order]
 
-    def circle_of(support):
-        if len(support) == 1:
-            i, = support
-            return (fx[i], fy[i], 0.0, support)
-        if len(support) == 2:
-            i, j = support
-            cx, cy = (fx[i] + fx[j]) / 2, (fy[i] + fy[j]) / 2
-            return (cx, cy, (fx[i] - cx) ** 2 + (fy[i] - cy) ** 2, support)
-        i, j, k = support
-        bx, by, qx, qy = fx[j] - fx[i], fy[j] - fy[i], fx[k] - fx[i], fy[k] - fy[i]
+    def circle_of(i, j=None, k=None):
+        if j is None:
+            return (xs[i], ys[i], 0.0, (i,))
+        if k is None:
+            cx, cy = (xs[i] + xs[j]) / 2, (ys[i] + ys[j]) / 2
+            return (cx, cy, (xs[i] - cx) ** 2 + (ys[i] - cy) ** 2, (i, j))
+        bx, by, qx, qy = xs[j] - xs[i], ys[j] - ys[i], xs[k] - xs[i], ys[k] - ys[i]
         d = 2 * (bx * qy - by * qx)
         if d == 0:
-            return (fx[i], fy[i], float("inf"), support)
+            return (xs[i], ys[i], float("inf"), (i, j, k))
         b2, q2 = bx * bx + by * by, qx * qx + qy * qy
-        cx, cy = fx[i] + (qy * b2 - by * q2) / d, fy[i] + (bx * q2 - qx * b2) / d
-        return (cx, cy, (fx[i] - cx) ** 2 + (fy[i] - cy) ** 2, support)
+        cx, cy = xs[i] + (qy * b2 - by * q2) / d, ys[i] + (bx * q2 - qx * b2) / d
+        return (cx, cy, (xs[i] - cx) ** 2 + (ys[i] - cy) ** 2, (i, j, k))
 
-    def contains(circle, i):
+    def next_outside(circle, start, stop):
+        """The first position in [start, stop) whose point is outside ``circle``, or stop."""
         cx, cy, r2, _ = circle
-        return (fx[i] - cx) ** 2 + (fy[i] - cy) ** 2 <= r2 * (1 + 1e-12) + 1e-300
+        bound = r2 * (1 + 1e-12) + 1e-300
+        chunk = 64
+        while start < stop:
+            end = min(stop, start + chunk)
+            out = (xs[start:end] - cx) ** 2 + (ys[start:end] - cy) ** 2 > bound
+            hit = int(out.argmax())
+            if out[hit]:
+                return start + hit
+            start, chunk = end, chunk * 4
+        return stop
 
-    return _welzl(points, order, contains, circle_of)[3]
+    n = len(order)
+    with np.errstate(all="ignore"):
+        circle = circle_of(0)
+        a = next_outside(circle, 1, n)
+        while a < n:
+            circle = circle_of(a)
+            b = next_outside(circle, 0, a)
+            while b < a:
+                circle = circle_of(a, b)
+                c = next_outside(circle, 0, b)
+                while c < b:
+                    circle = circle_of(a, b, c)
+                    c = next_outside(circle, c + 1, b)
+                b = next_outside(circle, b + 1, a)
+            a = next_outside(circle, a + 1, n)
+    return tuple(order[p] for p in circle[3])
 
 
 def sec_is_minimal(points, circle: Circle) -> bool:
@@ -185,24 +214,26 @@ def _exact_contains_all(points, circle: Circle, fx, fy) -> bool:
 
 
 def _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2) -> bool:
-    """The loop of :func:`_exact_contains_all` with the centre and radius as floats within
-    ``rad`` and ``rad2`` of their exact values."""
+    """The test of :func:`_exact_contains_all` with the centre and radius as floats within
+    ``rad`` and ``rad2`` of their exact values, vectorised over all points: the points the
+    slack cannot settle (and any overflow, which makes the bound NaN or infinite) are
+    decided exactly."""
     if not all(math.isfinite(v) for v in (fcx, fcy, fr2, rad, rad2)):
         raise OverflowError("not representable as floats")
-    exact_points = isinstance(points[0][0], fmpq)
-    for p, px, py in zip(points, fx, fy):
-        d2 = (px - fcx) ** 2 + (py - fcy) ** 2
-        slack = ((abs(px) + abs(fcx)) ** 2 + (abs(py) + abs(fcy)) ** 2 + abs(fr2)) * 2.0 ** -40 \
-            + 1e-290 + 4 * (abs(px - fcx) + abs(py - fcy) + rad) * rad + rad2
-        if not exact_points:
-            slack += 4 * (abs(px) + abs(py)) * 2.0 ** -40 * (abs(px - fcx) + abs(py - fcy) + 1)
-        if d2 + slack < fr2:
-            continue
-        if d2 - slack > fr2:
+    px, py = np.asarray(fx, dtype=float), np.asarray(fy, dtype=float)
+    with np.errstate(all="ignore"):
+        ex, ey = px - fcx, py - fcy
+        d2 = ex * ex + ey * ey
+        spread = np.abs(ex) + np.abs(ey)
+        ax, ay = np.abs(px) + abs(fcx), np.abs(py) + abs(fcy)
+        slack = (ax * ax + ay * ay + abs(fr2)) * 2.0 ** -40 + 1e-290 \
+            + 4 * (spread + rad) * rad + rad2
+        if not isinstance(points[0][0], fmpq):
+            slack += 4 * (np.abs(px) + np.abs(py)) * 2.0 ** -40 * (spread + 1)
+        if np.any(d2 - slack > fr2):
             return False
-        if sign(circle.scaled_power(p)) > 0:
-            return False
-    return True
+        unsure = np.flatnonzero(~(d2 + slack < fr2))
+    return all(sign(circle.scaled_power(points[i])) <= 0 for i in unsure.tolist())
 
 
 def _ball(v):

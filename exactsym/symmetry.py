@@ -47,14 +47,20 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Iterator, Sequence
 
-from .configuration import Configuration
+import numpy as np
+
+from .configuration import Configuration, no_cycle_collection
 from .geometry import PseudoAngle, intern_by_value, sorted_by_value
 from .exact import fmpq
 from .levels import Levels, levels_of
+from .rays_filtered import filtered_rays, integer_pseudo_angle as _pseudo_angle_of_integers, \
+    level_ranks
 from .strings import cyclic_occurrences as occurrences, cyclic_period
 
 __all__ = ["Isometry", "SymmetryGroup", "symmetry_group", "pseudo_angle", "least_rotation",
            "cyclic_period", "occurrences", "sort_by_exact_keys"]
+
+_FILTER_MIN = 64    # from this many rational points, rays are grouped by certified floats
 
 
 @dataclass(frozen=True)
@@ -235,14 +241,6 @@ def _polar_rays(polar):
     return centre_index, rays, ray_turns, radii, gaps
 
 
-def _pseudo_angle_of_integers(x, y) -> fmpq:
-    """:func:`pseudo_angle` of a non-zero vector of integers (``int`` or ``fmpz``), with
-    one ``fmpq`` construction: the same exact number."""
-    if y >= 0:
-        return fmpq(y, x + y) if x > 0 else fmpq(2 * x - y, x - y)
-    return fmpq(2 * x + 3 * y, x + y) if x < 0 else fmpq(4 * x - 3 * y, x - y)
-
-
 def _directions(points, centre, integers: bool, homogeneous=None):
     """``(centre_index, idx, vectors, r2s, keys)``: for each point i off the centre (listed
     in ``idx``) a vector pointing from the centre to it, its exact squared distance to
@@ -354,33 +352,57 @@ def symmetry_group(config: Configuration, rings: Levels | None = None) -> Symmet
     >>> len(list(kite.symmetries()))
     2
     """
-    ring = rings if rings is not None else levels_of(config)
+    with no_cycle_collection():       # bulk construction: the collector's passes cost more
+        return _symmetry_group(config, rings if rings is not None else levels_of(config))
+
+
+def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     centre = ring.sec.centre
     n = config.n
     if n == 1 and (not config.polar[0][0] if ring.polar else config.points[0] == centre):
         return SymmetryGroup("O2", 0, 0, centre, ring.polar, None, None, None, True, (0,), 0)
 
+    filtered = None
     if ring.polar:
         centre_index, rays, ray_turns, radii, gaps = _polar_rays(config.polar)
         points = None
     else:
         points = config.points
-        centre_index, rays, radii, gaps = _cartesian_rays(points, centre,
-                                                          homogeneous=ring.sec.homogeneous)
+        filtered = None
+        if n >= _FILTER_MIN and isinstance(centre[0], fmpq) and isinstance(centre[1], fmpq) \
+                and isinstance(points[0][0], fmpq):
+            rank = level_ranks(ring, n)
+            if rank is not None:
+                filtered = filtered_rays(points, centre, rank)
+        if filtered is not None:
+            centre_index, rays, radii, gaps, gap_ids = filtered
+        else:
+            centre_index, rays, radii, gaps = _cartesian_rays(points, centre,
+                                                              homogeneous=ring.sec.homogeneous)
         ray_turns = None
     m = len(rays)
 
     # symbols, interned: equal ids iff equal symbols; values are compared only lazily
-    ray_ids = _intern(radii, True)
-    gap_ids = intern_by_value(gaps) if gaps and isinstance(gaps[0], PseudoAngle) \
-        else _intern(gaps, False)
-    width = max(gap_ids) + 1
-    ccw = [ray_ids[i] * width + gap_ids[i] for i in range(m)]
-    cw = [ray_ids[-i % m] * width + gap_ids[(-i - 1) % m] for i in range(m)]
-    ccw_values, cw_values = _Symbols(radii, gaps, False), _Symbols(radii, gaps, True)
+    if filtered is None:
+        ray_ids = _intern(radii, True)
+        gap_ids = intern_by_value(gaps) if gaps and isinstance(gaps[0], PseudoAngle) \
+            else _intern(gaps, False)
+        width = max(gap_ids) + 1
+        ccw = [ray_ids[i] * width + gap_ids[i] for i in range(m)]
+        cw = [ray_ids[-i % m] * width + gap_ids[(-i - 1) % m] for i in range(m)]
+        ccw_values, cw_values = _Symbols(radii, gaps, False), _Symbols(radii, gaps, True)
+        least = ray_ids[radii.index(min(radii))]      # the least symbols are on these rays
+    else:                       # ray and gap ids are ranks: symbols compare as their ids
+        rid, gid = radii, np.asarray(gap_ids, dtype=np.int64)
+        width = int(gid.max()) + 1
+        back = (-np.arange(m)) % m
+        ccw = (rid * width + gid).tolist()
+        cw = (rid[back] * width + gid[(back - 1) % m]).tolist()
+        ray_ids = rid.tolist()
+        ccw_values, cw_values = ccw, cw
+        least = min(ray_ids)
 
     # canonical labelling: least rotation over both orientations
-    least = ray_ids[radii.index(min(radii))]          # the least symbols are on these rays:
     rays_least = [r for r in range(m) if ray_ids[r] == least]
     s = least_rotation(ccw, ccw_values, rays_least)
     t = least_rotation(cw, cw_values, [-r % m for r in rays_least])

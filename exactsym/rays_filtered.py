@@ -1,0 +1,221 @@
+"""The rays of many rational points about the SEC centre, by certified float filters.
+
+The ground truth (:mod:`exactsym.symmetry`) reads the rays counter-clockwise with the
+angle between consecutive rays; from ``symmetry._FILTER_MIN`` rational points on, this
+module computes the same rays, ray classes and gap classes with NumPy: floats with proven
+error bounds (``geometry.float_pseudo_angles``, ``geometry.certified_groups``; proofs in
+``docs/numbers.md``) order and separate whatever they can, and exact integer arithmetic
+decides only inside the groups they cannot split (ties and near-ties).  Floats never
+decide: two values in different certified groups are exactly different and in that order.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .exact import fmpq
+from .geometry import FILTER_EPS, certified_groups, float_differences, float_pseudo_angles
+from .levels import Levels
+
+
+def integer_pseudo_angle(x, y) -> fmpq:
+    """:func:`exactsym.symmetry.pseudo_angle` of a non-zero vector of integers (``int`` or ``fmpz``), with
+    one ``fmpq`` construction: the same exact number."""
+    if y >= 0:
+        return fmpq(y, x + y) if x > 0 else fmpq(2 * x - y, x - y)
+    return fmpq(2 * x + 3 * y, x + y) if x < 0 else fmpq(4 * x - 3 * y, x - y)
+
+
+
+def level_ranks(ring: Levels, n: int):
+    """``rank[i]``: the index of point i's level (nearest first, so ranks order as the
+    squared radii), or None unless the levels hold every point once."""
+    rank = [-1] * n
+    seen = 0
+    for li, level in enumerate(ring.levels):
+        for i in level.points:
+            if not 0 <= i < n or rank[i] != -1:
+                return None
+            rank[i] = li
+            seen += 1
+    return rank if seen == n else None
+
+
+class LazyGaps:
+    """The exact angle from ray a to ray a + 1 (an ``fmpq`` pseudo-angle), computed from the
+    rays' integer vectors on first use: the float filter interned the gaps, so only the
+    few comparisons of the canonical labelling need values."""
+
+    __slots__ = ("rays", "vector", "vectors", "cache")
+
+    def __init__(self, rays, vector, vectors):
+        self.rays, self.vector, self.vectors, self.cache = rays, vector, vectors, {}
+
+    def __len__(self) -> int:
+        return len(self.rays)
+
+    def exact_products(self, gaps):
+        """``(dot, cross)``: object arrays of Python integers, ``u . v`` and ``u x v`` for
+        the integer vectors u, v of the rays at and after each gap in ``gaps``."""
+        m = len(self.rays)
+        rays = np.unique(np.concatenate((gaps, (gaps + 1) % m)))     # each vector once
+        vx, vy = self.vectors([self.rays[r][0] for r in rays.tolist()])
+        at, after = np.searchsorted(rays, gaps), np.searchsorted(rays, (gaps + 1) % m)
+        ux, uy, wx, wy = vx[at], vy[at], vx[after], vy[after]
+        return ux * wx + uy * wy, ux * wy - uy * wx
+
+    def __getitem__(self, a: int):
+        m = len(self.rays)
+        if not -m <= a < m:
+            raise IndexError(a)
+        a %= m
+        gap = self.cache.get(a)
+        if gap is None:
+            (ux, uy), (vx, vy) = self.vector(self.rays[a][0]), \
+                self.vector(self.rays[(a + 1) % m][0])
+            gap = self.cache[a] = integer_pseudo_angle(ux * vx + uy * vy, ux * vy - uy * vx)
+        return gap
+
+
+def filtered_rays(points, centre, rank):
+    """:func:`exactsym.symmetry._cartesian_rays` for many rational points, as certified float filters over
+    NumPy arrays (``geometry.float_pseudo_angles``, ``certified_groups``): directions and
+    the angles between consecutive rays are grouped by floats with proven error bounds,
+    and exact integer keys are computed only inside groups the bound cannot split (ties
+    and near-ties).  ``radii`` are tuples of level ranks (same order as the squared
+    radii); returns ``(centre_index, rays, radii, gaps, gap_ids)`` or None when the floats
+    overflow."""
+    diffs = float_differences(points, centre)
+    if diffs is None:
+        return None
+    dx, dy, ex, ey = diffs
+    cx, cy = centre
+    den = cx.q * cy.q // cx.q.gcd(cy.q)
+    a0, b0 = cx.p * (den // cx.q), cy.p * (den // cy.q)
+    vectors: dict = {}
+
+    def vector(i):
+        v = vectors.get(i)
+        if v is None:
+            x, y = points[i]
+            v = vectors[i] = ((x.p * den - a0 * x.q) * y.q, (y.p * den - b0 * y.q) * x.q)
+        return v
+
+    def vectors_of(indices):
+        """The same integer vectors for many points, as object arrays of Python ints."""
+        def column(values):
+            return np.array([int(v) for v in values] + [None], dtype=object)[:-1]
+        pts = [points[i] for i in indices]
+        xp, xq = column(p[0].p for p in pts), column(p[0].q for p in pts)
+        yp, yq = column(p[1].p for p in pts), column(p[1].q for p in pts)
+        return (xp * iden - ia0 * xq) * yq, (yp * iden - ib0 * yq) * xq
+
+    iden, ia0, ib0 = int(den), int(a0), int(b0)
+    keys, errs, sure = float_pseudo_angles(dx, dy, ex, ey)
+    exact: dict = {}
+    centre_index = None
+    for i in np.flatnonzero(~sure).tolist():
+        vx, vy = vector(i)
+        if not vx and not vy:
+            centre_index = i
+            continue
+        exact[i] = k = integer_pseudo_angle(vx, vy)
+        keys[i], errs[i] = float(k), 2.0 ** -46
+    idx = np.arange(len(points))
+    if centre_index is not None:
+        idx = np.delete(idx, centre_index)
+    order, starts = certified_groups(keys[idx], errs[idx])
+    sorted_idx = idx[order].tolist()
+    rays: list = []
+    if len(starts) == len(sorted_idx):
+        rays = [(i,) for i in sorted_idx]
+    else:
+        bounds = starts.tolist() + [len(sorted_idx)]
+        for g in range(len(bounds) - 1):
+            members = sorted_idx[bounds[g]:bounds[g + 1]]
+            if len(members) == 1:
+                rays.append((members[0],))
+                continue
+            for i in members:
+                if i not in exact:
+                    exact[i] = integer_pseudo_angle(*vector(i))
+            members.sort(key=lambda i: (exact[i], rank[i]))
+            ray = [members[0]]
+            for i in members[1:]:
+                if exact[i] == exact[ray[0]]:
+                    ray.append(i)
+                else:
+                    rays.append(tuple(ray))
+                    ray = [i]
+            rays.append(tuple(ray))
+    if len(rays) == len(sorted_idx):     # one point per ray: ids are the ranks of its level
+        ray_ids = np.unique(np.asarray(rank)[idx[order]], return_inverse=True)[1]
+    else:                                # ids ranked by value: they order as the radii do
+        radii = [tuple([rank[i] for i in ray]) for ray in rays]
+        rank_of = {r: k for k, r in enumerate(sorted(set(radii)))}
+        ray_ids = np.array([rank_of[r] for r in radii], dtype=np.int64)
+    gaps = LazyGaps(rays, vector, vectors_of)
+    return centre_index, rays, ray_ids, gaps, filtered_gap_ids(rays, gaps, dx, dy, ex, ey)
+
+
+def filtered_gap_ids(rays, gaps, dx, dy, ex, ey) -> list[int]:
+    """Small integers, equal iff the exact gaps are equal and ordered as they are (ranks):
+    float gaps (the pseudo-angle of
+    ``(u . v, u x v)``) with a proven bound group them; exact values split the groups.
+    Bound on a dot or cross product of vectors known within Eu, Ev (componentwise), with
+    float sums Su, Sv of absolute components: ``(Su + 2 Eu) Ev + Eu Sv + 2^-50 Su Sv``."""
+    m = len(rays)
+    first = np.fromiter((ray[0] for ray in rays), dtype=np.int64, count=m)
+    ux, uy = dx[first], dy[first]
+    vx, vy = np.roll(ux, -1), np.roll(uy, -1)
+    eu = np.maximum(ex[first], ey[first])
+    ev = np.roll(eu, -1)
+    with np.errstate(all="ignore"):
+        su, sv = np.abs(ux) + np.abs(uy), np.abs(vx) + np.abs(vy)
+        bound = ((su + 2 * eu) * ev + eu * sv + FILTER_EPS * su * sv) * 1.01 + 1e-290
+        keys, errs, sure = float_pseudo_angles(ux * vx + uy * vy, ux * vy - uy * vx,
+                                               bound, bound)
+    for a in np.flatnonzero(~sure).tolist():
+        keys[a], errs[a] = float(gaps[a]), 2.0 ** -46
+    order, starts = certified_groups(keys, errs)
+    sizes = np.diff(np.append(starts, m))
+    if len(starts) == m:
+        ids = np.empty(m, dtype=np.int64)
+        ids[order] = np.arange(m)
+        return ids.tolist()
+    # exact (dot, cross) of every gap in a group of two or more, in Python integers over
+    # object arrays; a group whose members all point as its first one is one class
+    pos = np.flatnonzero(np.repeat(sizes > 1, sizes))
+    members = order[pos]
+    dot, crs = gaps.exact_products(members)
+    head = np.repeat(np.arange(len(starts)), sizes)[pos]          # group of each member
+    first_of = {}
+    for k, g in enumerate(head.tolist()):
+        first_of.setdefault(g, k)
+    h = np.fromiter((first_of[g] for g in head.tolist()), dtype=np.int64, count=len(pos))
+    same = np.asarray(dot * crs[h] - crs * dot[h] == 0, dtype=bool) \
+        & (np.asarray(dot > 0, dtype=bool) == np.asarray(dot[h] > 0, dtype=bool)) \
+        & (np.asarray(dot < 0, dtype=bool) == np.asarray(dot[h] < 0, dtype=bool)) \
+        & (np.asarray(crs > 0, dtype=bool) == np.asarray(crs[h] > 0, dtype=bool)) \
+        & (np.asarray(crs < 0, dtype=bool) == np.asarray(crs[h] < 0, dtype=bool))
+    split = set(head[~same].tolist())
+    ids = [0] * m
+    bounds = starts.tolist() + [m]
+    sorted_a = order.tolist()
+    next_id = 0
+    for g in range(len(bounds) - 1):
+        group = sorted_a[bounds[g]:bounds[g + 1]]
+        if g not in split:
+            for a in group:
+                ids[a] = next_id
+            next_id += 1
+            continue
+        local: dict = {}
+        for a in group:
+            gap = gaps[a]
+            local.setdefault((gap.p, gap.q), (gap, []))[1].append(a)
+        for _, same_gap in sorted(local.values(), key=lambda entry: entry[0]):
+            for a in same_gap:
+                ids[a] = next_id
+            next_id += 1
+    return ids

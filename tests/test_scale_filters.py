@@ -1,0 +1,164 @@
+"""The NumPy float filters of the large rational path decide as exact arithmetic does, on
+adversarial near-ties (issue 9): points on common rays from the centre (collinear triples),
+on common circles (Pythagorean directions: equal distances), orbits of rotations and
+mirrors (equal angles between rays), and copies moved by 10^-30 (near-ties a float cannot
+see).  The filtered symmetry group (``symmetry._filtered_rays``) must equal the exact one
+point for point; the vectorised SEC must equal exact Welzl; the certified groups must
+never separate equal values nor misorder unequal ones."""
+
+from __future__ import annotations
+
+import random
+
+import numpy as np
+from hypothesis import given, settings, strategies as st
+
+import exactsym.symmetry as symmetry
+from exactsym.configuration import Configuration
+from exactsym.exact import fmpq
+from exactsym.geometry import certified_groups, float_differences, float_pseudo_angles
+from exactsym.levels import levels_of
+from exactsym.rays_filtered import filtered_rays, level_ranks
+from exactsym.sec import _circle, _welzl, smallest_enclosing_circle
+from exactsym.symmetry import pseudo_angle
+
+TINY = fmpq(1, 10 ** 30)
+CENTRE = (fmpq(1, 3), fmpq(-2, 7))
+DIRECTIONS = [(5, 0), (3, 4), (4, 3), (0, 5), (1, 2), (2, 1), (1, 1), (7, 24), (24, 7)]
+C4 = [lambda x, y: (x, y), lambda x, y: (-y, x), lambda x, y: (-x, -y), lambda x, y: (y, -x)]
+
+
+def _configuration(seeds, mirror: bool, nudges) -> Configuration:
+    points = set()
+    for (a, b), k in seeds:
+        for rot in C4:
+            for x, y in ((a, b), (b, a)) if mirror else ((a, b),):
+                px, py = rot(fmpq(k) * x, fmpq(k) * y)
+                points.add((px + CENTRE[0], py + CENTRE[1]))
+    points = sorted(points)
+    for j, (sx, sy) in nudges:              # a copy of a point, moved by 10^-30
+        x, y = points[j % len(points)]
+        moved = (x + sx * TINY, y + sy * TINY)
+        if moved not in points:
+            points.append(moved)
+    random.Random(len(points)).shuffle(points)
+    return Configuration.from_points(points)
+
+
+seed = st.tuples(st.sampled_from(DIRECTIONS), st.sampled_from([1, 2, 3, fmpq(5, 2)]))
+nudge = st.tuples(st.integers(0, 500), st.sampled_from([(1, 0), (0, 1), (-1, 1), (1, 1)]))
+
+
+def _summary(group):
+    return (group.name, group.orderable, group.ordering, group.leader, group.reference,
+            [s.permutation for s in group.symmetries()])
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(seed, min_size=8, max_size=30), st.booleans(),
+       st.lists(nudge, max_size=3))
+def test_filtered_group_equals_exact(seeds, mirror, nudges):
+    config = _configuration(seeds, mirror, nudges)
+    ring = levels_of(config)
+    filtered = symmetry.symmetry_group(config, ring) if config.n >= symmetry._FILTER_MIN \
+        else None
+    saved = symmetry._FILTER_MIN
+    try:
+        symmetry._FILTER_MIN = 10 ** 12
+        exact = symmetry.symmetry_group(config, ring)
+    finally:
+        symmetry._FILTER_MIN = saved
+    if filtered is not None:
+        assert _summary(filtered) == _summary(exact)
+    rank = level_ranks(ring, config.n)
+    assert rank is not None and filtered_rays(config.points, ring.sec.centre,
+                                                        rank) is not None
+    symmetry._FILTER_MIN, low = 1, symmetry._FILTER_MIN
+    try:                                     # the filter on small sets too
+        assert _summary(symmetry.symmetry_group(config, ring)) == _summary(exact)
+    finally:
+        symmetry._FILTER_MIN = low
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(seed, min_size=1, max_size=12), st.booleans(), st.lists(nudge, max_size=3))
+def test_vectorised_sec_equals_exact_welzl(seeds, mirror, nudges):
+    points = list(_configuration(seeds, mirror, nudges).points)
+    fast = smallest_enclosing_circle(points)
+    order = list(range(len(points)))
+    slow = _welzl(points, order, lambda c, i: c.contains(points[i]),
+                  lambda support: _circle(points, support))
+    assert fast.centre == slow.centre and fast.radius_squared == slow.radius_squared
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(seed, min_size=1, max_size=12), st.lists(nudge, max_size=4))
+def test_certified_groups_order_exact_pseudo_angles(seeds, nudges):
+    """Every group boundary the filter certifies is a strict exact inequality, ties stay
+    in one group, and the exact fallback runs (the near-ties are never 'sure')."""
+    points = list(_configuration(seeds, True, nudges).points)
+    points = [p for p in points if p != CENTRE]
+    dx, dy, ex, ey = float_differences(points, CENTRE)
+    keys, errs, sure = float_pseudo_angles(dx, dy, ex, ey)
+    exact = [pseudo_angle(x - CENTRE[0], y - CENTRE[1]) for x, y in points]
+    for i in np.flatnonzero(~sure).tolist():
+        keys[i], errs[i] = float(exact[i]), 2.0 ** -46
+    for i in np.flatnonzero(sure).tolist():
+        assert abs(keys[i] - float(exact[i])) <= errs[i]
+    order, starts = certified_groups(keys, errs)
+    group_of = np.empty(len(points), dtype=np.int64)
+    group_of[order] = np.cumsum(np.isin(np.arange(len(points)), starts)) - 1
+    for i in range(len(points)):
+        for j in range(len(points)):
+            if group_of[i] < group_of[j]:
+                assert exact[i] < exact[j]
+            if exact[i] == exact[j]:
+                assert group_of[i] == group_of[j]
+
+
+def test_exact_fallback_runs_on_near_ties():
+    """Two points 10^-30 apart in angle: the float keys cannot separate them."""
+    points = [(fmpq(1), fmpq(1)), (fmpq(1), fmpq(1) + TINY), (fmpq(-1), fmpq(0))]
+    dx, dy, ex, ey = float_differences(points, (fmpq(0), fmpq(0)))
+    keys, errs, sure = float_pseudo_angles(dx, dy, ex, ey)
+    assert sure.tolist() == [True, True, False]     # (-1, 0): on an axis, decided exactly
+    keys[2], errs[2] = 2.0, 2.0 ** -46
+    order, starts = certified_groups(keys, errs)
+    assert len(starts) == 2 and sorted(order[:2].tolist()) == [0, 1]
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(seed, min_size=1, max_size=20), st.booleans(), st.lists(nudge, max_size=3))
+def test_filtered_levels_equal_exact(seeds, mirror, nudges):
+    """Levels ordered by one filtered pass (``geometry.angular_ranks``) equal levels
+    ordered by the exact comparison sort (``geometry.angular_sort``)."""
+    import exactsym.levels as levels
+    config = _configuration(seeds, mirror, nudges)
+    saved = levels._FILTER_MIN
+    try:
+        levels._FILTER_MIN = 1
+        fast = levels.levels_of(config)
+        levels._FILTER_MIN = 10 ** 12
+        slow = levels.levels_of(config)
+    finally:
+        levels._FILTER_MIN = saved
+    assert fast.levels == slow.levels
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.tuples(st.integers(-3, 3), st.integers(-3, 3), st.integers(0, 2)),
+                min_size=64, max_size=120))
+def test_filtered_coincidence_equals_dictionary_scan(raw):
+    """Points 10^-30 apart have equal floats: the filtered duplicate search must still
+    report exactly the first pair the exact dictionary scan reports."""
+    from exactsym.configuration import _coincident
+    from exactsym.exact import exact_key
+    points = [(fmpq(a) + e * TINY, fmpq(b)) for a, b, e in raw]
+    config = Configuration(points=points, system=None)
+    seen, expected = {}, None
+    for i, (x, y) in enumerate(points):
+        j = seen.setdefault((exact_key(x), exact_key(y)), i)
+        if j != i:
+            expected = (j, i)
+            break
+    assert _coincident(config) == expected
