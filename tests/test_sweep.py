@@ -369,3 +369,12 @@ def test_paper_sweep_sets_aside_instances_outside_the_hypotheses(tmp_path):
     for label in ("lem-los-gij", "theorem-los-g1n", "MakeAsym"):
         assert by[label].failures == 0 and by[label].outside > 0, label
     assert by["MakeAsym"].applicable == 0 and by["obs-merg-asym-pair"].failures > 0
+
+
+def test_workers_without_dask_is_one_line_exit_2(tmp_path, capsys, monkeypatch):
+    """Dask is the 'sweep' extra: a base install asking for workers gets one line, exit 2."""
+    monkeypatch.setitem(sys.modules, "distributed", None)     # import distributed fails
+    code = main(["roots:6:<=3", "--what", "truth", "--workers", "2",
+                 "--out", str(tmp_path / "w.jsonl")])
+    err = capsys.readouterr().err
+    assert code == 2 and "exactsym[sweep]" in err and len(err.strip().splitlines()) == 1

@@ -252,6 +252,16 @@ def _serial(todo, what, budget, handle, done, total, options, progress) -> Sweep
                     time.perf_counter() - start, complete, 0, batches)
 
 
+def _require_dask() -> None:
+    """Dask is the 'sweep' extra: without it, one line (exit 2) instead of a traceback."""
+    try:
+        import distributed  # noqa: F401
+    except ModuleNotFoundError:
+        from .families import FamilyError
+        raise FamilyError("a sweep on workers needs Dask distributed: pip install "
+                          "'exactsym[sweep]' (or run it with --serial)") from None
+
+
 def _client(options: SweepOptions):
     from distributed import Client, LocalCluster
     if options.scheduler:
@@ -267,6 +277,7 @@ def _client(options: SweepOptions):
 
 
 def _distributed(todo, what, budget, handle, done, total, options, progress) -> SweepRun:
+    _require_dask()
     from distributed import as_completed
     start = time.perf_counter()
     client, cluster, has_dashboard = _client(options)
