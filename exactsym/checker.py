@@ -8,24 +8,8 @@ certificates), ``checker_ordering`` (the canonical ordering and the leader) and
 it does not (the reason on stderr), 2 when the file is unreadable.  The format is described in
 ``docs/certificates.md``.
 
-What a valid certificate proves.  P is the embedded point set, G the group of the isometries g
-of the plane with g(P) = P; the "level" of a point is the set of points as far as it from c.
- 1. c is fixed by every g in G.  Cartesian: c is the centroid (g is affine and permutes P, so it
-    fixes the mean of P).  Polar: c is the origin, checked to be the centre of the smallest
-    enclosing circle of P, which is unique and so mapped onto itself by every g.
- 2. H <= G: each generator (a rotation rho about c; for Dk also a reflection mu through c) maps
-    every point i to point perm[i], so it maps P into P and is in G.  A rotation about c fixing
-    a point a != c is the identity, so the order k of rho is the length of the cycle of the
-    reference point a under its permutation, and H = <rho, mu> is exactly Ck or Dk.
- 3. G <= H: every g in G fixes c, so g is determined by its kind (rotation or reflection) and
-    by b = g(a), a point of P on the level of a.  For each such b and kind, the candidate is in
-    H (b is in the H-orbit of a, computed from the verified permutations) or the witness names
-    a point w whose image under the candidate is not in P: then the candidate is not in G.
-So G = H: the checker names it, derives "orderable" (no element of G moves a point) and
-compares both with the claim.  The cost is linear: O(n) per generator, O(1) per candidate.
-
-Numbers are exact: rationals (ints after scaling by a common denominator, or Fractions), or
-elements of one real number field Q(theta) written as coefficient lists in theta.
+What a valid group certificate proves, and why, is written once, in ``checker_groups``;
+the ordering's proof in ``checker_ordering``; refutations in ``checker_refutations``.
 """
 
 from __future__ import annotations

@@ -133,7 +133,7 @@ def _float_support(points, order, fx, fy) -> tuple[int, ...]:
         bx, by, qx, qy = xs[j] - xs[i], ys[j] - ys[i], xs[k] - xs[i], ys[k] - ys[i]
         d = 2 * (bx * qy - by * qx)
         if d == 0:
-            return (xs[i], ys[i], float("inf"), (i, j, k))
+            return (xs[i], ys[i], float("inf"), (i, j, k))   # a proposal only: verified exactly
         b2, q2 = bx * bx + by * by, qx * qx + qy * qy
         cx, cy = xs[i] + (qy * b2 - by * q2) / d, ys[i] + (bx * q2 - qx * b2) / d
         return (cx, cy, (xs[i] - cx) ** 2 + (ys[i] - cy) ** 2, (i, j, k))

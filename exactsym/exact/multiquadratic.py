@@ -65,6 +65,16 @@ class _Rational:
         return cls.from_rational if obj is None else obj.to_fmpq
 
 
+def _coerced(other):
+    """``other`` as an :class:`MQ` (a rational is coerced), or None for a foreign type."""
+    if isinstance(other, MQ):
+        return other
+    try:
+        return MQ.rational(other)
+    except TypeError:
+        return None
+
+
 class MQ(FieldElement):
     """An element of a multiquadratic field: ``{squarefree radicand: fmpq}``.
 
@@ -117,11 +127,9 @@ class MQ(FieldElement):
 
     # -- arithmetic ---------------------------------------------------------
     def __add__(self, other):
-        if not isinstance(other, MQ):
-            try:
-                other = MQ.rational(other)
-            except TypeError:
-                return NotImplemented
+        other = _coerced(other)
+        if other is None:
+            return NotImplemented
         if not other.terms:
             return self
         if not self.terms:
@@ -148,11 +156,9 @@ class MQ(FieldElement):
         return self
 
     def __sub__(self, other):
-        if not isinstance(other, MQ):
-            try:
-                other = MQ.rational(other)
-            except TypeError:
-                return NotImplemented
+        other = _coerced(other)
+        if other is None:
+            return NotImplemented
         return self + (-other)
 
     def __rsub__(self, other):
@@ -249,11 +255,9 @@ class MQ(FieldElement):
 
     # -- equality, hash, sign ----------------------------------------------
     def __eq__(self, other):
-        if not isinstance(other, MQ):
-            try:
-                other = MQ.rational(other)
-            except TypeError:
-                return NotImplemented
+        other = _coerced(other)
+        if other is None:
+            return NotImplemented
         return self.terms == other.terms
 
     def __hash__(self):
