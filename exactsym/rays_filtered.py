@@ -124,6 +124,8 @@ def filtered_rays(points, centre, rank):
     idx = np.arange(len(points))
     if centre_index is not None:
         idx = np.delete(idx, centre_index)
+    if not len(idx):                     # one point, at the centre
+        return centre_index, [], np.zeros(0, dtype=np.int64), LazyGaps([], vector, vectors_of), []
     order, starts = certified_groups(keys[idx], errs[idx])
     sorted_idx = idx[order].tolist()
     rays: list = []
@@ -149,7 +151,10 @@ def filtered_rays(points, centre, rank):
                     ray = [i]
             rays.append(tuple(ray))
     if len(rays) == len(sorted_idx):     # one point per ray: ids are the ranks of its level
-        ray_ids = np.unique(np.asarray(rank)[idx[order]], return_inverse=True)[1]
+        # taken along `rays`, not along the float order: inside a group the exact sort
+        # may have reordered the rays (the near-tie defect of issue 9)
+        first = np.fromiter((ray[0] for ray in rays), dtype=np.int64, count=len(rays))
+        ray_ids = np.unique(np.asarray(rank)[first], return_inverse=True)[1]
     else:                                # ids ranked by value: they order as the radii do
         radii = [tuple([rank[i] for i in ray]) for ray in rays]
         rank_of = {r: k for k, r in enumerate(sorted(set(radii)))}
