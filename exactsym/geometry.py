@@ -226,23 +226,54 @@ FILTER_EPS = 2.0 ** -50           # >= 4 units in the last place of a double
 _TINY = 1e-290                    # covers underflow in products of subnormal magnitudes
 
 
-def float_differences(points, origin):
-    """``(dx, dy, ex, ey)``: float arrays with ``|dx - (x - ox)| <= ex`` (likewise y) for
-    rational points and origin (``float(fmpq)`` is within a relative 2^-52 of its value).
-    None when a value is not a finite double."""
+def float_coordinates(points):
+    """``(fx, fy)``: the correctly rounded floats of the coordinates of rational points
+    (``float(fmpq)``), as arrays; None when one is not a finite double.  Computed once per
+    configuration (``Levels.floats``) and shared by the SEC, the levels and the rays."""
     try:
         fx = np.fromiter((float(p[0]) for p in points), dtype=float, count=len(points))
         fy = np.fromiter((float(p[1]) for p in points), dtype=float, count=len(points))
+    except (OverflowError, ValueError):
+        return None
+    if not (np.isfinite(fx).all() and np.isfinite(fy).all()):
+        return None
+    return fx, fy
+
+
+def float_differences(points, origin, floats=None):
+    """``(dx, dy, ex, ey)``: float arrays with ``|dx - (x - ox)| <= ex`` (likewise y) for
+    rational points and origin (``float(fmpq)`` is within a relative 2^-52 of its value).
+    ``floats``: the points' :func:`float_coordinates`, when already computed.
+    None when a value is not a finite double."""
+    if floats is None:
+        floats = float_coordinates(points)
+        if floats is None:
+            return None
+    fx, fy = floats
+    try:
         ox, oy = float(origin[0]), float(origin[1])
     except (OverflowError, ValueError):
         return None
-    if not (np.isfinite(fx).all() and np.isfinite(fy).all() and math.isfinite(ox)
-            and math.isfinite(oy)):
+    if not (math.isfinite(ox) and math.isfinite(oy)):
         return None
     dx, dy = fx - ox, fy - oy
     ex = FILTER_EPS * (np.abs(fx) + abs(ox) + np.abs(dx)) + _TINY
     ey = FILTER_EPS * (np.abs(fy) + abs(oy) + np.abs(dy)) + _TINY
     return dx, dy, ex, ey
+
+
+def float_squared_norms(dx, dy, ex, ey):
+    """``(r2, err)``: floats within ``err`` of ``x^2 + y^2`` for the exact ``x, y`` within
+    ``ex, ey`` of ``dx, dy``; None when a value is not finite.  ``|x^2 - dx^2| =
+    |x - dx| |x + dx| <= ex (2 |dx| + ex)``; the two products and the sum add at most
+    ``3u r2`` (``FILTER_EPS >= 4u``); 1.01 covers the rounding of the bound itself."""
+    with np.errstate(all="ignore"):
+        r2 = dx * dx + dy * dy
+        err = (ex * (2 * np.abs(dx) + ex) + ey * (2 * np.abs(dy) + ey)) * 1.01 \
+            + FILTER_EPS * r2 + _TINY
+    if not (np.isfinite(r2).all() and np.isfinite(err).all()):
+        return None
+    return r2, err
 
 
 def float_pseudo_angles(vx, vy, ex, ey):
@@ -276,15 +307,17 @@ def certified_groups(keys, errs):
     return order, np.flatnonzero(np.concatenate(([True], cut)))
 
 
-def angular_ranks(points, centre) -> list[int] | None:
+def angular_ranks(points, centre, diffs=None) -> list[int] | None:
     """``rank[i]``: the position of point i when all points are sorted counter-clockwise
     about ``centre`` from the +x ray (as :func:`angular_sort`; the point at the centre
     ranks -1), for rational points and centre.  Floats with proven bounds
     (:func:`float_pseudo_angles`) order whatever they can; points whose quadrant is
     uncertain, and groups the bounds cannot split, are ordered by the exact rational
     pseudo-angle.  Points of one direction get distinct ranks in an arbitrary order (no
-    two of them share a level).  None when the floats overflow."""
-    diffs = float_differences(points, centre)
+    two of them share a level).  ``diffs``: the :func:`float_differences` of the points
+    from ``centre``, when already computed.  None when the floats overflow."""
+    if diffs is None:
+        diffs = float_differences(points, centre)
     if diffs is None:
         return None
     dx, dy, ex, ey = diffs

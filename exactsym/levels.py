@@ -13,14 +13,15 @@ angles are the given ``r^2`` and rational turns.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from .configuration import Configuration, no_cycle_collection
 from .exact import exact_key, exact_sorted, fmpq
-from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups, sorted_by_value,
-                       squared_distance)
+from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
+                       float_coordinates, float_differences, float_squared_norms,
+                       sorted_by_value, squared_distance)
 from .sec import Circle, smallest_enclosing_circle
 
 _FILTER_MIN = 64    # from this many rational points, levels are ordered by certified floats
@@ -39,6 +40,9 @@ class Levels:
     sec: Circle
     levels: tuple[Level, ...]
     polar: bool
+    # (points, fx, fy): the configuration's point sequence itself and the float arrays of
+    # its coordinates, when the rational filters computed them (reused by the rays)
+    floats: tuple | None = field(default=None, repr=False, compare=False)
 
 
 def polar_sec(polar) -> Circle | None:
@@ -67,22 +71,34 @@ def _levels_of(config: Configuration) -> Levels:
         if circle is not None:
             return Levels(circle, _polar_levels(config.polar), True)
     points = list(config.points)
-    circle = smallest_enclosing_circle(points)
+    # many rational points: their floats, converted once, filter the SEC, the levels and
+    # (through Levels.floats) the rays
+    floats = float_coordinates(points) if len(points) >= _FILTER_MIN \
+        and isinstance(points[0][0], fmpq) else None
+    circle = smallest_enclosing_circle(points, floats)
     x, y, d = circle.homogeneous
     if isinstance(d, fmpq) and d == 1:
         centre = circle.centre
-        order_level = None
-        if len(points) >= _FILTER_MIN and isinstance(centre[0], fmpq) \
-                and isinstance(centre[1], fmpq) and isinstance(points[0][0], fmpq):
-            rank = angular_ranks(points, centre)       # one filtered pass over all points
-            if rank is not None:
-                def order_level(members):
-                    return sorted(members, key=rank.__getitem__)
-        if order_level is None:
+        cx, cy = centre
+        diffs = None
+        if floats is not None and isinstance(cx, fmpq) and isinstance(cy, fmpq):
+            diffs = float_differences(points, centre, floats)
+        if diffs is None:
             def order_level(members):
                 return angular_sort(centre, points, members)
-        return Levels(circle, _group_levels([squared_distance(centre, p) for p in points],
-                                            order_level), False)
+            return Levels(circle, _group_levels([squared_distance(centre, p) for p in points],
+                                                order_level), False)
+        ranks: list = []
+
+        def order_level(members):      # one filtered pass over all points, when first needed
+            if not ranks:
+                ranks.append(angular_ranks(points, centre, diffs))
+            return sorted(members, key=ranks[0].__getitem__)
+
+        radii_squared = [(px - cx) ** 2 + (py - cy) ** 2 for px, py in points]
+        return Levels(circle, _group_levels(radii_squared, order_level,
+                                            float_squared_norms(*diffs)),
+                      False, (config.points, *floats))
     # centre X/D kept homogeneous: group by D^2 r^2 and sort by the directions D p - (X, Y),
     # which point as p - centre does (D > 0); divide by D^2 once per level
     vectors = [(d * p[0] - x, d * p[1] - y) for p in points]
@@ -102,10 +118,11 @@ def _angular_order(vectors, members: list[int]) -> list[int]:
     return at_centre + sorted_by_value(rest, keys)
 
 
-def _group_levels(radii_squared: list, order_level) -> tuple[Level, ...]:
-    """Levels from each point's squared radius; ``order_level`` sorts one level's indices."""
+def _group_levels(radii_squared: list, order_level, approx=None) -> tuple[Level, ...]:
+    """Levels from each point's squared radius; ``order_level`` sorts one level's indices.
+    ``approx``: ``(floats, errs)`` enclosing the squared radii, if known."""
     if len(radii_squared) >= _FILTER_MIN and isinstance(radii_squared[0], fmpq):
-        levels = _group_rational_levels(radii_squared, order_level)
+        levels = _group_rational_levels(radii_squared, order_level, approx)
         if levels is not None:
             return levels
     groups: dict = {}
@@ -120,19 +137,26 @@ def _polar_levels(polar) -> tuple[Level, ...]:
                          lambda members: sorted(members, key=lambda i: polar[i][1]))
 
 
-def _group_rational_levels(radii_squared: list, order_level) -> tuple[Level, ...] | None:
+def _group_rational_levels(radii_squared: list, order_level, approx=None
+                           ) -> tuple[Level, ...] | None:
     """:func:`_group_levels` for many ``fmpq``: ``float(fmpq)`` is correctly rounded (within
     a relative 2^-53), so floats with a relative slack of 2^-50 split the values into
     certainly ordered groups (``geometry.certified_groups``); equal values always share a
-    group, and only groups of two or more are grouped and sorted exactly."""
-    try:
-        approx = np.fromiter((float(v) for v in radii_squared), dtype=float,
-                             count=len(radii_squared))
-    except (OverflowError, ValueError):
-        return None
-    if not np.isfinite(approx).all():
-        return None
-    order, starts = certified_groups(approx, np.abs(approx) * 2.0 ** -50 + 1e-300)
+    group, and only groups of two or more are grouped and sorted exactly.  ``approx``:
+    ``(floats, errs)`` with each exact value within ``errs`` of its float (from the
+    points' float differences, ``geometry.float_squared_norms``), saving the conversions."""
+    if approx is not None:
+        keys, errs = approx
+    else:
+        try:
+            keys = np.fromiter((float(v) for v in radii_squared), dtype=float,
+                               count=len(radii_squared))
+        except (OverflowError, ValueError):
+            return None
+        if not np.isfinite(keys).all():
+            return None
+        errs = np.abs(keys) * 2.0 ** -50 + 1e-300
+    order, starts = certified_groups(keys, errs)
     flat = order.tolist()
     levels = []
     if len(starts) == len(flat):

@@ -77,15 +77,15 @@ class LazyGaps:
         return gap
 
 
-def filtered_rays(points, centre, rank):
+def filtered_rays(points, centre, rank, floats=None):
     """:func:`exactsym.symmetry._cartesian_rays` for many rational points, as certified float filters over
     NumPy arrays (``geometry.float_pseudo_angles``, ``certified_groups``): directions and
     the angles between consecutive rays are grouped by floats with proven error bounds,
     and exact integer keys are computed only inside groups the bound cannot split (ties
     and near-ties).  ``radii`` are tuples of level ranks (same order as the squared
     radii); returns ``(centre_index, rays, radii, gaps, gap_ids)`` or None when the floats
-    overflow."""
-    diffs = float_differences(points, centre)
+    overflow.  ``floats``: the points' ``geometry.float_coordinates``, if known."""
+    diffs = float_differences(points, centre, floats)
     if diffs is None:
         return None
     dx, dy, ex, ey = diffs

@@ -240,8 +240,9 @@ def _ball(v):
     return v.enclosure(64) if hasattr(v, "enclosure") else arb(v)
 
 
-def smallest_enclosing_circle(points: list[Point]) -> Circle:
-    """The SEC of a non-empty list of distinct exact points."""
+def smallest_enclosing_circle(points: list[Point], floats=None) -> Circle:
+    """The SEC of a non-empty list of distinct exact points.  ``floats``: the points'
+    correctly rounded float coordinates (``geometry.float_coordinates``), if known."""
     n = len(points)
     if n == 1:
         return _circle(points, (0,))
@@ -249,8 +250,11 @@ def smallest_enclosing_circle(points: list[Point]) -> Circle:
     random.Random(_SEED).shuffle(order)
     try:
         # float filter only: the proposed support is verified exactly below
-        fx = [float(p[0]) for p in points]
-        fy = [float(p[1]) for p in points]
+        if floats is not None:
+            fx, fy = floats
+        else:
+            fx = [float(p[0]) for p in points]
+            fy = [float(p[1]) for p in points]
         guess = _circle(points, _float_support(points, order, fx, fy))
         if sec_is_minimal(points, guess) and _exact_contains_all(points, guess, fx, fy):
             return _canonical(points, guess)

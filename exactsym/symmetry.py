@@ -377,7 +377,9 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
                 and isinstance(points[0][0], fmpq):
             rank = level_ranks(ring, n)
             if rank is not None:
-                filtered = filtered_rays(points, centre, rank)
+                shared = ring.floats       # the floats of these very points, if computed
+                floats = shared[1:] if shared is not None and shared[0] is points else None
+                filtered = filtered_rays(points, centre, rank, floats)
         if filtered is not None:
             centre_index, rays, radii, gaps, gap_ids = filtered
         else:
