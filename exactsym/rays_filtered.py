@@ -30,15 +30,15 @@ def integer_pseudo_angle(x, y) -> fmpq:
 def level_ranks(ring: Levels, n: int):
     """``rank[i]``: the index of point i's level (nearest first, so ranks order as the
     squared radii), or None unless the levels hold every point once."""
-    rank = [-1] * n
-    seen = 0
-    for li, level in enumerate(ring.levels):
-        for i in level.points:
-            if not 0 <= i < n or rank[i] != -1:
-                return None
-            rank[i] = li
-            seen += 1
-    return rank if seen == n else None
+    members = [level.points for level in ring.levels]
+    flat = np.fromiter((i for points in members for i in points), dtype=np.int64)
+    if len(flat) != n or (n and (flat.min() < 0 or flat.max() >= n)):
+        return None
+    rank = np.full(n, -1, dtype=np.int64)
+    rank[flat] = np.repeat(np.arange(len(members)), [len(points) for points in members])
+    if (rank < 0).any():                 # a point listed twice (then another is missing)
+        return None
+    return rank.tolist()
 
 
 class LazyGaps:
@@ -190,37 +190,30 @@ def filtered_gap_ids(rays, gaps, dx, dy, ex, ey) -> list[int]:
         return ids.tolist()
     # exact (dot, cross) of every gap in a group of two or more, in Python integers over
     # object arrays; a group whose members all point as its first one is one class
+    groups = len(starts)
     pos = np.flatnonzero(np.repeat(sizes > 1, sizes))
     members = order[pos]
     dot, crs = gaps.exact_products(members)
-    head = np.repeat(np.arange(len(starts)), sizes)[pos]          # group of each member
-    first_of = {}
-    for k, g in enumerate(head.tolist()):
-        first_of.setdefault(g, k)
-    h = np.fromiter((first_of[g] for g in head.tolist()), dtype=np.int64, count=len(pos))
+    head = np.repeat(np.arange(groups), sizes)[pos]          # group of each member
+    firsts = np.flatnonzero(np.concatenate(([True], head[1:] != head[:-1])))
+    h = np.repeat(firsts, np.diff(np.append(firsts, len(pos))))    # its group's first
     same = np.asarray(dot * crs[h] - crs * dot[h] == 0, dtype=bool) \
         & (np.asarray(dot > 0, dtype=bool) == np.asarray(dot[h] > 0, dtype=bool)) \
         & (np.asarray(dot < 0, dtype=bool) == np.asarray(dot[h] < 0, dtype=bool)) \
         & (np.asarray(crs > 0, dtype=bool) == np.asarray(crs[h] > 0, dtype=bool)) \
         & (np.asarray(crs < 0, dtype=bool) == np.asarray(crs[h] < 0, dtype=bool))
-    split = set(head[~same].tolist())
-    ids = [0] * m
-    bounds = starts.tolist() + [m]
-    sorted_a = order.tolist()
-    next_id = 0
-    for g in range(len(bounds) - 1):
-        group = sorted_a[bounds[g]:bounds[g + 1]]
-        if g not in split:
-            for a in group:
-                ids[a] = next_id
-            next_id += 1
-            continue
-        local: dict = {}
-        for a in group:
-            gap = gaps[a]
-            local.setdefault((gap.p, gap.q), (gap, []))[1].append(a)
-        for _, same_gap in sorted(local.values(), key=lambda entry: entry[0]):
-            for a in same_gap:
-                ids[a] = next_id
-            next_id += 1
-    return ids
+    # ids in sorted position: the classes of the groups before, plus the class inside the
+    # group (0 unless the exact values split it, which only the few split groups compute)
+    classes = np.ones(groups, dtype=np.int64)
+    inside = np.zeros(m, dtype=np.int64)
+    for g in np.unique(head[~same]).tolist():
+        a0, a1 = int(starts[g]), int(starts[g] + sizes[g])
+        values = [gaps[a] for a in order[a0:a1].tolist()]
+        distinct = sorted({(v.p, v.q): v for v in values}.values())
+        rank_of = {(v.p, v.q): k for k, v in enumerate(distinct)}
+        inside[a0:a1] = [rank_of[(v.p, v.q)] for v in values]
+        classes[g] = len(distinct)
+    base = np.cumsum(classes) - classes
+    ids = np.empty(m, dtype=np.int64)
+    ids[order] = np.repeat(base, sizes) + inside
+    return ids.tolist()

@@ -514,10 +514,15 @@ def _is_half_turn(gap, polar: bool) -> bool:
 def _reference(ring: Levels, labelling: list[int], centre_index: int | None) -> int | None:
     """The first point, in the canonical labelling, of the sparsest level off the centre
     (fewest points; the nearest on a tie)."""
-    levels = [level for level in ring.levels if level.radius_squared and level.points]
-    if levels:
-        sizes = [len(level.points) for level in levels]
-        members = set(levels[sizes.index(min(sizes))].points)
+    sparsest = None
+    for level in ring.levels:
+        if level.radius_squared and level.points and \
+                (sparsest is None or len(level.points) < len(sparsest.points)):
+            sparsest = level
+            if len(level.points) == 1:         # none is sparser, and nearer ones came first
+                break
+    if sparsest is not None:
+        members = set(sparsest.points)
         for i in labelling:
             if i in members and i != centre_index:
                 return i
