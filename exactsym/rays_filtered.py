@@ -58,9 +58,13 @@ class LazyGaps:
         """``(dot, cross)``: object arrays of Python integers, ``u . v`` and ``u x v`` for
         the integer vectors u, v of the rays at and after each gap in ``gaps``."""
         m = len(self.rays)
-        rays = np.unique(np.concatenate((gaps, (gaps + 1) % m)))     # each vector once
+        need = np.zeros(m, dtype=bool)                 # the rays whose vectors are needed
+        need[gaps] = True
+        need[(gaps + 1) % m] = True
+        rays = np.flatnonzero(need)                    # each vector once
+        position = np.cumsum(need) - 1                 # of each needed ray in `rays`
         vx, vy = self.vectors([self.rays[r][0] for r in rays.tolist()])
-        at, after = np.searchsorted(rays, gaps), np.searchsorted(rays, (gaps + 1) % m)
+        at, after = position[gaps], position[(gaps + 1) % m]
         ux, uy, wx, wy = vx[at], vy[at], vx[after], vy[after]
         return ux * wx + uy * wy, ux * wy - uy * wx
 
@@ -103,12 +107,14 @@ def filtered_rays(points, centre, rank, floats=None):
 
     def vectors_of(indices):
         """The same integer vectors for many points, as object arrays of Python ints."""
-        def column(values):
-            return np.array([int(v) for v in values] + [None], dtype=object)[:-1]
-        pts = [points[i] for i in indices]
-        xp, xq = column(p[0].p for p in pts), column(p[0].q for p in pts)
-        yp, yq = column(p[1].p for p in pts), column(p[1].q for p in pts)
-        return (xp * iden - ia0 * xq) * yq, (yp * iden - ib0 * yq) * xq
+        vx, vy = [0] * len(indices), [0] * len(indices)
+        for k, i in enumerate(indices):          # one pass: the cost is in .p, .q, int()
+            x, y = points[i]
+            xp, xq, yp, yq = int(x.p), int(x.q), int(y.p), int(y.q)
+            vx[k], vy[k] = (xp * iden - ia0 * xq) * yq, (yp * iden - ib0 * yq) * xq
+        ax, ay = np.empty(len(indices), dtype=object), np.empty(len(indices), dtype=object)
+        ax[:], ay[:] = vx, vy
+        return ax, ay
 
     iden, ia0, ib0 = int(den), int(a0), int(b0)
     keys, errs, sure = float_pseudo_angles(dx, dy, ex, ey)

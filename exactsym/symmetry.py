@@ -560,8 +560,16 @@ def _one_zero(centre):
 
 
 def _permutation(layout: _Layout, image_ray) -> tuple[int, ...]:
-    perm = list(range(layout.n))
+    """``perm[i]``: the image of point i when ray r goes to ray ``image_ray(r)`` (a
+    function that also maps a NumPy array of ray indices)."""
     rays = layout.rays
+    m = len(rays)
+    if m > 64 and layout.n == m + (layout.centre_index is not None):  # one point per ray
+        first = np.fromiter((ray[0] for ray in rays), dtype=np.int64, count=m)
+        perm = np.arange(layout.n)
+        perm[first] = first[image_ray(np.arange(m))]
+        return tuple(perm.tolist())
+    perm = list(range(layout.n))
     for r, ray in enumerate(rays):
         target = rays[image_ray(r)]
         for i, j in zip(ray, target):

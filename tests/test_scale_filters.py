@@ -272,3 +272,28 @@ def test_filtered_rays_equal_exact_rays(config):
     finally:
         symmetry._FILTER_MIN = saved
     assert _summary(fast) == _summary(slow)
+
+
+@pytest.mark.parametrize("with_centre", [False, True])
+def test_symmetries_map_points_as_their_permutations_say(with_centre):
+    """A D4 set of 25 orbits (200 points, one per ray: the vectorised permutations): each
+    symmetry's exact matrix carries point i onto point ``permutation[i]``."""
+    rnd = random.Random(5)
+    seeds = set()
+    while len(seeds) < 25:
+        a, b = rnd.randint(1, 10 ** 4), rnd.randint(1, 10 ** 4)
+        if a != b:
+            seeds.add((fmpq(a, rnd.randint(1, 50)), fmpq(b, rnd.randint(1, 50))))
+    maps = SUBGROUPS[-1]
+    points = [(CENTRE[0] + x, CENTRE[1] + y) for a, b in sorted(seeds) for g in maps
+              for x, y in [g(a, b)]] + ([CENTRE] if with_centre else [])
+    random.Random(6).shuffle(points)
+    config = Configuration.from_points(points)
+    group = symmetry.symmetry_group(config)
+    assert group.name == "D4" and config.n >= symmetry._FILTER_MIN
+    for iso in group.symmetries():
+        (a, b), (c, d) = iso.matrix
+        for i, (x, y) in enumerate(points):
+            u, v = x - CENTRE[0], y - CENTRE[1]
+            assert points[iso.permutation[i]] == (CENTRE[0] + a * u + b * v,
+                                                  CENTRE[1] + c * u + d * v)
