@@ -13,6 +13,7 @@ angles are the given ``r^2`` and rational turns.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -36,9 +37,11 @@ class Level:
 @dataclass(frozen=True)
 class Levels:
     """The SEC and the levels G1..Gt; ``polar`` is True when both were computed from
-    ``(r^2, turn)`` about the origin (then ``turns`` gives each point's turn)."""
+    ``(r^2, turn)`` about the origin (then ``turns`` gives each point's turn).
+    ``levels``: a tuple of :class:`Level`, or for many rational points a
+    :class:`RationalLevels` (a sequence equal to that tuple, built as it is read)."""
     sec: Circle
-    levels: tuple[Level, ...]
+    levels: Sequence[Level]
     polar: bool
     # (points, fx, fy): the configuration's point sequence itself and the float arrays of
     # its coordinates, when the rational filters computed them (reused by the rays)
@@ -95,10 +98,12 @@ def _levels_of(config: Configuration) -> Levels:
                 ranks.append(angular_ranks(points, centre, diffs))
             return sorted(members, key=ranks[0].__getitem__)
 
-        radii_squared = [(px - cx) ** 2 + (py - cy) ** 2 for px, py in points]
-        return Levels(circle, _group_levels(radii_squared, order_level,
-                                            float_squared_norms(*diffs)),
-                      False, (config.points, *floats))
+        approx = float_squared_norms(*diffs)
+        if approx is not None:                 # squared radii computed when needed
+            levels = _group_levels(len(points), order_level, approx, (points, centre))
+        else:
+            levels = _group_levels([squared_distance(centre, p) for p in points], order_level)
+        return Levels(circle, levels, False, (config.points, *floats))
     # centre X/D kept homogeneous: group by D^2 r^2 and sort by the directions D p - (X, Y),
     # which point as p - centre does (D > 0); divide by D^2 once per level
     vectors = [(d * p[0] - x, d * p[1] - y) for p in points]
@@ -118,11 +123,15 @@ def _angular_order(vectors, members: list[int]) -> list[int]:
     return at_centre + sorted_by_value(rest, keys)
 
 
-def _group_levels(radii_squared: list, order_level, approx=None) -> tuple[Level, ...]:
+def _group_levels(radii_squared, order_level, approx=None, radius=None):
     """Levels from each point's squared radius; ``order_level`` sorts one level's indices.
-    ``approx``: ``(floats, errs)`` enclosing the squared radii, if known."""
-    if len(radii_squared) >= _FILTER_MIN and isinstance(radii_squared[0], fmpq):
-        levels = _group_rational_levels(radii_squared, order_level, approx)
+    ``approx``: ``(floats, errs)`` enclosing the squared radii, if known; ``radius``:
+    ``(points, centre)``, then ``radii_squared`` is only the number of points and each
+    squared radius is computed when needed (:class:`RationalLevels`)."""
+    n = radii_squared if radius is not None else len(radii_squared)
+    if n >= _FILTER_MIN and (radius is not None or isinstance(radii_squared[0], fmpq)):
+        levels = _group_rational_levels(n, None if radius is not None else radii_squared,
+                                        order_level, approx, radius)
         if levels is not None:
             return levels
     groups: dict = {}
@@ -137,41 +146,123 @@ def _polar_levels(polar) -> tuple[Level, ...]:
                          lambda members: sorted(members, key=lambda i: polar[i][1]))
 
 
-def _group_rational_levels(radii_squared: list, order_level, approx=None
-                           ) -> tuple[Level, ...] | None:
-    """:func:`_group_levels` for many ``fmpq``: ``float(fmpq)`` is correctly rounded (within
-    a relative 2^-53), so floats with a relative slack of 2^-50 split the values into
-    certainly ordered groups (``geometry.certified_groups``); equal values always share a
-    group, and only groups of two or more are grouped and sorted exactly.  ``approx``:
-    ``(floats, errs)`` with each exact value within ``errs`` of its float (from the
-    points' float differences, ``geometry.float_squared_norms``), saving the conversions."""
+class RationalLevels(Sequence):
+    """The levels of many points with rational squared radii, as a read-only sequence of
+    :class:`Level` equal to the tuple of them (``==``, ``hash``): the order of the points
+    is kept in two lists (``flat``: the points level by level; ``bounds``: where each
+    level starts) and each :class:`Level`, with its exact squared radius, is built when
+    it is read.  The truth never reads most of them (``ranks`` gives it what it needs), and
+    on a million points building them all cost more than the float baseline (issue 9)."""
+
+    __slots__ = ("flat", "bounds", "known", "radii", "points", "centre")
+
+    def __init__(self, flat: list, bounds: list, known: dict, radii=None, points=None,
+                 centre=None):
+        self.flat, self.bounds, self.known = flat, bounds, known
+        self.radii, self.points, self.centre = radii, points, centre
+
+    def radius_squared(self, i: int):
+        """The exact squared distance of point i from the centre."""
+        if self.radii is not None:
+            return self.radii[i]
+        (x, y), (cx, cy) = self.points[i], self.centre
+        dx, dy = x - cx, y - cy
+        return dx * dx + dy * dy
+
+    def __len__(self) -> int:
+        return len(self.bounds) - 1
+
+    def __getitem__(self, k):
+        if isinstance(k, slice):
+            return tuple(self[j] for j in range(*k.indices(len(self))))
+        m = len(self)
+        if k < 0:
+            k += m
+        if not 0 <= k < m:
+            raise IndexError("level index out of range")
+        points = tuple(self.flat[self.bounds[k]:self.bounds[k + 1]])
+        r2 = self.known.get(k)
+        if r2 is None:
+            r2 = self.known[k] = self.radius_squared(points[0])
+        return Level(r2, points)
+
+    def __iter__(self):
+        return (self[k] for k in range(len(self)))
+
+    def __eq__(self, other):
+        if isinstance(other, (tuple, RationalLevels)):
+            return len(self) == len(other) and tuple(self) == tuple(other)
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(tuple(self))
+
+    def __repr__(self) -> str:
+        return repr(tuple(self))
+
+    def __reduce__(self):
+        return (RationalLevels, (self.flat, self.bounds, self.known, self.radii, self.points,
+                                 self.centre))
+
+    def ranks(self, n: int) -> list[int] | None:
+        """``rank[i]``: the index of point i's level, or None unless the levels hold each
+        of the n points once."""
+        if len(self.flat) != n:
+            return None
+        flat = np.asarray(self.flat, dtype=np.int64)
+        rank = np.full(n, -1, dtype=np.int64)
+        rank[flat] = np.repeat(np.arange(len(self)), np.diff(self.bounds))
+        return None if (rank < 0).any() else rank.tolist()
+
+
+def _group_rational_levels(n: int, radii_squared, order_level, approx=None, radius=None
+                           ) -> RationalLevels | None:
+    """:func:`_group_levels` for many rational squared radii (``radii_squared``, or computed
+    from ``radius = (points, centre)`` when needed): ``float(fmpq)`` is correctly rounded
+    (within a relative 2^-53), so floats with a relative slack of 2^-50 split the values
+    into certainly ordered groups (``geometry.certified_groups``); equal values always
+    share a group, and only groups of two or more are grouped and sorted exactly.
+    ``approx``: ``(floats, errs)`` with each exact value within ``errs`` of its float (from
+    the points' float differences, ``geometry.float_squared_norms``), saving the
+    conversions."""
     if approx is not None:
         keys, errs = approx
+    elif radii_squared is None:
+        return None
     else:
         try:
-            keys = np.fromiter((float(v) for v in radii_squared), dtype=float,
-                               count=len(radii_squared))
+            keys = np.fromiter((float(v) for v in radii_squared), dtype=float, count=n)
         except (OverflowError, ValueError):
             return None
         if not np.isfinite(keys).all():
             return None
         errs = np.abs(keys) * 2.0 ** -50 + 1e-300
+    points, centre = radius if radius is not None else (None, None)
+    levels = RationalLevels([], [], {}, radii_squared, points, centre)
     order, starts = certified_groups(keys, errs)
     flat = order.tolist()
-    levels = []
-    if len(starts) == len(flat):
-        return tuple([Level(radii_squared[i], (i,)) for i in flat])
-    bounds = starts.tolist() + [len(flat)]
-    for g in range(len(bounds) - 1):
-        a, b = bounds[g], bounds[g + 1]
-        if b - a == 1:
-            i = flat[a]
-            levels.append(Level(radii_squared[i], (i,)))
-            continue
+    sizes = np.diff(np.append(starts, n))
+    if len(starts) == n:                         # every level one point
+        levels.flat, levels.bounds = flat, list(range(n + 1))
+        return levels
+    out_flat: list = []
+    bounds: list = []
+    done = 0                                     # flat[:done] is placed
+    for g in np.flatnonzero(sizes > 1).tolist():
+        a, b = int(starts[g]), int(starts[g] + sizes[g])
+        bounds.extend(range(len(out_flat), len(out_flat) + a - done))     # one-point levels
+        out_flat.extend(flat[done:a])
         groups: dict = {}
         for i in sorted(flat[a:b]):
-            groups.setdefault(exact_key(radii_squared[i]), [radii_squared[i]]).append(i)
+            r2 = levels.radius_squared(i)
+            groups.setdefault(exact_key(r2), [r2]).append(i)
         for group in sorted(groups.values(), key=lambda g: g[0]):
-            levels.append(Level(group[0], tuple(order_level(group[1:]) if len(group) > 2
-                                                else group[1:])))
-    return tuple(levels)
+            levels.known[len(bounds)] = group[0]
+            bounds.append(len(out_flat))
+            out_flat.extend(order_level(group[1:]) if len(group) > 2 else group[1:])
+        done = b
+    bounds.extend(range(len(out_flat), len(out_flat) + n - done))
+    out_flat.extend(flat[done:])
+    bounds.append(n)
+    levels.flat, levels.bounds = out_flat, bounds
+    return levels

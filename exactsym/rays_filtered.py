@@ -15,7 +15,7 @@ import numpy as np
 
 from .exact import fmpq
 from .geometry import FILTER_EPS, certified_groups, float_differences, float_pseudo_angles
-from .levels import Levels
+from .levels import Levels, RationalLevels
 
 
 def integer_pseudo_angle(x, y) -> fmpq:
@@ -30,6 +30,8 @@ def integer_pseudo_angle(x, y) -> fmpq:
 def level_ranks(ring: Levels, n: int):
     """``rank[i]``: the index of point i's level (nearest first, so ranks order as the
     squared radii), or None unless the levels hold every point once."""
+    if isinstance(ring.levels, RationalLevels):
+        return ring.levels.ranks(n)
     members = [level.points for level in ring.levels]
     flat = np.fromiter((i for points in members for i in points), dtype=np.int64)
     if len(flat) != n or (n and (flat.min() < 0 or flat.max() >= n)):

@@ -297,3 +297,35 @@ def test_symmetries_map_points_as_their_permutations_say(with_centre):
             u, v = x - CENTRE[0], y - CENTRE[1]
             assert points[iso.permutation[i]] == (CENTRE[0] + a * u + b * v,
                                                   CENTRE[1] + c * u + d * v)
+
+
+@settings(max_examples=20, deadline=None)
+@given(near_ties())
+def test_rational_levels_behave_as_their_tuple(config):
+    """The lazily built levels (``levels.RationalLevels``) equal the exact path's tuple of
+    levels, element by element, as a whole, hashed, sliced, pickled; their ranks are the
+    level index of each point; each squared radius is the exact one."""
+    import pickle
+    import exactsym.levels as levels
+    from exactsym.geometry import squared_distance
+    saved = levels._FILTER_MIN
+    try:
+        levels._FILTER_MIN = 1
+        fast = levels.levels_of(config)
+        levels._FILTER_MIN = 10 ** 12
+        slow = levels.levels_of(config)
+    finally:
+        levels._FILTER_MIN = saved
+    lazy, exact = fast.levels, slow.levels
+    assert isinstance(lazy, levels.RationalLevels) and isinstance(exact, tuple)
+    assert len(lazy) == len(exact) and list(lazy) == list(exact)
+    assert lazy == exact and exact == lazy and hash(lazy) == hash(exact) and fast == slow
+    assert lazy[-1] == exact[-1] and lazy[1:3] == exact[1:3] and lazy[::-2] == exact[::-2]
+    assert pickle.loads(pickle.dumps(lazy)) == exact
+    rank = lazy.ranks(config.n)
+    for k, level in enumerate(exact):
+        for i in level.points:
+            assert rank[i] == k
+            assert squared_distance(fast.sec.centre, config.points[i]) == level.radius_squared
+    with pytest.raises(IndexError):
+        lazy[len(exact)]
