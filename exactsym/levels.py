@@ -26,6 +26,7 @@ from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_group
 from .sec import Circle, smallest_enclosing_circle
 
 _FILTER_MIN = 64    # from this many rational points, levels are ordered by certified floats
+_EXACT_SORT_BUDGET = 256    # points of levels sorted exactly before the filtered pass pays
 
 
 @dataclass(frozen=True)
@@ -92,8 +93,15 @@ def _levels_of(config: Configuration) -> Levels:
             return Levels(circle, _group_levels([squared_distance(centre, p) for p in points],
                                                 order_level), False)
         ranks: list = []
+        budget = [_EXACT_SORT_BUDGET]
 
-        def order_level(members):      # one filtered pass over all points, when first needed
+        def order_level(members):
+            # a few levels of two or more points (random input): sorted exactly; many
+            # (symmetric input): one filtered pass over all points, made when first needed.
+            # Both give the counter-clockwise order (no two points of a level share a ray).
+            if not ranks and len(members) <= budget[0]:
+                budget[0] -= len(members)
+                return angular_sort(centre, points, members)
             if not ranks:
                 ranks.append(angular_ranks(points, centre, diffs))
             return sorted(members, key=ranks[0].__getitem__)

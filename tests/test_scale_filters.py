@@ -164,14 +164,17 @@ def test_filtered_levels_equal_exact(seeds, mirror, nudges):
     import exactsym.levels as levels
     config = _configuration(seeds, mirror, nudges)
     saved = levels._FILTER_MIN
+    budget = levels._EXACT_SORT_BUDGET
     try:
         levels._FILTER_MIN = 1
         fast = levels.levels_of(config)
+        levels._EXACT_SORT_BUDGET = 0               # every level through the filtered pass
+        filtered = levels.levels_of(config)
         levels._FILTER_MIN = 10 ** 12
         slow = levels.levels_of(config)
     finally:
-        levels._FILTER_MIN = saved
-    assert fast.levels == slow.levels
+        levels._FILTER_MIN, levels._EXACT_SORT_BUDGET = saved, budget
+    assert fast.levels == slow.levels and filtered.levels == slow.levels
 
 
 @settings(max_examples=30, deadline=None)
