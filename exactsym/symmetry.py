@@ -406,10 +406,11 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
         cw = (rid[back] * width + gid[(back - 1) % m]).tolist()
         ray_ids = rid.tolist()
         ccw_values, cw_values = ccw, cw
-        least = min(ray_ids)
+        least = int(rid.min())
 
     # canonical labelling: least rotation over both orientations
-    rays_least = [r for r in range(m) if ray_ids[r] == least]
+    rays_least = [r for r in range(m) if ray_ids[r] == least] if filtered is None else \
+        np.flatnonzero(rid == least).tolist()
     s = least_rotation(ccw, ccw_values, rays_least)
     t = least_rotation(cw, cw_values, [-r % m for r in rays_least])
     use_cw = _rotation_less(cw, cw_values, t, ccw, ccw_values, s)
@@ -431,12 +432,15 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     k = m // period
     mirrors = len(offsets)
 
-    if use_cw:
-        ray_order = [(-(t + a)) % m for a in range(m)]
+    steps = np.arange(m)
+    ray_order = (-(t + steps)) % m if use_cw else (s + steps) % m
+    if m > 64 and n == m + (centre_index is not None):      # one point per ray
+        first = np.fromiter((ray[0] for ray in rays), dtype=np.int64, count=m)
+        labelling = first[ray_order].tolist()
     else:
-        ray_order = [(s + a) % m for a in range(m)]
-    labelling = ([centre_index] if centre_index is not None else []) + \
-        [i for r in ray_order for i in rays[r]]
+        labelling = [i for r in ray_order.tolist() for i in rays[r]]
+    if centre_index is not None:
+        labelling.insert(0, centre_index)
 
     collinear = m == 1 or (m == 2 and all(_is_half_turn(g, ring.polar) for g in gaps))
     orderable = k == 1 and (mirrors == 0 or collinear)

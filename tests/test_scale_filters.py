@@ -332,3 +332,32 @@ def test_rational_levels_behave_as_their_tuple(config):
             assert squared_distance(fast.sec.centre, config.points[i]) == level.radius_squared
     with pytest.raises(IndexError):
         lazy[len(exact)]
+
+
+@pytest.mark.parametrize("with_centre", [False, True])
+def test_large_orderings_pass_the_checker(with_centre):
+    """200 random rational points (the filtered rays, one point per ray, the vectorised
+    labelling) and copies moved by 10^-30: the independent certificate checker accepts the
+    ordering and leader, and rejects the ordering with two neighbours swapped."""
+    import copy
+    import json
+    from exactsym import checker
+    from exactsym.certificate import make_certificate
+    rnd = random.Random(11)
+    points = {(fmpq(rnd.randint(-10 ** 4, 10 ** 4), rnd.randint(1, 30)),
+               fmpq(rnd.randint(-10 ** 4, 10 ** 4), rnd.randint(1, 30))) for _ in range(200)}
+    points = sorted(points)
+    points += [(x + TINY, y) for x, y in points[:3]] + [(x, y - TINY) for x, y in points[3:6]]
+    config = Configuration.from_points(points)
+    if with_centre:
+        config = Configuration.from_points(points + [levels_of(config).sec.centre])
+    assert config.n >= symmetry._FILTER_MIN
+    cert = json.loads(json.dumps(make_certificate(config)))
+    assert cert["claim"]["orderable"] and checker.verify_certificate(copy.deepcopy(cert))[0]
+    order = cert["claim"]["ordering"]
+    assert order[0] == cert["claim"]["leader"]
+    assert (order[0] == config.n - 1) == with_centre
+    bad = copy.deepcopy(cert)
+    bad["claim"]["ordering"][5], bad["claim"]["ordering"][6] = order[6], order[5]
+    ok, message = checker.verify_certificate(bad)
+    assert not ok and "ordering" in message
