@@ -251,7 +251,7 @@ def _order_isomorphic(ids, values) -> None:
             assert values[a] < values[b] and ids[a] < ids[b]
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(near_ties())
 def test_filtered_rays_equal_exact_rays(config):
     """The filtered path's rays, ray ids and gap ids against the exact path's rays, radii
