@@ -30,6 +30,7 @@ from .errors import ExpressionError, InputError, MoveImpossible
 from .exact import (FieldElement, RationalSystem, evaluate, exact_key, fmpq, normal_turn,
                     number_system, sign)
 from .exprtree import Const, Node
+from .geometry import float_coordinates
 
 
 @dataclass(frozen=True)
@@ -377,13 +378,10 @@ def _equal_float_groups(points):
     """Groups (lists of indices, at least two) of rational points whose correctly rounded
     float pairs are equal: equal points have equal floats, so coincident points are only
     to be looked for inside these groups.  None if a float is not finite."""
-    try:
-        fx = np.fromiter((float(p[0]) for p in points), dtype=float, count=len(points))
-        fy = np.fromiter((float(p[1]) for p in points), dtype=float, count=len(points))
-    except (OverflowError, ValueError):
+    floats = float_coordinates(points)
+    if floats is None:
         return None
-    if not (np.isfinite(fx).all() and np.isfinite(fy).all()):
-        return None
+    fx, fy = floats
     order = np.lexsort((fy, fx))
     same = (np.diff(fx[order]) == 0) & (np.diff(fy[order]) == 0)
     if not same.any():
