@@ -23,6 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from . import geometry as g
+from .instants import look_points
 from .pattern import definition_defects, recognise
 
 LABELS = {
@@ -68,7 +69,10 @@ ALL = tuple(f"I{k}" for k in range(1, 11))
 @dataclass
 class Checker:
     enabled: frozenset = frozenset(ALL)
-    counts: dict = field(default_factory=lambda: {k: 0 for k in ALL})
+    # each invariant's checks; "instants": fresh Looks at critical instants of a motion
+    # and just beside them; "sided": instants seen only on both sides (nested radicals)
+    counts: dict = field(default_factory=lambda: {**{k: 0 for k in ALL}, "instants": 0,
+                                                  "sided": 0})
     in_pattern: set = field(default_factory=set)       # robots ever recognised in P
     undecided_fresh: int = 0      # I3 / I9 Looks skipped: the kernel could not hold them
     frames: tuple = ()                                  # extra frames for I9 (besides mirror)
@@ -156,17 +160,41 @@ class Checker:
                 raise Violation("I6", t, [i], f"C moved from {g.fmt_point(rob.centre)} to "
                                 f"{g.fmt_point(d.centre)} while robot {i} moves")
         if self._on("I3"):
-            # the critical instants inside the piece, then (unless it was the last piece)
-            # its end: the fresh Look must name the same mover and target
+            # the critical instants inside the piece (each exactly when the kernel holds
+            # it, and just before and after it), then (unless it was the last piece) its
+            # end: the fresh Look must name the same mover and target (:mod:`.instants`)
             end = rob.pos
             try:
-                for where, point in critical_points(piece, rob.centre, world, i):
-                    rob.pos = point
-                    self._fresh_look(world, i, t, f" ({where})")
+                points, sided = look_points(piece, world, i, rob.centre,
+                                            world.readings.A1 == "sec-r")
+                self.counts["sided"] += sided
+                for lp in points:
+                    rob.pos = lp.point
+                    self.counts["instants"] += 1
+                    self._fresh_look(world, i, t, f" ({lp.where})")
+                    if "I9" in self.enabled and lp.families & {"sec", "symmetry"}:
+                        self.counts["I9"] += 1
+                        self._mirror_look(world, i, t, f" ({lp.where})")
             finally:
                 rob.pos = end
             if rob.path:
                 self._fresh_look(world, i, t, "")
+
+    def _mirror_look(self, world, i, t, where: str):
+        """I9 at a critical instant: a fresh Look in the reflected frame plans the mover's
+        own move too."""
+        from .world import MIRROR
+        rob = world.robots[i]
+        d, paths = world.snapshot_decision(MIRROR)
+        if d.status == "undecided":
+            self.undecided_fresh += 1
+            return
+        plan = _plan(paths, d)
+        if not _same_plan(plan, {i: (rob.role, rob.target)}):
+            raise Violation("I9", t, sorted(set(plan) | {i}),
+                            f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
+                            f"Look in the reflected frame with robot {i} at "
+                            f"{g.fmt_point(rob.pos)}{where} plans {_plan_text(plan)}")
 
     def _fresh_look(self, world, i, t, where: str):
         from .world import IDENTITY
