@@ -226,9 +226,25 @@ def _sec_family(m: Motion, static: dict, tag: str) -> list:
     return out
 
 
-def _symmetry_family(piece, m: Motion, static: dict, centre):
+def _mover_may_support(m: Motion, static: dict, centre) -> bool:
+    """False when the mover stays strictly inside the others' SEC (touching it at
+    isolated instants at most) and C is that SEC's centre: every symmetry of the robots
+    then fixes C, so it maps the mover to a robot as far from C (a ``distance``
+    instant), or fixes it on a mirror line through C, or the mover is at C."""
+    pts = list(static.values())
+    if len(pts) < 2:
+        return True
+    c0, r20 = g.smallest_enclosing_circle(pts)
+    if centre is None or c0 != centre:
+        return True
+    e0 = dist2_poly(m, c0, r20)
+    return not e0 or sum(e0, MQ()).sign() > 0 or e0[0].sign() > 0
+
+
+def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True):
     """``([(poly, description)], [(f, description)])``: lines the mover crosses and exact
-    parameters where it reaches a candidate point."""
+    parameters where it reaches a candidate point (``full``: also the families that the
+    ``distance`` instants cover when C is the SEC centre and the mover inside it)."""
     polys, params = [], []
     pts = list(static.values())
     n = len(pts) + 1
@@ -236,6 +252,9 @@ def _symmetry_family(piece, m: Motion, static: dict, centre):
         for u in mirror_lines(pts, centre):
             polys.append((cross_poly(m, centre, u), "symmetry: a mirror line of the others "
                           "through C"))
+        polys.append((dist2_poly(m, centre, MQ()), "symmetry: the mover at C"))
+    if not full:
+        return polys, params
     z = _centroid(pts)
     for u in mirror_lines(pts, z):
         polys.append((cross_poly(m, z, u), "symmetry: a mirror line of the others"))
@@ -306,7 +325,8 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
         sub = {k: p for k, p in static.items() if k in rset}
         for poly, what in _sec_family(m, sub, "SEC of R"):
             polys.append((poly, ("sec", what)))
-    sym_polys, sym_params = _symmetry_family(piece, m, static, centre)
+    sym_polys, sym_params = _symmetry_family(piece, m, static, centre,
+                                             full=_mover_may_support(m, static, centre))
     polys += [(p, ("symmetry", w)) for p, w in sym_polys]
     roots: list = []
     for poly, tag in polys:
@@ -327,24 +347,32 @@ class LookPoint:
     point: tuple
     where: str
     families: frozenset
-    exact: bool             # the instant itself (False: a side point)
+    exact: bool             # the instant itself (False: a point between two instants)
 
 
 def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
-    """``(points, sided)``: the :class:`LookPoint`\\ s to check, in order along the piece,
-    and the number of instants checked only on both sides (nested radicals)."""
+    """``(points, sided)``: the :class:`LookPoint`\\ s to check, in order along the piece
+    -- one rational point in each open stretch between consecutive instants (the first
+    before the first instant, the last after the last) and each instant itself when the
+    kernel holds it -- and the number of instants checked only on both sides (nested
+    radicals)."""
     roots = critical_roots(piece, world, mover, centre, sec_r)
     out, sided = [], 0
-    for r in roots:
+    for k, r in enumerate(roots):
         fams = frozenset(t[0] for t in r.tags)
         what = "; ".join(sorted({t[1] for t in r.tags}))
-        lo, hi = MQ.rational(r.lo), MQ.rational(r.hi)
-        out.append(LookPoint(lo, piece.at(lo), f"just before: {what}", fams, False))
+        if k == 0:
+            lo = MQ.rational(r.lo)
+            out.append(LookPoint(lo, piece.at(lo), f"just before: {what}", fams, False))
         if r.exact is not None:
             out.append(LookPoint(r.exact, piece.at(r.exact), what, fams, True))
         else:
             sided += 1
-        out.append(LookPoint(hi, piece.at(hi), f"just after: {what}", fams, False))
+        # the stretch up to the next instant: its families change too at its end
+        nxt = roots[k + 1] if k + 1 < len(roots) else None
+        hi = MQ.rational(r.hi)
+        fams_after = fams | (frozenset(t[0] for t in nxt.tags) if nxt else frozenset())
+        out.append(LookPoint(hi, piece.at(hi), f"just after: {what}", fams_after, False))
     return out, sided
 
 

@@ -26,17 +26,20 @@ from . import geometry as g
 from .instants import look_points
 from .pattern import definition_defects, recognise
 
+#: How a violation names the statement it contradicts: the paper's ``\\label`` where
+#: the statement has one (``/paper/README.md``), otherwise the algorithm (or the model
+#: item, or the section) with the paper's line numbers.
 LABELS = {
     "I1": "gather-no-obstacle",
     "I2": "lem-vl-move",
     "I3": "obs-v-move",
     "I4": "gather-min-distance",
     "I5": "gather-no-obstacle",
-    "I6": "MakeAsym-SEC",
+    "I6": "MakeAsym (L1487, L1560)",
     "I7": "FormGPattern",
     "I8": "gathering_pattern",
-    "I9": "no-chirality",
-    "I10": "conclusion-progress",
+    "I9": "no chirality (L210-214)",
+    "I10": "conclusion (L1707-1721)",
 }
 
 
@@ -45,6 +48,14 @@ LABELS = {
 #: the sentence before the gathering lemmas (L1642-1643, "the robot for movement remains
 #: invariant"), which belongs to FormGPattern.
 I3_LABEL_OF_ROLE = {"MakeAsym": "obs-v-move", "Make_SymToAsym": "obs-v-move"}
+I3_LEADER_LABEL = "FormGPattern (L1642-1643)"
+
+#: I6 (C does not change while a robot moves): for MakeAsym's epsilon mover, its
+#: correctness sentence "more than 3 robots on G_t keep the SEC" (L1487, L1560); for
+#: every other move, the conclusion's "destination which remains invariant during the
+#: run time of the algorithm" (L1708-1710).
+I6_LABEL_OF_ROLE = {"MakeAsym": LABELS["I6"]}
+I6_OTHER_LABEL = "conclusion (L1708-1710)"
 
 
 class Violation(Exception):
@@ -158,7 +169,9 @@ class Checker:
             d, _ = world.snapshot_decision(IDENTITY)
             if d.centre != rob.centre:
                 raise Violation("I6", t, [i], f"C moved from {g.fmt_point(rob.centre)} to "
-                                f"{g.fmt_point(d.centre)} while robot {i} moves")
+                                f"{g.fmt_point(d.centre)} while robot {i} moves "
+                                f"({rob.role} move)",
+                                label=I6_LABEL_OF_ROLE.get(rob.role, I6_OTHER_LABEL))
         if self._on("I3"):
             # the critical instants inside the piece (each exactly when the kernel holds
             # it, and just before and after it), then (unless it was the last piece) its
@@ -209,7 +222,7 @@ class Checker:
                             f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
                             f"Look with robot {i} at {g.fmt_point(rob.pos)}{where} plans "
                             f"{_plan_text(plan)} ({d.status}: {d.detail})",
-                            label=I3_LABEL_OF_ROLE.get(rob.role, "FormGPattern"))
+                            label=I3_LABEL_OF_ROLE.get(rob.role, I3_LEADER_LABEL))
 
     # -- after an arrival ----------------------------------------------------------------
     def after_arrival(self, world, i):

@@ -211,8 +211,9 @@ def roots_in_unit(poly, tag=None) -> list:
     p = trim(poly)
     if len(p) <= 1:
         return []
-    p = squarefree(p)
     out: list = []
+    if len(p) > 3:
+        p = squarefree(p)           # (a quadratic's double root: its discriminant is 0)
     # exact roots first: linear polynomials, quadratics with a square discriminant
     if len(p) == 2:
         r = _linear_root(p)
