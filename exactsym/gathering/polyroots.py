@@ -25,7 +25,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from flint import fmpq
+from functools import lru_cache
+
+from flint import fmpq, fmpz
 
 from ..exact.multiquadratic import MQ, sqrt_rational
 
@@ -121,33 +123,41 @@ def _variations(chain, x) -> int:
 
 
 # -- square roots in the multiquadratic field ------------------------------------------
-def mq_sqrt(x: MQ):
-    """The non-negative square root of ``x >= 0`` when it lies in a multiquadratic field
-    (rational ``x``; or ``a + b sqrt(m)`` with ``a^2 - b^2 m`` a rational square, the
-    denesting ``sqrt(u) + sqrt(v)``), else None.  Every answer is verified by squaring."""
-    if x.sign() < 0:
+def mq_sqrt(x: MQ, _depth: int = 0):
+    """The non-negative square root of ``x >= 0`` when it lies in a multiquadratic field,
+    else None.  With ``p`` the largest prime under ``x``'s radicands, ``x = A + B sqrt(p)``
+    (``A``, ``B`` free of ``p``); a root ``P + Q sqrt(p)`` has ``P^2 - p Q^2 = +-sqrt(A^2 -
+    p B^2)`` and ``P^2 = (A + that) / 2``: two square roots one level down (recursively,
+    down to rationals, whose roots ``sqrt_rational`` takes).  Every answer is verified by
+    squaring, so a miss is a None, never a wrong root."""
+    if x.is_zero():
+        return MQ()
+    if x.sign() < 0 or _depth > 12:
         return None
     if x.is_rational():
         return sqrt_rational(x.to_fmpq())
-    rads = x.radicands()
-    if len(rads) != 1:
+    p = max(_primes(x.radicands()))
+    A = MQ({m: c for m, c in x.terms.items() if m % p})
+    B = MQ({m // p: c for m, c in x.terms.items() if m % p == 0})
+    n = mq_sqrt(A * A - B * B * p, _depth + 1)
+    if n is None:
         return None
-    m = rads[0]
-    a, b = x.coefficient(1), x.coefficient(m)
-    n = a * a - b * b * m
-    if n < 0:
-        return None
-    s = sqrt_rational(n)
-    if not s.is_rational():
-        return None
-    s = s.to_fmpq()
-    u, v = (a + s) / 2, (a - s) / 2
-    if u < 0 or v < 0:
-        return None
-    cand = sqrt_rational(u) + (sqrt_rational(v) if b > 0 else -sqrt_rational(v))
-    if cand.sign() >= 0 and cand * cand == x:
-        return cand
+    for half in ((A + n) / 2, (A - n) / 2):
+        P = mq_sqrt(half, _depth + 1) if half.sign() >= 0 else None
+        if P is None or P.is_zero():
+            continue
+        y = P + (B / (P * 2)) * sqrt_rational(p)
+        if y * y == x:
+            return y if y.sign() >= 0 else -y
     return None
+
+
+@lru_cache(maxsize=4096)
+def _primes(radicands: tuple) -> tuple:
+    out = set()
+    for m in radicands:
+        out.update(int(q) for q, _ in fmpz(m).factor())
+    return tuple(sorted(out))
 
 
 def exact_root_hook(poly, lo, hi):
