@@ -25,11 +25,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from functools import lru_cache
+from math import isqrt
 
-from flint import fmpq, fmpz
+from flint import fmpq
 
-from ..exact.multiquadratic import MQ, sqrt_rational
+from ..exact.multiquadratic import MQ, _coprime_base, sqrt_rational
 
 ZERO = MQ()
 
@@ -123,41 +123,51 @@ def _variations(chain, x) -> int:
 
 
 # -- square roots in the multiquadratic field ------------------------------------------
-def mq_sqrt(x: MQ, _depth: int = 0):
+def mq_sqrt(x: MQ, _depth: int = 0, big_ok: bool = False):
     """The non-negative square root of ``x >= 0`` when it lies in a multiquadratic field,
-    else None.  With ``p`` the largest prime under ``x``'s radicands, ``x = A + B sqrt(p)``
-    (``A``, ``B`` free of ``p``); a root ``P + Q sqrt(p)`` has ``P^2 - p Q^2 = +-sqrt(A^2 -
-    p B^2)`` and ``P^2 = (A + that) / 2``: two square roots one level down (recursively,
-    down to rationals, whose roots ``sqrt_rational`` takes).  Every answer is verified by
-    squaring, so a miss is a None, never a wrong root."""
+    else None.  With ``b`` an element of a coprime base of ``x``'s radicands (every
+    radicand is a product of distinct base elements), ``x = A + B sqrt(b)`` with ``A``,
+    ``B`` free of ``b``; a root ``P + Q sqrt(b)`` has ``P^2 - b Q^2 = +-sqrt(A^2 - b B^2)``
+    and ``P^2 = (A + that) / 2``: square roots one level down, recursively, down to
+    rationals.  Every answer is verified by squaring, so a miss is a None, never a wrong
+    root.  A rational that is not a square and has more than :data:`RATIONAL_BITS` bits
+    is a miss (its square-free part needs a factorisation that can take minutes), except
+    ``x`` itself with ``big_ok`` (as :func:`sqrt_rational` always did)."""
     if x.is_zero():
         return MQ()
-    if x.sign() < 0 or _depth > 12:
+    if x.sign() < 0 or _depth > 8:
         return None
     if x.is_rational():
-        return sqrt_rational(x.to_fmpq())
-    p = max(_primes(x.radicands()))
-    A = MQ({m: c for m, c in x.terms.items() if m % p})
-    B = MQ({m // p: c for m, c in x.terms.items() if m % p == 0})
-    n = mq_sqrt(A * A - B * B * p, _depth + 1)
+        return _sqrt_rational(x.to_fmpq(), big_ok)
+    b = max(_coprime_base(x.radicands()))
+    A = MQ({m: c for m, c in x.terms.items() if m % b})
+    B = MQ({m // b: c for m, c in x.terms.items() if m % b == 0})
+    n = mq_sqrt(A * A - B * B * b, _depth + 1)
     if n is None:
         return None
     for half in ((A + n) / 2, (A - n) / 2):
         P = mq_sqrt(half, _depth + 1) if half.sign() >= 0 else None
         if P is None or P.is_zero():
             continue
-        y = P + (B / (P * 2)) * sqrt_rational(p)
+        y = P + (B / (P * 2)) * MQ({b: fmpq(1)})        # b is square-free
         if y * y == x:
             return y if y.sign() >= 0 else -y
     return None
 
 
-@lru_cache(maxsize=4096)
-def _primes(radicands: tuple) -> tuple:
-    out = set()
-    for m in radicands:
-        out.update(int(q) for q, _ in fmpz(m).factor())
-    return tuple(sorted(out))
+RATIONAL_BITS = 160
+
+
+def _sqrt_rational(q: fmpq, big_ok: bool):
+    if q < 0:
+        return None
+    num, den = int(q.p), int(q.q)
+    r = isqrt(num * den)
+    if r * r == num * den:
+        return MQ.rational(fmpq(r, den))
+    if not big_ok and (num * den).bit_length() > RATIONAL_BITS:
+        return None
+    return sqrt_rational(q)
 
 
 def exact_root_hook(poly, lo, hi):

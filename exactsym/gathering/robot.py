@@ -200,7 +200,7 @@ def _paper_move(pm, start, centre_r, pts, R):
     if pm.kind == "to-G_t-circle" and pm.target_ring_robot is not None:
         target = pts[R[pm.target_ring_robot]]
         r2t, r2p = g.dist2(target, centre_r), g.dist2(start, centre_r)
-        k = mq_sqrt(r2t / r2p)
+        k = mq_sqrt(r2t / r2p, big_ok=True)
         if k is None:              # a nested radical: not in the kernel
             return None
         return [g.Segment(start, g.add(centre_r, g.scale(g.sub(start, centre_r), k)))]
@@ -248,7 +248,7 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1) 
         return [g.Segment(p, target)]
     if readings.A5 == "arc-radial":
         vp = g.sub(p, centre)
-        root = mq_sqrt(g.dot(vp, vp))
+        root = mq_sqrt(g.dot(vp, vp), big_ok=True)
         if root is None:
             raise ValueError("arc-radial needs |p - C| in a multiquadratic field (a nested "
                              "radical otherwise)")
@@ -270,7 +270,7 @@ def radial_point(centre, p, radius):
     r2 = g.dot(v, v)
     if r2.is_rational():
         return g.radial_point(centre, p, radius)
-    root = mq_sqrt(r2)
+    root = mq_sqrt(r2, big_ok=True)
     if root is None:
         raise ValueError("radial_point: |p - C| is a nested radical (|p - C|^2 has no square "
                          "root in a multiquadratic field)")
