@@ -94,8 +94,10 @@ def test_motion_matches_piece_at(f, t_num, t_den):
         m = motion_of(piece)
         d = peval(m.d, Q(f))
         assert piece.at(Q(f)) == (peval(m.nx, Q(f)) / d, peval(m.ny, Q(f)) / d)
-        if 0 < f < 1:
+        if 0 < f < 1 and piece.start != piece.end:
             assert point_param(piece, piece.at(Q(f))) == Q(f)
+        elif piece.start == piece.end:
+            assert point_param(piece, piece.at(Q(f))) is None      # no motion, no instant
 
 
 # -- the families -----------------------------------------------------------------------
@@ -203,3 +205,70 @@ def test_ray_crossing_on_an_arc_is_exact_in_a_larger_field():
     assert len(ray) == 1 and ray[0].exact is not None
     p = arc.at(ray[0].exact)
     assert g.cross(p, g.point(3, 7)).is_zero() and g.dot(p, g.point(3, 7)).sign() > 0
+
+
+# -- the checker: I3 and I9 at the instants -------------------------------------------
+def _sec_points():
+    def P(t, r=20):
+        cs, sn = (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
+        return (r * cs, r * sn)
+    return [P(F(0)), P(F(1, 11)), P(F(1, 6)), P(F(4, 15)), (-20, 0)]
+
+
+def test_I3_fires_in_the_stretch_before_an_sec_instant():
+    """Robot 2 moves to C, then robot 0 leaves the SEC on its one-piece move to layer 1:
+    only the Looks at and between critical instants see another mover elected (there is
+    no piece end inside that move)."""
+    from exactsym.gathering.schedulers import run
+    from exactsym.gathering.world import Frame
+    acts = [("look", 2, Frame(F(20, 113), F(448, 339), False, F(2, 3), F(17, 7))),
+            ("advance", 2, None), ("look", 2, Frame(F(-55, 122), F(-150, 61), True,
+                                                    F(-16, 3), F(1, 7))),
+            ("look", 0, Frame(F(5, 39), F(4, 13), True, F(19, 3), F(20, 7))),
+            ("advance", 0, None)]
+    actions = [{"a": a, "robot": r, "frame": f.as_list()} if a == "look" else
+               {"a": a, "robot": r, "stop": None, "end": False} for a, r, f in acts]
+    res = run(_sec_points(), checker=Checker(enabled=frozenset({"I3"})), actions=actions)
+    v = res.violation
+    assert v["invariant"] == "I3" and v["label"] == "FormGPattern (L1642-1643)"
+    assert v["robots"] == [0, 2] and v["instant"] == 5
+    assert "SEC of all: right angle at the mover (diameter 1-4)" in v["witness"]
+    assert res.checks["instants"] >= 1
+
+
+def test_I3_holds_at_the_instants_of_a_move_that_keeps_everything():
+    """ONE_CIRCLE: robot 3 goes to C along the y axis; the SEC keeps (20,0) and (-20,0)
+    and the fresh Looks at and between its instants plan the same move."""
+    from exactsym.gathering.world import IDENTITY
+    w = World([(20, 0), (0, 20), (-20, 0), (0, -20), (12, 16)], Readings(),
+              checker=Checker(enabled=frozenset({"I3"})))
+    w.look(3, IDENTITY)
+    w.advance(3, F(1, 2))
+    w.advance(3)
+    assert w.checker.counts["I3"] == 2 and w.robots[3].pos == g.point(0, 0)
+
+
+def test_I9_holds_at_the_sec_and_symmetry_instants_of_the_corrected_variant():
+    """The corrected variant decides by distances and dot products only: the reflected
+    frame's fresh Looks at the SEC and symmetry instants agree (I9 counts them)."""
+    from exactsym.gathering.schedulers import run
+    res = run([(F(3, 2), 0), (F(-9, 5), 0), (8, 6), (-6, 8), (0, -10)], "centralised", 0,
+              algorithm="corrected")
+    assert res.outcome == "gathered"
+    assert res.checks["I9"] > res.looks // 2 + 1 and res.checks["instants"] > 0
+
+
+def test_look_points_are_ordered_strictly_inside_and_cover_every_stretch():
+    pts = [(30, 1), (-10, 0), (0, 10), (0, -10), (1, 1)]
+    w = world(pts)
+    seg = g.Segment(g.point(30, 1), g.point(30, 40))
+    points, sided = look_points(seg, w, 0, None)
+    fs = [p.f for p in points]
+    assert all(0 < float(f) < 1 for f in fs)
+    assert all((b - a).sign() > 0 for a, b in zip(fs, fs[1:]))
+    roots = critical_roots(seg, w, 0, None)
+    # every root lies strictly between two consecutive non-exact Look points
+    sides = [p.f for p in points if not p.exact]
+    assert len(sides) == len(roots) + 1
+    for k, r in enumerate(roots):
+        assert (sides[k] - Q(r.lo)).sign() <= 0 and (sides[k + 1] - Q(r.hi)).sign() >= 0

@@ -96,7 +96,7 @@ def point_param(piece, q):
     """The parameter ``f`` in (0, 1) with ``piece.at(f) == q``, or None."""
     if isinstance(piece, g.Segment):
         d, v = g.sub(piece.end, piece.start), g.sub(q, piece.start)
-        if not g.cross(d, v).is_zero():
+        if g.dot(d, d).is_zero() or not g.cross(d, v).is_zero():
             return None
         f = g.dot(d, v) / g.dot(d, d)
     else:
