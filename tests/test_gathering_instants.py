@@ -272,3 +272,31 @@ def test_look_points_are_ordered_strictly_inside_and_cover_every_stretch():
     assert len(sides) == len(roots) + 1
     for k, r in enumerate(roots):
         assert (sides[k] - Q(r.lo)).sign() <= 0 and (sides[k + 1] - Q(r.hi)).sign() >= 0
+
+
+def test_I6_fires_inside_a_piece_whose_ends_keep_C():
+    """The mover is an SEC support with robots 1 and 2 (acute triangle, C = 0 at both
+    ends of its chord of the circle of radius 25); inside the chord the SEC shrinks and C
+    moves: only the Look inside the piece sees it."""
+    from exactsym.gathering.world import World
+    pts = [(24, -7), (-15, 20), (-15, -20), (1, 2), (-3, 1)]
+    w = World(pts, Readings(), checker=Checker(enabled=frozenset({"I6"})))
+    rob = w.robots[0]
+    assert g.smallest_enclosing_circle(w.positions())[0] == g.point(0, 0)
+    end = g.point(24, 7)
+    rob.path, rob.role, rob.centre, rob.start = [g.Segment(rob.pos, end)], "leader", \
+        g.point(0, 0), rob.pos
+    import pytest
+    from exactsym.gathering.invariants import Violation
+    with pytest.raises(Violation) as err:
+        w.advance(0)
+    assert err.value.invariant == "I6" and err.value.label == "conclusion (L1708-1710)"
+    assert "half way" in err.value.witness or "just" in err.value.witness
+    # holds: the same chord with the SEC held by robots 1 and 2 and a third far support
+    pts2 = pts + [(25, 0)]
+    w = World(pts2, Readings(), checker=Checker(enabled=frozenset({"I6"})))
+    rob = w.robots[0]
+    rob.path, rob.role, rob.centre, rob.start = [g.Segment(rob.pos, end)], "leader", \
+        g.point(0, 0), rob.pos
+    w.advance(0)
+    assert w.checker.counts["I6"] >= 2

@@ -357,6 +357,10 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
     kernel holds it -- and the number of instants checked only on both sides (nested
     radicals)."""
     roots = critical_roots(piece, world, mover, centre, sec_r)
+    if not roots:             # one stretch: the whole open piece
+        half = MQ.rational(fmpq(1, 2))
+        return [LookPoint(half, piece.at(half), "half way, no critical instant",
+                          frozenset(), False)], 0
     out, sided = [], 0
     for k, r in enumerate(roots):
         fams = frozenset(t[0] for t in r.tags)

@@ -12,10 +12,14 @@ Exactness of the "at any instant" checks:
 * I4 over a piece reduces to its end points: the distance to C is convex along a segment
   and constant along an arc about C (the only arcs FormGPattern makes), and the other
   robots are still;
-* I3, I6 and I9 are checked at the end of every piece and at every adversary stop
-  point (rational instants).  The critical parameters inside a piece (where two distances
-  to C become equal, where the SEC's support changes) are NOT isolated yet: a change that
-  appears and disappears strictly inside one piece is missed (docs/gathering.md).
+* I6 and I9 are checked at the end of every piece and at every adversary stop point
+  (rational instants); I3 and I6 (and I9 at SEC and symmetry instants) also at the critical
+  instants inside each piece (:mod:`.instants`): where the mover crosses the line
+  through C and another robot, where two distances to C become equal, where the SEC's
+  support changes, where a symmetry can appear -- roots of polynomials in the path
+  parameter, isolated exactly (:mod:`.polyroots`).  A Look at each instant the kernel
+  holds, and one in each stretch between consecutive instants; an instant that needs a
+  nested radical is seen on both sides only (counted as ``sided``).
 """
 
 from __future__ import annotations
@@ -23,7 +27,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from . import geometry as g
-from .instants import look_points
+from .instants import critical_roots, look_points
 from .pattern import definition_defects, recognise
 
 #: How a violation names the statement it contradicts: the paper's ``\\label`` where
@@ -165,17 +169,14 @@ class Checker:
         if (rob.role or "").startswith("leader") and self._on("I4"):
             self._nearest(world, i, t, strict=True)
         if self._on("I6") and rob.centre is not None:
-            from .world import IDENTITY
-            d, _ = world.snapshot_decision(IDENTITY)
-            if d.centre != rob.centre:
-                raise Violation("I6", t, [i], f"C moved from {g.fmt_point(rob.centre)} to "
-                                f"{g.fmt_point(d.centre)} while robot {i} moves "
-                                f"({rob.role} move)",
-                                label=I6_LABEL_OF_ROLE.get(rob.role, I6_OTHER_LABEL))
-        if self._on("I3"):
+            self._same_centre(world, i, t, "")
+        i3 = self._on("I3")
+        if i3 or ("I6" in self.enabled and rob.centre is not None):
             # the critical instants inside the piece (each exactly when the kernel holds
-            # it, and just before and after it), then (unless it was the last piece) its
-            # end: the fresh Look must name the same mover and target (:mod:`.instants`)
+            # it, and one Look in each stretch between them), then (unless it was the last
+            # piece) its end: the fresh Look must name the same mover and target (I3), C
+            # must not have moved (I6), and at SEC and symmetry instants the reflected
+            # frame must agree (I9)  (:mod:`.instants`)
             end = rob.pos
             try:
                 points, sided = look_points(piece, world, i, rob.centre,
@@ -184,14 +185,29 @@ class Checker:
                 for lp in points:
                     rob.pos = lp.point
                     self.counts["instants"] += 1
-                    self._fresh_look(world, i, t, f" ({lp.where})")
-                    if "I9" in self.enabled and lp.families & {"sec", "symmetry"}:
+                    where = f" ({lp.where})"
+                    if "I6" in self.enabled and rob.centre is not None:
+                        self.counts["I6"] += 1
+                        self._same_centre(world, i, t, where)
+                    if i3:
+                        self._fresh_look(world, i, t, where)
+                    if i3 and "I9" in self.enabled and lp.families & {"sec", "symmetry"}:
                         self.counts["I9"] += 1
-                        self._mirror_look(world, i, t, f" ({lp.where})")
+                        self._mirror_look(world, i, t, where)
             finally:
                 rob.pos = end
-            if rob.path:
+            if i3 and rob.path:
                 self._fresh_look(world, i, t, "")
+
+    def _same_centre(self, world, i, t, where: str):
+        from .world import IDENTITY
+        rob = world.robots[i]
+        d, _ = world.snapshot_decision(IDENTITY)
+        if d.centre != rob.centre:
+            raise Violation("I6", t, [i], f"C moved from {g.fmt_point(rob.centre)} to "
+                            f"{g.fmt_point(d.centre)} while robot {i} moves ({rob.role} "
+                            f"move), robot {i} at {g.fmt_point(rob.pos)}{where}",
+                            label=I6_LABEL_OF_ROLE.get(rob.role, I6_OTHER_LABEL))
 
     def _mirror_look(self, world, i, t, where: str):
         """I9 at a critical instant: a fresh Look in the reflected frame plans the mover's
@@ -250,49 +266,19 @@ class Checker:
 
 
 def critical_points(piece, centre, world, mover: int) -> list:
-    """Exact points strictly inside ``piece`` where the mover's relation to another robot
-    changes: on a segment, where it is collinear with C and that robot (a ray crossing:
-    angular orders, levels' polygons and mirror lines change there) and where its distance
-    to C equals that robot's (the levels change; kept when the instant needs no new
-    nested radical); on an arc about C, where it crosses the ray of that robot.
+    """The exact points strictly inside ``piece`` where the mover crosses the line through
+    C and another robot, or is as far from C as another robot (the ``ray`` and
+    ``distance`` instants of :func:`.instants.critical_roots` that the kernel holds):
     ``[(description, point)]``."""
     if centre is None:
         return []
     out = []
-    for k, other in enumerate(world.robots):
-        if k == mover:
+    for r in critical_roots(piece, world, mover, centre):
+        if r.exact is None:
             continue
-        w = g.sub(other.pos, centre)
-        if w[0].is_zero() and w[1].is_zero():
-            continue
-        if isinstance(piece, g.Segment):
-            a, d = g.sub(piece.start, centre), g.sub(piece.end, piece.start)
-            den = g.cross(d, w)
-            if not den.is_zero():
-                tt = -g.cross(a, w) / den
-                if tt.sign() > 0 and (tt - 1).sign() < 0:
-                    out.append((f"on the ray of robot {k}", piece.at(tt)))
-            # |a + t d|^2 = |w|^2: (d.d) t^2 + 2 (a.d) t + (a.a - w.w) = 0
-            A, B, C0 = g.dot(d, d), g.dot(a, d) * 2, g.dot(a, a) - g.dot(w, w)
-            disc = B * B - A * C0 * 4
-            if disc.is_rational() and disc.sign() >= 0 and not A.is_zero():
-                from ..exact.multiquadratic import sqrt_rational
-                root = sqrt_rational(disc.to_fmpq())
-                for tt in ((-B - root) / (A * 2), (-B + root) / (A * 2)):
-                    if tt.sign() > 0 and (tt - 1).sign() < 0:
-                        out.append((f"as far from C as robot {k}", piece.at(tt)))
-        else:
-            w2 = g.dot(w, w)
-            r2 = g.dist2(piece.start, piece.centre)
-            ratio = r2 / w2
-            if ratio.is_rational():
-                from ..exact.multiquadratic import sqrt_rational
-                scale = sqrt_rational(ratio.to_fmpq())
-                for sgn in (1, -1):
-                    q = g.add(piece.centre, g.scale(w, scale * sgn))
-                    if q != piece.start and q != piece.end and \
-                            piece.contains_direction(g.sub(q, piece.centre)):
-                        out.append((f"on the ray of robot {k}", q))
+        for fam, what in r.tags:
+            if fam in ("ray", "distance"):
+                out.append((what, piece.at(r.exact)))
     return out
 
 
