@@ -12,6 +12,9 @@ Families (each root carries a tag naming the family and the robots):
   orders about C, the levels' polygons and their mirror lines change there);
 * ``distance`` -- its distance to C equals another robot's (the levels change; a
   rotation or a reflection about C can swap the mover with that robot there);
+* ``pattern``  -- the mover is on the circle of a layer of the gathering pattern about C
+  (``|p - C| = 2L``) or touches another robot (the recognised pattern P, hence R, can
+  change there);
 * ``sec``      -- the SEC's support changes: the mover crosses the SEC of the others;
   and, where it lies outside it (it is then a support), the others' hull robot ``q``
   crosses the circle on the diameter mover-``a``, the mover crosses the circle through
@@ -19,7 +22,8 @@ Families (each root carries a tag naming the family and the robots):
   (at a hull robot, or at the mover: the circle on the diameter ``a b`` that encloses
   the others).  The SEC of every robot (A1 = sec-all); with A1 = sec-r, also of R.
 * ``symmetry`` -- a symmetry can appear: the mover crosses a mirror line of the others
-  (about C, and about their centroid), reaches the mirror image of one robot in a
+  (through C -- of all the others, and of the rest of R -- and through their centroid),
+  passes through C, reaches the mirror image of one robot in a
   mirror line of the remaining ones, or the centroid of all the robots meets the SEC's
   centre (necessary for a rotation; with the mover a support of the SEC as well).
 
@@ -318,6 +322,21 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
                                                      f"robot {k}")))
             polys.append((dist2_poly(m, centre, g.dot(w, w)), ("distance", f"as far from C "
                                                                 f"as robot {k}")))
+        # the pattern: the mover on a layer's circle (|p - C| = 2L), or touching a robot
+        # the farthest the mover gets from C: an end of a segment (convex), at most
+        # |centre of the arc - C| + its radius on an arc; a float bound with a margin of
+        # two layers chooses the range only (each layer's instant is exact)
+        if isinstance(piece, g.Segment):
+            far = max(float(g.dist2(piece.start, centre)), float(g.dist2(piece.end, centre)))
+            reach = far ** 0.5
+        else:
+            reach = float(g.dist2(piece.centre, centre)) ** 0.5 + \
+                float(g.dist2(piece.start, piece.centre)) ** 0.5
+        for L in range(1, int(reach / 2) + 3):
+            polys.append((dist2_poly(m, centre, MQ.rational(4 * L * L)),
+                          ("pattern", f"on the circle of layer {L}")))
+    for k, q in static.items():
+        polys.append((dist2_poly(m, q, MQ.rational(4)), ("pattern", f"touching robot {k}")))
     for poly, what in _sec_family(m, static, "SEC of all"):
         polys.append((poly, ("sec", what)))
     if sec_r:
@@ -328,6 +347,14 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
     sym_polys, sym_params = _symmetry_family(piece, m, static, centre,
                                              full=_mover_may_support(m, static, centre))
     polys += [(p, ("symmetry", w)) for p, w in sym_polys]
+    # the paper decides on R (the robots outside the pattern) about C: mirror lines of
+    # the rest of R through C too, when the pattern holds robots
+    rset = world.robots[mover].r_set
+    rest_r = [p for k, p in static.items() if k in rset]
+    if centre is not None and rset and len(rest_r) < len(static):
+        for u in mirror_lines(rest_r, centre):
+            polys.append((cross_poly(m, centre, u), ("symmetry", "a mirror line of the rest "
+                                                     "of R through C")))
     roots: list = []
     for poly, tag in polys:
         roots += roots_in_unit(poly, tag)
