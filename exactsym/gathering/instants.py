@@ -184,12 +184,13 @@ def _centroid(pts):
 
 
 # -- the families ------------------------------------------------------------------------
-def _sec_family(m: Motion, static: dict, tag: str) -> list:
-    """``[(poly, description)]`` for the SEC of the static robots plus the mover."""
+def _sec_family(m: Motion, static: dict, tag: str, sec=None) -> list:
+    """``[(poly, description)]`` for the SEC of the static robots plus the mover
+    (``sec``: the static robots' SEC when the caller has it)."""
     pts = list(static.values())
     if len(pts) < 2:
         return []
-    c0, r20 = g.smallest_enclosing_circle(pts)
+    c0, r20 = sec or g.smallest_enclosing_circle(pts)
     e0 = dist2_poly(m, c0, r20)
     out = [(e0, f"{tag}: the mover crosses the SEC of the others")]
     if not e0:
@@ -230,22 +231,23 @@ def _sec_family(m: Motion, static: dict, tag: str) -> list:
     return out
 
 
-def _mover_may_support(m: Motion, static: dict, centre) -> bool:
-    """False when the mover stays strictly inside the others' SEC (touching it at
-    isolated instants at most) and C is that SEC's centre: every symmetry of the robots
-    then fixes C, so it maps the mover to a robot as far from C (a ``distance``
-    instant), or fixes it on a mirror line through C, or the mover is at C."""
-    pts = list(static.values())
-    if len(pts) < 2:
+def _mover_may_support(m: Motion, static: dict, centre, sec) -> bool:
+    """False when the mover stays inside the others' SEC or on its circle (it leaves it
+    at no instant) and C is that SEC's centre: the SEC of all is then that circle, every
+    symmetry of the robots fixes C, so it maps the mover to a robot as far from C (a
+    ``distance`` instant), or fixes it on a mirror line through C, or the mover is at C."""
+    if sec is None:
         return True
-    c0, r20 = g.smallest_enclosing_circle(pts)
+    c0, r20 = sec
     if centre is None or c0 != centre:
         return True
     e0 = dist2_poly(m, c0, r20)
-    return not e0 or sum(e0, MQ()).sign() > 0 or e0[0].sign() > 0
+    if not e0:
+        return False                       # on the others' SEC circle all along
+    return sum(e0, MQ()).sign() > 0 or e0[0].sign() > 0 or bool(roots_in_unit(e0))
 
 
-def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True):
+def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True, sec=None):
     """``([(poly, description)], [(f, description)])``: lines the mover crosses and exact
     parameters where it reaches a candidate point (``full``: also the families that the
     ``distance`` instants cover when C is the SEC centre and the mover inside it)."""
@@ -271,7 +273,7 @@ def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True):
             if f is not None:
                 params.append((f, f"symmetry: the mirror image of robot {q_i}"))
     # rotations: the centroid of all meets the SEC centre
-    c0, _ = g.smallest_enclosing_circle(pts)
+    c0, _ = sec or g.smallest_enclosing_circle(pts)
     cands = [(g.sub(g.scale(c0, MQ.rational(n)), total), "the others' SEC centre")]
     hull = hull_indices(static)
     for a_i in hull:
@@ -306,46 +308,66 @@ def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True):
     return polys, params
 
 
+def _reach(piece, x) -> tuple:
+    """Floats ``(lo, hi)`` with ``lo <= |p - x| <= hi`` for every point p of the piece,
+    widened by a margin far above the floats' error (1e-6 relative, 1e-6 absolute): they
+    only choose which polynomials to build (a layer, a tie or a contact outside the range
+    has no root), never decide an instant."""
+    def f(v):
+        return float(v)
+    if isinstance(piece, g.Segment):
+        a, b = piece.start, piece.end
+        ax, ay, bx, by, qx, qy = (f(a[0]), f(a[1]), f(b[0]), f(b[1]), f(x[0]), f(x[1]))
+        dx, dy = bx - ax, by - ay
+        den = dx * dx + dy * dy
+        t = 0.0 if den == 0 else min(1.0, max(0.0, ((qx - ax) * dx + (qy - ay) * dy) / den))
+        lo = ((ax + t * dx - qx) ** 2 + (ay + t * dy - qy) ** 2) ** 0.5
+        hi = max(((ax - qx) ** 2 + (ay - qy) ** 2) ** 0.5, ((bx - qx) ** 2 + (by - qy) ** 2) ** 0.5)
+    else:
+        d = f(g.dist2(piece.centre, x)) ** 0.5
+        r = f(g.dist2(piece.start, piece.centre)) ** 0.5
+        lo, hi = abs(d - r), d + r
+    return lo * (1 - 1e-6) - 1e-6, hi * (1 + 1e-6) + 1e-6
+
+
 def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> list:
     """Every critical instant strictly inside ``piece`` as separated :class:`Root`\\ s
     (tags: ``(family, description)``)."""
     m = motion_of(piece)
     static = {k: r.pos for k, r in enumerate(world.robots) if k != mover}
+    sec = g.smallest_enclosing_circle(list(static.values())) if len(static) >= 2 else None
     polys: list = []
     params: list = []
     if centre is not None:
+        lo_c, hi_c = _reach(piece, centre)
         for k, q in static.items():
             w = g.sub(q, centre)
             if w[0].is_zero() and w[1].is_zero():
                 continue
             polys.append((cross_poly(m, centre, w), ("ray", f"on the line through C and "
                                                      f"robot {k}")))
-            polys.append((dist2_poly(m, centre, g.dot(w, w)), ("distance", f"as far from C "
-                                                                f"as robot {k}")))
+            dq = float(g.dot(w, w)) ** 0.5
+            if lo_c <= dq <= hi_c:
+                polys.append((dist2_poly(m, centre, g.dot(w, w)),
+                              ("distance", f"as far from C as robot {k}")))
         # the pattern: the mover on a layer's circle (|p - C| = 2L), or touching a robot
-        # the farthest the mover gets from C: an end of a segment (convex), at most
-        # |centre of the arc - C| + its radius on an arc; a float bound with a margin of
-        # two layers chooses the range only (each layer's instant is exact)
-        if isinstance(piece, g.Segment):
-            far = max(float(g.dist2(piece.start, centre)), float(g.dist2(piece.end, centre)))
-            reach = far ** 0.5
-        else:
-            reach = float(g.dist2(piece.centre, centre)) ** 0.5 + \
-                float(g.dist2(piece.start, piece.centre)) ** 0.5
-        for L in range(1, int(reach / 2) + 3):
-            polys.append((dist2_poly(m, centre, MQ.rational(4 * L * L)),
-                          ("pattern", f"on the circle of layer {L}")))
+        for L in range(max(1, int(lo_c / 2)), int(hi_c / 2) + 2):
+            if lo_c <= 2 * L <= hi_c:
+                polys.append((dist2_poly(m, centre, MQ.rational(4 * L * L)),
+                              ("pattern", f"on the circle of layer {L}")))
     for k, q in static.items():
-        polys.append((dist2_poly(m, q, MQ.rational(4)), ("pattern", f"touching robot {k}")))
-    for poly, what in _sec_family(m, static, "SEC of all"):
+        if _reach(piece, q)[0] <= 2:
+            polys.append((dist2_poly(m, q, MQ.rational(4)),
+                          ("pattern", f"touching robot {k}")))
+    for poly, what in _sec_family(m, static, "SEC of all", sec):
         polys.append((poly, ("sec", what)))
     if sec_r:
         rset = world.robots[mover].r_set
         sub = {k: p for k, p in static.items() if k in rset}
         for poly, what in _sec_family(m, sub, "SEC of R"):
             polys.append((poly, ("sec", what)))
-    sym_polys, sym_params = _symmetry_family(piece, m, static, centre,
-                                             full=_mover_may_support(m, static, centre))
+    sym_polys, sym_params = _symmetry_family(
+        piece, m, static, centre, full=_mover_may_support(m, static, centre, sec), sec=sec)
     polys += [(p, ("symmetry", w)) for p, w in sym_polys]
     # the paper decides on R (the robots outside the pattern) about C: mirror lines of
     # the rest of R through C too, when the pattern holds robots
