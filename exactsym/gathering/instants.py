@@ -330,6 +330,23 @@ def _reach(piece, x) -> tuple:
     return lo * (1 - 1e-6) - 1e-6, hi * (1 + 1e-6) + 1e-6
 
 
+def _about(piece, m: Motion, centre, static: dict, name: str) -> list:
+    """The ``ray`` and ``distance`` polynomials about ``centre``."""
+    out = []
+    lo_c, hi_c = _reach(piece, centre)
+    for k, q in static.items():
+        w = g.sub(q, centre)
+        if w[0].is_zero() and w[1].is_zero():
+            continue
+        out.append((cross_poly(m, centre, w), ("ray", f"on the line through {name} and "
+                                                      f"robot {k}")))
+        dq = float(g.dot(w, w)) ** 0.5
+        if lo_c <= dq <= hi_c:
+            out.append((dist2_poly(m, centre, g.dot(w, w)),
+                        ("distance", f"as far from {name} as robot {k}")))
+    return out
+
+
 def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> list:
     """Every critical instant strictly inside ``piece`` as separated :class:`Root`\\ s
     (tags: ``(family, description)``)."""
@@ -339,33 +356,30 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
     polys: list = []
     params: list = []
     if centre is not None:
+        polys += _about(piece, m, centre, static, "C")
         lo_c, hi_c = _reach(piece, centre)
-        for k, q in static.items():
-            w = g.sub(q, centre)
-            if w[0].is_zero() and w[1].is_zero():
-                continue
-            polys.append((cross_poly(m, centre, w), ("ray", f"on the line through C and "
-                                                     f"robot {k}")))
-            dq = float(g.dot(w, w)) ** 0.5
-            if lo_c <= dq <= hi_c:
-                polys.append((dist2_poly(m, centre, g.dot(w, w)),
-                              ("distance", f"as far from C as robot {k}")))
         # the pattern: the mover on a layer's circle (|p - C| = 2L), or touching a robot
         for L in range(max(1, int(lo_c / 2)), int(hi_c / 2) + 2):
             if lo_c <= 2 * L <= hi_c:
                 polys.append((dist2_poly(m, centre, MQ.rational(4 * L * L)),
                               ("pattern", f"on the circle of layer {L}")))
+    # the paper layer orders R about R's own SEC centre: when the pattern holds robots,
+    # R's SEC (its support changes) and the lines and ties about its centre too
+    rset = world.robots[mover].r_set
+    sub_r = {k: p for k, p in static.items() if k in rset}
+    if sec_r or (rset and len(sub_r) < len(static)):
+        for poly, what in _sec_family(m, sub_r, "SEC of R"):
+            polys.append((poly, ("sec", what)))
+        if len(sub_r) >= 2:
+            c_r = g.smallest_enclosing_circle(list(sub_r.values()))[0]
+            if centre is None or c_r != centre:
+                polys += _about(piece, m, c_r, sub_r, "the centre of R's SEC")
     for k, q in static.items():
         if _reach(piece, q)[0] <= 2:
             polys.append((dist2_poly(m, q, MQ.rational(4)),
                           ("pattern", f"touching robot {k}")))
     for poly, what in _sec_family(m, static, "SEC of all", sec):
         polys.append((poly, ("sec", what)))
-    if sec_r:
-        rset = world.robots[mover].r_set
-        sub = {k: p for k, p in static.items() if k in rset}
-        for poly, what in _sec_family(m, sub, "SEC of R"):
-            polys.append((poly, ("sec", what)))
     sym_polys, sym_params = _symmetry_family(
         piece, m, static, centre, full=_mover_may_support(m, static, centre, sec), sec=sec)
     polys += [(p, ("symmetry", w)) for p, w in sym_polys]
