@@ -315,3 +315,32 @@ def test_pattern_family_layers_and_contacts():
     tags = [t[1] for r in critical_roots(short, w, 0, g.point(0, 0)) for t in r.tags
             if t[0] == "pattern"]
     assert tags == ["touching robot 1"]                            # no layer's circle
+
+
+def test_instants_are_invariant_under_an_exact_similarity():
+    """A Pythagorean rotation, a scale and a translation (a reflection too) move no
+    instant: the same exact parameters, the same families."""
+    from exactsym.gathering.world import Frame
+    pts = [(30, 1), (-10, 0), (0, 10), (0, -10), (1, 1)]
+    seg = g.Segment(g.point(30, 1), g.point(30, 40))
+    base = critical_roots(seg, world(pts), 0, g.point(0, 0))
+
+    def key(roots):
+        return sorted((str(r.exact), tuple(sorted(t[0] for t in r.tags)))
+                      for r in roots if r.exact is not None)
+
+    for fr in (Frame(F(6, 5), F(8, 5), False, F(1, 3), F(-2)),
+               Frame(F(3, 5), F(-4, 5), True, F(7), F(5, 2))):
+        # the local coordinates are the world's under the similarity; distances scale,
+        # so the layer and contact radii are not similarity-invariant: compare the
+        # families that are (ray, distance, sec, symmetry)
+        moved = [tuple(fr.to_local((MQ.coerce(x), MQ.coerce(y)))) for x, y in pts]
+        w2 = world([(i, 100 * i) for i in range(5)])      # placeholders, moved below
+        for rob, p in zip(w2.robots, moved):
+            rob.pos = p
+        seg2 = g.Segment(fr.to_local(seg.start), fr.to_local(seg.end))
+        got = critical_roots(seg2, w2, 0, fr.to_local(g.point(0, 0)))
+
+        def inv(roots):
+            return [k for k in key(roots) if "pattern" not in k[1]]
+        assert len(inv(base)) >= 3 and inv(got) == inv(base)
