@@ -304,12 +304,14 @@ def test_I6_fires_inside_a_piece_whose_ends_keep_C():
 
 def test_pattern_family_layers_and_contacts():
     w = world([(7, 0), (5, 2), (-30, 0), (0, 30), (0, -30)])
-    seg = g.Segment(g.point(7, 0), g.point(3, 0))
+    seg = g.Segment(g.point(7, 0), g.point(1, 0))
     roots = critical_roots(seg, w, 0, g.point(0, 0))
     pattern = {t[1]: r.exact for r in roots for t in r.tags if t[0] == "pattern"}
-    assert pattern["on the circle of layer 3"] == Q(F(1, 4))      # x = 6
-    assert pattern["on the circle of layer 2"] == Q(F(3, 4))      # x = 4
-    assert pattern["touching robot 1"] == Q(F(1, 2))              # x = 5, tangent
+    assert pattern["on the circle of layer 1"] == Q(F(5, 6))      # x = 2
+    assert pattern["touching robot 1"] == Q(F(1, 3))              # x = 5, tangent
+    # five robots: layer 2 (x = 4) and 3 (x = 6) can hold no robot of a pattern (the
+    # inner layers would need 1 + 6 robots)
+    assert set(pattern) == {"on the circle of layer 1", "touching robot 1"}
     short = g.Segment(g.point(F(9, 2), 0), g.point(F(11, 2), 0))
     w.robots[0].pos = short.start
     tags = [t[1] for r in critical_roots(short, w, 0, g.point(0, 0)) for t in r.tags

@@ -358,8 +358,12 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
     if centre is not None:
         polys += _about(piece, m, centre, static, "C")
         lo_c, hi_c = _reach(piece, centre)
-        # the pattern: the mover on a layer's circle (|p - C| = 2L), or touching a robot
-        for L in range(max(1, int(lo_c / 2)), int(hi_c / 2) + 2):
+        # the pattern: the mover on a layer's circle (|p - C| = 2L), or touching a robot;
+        # layer L holds a robot of P only when the inner layers are full: 1 + 3L(L - 1)
+        # robots at least (capacity of layer l >= 6l), so no larger L matters
+        n = len(world.robots)
+        top = max(L for L in range(1, n + 1) if 1 + 3 * L * (L - 1) < n) if n > 1 else 0
+        for L in range(max(1, int(lo_c / 2)), min(int(hi_c / 2) + 2, top + 1)):
             if lo_c <= 2 * L <= hi_c:
                 polys.append((dist2_poly(m, centre, MQ.rational(4 * L * L)),
                               ("pattern", f"on the circle of layer {L}")))
