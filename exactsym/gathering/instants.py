@@ -28,12 +28,14 @@ Families (each root carries a tag naming the family and the robots):
   centre (necessary for a rotation; with the mover a support of the SEC as well).
 
 The list is a superset: a candidate where nothing happens costs a Look, a missed one
-would be a missed check.  :func:`look_points` returns, for every root, the exact point
-when the kernel holds it, and rational points just before and just after it with no
-other root of any family in between, strictly inside the piece: between two
-consecutive instants every relation above keeps its sign, so the Looks there stand for
-the whole open stretch (and the exact one for the instant itself).  A root that needs
-a nested radical is checked on both sides only (``sided``).
+would be a missed check.  :func:`look_points` returns every root's exact point when the
+kernel holds it, and one rational point in each open stretch between consecutive roots
+(before the first, after the last; half way when there is none), strictly inside the
+piece: in a stretch no relation above changes sign, so its Look stands for the whole
+stretch with respect to them.  A root that needs a nested radical is seen on both sides
+only (``sided``; :func:`.polyroots.exact_root_hook` is where towers of quadratic
+extensions will plug in).  Not enumerated: relations that involve neither C, nor an SEC,
+a symmetry or a contact (the corrected variant's distance profiles, for example).
 """
 
 from __future__ import annotations
