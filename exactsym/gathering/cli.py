@@ -119,7 +119,11 @@ def _text(res, settings) -> str:
              f"{'rigid' if settings['rigid'] else 'non-rigid ' + settings['delta']}, readings "
              + ", ".join(f"{k}={v}" for k, v in settings["readings"].items()),
              f"events: {res.events}, Looks: {res.looks}",
-             "invariant checks: " + ", ".join(f"{k} {v}" for k, v in res.checks.items())]
+             "invariant checks: " + ", ".join(f"{k} {v}" for k, v in res.checks.items()
+                                              if k.startswith("I")),
+             f"fresh Looks at and between critical instants: {res.checks.get('instants', 0)}"
+             f" ({res.checks.get('sided', 0)} instants seen on both sides only: nested "
+             f"radicals); Looks the kernel could not hold: {res.checks.get('skipped', 0)}"]
     if res.violation:
         v = res.violation
         lines.append(f"violation: {v['invariant']} ({v['label']}) at event {v['instant']}, "

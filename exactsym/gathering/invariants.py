@@ -12,10 +12,14 @@ Exactness of the "at any instant" checks:
 * I4 over a piece reduces to its end points: the distance to C is convex along a segment
   and constant along an arc about C (the only arcs FormGPattern makes), and the other
   robots are still;
-* I3, I6 and I9 are checked at the end of every piece and at every adversary stop
-  point (rational instants).  The critical parameters inside a piece (where two distances
-  to C become equal, where the SEC's support changes) are NOT isolated yet: a change that
-  appears and disappears strictly inside one piece is missed (docs/gathering.md).
+* I6 and I9 are checked at the end of every piece and at every adversary stop point
+  (rational instants); I3 and I6 (and I9 at SEC and symmetry instants) also at the critical
+  instants inside each piece (:mod:`.instants`): where the mover crosses the line
+  through C and another robot, where two distances to C become equal, where the SEC's
+  support changes, where a symmetry can appear -- roots of polynomials in the path
+  parameter, isolated exactly (:mod:`.polyroots`).  A Look at each instant the kernel
+  holds, and one in each stretch between consecutive instants; an instant that needs a
+  nested radical is seen on both sides only (counted as ``sided``).
 """
 
 from __future__ import annotations
@@ -23,19 +27,23 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from . import geometry as g
+from .instants import critical_roots, look_points
 from .pattern import definition_defects, recognise
 
+#: How a violation names the statement it contradicts: the paper's ``\\label`` where
+#: the statement has one (``/paper/README.md``), otherwise the algorithm (or the model
+#: item, or the section) with the paper's line numbers.
 LABELS = {
     "I1": "gather-no-obstacle",
     "I2": "lem-vl-move",
     "I3": "obs-v-move",
     "I4": "gather-min-distance",
     "I5": "gather-no-obstacle",
-    "I6": "MakeAsym-SEC",
+    "I6": "MakeAsym (L1487, L1560)",
     "I7": "FormGPattern",
     "I8": "gathering_pattern",
-    "I9": "no-chirality",
-    "I10": "conclusion-progress",
+    "I9": "no chirality (L210-214)",
+    "I10": "conclusion (L1707-1721)",
 }
 
 
@@ -44,6 +52,14 @@ LABELS = {
 #: the sentence before the gathering lemmas (L1642-1643, "the robot for movement remains
 #: invariant"), which belongs to FormGPattern.
 I3_LABEL_OF_ROLE = {"MakeAsym": "obs-v-move", "Make_SymToAsym": "obs-v-move"}
+I3_LEADER_LABEL = "FormGPattern (L1642-1643)"
+
+#: I6 (C does not change while a robot moves): for MakeAsym's epsilon mover, its
+#: correctness sentence "more than 3 robots on G_t keep the SEC" (L1487, L1560); for
+#: every other move, the conclusion's "destination which remains invariant during the
+#: run time of the algorithm" (L1708-1710).
+I6_LABEL_OF_ROLE = {"MakeAsym": LABELS["I6"]}
+I6_OTHER_LABEL = "conclusion (L1708-1710)"
 
 
 class Violation(Exception):
@@ -68,7 +84,10 @@ ALL = tuple(f"I{k}" for k in range(1, 11))
 @dataclass
 class Checker:
     enabled: frozenset = frozenset(ALL)
-    counts: dict = field(default_factory=lambda: {k: 0 for k in ALL})
+    # each invariant's checks; "instants": fresh Looks at critical instants of a motion
+    # and just beside them; "sided": instants seen only on both sides (nested radicals)
+    counts: dict = field(default_factory=lambda: {**{k: 0 for k in ALL}, "instants": 0,
+                                                  "sided": 0})
     in_pattern: set = field(default_factory=set)       # robots ever recognised in P
     undecided_fresh: int = 0      # I3 / I9 Looks skipped: the kernel could not hold them
     frames: tuple = ()                                  # extra frames for I9 (besides mirror)
@@ -150,23 +169,61 @@ class Checker:
         if (rob.role or "").startswith("leader") and self._on("I4"):
             self._nearest(world, i, t, strict=True)
         if self._on("I6") and rob.centre is not None:
-            from .world import IDENTITY
-            d, _ = world.snapshot_decision(IDENTITY)
-            if d.centre != rob.centre:
-                raise Violation("I6", t, [i], f"C moved from {g.fmt_point(rob.centre)} to "
-                                f"{g.fmt_point(d.centre)} while robot {i} moves")
-        if self._on("I3"):
-            # the critical instants inside the piece, then (unless it was the last piece)
-            # its end: the fresh Look must name the same mover and target
+            self._same_centre(world, i, t, "")
+        i3 = self._on("I3")
+        if i3 or ("I6" in self.enabled and rob.centre is not None):
+            # the critical instants inside the piece (each exactly when the kernel holds
+            # it, and one Look in each stretch between them), then (unless it was the last
+            # piece) its end: the fresh Look must name the same mover and target (I3), C
+            # must not have moved (I6), and at SEC and symmetry instants the reflected
+            # frame must agree (I9)  (:mod:`.instants`)
             end = rob.pos
             try:
-                for where, point in critical_points(piece, rob.centre, world, i):
-                    rob.pos = point
-                    self._fresh_look(world, i, t, f" ({where})")
+                points, sided = look_points(piece, world, i, rob.centre,
+                                            world.readings.A1 == "sec-r")
+                self.counts["sided"] += sided
+                for lp in points:
+                    rob.pos = lp.point
+                    self.counts["instants"] += 1
+                    where = f" ({lp.where})"
+                    if "I6" in self.enabled and rob.centre is not None:
+                        self.counts["I6"] += 1
+                        self._same_centre(world, i, t, where)
+                    if i3:
+                        self._fresh_look(world, i, t, where)
+                    if i3 and "I9" in self.enabled and lp.families & {"sec", "symmetry"}:
+                        self.counts["I9"] += 1
+                        self._mirror_look(world, i, t, where)
             finally:
                 rob.pos = end
-            if rob.path:
+            if i3 and rob.path:
                 self._fresh_look(world, i, t, "")
+
+    def _same_centre(self, world, i, t, where: str):
+        from .world import IDENTITY
+        rob = world.robots[i]
+        d, _ = world.snapshot_decision(IDENTITY)
+        if d.centre != rob.centre:
+            raise Violation("I6", t, [i], f"C moved from {g.fmt_point(rob.centre)} to "
+                            f"{g.fmt_point(d.centre)} while robot {i} moves ({rob.role} "
+                            f"move), robot {i} at {g.fmt_point(rob.pos)}{where}",
+                            label=I6_LABEL_OF_ROLE.get(rob.role, I6_OTHER_LABEL))
+
+    def _mirror_look(self, world, i, t, where: str):
+        """I9 at a critical instant: a fresh Look in the reflected frame plans the mover's
+        own move too."""
+        from .world import MIRROR
+        rob = world.robots[i]
+        d, paths = world.snapshot_decision(MIRROR)
+        if d.status == "undecided":
+            self.undecided_fresh += 1
+            return
+        plan = _plan(paths, d)
+        if not _same_plan(plan, {i: (rob.role, rob.target)}):
+            raise Violation("I9", t, sorted(set(plan) | {i}),
+                            f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
+                            f"Look in the reflected frame with robot {i} at "
+                            f"{g.fmt_point(rob.pos)}{where} plans {_plan_text(plan)}")
 
     def _fresh_look(self, world, i, t, where: str):
         from .world import IDENTITY
@@ -181,7 +238,7 @@ class Checker:
                             f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
                             f"Look with robot {i} at {g.fmt_point(rob.pos)}{where} plans "
                             f"{_plan_text(plan)} ({d.status}: {d.detail})",
-                            label=I3_LABEL_OF_ROLE.get(rob.role, "FormGPattern"))
+                            label=I3_LABEL_OF_ROLE.get(rob.role, I3_LEADER_LABEL))
 
     # -- after an arrival ----------------------------------------------------------------
     def after_arrival(self, world, i):
@@ -209,49 +266,19 @@ class Checker:
 
 
 def critical_points(piece, centre, world, mover: int) -> list:
-    """Exact points strictly inside ``piece`` where the mover's relation to another robot
-    changes: on a segment, where it is collinear with C and that robot (a ray crossing:
-    angular orders, levels' polygons and mirror lines change there) and where its distance
-    to C equals that robot's (the levels change; kept when the instant needs no new
-    nested radical); on an arc about C, where it crosses the ray of that robot.
+    """The exact points strictly inside ``piece`` where the mover crosses the line through
+    C and another robot, or is as far from C as another robot (the ``ray`` and
+    ``distance`` instants of :func:`.instants.critical_roots` that the kernel holds):
     ``[(description, point)]``."""
     if centre is None:
         return []
     out = []
-    for k, other in enumerate(world.robots):
-        if k == mover:
+    for r in critical_roots(piece, world, mover, centre):
+        if r.exact is None:
             continue
-        w = g.sub(other.pos, centre)
-        if w[0].is_zero() and w[1].is_zero():
-            continue
-        if isinstance(piece, g.Segment):
-            a, d = g.sub(piece.start, centre), g.sub(piece.end, piece.start)
-            den = g.cross(d, w)
-            if not den.is_zero():
-                tt = -g.cross(a, w) / den
-                if tt.sign() > 0 and (tt - 1).sign() < 0:
-                    out.append((f"on the ray of robot {k}", piece.at(tt)))
-            # |a + t d|^2 = |w|^2: (d.d) t^2 + 2 (a.d) t + (a.a - w.w) = 0
-            A, B, C0 = g.dot(d, d), g.dot(a, d) * 2, g.dot(a, a) - g.dot(w, w)
-            disc = B * B - A * C0 * 4
-            if disc.is_rational() and disc.sign() >= 0 and not A.is_zero():
-                from ..exact.multiquadratic import sqrt_rational
-                root = sqrt_rational(disc.to_fmpq())
-                for tt in ((-B - root) / (A * 2), (-B + root) / (A * 2)):
-                    if tt.sign() > 0 and (tt - 1).sign() < 0:
-                        out.append((f"as far from C as robot {k}", piece.at(tt)))
-        else:
-            w2 = g.dot(w, w)
-            r2 = g.dist2(piece.start, piece.centre)
-            ratio = r2 / w2
-            if ratio.is_rational():
-                from ..exact.multiquadratic import sqrt_rational
-                scale = sqrt_rational(ratio.to_fmpq())
-                for sgn in (1, -1):
-                    q = g.add(piece.centre, g.scale(w, scale * sgn))
-                    if q != piece.start and q != piece.end and \
-                            piece.contains_direction(g.sub(q, piece.centre)):
-                        out.append((f"on the ray of robot {k}", q))
+        for fam, what in r.tags:
+            if fam in ("ray", "distance"):
+                out.append((what, piece.at(r.exact)))
     return out
 
 

@@ -40,10 +40,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 
-from ..exact.multiquadratic import MQ, sqrt_rational
+from ..exact.multiquadratic import MQ
 from flint import fmpq
 from . import geometry as g
 from .paper_bridge import paper_decision
+from .polyroots import mq_sqrt
 from .pattern import Pattern, recognise, slot
 
 READINGS = {
@@ -199,9 +200,9 @@ def _paper_move(pm, start, centre_r, pts, R):
     if pm.kind == "to-G_t-circle" and pm.target_ring_robot is not None:
         target = pts[R[pm.target_ring_robot]]
         r2t, r2p = g.dist2(target, centre_r), g.dist2(start, centre_r)
-        if not (r2t.is_rational() and r2p.is_rational()):
+        k = mq_sqrt(r2t / r2p, big_ok=True)
+        if k is None:              # a nested radical: not in the kernel
             return None
-        k = sqrt_rational(r2t.to_fmpq() / r2p.to_fmpq())
         return [g.Segment(start, g.add(centre_r, g.scale(g.sub(start, centre_r), k)))]
     return None
 
@@ -225,9 +226,9 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1) 
                          "no layer to extend")
     l = pat.last_layer
     if pat.last_full():
-        return [g.Segment(p, g.radial_point(centre, p, 2 * (l + 1) * unit))]
+        return [g.Segment(p, radial_point(centre, p, 2 * (l + 1) * unit))]
     chain = pat.layers[-1]
-    q = g.radial_point(centre, p, 2 * l * unit)
+    q = radial_point(centre, p, 2 * l * unit)
     s_ccw = slot(centre, pts[chain[-1]], l, 1)      # past the counter-clockwise end
     s_cw = slot(centre, pts[chain[0]], l, -1)       # past the clockwise end
     vq, v1, v2 = g.sub(q, centre), g.sub(s_ccw, centre), g.sub(s_cw, centre)
@@ -247,15 +248,33 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1) 
         return [g.Segment(p, target)]
     if readings.A5 == "arc-radial":
         vp = g.sub(p, centre)
-        r2 = g.dot(vp, vp)
-        if not r2.is_rational():
-            raise ValueError("arc-radial needs a rational squared distance")
-        k = sqrt_rational(r2.to_fmpq()) / (2 * l * unit)
+        root = mq_sqrt(g.dot(vp, vp), big_ok=True)
+        if root is None:
+            raise ValueError("arc-radial needs |p - C| in a multiquadratic field (a nested "
+                             "radical otherwise)")
+        k = root / (2 * l * unit)
         above = g.add(centre, g.scale(g.sub(target, centre), k))
         pieces = g.arc_path(centre, p, above, sense)
         return pieces + [g.Segment(above, target)]
     pieces = [g.Segment(p, q)] if q != p else []
     return pieces + g.arc_path(centre, q, target, sense)
+
+
+def radial_point(centre, p, radius):
+    """The point at distance ``radius`` from ``centre`` towards ``p``.  ``|p - C|^2`` is
+    rational for a robot that has not slid along an arc; after a slide (or with C moved)
+    it is a multiquadratic number, and its square root is taken when it lies in a
+    multiquadratic field (:func:`.polyroots.mq_sqrt`); otherwise the target is a nested
+    radical and ``ValueError`` says so (the decision is then ``undecided``)."""
+    v = g.sub(p, centre)
+    r2 = g.dot(v, v)
+    if r2.is_rational():
+        return g.radial_point(centre, p, radius)
+    root = mq_sqrt(r2, big_ok=True)
+    if root is None:
+        raise ValueError("radial_point: |p - C| is a nested radical (|p - C|^2 has no square "
+                         "root in a multiquadratic field)")
+    return g.add(centre, g.scale(v, MQ.coerce(radius) / root))
 
 
 def path_end(path):

@@ -1,0 +1,454 @@
+"""The critical instants of a motion: where a fresh Look can change (spec section 4).
+
+A robot moves along one piece (segment or arc) while the others stand still.  What a
+fresh Look sees changes only where some relation between the mover and the others
+changes; each such relation is a polynomial in the piece's parameter ``f`` (``f`` as in
+``piece.at(f)``; on an arc the rational rotation's parameter, so a point at a rational
+``f`` stays in the field), and the instants are its roots (:mod:`.polyroots`).
+
+Families (each root carries a tag naming the family and the robots):
+
+* ``ray``      -- the mover crosses the line through C and another robot (angular
+  orders about C, the levels' polygons and their mirror lines change there);
+* ``distance`` -- its distance to C equals another robot's (the levels change; a
+  rotation or a reflection about C can swap the mover with that robot there);
+* ``pattern``  -- the mover is on the circle of a layer of the gathering pattern about C
+  (``|p - C| = 2L``) or touches another robot (the recognised pattern P, hence R, can
+  change there);
+* ``sec``      -- the SEC's support changes: the mover crosses the SEC of the others;
+  and, where it lies outside it (it is then a support), the others' hull robot ``q``
+  crosses the circle on the diameter mover-``a``, the mover crosses the circle through
+  three hull robots that encloses the others, a support triangle becomes right-angled
+  (at a hull robot, or at the mover: the circle on the diameter ``a b`` that encloses
+  the others).  The SEC of every robot (A1 = sec-all); with A1 = sec-r, also of R.
+* ``symmetry`` -- a symmetry can appear: the mover crosses a mirror line of the others
+  (through C -- of all the others, and of the rest of R -- and through their centroid),
+  passes through C, reaches the mirror image of one robot in a
+  mirror line of the remaining ones, or the centroid of all the robots meets the SEC's
+  centre (necessary for a rotation; with the mover a support of the SEC as well).
+
+The list is a superset: a candidate where nothing happens costs a Look, a missed one
+would be a missed check.  :func:`look_points` returns every root's exact point when the
+kernel holds it, and one rational point in each open stretch between consecutive roots
+(before the first, after the last; half way when there is none), strictly inside the
+piece: in a stretch no relation above changes sign, so its Look stands for the whole
+stretch with respect to them.  A root that needs a nested radical is seen on both sides
+only (``sided``; :func:`.polyroots.exact_root_hook` is where towers of quadratic
+extensions will plug in).  Not enumerated: relations that involve neither C, nor an SEC,
+a symmetry or a contact (the corrected variant's distance profiles, for example).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from flint import fmpq
+
+from ..exact.multiquadratic import MQ
+from . import geometry as g
+from .polyroots import (Root, padd, pmul, pscale, psub, roots_in_unit, separate, trim)
+
+ONE = MQ.rational(1)
+
+
+# -- a piece as a rational curve p(f) = N(f) / D(f) ------------------------------------
+@dataclass(frozen=True)
+class Motion:
+    nx: tuple
+    ny: tuple
+    d: tuple
+
+
+def motion_of(piece) -> Motion:
+    if isinstance(piece, g.Segment):
+        s, e = piece.start, piece.end
+        return Motion(trim((s[0], e[0] - s[0])), trim((s[1], e[1] - s[1])), (ONE,))
+    c = piece.centre
+    a = g.sub(piece.start, c)
+    b = g.sub(piece.end, c)
+    r2 = g.dot(a, a)
+    cos_t, sin_t = g.dot(a, b) / r2, g.cross(a, b) / r2
+    T = sin_t / (1 + cos_t)
+    T2 = T * T
+    # c (1 + T^2 f^2) + (1 - T^2 f^2) a + 2 T f J a,  J a = (-a_y, a_x)
+    nx = trim((c[0] + a[0], -2 * T * a[1], T2 * (c[0] - a[0])))
+    ny = trim((c[1] + a[1], 2 * T * a[0], T2 * (c[1] - a[1])))
+    return Motion(nx, ny, (ONE, MQ(), T2))
+
+
+def _rel(m: Motion, x):
+    """``(N - x D)``: D times the vector from ``x`` to the mover."""
+    return psub(m.nx, pscale(m.d, x[0])), psub(m.ny, pscale(m.d, x[1]))
+
+
+def dist2_poly(m: Motion, x, r2) -> tuple:
+    """``D^2 (|p - x|^2 - r2)``."""
+    u, v = _rel(m, x)
+    return psub(padd(pmul(u, u), pmul(v, v)), pscale(pmul(m.d, m.d), r2))
+
+
+def cross_poly(m: Motion, x, w) -> tuple:
+    """``D cross(p - x, w)``: zero where the mover is on the line through x along w."""
+    u, v = _rel(m, x)
+    return psub(pscale(u, w[1]), pscale(v, w[0]))
+
+
+def dot_poly(m: Motion, x, w) -> tuple:
+    u, v = _rel(m, x)
+    return padd(pscale(u, w[0]), pscale(v, w[1]))
+
+
+def point_param(piece, q):
+    """The parameter ``f`` in (0, 1) with ``piece.at(f) == q``, or None."""
+    if isinstance(piece, g.Segment):
+        d, v = g.sub(piece.end, piece.start), g.sub(q, piece.start)
+        if g.dot(d, d).is_zero() or not g.cross(d, v).is_zero():
+            return None
+        f = g.dot(d, v) / g.dot(d, d)
+    else:
+        a, v = g.sub(piece.start, piece.centre), g.sub(q, piece.centre)
+        if g.dot(a, a) != g.dot(v, v) or not piece.contains_direction(v):
+            return None
+        b = g.sub(piece.end, piece.centre)
+        r2 = g.dot(a, a)
+        T = (g.cross(a, b) / r2) / (1 + g.dot(a, b) / r2)
+        u = g.cross(a, v) / (r2 + g.dot(a, v))      # tan of half the angle a -> v
+        f = u / T
+    if f.sign() > 0 and (f - 1).sign() < 0:
+        return f
+    return None
+
+
+# -- static geometry of the others -----------------------------------------------------
+def hull_indices(pts: dict) -> list:
+    """Indices of the vertices of the convex hull of ``{index: point}`` (exact)."""
+    items = sorted(pts.items(), key=lambda kv: (float(kv[1][0]), float(kv[1][1]), kv[0]))
+    # the float key only orders the scan; ties and near-ties are settled below exactly
+    items = _exact_sort(items)
+
+    def turn(o, a, b):
+        return g.cross(g.sub(a, o), g.sub(b, o)).sign()
+
+    def chain(seq):
+        out = []
+        for k, p in seq:
+            while len(out) >= 2 and turn(out[-2][1], out[-1][1], p) <= 0:
+                out.pop()
+            out.append((k, p))
+        return out
+
+    lower, upper = chain(items), chain(items[::-1])
+    return sorted({k for k, _ in lower[:-1] + upper[:-1]} or {k for k, _ in items})
+
+
+def _exact_sort(items):
+    import functools
+
+    def cmp(x, y):
+        s = (x[1][0] - y[1][0]).sign() or (x[1][1] - y[1][1]).sign()
+        return s or (x[0] > y[0]) - (x[0] < y[0])
+    return sorted(items, key=functools.cmp_to_key(cmp))
+
+
+def _reflect(x, z, u):
+    v = g.sub(x, z)
+    k = g.dot(v, u) * 2 / g.dot(u, u)
+    return g.sub(g.add(z, g.scale(u, k)), v)
+
+
+def mirror_lines(pts, z) -> list:
+    """Directions ``u`` of the lines through ``z`` in which the point set ``pts`` is its
+    own mirror image (exact; every candidate line is tested on every point)."""
+    others = [p for p in pts if p != z]
+    if len(others) < 2:
+        return []
+    groups: dict = {}
+    for p in others:
+        groups.setdefault(g.dist2(p, z), []).append(p)
+    group = min(groups.values(), key=len)
+    y0 = group[0]
+    have = set(pts)
+    out: list = []
+    for y in group:
+        u = g.sub(y0, z) if y == y0 else g.sub(g.scale(g.add(y0, y), MQ.rational(fmpq(1, 2))), z)
+        if u[0].is_zero() and u[1].is_zero():
+            u = g.quarter(g.sub(y0, z), 1)
+        if any(g.cross(u, w).is_zero() for w in out):
+            continue
+        if all(_reflect(p, z, u) in have for p in pts):
+            out.append(u)
+    return out
+
+
+def _centroid(pts):
+    n = MQ.rational(len(pts))
+    return (sum((p[0] for p in pts), MQ()) / n, sum((p[1] for p in pts), MQ()) / n)
+
+
+# -- the families ------------------------------------------------------------------------
+def _sec_family(m: Motion, static: dict, tag: str, sec=None) -> list:
+    """``[(poly, description)]`` for the SEC of the static robots plus the mover
+    (``sec``: the static robots' SEC when the caller has it)."""
+    pts = list(static.values())
+    if len(pts) < 2:
+        return []
+    c0, r20 = sec or g.smallest_enclosing_circle(pts)
+    e0 = dist2_poly(m, c0, r20)
+    out = [(e0, f"{tag}: the mover crosses the SEC of the others")]
+    if not e0:
+        return out          # on that circle all along: the SEC does not change
+    # the mover is a support only where it is outside the others' SEC: ends or roots
+    ends = [sum(c for c in e0).sign(), e0[0].sign()]
+    if max(ends) <= 0 and not roots_in_unit(e0):
+        return out
+    hull = hull_indices(static)
+    H = [(k, static[k]) for k in hull]
+
+    def encloses(c, r2):
+        return all((g.dist2(c, p) - r2).sign() <= 0 for _, p in H)
+
+    for ia, (a_i, a) in enumerate(H):
+        for q_i, q in H:
+            if q_i != a_i:
+                out.append((dot_poly(m, q, g.sub(q, a)),
+                            f"{tag}: robot {q_i} on the circle on the diameter mover-{a_i}"))
+                out.append((dot_poly(m, a, g.sub(q, a)),
+                            f"{tag}: right angle at robot {a_i} (mover, {a_i}, {q_i})"))
+        for b_i, b in H[ia + 1:]:
+            mid = g.scale(g.add(a, b), MQ.rational(fmpq(1, 2)))
+            r2 = g.dist2(a, b) / 4
+            if encloses(mid, r2):
+                out.append((dist2_poly(m, mid, r2),
+                            f"{tag}: right angle at the mover (diameter {a_i}-{b_i})"))
+    for x in range(len(H)):
+        for y in range(x + 1, len(H)):
+            for z in range(y + 1, len(H)):
+                a, b, c = H[x][1], H[y][1], H[z][1]
+                if g.cross(g.sub(b, a), g.sub(c, a)).is_zero():
+                    continue
+                cc, r2 = g._circle3(a, b, c)
+                if encloses(cc, r2):
+                    out.append((dist2_poly(m, cc, r2), f"{tag}: the mover on the circle "
+                                f"through robots {H[x][0]}, {H[y][0]}, {H[z][0]}"))
+    return out
+
+
+def _mover_may_support(m: Motion, static: dict, centre, sec) -> bool:
+    """False when the mover stays inside the others' SEC or on its circle (it leaves it
+    at no instant) and C is that SEC's centre: the SEC of all is then that circle, every
+    symmetry of the robots fixes C, so it maps the mover to a robot as far from C (a
+    ``distance`` instant), or fixes it on a mirror line through C, or the mover is at C."""
+    if sec is None:
+        return True
+    c0, r20 = sec
+    if centre is None or c0 != centre:
+        return True
+    e0 = dist2_poly(m, c0, r20)
+    if not e0:
+        return False                       # on the others' SEC circle all along
+    return sum(e0, MQ()).sign() > 0 or e0[0].sign() > 0 or bool(roots_in_unit(e0))
+
+
+def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True, sec=None):
+    """``([(poly, description)], [(f, description)])``: lines the mover crosses and exact
+    parameters where it reaches a candidate point (``full``: also the families that the
+    ``distance`` instants cover when C is the SEC centre and the mover inside it)."""
+    polys, params = [], []
+    pts = list(static.values())
+    n = len(pts) + 1
+    if centre is not None:
+        for u in mirror_lines(pts, centre):
+            polys.append((cross_poly(m, centre, u), "symmetry: a mirror line of the others "
+                          "through C"))
+        polys.append((dist2_poly(m, centre, MQ()), "symmetry: the mover at C"))
+    if not full:
+        return polys, params
+    z = _centroid(pts)
+    for u in mirror_lines(pts, z):
+        polys.append((cross_poly(m, z, u), "symmetry: a mirror line of the others"))
+    total = (sum((p[0] for p in pts), MQ()), sum((p[1] for p in pts), MQ()))
+    for q_i, q in static.items():
+        rest = [p for k, p in static.items() if k != q_i]
+        zq = _centroid(rest)
+        for u in mirror_lines(rest, zq):
+            f = point_param(piece, _reflect(q, zq, u))
+            if f is not None:
+                params.append((f, f"symmetry: the mirror image of robot {q_i}"))
+    # rotations: the centroid of all meets the SEC centre
+    c0, _ = sec or g.smallest_enclosing_circle(pts)
+    cands = [(g.sub(g.scale(c0, MQ.rational(n)), total), "the others' SEC centre")]
+    hull = hull_indices(static)
+    for a_i in hull:
+        a = static[a_i]
+        # SEC on the diameter mover-a: (p + a)/2 = (total + p)/n
+        cands.append((g.scale(g.sub(g.scale(total, 2), g.scale(a, MQ.rational(n))),
+                              1 / MQ.rational(n - 2)), f"the SEC on the diameter mover-{a_i}"))
+    for p_star, what in cands:
+        f = point_param(piece, p_star)
+        if f is not None:
+            params.append((f, f"symmetry: the centroid meets the SEC centre ({what})"))
+    # SEC through the mover and hull robots a, b: the centroid equidistant from a, b, p
+    for x, a_i in enumerate(hull):
+        for b_i in hull[x + 1:]:
+            a, b = static[a_i], static[b_i]
+            # n D m = total D + N;  |m-a|^2 - |m-b|^2 = 2 m.(b-a) + |a|^2 - |b|^2
+            mx = padd(pscale(m.d, total[0]), m.nx)
+            my = padd(pscale(m.d, total[1]), m.ny)
+            ba = g.sub(b, a)
+            e1 = padd(pscale(padd(pscale(mx, ba[0]), pscale(my, ba[1])), 2),
+                      pscale(m.d, (g.dot(a, a) - g.dot(b, b)) * n))
+            # |m-a|^2 - |m-p|^2 with nD m, nD a, n N: (nDm - nDa)^2 - (nDm - nN)^2
+            ax, ay = pscale(m.d, a[0] * n), pscale(m.d, a[1] * n)
+            px, py = pscale(m.nx, MQ.rational(n)), pscale(m.ny, MQ.rational(n))
+            e2 = psub(padd(pmul(psub(mx, ax), psub(mx, ax)), pmul(psub(my, ay), psub(my, ay))),
+                      padd(pmul(psub(mx, px), psub(mx, px)), pmul(psub(my, py), psub(my, py))))
+            from .polyroots import pgcd
+            common = pgcd(e1, e2) if e1 and e2 else ()
+            if len(common) > 1:
+                polys.append((common, f"symmetry: the centroid meets the SEC centre (SEC "
+                              f"through the mover, {a_i} and {b_i})"))
+    return polys, params
+
+
+def _reach(piece, x) -> tuple:
+    """Floats ``(lo, hi)`` with ``lo <= |p - x| <= hi`` for every point p of the piece,
+    widened by a margin far above the floats' error (1e-6 relative, 1e-6 absolute): they
+    only choose which polynomials to build (a layer, a tie or a contact outside the range
+    has no root), never decide an instant."""
+    def f(v):
+        return float(v)
+    if isinstance(piece, g.Segment):
+        a, b = piece.start, piece.end
+        ax, ay, bx, by, qx, qy = (f(a[0]), f(a[1]), f(b[0]), f(b[1]), f(x[0]), f(x[1]))
+        dx, dy = bx - ax, by - ay
+        den = dx * dx + dy * dy
+        t = 0.0 if den == 0 else min(1.0, max(0.0, ((qx - ax) * dx + (qy - ay) * dy) / den))
+        lo = ((ax + t * dx - qx) ** 2 + (ay + t * dy - qy) ** 2) ** 0.5
+        hi = max(((ax - qx) ** 2 + (ay - qy) ** 2) ** 0.5, ((bx - qx) ** 2 + (by - qy) ** 2) ** 0.5)
+    else:
+        d = f(g.dist2(piece.centre, x)) ** 0.5
+        r = f(g.dist2(piece.start, piece.centre)) ** 0.5
+        lo, hi = abs(d - r), d + r
+    return lo * (1 - 1e-6) - 1e-6, hi * (1 + 1e-6) + 1e-6
+
+
+def _about(piece, m: Motion, centre, static: dict, name: str) -> list:
+    """The ``ray`` and ``distance`` polynomials about ``centre``."""
+    out = []
+    lo_c, hi_c = _reach(piece, centre)
+    for k, q in static.items():
+        w = g.sub(q, centre)
+        if w[0].is_zero() and w[1].is_zero():
+            continue
+        out.append((cross_poly(m, centre, w), ("ray", f"on the line through {name} and "
+                                                      f"robot {k}")))
+        dq = float(g.dot(w, w)) ** 0.5
+        if lo_c <= dq <= hi_c:
+            out.append((dist2_poly(m, centre, g.dot(w, w)),
+                        ("distance", f"as far from {name} as robot {k}")))
+    return out
+
+
+def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> list:
+    """Every critical instant strictly inside ``piece`` as separated :class:`Root`\\ s
+    (tags: ``(family, description)``)."""
+    m = motion_of(piece)
+    static = {k: r.pos for k, r in enumerate(world.robots) if k != mover}
+    sec = g.smallest_enclosing_circle(list(static.values())) if len(static) >= 2 else None
+    polys: list = []
+    params: list = []
+    if centre is not None:
+        polys += _about(piece, m, centre, static, "C")
+        lo_c, hi_c = _reach(piece, centre)
+        # the pattern: the mover on a layer's circle (|p - C| = 2L), or touching a robot;
+        # layer L holds a robot of P only when the inner layers are full: 1 + 3L(L - 1)
+        # robots at least (capacity of layer l >= 6l), so no larger L matters
+        n = len(world.robots)
+        top = max(L for L in range(1, n + 1) if 1 + 3 * L * (L - 1) < n) if n > 1 else 0
+        for L in range(max(1, int(lo_c / 2)), min(int(hi_c / 2) + 2, top + 1)):
+            if lo_c <= 2 * L <= hi_c:
+                polys.append((dist2_poly(m, centre, MQ.rational(4 * L * L)),
+                              ("pattern", f"on the circle of layer {L}")))
+    # the paper layer orders R about R's own SEC centre: when the pattern holds robots,
+    # R's SEC (its support changes) and the lines and ties about its centre too
+    rset = world.robots[mover].r_set
+    sub_r = {k: p for k, p in static.items() if k in rset}
+    if sec_r or (rset and len(sub_r) < len(static)):
+        for poly, what in _sec_family(m, sub_r, "SEC of R"):
+            polys.append((poly, ("sec", what)))
+        if len(sub_r) >= 2:
+            c_r = g.smallest_enclosing_circle(list(sub_r.values()))[0]
+            if centre is None or c_r != centre:
+                polys += _about(piece, m, c_r, sub_r, "the centre of R's SEC")
+    for k, q in static.items():
+        if _reach(piece, q)[0] <= 2:
+            polys.append((dist2_poly(m, q, MQ.rational(4)),
+                          ("pattern", f"touching robot {k}")))
+    for poly, what in _sec_family(m, static, "SEC of all", sec):
+        polys.append((poly, ("sec", what)))
+    sym_polys, sym_params = _symmetry_family(
+        piece, m, static, centre, full=_mover_may_support(m, static, centre, sec), sec=sec)
+    polys += [(p, ("symmetry", w)) for p, w in sym_polys]
+    # the paper decides on R (the robots outside the pattern) about C: mirror lines of
+    # the rest of R through C too, when the pattern holds robots
+    rset = world.robots[mover].r_set
+    rest_r = [p for k, p in static.items() if k in rset]
+    if centre is not None and rset and len(rest_r) < len(static):
+        for u in mirror_lines(rest_r, centre):
+            polys.append((cross_poly(m, centre, u), ("symmetry", "a mirror line of the rest "
+                                                     "of R through C")))
+    roots: list = []
+    for poly, tag in polys:
+        roots += roots_in_unit(poly, tag)
+    from .polyroots import _bracket
+    for f, what in sym_params:
+        roots.append(_bracket((), f, ("symmetry", what)))
+    roots = separate(roots)
+    for r in roots:                # side points strictly inside the piece
+        while r.lo == 0 or r.hi == 1:
+            r.refine()
+    return separate(roots)
+
+
+@dataclass(frozen=True)
+class LookPoint:
+    f: MQ
+    point: tuple
+    where: str
+    families: frozenset
+    exact: bool             # the instant itself (False: a point between two instants)
+
+
+def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
+    """``(points, sided)``: the :class:`LookPoint`\\ s to check, in order along the piece
+    -- one rational point in each open stretch between consecutive instants (the first
+    before the first instant, the last after the last) and each instant itself when the
+    kernel holds it -- and the number of instants checked only on both sides (nested
+    radicals)."""
+    roots = critical_roots(piece, world, mover, centre, sec_r)
+    if not roots:             # one stretch: the whole open piece
+        half = MQ.rational(fmpq(1, 2))
+        return [LookPoint(half, piece.at(half), "half way, no critical instant",
+                          frozenset(), False)], 0
+    out, sided = [], 0
+    for k, r in enumerate(roots):
+        fams = frozenset(t[0] for t in r.tags)
+        what = "; ".join(sorted({t[1] for t in r.tags}))
+        if k == 0:
+            lo = MQ.rational(r.lo)
+            out.append(LookPoint(lo, piece.at(lo), f"just before: {what}", fams, False))
+        if r.exact is not None:
+            out.append(LookPoint(r.exact, piece.at(r.exact), what, fams, True))
+        else:
+            sided += 1
+        # the stretch up to the next instant: its families change too at its end
+        nxt = roots[k + 1] if k + 1 < len(roots) else None
+        hi = MQ.rational(r.hi)
+        fams_after = fams | (frozenset(t[0] for t in nxt.tags) if nxt else frozenset())
+        out.append(LookPoint(hi, piece.at(hi), f"just after: {what}", fams_after, False))
+    return out, sided
+
+
+__all__ = ["Motion", "motion_of", "dist2_poly", "cross_poly", "dot_poly", "point_param",
+           "mirror_lines", "hull_indices", "critical_roots", "look_points", "LookPoint",
+           "Root"]

@@ -1,0 +1,369 @@
+"""Exact real roots in (0, 1) of small polynomials with multiquadratic coefficients.
+
+The "any instant" checks (:mod:`.instants`) reduce each event of a motion (two distances
+become equal, the SEC's support changes, a symmetry appears) to a root of a polynomial
+of degree at most 4 in the piece's parameter ``f`` (a segment is linear in ``f``; an arc
+is rational in ``f`` with the denominator ``1 + T^2 f^2``, cleared).  Its coefficients
+are :class:`~exactsym.exact.multiquadratic.MQ` elements.
+
+A root is a :class:`Root`: a rational isolating interval ``(lo, hi)`` holding exactly
+one root of its polynomial (Sturm sequences over the coefficient field, exact signs),
+and, when the kernel can hold it, its exact value (``exact``: a root of a linear
+factor, or a quadratic's root whose discriminant is a square in the multiquadratic
+field, found by :func:`mq_sqrt`).  A root that needs a nested radical (a quadratic's
+discriminant that is not a square there, or a cubic or quartic factor) has no exact
+value: :func:`exact_root_hook` is where towers of quadratic extensions will plug in.
+
+:func:`separate` refines a list of roots until their intervals are pairwise disjoint,
+merging roots that are equal (same exact value, or a common root of the two polynomials:
+their gcd vanishes inside the overlap).  No float decides anything.
+
+Polynomials are tuples of coefficients, lowest degree first.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from math import isqrt
+
+from flint import fmpq
+
+from ..exact.multiquadratic import MQ, _coprime_base, sqrt_rational
+
+ZERO = MQ()
+
+
+# -- polynomial arithmetic over MQ ---------------------------------------------------
+def trim(p) -> tuple:
+    p = list(p)
+    while p and p[-1].is_zero():
+        p.pop()
+    return tuple(p)
+
+
+def padd(p, q) -> tuple:
+    n = max(len(p), len(q))
+    return trim((p[i] if i < len(p) else ZERO) + (q[i] if i < len(q) else ZERO)
+                for i in range(n))
+
+
+def psub(p, q) -> tuple:
+    return padd(p, tuple(-c for c in q))
+
+
+def pmul(p, q) -> tuple:
+    if not p or not q:
+        return ()
+    out = [ZERO] * (len(p) + len(q) - 1)
+    for i, a in enumerate(p):
+        if a.is_zero():
+            continue
+        for j, b in enumerate(q):
+            out[i + j] = out[i + j] + a * b
+    return trim(out)
+
+
+def pscale(p, c) -> tuple:
+    return trim(a * c for a in p)
+
+
+def peval(p, x) -> MQ:
+    acc = ZERO
+    for c in reversed(p):
+        acc = acc * x + c
+    return acc
+
+
+def pderiv(p) -> tuple:
+    return trim(c * i for i, c in enumerate(p) if i > 0)
+
+
+def pdivmod(p, q) -> tuple:
+    """Quotient and remainder over the field (``q`` non-zero, trimmed)."""
+    p, q = list(trim(p)), trim(q)
+    lead_inv = 1 / q[-1]
+    quot = [ZERO] * max(len(p) - len(q) + 1, 0)
+    while len(p) >= len(q) and p:
+        k = len(p) - len(q)
+        c = p[-1] * lead_inv
+        quot[k] = c
+        for i, b in enumerate(q):
+            p[i + k] = p[i + k] - c * b
+        p = list(trim(p))
+    return trim(quot), tuple(p)
+
+
+def pgcd(p, q) -> tuple:
+    p, q = trim(p), trim(q)
+    while q:
+        p, q = q, pdivmod(p, q)[1]
+    return p
+
+
+def squarefree(p) -> tuple:
+    """``p`` divided by ``gcd(p, p')``: the same roots, each simple."""
+    g = pgcd(p, pderiv(p))
+    return p if len(g) <= 1 else pdivmod(p, g)[0]
+
+
+def sturm_chain(p) -> list:
+    chain = [trim(p), pderiv(p)]
+    while len(chain[-1]) > 1:
+        r = pdivmod(chain[-2], chain[-1])[1]
+        if not r:
+            break
+        chain.append(tuple(-c for c in r))
+    return [c for c in chain if c]
+
+
+def _variations(chain, x) -> int:
+    signs = [s for s in (peval(c, x).sign() for c in chain) if s != 0]
+    return sum(1 for a, b in zip(signs, signs[1:]) if a != b)
+
+
+# -- square roots in the multiquadratic field ------------------------------------------
+def mq_sqrt(x: MQ, _depth: int = 0, big_ok: bool = False):
+    """The non-negative square root of ``x >= 0`` when it lies in a multiquadratic field,
+    else None.  With ``b`` an element of a coprime base of ``x``'s radicands (every
+    radicand is a product of distinct base elements), ``x = A + B sqrt(b)`` with ``A``,
+    ``B`` free of ``b``; a root ``P + Q sqrt(b)`` has ``P^2 - b Q^2 = +-sqrt(A^2 - b B^2)``
+    and ``P^2 = (A + that) / 2``: square roots one level down, recursively, down to
+    rationals.  Every answer is verified by squaring, so a miss is a None, never a wrong
+    root.  A rational that is not a square and has more than :data:`RATIONAL_BITS` bits
+    is a miss (its square-free part needs a factorisation that can take minutes), except
+    ``x`` itself with ``big_ok`` (as :func:`sqrt_rational` always did)."""
+    if x.is_zero():
+        return MQ()
+    if x.sign() < 0 or _depth > 8:
+        return None
+    if x.is_rational():
+        return _sqrt_rational(x.to_fmpq(), big_ok)
+    b = max(_coprime_base(x.radicands()))
+    A = MQ({m: c for m, c in x.terms.items() if m % b})
+    B = MQ({m // b: c for m, c in x.terms.items() if m % b == 0})
+    n = mq_sqrt(A * A - B * B * b, _depth + 1)
+    if n is None:
+        return None
+    for half in ((A + n) / 2, (A - n) / 2):
+        P = mq_sqrt(half, _depth + 1) if half.sign() >= 0 else None
+        if P is None or P.is_zero():
+            continue
+        y = P + (B / (P * 2)) * MQ({b: fmpq(1)})        # b is square-free
+        if y * y == x:
+            return y if y.sign() >= 0 else -y
+    return None
+
+
+RATIONAL_BITS = 160
+
+
+def _sqrt_rational(q: fmpq, big_ok: bool):
+    if q < 0:
+        return None
+    num, den = int(q.p), int(q.q)
+    r = isqrt(num * den)
+    if r * r == num * den:
+        return MQ.rational(fmpq(r, den))
+    if not big_ok and (num * den).bit_length() > RATIONAL_BITS:
+        return None
+    return sqrt_rational(q)
+
+
+def exact_root_hook(poly, lo, hi):
+    """The exact value of the root of ``poly`` in ``(lo, hi)`` when it needs a nested
+    radical: None today (the multiquadratic kernel cannot hold it).  Towers of quadratic
+    extensions (exactsym.exact, in progress) plug in here; callers then check the
+    instant itself instead of only both sides of it."""
+    return None
+
+
+# -- roots ---------------------------------------------------------------------------
+@dataclass
+class Root:
+    """One real root in ``(lo, hi)`` (rationals, ``lo < hi``), of ``poly`` (square-free);
+    ``exact``: its value when the kernel holds it; ``tags``: what the root means (one
+    per polynomial merged into it)."""
+    poly: tuple
+    lo: fmpq
+    hi: fmpq
+    exact: MQ | None = None
+    tags: list = field(default_factory=list)
+
+    def _sign_at(self, x) -> int:
+        if self.exact is not None:
+            return (self.exact - x).sign()      # > 0: the root is right of x
+        return peval(self.poly, x).sign()
+
+    def refine(self) -> None:
+        """Halve the interval (exactly)."""
+        mid = (self.lo + self.hi) / 2
+        if self.exact is not None:
+            s = (self.exact - mid).sign()
+            if s == 0:                                    # the root is rational: pin it
+                w = (self.hi - self.lo) / 4
+                self.lo, self.hi = mid - w, mid + w
+            elif s > 0:
+                self.lo = mid
+            else:
+                self.hi = mid
+            return
+        s_lo, s_mid = peval(self.poly, self.lo).sign(), peval(self.poly, mid).sign()
+        if s_mid == 0:                       # a rational root (of a cubic or quartic)
+            self.exact = MQ.rational(mid)
+            w = (self.hi - self.lo) / 4
+            self.lo, self.hi = mid - w, mid + w
+            return
+        if s_lo * s_mid < 0:
+            self.hi = mid
+        else:
+            self.lo = mid
+
+
+def _linear_root(p):
+    return -p[0] / p[1]
+
+
+def roots_in_unit(poly, tag=None) -> list:
+    """The distinct real roots of ``poly`` strictly inside (0, 1), as :class:`Root`\\ s.
+    A polynomial that is identically zero has no isolated roots (the relation holds
+    along the whole piece): ``[]``."""
+    p = trim(poly)
+    if len(p) <= 1:
+        return []
+    out: list = []
+    if len(p) > 3:
+        p = squarefree(p)           # (a quadratic's double root: its discriminant is 0)
+    # exact roots first: linear polynomials, quadratics with a square discriminant
+    if len(p) == 2:
+        r = _linear_root(p)
+        if r.sign() > 0 and (r - 1).sign() < 0:
+            out.append(_bracket(p, r, tag))
+        return out
+    if len(p) == 3:
+        c, b, a = p
+        disc = b * b - a * c * 4
+        if disc.sign() < 0:
+            return []
+        root = mq_sqrt(disc)
+        if root is not None:
+            for r in {(-b - root) / (a * 2), (-b + root) / (a * 2)}:
+                if r.sign() > 0 and (r - 1).sign() < 0:
+                    out.append(_bracket(p, r, tag))
+            return out
+    # otherwise: Sturm isolation; a rational root met on the way is divided out
+    return _isolate(p, fmpq(0), fmpq(1), tag)
+
+
+def _bracket(p, r: MQ, tag) -> Root:
+    """A rational interval around the exact root ``r`` of ``p`` in (0, 1)."""
+    lo, hi = fmpq(0), fmpq(1)
+    root = Root(p, lo, hi, r, [tag] if tag is not None else [])
+    # a float guess, then exact checks (the float only proposes)
+    try:
+        x = float(r)
+        k = 1 << 20
+        guess_lo, guess_hi = fmpq(int(x * k) - 1, k), fmpq(int(x * k) + 2, k)
+        if (r - guess_lo).sign() > 0 and (r - guess_hi).sign() < 0:
+            root.lo, root.hi = max(guess_lo, lo), min(guess_hi, hi)
+    except (OverflowError, ValueError):
+        pass
+    return root
+
+
+def _isolate(p, lo, hi, tag) -> list:
+    """Roots of square-free ``p`` in the open interval (lo, hi), endpoints not roots
+    (a rational root found at an endpoint or a midpoint is divided out and kept exact)."""
+    out = []
+    for end in (lo, hi):
+        if peval(p, end).is_zero():
+            p = pdivmod(p, (MQ.rational(-end), MQ.rational(1)))[0]
+    chain = sturm_chain(p)
+    stack = [(lo, hi)]
+    while stack:
+        a, b = stack.pop()
+        n = _variations(chain, a) - _variations(chain, b)
+        if n == 0:
+            continue
+        if n == 1:
+            out.append(Root(p, a, b, _exact_in(p, a, b), [tag] if tag is not None else []))
+            continue
+        mid = (a + b) / 2
+        if peval(p, mid).is_zero():
+            out.append(_bracket(p, MQ.rational(mid), tag))
+            out[-1].lo, out[-1].hi = (a + mid) / 2, (mid + b) / 2
+            p = pdivmod(p, (MQ.rational(-mid), MQ.rational(1)))[0]
+            chain = sturm_chain(p)
+            stack.append((a, b))                 # the rest of this interval, again
+            # (mid is no longer a root of p; the recount sees the others)
+            continue
+        stack += [(a, mid), (mid, b)]
+    return out
+
+
+def _exact_in(p, a, b):
+    """The exact value of the one root of ``p`` in (a, b) when a linear or
+    square-discriminant quadratic factor holds it (a factor found by the gcd with
+    ``p``'s derivative cannot help: ``p`` is square-free), else the hook's answer."""
+    if len(p) == 2:
+        return _linear_root(p)
+    if len(p) == 3:
+        c, bb, aa = p
+        root = mq_sqrt(bb * bb - aa * c * 4)
+        if root is not None:
+            for r in ((-bb - root) / (aa * 2), (-bb + root) / (aa * 2)):
+                if (r - a).sign() > 0 and (r - b).sign() < 0:
+                    return r
+    return exact_root_hook(p, a, b)
+
+
+def _same_root(r: Root, s: Root) -> bool:
+    """Do two roots with overlapping intervals coincide?  Exactly: equal exact values; an
+    exact value that is a root of the other's polynomial inside its interval (which
+    holds one root only); or the gcd of the two polynomials has a root in the overlap."""
+    if r.exact is not None and s.exact is not None:
+        return r.exact == s.exact
+    if r.exact is not None or s.exact is not None:
+        e, o = (r, s) if r.exact is not None else (s, r)
+        return ((e.exact - o.lo).sign() > 0 and (e.exact - o.hi).sign() < 0
+                and peval(o.poly, e.exact).is_zero())
+    g = pgcd(r.poly, s.poly)
+    if len(g) <= 1:
+        return False
+    lo, hi = max(r.lo, s.lo), min(r.hi, s.hi)
+    if lo >= hi:
+        return False
+    if peval(g, lo).is_zero() or peval(g, hi).is_zero():
+        # the overlap's end is a rational root of both: then it is the one root of each
+        return True
+    chain = sturm_chain(squarefree(g))
+    return _variations(chain, lo) - _variations(chain, hi) > 0
+
+
+def separate(roots: list, max_rounds: int = 400) -> list:
+    """Merge equal roots and refine the others until the closed intervals are pairwise
+    disjoint; sorted by position."""
+    roots = list(roots)
+    for _ in range(max_rounds):
+        roots.sort(key=lambda r: (r.lo, r.hi))
+        clash = None
+        for a, b in zip(roots, roots[1:]):
+            if b.lo <= a.hi:
+                clash = (a, b)
+                break
+        if clash is None:
+            return roots
+        a, b = clash
+        if (a.hi - a.lo) < fmpq(1, 1 << 24) and (b.hi - b.lo) < fmpq(1, 1 << 24) \
+                and _same_root(a, b):
+            keep = a if a.exact is not None or b.exact is None else b
+            other = b if keep is a else a
+            keep.tags += other.tags
+            keep.lo, keep.hi = max(a.lo, b.lo), min(a.hi, b.hi)
+            if keep.lo >= keep.hi:      # touching at one rational end: that is the root
+                keep.lo, keep.hi = keep.lo - (a.hi - a.lo), keep.hi + (b.hi - b.lo)
+            roots.remove(other)
+            continue
+        a.refine()
+        b.refine()
+    raise ArithmeticError("root separation did not finish")
