@@ -280,3 +280,164 @@ def smallest_enclosing_circle(points) -> tuple:
                 if not inside(circ, pts[k]):
                     circ = _circle3(pts[i], pts[j], pts[k])
     return circ
+
+
+# -- two discs moving at once (simultaneous motion, I1 in continuous time) -------------
+# A piece traversed over the common time tau in [0, 1] is a rational curve
+# (X(tau), Y(tau)) / W(tau) with multiquadratic coefficients: a segment linearly
+# (W = 1); an arc by the rational rotation of half-angle tangent k*tau, k the tangent of
+# the whole arc's half angle (what ``Arc.at`` does), W = 1 + k^2 tau^2.  Polynomials are
+# coefficient lists, lowest degree first.
+
+def _padd(p, q):
+    n = max(len(p), len(q))
+    return [(p[i] if i < len(p) else ZERO) + (q[i] if i < len(q) else ZERO) for i in range(n)]
+
+
+def _pmul(p, q):
+    out = [ZERO] * (len(p) + len(q) - 1)
+    for i, a in enumerate(p):
+        if a.is_zero():
+            continue
+        for j, b in enumerate(q):
+            out[i + j] = out[i + j] + a * b
+    return out
+
+
+def _pscale(p, s):
+    return [a * s for a in p]
+
+
+def _peval(p, t):
+    acc = ZERO
+    for a in reversed(p):
+        acc = acc * t + a
+    return acc
+
+
+def _trim(p):
+    p = list(p)
+    while p and p[-1].is_zero():
+        p.pop()
+    return p
+
+
+def piece_motion(piece):
+    """``(X, Y, W)``: the piece as a rational curve of the common time ``tau`` in
+    [0, 1] (the point at ``tau`` is ``piece.at(tau)``)."""
+    if isinstance(piece, Segment):
+        d = sub(piece.end, piece.start)
+        return [piece.start[0], d[0]], [piece.start[1], d[1]], [ONE]
+    a, b = sub(piece.start, piece.centre), sub(piece.end, piece.centre)
+    r2 = dot(a, a)
+    cos_t, sin_t = dot(a, b) / r2, cross(a, b) / r2
+    k = sin_t / (1 + cos_t)
+    k2 = k * k
+    c = piece.centre
+    w = [ONE, ZERO, k2]
+    x = [c[0] + a[0], -(a[1] * k) * 2, (c[0] - a[0]) * k2]
+    y = [c[1] + a[1], (a[0] * k) * 2, (c[1] - a[1]) * k2]
+    return x, y, w
+
+
+def joint_gap_polynomial(piece1, piece2, d2=4):
+    """``f(tau) = |P1 - P2|^2 W1^2 W2^2 - d2 W1^2 W2^2``: negative exactly at the
+    instants where the two moving centres are closer than ``sqrt(d2)``."""
+    x1, y1, w1 = piece_motion(piece1)
+    x2, y2, w2 = piece_motion(piece2)
+    dx = _padd(_pmul(x1, w2), _pscale(_pmul(x2, w1), -ONE))
+    dy = _padd(_pmul(y1, w2), _pscale(_pmul(y2, w1), -ONE))
+    ww = _pmul(w1, w2)
+    return _trim(_padd(_padd(_pmul(dx, dx), _pmul(dy, dy)), _pscale(_pmul(ww, ww), -mq(d2))))
+
+
+def _rational_norm(f):
+    """The product of the Galois conjugates of ``f``: rational coefficients, and every
+    real root of ``f`` is one of its roots."""
+    from ..exact.multiquadratic import _coprime_base
+    rads = sorted({m for a in f for m in a.radicands()})
+    for b in _coprime_base(rads):
+        f = _trim(_pmul(f, [a.conjugate(b) for a in f]))
+    return [a.to_fmpq() for a in f]
+
+
+def _dyadic(x):
+    from flint import fmpq
+    man, exp = x.man_exp()
+    return fmpq(man) * fmpq(2) ** int(exp) if exp >= 0 else fmpq(man, 2 ** int(-exp))
+
+
+def _simplest_between(lo, hi):
+    """The rational with the smallest denominator strictly between ``lo < hi``
+    (continued fractions): short witnesses."""
+    from fractions import Fraction
+    from flint import fmpq
+
+    def inner(a, b):
+        fl = a.numerator // a.denominator
+        if fl + 1 < b:
+            return Fraction(fl + 1)
+        if a == fl:
+            return fl + Fraction(1, int(1 / (b - fl)) + 1)
+        return fl + 1 / inner(1 / (b - fl), 1 / (a - fl))
+    x = inner(Fraction(int(lo.p), int(lo.q)), Fraction(int(hi.p), int(hi.q)))
+    return fmpq(x.numerator, x.denominator)
+
+
+def negative_instant(f):
+    """A rational ``tau`` in [0, 1] with ``f(tau) < 0``, or None when ``f >= 0`` on
+    all of [0, 1].  Exact: the real roots of ``f`` lie among those of its rational norm,
+    isolated by certified balls (python-flint's ``complex_roots``: real roots come with
+    an exactly zero imaginary part); between two consecutive roots ``f`` keeps its sign,
+    so one rational sample per gap, evaluated exactly, decides."""
+    from flint import fmpq, fmpq_poly
+    f = _trim(f)
+    if not f:
+        return None                                   # f = 0: touching all along
+    samples = [fmpq(0), fmpq(1)]
+    if len(f) > 1:
+        norm = fmpq_poly(_rational_norm(f))
+        bounds = [(fmpq(0), fmpq(0))]
+        for root, _mult in norm.numer().complex_roots():
+            if not (root.imag.is_exact() and root.imag == 0):
+                continue
+            lo, hi = _dyadic(root.real.lower()), _dyadic(root.real.upper())
+            if hi > 0 and lo < 1:
+                bounds.append((lo, hi))
+        bounds.append((fmpq(1), fmpq(1)))
+        bounds.sort()
+        for (_, left), (right, _) in zip(bounds, bounds[1:]):
+            if left < right:
+                samples.append(_simplest_between(left, right))
+    for t in samples:
+        if 0 <= t <= 1 and _peval(f, MQ.rational(t)).sign() < 0:
+            return t
+    return None
+
+
+def _piece_disc(piece):
+    """A disc holding the piece: the one on its chord as diameter (a segment; an arc of
+    at most a half turn sees its chord at an angle of at least 90 degrees)."""
+    m = ((piece.start[0] + piece.end[0]) / 2, (piece.start[1] + piece.end[1]) / 2)
+    return m, dist2(piece.start, piece.end) / 4
+
+
+def _far_apart(piece1, piece2, d2) -> bool:
+    """A filter: the two pieces' discs are certainly more than ``sqrt(d2)`` apart
+    (Arb balls; False when they cannot tell, and the exact test runs)."""
+    (m1, h1), (m2, h2) = _piece_disc(piece1), _piece_disc(piece2)
+    gap = dist2(m1, m2).to_arb().sqrt() - h1.to_arb().sqrt() - h2.to_arb().sqrt()
+    return bool(gap * gap > mq(d2).to_arb()) and bool(gap > 0)
+
+
+def joint_motion_overlap(piece1, piece2, d2=4):
+    """Two discs move at once over the common time [0, 1], along ``piece1`` and
+    ``piece2`` (segments or arcs, each at its own speed): a rational instant at which
+    their centres are closer than ``sqrt(d2)``, or None if there is none.  Exact."""
+    if _far_apart(piece1, piece2, d2):
+        return None
+    if isinstance(piece1, Segment) and isinstance(piece2, Segment):
+        d0, d1 = sub(piece1.start, piece2.start), sub(piece1.end, piece2.end)
+        if not segment_min_dist2_less(d0, d1, (ZERO, ZERO), mq(d2)):
+            return None
+    return negative_instant(joint_gap_polynomial(piece1, piece2, d2))
