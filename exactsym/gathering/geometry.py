@@ -409,7 +409,7 @@ def negative_instant(f):
         for (_, left), (right, _) in zip(bounds, bounds[1:]):
             if left < right:
                 samples.append(_simplest_between(left, right))
-    for t in samples:
+    for t in sorted(samples):
         if 0 <= t <= 1 and _peval(f, MQ.rational(t)).sign() < 0:
             return t
     return None

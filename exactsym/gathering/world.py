@@ -236,12 +236,12 @@ class World:
                         MQ.rational(self.delta) ** 2).sign() < 0:
                 raise ValueError(f"robot {i} cannot be stopped before delta")
             done[i] = (done[i], [] if end else new)
-        if self.checker is not None and "I1" in self.checker.enabled:
-            self._joint_collision({i: d for i, (d, _) in done.items()})
         for i, (piece, rest) in done.items():
             rob = self.robots[i]
             rob.pos, rob.path = piece.final, rest
             self.log.append(Step(self.events, i, "advance", (piece,)))
+        if self.checker is not None and "I1" in self.checker.enabled:
+            self._joint_collision({i: d for i, (d, _) in done.items()})
         if self.checker is not None:
             # the other invariants at the interval's end, a real instant: a zero-length
             # piece there (each mover's own piece would be checked against the others'
