@@ -385,7 +385,8 @@ def _simplest_between(lo, hi):
 
 
 def negative_instant(f):
-    """A rational ``tau`` in [0, 1] with ``f(tau) < 0``, or None when ``f >= 0`` on
+    """A rational ``tau`` in [0, 1] (a ``Fraction``, the earliest sample) with
+    ``f(tau) < 0``, or None when ``f >= 0`` on
     all of [0, 1].  Exact: the real roots of ``f`` lie among those of its rational norm,
     isolated by certified balls (python-flint's ``complex_roots``: real roots come with
     an exactly zero imaginary part); between two consecutive roots ``f`` keeps its sign,
@@ -411,7 +412,8 @@ def negative_instant(f):
                 samples.append(_simplest_between(left, right))
     for t in sorted(samples):
         if 0 <= t <= 1 and _peval(f, MQ.rational(t)).sign() < 0:
-            return t
+            from fractions import Fraction
+            return Fraction(int(t.p), int(t.q))
     return None
 
 
