@@ -209,6 +209,8 @@ def arc_min_dist2_less(arc: Arc, q, d2) -> bool:
 
 def piece_hits(piece, q, d2=4) -> bool:
     d2 = mq(d2)
+    if _certainly_far(piece, q, d2):
+        return False
     if isinstance(piece, Segment):
         return segment_min_dist2_less(piece.start, piece.end, q, d2)
     return arc_min_dist2_less(piece, q, d2)
@@ -443,3 +445,93 @@ def joint_motion_overlap(piece1, piece2, d2=4):
         if not segment_min_dist2_less(d0, d1, (ZERO, ZERO), mq(d2)):
             return None
     return negative_instant(joint_gap_polynomial(piece1, piece2, d2))
+
+
+# -- certified float filters over all robots at once (NumPy) ---------------------------
+# A coordinate c_1 sqrt(m_1) + ... + c_k sqrt(m_k) evaluated in doubles is within
+# (k + 6) 2^-52 S of its value, S the sum of the terms' magnitudes (the bound of
+# ``multiquadratic._float_sign``).  The filters below only ever say "certainly not":
+# their slack is that bound doubled plus 10^-12 of every magnitude involved (each
+# further double operation errs by 2^-53 relatively, a few of them per test); NaN or
+# infinity (overflow) compares False and sends the pair to the exact test.
+
+def _approx(x):
+    vals = [float(c) * float(m) ** 0.5 for m, c in x.terms.items()]
+    s = sum(abs(v) for v in vals)
+    return sum(vals), 2 * (len(vals) + 6) * 2.0 ** -52 * s
+
+
+def approx_points(pts):
+    """``(X, Y, E)``: NumPy arrays of the centres' doubles and a bound on the error of
+    each coordinate."""
+    import numpy as np
+    xs, ys, es = [], [], []
+    for p in pts:
+        try:
+            (x, ex), (y, ey) = _approx(p[0]), _approx(p[1])
+        except OverflowError:
+            x = y = ex = ey = float("nan")
+        xs.append(x)
+        ys.append(y)
+        es.append(max(ex, ey))
+    return np.array(xs), np.array(ys), np.array(es)
+
+
+def touching_pairs(pts, unit) -> list:
+    """The pairs ``(i, j)``, ``i < j``, of centres exactly ``2 unit`` apart: the pairs the
+    doubles cannot separate from ``4 unit^2`` are decided exactly."""
+    import numpy as np
+    X, Y, E = approx_points(pts)
+    four = 4.0 * float(unit) ** 2
+    dx, dy = X[:, None] - X[None, :], Y[:, None] - Y[None, :]
+    d2 = dx * dx + dy * dy
+    err = E[:, None] + E[None, :]
+    err = err + 1e-15 * (np.abs(dx) + np.abs(dy))
+    slack = 2 * (2 * err * (np.abs(dx) + np.abs(dy)) + 2 * err * err) + \
+        1e-12 * (d2 + four) + 1e-300
+    maybe = ~(np.abs(d2 - four) > slack)
+    four_exact = 4 * unit * unit
+    out = []
+    for i, j in zip(*np.nonzero(np.triu(maybe, 1))):
+        if dist2(pts[i], pts[j]) == four_exact:
+            out.append((int(i), int(j)))
+    return out
+
+
+def robots_near_piece(piece, approx, d) -> list:
+    """Indices of the robots that may come within ``d`` (a rational) of ``piece``: every
+    robot left out is certainly farther than ``d`` from every point of it (the piece lies
+    in the disc on its chord as diameter, see ``_piece_disc``)."""
+    import numpy as np
+    X, Y, E = approx
+    (sx, es), (sy, fs) = _approx(piece.start[0]), _approx(piece.start[1])
+    (tx, et), (ty, ft) = _approx(piece.end[0]), _approx(piece.end[1])
+    mx, my = (sx + tx) / 2, (sy + ty) / 2
+    h = ((sx - tx) ** 2 + (sy - ty) ** 2) ** 0.5 / 2
+    dist = np.hypot(X - mx, Y - my)
+    e_piece = 2 * (es + fs + et + ft)
+    slack = 2 * (2 * E + e_piece) + 1e-12 * (dist + h + float(d) + abs(mx) + abs(my) +
+                                            np.abs(X) + np.abs(Y)) + 1e-300
+    far = dist - h - float(d) > slack
+    return [int(k) for k in np.nonzero(~far)[0]]
+
+
+def _certainly_far(piece, q, d2) -> bool:
+    """A filter for :func:`piece_hits`: ``q`` is certainly farther than ``sqrt(d2)`` from
+    the disc holding the piece (``_piece_disc``), by doubles with the error bound of
+    :func:`_approx` (doubled, plus 10^-12 of every magnitude for the few further double
+    operations); False when the doubles cannot tell (or overflow)."""
+    try:
+        (sx, es), (sy, fs) = _approx(piece.start[0]), _approx(piece.start[1])
+        (tx, et), (ty, ft) = _approx(piece.end[0]), _approx(piece.end[1])
+        (qx, eq), (qy, gq) = _approx(q[0]), _approx(q[1])
+        (r2, er) = _approx(d2)
+    except OverflowError:
+        return False
+    mx, my = (sx + tx) / 2, (sy + ty) / 2
+    h = ((sx - tx) ** 2 + (sy - ty) ** 2) ** 0.5 / 2
+    dist = ((qx - mx) ** 2 + (qy - my) ** 2) ** 0.5
+    r = max(r2 + er, 0.0) ** 0.5
+    slack = 2 * (2 * (eq + gq) + 2 * (es + fs + et + ft)) + \
+        1e-12 * (dist + h + r + abs(mx) + abs(my) + abs(qx) + abs(qy)) + 1e-300
+    return dist - h - r > slack
