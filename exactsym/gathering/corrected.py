@@ -83,10 +83,11 @@ def _pattern_sizes(pts, readings, unit):
     not full) has a pattern of at most 1 + d robots; it is recognised only when that
     bound reaches the largest size found among the robots touching 6 (so the result is
     that of recognising every robot); a robot touching nobody has only itself about it.
-    Touching pairs: a certified float filter, exact tests for the pairs it cannot
-    separate (:func:`.geometry.touching_pairs`)."""
+    The degrees counted are of the pairs a certified float filter cannot separate from
+    touching (:func:`.geometry.maybe_touching_pairs`): a superset, so the bounds hold,
+    and :func:`.pattern.recognise` decides exactly."""
     degree = [0] * len(pts)
-    for i, j in g.touching_pairs(pts, unit):
+    for i, j in g.maybe_touching_pairs(pts, unit):
         degree[i] += 1
         degree[j] += 1
     pats = {}
@@ -103,8 +104,12 @@ def _pattern_sizes(pts, readings, unit):
     return best, {k: p for k, p in pats.items() if len(p.robots) == best}
 
 
-def _far2(pts, k_pos, others):
-    """Largest squared distance from ``k_pos`` to the robots ``others`` (None if empty)."""
+def _far2(pts, k_pos, others, approx=None):
+    """Largest squared distance from ``k_pos`` to the robots ``others`` (None if empty);
+    ``approx`` (:func:`.geometry.approx_points`): only the robots a certified filter
+    cannot rule out are compared exactly."""
+    if approx is not None:
+        others = g.farthest_candidates(approx, k_pos, others)
     best = None
     for j in others:
         d = g.dist2(pts[j], k_pos)
@@ -113,7 +118,7 @@ def _far2(pts, k_pos, others):
     return best
 
 
-def choose_centre(pts, readings: Readings, unit):
+def choose_centre(pts, readings: Readings, unit, approx=None):
     """``(C, pattern, candidates, detail)``; C None when the rule is ambiguous.
     ``candidates``: the robots whose patterns tie for the largest (M >= 2)."""
     M, sizes = _pattern_sizes(pts, readings, unit)
@@ -126,7 +131,7 @@ def choose_centre(pts, readings: Readings, unit):
         pat = sizes[k]
         members = pat.robots                 # a property: a new set at each call
         outside = [j for j in range(len(pts)) if j not in members]
-        scored.append((k, _far2(pts, pts[k], outside)))
+        scored.append((k, _far2(pts, pts[k], outside, approx)))
     if any(f is None for _, f in scored):               # a complete pattern
         k = next(k for k, f in scored if f is None)
         return pts[k], sizes[k], tuple(cands), "C: the complete pattern's centre"
@@ -156,12 +161,12 @@ def _free(pieces, pts, mover, unit2, approx=None) -> bool:
     return True
 
 
-def _keeps_centre(pieces, pts, mover, centre, cands, R, pat) -> bool:
+def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> bool:
     """C cannot change while ``mover`` follows ``pieces``, nor at its arrival (point 3
     of the module docstring).  ``cands`` empty (M = 1): the SEC must not need the
     mover."""
     stay = [j for j in R if j != mover]
-    fc = _far2(pts, centre, R)                        # f(C) now: never grows (radii fall)
+    fc = _far2(pts, centre, R, approx)                # f(C) now: never grows (radii fall)
     if not cands:
         others = [pts[j] for j in range(len(pts)) if j != mover]
         c2 = g.smallest_enclosing_circle(others)
@@ -174,7 +179,7 @@ def _keeps_centre(pieces, pts, mover, centre, cands, R, pat) -> bool:
     if not others and not small:
         return True
     for k, where in [(k, pts[k]) for k in others] + ([(None, target)] if small else []):
-        fk = _far2(pts, where, stay)
+        fk = _far2(pts, where, stay, approx)
         if fk is not None and (fk - fc).sign() > 0:
             continue
         if stay or k is None:
@@ -377,7 +382,8 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
     """The corrected algorithm's decision on one snapshot (see the module docstring)."""
     pts = list(snapshot)
     unit2 = unit * unit
-    centre, pat, cands, detail = choose_centre(pts, readings, unit)
+    approx = g.approx_points(pts)
+    centre, pat, cands, detail = choose_centre(pts, readings, unit, approx)
     if centre is None:
         sec, _ = g.smallest_enclosing_circle(pts)
         return Decision("stay", (), sec, recognise(pts, sec, readings.lone, unit), None, detail)
@@ -386,7 +392,6 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
     if not R:
         return Decision("terminated", (), centre, pat, None, "R is empty")
     d = {i: g.dist2(pts[i], centre) for i in R}
-    approx = g.approx_points(pts)
     if pat.centre_robot is None:
         clear = _clear_centre(pts, centre, R, d, unit, cands, pat, approx)
         if clear is not None:
@@ -456,7 +461,7 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx):
         return Decision("undecided", (), centre, pat, None, str(err))
     path = [g.Segment(pts[j], target)]
     if _free(path, pts, j, unit2, approx) and \
-            _keeps_centre(path, pts, j, centre, cands, R, pat):
+            _keeps_centre(path, pts, j, centre, cands, R, pat, approx):
         return Decision("move", (Move(j, tuple(path), "clear"),), centre, pat, None,
                         f"corrected: robot {j} clears C (robots {close} within 2 of it)")
     return Decision("stay", (), centre, pat, None,
@@ -480,7 +485,7 @@ def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx):
         if not path or (tied_start and isinstance(path[0], g.Arc)):
             continue                    # tied at the Look: the first piece must go in (I4)
         if _free(path, pts, i, unit2, approx) and \
-                _keeps_centre(path, pts, i, centre, cands, R, pat):
+                _keeps_centre(path, pts, i, centre, cands, R, pat, approx):
             return tuple(path)
     return None
 

@@ -477,9 +477,9 @@ def approx_points(pts):
     return np.array(xs), np.array(ys), np.array(es)
 
 
-def touching_pairs(pts, unit) -> list:
-    """The pairs ``(i, j)``, ``i < j``, of centres exactly ``2 unit`` apart: the pairs the
-    doubles cannot separate from ``4 unit^2`` are decided exactly."""
+def maybe_touching_pairs(pts, unit) -> list:
+    """A superset of the pairs ``(i, j)``, ``i < j``, of centres exactly ``2 unit``
+    apart: the pairs the doubles cannot separate from ``4 unit^2``."""
     import numpy as np
     X, Y, E = approx_points(pts)
     four = 4.0 * float(unit) ** 2
@@ -490,48 +490,109 @@ def touching_pairs(pts, unit) -> list:
     slack = 2 * (2 * err * (np.abs(dx) + np.abs(dy)) + 2 * err * err) + \
         1e-12 * (d2 + four) + 1e-300
     maybe = ~(np.abs(d2 - four) > slack)
-    four_exact = 4 * unit * unit
-    out = []
-    for i, j in zip(*np.nonzero(np.triu(maybe, 1))):
-        if dist2(pts[i], pts[j]) == four_exact:
-            out.append((int(i), int(j)))
-    return out
+    return [(int(i), int(j)) for i, j in zip(*np.nonzero(np.triu(maybe, 1)))]
+
+
+def touching_pairs(pts, unit) -> list:
+    """The pairs ``(i, j)``, ``i < j``, of centres exactly ``2 unit`` apart: the
+    doubles' candidates (:func:`maybe_touching_pairs`), decided exactly."""
+    four = 4 * unit * unit
+    return [(i, j) for i, j in maybe_touching_pairs(pts, unit)
+            if dist2(pts[i], pts[j]) == four]
+
+
+def farthest_candidates(approx, centre, among) -> list:
+    """The robots of ``among`` that may be the farthest from ``centre`` (a point): every
+    robot left out is certainly nearer than one kept (the doubles' error bounds)."""
+    import numpy as np
+    X, Y, E = approx
+    idx = np.array(list(among), dtype=int)
+    if len(idx) == 0:
+        return []
+    try:
+        (cx, ex), (cy, ey) = _approx(centre[0]), _approx(centre[1])
+    except OverflowError:
+        return list(among)
+    d = np.hypot(X[idx] - cx, Y[idx] - cy)
+    slack = 2 * (2 * E[idx] + ex + ey) + 1e-12 * (d + abs(cx) + abs(cy) + np.abs(X[idx]) +
+                                                  np.abs(Y[idx])) + 1e-300
+    lower, upper = d - slack, d + slack
+    best = np.max(lower)
+    keep = ~(upper < best)          # NaN: kept
+    return [int(k) for k in idx[keep]]
 
 
 def robots_near_piece(piece, approx, d) -> list:
-    """Indices of the robots that may come within ``d`` (a rational) of ``piece``: every
-    robot left out is certainly farther than ``d`` from every point of it (the piece lies
-    in the disc on its chord as diameter, see ``_piece_disc``)."""
+    """Indices of the robots that may come within ``d`` (a float) of ``piece``: every
+    robot left out is certainly farther than ``d`` from every point of it, by the lower
+    bound of :func:`_piece_lower_bound` computed for all robots at once."""
     import numpy as np
     X, Y, E = approx
-    (sx, es), (sy, fs) = _approx(piece.start[0]), _approx(piece.start[1])
-    (tx, et), (ty, ft) = _approx(piece.end[0]), _approx(piece.end[1])
-    mx, my = (sx + tx) / 2, (sy + ty) / 2
-    h = ((sx - tx) ** 2 + (sy - ty) ** 2) ** 0.5 / 2
-    dist = np.hypot(X - mx, Y - my)
-    e_piece = 2 * (es + fs + et + ft)
-    slack = 2 * (2 * E + e_piece) + 1e-12 * (dist + h + float(d) + abs(mx) + abs(my) +
-                                            np.abs(X) + np.abs(Y)) + 1e-300
-    far = dist - h - float(d) > slack
+    try:
+        geo = _piece_frame(piece)
+    except OverflowError:
+        return list(range(len(X)))
+    far = _piece_lower_bound(geo, X, Y, E, np) > d
     return [int(k) for k in np.nonzero(~far)[0]]
 
 
-def _certainly_far(piece, q, d2) -> bool:
-    """A filter for :func:`piece_hits`: ``q`` is certainly farther than ``sqrt(d2)`` from
-    the disc holding the piece (``_piece_disc``), by doubles with the error bound of
-    :func:`_approx` (doubled, plus 10^-12 of every magnitude for the few further double
-    operations); False when the doubles cannot tell (or overflow)."""
-    try:
-        (sx, es), (sy, fs) = _approx(piece.start[0]), _approx(piece.start[1])
-        (tx, et), (ty, ft) = _approx(piece.end[0]), _approx(piece.end[1])
-        (qx, eq), (qy, gq) = _approx(q[0]), _approx(q[1])
-        (r2, er) = _approx(d2)
-    except OverflowError:
-        return False
+def _piece_frame(piece):
+    """Doubles describing a piece for the filters, with the error bound ``sigma`` of
+    its points' coordinates: ``(kind, mx, my, h, ux, uy, cx, cy, r, sigma)``."""
+    (sx, es), (sy, fs) = _approx(piece.start[0]), _approx(piece.start[1])
+    (tx, et), (ty, ft) = _approx(piece.end[0]), _approx(piece.end[1])
+    sigma = es + fs + et + ft
     mx, my = (sx + tx) / 2, (sy + ty) / 2
     h = ((sx - tx) ** 2 + (sy - ty) ** 2) ** 0.5 / 2
-    dist = ((qx - mx) ** 2 + (qy - my) ** 2) ** 0.5
-    r = max(r2 + er, 0.0) ** 0.5
-    slack = 2 * (2 * (eq + gq) + 2 * (es + fs + et + ft)) + \
-        1e-12 * (dist + h + r + abs(mx) + abs(my) + abs(qx) + abs(qy)) + 1e-300
-    return dist - h - r > slack
+    if isinstance(piece, Segment):
+        ux, uy = ((tx - sx) / (2 * h), (ty - sy) / (2 * h)) if h > 1e-6 else (0.0, 0.0)
+        return ("segment", mx, my, h, ux, uy, 0.0, 0.0, 0.0, sigma)
+    (cx, ec), (cy, fc) = _approx(piece.centre[0]), _approx(piece.centre[1])
+    r = ((sx - cx) ** 2 + (sy - cy) ** 2) ** 0.5
+    return ("arc", mx, my, h, 0.0, 0.0, cx, cy, r, sigma + ec + fc)
+
+
+def _piece_lower_bound(geo, qx, qy, eq, lib):
+    """A lower bound on the distance from the point(s) ``(qx, qy)`` (coordinate error
+    ``eq``) to the piece: the largest of the distance to the disc on the chord as
+    diameter (the piece lies in it), for a segment the distance to it through its
+    direction (exact for an exact direction), for an arc the distance to its circle;
+    minus a slack covering the errors of every double involved (twice the coordinate
+    bounds, 10^-9 of every magnitude: the direction's normalisation and a few
+    roundings err far less).  ``lib``: :mod:`math` or NumPy."""
+    kind, mx, my, h, ux, uy, cx, cy, r, sigma = geo
+    dx, dy = qx - mx, qy - my
+    dist = lib.hypot(dx, dy)
+    disc = dist - h
+    turn = 0.0
+    if kind == "segment":
+        if ux == 0.0 and uy == 0.0:
+            best = disc
+        else:
+            along = abs(dx * ux + dy * uy) - h
+            perp = dx * uy - dy * ux
+            pos = (along + abs(along)) / 2                  # max(along, 0), NumPy or not
+            best = lib.hypot(pos, perp)
+            turn = 4 * dist * sigma / h        # the direction's error, from its ends'
+        scale = abs(mx) + abs(my) + h
+    else:
+        ring = abs(lib.hypot(qx - cx, qy - cy) - r)
+        best = (ring + disc + abs(ring - disc)) / 2         # max(ring, disc)
+        scale = abs(cx) + abs(cy) + r + abs(mx) + abs(my) + h
+    slack = 4 * (eq + sigma) + turn + 1e-9 * (scale + abs(qx) + abs(qy) + 1.0)
+    return best - slack
+
+
+def _certainly_far(piece, q, d2) -> bool:
+    """A filter for :func:`piece_hits`: ``q`` is certainly farther than ``sqrt(d2)``
+    from every point of the piece (:func:`_piece_lower_bound` in doubles); False when
+    the doubles cannot tell (or overflow)."""
+    import math
+    try:
+        geo = _piece_frame(piece)
+        (qx, eq), (qy, gq) = _approx(q[0]), _approx(q[1])
+        r2, er = _approx(d2)
+    except OverflowError:
+        return False
+    r = max(r2 + er, 0.0) ** 0.5 * (1 + 1e-12)
+    return _piece_lower_bound(geo, qx, qy, eq + gq, math) > r
