@@ -168,10 +168,14 @@ def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> boo
     stay = [j for j in R if j != mover]
     fc = _far2(pts, centre, R, approx)                # f(C) now: never grows (radii fall)
     if not cands:
-        others = [pts[j] for j in range(len(pts)) if j != mover]
-        c2 = g.smallest_enclosing_circle(others)
-        if not (c2[0] == centre and c2[1] == g.smallest_enclosing_circle(list(pts))[1]):
-            return False
+        # C is the SEC centre of all; a mover strictly inside the SEC is in no support
+        # set, so the others have the same SEC; on the circle: compute it
+        r2 = _far2(pts, centre, range(len(pts)), approx)
+        if (g.dist2(pts[mover], centre) - r2).sign() >= 0:
+            others = [pts[j] for j in range(len(pts)) if j != mover]
+            c2 = g.smallest_enclosing_circle(others)
+            if not (c2[0] == centre and c2[1] == r2):
+                return False
     # on arrival the mover itself may tie for the centre of a small pattern
     target = pieces[-1].final
     small = pat.centre_robot is not None and len(pat.robots) + 1 <= 4
