@@ -159,7 +159,7 @@ def test_the_touching_filter_agrees_with_the_exact_test_and_the_recogniser():
              if g.dist2(pts[i], pts[j]) == 4]
     assert sorted(g.touching_pairs(pts, 1)) == exact and len(exact) == 14
     every = [recognise(pts, q) for q in pts]
-    M, pats = corrected._pattern_sizes(pts, Readings(), 1)
+    M, pats = corrected._pattern_sizes(pts, Readings(), 1, g.approx_points(pts))
     assert M == max(len(p.robots) for p in every) == 9
     assert pats == {k: p for k, p in enumerate(every) if len(p.robots) == M}
 
@@ -191,6 +191,9 @@ def test_float_filters_agree_with_the_exact_predicates(pts):
     exact = [(i, j) for i in range(n) for j in range(i + 1, n) if g.dist2(pts[i], pts[j]) == 4]
     assert sorted(g.touching_pairs(pts, 1)) == exact
     approx = g.approx_points(pts)
+    from exactsym.gathering import corrected
+    for q in (pts[0], pts[3], pts[-1], g.point(0, 0)):
+        assert corrected._recognise(pts, q, "accept", 1, approx) == recognise(pts, q)
     for piece in (g.Segment(pts[0], pts[1]), g.Segment(pts[2], pts[-1]),
                   g.Arc(pts[0], pts[1], g.add(pts[0], g.rotate(g.sub(pts[1], pts[0]),
                         MQ.rational(F(3, 5)), MQ.rational(F(4, 5)))), 1)):

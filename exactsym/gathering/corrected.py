@@ -77,7 +77,7 @@ ALGORITHMS = ("paper", "corrected")
 DETOUR_TANGENTS = tuple(fmpq(1, 2 ** k) for k in range(4, -1, -1))
 
 
-def _pattern_sizes(pts, readings, unit):
+def _pattern_sizes(pts, readings, unit, approx):
     """``(M, {k: pattern})``: the largest size M of the pattern about a robot's position,
     and the patterns of every robot reaching it.  A robot touching d < 6 others (layer 1
     not full) has a pattern of at most 1 + d robots; it is recognised only when that
@@ -93,15 +93,28 @@ def _pattern_sizes(pts, readings, unit):
     pats = {}
     for k, d in enumerate(degree):
         if d >= capacity(1):
-            pats[k] = recognise(pts, pts[k], readings.lone, unit)
+            pats[k] = _recognise(pts, pts[k], readings.lone, unit, approx)
     best = max((len(p.robots) for p in pats.values()), default=1)
     for k, d in enumerate(degree):
         if k in pats or 1 + d < best:
             continue
-        pats[k] = recognise(pts, pts[k], readings.lone, unit) if d else \
+        pats[k] = _recognise(pts, pts[k], readings.lone, unit, approx) if d else \
             Pattern(pts[k], k, (), True)
         best = max(best, len(pats[k].robots))
     return best, {k: p for k, p in pats.items() if len(p.robots) == best}
+
+
+def _recognise(pts, centre, lone, unit, approx):
+    """:func:`.pattern.recognise` about ``centre`` on the robots a certified filter finds
+    possibly at C or on a layer's circle (:func:`.geometry.maybe_on_layers`), mapped back
+    to the snapshot's indices: the same pattern, without exact distances to the rest."""
+    keep = g.maybe_on_layers(approx, centre, unit)
+    if len(keep) == len(pts):
+        return recognise(pts, centre, lone, unit)
+    pat = recognise([pts[k] for k in keep], centre, lone, unit)
+    return Pattern(pat.centre, None if pat.centre_robot is None else keep[pat.centre_robot],
+                   tuple(tuple(keep[k] for k in layer) for layer in pat.layers), pat.valid,
+                   pat.defects)
 
 
 def _far2(pts, k_pos, others, approx=None):
@@ -121,10 +134,11 @@ def _far2(pts, k_pos, others, approx=None):
 def choose_centre(pts, readings: Readings, unit, approx=None):
     """``(C, pattern, candidates, detail)``; C None when the rule is ambiguous.
     ``candidates``: the robots whose patterns tie for the largest (M >= 2)."""
-    M, sizes = _pattern_sizes(pts, readings, unit)
+    M, sizes = _pattern_sizes(pts, readings, unit, approx)
     if M == 1:
         centre, _ = g.smallest_enclosing_circle(list(pts))
-        return centre, recognise(pts, centre, readings.lone, unit), (), "C: SEC centre"
+        return (centre, _recognise(pts, centre, readings.lone, unit, approx), (),
+                "C: SEC centre")
     cands = sorted(sizes)
     scored = []
     for k in cands:

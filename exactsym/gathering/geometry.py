@@ -596,3 +596,22 @@ def _certainly_far(piece, q, d2) -> bool:
         return False
     r = max(r2 + er, 0.0) ** 0.5 * (1 + 1e-12)
     return _piece_lower_bound(geo, qx, qy, eq + gq, math) > r
+
+
+def maybe_on_layers(approx, centre, unit) -> list:
+    """Indices of the robots that may lie exactly at C or at a distance ``2 L unit`` from
+    ``centre`` for an integer L >= 1 (every robot left out certainly does not): the
+    robots a pattern about ``centre`` can contain."""
+    import numpy as np
+    X, Y, E = approx
+    try:
+        (cx, ex), (cy, ey) = _approx(centre[0]), _approx(centre[1])
+    except OverflowError:
+        return list(range(len(X)))
+    two = 2.0 * float(unit)
+    d = np.hypot(X - cx, Y - cy)
+    slack = 2 * (2 * E + ex + ey) + 1e-12 * (d + abs(cx) + abs(cy) + np.abs(X) + np.abs(Y))
+    level = d / two
+    off = np.abs(level - np.round(level)) * two
+    keep = ~(off > slack + 1e-300)
+    return [int(k) for k in np.nonzero(keep)[0]]
