@@ -1,10 +1,15 @@
 """Benchmark of the exact gathering simulator, against a float simulator of the same run in
-the same process.  Run: ``python bench/bench_gather.py`` (about a minute).
+the same process.  Run: ``python bench/bench_gather.py [--quick]`` (a few minutes; CPU
+time, so that other processes on the machine change the figures less).
 
-1. The cost of one Look (``robot.decide``: SEC, pattern recogniser, the paper layer's
-   Preprocess / MakeAsym / ElectLeader, FormGPattern) as n grows, cache cleared.
-2. A 30-robot run with every invariant on (centralised and ASYNC schedulers, default
-   readings, 300 events): events per second.
+1. The cost of one Look as n grows, cache cleared: the paper's ``robot.decide`` (SEC,
+   pattern recogniser, the paper layer's Preprocess / MakeAsym / ElectLeader,
+   FormGPattern) and the corrected variant's ``decide_corrected`` on a random
+   configuration, and the corrected variant on a complete pattern of n - 1 robots and
+   one robot far out (the largest P: the costliest Look of a run).
+2. Runs with every invariant on at n = 5, 30, 80 for both algorithms (centralised, and
+   ASYNC at n = 30; default readings; at most 300 events, 600 for the corrected variant
+   at n = 30 so that it gathers): events per second.
 3. The float baseline: the same action sequence replayed with float positions, a float
    SEC, float segment/arc collision tests against every robot and a float "nearest robot
    to the SEC centre" leader per Look: what an epsilon-based simulator pays per event.
@@ -17,8 +22,12 @@ import random
 import time
 from fractions import Fraction
 
+import sys
+
 from exactsym.gathering import robot
+from exactsym.gathering.corrected import decide_corrected
 from exactsym.gathering.geometry import point
+from exactsym.gathering.pattern import generate
 from exactsym.gathering.invariants import Checker
 from exactsym.gathering.robot import Readings
 from exactsym.gathering.schedulers import run
@@ -35,15 +44,20 @@ def random_config(n: int, seed: int = 1, spread: int = 12):
     return pts
 
 
-def time_one_look(n: int, repeat: int = 3) -> float:
-    pts = tuple(point(*p) for p in random_config(n))
+def time_one_look(n: int, repeat: int = 3, decide=robot.decide, pts=None) -> float:
+    pts = pts if pts is not None else tuple(point(*p) for p in random_config(n))
     best = math.inf
     for _ in range(repeat):
-        robot.decide.cache_clear()
-        t = time.perf_counter()
-        robot.decide(pts, Readings())
-        best = min(best, time.perf_counter() - t)
+        decide.cache_clear()
+        t = time.process_time()
+        decide(pts, Readings())
+        best = min(best, time.process_time() - t)
     return best
+
+
+def pattern_and_one(n: int) -> tuple:
+    """A complete pattern of n - 1 robots about the origin and one robot far out."""
+    return tuple(generate(n - 1)) + (point(Fraction(7, 3), 9 * n),)
 
 
 # -- the float baseline ----------------------------------------------------------------
@@ -98,6 +112,16 @@ def float_replay(points, actions) -> int:
     hits = 0
     for act in actions:
         i = act["robot"]
+        if act["a"] == "step":          # robots moving at once: each its own part
+            for i, stop, _end in act["moves"]:
+                goal = target.get(i, pos[i])
+                f = 0.5 if stop else 1.0
+                new = (pos[i][0] + f * (goal[0] - pos[i][0]),
+                       pos[i][1] + f * (goal[1] - pos[i][1]))
+                hits += sum(_fseg_hits(pos[i], new, q) for k, q in enumerate(pos) if k != i)
+                pos[i] = new
+            _fsec(pos)
+            continue
         if act["a"] == "look":
             cx, cy, _ = _fsec(pos)
             d = [(p[0] - cx) ** 2 + (p[1] - cy) ** 2 for p in pos]
@@ -118,25 +142,38 @@ def float_replay(points, actions) -> int:
 
 
 def main() -> None:
-    print("one Look (decide, cache cleared) as n grows:")
+    quick = "--quick" in sys.argv[1:]
+    print("one Look (decide, cache cleared, CPU time) as n grows:")
+    print("      n   paper (random)   corrected (random)   corrected (pattern of n-1 + 1)")
     for n in (5, 10, 20, 30, 50, 80):
-        print(f"  n = {n:3d}: {time_one_look(n) * 1000:8.2f} ms")
-    pts = random_config(30)
-    for scheduler, readings in (("centralised", Readings()), ("async", Readings()),
-                                ("centralised", Readings(A3="all"))):
+        a = time_one_look(n)
+        b = time_one_look(n, decide=decide_corrected)
+        c = time_one_look(n, decide=decide_corrected, pts=pattern_and_one(n))
+        print(f"  {n:5d}   {a * 1000:10.2f} ms   {b * 1000:14.2f} ms   {c * 1000:20.2f} ms")
+    runs = [(5, "paper", "centralised", 300), (5, "corrected", "centralised", 300),
+            (30, "paper", "centralised", 300), (30, "corrected", "centralised", 600),
+            (30, "paper", "async", 300), (30, "corrected", "async", 600),
+            (80, "paper", "centralised", 300), (80, "corrected", "centralised", 300)]
+    if quick:
+        runs = [r for r in runs if r[0] != 80]
+    for n, algorithm, scheduler, cap in runs:
+        pts = random_config(n)
         robot.decide.cache_clear()
-        t = time.perf_counter()
-        res = run(pts, scheduler, 1, readings, max_events=300, checker=Checker())
-        exact = time.perf_counter() - t
-        t = time.perf_counter()
+        decide_corrected.cache_clear()
+        t = time.process_time()
+        res = run(pts, scheduler, 1, Readings(), max_events=cap, checker=Checker(),
+                  algorithm=algorithm)
+        exact = time.process_time() - t
+        t = time.process_time()
         float_replay(pts, res.actions)
-        flt = time.perf_counter() - t
+        flt = max(time.process_time() - t, 1e-6)
         checks = sum(res.checks.values())
-        print(f"30 robots, {scheduler}, A3={readings.A3}, every invariant on: {res.outcome} "
-              f"({res.label or '-'}) after {res.events} "
-              f"events ({res.looks} Looks, {checks} invariant checks) in {exact:.2f} s = "
-              f"{res.events / exact:.0f} events/s; float replay {flt * 1000:.1f} ms "
-              f"({res.events / flt:.0f} events/s); ratio {exact / flt:.0f}x")
+        print(f"n = {n}, {algorithm}, {scheduler}, every invariant on: {res.outcome} "
+              f"({res.label or '-'}) after {res.events} events ({res.looks} Looks, "
+              f"{checks} invariant checks) in {exact:.2f} s = {res.events / exact:.0f} "
+              f"events/s, {exact / max(res.looks, 1) * 1000:.1f} ms per Look (with its "
+              f"checks); float replay {flt * 1000:.1f} ms ({res.events / flt:.0f} events/s); "
+              f"ratio {exact / flt:.0f}x")
 
 
 if __name__ == "__main__":

@@ -3,11 +3,14 @@
 Random separated rational configurations (``bench_gather.random_config``, seeded), n = 5..12,
 under the four schedulers, every invariant on, for the paper's algorithm (default
 readings, and A3=all with EL=unordered) and for the corrected variant
-(``exactsym.gathering.corrected``); prints one table row per algorithm and scheduler:
-gathered, violated (by label), stalled, not possible, other (undecided, max-events).
+(``exactsym.gathering.corrected``); and the paper's algorithm with A3=all, EL=unordered
+and I2 (one pending move) off, so that runs go on with several robots moving at once and
+show whether they collide (I1 over the joint motion).  Prints one table row per
+algorithm and scheduler: gathered, violated (by label), stalled, not possible, other
+(undecided, max-events), and how many runs had robots moving at once.
 
 Run: ``python bench/sweep_gather.py [--seeds K] [--n 5-12] [--json OUT]`` (the default,
-3 seeds: 288 runs, about five minutes on one core; the table is in docs/gathering.md).
+3 seeds: 384 runs, some ten minutes on one core; the table is in docs/gathering.md).
 """
 
 from __future__ import annotations
@@ -19,26 +22,31 @@ import time
 
 from bench_gather import random_config
 
+from exactsym.gathering.invariants import ALL, Checker
 from exactsym.gathering.robot import Readings
 from exactsym.gathering.schedulers import SCHEDULERS, run
 
-SETTINGS = (("paper", "paper (default readings)", Readings()),
-            ("paper", "paper (A3=all, EL=unordered)", Readings(A3="all", EL="unordered")),
-            ("corrected", "corrected", Readings()))
+SETTINGS = (("paper", "paper (default readings)", Readings(), ALL),
+            ("paper", "paper (A3=all, EL=unordered)", Readings(A3="all", EL="unordered"), ALL),
+            ("paper", "paper (A3=all, EL=unordered), I2 off",
+             Readings(A3="all", EL="unordered"), tuple(k for k in ALL if k != "I2")),
+            ("corrected", "corrected", Readings(), ALL))
 
 
 def sweep(ns, seeds: int, max_events: int = 3000):
     rows: dict = {}
     failures: list = []
-    for algorithm, title, readings in SETTINGS:
+    for algorithm, title, readings, invariants in SETTINGS:
         for scheduler in SCHEDULERS:
             tally: collections.Counter = collections.Counter()
             for n in ns:
                 for seed in range(seeds):
                     res = run(random_config(n, seed=seed + 100 * n), scheduler, seed, readings,
-                              max_events=max_events, algorithm=algorithm)
+                              max_events=max_events, algorithm=algorithm,
+                              checker=Checker(enabled=frozenset(invariants)))
                     key = res.outcome if res.outcome != "violated" else f"violated {res.label}"
                     tally[key] += 1
+                    tally["~together"] += any(a["a"] == "step" for a in res.actions)
                     if algorithm == "corrected" and res.outcome != "gathered":
                         failures.append({"n": n, "seed": seed, "scheduler": scheduler,
                                          "outcome": res.outcome, "label": res.label,
@@ -49,15 +57,16 @@ def sweep(ns, seeds: int, max_events: int = 3000):
 
 def table(rows) -> str:
     lines = ["| algorithm | scheduler | runs | gathered | violated (label: count) | stalled "
-             "| not possible | other |", "|---|---|---|---|---|---|---|---|"]
+             "| not possible | other | moving at once |", "|---|---|---|---|---|---|---|---|---|"]
     for (title, scheduler), tally in rows.items():
         viol = ", ".join(f"{k[9:]}: {v}" for k, v in sorted(tally.items())
                          if k.startswith("violated"))
         other = sum(v for k, v in tally.items() if k not in ("gathered", "stalled",
-                    "not-possible") and not k.startswith("violated"))
-        lines.append(f"| {title} | {scheduler} | {sum(tally.values())} | "
+                    "not-possible", "~together") and not k.startswith("violated"))
+        runs = sum(v for k, v in tally.items() if k != "~together")
+        lines.append(f"| {title} | {scheduler} | {runs} | "
                      f"{tally['gathered']} | {viol or '-'} | {tally['stalled']} | "
-                     f"{tally['not-possible']} | {other} |")
+                     f"{tally['not-possible']} | {other} | {tally['~together']} |")
     return "\n".join(lines)
 
 
@@ -74,7 +83,7 @@ def main() -> None:
     print(table(rows))
     for f in failures:
         print(f"corrected, not gathered: {f}")
-    print(f"{sum(sum(t.values()) for t in rows.values())} runs in "
+    print(f"{sum(v for t in rows.values() for k, v in t.items() if k != '~together')} runs in "
           f"{time.perf_counter() - start:.0f} s")
     if args.json:
         with open(args.json, "w", encoding="utf-8") as fh:

@@ -146,17 +146,61 @@ def test_a_tie_no_handedness_can_break_stays():
 
 
 def test_the_touching_filter_agrees_with_the_exact_test_and_the_recogniser():
-    """The Arb-ball filter of corrected._touching against the plain exact test, on a
-    complete pattern (every pair decided by the exact fallback: balls contain 0) plus
-    robots near it, and the pattern sizes against recognise about every robot."""
+    """The float filter of geometry.touching_pairs against the plain exact test, on a
+    complete pattern (every touching pair decided by the exact fallback) plus robots
+    near it; the pattern sizes (recognising only the robots whose bound reaches the
+    largest) against recognise about every robot."""
     from exactsym.gathering import corrected
     from exactsym.gathering import geometry as g
     from exactsym.gathering.pattern import generate
     pts = list(generate(9)) + [(MQ.rational(F(41, 10)), MQ.rational(0)),
                                (MQ.rational(9), MQ.rational(F(1, 3)))]
-    exact = {i for i in range(len(pts)) for j in range(len(pts))
-             if i != j and g.dist2(pts[i], pts[j]) == 4}
-    assert corrected._touching(pts, 1) == exact and len(exact) == 9
-    sizes = corrected._pattern_sizes(pts, Readings(), 1)
-    assert [s for s, _ in sizes] == [len(recognise(pts, q).robots) for q in pts]
-    assert sizes[0][0] == 9
+    exact = [(i, j) for i in range(len(pts)) for j in range(i + 1, len(pts))
+             if g.dist2(pts[i], pts[j]) == 4]
+    assert sorted(g.touching_pairs(pts, 1)) == exact and len(exact) == 14
+    every = [recognise(pts, q) for q in pts]
+    M, pats = corrected._pattern_sizes(pts, Readings(), 1, g.approx_points(pts))
+    assert M == max(len(p.robots) for p in every) == 9
+    assert pats == {k: p for k, p in enumerate(every) if len(p.robots) == M}
+
+
+@st.composite
+def _near_touching(draw):
+    """Points in Q(sqrt 2, sqrt 3), some exactly 2 apart (slots of a pattern, moved by
+    a rational translation), some within 10^-9 of it."""
+    from exactsym.gathering.pattern import generate
+    k = draw(st.integers(5, 12))
+    dx, dy = F(draw(st.integers(-99, 99)), 7), F(draw(st.integers(-99, 99)), 3)
+    pts = [(x + dx, y + dy) for x, y in generate(k)]
+    eps = F(1, 10 ** 9)
+    for _ in range(draw(st.integers(0, 3))):
+        j = draw(st.integers(0, k - 1))
+        pts.append((pts[j][0] + 2 + eps * draw(st.integers(-1, 1)), pts[j][1]))
+    s2 = MQ.sqrt(2)
+    pts.append((s2 * 3, MQ.rational(dy)))
+    return pts
+
+
+@settings(max_examples=25, deadline=None)
+@given(_near_touching())
+def test_float_filters_agree_with_the_exact_predicates(pts):
+    """touching_pairs = the exact pairs; robots_near_piece leaves out only robots the
+    exact predicate finds farther than 2; piece_hits (filtered) = the exact test."""
+    from exactsym.gathering import geometry as g
+    n = len(pts)
+    exact = [(i, j) for i in range(n) for j in range(i + 1, n) if g.dist2(pts[i], pts[j]) == 4]
+    assert sorted(g.touching_pairs(pts, 1)) == exact
+    approx = g.approx_points(pts)
+    from exactsym.gathering import corrected
+    for q in (pts[0], pts[3], pts[-1], g.point(0, 0)):
+        assert corrected._recognise(pts, q, "accept", 1, approx) == recognise(pts, q)
+    for piece in (g.Segment(pts[0], pts[1]), g.Segment(pts[2], pts[-1]),
+                  g.Arc(pts[0], pts[1], g.add(pts[0], g.rotate(g.sub(pts[1], pts[0]),
+                        MQ.rational(F(3, 5)), MQ.rational(F(4, 5)))), 1)):
+        near = set(g.robots_near_piece(piece, approx, 2.0))
+        for j, q in enumerate(pts):
+            unfiltered = g.segment_min_dist2_less(piece.start, piece.end, q, MQ.rational(4)) \
+                if isinstance(piece, g.Segment) else g.arc_min_dist2_less(piece, q, MQ.rational(4))
+            assert g.piece_hits(piece, q) == unfiltered
+            if unfiltered:
+                assert j in near

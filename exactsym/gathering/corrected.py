@@ -64,11 +64,11 @@ from __future__ import annotations
 from functools import lru_cache
 from math import isqrt
 
-from flint import arb, fmpq
+from flint import fmpq
 
 from ..exact.multiquadratic import MQ, sqrt_rational
 from . import geometry as g
-from .pattern import Pattern, recognise, slot
+from .pattern import Pattern, capacity, recognise, slot
 from .robot import Decision, Move, Readings
 
 ALGORITHMS = ("paper", "corrected")
@@ -77,37 +77,52 @@ ALGORITHMS = ("paper", "corrected")
 DETOUR_TANGENTS = tuple(fmpq(1, 2 ** k) for k in range(4, -1, -1))
 
 
-def _touching(pts, unit) -> set:
-    """The robots touching another (centres exactly 2 apart): Arb balls first (a rigorous
-    filter: a ball of |p - q|^2 - 4 that excludes 0 settles the pair), the exact test
-    only for the pairs the balls cannot separate."""
-    balls = [(p[0].to_arb(), p[1].to_arb()) for p in pts]
-    four = arb(4 * unit * unit)
-    out = set()
-    for i in range(len(pts)):
-        for j in range(i + 1, len(pts)):
-            dx, dy = balls[i][0] - balls[j][0], balls[i][1] - balls[j][1]
-            if 0 in dx * dx + dy * dy - four and g.dist2(pts[i], pts[j]) == 4 * unit * unit:
-                out |= {i, j}
-    return out
+def _pattern_sizes(pts, readings, unit, approx):
+    """``(M, {k: pattern})``: the largest size M of the pattern about a robot's position,
+    and the patterns of every robot reaching it.  A robot touching d < 6 others (layer 1
+    not full) has a pattern of at most 1 + d robots; it is recognised only when that
+    bound reaches the largest size found among the robots touching 6 (so the result is
+    that of recognising every robot); a robot touching nobody has only itself about it.
+    The degrees counted are of the pairs a certified float filter cannot separate from
+    touching (:func:`.geometry.maybe_touching_pairs`): a superset, so the bounds hold,
+    and :func:`.pattern.recognise` decides exactly."""
+    degree = [0] * len(pts)
+    for i, j in g.maybe_touching_pairs(pts, unit):
+        degree[i] += 1
+        degree[j] += 1
+    pats = {}
+    for k, d in enumerate(degree):
+        if d >= capacity(1):
+            pats[k] = _recognise(pts, pts[k], readings.lone, unit, approx)
+    best = max((len(p.robots) for p in pats.values()), default=1)
+    for k, d in enumerate(degree):
+        if k in pats or 1 + d < best:
+            continue
+        pats[k] = _recognise(pts, pts[k], readings.lone, unit, approx) if d else \
+            Pattern(pts[k], k, (), True)
+        best = max(best, len(pats[k].robots))
+    return best, {k: p for k, p in pats.items() if len(p.robots) == best}
 
 
-def _pattern_sizes(pts, readings, unit):
-    """``[(size, pattern)]`` of the pattern about each robot's position; a robot that
-    touches nobody has only itself about it (no robot at distance 2: no layer 1)."""
-    touching = _touching(pts, unit)
-    out = []
-    for k, q in enumerate(pts):
-        if k in touching:
-            p = recognise(pts, q, readings.lone, unit)
-        else:
-            p = Pattern(q, k, (), True)
-        out.append((len(p.robots), p))
-    return out
+def _recognise(pts, centre, lone, unit, approx):
+    """:func:`.pattern.recognise` about ``centre`` on the robots a certified filter finds
+    possibly at C or on a layer's circle (:func:`.geometry.maybe_on_layers`), mapped back
+    to the snapshot's indices: the same pattern, without exact distances to the rest."""
+    keep = g.maybe_on_layers(approx, centre, unit)
+    if len(keep) == len(pts):
+        return recognise(pts, centre, lone, unit)
+    pat = recognise([pts[k] for k in keep], centre, lone, unit)
+    return Pattern(pat.centre, None if pat.centre_robot is None else keep[pat.centre_robot],
+                   tuple(tuple(keep[k] for k in layer) for layer in pat.layers), pat.valid,
+                   pat.defects)
 
 
-def _far2(pts, k_pos, others):
-    """Largest squared distance from ``k_pos`` to the robots ``others`` (None if empty)."""
+def _far2(pts, k_pos, others, approx=None):
+    """Largest squared distance from ``k_pos`` to the robots ``others`` (None if empty);
+    ``approx`` (:func:`.geometry.approx_points`): only the robots a certified filter
+    cannot rule out are compared exactly."""
+    if approx is not None:
+        others = g.farthest_candidates(approx, k_pos, others)
     best = None
     for j in others:
         d = g.dist2(pts[j], k_pos)
@@ -116,23 +131,24 @@ def _far2(pts, k_pos, others):
     return best
 
 
-def choose_centre(pts, readings: Readings, unit):
+def choose_centre(pts, readings: Readings, unit, approx=None):
     """``(C, pattern, candidates, detail)``; C None when the rule is ambiguous.
     ``candidates``: the robots whose patterns tie for the largest (M >= 2)."""
-    sizes = _pattern_sizes(pts, readings, unit)
-    M = max(s for s, _ in sizes)
+    M, sizes = _pattern_sizes(pts, readings, unit, approx)
     if M == 1:
         centre, _ = g.smallest_enclosing_circle(list(pts))
-        return centre, recognise(pts, centre, readings.lone, unit), (), "C: SEC centre"
-    cands = [k for k, (s, _) in enumerate(sizes) if s == M]
+        return (centre, _recognise(pts, centre, readings.lone, unit, approx), (),
+                "C: SEC centre")
+    cands = sorted(sizes)
     scored = []
     for k in cands:
-        pat = sizes[k][1]
-        outside = [j for j in range(len(pts)) if j not in pat.robots]
-        scored.append((k, _far2(pts, pts[k], outside)))
+        pat = sizes[k]
+        members = pat.robots                 # a property: a new set at each call
+        outside = [j for j in range(len(pts)) if j not in members]
+        scored.append((k, _far2(pts, pts[k], outside, approx)))
     if any(f is None for _, f in scored):               # a complete pattern
         k = next(k for k, f in scored if f is None)
-        return pts[k], sizes[k][1], tuple(cands), "C: the complete pattern's centre"
+        return pts[k], sizes[k], tuple(cands), "C: the complete pattern's centre"
     best = scored[0]
     for item in scored[1:]:
         if (item[1] - best[1]).sign() < 0:
@@ -142,31 +158,38 @@ def choose_centre(pts, readings: Readings, unit):
         return None, None, tuple(cands), (f"ambiguous centre: robots {ties} tie for the "
                                            f"centre of a pattern of {M}")
     k = best[0]
-    return pts[k], sizes[k][1], tuple(cands), f"C: robot {k}, the centre of {M} robots"
+    return pts[k], sizes[k], tuple(cands), f"C: robot {k}, the centre of {M} robots"
 
 
-def _free(pieces, pts, mover, unit2) -> bool:
+def _free(pieces, pts, mover, unit2, approx=None) -> bool:
+    """No robot but the mover comes closer than 2 to the path.  ``approx``
+    (:func:`.geometry.approx_points` of ``pts``): a certified filter leaves out the
+    robots certainly far from a piece; the others are tested exactly."""
     d2 = 4 * unit2
-    for j, q in enumerate(pts):
-        if j == mover:
-            continue
-        for piece in pieces:
-            if g.piece_hits(piece, q, d2):
+    for piece in pieces:
+        near = range(len(pts)) if approx is None else \
+            g.robots_near_piece(piece, approx, 2 * float(unit2) ** 0.5)
+        for j in near:
+            if j != mover and g.piece_hits(piece, pts[j], d2):
                 return False
     return True
 
 
-def _keeps_centre(pieces, pts, mover, centre, cands, R, pat) -> bool:
+def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> bool:
     """C cannot change while ``mover`` follows ``pieces``, nor at its arrival (point 3
     of the module docstring).  ``cands`` empty (M = 1): the SEC must not need the
     mover."""
     stay = [j for j in R if j != mover]
-    fc = _far2(pts, centre, R)                        # f(C) now: never grows (radii fall)
+    fc = _far2(pts, centre, R, approx)                # f(C) now: never grows (radii fall)
     if not cands:
-        others = [pts[j] for j in range(len(pts)) if j != mover]
-        c2 = g.smallest_enclosing_circle(others)
-        if not (c2[0] == centre and c2[1] == g.smallest_enclosing_circle(list(pts))[1]):
-            return False
+        # C is the SEC centre of all; a mover strictly inside the SEC is in no support
+        # set, so the others have the same SEC; on the circle: compute it
+        r2 = _far2(pts, centre, range(len(pts)), approx)
+        if (g.dist2(pts[mover], centre) - r2).sign() >= 0:
+            others = [pts[j] for j in range(len(pts)) if j != mover]
+            c2 = g.smallest_enclosing_circle(others)
+            if not (c2[0] == centre and c2[1] == r2):
+                return False
     # on arrival the mover itself may tie for the centre of a small pattern
     target = pieces[-1].final
     small = pat.centre_robot is not None and len(pat.robots) + 1 <= 4
@@ -174,7 +197,7 @@ def _keeps_centre(pieces, pts, mover, centre, cands, R, pat) -> bool:
     if not others and not small:
         return True
     for k, where in [(k, pts[k]) for k in others] + ([(None, target)] if small else []):
-        fk = _far2(pts, where, stay)
+        fk = _far2(pts, where, stay, approx)
         if fk is not None and (fk - fc).sign() > 0:
             continue
         if stay or k is None:
@@ -377,16 +400,18 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
     """The corrected algorithm's decision on one snapshot (see the module docstring)."""
     pts = list(snapshot)
     unit2 = unit * unit
-    centre, pat, cands, detail = choose_centre(pts, readings, unit)
+    approx = g.approx_points(pts)
+    centre, pat, cands, detail = choose_centre(pts, readings, unit, approx)
     if centre is None:
         sec, _ = g.smallest_enclosing_circle(pts)
         return Decision("stay", (), sec, recognise(pts, sec, readings.lone, unit), None, detail)
-    R = [i for i in range(len(pts)) if i not in pat.robots]
+    members = pat.robots
+    R = [i for i in range(len(pts)) if i not in members]
     if not R:
         return Decision("terminated", (), centre, pat, None, "R is empty")
     d = {i: g.dist2(pts[i], centre) for i in R}
     if pat.centre_robot is None:
-        clear = _clear_centre(pts, centre, R, d, unit, cands, pat)
+        clear = _clear_centre(pts, centre, R, d, unit, cands, pat, approx)
         if clear is not None:
             return clear
     near = min(d.values(), key=_Key)
@@ -408,7 +433,7 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
         k += len(group)
         found = [(o[1], p) for o in group
                  if (p := _first_path(o, pts, centre, cands, R, unit, pat,
-                                      len(tied) > 1)) is not None]
+                                      len(tied) > 1, approx)) is not None]
         if len(found) > 1:
             # the smallest profile of distances to the others; equal profiles: stay
             # ... preferring a mover after whose move the robots left in R still have
@@ -434,7 +459,7 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
     return Decision("move", (Move(i, path, "leader"),), centre, pat, i, detail)
 
 
-def _clear_centre(pts, centre, R, d, unit, cands, pat):
+def _clear_centre(pts, centre, R, d, unit, cands, pat, approx):
     """Nobody is at C but two or more robots are within 2 of it: C cannot be taken.  The
     farthest of them from C moves radially out to distance 2 (then it is in layer 1
     once the nearest reaches C).  A tie for the farthest: stay."""
@@ -453,14 +478,15 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat):
     except ValueError as err:
         return Decision("undecided", (), centre, pat, None, str(err))
     path = [g.Segment(pts[j], target)]
-    if _free(path, pts, j, unit2) and _keeps_centre(path, pts, j, centre, cands, R, pat):
+    if _free(path, pts, j, unit2, approx) and \
+            _keeps_centre(path, pts, j, centre, cands, R, pat, approx):
         return Decision("move", (Move(j, tuple(path), "clear"),), centre, pat, None,
                         f"corrected: robot {j} clears C (robots {close} within 2 of it)")
     return Decision("stay", (), centre, pat, None,
                     f"corrected: robot {j} cannot clear C (robots {close} within 2 of it)")
 
 
-def _first_path(option, pts, centre, cands, R, unit, pat, tied_start):
+def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx):
     """The first free path of ``option`` = (dist, robot, target, layer, kind) that keeps
     C, as a tuple of pieces; None."""
     _dist, i, target, l, kind = option
@@ -476,7 +502,8 @@ def _first_path(option, pts, centre, cands, R, unit, pat, tied_start):
     for path in paths:
         if not path or (tied_start and isinstance(path[0], g.Arc)):
             continue                    # tied at the Look: the first piece must go in (I4)
-        if _free(path, pts, i, unit2) and _keeps_centre(path, pts, i, centre, cands, R, pat):
+        if _free(path, pts, i, unit2, approx) and \
+                _keeps_centre(path, pts, i, centre, cands, R, pat, approx):
             return tuple(path)
     return None
 

@@ -209,6 +209,8 @@ def arc_min_dist2_less(arc: Arc, q, d2) -> bool:
 
 def piece_hits(piece, q, d2=4) -> bool:
     d2 = mq(d2)
+    if _certainly_far(piece, q, d2):
+        return False
     if isinstance(piece, Segment):
         return segment_min_dist2_less(piece.start, piece.end, q, d2)
     return arc_min_dist2_less(piece, q, d2)
@@ -280,3 +282,336 @@ def smallest_enclosing_circle(points) -> tuple:
                 if not inside(circ, pts[k]):
                     circ = _circle3(pts[i], pts[j], pts[k])
     return circ
+
+
+# -- two discs moving at once (simultaneous motion, I1 in continuous time) -------------
+# A piece traversed over the common time tau in [0, 1] is a rational curve
+# (X(tau), Y(tau)) / W(tau) with multiquadratic coefficients: a segment linearly
+# (W = 1); an arc by the rational rotation of half-angle tangent k*tau, k the tangent of
+# the whole arc's half angle (what ``Arc.at`` does), W = 1 + k^2 tau^2.  Polynomials are
+# coefficient lists, lowest degree first.
+
+def _padd(p, q):
+    n = max(len(p), len(q))
+    return [(p[i] if i < len(p) else ZERO) + (q[i] if i < len(q) else ZERO) for i in range(n)]
+
+
+def _pmul(p, q):
+    out = [ZERO] * (len(p) + len(q) - 1)
+    for i, a in enumerate(p):
+        if a.is_zero():
+            continue
+        for j, b in enumerate(q):
+            out[i + j] = out[i + j] + a * b
+    return out
+
+
+def _pscale(p, s):
+    return [a * s for a in p]
+
+
+def _peval(p, t):
+    acc = ZERO
+    for a in reversed(p):
+        acc = acc * t + a
+    return acc
+
+
+def _trim(p):
+    p = list(p)
+    while p and p[-1].is_zero():
+        p.pop()
+    return p
+
+
+def piece_motion(piece):
+    """``(X, Y, W)``: the piece as a rational curve of the common time ``tau`` in
+    [0, 1] (the point at ``tau`` is ``piece.at(tau)``)."""
+    if isinstance(piece, Segment):
+        d = sub(piece.end, piece.start)
+        return [piece.start[0], d[0]], [piece.start[1], d[1]], [ONE]
+    a, b = sub(piece.start, piece.centre), sub(piece.end, piece.centre)
+    r2 = dot(a, a)
+    cos_t, sin_t = dot(a, b) / r2, cross(a, b) / r2
+    k = sin_t / (1 + cos_t)
+    k2 = k * k
+    c = piece.centre
+    w = [ONE, ZERO, k2]
+    x = [c[0] + a[0], -(a[1] * k) * 2, (c[0] - a[0]) * k2]
+    y = [c[1] + a[1], (a[0] * k) * 2, (c[1] - a[1]) * k2]
+    return x, y, w
+
+
+def joint_gap_polynomial(piece1, piece2, d2=4):
+    """``f(tau) = |P1 - P2|^2 W1^2 W2^2 - d2 W1^2 W2^2``: negative exactly at the
+    instants where the two moving centres are closer than ``sqrt(d2)``."""
+    x1, y1, w1 = piece_motion(piece1)
+    x2, y2, w2 = piece_motion(piece2)
+    dx = _padd(_pmul(x1, w2), _pscale(_pmul(x2, w1), -ONE))
+    dy = _padd(_pmul(y1, w2), _pscale(_pmul(y2, w1), -ONE))
+    ww = _pmul(w1, w2)
+    return _trim(_padd(_padd(_pmul(dx, dx), _pmul(dy, dy)), _pscale(_pmul(ww, ww), -mq(d2))))
+
+
+def _rational_norm(f):
+    """The product of the Galois conjugates of ``f``: rational coefficients, and every
+    real root of ``f`` is one of its roots."""
+    from ..exact.multiquadratic import _coprime_base
+    rads = sorted({m for a in f for m in a.radicands()})
+    for b in _coprime_base(rads):
+        f = _trim(_pmul(f, [a.conjugate(b) for a in f]))
+    return [a.to_fmpq() for a in f]
+
+
+def _dyadic(x):
+    from flint import fmpq
+    man, exp = x.man_exp()
+    return fmpq(man) * fmpq(2) ** int(exp) if exp >= 0 else fmpq(man, 2 ** int(-exp))
+
+
+def _simplest_between(lo, hi):
+    """The rational with the smallest denominator strictly between ``lo < hi``
+    (continued fractions): short witnesses."""
+    from fractions import Fraction
+    from flint import fmpq
+
+    def inner(a, b):
+        fl = a.numerator // a.denominator
+        if fl + 1 < b:
+            return Fraction(fl + 1)
+        if a == fl:
+            return fl + Fraction(1, int(1 / (b - fl)) + 1)
+        return fl + 1 / inner(1 / (b - fl), 1 / (a - fl))
+    x = inner(Fraction(int(lo.p), int(lo.q)), Fraction(int(hi.p), int(hi.q)))
+    return fmpq(x.numerator, x.denominator)
+
+
+def negative_instant(f):
+    """A rational ``tau`` in [0, 1] (a ``Fraction``, the earliest sample) with
+    ``f(tau) < 0``, or None when ``f >= 0`` on
+    all of [0, 1].  Exact: the real roots of ``f`` lie among those of its rational norm,
+    isolated by certified balls (python-flint's ``complex_roots``: real roots come with
+    an exactly zero imaginary part); between two consecutive roots ``f`` keeps its sign,
+    so one rational sample per gap, evaluated exactly, decides."""
+    from flint import fmpq, fmpq_poly
+    f = _trim(f)
+    if not f:
+        return None                                   # f = 0: touching all along
+    samples = [fmpq(0), fmpq(1)]
+    if len(f) > 1:
+        norm = fmpq_poly(_rational_norm(f))
+        bounds = [(fmpq(0), fmpq(0))]
+        for root, _mult in norm.numer().complex_roots():
+            if not (root.imag.is_exact() and root.imag == 0):
+                continue
+            lo, hi = _dyadic(root.real.lower()), _dyadic(root.real.upper())
+            if hi > 0 and lo < 1:
+                bounds.append((lo, hi))
+        bounds.append((fmpq(1), fmpq(1)))
+        bounds.sort()
+        for (_, left), (right, _) in zip(bounds, bounds[1:]):
+            if left < right:
+                samples.append(_simplest_between(left, right))
+    for t in sorted(samples):
+        if 0 <= t <= 1 and _peval(f, MQ.rational(t)).sign() < 0:
+            from fractions import Fraction
+            return Fraction(int(t.p), int(t.q))
+    return None
+
+
+def _piece_disc(piece):
+    """A disc holding the piece: the one on its chord as diameter (a segment; an arc of
+    at most a half turn sees its chord at an angle of at least 90 degrees)."""
+    m = ((piece.start[0] + piece.end[0]) / 2, (piece.start[1] + piece.end[1]) / 2)
+    return m, dist2(piece.start, piece.end) / 4
+
+
+def _far_apart(piece1, piece2, d2) -> bool:
+    """A filter: the two pieces' discs are certainly more than ``sqrt(d2)`` apart
+    (Arb balls; False when they cannot tell, and the exact test runs)."""
+    (m1, h1), (m2, h2) = _piece_disc(piece1), _piece_disc(piece2)
+    gap = dist2(m1, m2).to_arb().sqrt() - h1.to_arb().sqrt() - h2.to_arb().sqrt()
+    return bool(gap * gap > mq(d2).to_arb()) and bool(gap > 0)
+
+
+def joint_motion_overlap(piece1, piece2, d2=4):
+    """Two discs move at once over the common time [0, 1], along ``piece1`` and
+    ``piece2`` (segments or arcs, each at its own speed): a rational instant at which
+    their centres are closer than ``sqrt(d2)``, or None if there is none.  Exact."""
+    if _far_apart(piece1, piece2, d2):
+        return None
+    if isinstance(piece1, Segment) and isinstance(piece2, Segment):
+        d0, d1 = sub(piece1.start, piece2.start), sub(piece1.end, piece2.end)
+        if not segment_min_dist2_less(d0, d1, (ZERO, ZERO), mq(d2)):
+            return None
+    return negative_instant(joint_gap_polynomial(piece1, piece2, d2))
+
+
+# -- certified float filters over all robots at once (NumPy) ---------------------------
+# A coordinate c_1 sqrt(m_1) + ... + c_k sqrt(m_k) evaluated in doubles is within
+# (k + 6) 2^-52 S of its value, S the sum of the terms' magnitudes (the bound of
+# ``multiquadratic._float_sign``).  The filters below only ever say "certainly not":
+# their slack is that bound doubled plus 10^-12 of every magnitude involved (each
+# further double operation errs by 2^-53 relatively, a few of them per test); NaN or
+# infinity (overflow) compares False and sends the pair to the exact test.
+
+def _approx(x):
+    vals = [float(c) * float(m) ** 0.5 for m, c in x.terms.items()]
+    s = sum(abs(v) for v in vals)
+    return sum(vals), 2 * (len(vals) + 6) * 2.0 ** -52 * s
+
+
+def approx_points(pts):
+    """``(X, Y, E)``: NumPy arrays of the centres' doubles and a bound on the error of
+    each coordinate."""
+    import numpy as np
+    xs, ys, es = [], [], []
+    for p in pts:
+        try:
+            (x, ex), (y, ey) = _approx(p[0]), _approx(p[1])
+        except OverflowError:
+            x = y = ex = ey = float("nan")
+        xs.append(x)
+        ys.append(y)
+        es.append(max(ex, ey))
+    return np.array(xs), np.array(ys), np.array(es)
+
+
+def maybe_touching_pairs(pts, unit) -> list:
+    """A superset of the pairs ``(i, j)``, ``i < j``, of centres exactly ``2 unit``
+    apart: the pairs the doubles cannot separate from ``4 unit^2``."""
+    import numpy as np
+    X, Y, E = approx_points(pts)
+    four = 4.0 * float(unit) ** 2
+    dx, dy = X[:, None] - X[None, :], Y[:, None] - Y[None, :]
+    d2 = dx * dx + dy * dy
+    err = E[:, None] + E[None, :]
+    err = err + 1e-15 * (np.abs(dx) + np.abs(dy))
+    slack = 2 * (2 * err * (np.abs(dx) + np.abs(dy)) + 2 * err * err) + \
+        1e-12 * (d2 + four) + 1e-300
+    maybe = ~(np.abs(d2 - four) > slack)
+    return [(int(i), int(j)) for i, j in zip(*np.nonzero(np.triu(maybe, 1)))]
+
+
+def touching_pairs(pts, unit) -> list:
+    """The pairs ``(i, j)``, ``i < j``, of centres exactly ``2 unit`` apart: the
+    doubles' candidates (:func:`maybe_touching_pairs`), decided exactly."""
+    four = 4 * unit * unit
+    return [(i, j) for i, j in maybe_touching_pairs(pts, unit)
+            if dist2(pts[i], pts[j]) == four]
+
+
+def farthest_candidates(approx, centre, among) -> list:
+    """The robots of ``among`` that may be the farthest from ``centre`` (a point): every
+    robot left out is certainly nearer than one kept (the doubles' error bounds)."""
+    import numpy as np
+    X, Y, E = approx
+    idx = np.array(list(among), dtype=int)
+    if len(idx) == 0:
+        return []
+    try:
+        (cx, ex), (cy, ey) = _approx(centre[0]), _approx(centre[1])
+    except OverflowError:
+        return list(among)
+    d = np.hypot(X[idx] - cx, Y[idx] - cy)
+    slack = 2 * (2 * E[idx] + ex + ey) + 1e-12 * (d + abs(cx) + abs(cy) + np.abs(X[idx]) +
+                                                  np.abs(Y[idx])) + 1e-300
+    lower, upper = d - slack, d + slack
+    best = np.max(lower)
+    keep = ~(upper < best)          # NaN: kept
+    return [int(k) for k in idx[keep]]
+
+
+def robots_near_piece(piece, approx, d) -> list:
+    """Indices of the robots that may come within ``d`` (a float) of ``piece``: every
+    robot left out is certainly farther than ``d`` from every point of it, by the lower
+    bound of :func:`_piece_lower_bound` computed for all robots at once."""
+    import numpy as np
+    X, Y, E = approx
+    try:
+        geo = _piece_frame(piece)
+    except OverflowError:
+        return list(range(len(X)))
+    far = _piece_lower_bound(geo, X, Y, E, np) > d
+    return [int(k) for k in np.nonzero(~far)[0]]
+
+
+def _piece_frame(piece):
+    """Doubles describing a piece for the filters, with the error bound ``sigma`` of
+    its points' coordinates: ``(kind, mx, my, h, ux, uy, cx, cy, r, sigma)``."""
+    (sx, es), (sy, fs) = _approx(piece.start[0]), _approx(piece.start[1])
+    (tx, et), (ty, ft) = _approx(piece.end[0]), _approx(piece.end[1])
+    sigma = es + fs + et + ft
+    mx, my = (sx + tx) / 2, (sy + ty) / 2
+    h = ((sx - tx) ** 2 + (sy - ty) ** 2) ** 0.5 / 2
+    if isinstance(piece, Segment):
+        ux, uy = ((tx - sx) / (2 * h), (ty - sy) / (2 * h)) if h > 1e-6 else (0.0, 0.0)
+        return ("segment", mx, my, h, ux, uy, 0.0, 0.0, 0.0, sigma)
+    (cx, ec), (cy, fc) = _approx(piece.centre[0]), _approx(piece.centre[1])
+    r = ((sx - cx) ** 2 + (sy - cy) ** 2) ** 0.5
+    return ("arc", mx, my, h, 0.0, 0.0, cx, cy, r, sigma + ec + fc)
+
+
+def _piece_lower_bound(geo, qx, qy, eq, lib):
+    """A lower bound on the distance from the point(s) ``(qx, qy)`` (coordinate error
+    ``eq``) to the piece: the largest of the distance to the disc on the chord as
+    diameter (the piece lies in it), for a segment the distance to it through its
+    direction (exact for an exact direction), for an arc the distance to its circle;
+    minus a slack covering the errors of every double involved (twice the coordinate
+    bounds, 10^-9 of every magnitude: the direction's normalisation and a few
+    roundings err far less).  ``lib``: :mod:`math` or NumPy."""
+    kind, mx, my, h, ux, uy, cx, cy, r, sigma = geo
+    dx, dy = qx - mx, qy - my
+    dist = lib.hypot(dx, dy)
+    disc = dist - h
+    turn = 0.0
+    if kind == "segment":
+        if ux == 0.0 and uy == 0.0:
+            best = disc
+        else:
+            along = abs(dx * ux + dy * uy) - h
+            perp = dx * uy - dy * ux
+            pos = (along + abs(along)) / 2                  # max(along, 0), NumPy or not
+            best = lib.hypot(pos, perp)
+            turn = 4 * dist * sigma / h        # the direction's error, from its ends'
+        scale = abs(mx) + abs(my) + h
+    else:
+        ring = abs(lib.hypot(qx - cx, qy - cy) - r)
+        best = (ring + disc + abs(ring - disc)) / 2         # max(ring, disc)
+        scale = abs(cx) + abs(cy) + r + abs(mx) + abs(my) + h
+    slack = 4 * (eq + sigma) + turn + 1e-9 * (scale + abs(qx) + abs(qy) + 1.0)
+    return best - slack
+
+
+def _certainly_far(piece, q, d2) -> bool:
+    """A filter for :func:`piece_hits`: ``q`` is certainly farther than ``sqrt(d2)``
+    from every point of the piece (:func:`_piece_lower_bound` in doubles); False when
+    the doubles cannot tell (or overflow)."""
+    import math
+    try:
+        geo = _piece_frame(piece)
+        (qx, eq), (qy, gq) = _approx(q[0]), _approx(q[1])
+        r2, er = _approx(d2)
+    except OverflowError:
+        return False
+    r = max(r2 + er, 0.0) ** 0.5 * (1 + 1e-12)
+    return _piece_lower_bound(geo, qx, qy, eq + gq, math) > r
+
+
+def maybe_on_layers(approx, centre, unit) -> list:
+    """Indices of the robots that may lie exactly at C or at a distance ``2 L unit`` from
+    ``centre`` for an integer L >= 1 (every robot left out certainly does not): the
+    robots a pattern about ``centre`` can contain."""
+    import numpy as np
+    X, Y, E = approx
+    try:
+        (cx, ex), (cy, ey) = _approx(centre[0]), _approx(centre[1])
+    except OverflowError:
+        return list(range(len(X)))
+    two = 2.0 * float(unit)
+    d = np.hypot(X - cx, Y - cy)
+    slack = 2 * (2 * E + ex + ey) + 1e-12 * (d + abs(cx) + abs(cy) + np.abs(X) + np.abs(Y))
+    level = d / two
+    off = np.abs(level - np.round(level)) * two
+    keep = ~(off > slack + 1e-300)
+    return [int(k) for k in np.nonzero(keep)[0]]

@@ -5,12 +5,18 @@ frame, ``advance`` with an optional stop fraction and end flag.  The run records
 :func:`replay` feeds a recorded sequence back, so a run is reproduced event for event.
 
 * ``centralised`` -- one robot at a time, atomically: it Looks and completes its move;
-* ``fsync`` -- every robot Looks at the same instant, then the movers move (one after the
-  other: an interleaving), then the next round;
-* ``ssync`` -- a random non-empty subset Looks at the same instant, then they move;
-* ``async`` -- each event picks a random robot: an idle one Looks, a busy one advances
-  (possibly to a random rational point of its piece), so Looks are taken mid-motion and
-  moves are made on stale snapshots.
+* ``fsync`` -- every robot Looks at the same instant, then the movers move together
+  (one ``step`` per piece: all of them over a common time interval), then the next round;
+* ``ssync`` -- a random non-empty subset Looks at the same instant, then they move
+  together;
+* ``async`` -- each event picks a random robot: an idle one Looks; a busy one moves
+  (possibly to a random rational point of its piece), and every other busy robot moves
+  with it over the same interval with probability 1/2 (each at its own speed and stop),
+  so Looks are taken mid-motion, moves are made on stale snapshots and pending moves
+  overlap in time.
+
+With at most one busy robot the random draws are those of the earlier interleaving
+schedulers, so seeded runs in which no two robots move at once are unchanged.
 
 Frames are random rational similarities (Pythagorean rotation, scale, translation and a
 random reflection), one per Look, seeded.
@@ -78,6 +84,15 @@ class _Run:
         self.actions.append({"a": "advance", "robot": i,
                              "stop": None if stop is None else str(stop), "end": end})
         self.world.advance(i, stop, end)
+        self._tick()
+
+    def step(self, moves):
+        """Robots move at once (``[(robot, stop, end)]``); one robot: an ``advance``."""
+        if len(moves) == 1:
+            return self.advance(*moves[0])
+        self.actions.append({"a": "step", "moves": [
+            [i, None if stop is None else str(stop), end] for i, stop, end in moves]})
+        self.world.advance_together(moves)
         self._tick()
 
     def _tick(self):
@@ -216,8 +231,7 @@ def _synchronous(r: _Run, rng, reflections, subset: bool):
             r.look(i, random_frame(rng, reflections))
         movers = [i for i in active if w.robots[i].busy]
         roles = [w.robots[i].role for i in movers]
-        for i in movers:
-            _finish_move(r, i, rng)
+        _move_together(r, movers, rng)
         if movers:
             grew = any(x.startswith("leader") for x in roles)
             since_growth = 0 if grew else since_growth + 1
@@ -226,6 +240,25 @@ def _synchronous(r: _Run, rng, reflections, subset: bool):
         stall = _stall(w, 0, since_growth)
         if stall:
             return stall
+
+
+def _move_together(r: _Run, movers, rng):
+    """The movers move at once, piece by piece, until every move is over (non-rigid: each
+    may stop at a rational point of a piece, and end there once delta is covered; with
+    one mover the draws are :func:`_finish_move`'s)."""
+    w = r.world
+    while True:
+        active = [i for i in movers if w.robots[i].busy]
+        if not active:
+            return
+        moves = []
+        for i in active:
+            if not w.rigid and rng.random() < 0.3:
+                stop = Fraction(rng.randint(1, 3), 4)
+                moves.append((i, stop, _may_end(w, i, stop)))
+            else:
+                moves.append((i, None, False))
+        r.step(moves)
 
 
 def _fsync(r, rng, reflections):
@@ -252,20 +285,27 @@ def _async(r: _Run, rng, reflections):
         i = rng.randrange(w.n)
         rob = w.robots[i]
         if rob.busy:
-            role = rob.role
-            if rng.random() < 0.3:
-                stop = Fraction(rng.randint(1, 3), 4)
-                end = not w.rigid and rng.random() < 0.3 and _may_end(w, i, stop)
-                r.advance(i, stop, end)
-            else:
-                r.advance(i)
-            if not w.robots[i].busy:
-                since_growth = 0 if role.startswith("leader") else since_growth + 1
+            movers = [i] + [k for k in w.busy() if k != i and rng.random() < 0.5]
+            roles = {k: w.robots[k].role for k in movers}
+            r.step([_async_move(w, k, rng) for k in movers])
+            for k in movers:
+                if not w.robots[k].busy:
+                    grew = roles[k].startswith("leader")
+                    since_growth = 0 if grew else since_growth + 1
         else:
             r.look(i, random_frame(rng, reflections))
         stall = _stall(w, 0, since_growth)
         if stall:
             return stall
+
+
+def _async_move(w: World, i, rng):
+    """``(robot, stop, end)``: to the piece's end, or to a random rational point of it
+    (non-rigid: maybe ending the move there)."""
+    if rng.random() < 0.3:
+        stop = Fraction(rng.randint(1, 3), 4)
+        return i, stop, not w.rigid and rng.random() < 0.3 and _may_end(w, i, stop)
+    return i, None, False
 
 
 def _replay(r: _Run, actions):
@@ -278,6 +318,9 @@ def _replay(r: _Run, actions):
                 stop = act.get("stop")
                 r.advance(int(act["robot"]), None if stop is None else Fraction(stop),
                           bool(act.get("end", False)))
+            elif act["a"] == "step":
+                r.step([(int(i), None if stop is None else Fraction(stop), bool(end))
+                        for i, stop, end in act["moves"]])
             else:
                 raise TraceMismatch(f"action {k}: unknown kind {act['a']!r}")
         except (ValueError, IndexError, KeyError, TypeError) as err:

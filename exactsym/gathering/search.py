@@ -2,7 +2,10 @@
 
 Breadth-first over the adversary's choices (which robot acts; a Look in the plain or the
 reflected frame -- the two handednesses; an advance to the end of the current piece or to
-its middle; a non-rigid stop), so the first violation found has the fewest actions.
+its middle; a non-rigid stop; with two or more pending moves, a ``step`` of every busy
+robot, and of every pair of them, at once -- all to their pieces' ends or all to their
+middles -- so overlaps that only simultaneous motion produces are found), so the first
+violation found has the fewest actions.
 Looks after which the robot stays change nothing and are not expanded; states already
 seen (same positions and pending paths) are not expanded twice.  Exhaustive up to
 ``max_depth`` actions and ``max_nodes`` states; beyond, random ASYNC restarts (seeded)
@@ -14,6 +17,7 @@ from __future__ import annotations
 
 import copy
 from collections import deque
+from itertools import combinations
 from fractions import Fraction
 
 from .invariants import Checker, Violation
@@ -27,6 +31,12 @@ def _key(world: World):
 
 
 def _children(world: World):
+    busy = world.busy()
+    if len(busy) >= 2:
+        groups = [tuple(busy)] + [c for c in combinations(busy, 2) if len(busy) > 2]
+        for group in groups:
+            for stop in (None, "1/2"):
+                yield {"a": "step", "moves": [[i, stop, False] for i in group]}
     for i, rob in enumerate(world.robots):
         if rob.busy:
             yield {"a": "advance", "robot": i, "stop": None, "end": False}
@@ -44,6 +54,9 @@ def _apply(world: World, act) -> bool:
     try:
         if act["a"] == "look":
             world.look(act["robot"], Frame.from_list(act["frame"]))
+        elif act["a"] == "step":
+            world.advance_together([(i, None if stop is None else Fraction(stop), end)
+                                    for i, stop, end in act["moves"]])
         else:
             stop = None if act["stop"] is None else Fraction(act["stop"])
             world.advance(act["robot"], stop, act["end"])
@@ -70,7 +83,7 @@ def exhaustive(points, settings: dict, max_depth: int = 8, max_nodes: int = 1500
         for act in _children(world):
             nodes += 1
             child = copy.deepcopy(world)
-            was_busy = child.robots[act["robot"]].busy
+            was_busy = act["a"] == "step" or child.robots[act["robot"]].busy
             try:
                 if not _apply(child, act):
                     continue

@@ -11,11 +11,18 @@ plain data (Pactole's demon):
 * ``advance(i, stop, end)`` -- robot i moves along the current piece of its path to the
   piece's end, or to the rational fraction ``stop`` of it (non-rigid); ``end``: the
   adversary ends the move there (non-rigid, allowed once the straight distance from the
-  move's start is at least delta, which is never more than the distance travelled).
+  move's start is at least delta, which is never more than the distance travelled);
+* ``step([(i, stop, end), ...])`` -- several robots move at once over one common time
+  interval [0, 1], each along its own current piece at its own speed (robot i is at
+  ``piece_i.at(tau * stop_i)`` at time tau), the others stand still.
 
-Moves happen one robot at a time (an interleaving of the continuous motions): between
-two advances a snapshot sees robots part-way along their paths.  Collisions along each
-piece are decided exactly (:mod:`.geometry`).
+Between two actions time is continuous; a Look happens at an action boundary and sees
+every robot where it is at that instant, the moving ones part-way along their paths.  An
+ASYNC run is the sequence of intervals between consecutive Looks and stops: each is one
+``step`` of the robots that move during it (a busy robot left out waits or is slow).
+Collisions are decided exactly over the whole interval (:mod:`.geometry`): a mover
+against every robot standing still, and every two movers against each other
+(``geometry.joint_motion_overlap``: a polynomial in tau, its roots isolated exactly).
 """
 
 from __future__ import annotations
@@ -29,6 +36,7 @@ from flint import fmpq
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .corrected import decide_for
+from .invariants import Violation
 from .robot import Readings
 
 
@@ -198,5 +206,86 @@ class World:
                 self.checker.after_arrival(self, i)
             rob.role, rob.look_index, rob.target = None, None, None
 
+    def advance_together(self, moves):
+        """Several robots move at once: ``moves`` is ``[(robot, stop, end), ...]`` with
+        the meaning of :meth:`advance` for each; they move over one common time interval
+        (robot i at ``piece_i.at(tau)`` of its part ``piece_i`` at time tau).  One
+        robot: exactly :meth:`advance`."""
+        moves = [(int(i), stop, bool(end)) for i, stop, end in moves]
+        if len({i for i, _, _ in moves}) != len(moves) or not moves:
+            raise ValueError("a step names each moving robot once, and at least one")
+        if len(moves) == 1:
+            return self.advance(*moves[0])
+        for i, _, end in moves:
+            if not self.robots[i].busy:
+                raise ValueError(f"robot {i} has no pending move")
+            if end and self.rigid:
+                raise ValueError("a rigid move cannot be stopped early")
+        self.events += 1
+        done = {}
+        for i, stop, end in moves:
+            rob = self.robots[i]
+            piece = rob.path[0]
+            if stop is not None and 0 < stop < 1:
+                done[i], rest = piece.split(MQ.rational(stop))
+                new = list(rob.path)
+                new[0] = rest
+            else:
+                done[i], new = piece, rob.path[1:]
+            if end and (g.dist2(rob.start, done[i].final) -
+                        MQ.rational(self.delta) ** 2).sign() < 0:
+                raise ValueError(f"robot {i} cannot be stopped before delta")
+            done[i] = (done[i], [] if end else new)
+        for i, (piece, rest) in done.items():
+            rob = self.robots[i]
+            rob.pos, rob.path = piece.final, rest
+            self.log.append(Step(self.events, i, "advance", (piece,)))
+        if self.checker is not None and "I1" in self.checker.enabled:
+            self._joint_collision({i: d for i, (d, _) in done.items()})
+        if self.checker is not None:
+            # the other invariants at the interval's end, a real instant: a zero-length
+            # piece there (each mover's own piece would be checked against the others'
+            # end positions, a configuration that never existed)
+            for i in done:
+                pos = self.robots[i].pos
+                self.checker.after_advance(self, i, g.Segment(pos, pos))
+        for i in done:
+            rob = self.robots[i]
+            if not rob.path:
+                if self.checker is not None:
+                    self.checker.after_arrival(self, i)
+                rob.role, rob.look_index, rob.target = None, None, None
+
+    def _joint_collision(self, pieces: dict):
+        """I1 over one interval of simultaneous motion, exact: each mover's piece against
+        every robot standing still, each two movers by their joint motion."""
+        t = self.events
+        movers = sorted(pieces)
+        self.checker.counts["I1"] += len(movers)
+        for i in movers:
+            for k, other in enumerate(self.robots):
+                if k not in pieces and g.piece_hits(pieces[i], other.pos):
+                    raise Violation("I1", t, sorted((i, k)), f"robot {i} moving "
+                                    f"{_piece_text(pieces[i])} comes closer than 2 to robot "
+                                    f"{k} at {g.fmt_point(other.pos)}")
+        for x, i in enumerate(movers):
+            for k in movers[x + 1:]:
+                tau = g.joint_motion_overlap(pieces[i], pieces[k])
+                if tau is not None:
+                    p, q = pieces[i].at(MQ.rational(tau)), pieces[k].at(MQ.rational(tau))
+                    raise Violation("I1", t, [i, k], f"robots {i} and {k} move at once "
+                                    f"(robot {i} {_piece_text(pieces[i])}, robot {k} "
+                                    f"{_piece_text(pieces[k])}); at time {tau} of the "
+                                    f"interval robot {i} is at {g.fmt_point(p)}, robot {k} "
+                                    f"at {g.fmt_point(q)}: squared distance "
+                                    f"{g.dist2(p, q).text()} < 4")
+
     def busy(self) -> list:
         return [i for i, r in enumerate(self.robots) if r.busy]
+
+
+def _piece_text(piece) -> str:
+    if isinstance(piece, g.Segment):
+        return f"along the segment {g.fmt_point(piece.start)} -> {g.fmt_point(piece.end)}"
+    return (f"along the arc about {g.fmt_point(piece.centre)} from {g.fmt_point(piece.start)} "
+            f"to {g.fmt_point(piece.end)}")

@@ -1,0 +1,269 @@
+"""Simultaneous motion in continuous time: two discs moving at once (the exact predicate),
+joint steps of the world (I1 between movers, the other invariants at the interval's end),
+the schedulers moving their movers together, traces with joint steps, and the search."""
+
+from fractions import Fraction as F
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from exactsym.exact.multiquadratic import MQ
+from exactsym.gathering import geometry as g
+from exactsym.gathering.invariants import ALL, Checker, Violation
+from exactsym.gathering.robot import Readings
+from exactsym.gathering.schedulers import run
+from exactsym.gathering.world import World
+
+P = g.point
+ONE_CIRCLE = [(20, 0), (0, 20), (-20, 0), (0, -20), (12, 16)]
+#: the invariants with which two leaders of opposite handedness get to move at once
+NO_I2_I9 = sorted(set(ALL) - {"I2", "I9"})
+
+
+def seg(a, b):
+    return g.Segment(P(*a), P(*b))
+
+
+def dist2_at(p1, p2, tau):
+    t = MQ.rational(tau)
+    return g.dist2(p1.at(t), p2.at(t))
+
+
+# -- the predicate ---------------------------------------------------------------------
+def test_crossing_movers_meet_in_the_middle():
+    """Two robots crossing at right angles: any order of full moves is free, together
+    they meet at the crossing at time 1/2."""
+    a, b = seg((0, -5), (0, 5)), seg((-5, 0), (5, 0))
+    assert g.joint_motion_overlap(a, b) == F(1, 2)
+    for p in (a.start, a.end):                 # one robot still at an end: free
+        assert not g.piece_hits(b, p)
+    # the same two paths with robot b starting later (its first half only): free
+    assert g.joint_motion_overlap(seg((0, -5), (0, 5)), seg((-5, 0), (-3, 0))) is None
+
+
+def test_touching_all_along_and_following_are_allowed():
+    assert g.joint_motion_overlap(seg((0, 0), (10, 0)), seg((0, 2), (10, 2))) is None
+    assert g.joint_motion_overlap(seg((0, 0), (10, 0)), seg((-3, 0), (7, 0))) is None
+    assert g.joint_motion_overlap(seg((0, 0), (10, 0)), seg((0, 3), (10, 3))) is None
+    # the follower is faster: it catches up at time 1/2 (squared distance 1/4 then)
+    tau = g.joint_motion_overlap(seg((0, 0), (10, 0)), seg((-3, 0), (9, 0)))
+    assert tau is not None and dist2_at(seg((0, 0), (10, 0)), seg((-3, 0), (9, 0)), tau) < 4
+
+
+def test_arcs_sliding_towards_each_other():
+    """Two quarter arcs of radius 4 about the origin, one counter-clockwise from (4, 0),
+    the other clockwise from (0, 4): they meet on the diagonal at time 1/2."""
+    up = g.Arc(P(0, 0), P(4, 0), P(0, 4), 1)
+    down = g.Arc(P(0, 0), P(0, 4), P(4, 0), -1)
+    assert g.joint_motion_overlap(up, down) == F(1, 2)
+    # the same sense of turning, a quarter turn apart: always 4 sqrt(2) apart
+    ahead = g.Arc(P(0, 0), P(0, 4), P(-4, 0), 1)
+    assert g.joint_motion_overlap(up, ahead) is None
+    # an arc against a segment crossing its chord
+    assert g.joint_motion_overlap(up, seg((0, 4), (4, 0))) == F(1, 2)
+    assert g.joint_motion_overlap(up, seg((0, -4), (4, -8))) is None
+
+
+def test_irrational_contact_instants_are_isolated_exactly():
+    """Contact at tau = 1 - 1/(10 sqrt 2) (both heading for the origin): the witness is
+    a rational instant after it, and no rational instant before it overlaps."""
+    a, b = seg((-20, 0), (0, 0)), seg((0, -20), (0, 0))
+    tau = g.joint_motion_overlap(a, b)
+    assert tau == F(14, 15) and dist2_at(a, b, tau) == MQ.rational(F(32, 9))
+    assert dist2_at(a, b, F(13, 14)) > 4         # 13/14 < 1 - 1/(10 sqrt 2) < 14/15
+
+
+def test_radical_coordinates_go_through_the_norm():
+    """A piece with coordinates in Q(sqrt 2): the polynomial's coefficients are
+    irrational and the roots come from its rational norm."""
+    s2 = MQ.sqrt(2)
+    arc = g.Arc(P(0, 0), (s2 * 2, s2 * 2), P(0, 4), 1)       # radius 4, 45 -> 90 degrees
+    f = g.joint_gap_polynomial(arc, seg((0, 4), (3, 3)))
+    assert any(not c.is_rational() for c in f)
+    tau = g.joint_motion_overlap(arc, seg((0, 4), (3, 3)))
+    assert tau is not None and dist2_at(arc, seg((0, 4), (3, 3)), tau) < 4
+    assert g.joint_motion_overlap(arc, seg((s2 * 5, MQ()), (s2 * 5, s2 * 5))) is None
+
+
+def _pythagorean(t):
+    return ((1 - t * t) / (1 + t * t), 2 * t / (1 + t * t))
+
+
+@st.composite
+def pieces(draw):
+    c = (draw(st.integers(-6, 6)), draw(st.integers(-6, 6)))
+    if draw(st.booleans()):
+        return seg(c, (draw(st.integers(-6, 6)), draw(st.integers(-6, 6))))
+    r = draw(st.integers(1, 6))
+    t0 = F(draw(st.integers(-9, 9)), draw(st.integers(1, 5)))
+    k = F(draw(st.integers(-5, 5).filter(bool)), 5)           # at most a quarter turn
+    u = _pythagorean(t0)
+    start = (c[0] + r * u[0], c[1] + r * u[1])
+    cs, sn = _pythagorean(k)
+    v = (r * u[0], r * u[1])
+    end = (c[0] + v[0] * cs - v[1] * sn, c[1] + v[0] * sn + v[1] * cs)
+    return g.Arc(P(*c), P(*start), P(*end), 1 if k > 0 else -1)
+
+
+@settings(max_examples=60, deadline=None)
+@given(pieces(), pieces())
+def test_overlap_verdict_agrees_with_exact_samples_and_is_symmetric(p1, p2):
+    """A witness instant is an overlap; no verdict: no rational sample overlaps; the
+    verdict does not depend on the order of the two robots."""
+    tau = g.joint_motion_overlap(p1, p2)
+    assert (tau is None) == (g.joint_motion_overlap(p2, p1) is None)
+    if tau is not None:
+        assert 0 <= tau <= 1 and dist2_at(p1, p2, tau) < 4
+    else:
+        assert all(dist2_at(p1, p2, F(j, 40)) >= 4 for j in range(41))
+
+
+@settings(max_examples=30, deadline=None)
+@given(pieces(), pieces(), st.integers(-9, 9), st.integers(-9, 9),
+       st.sampled_from([F(0), F(1, 2), F(-3), F(2, 7)]))
+def test_overlap_verdict_is_invariant_under_a_rigid_motion(p1, p2, dx, dy, t):
+    """A Pythagorean rotation and a translation applied to both paths change nothing."""
+    cs, sn = (MQ.rational(x) for x in _pythagorean(t))
+
+    def move(p):
+        return (p[0] * cs - p[1] * sn + dx, p[0] * sn + p[1] * cs + dy)
+
+    def moved(pc):
+        if isinstance(pc, g.Segment):
+            return g.Segment(move(pc.start), move(pc.end))
+        return g.Arc(move(pc.centre), move(pc.start), move(pc.end), pc.sense)
+    assert (g.joint_motion_overlap(p1, p2) is None) == \
+        (g.joint_motion_overlap(moved(p1), moved(p2)) is None)
+
+
+# -- the world -------------------------------------------------------------------------
+SQUARE = [(0, 0), (4, 0), (4, 4), (0, 4), (30, 30)]
+
+
+def _square_world(checker):
+    """Four robots on a square of side 4, each about to move to the next corner."""
+    w = World(SQUARE, checker=checker)
+    for i in range(4):
+        rob = w.robots[i]
+        rob.path, rob.start = [g.Segment(rob.pos, w.robots[(i + 1) % 4].pos)], rob.pos
+    return w
+
+
+def test_a_cyclic_shift_is_free_together_and_collides_one_at_a_time():
+    """Moving together (closest approach 2 sqrt 2) is free; every interleaving of full
+    moves puts the first robot onto an occupied corner."""
+    w = _square_world(Checker(enabled=frozenset({"I1"})))
+    w.advance_together([(i, None, False) for i in range(4)])
+    assert w.positions()[:4] == tuple(P(*p) for p in SQUARE[1:4] + SQUARE[:1])
+    assert w.checker.counts["I1"] >= 4 and w.events == 1 and not w.busy()
+    w = _square_world(Checker(enabled=frozenset({"I1"})))
+    with pytest.raises(Violation) as err:
+        w.advance(0)
+    assert err.value.invariant == "I1" and err.value.robots == (0, 1)
+
+
+def test_joint_step_fires_between_movers_with_an_exact_instant():
+    w = World([(0, -5), (-5, 0), (20, 20), (-20, 20), (20, -20)],
+              checker=Checker(enabled=frozenset({"I1"})))
+    for i, goal in ((0, (0, 5)), (1, (5, 0))):
+        rob = w.robots[i]
+        rob.path, rob.start = [g.Segment(rob.pos, P(*goal))], rob.pos
+    with pytest.raises(Violation) as err:
+        w.advance_together([(0, None, False), (1, None, False)])
+    v = err.value
+    assert v.invariant == "I1" and v.label == "gather-no-obstacle" and v.robots == (0, 1)
+    assert "at time 1/2" in v.witness and "squared distance 0" in v.witness
+
+
+def test_joint_step_checks_each_mover_against_robots_standing_still():
+    w = World([(0, -5), (-5, 0), (1, 0), (-20, 20), (20, -20)],
+              checker=Checker(enabled=frozenset({"I1"})))
+    for i, goal in ((0, (0, -9)), (1, (-5, 9))):
+        rob = w.robots[i]
+        rob.path, rob.start = [g.Segment(rob.pos, P(*goal))], rob.pos
+    w.advance_together([(0, None, False), (1, None, False)])       # both away: free
+    w = World([(0, -5), (-5, 0), (1, 0), (-20, 20), (20, -20)],
+              checker=Checker(enabled=frozenset({"I1"})))
+    for i, goal in ((0, (0, -9)), (1, (5, 0))):
+        rob = w.robots[i]
+        rob.path, rob.start = [g.Segment(rob.pos, P(*goal))], rob.pos
+    with pytest.raises(Violation) as err:
+        w.advance_together([(0, None, False), (1, None, False)])
+    assert err.value.robots == (1, 2)
+
+
+def test_a_look_after_a_partial_joint_step_sees_both_movers_part_way():
+    w = _square_world(Checker(enabled=frozenset({"I1"})))
+    pieces = [w.robots[i].path[0] for i in range(4)]
+    w.advance_together([(0, F(1, 2), False), (2, F(1, 4), False)])
+    half = MQ.rational(F(1, 2))
+    assert w.robots[0].pos == pieces[0].at(half) == P(2, 0)
+    assert w.robots[2].pos == pieces[2].at(MQ.rational(F(1, 4))) == P(3, 4)
+    assert w.robots[1].pos == P(4, 0) and w.robots[0].path[0].start == P(2, 0)
+    assert sorted(w.busy()) == [0, 1, 2, 3]
+
+
+def test_bad_joint_steps_are_refused():
+    w = _square_world(Checker(enabled=frozenset({"I1"})))
+    with pytest.raises(ValueError):
+        w.advance_together([(0, None, False), (0, None, False)])
+    with pytest.raises(ValueError):
+        w.advance_together([(0, None, False), (4, None, False)])     # robot 4 is idle
+    with pytest.raises(ValueError):
+        w.advance_together([(0, F(1, 2), True), (1, None, False)])   # rigid: no end
+    w = World(SQUARE, rigid=False, delta=F(3), checker=Checker(enabled=frozenset({"I1"})))
+    for i, goal in ((0, (-8, 0)), (1, (4, -8))):
+        rob = w.robots[i]
+        rob.path, rob.start = [g.Segment(rob.pos, P(*goal))], rob.pos
+    with pytest.raises(ValueError):                                   # 1/4 of 8 < delta
+        w.advance_together([(0, F(1, 4), True), (1, None, False)])
+
+
+# -- schedulers, traces, search -----------------------------------------------------------
+def test_synchronous_leaders_of_both_handednesses_collide_and_replay(tmp_path):
+    from exactsym.gathering.trace import read_trace, replay, same_result, write_trace
+    settings_ = {"scheduler": "ssync", "seed": 6, "invariants": NO_I2_I9}
+    res = run(ONE_CIRCLE, "ssync", 6, Readings(), checker=Checker(enabled=frozenset(NO_I2_I9)))
+    assert res.outcome == "violated" and res.violation["invariant"] == "I1"
+    assert res.violation["robots"] == [2, 3] and "time 14/15" in res.violation["witness"]
+    assert [a["a"] for a in res.actions][-1] == "step"
+    path = tmp_path / "t.json"
+    write_trace(path, ONE_CIRCLE, res, {**settings_, "readings": Readings().as_dict()})
+    data = read_trace(path)
+    assert same_result(data["result"], replay(data)) == []
+    data["actions"][-1]["moves"][0][1] = "1/2"                # robot 2 stops half-way
+    assert same_result(data["result"], replay(data)) != []
+    # under EL=unordered both handednesses elect one robot: nobody collides
+    res = run(ONE_CIRCLE, "ssync", 6, Readings(EL="unordered"),
+              checker=Checker(enabled=frozenset(NO_I2_I9)))
+    assert res.label != "gather-no-obstacle"
+
+
+@pytest.mark.parametrize("scheduler", ["fsync", "ssync", "async"])
+def test_one_mover_at_a_time_never_makes_a_joint_step(scheduler):
+    """The corrected variant has one mover at a time: no ``step`` action appears, the
+    run is the interleaving schedulers' run."""
+    res = run([(0, 0), (7, 1), (-6, 5), (2, -9), (11, 8)], scheduler, 2,
+              algorithm="corrected", max_events=400)
+    assert res.outcome == "gathered"
+    assert all(a["a"] != "step" for a in res.actions)
+
+
+def test_async_lets_busy_robots_move_together():
+    res = run(ONE_CIRCLE, "async", 5, Readings(), checker=Checker(enabled=frozenset(NO_I2_I9)))
+    assert res.violation["invariant"] == "I1" and res.violation["robots"] == [2, 3]
+    step = [a for a in res.actions if a["a"] == "step"][-1]
+    assert sorted(m[0] for m in step["moves"]) == [2, 3]
+
+
+def test_search_finds_the_simultaneous_overlap_first():
+    """Two Looks in the two handednesses, then one joint step: three actions (one at a
+    time, the shortest collision needs four)."""
+    from exactsym.gathering.search import exhaustive
+    settings_ = {"readings": Readings().as_dict(), "invariants": NO_I2_I9,
+                 "rigid": True, "delta": None, "max_events": 50}
+    found = exhaustive(ONE_CIRCLE, settings_, max_depth=4)
+    assert [a["a"] for a in found] == ["look", "look", "step"]
+    assert sorted(m[0] for m in found[-1]["moves"]) == [2, 3]
+    assert exhaustive(ONE_CIRCLE, settings_, max_depth=2) is None
