@@ -62,17 +62,15 @@ def test_printed_numbers_read_back(kind):
             return                                  # e.g. a power of zero with exponent < 0
         assert same_value(tree, expression_text(tree))
         printed = number_text(value)
-        # known limit: a nested radical is written in the power basis of a primitive element,
-        # whose text can exceed the parser's 10,000 characters (test_long_nested_text below)
-        # (and a sum of many cos/sin terms of large denominators can do the same)
+        # known limit: a sum of many cos/sin terms of large denominators can exceed the
+        # parser's 10,000 characters (nested radicals no longer do: test_long_nested_text)
         assume(len(printed) <= MAX_LENGTH)
         assert same_value(tree, printed)
     law()
 
 
-@pytest.mark.xfail(strict=True, reason="nested radicals print in a primitive element's power "
-                   "basis; a tower of quadratic extensions would print them compactly")
 def test_long_nested_text():
+    # nested radicals print as a tower of quadratic extensions, a + b*sqrt(radicand)
     tree = parse_expression("sqrt(5 + sqrt(2/3)*sqrt(2/3)) + sqrt(sqrt(sqrt(1/2)))")
     _, (value,) = evaluate_all([tree])
     assert len(number_text(value)) <= MAX_LENGTH
