@@ -133,8 +133,10 @@ class Tower:
             return _make(lev, self.mul(x[1], y), self.mul(x[2], y))
         xa, xb, ya, yb = x[1], x[2], y[1], y[2]
         r = self.radicands[lev - 1]
-        return _make(lev, add(self.mul(xa, ya), self.mul(r, self.mul(xb, yb))),
-                     add(self.mul(xa, yb), self.mul(xb, ya)))
+        low, high = self.mul(xa, ya), self.mul(xb, yb)
+        # Karatsuba: three products of the level below instead of four
+        mixed = sub(sub(self.mul(add(xa, xb), add(ya, yb)), low), high)
+        return _make(lev, add(low, self.mul(r, high)), mixed)
 
     def inverse(self, x):
         if isinstance(x, MQ):
