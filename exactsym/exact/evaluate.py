@@ -7,8 +7,10 @@ configuration once and picks the smallest machinery that holds them all:
    numbers are ``fmpq``;
 2. **Q(zeta_M)** when the irrational parts are square roots of rationals and
    cosines/sines of rational multiples of pi (:mod:`.cyclotomic`);
-3. otherwise (nested radicals) a field Q(theta) built once with sympy's
-   ``primitive_element`` (:mod:`.general`).
+3. nested radicals of square roots: a tower of quadratic extensions over the
+   multiquadratic field of the square roots, built lazily (:mod:`.tower`);
+4. otherwise (nested radicals mixed with cos/sin) a field Q(theta) built once with
+   sympy's ``primitive_element`` (:mod:`.general`).
 
 Every evaluation error a user can cause (division by zero, the root of a
 negative number, a field too large) is an :class:`ExpressionError` carrying the
