@@ -146,6 +146,32 @@ class Tower:
         n_inv = self.inverse(norm)
         return _make(lev, self.mul(a, n_inv), neg(self.mul(b, n_inv)))
 
+    def divide(self, x, y):
+        """x / y (y != 0) as x conj(y) / N(y), the norm N(y) = a^2 - r b^2 one level down,
+        recursively: the big denominator appears once, at the end, instead of in every
+        coefficient of 1/y (which then multiplies x)."""
+        return self._divide(x, y, {})
+
+    def _divide(self, x, y, cache):
+        if isinstance(y, MQ):
+            if y.is_rational():
+                return self.mul(x, MQ.rational(1 / y.to_fmpq()))
+            inv = cache.get(y)
+            if inv is None:
+                inv = cache[y] = y.inverse()
+            return self.mul(x, inv)
+        lev = y[0]
+        top = level(x)
+        if top > lev:       # (xa + xb y_top) / y = xa / y + (xb / y) y_top
+            return _make(top, self._divide(x[1], y, cache), self._divide(x[2], y, cache))
+        entry = cache.get(y)
+        if entry is None:
+            a, b = y[1], y[2]
+            norm = sub(self.mul(a, a), self.mul(self.radicands[lev - 1], self.mul(b, b)))
+            entry = cache[y] = ((lev, a, neg(b)), norm)
+        conj, norm = entry
+        return self._divide(self.mul(x, conj), norm, cache)
+
     def ball(self, x, prec: int) -> arb:
         if isinstance(x, MQ):
             return x.to_arb(prec)
@@ -349,12 +375,11 @@ class TowerElement(FieldElement):
             return NotImplemented
         if _is_zero(o):
             raise ZeroDivisionError("division by zero")
-        return wrap(self.tower, self.tower.mul(self.v, self.tower.inverse(o)))
+        return wrap(self.tower, self.tower.divide(self.v, o))
 
     def __rtruediv__(self, other):
         o = _raw(self.tower, other)
-        return NotImplemented if o is None else \
-            wrap(self.tower, self.tower.mul(o, self.tower.inverse(self.v)))
+        return NotImplemented if o is None else wrap(self.tower, self.tower.divide(o, self.v))
 
     def __pow__(self, k: int):
         if not isinstance(k, int):
