@@ -44,32 +44,42 @@ MAX_LEVELS = 12
 
 
 def level(v) -> int:
-    return 0 if isinstance(v, MQ) else v[0]
+    return v[0] if type(v) is tuple else 0
 
 
 def _split(v, lev: int):
-    return (v[1], v[2]) if level(v) == lev else (v, _ZERO)
+    return (v[1], v[2]) if type(v) is tuple and v[0] == lev else (v, _ZERO)
 
 
 def _make(lev: int, a, b):
-    return a if isinstance(b, MQ) and not b.terms else (lev, a, b)
+    return a if type(b) is not tuple and not b.terms else (lev, a, b)
 
 
 def _is_zero(v) -> bool:
-    return isinstance(v, MQ) and not v.terms
+    return type(v) is not tuple and not v.terms
 
 
 def add(x, y):
-    lx, ly = level(x), level(y)
-    if lx == 0 and ly == 0:
-        return x + y
-    lev = max(lx, ly)
-    (xa, xb), (ya, yb) = _split(x, lev), _split(y, lev)
-    return _make(lev, add(xa, ya), add(xb, yb))
+    # hot: type tests instead of level() calls; adding a lower level touches only the a part
+    tx, ty = type(x) is tuple, type(y) is tuple
+    if not tx:
+        if not ty:
+            return x + y
+        return (y[0], add(x, y[1]), y[2]) if x.terms else y
+    if not ty:
+        return (x[0], add(x[1], y), x[2]) if y.terms else x
+    lx, ly = x[0], y[0]
+    if lx == ly:
+        b = add(x[2], y[2])
+        return add(x[1], y[1]) if type(b) is not tuple and not b.terms else \
+            (lx, add(x[1], y[1]), b)
+    if lx > ly:
+        return (lx, add(x[1], y), x[2])
+    return (ly, add(x, y[1]), y[2])
 
 
 def neg(x):
-    return -x if isinstance(x, MQ) else (x[0], neg(x[1]), neg(x[2]))
+    return (x[0], neg(x[1]), neg(x[2])) if type(x) is tuple else -x
 
 
 def sub(x, y):
@@ -123,14 +133,23 @@ class Tower:
 
     # -- arithmetic on raw values --------------------------------------------
     def mul(self, x, y):
-        lx, ly = level(x), level(y)
-        if lx == 0 and ly == 0:
-            return x * y
-        lev = max(lx, ly)
-        if lx < lev:                        # a scalar of the level below: no y^2 term
-            return _make(lev, self.mul(x, y[1]), self.mul(x, y[2]))
-        if ly < lev:
-            return _make(lev, self.mul(x[1], y), self.mul(x[2], y))
+        tx, ty = type(x) is tuple, type(y) is tuple
+        if not tx:
+            if not ty:
+                return x * y
+            if not x.terms:
+                return _ZERO
+            return (y[0], self.mul(x, y[1]), self.mul(x, y[2]))   # a scalar of a lower level
+        if not ty:
+            if not y.terms:
+                return _ZERO
+            return (x[0], self.mul(x[1], y), self.mul(x[2], y))
+        lx, ly = x[0], y[0]
+        if lx > ly:
+            return (lx, self.mul(x[1], y), self.mul(x[2], y))
+        if ly > lx:
+            return (ly, self.mul(x, y[1]), self.mul(x, y[2]))
+        lev = lx
         xa, xb, ya, yb = x[1], x[2], y[1], y[2]
         r = self.radicands[lev - 1]
         low, high = self.mul(xa, ya), self.mul(xb, yb)
