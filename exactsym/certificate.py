@@ -37,7 +37,8 @@ from . import checker
 from .configuration import Configuration
 from .exact import FieldElement
 from .exact.multiquadratic import MQ
-from .exact.tower import TowerElement, nonsquare_witness
+from .exact.tower import TowerElement
+from .exact.tower_proof import nonsquare_witness
 
 FORMAT = "exactsym-certificate"
 VERSION = 1

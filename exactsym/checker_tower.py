@@ -16,12 +16,12 @@ over K_(i-1), so this form is unique: == and hash decide equality of real number
 from __future__ import annotations
 
 from fractions import Fraction
-from math import gcd, isqrt
+from math import isqrt
 
 try:
-    from .checker_numbers import Invalid, Root, SquareRoots, frac, integer, need
+    from .checker_numbers import Invalid, Root, SquareRoots, integer, need
 except ImportError:     # run as a lone script: a sibling file
-    from checker_numbers import Invalid, Root, SquareRoots, frac, integer, need
+    from checker_numbers import Invalid, Root, SquareRoots, integer, need
 
 _ZERO = Root({})
 
@@ -247,4 +247,4 @@ class TNum:
         return self.f._sign(self.v)
 
 
-__all__ = ["Tower", "TNum", "gcd", "frac"]
+__all__ = ["Tower", "TNum"]

@@ -21,7 +21,8 @@ from exactsym.configuration import load
 from exactsym.errors import FieldTooLargeError, InputError
 from exactsym.exact import evaluate, evaluate_all, exact_key, number_text
 from exactsym.exact.multiquadratic import MQ
-from exactsym.exact.tower import TowerElement, nonsquare_witness
+from exactsym.exact.tower import TowerElement
+from exactsym.exact.tower_proof import nonsquare_witness
 from exactsym.expr import MAX_LENGTH, parse_expression
 
 P = parse_expression
