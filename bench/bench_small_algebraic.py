@@ -74,6 +74,30 @@ def inputs() -> dict[str, str]:
     out["denestable sqrt(3+2sqrt2)"] = _cartesian([("sqrt(3+2*sqrt(2))", "0"), ("1", "0")])
     out["rhombus sqrt(9+4sqrt2)"] = _polar([("sqrt(9+4*sqrt(2))", "0"), ("sqrt(9+4*sqrt(2))", "1/2"),
                                             ("3/2", "1/4"), ("3/2", "3/4")])
+    out.update(nested_inputs())
+    return out
+
+
+#: nested radicals of depth 2, 3 and 5 (issue 9: truth < 1 s, check < 5 s up to depth 3)
+NESTED = {2: ("sqrt(2+sqrt(3))", "sqrt(5-sqrt(2))"),
+          3: ("sqrt(2+sqrt(3+sqrt(5)))", "sqrt(7-sqrt(2+sqrt(3)))"),
+          5: ("sqrt(2+sqrt(3+sqrt(5+sqrt(7+sqrt(11)))))", "sqrt(3+sqrt(2))")}
+
+
+def nested_inputs() -> dict[str, str]:
+    """3 points and 100 points (a C4 set of 25 orbits, and the same with one point moved:
+    asymmetric) whose coordinates are small rational combinations of nested radicals."""
+    out = {}
+    for depth, (r1, r2) in NESTED.items():
+        out[f"nested depth {depth}, 3 pts"] = _cartesian([(r1, "0"), ("0", r2), ("1", "1")])
+        draw = random.Random(depth)
+        orbit = []
+        for _ in range(25):
+            a, b, c, d = (draw.randint(-9, 9) for _ in range(4))
+            x, y = f"{a} + {b or 1}*{r1}", f"{c} + {d or 1}*{r2}"
+            orbit += [(x, y), (f"-({y})", x), (f"-({x})", f"-({y})"), (y, f"-({x})")]
+        out[f"nested depth {depth}, 100 pts C4"] = _cartesian(orbit)
+        out[f"nested depth {depth}, 100 pts asym"] = _cartesian(orbit[:-1] + [("1/7", "2/7")])
     return out
 
 

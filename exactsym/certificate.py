@@ -37,6 +37,8 @@ from . import checker
 from .configuration import Configuration
 from .exact import FieldElement
 from .exact.multiquadratic import MQ
+from .exact.tower import TowerElement
+from .exact.tower_proof import nonsquare_witness
 
 FORMAT = "exactsym-certificate"
 VERSION = 1
@@ -89,9 +91,12 @@ class Encoder:
 
     def __init__(self, system, values):
         field = getattr(system, "field", None)
-        self.spec = self.radicands = None
+        self.spec = self.radicands = self.tower = None
         if all(not isinstance(v, FieldElement) or v.is_rational() for v in values):
             self.field = None                   # everything is rational: no field at all
+            return
+        if any(isinstance(v, TowerElement) for v in values):
+            self._tower(system.tower, values)   # nested radicals: a tower of quadratic fields
             return
         if field is None:                       # square roots of rationals (MQ elements):
             self._square_roots(values)          # written natively, no field embedding
@@ -113,6 +118,21 @@ class Encoder:
         self.field = None
         self.radicands = sorted(primes)
         self.spec = {"radicands": [str(p) for p in self.radicands]}
+
+    def _tower(self, tower, values):
+        """K_0 = Q(sqrt p) over the tower's base primes, then each level's radicand with a
+        homomorphism to F_p proving it a non-square in the field below (checker_tower)."""
+        levels = []
+        for i, r in enumerate(tower.radicands, start=1):
+            proof = nonsquare_witness(tower, i)
+            if proof is None:
+                raise CertificateError(f"no prime below 200000 proves the radicand of level {i} "
+                                       f"of {tower.name} a non-square; cannot certify")
+            p, base, roots = proof
+            levels.append({"radicand": _tower_text(r), "prime": p,
+                           "base": [str(s) for s in base], "roots": [str(t) for t in roots]})
+        self.field, self.tower = None, tower
+        self.spec = {"tower": {"radicands": [str(p) for p in tower.primes], "levels": levels}}
 
     # -- the real subfield of Q(zeta_M)
     def _cyclotomic(self, field):
@@ -192,6 +212,9 @@ class Encoder:
         return result
 
     def text(self, x):
+        if self.tower is not None:
+            return _tower_text(x.v if isinstance(x, TowerElement) else
+                               x if isinstance(x, MQ) else MQ.rational(x))
         if self.radicands is not None:
             if isinstance(x, MQ):
                 if x.is_rational():
@@ -204,6 +227,16 @@ class Encoder:
         if value.degree() <= 0:
             return rational_text(value.coeffs()[0] if value.degree() == 0 else 0)
         return [rational_text(c) for c in value.coeffs()]
+
+
+def _tower_text(v):
+    """A raw tower value (exact/tower.py) in the certificate: a rational, {m: c} in the base,
+    or [i, a, b] = a + b y_i."""
+    if isinstance(v, MQ):
+        if v.is_rational():
+            return rational_text(v.to_fmpq())
+        return {str(m): rational_text(c) for m, c in sorted(v.terms.items())}
+    return [v[0], _tower_text(v[1]), _tower_text(v[2])]
 
 
 def _square_root_proof(field) -> dict | None:

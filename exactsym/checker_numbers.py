@@ -338,7 +338,9 @@ def sgn(v) -> int:
     """The sign of a number (den > 0, so an element has the sign of its numerator)."""
     if isinstance(v, Alg):
         return v.f.sign(v.c)
-    return v.sign() if isinstance(v, Root) else (v > 0) - (v < 0)
+    if isinstance(v, Root) or hasattr(v, "f") and hasattr(v, "sign"):   # a tower's TNum too
+        return v.sign()
+    return (v > 0) - (v < 0)
 
 
 # ------------------------------------------------------------------ square roots, natively
@@ -464,4 +466,15 @@ class Root:
 
 def number_field(spec: dict):
     """The field of a certificate: square roots natively, or Q(theta)."""
+    if "tower" in spec:
+        return tower_field(spec["tower"])
     return SquareRoots(spec) if "radicands" in spec else Field(spec)
+
+
+def tower_field(spec: dict):
+    """Nested radicals: a tower of quadratic extensions (exactsym.checker_tower)."""
+    try:
+        from .checker_tower import Tower
+    except ImportError:     # run as a lone script: a sibling file
+        from checker_tower import Tower
+    return Tower(spec)

@@ -84,7 +84,7 @@ CASES = {
     "chiral-c3-sqrt3": (CHIRAL_C3, "C3", False, "cartesian", "radicands"),
     "sqrt2-sqrt3": ("0 0\nsqrt(2) 0\n0 sqrt(3)\n1 1\n", "C1", True, "cartesian",
                     "radicands"),
-    "nested-radical": ("0 0\nsqrt(1+sqrt(2)) 0\n1 1\n", "C1", True, "cartesian", "prime"),
+    "nested-radical": ("0 0\nsqrt(1+sqrt(2)) 0\n1 1\n", "C1", True, "cartesian", "tower"),
     "d7-polar": (polar_lines((1, [f"{j}/7" for j in range(7)])), "D7", False, "polar", None),
     "d7-polar-two-rings": (polar_lines((3, [f"{j}/7" for j in range(7)]),
                                        (1, [f"{2 * j + 1}/14" for j in range(7)]), (0, ["0"])),
@@ -115,7 +115,8 @@ def test_round_trip(tmp_path, name):
                              "leader": truth.leader}
     assert cert["configuration"]["coordinates"] == coordinates
     field = cert["configuration"]["field"]
-    kind = field and ("radicands" if "radicands" in field else field["irreducible"]["method"])
+    kind = field and ("radicands" if "radicands" in field else "tower" if "tower" in field
+                      else field["irreducible"]["method"])
     assert kind == method or (field is None and not method)
     proved = "ordering and leader" if orderable else "leader"
     assert verify(cert) == (True, f"group {group}, orderable {str(orderable).lower()}, {proved}")
@@ -364,8 +365,8 @@ def test_tampered_field(tmp_path):
     good["configuration"]["field"]["irreducible"] = {"method": "prime", "prime": 5}
     assert verify(rehash(good))[0]
     nested = base(tmp_path, "nested-radical")
-    nested["configuration"]["field"]["irreducible"]["prime"] = 2
-    caught(nested, "not irreducible modulo 2")
+    nested["configuration"]["field"]["tower"]["levels"][0]["prime"] = 2
+    caught(nested, "not an odd prime")
 
 
 def test_malformed_certificates(tmp_path):
@@ -454,7 +455,7 @@ def test_interval_must_isolate_one_root():
 
 # ------------------------------------------------------------------ the checker's parts
 CHECKER_MODULES = ("checker", "checker_numbers", "checker_groups", "checker_ordering",
-                   "checker_refutations")
+                   "checker_refutations", "checker_tower")
 
 
 def test_checker_imports_only_the_standard_library():

@@ -108,7 +108,8 @@ def _field_elements(texts):
 @settings(max_examples=80, deadline=None)
 @given(st.lists(st.tuples(st.integers(-6, 6), st.integers(-6, 6), st.integers(1, 4)),
                 min_size=2, max_size=8),
-       st.sampled_from(["sqrt(3+2*sqrt(2))", "sqrt(2+sqrt(3))", "sqrt(2)", "cos(2*pi/7)"]))
+       st.sampled_from(["sqrt(3+2*sqrt(2))", "sqrt(2+sqrt(3))", "sqrt(2)", "cos(2*pi/7)",
+                        "sqrt(2+sqrt(3+sqrt(5)))", "sqrt(sqrt(2))"]))
 def test_exact_key_is_injective(coeffs, generator):
     """For numbers a + b*g (g irrational) and plain rationals a/b, in one field:
     ``exact_key(x) == exact_key(y)`` iff ``x == y``.  Before the fix, a + b*theta and the

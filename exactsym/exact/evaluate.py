@@ -7,8 +7,10 @@ configuration once and picks the smallest machinery that holds them all:
    numbers are ``fmpq``;
 2. **Q(zeta_M)** when the irrational parts are square roots of rationals and
    cosines/sines of rational multiples of pi (:mod:`.cyclotomic`);
-3. otherwise (nested radicals) a field Q(theta) built once with sympy's
-   ``primitive_element`` (:mod:`.general`).
+3. nested radicals of square roots: a tower of quadratic extensions over the
+   multiquadratic field of the square roots, built lazily (:mod:`.tower`);
+4. otherwise (nested radicals mixed with cos/sin) a field Q(theta) built once with
+   sympy's ``primitive_element`` (:mod:`.general`).
 
 Every evaluation error a user can cause (division by zero, the root of a
 negative number, a field too large) is an :class:`ExpressionError` carrying the
@@ -21,7 +23,7 @@ import sys
 from fractions import Fraction
 from typing import Iterable, Sequence
 
-from flint import fmpq
+from flint import fmpq, fmpz
 
 from ..errors import ExpressionError, FieldTooLargeError
 from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
@@ -91,6 +93,46 @@ class MultiquadraticSystem:
         if isinstance(q, MQ):
             q = q.rational()
         return sqrt_rational(q)
+
+
+class TowerSystem:
+    """Nested radicals of square roots: a :class:`~.tower.Tower` of quadratic extensions over
+    the multiquadratic field of the configuration's square roots of rationals, built lazily
+    (a level only for a radicand that is not a square in the field below).  Numbers are
+    ``MQ`` (level 0) or :class:`~.tower.TowerElement`."""
+
+    field = None
+    atoms: dict = {}
+
+    def __init__(self, primes):
+        from .tower import Tower
+        self.tower = Tower(primes)
+
+    @property
+    def name(self) -> str:
+        return self.tower.name
+
+    @property
+    def degree(self) -> int:
+        return self.tower.degree
+
+    def coerce(self, value):
+        return value if isinstance(value, FieldElement) else MQ.coerce(as_fmpq(value))
+
+    def cos_turn(self, turn: fmpq):
+        value = rational_cos_turn(turn)
+        if value is None:
+            raise ValueError(f"cos of {turn} turn is not in a tower of square roots")
+        return MQ.rational(value)
+
+    def sin_turn(self, turn: fmpq):
+        return self.cos_turn(fmpq(1, 4) - turn)
+
+    def sqrt(self, x):
+        """The non-negative root of x >= 0 (a rational or a number of this tower)."""
+        from .tower import TowerElement, wrap
+        raw = x.v if isinstance(x, TowerElement) else self.coerce(x)
+        return wrap(self.tower, self.tower.sqrt(raw))
 
 
 class FieldSystem:
@@ -196,6 +238,9 @@ def _height_bits(x) -> int:
     if isinstance(x, MQ):
         coeffs = list(x.terms.values()) or [fmpq(0)]
         return max(int(c.p).bit_length() + int(c.q).bit_length() for c in coeffs)
+    if hasattr(x, "tower"):
+        from .tower import height_bits
+        return height_bits(x.v)
     if isinstance(x, FieldElement):
         coeffs = x.poly.coeffs() or [fmpq(0)]
         return max(int(c.p).bit_length() + int(c.q).bit_length() for c in coeffs)
@@ -249,6 +294,10 @@ def _evaluate(node: Node, system):
         return system.cos_turn(turn) if node.func == "cos" else system.sin_turn(turn)
     if isinstance(node, Sqrt):
         arg = _evaluate(node.arg, system)
+        if isinstance(system, TowerSystem):
+            if arg < 0:
+                raise ExpressionError("square root of a negative number", offset=node.offset)
+            return system.sqrt(arg)
         if isinstance(arg, FieldElement) and (not arg.is_rational()
                                               or ("nested", node) in system.atoms):
             if arg.sign() < 0:
@@ -305,6 +354,13 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
             raise FieldTooLargeError(
                 f"these numbers need the cyclotomic field Q(zeta_{conductor}) of degree {degree}, "
                 f"above the limit {cyclotomic.MAX_DEGREE}")
+    if all(kind != "cos" for kind, *_ in atoms):   # nested radicals of square roots only
+        primes: set = set()
+        for atom in atoms:
+            if atom[0] == "sqrt":
+                m = squarefree_split(int(atom[1].p) * int(atom[1].q))[1]
+                primes.update(int(p) for p, _ in fmpz(m).factor())
+        return TowerSystem(primes)
     from .general import general_system   # sympy is imported only for nested radicals
     return general_system(atoms)
 
@@ -322,5 +378,5 @@ def evaluate_all(exprs: Sequence[Node], turns: Sequence[fmpq] = ()):
         return system, [_evaluate(expr, system) for expr in exprs]
 
 
-__all__ = ["RationalSystem", "MultiquadraticSystem", "FieldSystem", "number_system", "evaluate", "evaluate_all",
+__all__ = ["RationalSystem", "MultiquadraticSystem", "TowerSystem", "FieldSystem", "number_system", "evaluate", "evaluate_all",
            "rational_cos_turn", "rational_sqrt", "normal_turn", "Fraction"]

@@ -14,10 +14,12 @@ from flint import fmpq
 
 from .field import FieldElement
 from .multiquadratic import MQ
+from .tower import TowerElement, key as tower_key
 
 
 _IRRATIONAL = "field"   # tag of an irrational element's key: no rational key starts with it
 _MULTIQUADRATIC = "sqrt"   # tag of an irrational multiquadratic element's key
+_TOWER = "tower"           # tag of a nested radical's key (tower of quadratic extensions)
 
 
 def exact_key(x):
@@ -28,7 +30,8 @@ def exact_key(x):
     ``("field", field, (p0, q0), (p1, q1), ...)``: its canonical coefficients in the
     field's power basis, behind a string tag and the field object itself (compared by
     identity), so it can equal neither a rational's pair nor a tuple of other keys nor
-    an element of another field.  (Keying coefficients bare made ``a + b*theta`` equal
+    an element of another field.  A tower element (level >= 1, :mod:`.tower`) keys as
+    ``("tower", tower, "level", i, key(a), key(b))``, its canonical form.  (Keying coefficients bare made ``a + b*theta`` equal
     to the rational ``a/b``: ``(fmpq(a), fmpq(b)) == (a, b)`` in Python.)
     """
     if isinstance(x, fmpq):
@@ -39,6 +42,8 @@ def exact_key(x):
             return (int(q.p), int(q.q))
         return (_MULTIQUADRATIC,) + tuple(sorted((m, int(c.p), int(c.q))
                                                  for m, c in x.terms.items()))
+    if isinstance(x, TowerElement):          # level >= 1: never rational, never an MQ
+        return (_TOWER, x.tower) + tower_key(x.v)
     if isinstance(x, FieldElement):
         if x.is_rational():
             q = x.rational()

@@ -1,0 +1,250 @@
+"""Nested radicals in the independent checker: a tower of quadratic extensions (standard
+library only; shares no code with the solver; see docs/certificates.md, "Towers").
+
+Field ``{"tower": {"radicands": [q_1, ...], "levels": [level_1, ...]}}``: K_0 = Q(sqrt q_1, ...)
+is the square-root field of :class:`checker_numbers.SquareRoots` (pairwise coprime integers
+> 1, none a square; the list may be empty: K_0 = Q), and K_i = K_(i-1)(y_i), y_i the positive
+square root of ``level_i["radicand"]`` = r_i, an element of K_(i-1) proved > 0 and NOT a square
+in K_(i-1) by ``level_i["prime"]`` p, ``"base"`` (a root of each q_j mod p) and ``"roots"``
+(a root of the image of each r_j, j < i): see :func:`Tower._prove`.
+
+Elements: a rational ``"p/q"``; ``{"P_S": c, ...}`` in K_0; ``[i, A, B]`` = A + B y_i with A, B
+elements of levels < i and B != 0.  Since each r_i is not a square, {1, y_i} is a basis of K_i
+over K_(i-1), so this form is unique: == and hash decide equality of real numbers.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from math import isqrt
+
+try:
+    from .checker_numbers import Invalid, Root, SquareRoots, integer, need
+except ImportError:     # run as a lone script: a sibling file
+    from checker_numbers import Invalid, Root, SquareRoots, integer, need
+
+_ZERO = Root({})
+
+
+def _level(v) -> int:
+    return 0 if isinstance(v, Root) else v[0]
+
+
+def _split(v, lev):
+    return (v[1], v[2]) if _level(v) == lev else (v, _ZERO)
+
+
+def _make(lev, a, b):
+    return a if isinstance(b, Root) and not b.t else (lev, a, b)
+
+
+def _add(x, y):
+    if isinstance(x, Root) and isinstance(y, Root):
+        return x + y
+    lev = max(_level(x), _level(y))
+    (xa, xb), (ya, yb) = _split(x, lev), _split(y, lev)
+    return _make(lev, _add(xa, ya), _add(xb, yb))
+
+
+def _neg(x):
+    return -x if isinstance(x, Root) else (x[0], _neg(x[1]), _neg(x[2]))
+
+
+def _is_prime(p: int) -> bool:
+    return p > 1 and all(p % d for d in range(2, isqrt(p) + 1))
+
+
+class Tower:
+    """The field of a ``"tower"`` spec: checks every level, then makes elements."""
+
+    def __init__(self, spec: dict):
+        need(isinstance(spec, dict) and isinstance(spec.get("radicands"), list)
+             and isinstance(spec.get("levels"), list) and spec["levels"],
+             "tower: radicands and a non-empty list of levels")
+        qs = spec["radicands"]
+        if qs:
+            self.base = SquareRoots({"radicands": qs})
+        else:
+            self.base = SquareRoots.__new__(SquareRoots)
+            self.base.radicands = []
+        self.r: list = []
+        self._balls: dict = {}
+        for i, lev in enumerate(spec["levels"], start=1):
+            need(isinstance(lev, dict), f"tower level {i}: not an object")
+            r = self._read(lev.get("radicand"), i - 1)
+            self._prove(i, r, lev)
+            self.r.append(r)
+            need(self._sign(r) > 0, f"tower level {i}: the radicand is not positive")
+
+    # -- elements -----------------------------------------------------------
+    def _read(self, value, top: int):
+        if isinstance(value, list):
+            need(len(value) == 3 and isinstance(value[0], int) and not isinstance(value[0], bool)
+                 and 1 <= value[0] <= top, f"tower element {value!r:.60}: bad level")
+            lev = value[0]
+            a, b = self._read(value[1], lev - 1), self._read(value[2], lev - 1)
+            need(not (isinstance(b, Root) and not b.t), "tower element with a zero y coefficient")
+            return (lev, a, b)
+        return self.base.num(value)
+
+    def num(self, value) -> "TNum":
+        return TNum(self, self._read(value, len(self.r)))
+
+    def mul(self, x, y):
+        if isinstance(x, Root) and isinstance(y, Root):
+            return x * y
+        lev = max(_level(x), _level(y))
+        (xa, xb), (ya, yb) = _split(x, lev), _split(y, lev)
+        cross = _add(self.mul(xa, yb), self.mul(xb, ya))
+        return _make(lev, _add(self.mul(xa, ya), self.mul(self.r[lev - 1], self.mul(xb, yb))),
+                     cross)
+
+    # -- signs: dyadic intervals [lo, hi] / 2^bits, bits doubled until 0 is excluded --------
+    def _interval(self, x, bits: int):
+        if isinstance(x, Root):
+            lo = hi = 0
+            for m, c in x.t.items():
+                s = isqrt(m << 2 * bits)
+                a, b = s, s + (s * s != m << 2 * bits)       # sqrt(m) 2^bits in [a, b]
+                p, q = c.numerator, c.denominator
+                ends = (p * a, p * b)
+                lo += min(ends) // q
+                hi += -(-max(ends) // q)
+            return lo, hi
+        lev, a, b = x
+        (alo, ahi), (blo, bhi) = self._interval(a, bits), self._interval(b, bits)
+        ylo, yhi = self._root_interval(lev, bits)
+        ends = (blo * ylo, blo * yhi, bhi * ylo, bhi * yhi)
+        return alo + (min(ends) >> bits), ahi - ((-max(ends)) >> bits)
+
+    def _root_interval(self, lev: int, bits: int):
+        key = (lev, bits)
+        if key not in self._balls:
+            lo, hi = self._interval(self.r[lev - 1], bits)
+            need(hi >= 0, "a tower radicand is negative")
+            self._balls[key] = (isqrt(max(lo, 0) << bits), isqrt(hi << bits) + 1)
+        return self._balls[key]
+
+    def _sign(self, x) -> int:
+        if isinstance(x, Root):
+            return x.sign()
+        bits = 64
+        while bits < 1 << 20:
+            lo, hi = self._interval(x, bits)
+            if lo > 0 or hi < 0:
+                return 1 if lo > 0 else -1
+            bits *= 2
+        raise Invalid("a sign could not be decided")
+
+    # -- the proof that r_i is not a square in K_(i-1) ---------------------------------
+    def _prove(self, i: int, r, lev: dict) -> None:
+        """Let R be the elements of K_(i-1) whose coefficients have denominators prime to p.
+        With p an odd prime dividing no q_j, every r_j (j < i) in R with N(r_j) a p-unit,
+        the discriminant of R over Z_(p) (a product of powers of 4 q_j and of N(4 r_j)) is a
+        p-unit, so R is integrally closed.  sqrt q_j -> base_j, y_j -> roots_j (checked:
+        base_j^2 = q_j, roots_j^2 = phi(r_j) mod p) defines a ring homomorphism phi: R -> F_p.
+        If r_i = z^2 in K_(i-1) with r_i in R, z is integral over R, so z is in R and
+        phi(r_i) = phi(z)^2 is a square mod p; it is checked to be a non-residue."""
+        p, base, roots = lev.get("prime"), lev.get("base"), lev.get("roots")
+        need(isinstance(p, int) and not isinstance(p, bool) and 2 < p < 1 << 40
+             and _is_prime(p), f"tower level {i}: {p!r} is not an odd prime below 2^40")
+        qs = self.base.radicands
+        need(isinstance(base, list) and len(base) == len(qs) and isinstance(roots, list)
+             and len(roots) == i - 1, f"tower level {i}: one root per base radicand and per "
+             "level below")
+        base = [integer(b) if isinstance(b, str) else b for b in base]
+        roots = [integer(t) if isinstance(t, str) else t for t in roots]
+        need(all(isinstance(v, int) and 0 <= v < p for v in base + roots),
+             f"tower level {i}: roots must be integers in [0, p)")
+        for q, s in zip(qs, base):
+            need(q % p != 0 and (s * s - q) % p == 0,
+                 f"tower level {i}: {s} is not a root of {q} modulo {p}, or p divides it")
+        base_map = dict(zip(qs, base))
+        for j, rj in enumerate(self.r):
+            need(all(c.denominator % p for c in _coefficients(rj)),
+                 f"tower level {i}: p divides a denominator of radicand {j + 1}")
+            n = self._norm(rj)
+            need(n.numerator % p and n.denominator % p,
+                 f"tower level {i}: p divides the norm of radicand {j + 1}")
+            need((roots[j] ** 2 - _image(rj, p, base_map, roots)) % p == 0,
+                 f"tower level {i}: {roots[j]} is not a root of radicand {j + 1} modulo {p}")
+        need(all(c.denominator % p for c in _coefficients(r)),
+             f"tower level {i}: p divides a denominator of the radicand")
+        value = _image(r, p, base_map, roots)
+        need(pow(value, (p - 1) // 2, p) == p - 1,
+             f"tower level {i}: the radicand's image {value} is a square modulo {p}")
+
+    def _norm(self, x) -> Fraction:
+        for lev in range(_level(x), 0, -1):
+            a, b = _split(x, lev)
+            x = _add(self.mul(a, a), _neg(self.mul(self.r[lev - 1], self.mul(b, b))))
+        for q in self.base.radicands:
+            x = x * Root({m: (-c if m % q == 0 else c) for m, c in x.t.items()})
+        need(set(x.t) <= {1}, "a norm is not rational (bug)")
+        return Fraction(x.t.get(1, 0))
+
+
+def _coefficients(x):
+    if isinstance(x, Root):
+        yield from x.t.values()
+    else:
+        yield from _coefficients(x[1])
+        yield from _coefficients(x[2])
+
+
+def _image(x, p: int, base: dict, roots: list) -> int:
+    if isinstance(x, Root):
+        total = 0
+        for m, c in x.t.items():
+            v = c.numerator * pow(c.denominator, -1, p)
+            for q, s in base.items():
+                if m % q == 0:
+                    v *= s
+            total += v
+        return total % p
+    lev, a, b = x
+    return (_image(a, p, base, roots) + _image(b, p, base, roots) * roots[lev - 1]) % p
+
+
+class TNum:
+    """A number of a checked :class:`Tower`, canonical; mixes with ints and Fractions."""
+    __slots__ = ("f", "v")
+
+    def __init__(self, f: Tower, v):
+        self.f, self.v = f, v
+
+    def _of(self, o):
+        if isinstance(o, TNum):
+            need(o.f is self.f, "numbers of two towers")
+            return o.v
+        o = Fraction(o)
+        return Root({1: o} if o else {})
+
+    def __add__(self, o):
+        return TNum(self.f, _add(self.v, self._of(o)))
+
+    def __mul__(self, o):
+        return TNum(self.f, self.f.mul(self.v, self._of(o)))
+
+    __radd__, __rmul__ = __add__, __mul__
+
+    def __neg__(self):
+        return TNum(self.f, _neg(self.v))
+
+    def __sub__(self, o):
+        return TNum(self.f, _add(self.v, _neg(self._of(o))))
+
+    def __rsub__(self, o):
+        return TNum(self.f, _add(_neg(self.v), self._of(o)))
+
+    def __eq__(self, o):
+        return isinstance(o, (TNum, int, Fraction)) and self.v == self._of(o)
+
+    def __hash__(self):
+        return hash(self.v)
+
+    def sign(self) -> int:
+        return self.f._sign(self.v)
+
+
+__all__ = ["Tower", "TNum"]

@@ -1,0 +1,482 @@
+"""Nested radicals in a tower of quadratic extensions, built lazily (issue 9).
+
+K_0 = Q(sqrt p : p in ``primes``) is a multiquadratic field (its elements are
+:class:`~.multiquadratic.MQ`), and K_i = K_(i-1)(y_i) with y_i the positive square root of
+a positive radicand r_i of K_(i-1) that is **not a square** in K_(i-1).  A level is added
+only when a square root is asked for a number that has none in the current top field; when
+it has one (``sqrt(3+2*sqrt(2)) = 1 + sqrt(2)``, ``sqrt(2+sqrt(3)) = (sqrt(6)+sqrt(2))/2``
+once sqrt(2) and sqrt(3) are in K_0) the root is an element of the field below: the radical
+is denested.
+
+Canonical form.  An element of level 0 is an MQ; an element of level i >= 1 is the tuple
+``(i, a, b)`` = a + b y_i with a, b of level < i and b != 0.  Since r_i is not a square in
+K_(i-1), {1, y_i} is a basis of K_i over K_(i-1), so every number of the tower has exactly one
+such form: equality and hash are structural and exact, and an element of level i >= 1 is
+never equal to one of a lower level.  Inverses are conjugate multiplications down the tower:
+1/(a + b y) = (a - b y) / (a^2 - r b^2).  Signs come from Arb balls at doubling precision (a
+non-zero element has a non-zero value, so the loop ends).
+
+The square-root test is exact and complete.  In K_i = K_(i-1)(y), x = a + b y is a square
+(c + d y)^2 iff: for b = 0, a or a/r is a square in K_(i-1) (root c or d y); for b != 0, the
+norm a^2 - r b^2 = (c^2 - r d^2)^2 has a root n in K_(i-1), one of (a + n)/2, (a - n)/2 is
+c^2 with c != 0, and d = b / (2c).  In K_0 = Q(sqrt p_1, ..., sqrt p_k) the same recursion
+runs over the primes (K_0 is the tower Q(sqrt p_1)(sqrt p_2)...), ending at rational squares.
+All fields are real, so a negative number is never a square.
+
+Public names: :class:`Tower`, :class:`TowerElement`, :func:`height_bits`.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from flint import arb, ctx, fmpq, fmpz
+
+from .field import FieldElement
+from .multiquadratic import MQ, squarefree_split
+
+_ZERO = MQ()
+_MAX_PREC = 1 << 18
+
+#: Largest number of levels above K_0 (degree up to 2^MAX_LEVELS over K_0).  Decided before
+#: a level is added; beyond it, FieldTooLargeError (exit 2).
+MAX_LEVELS = 12
+
+
+def level(v) -> int:
+    return v[0] if type(v) is tuple else 0
+
+
+def _split(v, lev: int):
+    return (v[1], v[2]) if type(v) is tuple and v[0] == lev else (v, _ZERO)
+
+
+def _make(lev: int, a, b):
+    return a if type(b) is not tuple and not b.terms else (lev, a, b)
+
+
+def _is_zero(v) -> bool:
+    return type(v) is not tuple and not v.terms
+
+
+def add(x, y):
+    # hot: type tests instead of level() calls; adding a lower level touches only the a part
+    tx, ty = type(x) is tuple, type(y) is tuple
+    if not tx:
+        if not ty:
+            return x + y
+        return (y[0], add(x, y[1]), y[2]) if x.terms else y
+    if not ty:
+        return (x[0], add(x[1], y), x[2]) if y.terms else x
+    lx, ly = x[0], y[0]
+    if lx == ly:
+        b = add(x[2], y[2])
+        return add(x[1], y[1]) if type(b) is not tuple and not b.terms else \
+            (lx, add(x[1], y[1]), b)
+    if lx > ly:
+        return (lx, add(x[1], y), x[2])
+    return (ly, add(x, y[1]), y[2])
+
+
+def neg(x):
+    return (x[0], neg(x[1]), neg(x[2])) if type(x) is tuple else -x
+
+
+def sub(x, y):
+    return add(x, neg(y))
+
+
+def _mq_split(x: MQ, p: int):
+    """x = A + B sqrt(p) with A, B free of the prime p."""
+    a, b = {}, {}
+    for m, c in x.terms.items():
+        if m % p:
+            a[m] = c
+        else:
+            b[m // p] = c
+    return MQ(a), MQ(b)
+
+
+def height_bits(v) -> int:
+    """Bits of the largest numerator or denominator among the rational coefficients."""
+    if isinstance(v, MQ):
+        return max((int(c.p).bit_length() + int(c.q).bit_length() for c in v.terms.values()),
+                   default=1)
+    return max(height_bits(v[1]), height_bits(v[2]))
+
+
+class Tower:
+    """One tower K_0 < K_1 < ... for one configuration (grows as square roots are asked)."""
+
+    def __init__(self, primes):
+        self.primes = tuple(sorted(set(int(p) for p in primes)))
+        self.radicands: list = []          # r_i (level < i), index i - 1
+        self._roots: dict = {}             # radicand -> its non-negative root in the tower
+        self._balls: dict = {}             # (i, prec) -> ball around y_i
+
+    @property
+    def levels(self) -> int:
+        return len(self.radicands)
+
+    @property
+    def degree(self) -> int:
+        return 1 << (len(self.primes) + self.levels)
+
+    @property
+    def name(self) -> str:
+        base = ", ".join(f"sqrt({p})" for p in self.primes[:6]) + \
+            (", ..." if len(self.primes) > 6 else "")
+        tops = "".join(f"(sqrt({text(self, r)}))" for r in self.radicands)
+        head = f"Q({base})" if self.primes else "Q"
+        name = head + tops
+        return name if len(name) <= 200 else f"{head} with {self.levels} quadratic levels"
+
+    # -- arithmetic on raw values --------------------------------------------
+    def mul(self, x, y):
+        tx, ty = type(x) is tuple, type(y) is tuple
+        if not tx:
+            if not ty:
+                return x * y
+            if not x.terms:
+                return _ZERO
+            return (y[0], self.mul(x, y[1]), self.mul(x, y[2]))   # a scalar of a lower level
+        if not ty:
+            if not y.terms:
+                return _ZERO
+            return (x[0], self.mul(x[1], y), self.mul(x[2], y))
+        lx, ly = x[0], y[0]
+        if lx > ly:
+            return (lx, self.mul(x[1], y), self.mul(x[2], y))
+        if ly > lx:
+            return (ly, self.mul(x, y[1]), self.mul(x, y[2]))
+        lev = lx
+        xa, xb, ya, yb = x[1], x[2], y[1], y[2]
+        r = self.radicands[lev - 1]
+        low, high = self.mul(xa, ya), self.mul(xb, yb)
+        # Karatsuba: three products of the level below instead of four
+        mixed = sub(sub(self.mul(add(xa, xb), add(ya, yb)), low), high)
+        return _make(lev, add(low, self.mul(r, high)), mixed)
+
+    def inverse(self, x):
+        if isinstance(x, MQ):
+            return x.inverse()
+        lev, a, b = x
+        norm = sub(self.mul(a, a), self.mul(self.radicands[lev - 1], self.mul(b, b)))
+        n_inv = self.inverse(norm)
+        return _make(lev, self.mul(a, n_inv), neg(self.mul(b, n_inv)))
+
+    def divide(self, x, y):
+        """x / y (y != 0) as x conj(y) / N(y), the norm N(y) = a^2 - r b^2 one level down,
+        recursively: the big denominator appears once, at the end, instead of in every
+        coefficient of 1/y (which then multiplies x)."""
+        return self._divide(x, y, {})
+
+    def _divide(self, x, y, cache):
+        if isinstance(y, MQ):
+            if y.is_rational():
+                return self.mul(x, MQ.rational(1 / y.to_fmpq()))
+            inv = cache.get(y)
+            if inv is None:
+                inv = cache[y] = y.inverse()
+            return self.mul(x, inv)
+        lev = y[0]
+        top = level(x)
+        if top > lev:       # (xa + xb y_top) / y = xa / y + (xb / y) y_top
+            return _make(top, self._divide(x[1], y, cache), self._divide(x[2], y, cache))
+        entry = cache.get(y)
+        if entry is None:
+            a, b = y[1], y[2]
+            norm = sub(self.mul(a, a), self.mul(self.radicands[lev - 1], self.mul(b, b)))
+            entry = cache[y] = ((lev, a, neg(b)), norm)
+        conj, norm = entry
+        return self._divide(self.mul(x, conj), norm, cache)
+
+    def ball(self, x, prec: int) -> arb:
+        if isinstance(x, MQ):
+            return x.to_arb(prec)
+        lev, a, b = x
+        with ctx.workprec(prec):
+            return self.ball(a, prec) + self.ball(b, prec) * self._root_ball(lev, prec)
+
+    def _root_ball(self, lev: int, prec: int) -> arb:
+        ball = self._balls.get((lev, prec))
+        if ball is None:
+            r = self.ball(self.radicands[lev - 1], prec)
+            with ctx.workprec(prec):
+                ball = self._balls[(lev, prec)] = r.sqrt()
+        return ball
+
+    def sign(self, x) -> int:
+        if isinstance(x, MQ):
+            return x.sign()
+        prec = 64
+        while prec <= _MAX_PREC:
+            value = self.ball(x, prec + 8 * x[0])
+            if value > 0:
+                return 1
+            if value < 0:
+                return -1
+            prec *= 2
+        raise ArithmeticError("sign undecided at maximal precision (non-zero tower element)")
+
+    # -- square roots ----------------------------------------------------------
+    def root_in(self, x, lev: int):
+        """A y of level <= ``lev`` with y^2 == x, or None (x of level <= lev)."""
+        if self.sign(x) < 0:
+            return None
+        if lev == 0:
+            return self._mq_root(x, len(self.primes))
+        a, b = _split(x, lev)
+        r = self.radicands[lev - 1]
+        if _is_zero(b):
+            c = self.root_in(a, lev - 1)
+            if c is not None:
+                return c
+            d = self.root_in(self.mul(a, self.inverse(r)), lev - 1)
+            return None if d is None else (lev, _ZERO, d)
+        n = self.root_in(sub(self.mul(a, a), self.mul(r, self.mul(b, b))), lev - 1)
+        if n is None:
+            return None
+        half = MQ.rational(fmpq(1, 2))
+        for t in (self.mul(add(a, n), half), self.mul(sub(a, n), half)):
+            c = self.root_in(t, lev - 1)
+            if c is not None and not _is_zero(c):
+                d = self.mul(b, self.inverse(add(c, c)))
+                y = _make(lev, c, d)
+                if self.mul(y, y) == x:
+                    return y
+        return None
+
+    def _mq_root(self, x: MQ, k: int):
+        """A root of x in Q(sqrt p_1, ..., sqrt p_k) (first k primes of K_0), or None."""
+        if x.is_rational():
+            return _rational_root(x.to_fmpq(), self.primes[:k])
+        if x.sign() < 0 or k == 0:
+            return None
+        p = self.primes[k - 1]
+        a, b = _mq_split(x, p)
+        sp = MQ({p: fmpq(1)})
+        if not b.terms:
+            c = self._mq_root(a, k - 1)
+            if c is not None:
+                return c
+            d = self._mq_root(a / p, k - 1)
+            return None if d is None else d * sp
+        n = self._mq_root(a * a - b * b * p, k - 1)
+        if n is None:
+            return None
+        for t in ((a + n) / 2, (a - n) / 2):
+            c = self._mq_root(t, k - 1)
+            if c is not None and c.terms:
+                y = c + (b / (2 * c)) * sp
+                if y * y == x:
+                    return y
+        return None
+
+    def sqrt(self, x):
+        """The non-negative square root of x >= 0 (raw value): an element of the top field,
+        or the generator of a new level when x is not a square there."""
+        key = x
+        root = self._roots.get(key)
+        if root is not None:
+            return root
+        if isinstance(x, MQ) and x.is_rational():
+            root = _rational_root(x.to_fmpq(), self.primes)
+        if root is None:
+            root = self.root_in(x, self.levels)
+        if root is None:
+            if self.levels >= MAX_LEVELS:
+                from ..errors import FieldTooLargeError
+                raise FieldTooLargeError(f"these nested radicals need more than {MAX_LEVELS} "
+                                         "quadratic extensions above the square roots")
+            self.radicands.append(x)
+            root = (self.levels, _ZERO, MQ.rational(1))
+        elif self.sign(root) < 0:
+            root = neg(root)
+        self._roots[key] = root
+        return root
+
+
+def _rational_root(q: fmpq, primes):
+    """The non-negative root of the rational q in Q(sqrt p : p in primes), or None."""
+    if q <= 0:
+        return _ZERO if q == 0 else None
+    s, m = squarefree_split(int(q.p) * int(q.q))
+    return MQ({m: fmpq(s, int(q.q))}) if _covers(m, primes) else None
+
+
+def _covers(m: int, primes) -> bool:
+    """Whether the squarefree m is a product of some of ``primes``."""
+    for p in primes:
+        if m % p == 0:
+            m //= p
+    return m == 1
+
+
+def text(tower: Tower, v) -> str:
+    """The configuration-syntax text of a raw value: a + b*sqrt(radicand), nested."""
+    if isinstance(v, MQ):
+        return v.text()
+    lev, a, b = v
+    root = f"sqrt({text(tower, tower.radicands[lev - 1])})"
+    if isinstance(b, MQ) and b.is_rational():
+        c = b.to_fmpq()
+        mag = -c if c < 0 else c
+        body = root if mag == 1 else f"{mag.p}*{root}" if mag.q == 1 else \
+            f"{root}/{mag.q}" if mag.p == 1 else f"{mag.p}*{root}/{mag.q}"
+        negative = c < 0
+    else:
+        body, negative = f"({text(tower, b)})*{root}", False
+    if _is_zero(a):
+        return ("-" if negative else "") + body
+    return text(tower, a) + (" - " if negative else " + ") + body
+
+
+# ------------------------------------------------------------------ the kernel's number type
+def _raw(tower: Tower, other):
+    """``other`` as a raw value of ``tower`` (None for a foreign type)."""
+    if isinstance(other, TowerElement):
+        if other.tower is not tower:
+            raise TypeError("elements of two different number fields do not mix")
+        return other.v
+    if isinstance(other, MQ):
+        return other
+    if isinstance(other, (int, fmpz, fmpq, Fraction)):
+        return MQ.rational(other)
+    return None
+
+
+def wrap(tower: Tower, v):
+    """A raw value as a kernel number: an MQ at level 0, a :class:`TowerElement` above."""
+    return v if isinstance(v, MQ) else TowerElement(tower, v)
+
+
+class TowerElement(FieldElement):
+    """A number of a :class:`Tower` at level >= 1 (never rational, never an MQ)."""
+
+    __slots__ = ("tower", "v", "_hash")
+
+    def __init__(self, tower: Tower, v):
+        self.tower, self.v, self._hash = tower, v, None
+
+    def _bin(self, other, op):
+        o = _raw(self.tower, other)
+        return NotImplemented if o is None else wrap(self.tower, op(self.v, o))
+
+    def __add__(self, other):
+        return self._bin(other, add)
+
+    __radd__ = __add__
+
+    def __sub__(self, other):
+        return self._bin(other, sub)
+
+    def __rsub__(self, other):
+        return self._bin(other, lambda x, y: sub(y, x))
+
+    def __neg__(self):
+        return TowerElement(self.tower, neg(self.v))
+
+    def __pos__(self):
+        return self
+
+    def __mul__(self, other):
+        return self._bin(other, self.tower.mul)
+
+    __rmul__ = __mul__
+
+    def inverse(self):
+        return wrap(self.tower, self.tower.inverse(self.v))
+
+    def __truediv__(self, other):
+        o = _raw(self.tower, other)
+        if o is None:
+            return NotImplemented
+        if _is_zero(o):
+            raise ZeroDivisionError("division by zero")
+        return wrap(self.tower, self.tower.divide(self.v, o))
+
+    def __rtruediv__(self, other):
+        o = _raw(self.tower, other)
+        return NotImplemented if o is None else wrap(self.tower, self.tower.divide(o, self.v))
+
+    def __pow__(self, k: int):
+        if not isinstance(k, int):
+            return NotImplemented
+        base = self.v if k >= 0 else self.tower.inverse(self.v)
+        out, k = MQ.rational(1), abs(k)
+        while k:
+            if k & 1:
+                out = self.tower.mul(out, base)
+            base = self.tower.mul(base, base)
+            k >>= 1
+        return wrap(self.tower, out)
+
+    # -- exact comparison -------------------------------------------------------
+    def is_rational(self) -> bool:
+        return False
+
+    def rational(self) -> fmpq:
+        raise ValueError("not a rational number")
+
+    def sign(self) -> int:
+        return self.tower.sign(self.v)
+
+    def __eq__(self, other):
+        o = _raw(self.tower, other)
+        return NotImplemented if o is None else self.v == o
+
+    def __ne__(self, other):
+        o = _raw(self.tower, other)
+        return NotImplemented if o is None else self.v != o
+
+    def _cmp(self, other):
+        o = _raw(self.tower, other)
+        return None if o is None else self.tower.sign(sub(self.v, o))
+
+    def __lt__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c < 0
+
+    def __le__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c <= 0
+
+    def __gt__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c > 0
+
+    def __ge__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c >= 0
+
+    def __hash__(self):
+        if self._hash is None:
+            self._hash = hash(self.v)
+        return self._hash
+
+    def __bool__(self):
+        return True
+
+    def __abs__(self):
+        return -self if self.sign() < 0 else self
+
+    def enclosure(self, prec: int = 53) -> arb:
+        """An ``arb`` ball around the value (filters and drawing only)."""
+        return self.tower.ball(self.v, prec + 8 * self.v[0])
+
+    def __float__(self):
+        return float(self.enclosure(53).mid())
+
+    def text(self) -> str:
+        return text(self.tower, self.v)
+
+    def __repr__(self):
+        return f"TowerElement({self.text()!r})"
+
+
+def key(v):
+    """An injective hashable key of a raw value (tags keep levels and MQ parts apart)."""
+    if isinstance(v, MQ):
+        return ("sqrt",) + tuple(sorted((m, int(c.p), int(c.q)) for m, c in v.terms.items()))
+    return ("level", v[0], key(v[1]), key(v[2]))

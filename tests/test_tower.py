@@ -1,0 +1,195 @@
+"""Nested radicals in a tower of quadratic extensions (exact/tower.py, issue 9).
+
+Laws: the canonical form is unique (keys injective: different keys only for numbers whose
+Arb balls separate), the square-root test is complete (sqrt(y^2) == |y| without a new level),
+arithmetic identities hold exactly, printed numbers read back, and the certificate's
+non-square proofs are re-checked by the standard-library checker (tamper tests)."""
+
+from __future__ import annotations
+
+import copy
+import json
+import time
+
+import pytest
+from flint import fmpq
+from hypothesis import given, settings, strategies as st
+
+from exactsym import checker
+from exactsym.certificate import make_certificate
+from exactsym.configuration import load
+from exactsym.errors import FieldTooLargeError, InputError
+from exactsym.exact import evaluate, evaluate_all, exact_key, number_text
+from exactsym.exact.multiquadratic import MQ
+from exactsym.exact.tower import TowerElement
+from exactsym.exact.tower_proof import nonsquare_witness
+from exactsym.expr import MAX_LENGTH, parse_expression
+
+P = parse_expression
+
+GENERATORS = ["sqrt(2+sqrt(3))", "sqrt(3+sqrt(2+sqrt(3)))", "sqrt(5-sqrt(2))", "sqrt(sqrt(2))",
+              "sqrt(7+sqrt(3+sqrt(5)))"]
+
+
+def _values(*texts):
+    return evaluate_all([P(t) for t in texts])
+
+
+def test_denesting_and_levels():
+    system, (a, b) = _values("sqrt(3+2*sqrt(2))", "sqrt(9+4*sqrt(2))")
+    assert isinstance(a, MQ) and a == 1 + MQ.sqrt(2) and b == 1 + 2 * MQ.sqrt(2)
+    assert system.tower.levels == 0
+    system, (c,) = _values("sqrt(2+sqrt(3))")
+    assert isinstance(c, TowerElement) and system.tower.levels == 1
+    # with sqrt(2) in the base field, sqrt(2+sqrt(3)) = (sqrt(6)+sqrt(2))/2 denests
+    _, (d, e) = _values("sqrt(2+sqrt(3))", "(sqrt(6)+sqrt(2))/2")
+    assert isinstance(d, MQ) and d == e and exact_key(d) == exact_key(e)
+    # sqrt(2) is not in the base here, yet sqrt(8-4*sqrt(3)) = (4-2*sqrt(3))*sqrt(2+sqrt(3))
+    system, (f, g) = _values("sqrt(8-4*sqrt(3))", "(4-2*sqrt(3))*sqrt(2+sqrt(3))")
+    assert f == g and exact_key(f) == exact_key(g) and system.tower.levels == 1
+    _, (h,) = _values("sqrt(2+sqrt(3))*sqrt(2-sqrt(3))")
+    assert h == 1 and exact_key(h) == exact_key(fmpq(1))
+
+
+def _random_element(system, gens, draw):
+    x = MQ.rational(draw.draw(st.integers(-3, 3)))
+    for g in gens:
+        x = x + draw.draw(st.integers(-3, 3)) * g + fmpq(draw.draw(st.integers(-2, 2)), 3) * g * g
+    return x * gens[draw.draw(st.integers(0, len(gens) - 1))] + draw.draw(st.integers(-2, 2))
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.data(), st.lists(st.sampled_from(GENERATORS), min_size=1, max_size=3, unique=True))
+def test_keys_are_injective_and_identities_hold(data, gens):
+    system, values = _values(*gens, "sqrt(3)")
+    xs = [_random_element(system, values, data) for _ in range(4)]
+    xs += [x * x for x in xs[:2]] + [xs[0] + 0, fmpq(1, 2), MQ.sqrt(3)]
+    for x in xs:
+        for y in xs:
+            same = exact_key(x) == exact_key(y)
+            assert same == (x == y)
+            if not same:      # unequal numbers: their difference has a certified sign
+                assert (x - y).sign() != 0
+                assert not (MQ.rational(0) + (x - y)).enclosure(200).contains(0)
+    for x in xs[:4]:
+        for y in xs[:4]:
+            if y != 0:
+                assert (x * y) / y == x and exact_key((x * y) / y) == exact_key(x)
+                assert (x / y) * y == x
+        assert (x + xs[1]) - xs[1] == x
+        root = system.sqrt(x * x)
+        assert root == abs(x)
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.data(), st.lists(st.sampled_from(GENERATORS), min_size=1, max_size=3, unique=True))
+def test_printed_tower_numbers_read_back(data, gens):
+    system, values = _values(*gens)
+    x = _random_element(system, values, data)
+    text = number_text(x)
+    assert len(text) <= MAX_LENGTH and "sqrtsqrt" not in text
+    assert evaluate(P(text), system) == x        # parsed into the same tower
+    _, (a, b) = evaluate_all([P(text), P(text)])  # and in a fresh one
+    assert a == b
+
+
+def test_squares_are_found_without_new_levels():
+    system, (y, z) = _values("sqrt(2+sqrt(3+sqrt(5)))", "sqrt(7-sqrt(2))")
+    levels = system.tower.levels
+    for x in (y, z, y * z - 3, 1 + y + y * z, -(y - 2 * z)):
+        assert system.sqrt(x * x) == abs(x)
+        assert system.sqrt(x * x * 2) * system.sqrt(MQ.rational(2)) == 2 * abs(x)
+    assert system.tower.levels == levels
+
+
+def test_five_deep_is_fast_and_depth_bound_is_refused_fast(tmp_path):
+    start = time.perf_counter()
+    _, (x,) = _values("sqrt(2+sqrt(3+sqrt(5+sqrt(7+sqrt(11)))))")
+    assert number_text(x) == "sqrt(2 + sqrt(3 + sqrt(5 + sqrt(7 + sqrt(11)))))"
+    deep = "sqrt(3)"
+    for _ in range(20):
+        deep = f"sqrt(2+{deep})"
+    with pytest.raises(FieldTooLargeError, match="quadratic extensions"):
+        _values(deep)
+    path = tmp_path / "deep.toml"
+    path.write_text(f'format = 1\npoints = [["{deep}", "0"], ["0", "1"]]\n')
+    with pytest.raises(InputError, match="quadratic extensions"):
+        load(str(path)).points
+    assert time.perf_counter() - start < 5
+
+
+# ------------------------------------------------------------------ certificates
+def _cert(tmp_path, rows: list[str]) -> dict:
+    path = tmp_path / "c.toml"
+    path.write_text("format = 1\npoints = [\n" + ",\n".join(rows) + "\n]\n")
+    cert = json.loads(json.dumps(make_certificate(load(str(path)))))
+    ok, message = checker.verify_certificate(cert)
+    assert ok, message
+    return cert
+
+
+def _rejected(cert: dict, fragment: str) -> None:
+    cert["configuration_sha256"] = checker.digest(cert["configuration"])
+    ok, message = checker.verify_certificate(cert)
+    assert not ok and fragment in message, message
+
+
+@pytest.mark.parametrize("rows, group", [
+    (['["sqrt(2+sqrt(3))", "0"]', '["0", "sqrt(2+sqrt(3))"]', '["-sqrt(2+sqrt(3))", "0"]',
+      '["0", "-sqrt(2+sqrt(3))"]'], "D4"),
+    (['["sqrt(2+sqrt(3+sqrt(5+sqrt(7+sqrt(11)))))", "0"]', '["0", "1"]', '["1", "1"]'], "C1"),
+    (['["sqrt(sqrt(2))", "1"]', '["-1", "sqrt(sqrt(2))"]', '["-sqrt(sqrt(2))", "-1"]',
+      '["1", "-sqrt(sqrt(2))"]', '["sqrt(3+sqrt(2))", "1/2"]',
+      '["-1/2", "sqrt(3+sqrt(2))"]', '["-sqrt(3+sqrt(2))", "-1/2"]',
+      '["1/2", "-sqrt(3+sqrt(2))"]'], "C4"),
+])
+def test_towers_certify(tmp_path, rows, group):
+    cert = _cert(tmp_path, rows)
+    assert cert["claim"]["group"] == group
+    assert "tower" in cert["configuration"]["field"]
+
+
+def test_tower_certificates_are_checked(tmp_path):
+    cert = _cert(tmp_path, ['["sqrt(2+sqrt(3+sqrt(5)))", "0"]', '["0", "1"]', '["1", "1"]'])
+    tower = cert["configuration"]["field"]["tower"]
+    assert len(tower["levels"]) == 2
+    level = tower["levels"][1]
+    bad = copy.deepcopy(cert)
+    bad["configuration"]["field"]["tower"]["levels"][1]["roots"][0] = str(
+        (int(level["roots"][0]) + 1) % level["prime"])
+    _rejected(bad, "is not a root of radicand 1")
+    bad = copy.deepcopy(cert)
+    bad["configuration"]["field"]["tower"]["levels"][0]["base"][0] = "0"
+    _rejected(bad, "is not a root of")
+    bad = copy.deepcopy(cert)
+    bad["configuration"]["field"]["tower"]["levels"][0]["prime"] = 9
+    _rejected(bad, "not an odd prime")
+    # a radicand that IS a square (3 + 2 sqrt(5) is not; 6 + 2 sqrt(5) = (1 + sqrt(5))^2):
+    # no homomorphism makes it a non-residue, so the given one must fail
+    bad = copy.deepcopy(cert)
+    bad["configuration"]["field"]["tower"]["levels"][0]["radicand"] = {"1": "6", "5": "2"}
+    _rejected(bad, "is a square modulo")
+    bad = copy.deepcopy(cert)                 # a zero y coefficient is not canonical
+    bad["configuration"]["points"][1][0] = [1, "0", "0"]
+    _rejected(bad, "zero y coefficient")
+    bad = copy.deepcopy(cert)                 # a level that does not exist
+    bad["configuration"]["points"][1][0] = [3, "0", "1"]
+    _rejected(bad, "bad level")
+    bad = copy.deepcopy(cert)                 # a negative radicand (its root is not real)
+    bad["configuration"]["field"]["tower"]["levels"][0]["radicand"] = {"1": "-3", "5": "1"}
+    ok, message = checker.verify_certificate(rehash(bad))
+    assert not ok
+
+
+def rehash(cert: dict) -> dict:
+    cert["configuration_sha256"] = checker.digest(cert["configuration"])
+    return cert
+
+
+def test_square_radicand_has_no_witness():
+    system, (y,) = _values("sqrt(2+sqrt(3))")
+    tower = system.tower
+    tower.radicands.append(MQ.rational(4) + 2 * MQ.sqrt(3))       # (1 + sqrt(3))^2: a square
+    assert nonsquare_witness(tower, 2, limit=3000) is None
+    tower.radicands[-1] = MQ.rational(3) + MQ.sqrt(3)            # not a square
+    assert nonsquare_witness(tower, 2) is not None
