@@ -8,7 +8,9 @@ a proof that the polynomial is irreducible -- is checked before any element is m
 from __future__ import annotations
 
 import itertools
+import re
 from fractions import Fraction
+from functools import lru_cache
 from math import gcd, isqrt, lcm, prod
 
 class Invalid(Exception):
@@ -20,10 +22,18 @@ def need(condition, reason: str) -> None:
         raise Invalid(reason)
 
 
+_SHORT = re.compile(r"([+-]?[0-9]{1,4000})(?:/([0-9]{1,4000}))?")     # ASCII digits only
+
+
 def rat(text) -> tuple[int, int]:
     """An exact rational "p/q" or "p" (or a JSON integer) as ``(p, q)``, q > 0."""
     if isinstance(text, int) and not isinstance(text, bool):
         return text, 1
+    if isinstance(text, str) and len(text) < 200:
+        pair = _short_rat(text)                 # the common case: parsed once per text
+        if pair is not None:
+            need(pair[1] > 0, f"not an exact rational: {text!r}")
+            return pair
     num, slash, den = text.partition("/") if isinstance(text, str) else ("?", "", "")
     try:
         p, q = integer(num), (integer(den) if slash else 1)
@@ -31,6 +41,17 @@ def rat(text) -> tuple[int, int]:
         q = 0
     need(q > 0, f"not an exact rational: {text!r}")
     return p, q
+
+
+@lru_cache(maxsize=1 << 18)
+def _short_rat(text: str) -> tuple[int, int] | None:
+    """(p, q) for "p/q" or "p" in ASCII digits, else None (the group and the ordering
+    checks read the same points: the cache parses each text once)."""
+    match = _SHORT.fullmatch(text)
+    if not match:
+        return None
+    num, den = match.groups()
+    return int(num), (int(den) if den is not None else 1)
 
 
 def integer(text: str) -> int:
