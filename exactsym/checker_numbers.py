@@ -322,21 +322,70 @@ class Field:
         return self.make([int(x * den) for x in q], den)
 
     def sign(self, c: tuple) -> int:
-        """The sign of c(theta) by interval Horner on [lo, hi], halving the interval (towards the
-        sign change of p) until 0 is excluded.  c(theta) != 0 for canonical c != 0 and the
-        enclosure shrinks to c(theta), so this ends; the narrower interval is kept."""
-        for _ in range(10000):
+        """The sign of c(theta): interval Horner on [lo, hi] in fixed point (see _horner),
+        bisecting the interval (towards the sign change of p) until 0 is excluded.
+        c(theta) != 0 for canonical c != 0 and the enclosure shrinks to c(theta) as the
+        interval and the rounding shrink, so this ends; the narrower interval is kept."""
+        if not c:
+            return 0
+        for _ in range(4000):
             lo, hi = self.interval
-            a = b = Fraction(0)
-            for coeff in reversed(c):
-                ends = (a * lo, a * hi, b * lo, b * hi)
-                a, b = min(ends) + coeff, max(ends) + coeff
-            if a > 0 or b < 0 or not c:
-                return (a > 0) - (b < 0)
-            mid = (lo + hi) / 2
-            left = (peval(self.p, lo) > 0) != (peval(self.p, mid) > 0)
-            self.interval = (lo, mid) if left else (mid, hi)
+            bits = self._bits()
+            a, b = _horner(c, _floor(lo, bits), _ceil(hi, bits), bits)
+            if a > 0 or b < 0:
+                return 1 if a > 0 else -1
+            for _ in range(16):
+                self._bisect(self._bits())
         raise Invalid("a sign could not be decided")
+
+    def _bits(self) -> int:
+        """Fixed-point bits for Horner on the interval: its width, plus d bits per doubling of
+        |theta| (the rounding error of step i is multiplied by |theta|^(d - i)), plus 64."""
+        lo, hi = self.interval
+        width = hi - lo
+        scale = max(abs(lo), abs(hi), Fraction(1))
+        return (64 + width.denominator.bit_length() - width.numerator.bit_length()
+                + self.d * (int(scale).bit_length() + 1))
+
+    def _bisect(self, bits: int) -> None:
+        lo, hi = self.interval
+        mid = Fraction(_floor((lo + hi) / 2, bits), 1 << bits)
+        if not lo < mid < hi:
+            mid = (lo + hi) / 2
+        at_lo = self._p_sign(lo, bits)
+        at_mid = self._p_sign(mid, bits)
+        need(at_mid != 0, "the minimal polynomial has a rational root")
+        self.interval = (lo, mid) if at_lo != at_mid else (mid, hi)
+
+    def _p_sign(self, x: Fraction, bits: int) -> int:
+        """The sign of p(x): fixed point first, exact if the enclosure holds 0."""
+        if x.denominator & (x.denominator - 1) == 0:        # dyadic: exactly representable
+            for extra in (0, 64, 256):
+                a, b = _horner(self.big, _floor(x, bits + extra), _ceil(x, bits + extra),
+                               bits + extra)
+                if a > 0 or b < 0:
+                    return 1 if a > 0 else -1
+        v = peval(self.big, x)
+        return (v > 0) - (v < 0)
+
+
+def _floor(x: Fraction, bits: int) -> int:
+    return (x.numerator << bits) // x.denominator
+
+
+def _ceil(x: Fraction, bits: int) -> int:
+    return -((-x.numerator << bits) // x.denominator)
+
+
+def _horner(c, lo: int, hi: int, bits: int) -> tuple[int, int]:
+    """[a, b] / 2^bits holding sum c_i t^i for every t in [lo, hi] / 2^bits (c integers):
+    interval Horner in integers scaled by 2^bits, products rounded outwards (floor and
+    ceiling shifts), so the numbers stay of about ``bits`` bits whatever the degree."""
+    a = b = 0
+    for coeff in reversed(c):
+        ends = (a * lo, a * hi, b * lo, b * hi)
+        a, b = (min(ends) >> bits) + (coeff << bits), -(-max(ends) >> bits) + (coeff << bits)
+    return a, b
 
 
 class Alg:
