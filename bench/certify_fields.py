@@ -92,6 +92,10 @@ CASES: dict[str, tuple[str, list[str]]] = {
                                                ("0", "0"))),
     "nested + trig/7 C1": ("nested+trig", cart(("sqrt(2+sqrt(3))", "0"), ("cos(2*pi/7)", "1"),
                                                ("0", "0"))),
+    "nested + trig/13 C1 (degree 24)": ("nested+trig", cart(("sqrt(2+sqrt(3))", "0"),
+                                                            ("cos(2*pi/13)", "1"), ("0", "0"))),
+    "nested + trig/16 C1 (sqrt 2 in K)": ("nested+trig", cart(("sqrt(2+sqrt(3))", "0"),
+                                                              ("cos(2*pi/16)", "1"), ("0", "0"))),
     "nested + sqrt(5) C1": ("nested+sqrt", cart(("sqrt(2+sqrt(3))", "0"), ("sqrt(5)", "1"),
                                                 ("0", "0"))),
     "nested + polar turns/5 C1": ("nested+polar", [

@@ -29,7 +29,8 @@ _spec.loader.exec_module(fields)
 # the table's slow rows (sympy's primitive element or nine square roots: several seconds
 # each) run in the hypothesis draws' place only with EXACTSYM_SLOW=1
 SLOW = {"nine sqrt C1", "nested + trig/7 C1", "nested + polar turns/5 C1", "nested D5 ring",
-        "polar r sqrt(2) turns 2/45,47/90,59/315", "nested O2"}
+        "polar r sqrt(2) turns 2/45,47/90,59/315", "nested O2",
+        "nested + trig/13 C1 (degree 24)", "nested + trig/16 C1 (sqrt 2 in K)"}   # tampered below
 
 
 def certify_text(tmp_path: Path, points: list[str]) -> dict:
