@@ -27,13 +27,12 @@ _SHORT = re.compile(r"([+-]?[0-9]{1,4000})(?:/([0-9]{1,4000}))?")     # ASCII di
 
 def rat(text) -> tuple[int, int]:
     """An exact rational "p/q" or "p" (or a JSON integer) as ``(p, q)``, q > 0."""
+    if type(text) is str and len(text) < 200:
+        pair = _short_rat(text)                 # the common case: parsed once per text
+        if pair is not None and pair[1] > 0:
+            return pair
     if isinstance(text, int) and not isinstance(text, bool):
         return text, 1
-    if isinstance(text, str) and len(text) < 200:
-        pair = _short_rat(text)                 # the common case: parsed once per text
-        if pair is not None:
-            need(pair[1] > 0, f"not an exact rational: {text!r}")
-            return pair
     num, slash, den = text.partition("/") if isinstance(text, str) else ("?", "", "")
     try:
         p, q = integer(num), (integer(den) if slash else 1)
