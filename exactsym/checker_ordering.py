@@ -137,7 +137,18 @@ def _least(plane: _Plane, x: list, others: list) -> None:
     for other in others:
         s = x + [None] + other + other[:-1]
         z, left, right = [0] * len(s), 0, 0
-        for i in range(1, 2 * m + 1):          # s[m + 1 + j:]: the rotation by j
+        positions = range(1, 2 * m + 1)        # s[m + 1 + j:]: the rotation by j
+        if plane.native:
+            # z[i] > 0 only where s[i] == x[0]; elsewhere z[i] = 0 leaves the Z-box as it is,
+            # so only those positions are visited, and a rotation starting elsewhere differs
+            # from x at symbol 0: one comparison (radii first) shows it larger
+            x0, r0 = x[0], x[0][0]
+            need(not [i for i in range(m + 1, 2 * m + 1) if s[i] != x0 and (
+                s[i][0] < r0 or s[i][0] == r0 and _cmp_symbol(plane, s[i], x0) < 0)],
+                "ordering: a reading is less than the claimed one at symbol 0: the claimed "
+                "order is not the canonical one")
+            positions = [i for i in positions if s[i] == x0]
+        for i in positions:
             zi = min(right - i, z[i - left]) if i < right else 0
             while i + zi < len(s) and zi < m and s[i + zi] is not None and (
                     s[zi] == s[i + zi] if plane.native else
