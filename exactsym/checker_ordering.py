@@ -82,6 +82,8 @@ def _rays(plane: _Plane, order: list) -> list:
     """The rays of ``order`` (points off c), checked to be sorted counter-clockwise from the
     first point's direction, each ray by increasing distance."""
     need(order, "the canonical order lists no point off the centre")
+    if plane.native and not plane.polar:
+        return _rays_native(plane, order)
     rays, last = [[order[0]]], plane.angle(order[0], order[0])
     for i in order[1:]:
         a = plane.angle(order[0], i)
@@ -94,6 +96,29 @@ def _rays(plane: _Plane, order: list) -> list:
             need(step > 0, f"ordering: point {i} is not in angular order")
             rays.append([i])
         last = a
+    return rays
+
+
+def _rays_native(plane: _Plane, order: list) -> list:
+    """_rays with plane.angle and plane.cmp_angle written out for Python numbers: the angle
+    from the first direction u to v is (d, c) = (u . v, u x v), in the upper half (h = 0)
+    when c > 0 or (c = 0 and d > 0); in one half, a is after b iff b x a > 0."""
+    dirs, r2 = plane.dirs, plane.r2
+    ux, uy = dirs[order[0]]
+    rays, ld, lc, lh = [[order[0]]], ux * ux + uy * uy, 0, 0
+    for i in order[1:]:
+        vx, vy = dirs[i]
+        d, c = ux * vx + uy * vy, ux * vy - uy * vx
+        h = 0 if c > 0 or (c == 0 and d > 0) else 1
+        x = ld * c - lc * d if h == lh else h - lh
+        if x == 0:
+            need(r2[i] > r2[rays[-1][-1]], f"ordering: point {i} is not farther from the "
+                 "centre than the point before it on its ray")
+            rays[-1].append(i)
+        else:
+            need(x > 0, f"ordering: point {i} is not in angular order")
+            rays.append([i])
+        ld, lc, lh = d, c, h
     return rays
 
 
