@@ -31,9 +31,10 @@ import itertools
 import math
 from fractions import Fraction
 
-from flint import arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz, fmpz_mat, fmpz_poly, nmod_poly
+from flint import arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz, fmpz_poly, nmod_poly
 
 from . import checker
+from .certificate_fields import square_root_proof
 from .configuration import Configuration
 from .exact import FieldElement
 from .exact.multiquadratic import MQ
@@ -102,6 +103,7 @@ class Encoder:
             self._square_roots(values)          # written natively, no field embedding
             return
         self.field = field
+        self.atoms = getattr(system, "atoms", None)
         if field.conductor is not None:
             self._cyclotomic(field)
         else:
@@ -175,7 +177,7 @@ class Encoder:
                     and checker.irreducible_mod(coeffs, prime):
                 self._finish(field.enclosure, {"method": "prime", "prime": prime})
                 return
-        proof = _square_root_proof(field)
+        proof = square_root_proof(field, self.atoms)
         if proof is not None:
             self._finish(field.enclosure, proof)
             return
@@ -237,108 +239,6 @@ def _tower_text(v):
             return rational_text(v.to_fmpq())
         return {str(m): rational_text(c) for m, c in sorted(v.terms.items())}
     return [v[0], _tower_text(v[1]), _tower_text(v[2])]
-
-
-def _square_root_proof(field) -> dict | None:
-    """The checker's "square-roots" proof for a multiquadratic field written by a primitive
-    element theta (its Galois group has no element of order d, so no prime works): k = log2 d
-    radicands, products of the primes of the discriminant, no subset product a square, each
-    with a polynomial g in theta, g^2 = a.  g is found as an integer relation between
-    1, theta, ..., theta^(d-1), sqrt(a) (LLL on Arb values) and kept only if g*g == a exactly."""
-    d = field.degree
-    cyclo, e = None, 1
-    if d & (d - 1):                             # not a power of 2: a real cyclotomic part
-        cyclo = _cyclotomic_root(field)
-        if cyclo is None:
-            return None
-        e = cyclo[1]
-        if e % 2 == 0 or d % e:
-            return None
-    k = (d // e).bit_length() - 1
-    if d < 2 or d != math.lcm(1 << k, e):
-        return None
-    disc = fmpz_poly(field.minpoly.numer()).discriminant()
-    primes = [int(p) for p, _ in fmpz(abs(disc)).factor()][:12]
-    theta = field.gen
-    chosen: list[int] = []
-    roots: list = []
-    for mask in range(1, 1 << len(primes)):
-        a = math.prod(p for i, p in enumerate(primes) if mask >> i & 1)
-        if any(_is_square(a * math.prod(c for j, c in enumerate(chosen) if sub >> j & 1))
-               for sub in range(1 << len(chosen))):
-            continue                            # not independent of the chosen ones
-        g = _root_in_field(field, a)
-        if g is not None:
-            chosen.append(a)
-            roots.append(g)
-            if len(chosen) == k:
-                proof = {"method": "square-roots", "radicands": [str(a) for a in chosen],
-                         "roots": [[rational_text(c) for c in g.coeffs()] for g in roots]}
-                if cyclo is not None:
-                    proof["cyclotomic"] = {"conductor": cyclo[0], "root": [
-                        rational_text(c) for c in cyclo[2].coeffs()]}
-                return proof
-    return None
-
-
-def _cyclotomic_root(field):
-    """(M, deg Psi_M, h) with h(theta) = 2cos(2pi/M) in the field, for the largest M <= 200
-    whose Psi_M has odd degree dividing the field's (LLL proposes, an exact check decides)."""
-    d = field.degree
-    for m in range(200, 2, -1):
-        psi = checker.psi(m)
-        e = len(psi) - 1
-        if e < 3 or e % 2 == 0 or d % e:
-            continue
-        for bits in (64 * d + 256, 256 * d + 1024, 1024 * d):
-            with ctx.workprec(bits + 64):
-                theta = field.enclosure(bits + 64)
-                values = [arb(1)]
-                for _ in range(d - 1):
-                    values.append(values[-1] * theta)
-                values.append(2 * arb.cos_pi_fmpq(fmpq(2, m)))
-                scale = arb(2) ** bits
-                column = [int((v * scale).mid().floor().unique_fmpz()) for v in values]
-            rows = [[int(i == j) for j in range(d + 1)] + [column[i]] for i in range(d + 1)]
-            lll = fmpz_mat(rows).lll()
-            relation = [lll[0, j] for j in range(d + 2)]
-            if relation[d] == 0:
-                continue
-            h = fmpq_poly([fmpq(-int(relation[i]), int(relation[d])) for i in range(d)])
-            value = fmpq_poly([0])
-            for c in reversed(psi):
-                value = (value * h + c) % field.minpoly
-            if value == 0:
-                return m, e, h
-    return None
-
-
-def _is_square(n: int) -> bool:
-    return math.isqrt(n) ** 2 == n
-
-
-def _root_in_field(field, a: int):
-    """A polynomial g with g(theta)^2 == a in the field, or None (LLL proposes, exact decides)."""
-    d = field.degree
-    for bits in (64 * d + 256, 256 * d + 1024):
-        with ctx.workprec(bits + 64):
-            theta = field.enclosure(bits + 64)
-            values = [arb(1)]
-            for _ in range(d - 1):
-                values.append(values[-1] * theta)
-            values.append(arb(a).sqrt())
-            scale = arb(2) ** bits
-            column = [int((v * scale).mid().floor().unique_fmpz()) for v in values]
-        rows = [[int(i == j) for j in range(d + 1)] + [column[i]] for i in range(d + 1)]
-        relation = fmpz_mat(rows).lll().tolist()[0] if hasattr(fmpz_mat, "tolist") else \
-            [fmpz_mat(rows).lll()[0, j] for j in range(d + 2)]
-        last = relation[d]
-        if last == 0:
-            continue
-        g = fmpq_poly([fmpq(-int(relation[i]), int(last)) for i in range(d)])
-        if (g * g) % field.minpoly == a:
-            return g
-    return None
 
 
 def _primes(limit: int):

@@ -8,7 +8,9 @@ a proof that the polynomial is irreducible -- is checked before any element is m
 from __future__ import annotations
 
 import itertools
+import re
 from fractions import Fraction
+from functools import lru_cache
 from math import gcd, isqrt, lcm, prod
 
 class Invalid(Exception):
@@ -20,8 +22,15 @@ def need(condition, reason: str) -> None:
         raise Invalid(reason)
 
 
+_SHORT = re.compile(r"([+-]?[0-9]{1,4000})(?:/([0-9]{1,4000}))?")     # ASCII digits only
+
+
 def rat(text) -> tuple[int, int]:
     """An exact rational "p/q" or "p" (or a JSON integer) as ``(p, q)``, q > 0."""
+    if type(text) is str and len(text) < 200:
+        pair = _short_rat(text)                 # the common case: parsed once per text
+        if pair is not None and pair[1] > 0:
+            return pair
     if isinstance(text, int) and not isinstance(text, bool):
         return text, 1
     num, slash, den = text.partition("/") if isinstance(text, str) else ("?", "", "")
@@ -31,6 +40,17 @@ def rat(text) -> tuple[int, int]:
         q = 0
     need(q > 0, f"not an exact rational: {text!r}")
     return p, q
+
+
+@lru_cache(maxsize=1 << 18)
+def _short_rat(text: str) -> tuple[int, int] | None:
+    """(p, q) for "p/q" or "p" in ASCII digits, else None (the group and the ordering
+    checks read the same points: the cache parses each text once)."""
+    match = _SHORT.fullmatch(text)
+    if not match:
+        return None
+    num, den = match.groups()
+    return int(num), (int(den) if den is not None else 1)
 
 
 def integer(text: str) -> int:
@@ -174,6 +194,19 @@ def one_root(p: list, lo: Fraction, hi: Fraction) -> bool:
     return sum(a != b for a, b in zip(signs, signs[1:])) == 1
 
 
+def squarefree_part(n: int) -> int:
+    """n divided by its largest square factor (trial division: the radicands of a
+    square-roots proof are below 2^48, products of primes of a discriminant)."""
+    out, q = 1, 2
+    while q * q <= n:
+        while n % (q * q) == 0:
+            n //= q * q
+        if n % q == 0:
+            out, n = out * q, n // q
+        q += 1
+    return out * n
+
+
 def peval(p, x):
     value = 0
     for c in reversed(p):
@@ -209,38 +242,53 @@ class Field:
                  f"the minimal polynomial is not irreducible modulo {proof['prime']!r}")
 
     def square_roots(self, radicands: list, roots: list, cyclo: dict | None = None) -> None:
-        """p is irreducible if it has degree 2^k and Q(theta') holds square roots of k
-        positive integers a_1..a_k, no product of a non-empty subset of which is a square,
-        for every root theta' of p.  Such a_i generate a field of degree 2^k (the square
-        roots of independent elements of Q*/Q*^2 have independent classes: Besicovitch 1940),
-        so every root of p has degree >= 2^k = deg p, and p is its minimal polynomial.  The
-        roots are polynomials g_i with g_i^2 = a_i modulo p: this holds at every root of p,
-        whatever p is, because it is a polynomial identity modulo p.
+        """p is irreducible if it has degree 2^k e and, for every root theta' of p, Q(theta')
+        holds a subfield K of degree e and square roots of k positive integers a_1..a_k no
+        product of a non-empty subset of which is a square in K.  By Kummer theory (exponent
+        2; K holds -1) K(sqrt a_1, ..., sqrt a_k) then has degree 2^k over K, so every root of p
+        has degree >= 2^k e = deg p, and p is its minimal polynomial.  The roots are
+        polynomials g_i with g_i^2 = a_i modulo p: this holds at every root of p, whatever p
+        is, because it is a polynomial identity modulo p.
 
-        With ``cyclo`` = {"conductor": M, "root": h}, Psi_M(h) = 0 modulo p (again an identity
-        at every root): Q(theta') also holds a root of Psi_M, irreducible of degree e (Gauss),
-        so its degree is divisible by 2^k and by e, hence >= lcm(2^k, e), which must be deg p:
-        a tower, the real cyclotomic field and then square roots, without any intersection
-        argument (e.g. Q(sqrt 2, sqrt 3, cos(2pi/7)): lcm(4, 3) = 12)."""
+        K = Q without ``cyclo`` (e = 1: a product must not be a rational square).  With
+        ``cyclo`` = {"conductor": M, "root": h}, Psi_M(h) = 0 modulo p (again an identity at
+        every root), so Q(theta') holds K = Q(2cos(2pi/M)), of degree e = deg Psi_M (Gauss).
+        ``cyclo`` may be a list of such parts with pairwise coprime conductors M_j: K is then
+        the compositum of the Q(2cos(2pi/M_j)), of degree e = prod e_j (Q(zeta_Mi) and
+        Q(zeta_Mj) meet only in Q, so Galois subfields of them are linearly disjoint), inside
+        Q(zeta_M), M = prod M_j.  A rational a is a square in K only if sqrt(a) lies in
+        Q(zeta_M), i.e. (a's squarefree part s > 1) only if Q(sqrt s) has conductor dividing
+        M: s if s = 1 mod 4, else 4s (conductor-discriminant formula).  So the checker requires, for every non-empty
+        subset, a squarefree part s > 1 whose conductor does not divide M
+        (e.g. Q(sqrt 2, sqrt 3, cos(2pi/13)): 2^2 * 6 = 24; Q(sqrt 3, cos(2pi/16)): 2 * 4, where
+        sqrt 2 is in K and may not be a radicand)."""
         a = [integer(x) for x in radicands]
         k = len(a)
-        e = 1
-        if cyclo is not None:
-            m = cyclo["conductor"]
-            need(isinstance(m, int) and 3 <= m <= 10 ** 4, "square-roots proof: bad conductor")
-            psi_m, h = psi(m), self.num(cyclo["root"])
-            e = len(psi_m) - 1
+        e, m = 1, 1
+        for part in [cyclo] if isinstance(cyclo, dict) else cyclo or []:
+            mj = part["conductor"]
+            need(isinstance(mj, int) and 3 <= mj <= 10 ** 4 and gcd(m, mj) == 1,
+                 "square-roots proof: bad conductor (conductors must be pairwise coprime)")
+            psi_m, h = psi(mj), self.num(part["root"])
             value = 0
             for c in reversed(psi_m):
                 value = value * h + c
-            need(value == 0, f"square-roots proof: the root given is not a root of Psi_{m}")
-        need(0 <= k <= 16 and self.d == lcm(1 << k, e) > 1 and len(roots) == k
+            need(value == 0, f"square-roots proof: the root given is not a root of Psi_{mj}")
+            e, m = e * (len(psi_m) - 1), m * mj
+        need(0 <= k <= 16 and self.d == (1 << k) * e > 1 and len(roots) == k
              and all(x > 0 for x in a), "square-roots proof: need k positive radicands and "
-             "degree lcm(2^k, e)")
+             "degree 2^k e")
+        need(all(x < 1 << 48 for x in a), "square-roots proof: radicands below 2^48")
+        parts = [squarefree_part(x) for x in a]
         for mask in range(1, 1 << k):
-            product = prod(x for i, x in enumerate(a) if mask >> i & 1)
-            need(isqrt(product) ** 2 != product,
-                 f"square-roots proof: a product of radicands is a square ({product})")
+            s = 1                               # squarefree s, t: st = g^2 (s/g)(t/g)
+            for i, t in enumerate(parts):
+                if mask >> i & 1:
+                    g = gcd(s, t)
+                    s = (s // g) * (t // g)
+            need(s > 1, f"square-roots proof: a product of radicands is a square ({s})")
+            need(m % (s if s % 4 == 1 else 4 * s) != 0, f"square-roots proof: sqrt({s}) lies "
+                 f"in Q(zeta_{m}), so a product of radicands is a square there")
         for x, g in zip(a, roots):
             need(isinstance(g, list), "square-roots proof: a root must be a coefficient list")
             root = self.num(g)
@@ -273,21 +321,70 @@ class Field:
         return self.make([int(x * den) for x in q], den)
 
     def sign(self, c: tuple) -> int:
-        """The sign of c(theta) by interval Horner on [lo, hi], halving the interval (towards the
-        sign change of p) until 0 is excluded.  c(theta) != 0 for canonical c != 0 and the
-        enclosure shrinks to c(theta), so this ends; the narrower interval is kept."""
-        for _ in range(10000):
+        """The sign of c(theta): interval Horner on [lo, hi] in fixed point (see _horner),
+        bisecting the interval (towards the sign change of p) until 0 is excluded.
+        c(theta) != 0 for canonical c != 0 and the enclosure shrinks to c(theta) as the
+        interval and the rounding shrink, so this ends; the narrower interval is kept."""
+        if not c:
+            return 0
+        for _ in range(4000):
             lo, hi = self.interval
-            a = b = Fraction(0)
-            for coeff in reversed(c):
-                ends = (a * lo, a * hi, b * lo, b * hi)
-                a, b = min(ends) + coeff, max(ends) + coeff
-            if a > 0 or b < 0 or not c:
-                return (a > 0) - (b < 0)
-            mid = (lo + hi) / 2
-            left = (peval(self.p, lo) > 0) != (peval(self.p, mid) > 0)
-            self.interval = (lo, mid) if left else (mid, hi)
+            bits = self._bits()
+            a, b = _horner(c, _floor(lo, bits), _ceil(hi, bits), bits)
+            if a > 0 or b < 0:
+                return 1 if a > 0 else -1
+            for _ in range(16):
+                self._bisect(self._bits())
         raise Invalid("a sign could not be decided")
+
+    def _bits(self) -> int:
+        """Fixed-point bits for Horner on the interval: its width, plus d bits per doubling of
+        |theta| (the rounding error of step i is multiplied by |theta|^(d - i)), plus 64."""
+        lo, hi = self.interval
+        width = hi - lo
+        scale = max(abs(lo), abs(hi), Fraction(1))
+        return (64 + width.denominator.bit_length() - width.numerator.bit_length()
+                + self.d * (int(scale).bit_length() + 1))
+
+    def _bisect(self, bits: int) -> None:
+        lo, hi = self.interval
+        mid = Fraction(_floor((lo + hi) / 2, bits), 1 << bits)
+        if not lo < mid < hi:
+            mid = (lo + hi) / 2
+        at_lo = self._p_sign(lo, bits)
+        at_mid = self._p_sign(mid, bits)
+        need(at_mid != 0, "the minimal polynomial has a rational root")
+        self.interval = (lo, mid) if at_lo != at_mid else (mid, hi)
+
+    def _p_sign(self, x: Fraction, bits: int) -> int:
+        """The sign of p(x): fixed point first, exact if the enclosure holds 0."""
+        if x.denominator & (x.denominator - 1) == 0:        # dyadic: exactly representable
+            for extra in (0, 64, 256):
+                a, b = _horner(self.big, _floor(x, bits + extra), _ceil(x, bits + extra),
+                               bits + extra)
+                if a > 0 or b < 0:
+                    return 1 if a > 0 else -1
+        v = peval(self.big, x)
+        return (v > 0) - (v < 0)
+
+
+def _floor(x: Fraction, bits: int) -> int:
+    return (x.numerator << bits) // x.denominator
+
+
+def _ceil(x: Fraction, bits: int) -> int:
+    return -((-x.numerator << bits) // x.denominator)
+
+
+def _horner(c, lo: int, hi: int, bits: int) -> tuple[int, int]:
+    """[a, b] / 2^bits holding sum c_i t^i for every t in [lo, hi] / 2^bits (c integers):
+    interval Horner in integers scaled by 2^bits, products rounded outwards (floor and
+    ceiling shifts), so the numbers stay of about ``bits`` bits whatever the degree."""
+    a = b = 0
+    for coeff in reversed(c):
+        ends = (a * lo, a * hi, b * lo, b * hi)
+        a, b = (min(ends) >> bits) + (coeff << bits), -(-max(ends) >> bits) + (coeff << bits)
+    return a, b
 
 
 class Alg:
@@ -384,55 +481,68 @@ class SquareRoots:
                 need(m not in terms, f"radicand product {m} given twice")
                 if q:
                     terms[m] = q
-            return Root(terms)
+            return Root.of(terms)
         need(not isinstance(value, list), "a square-root field's numbers are rationals or "
              "{product: coefficient} maps")
         q = frac(value)
-        return Root({1: q} if q else {})
+        return Root.of({1: q} if q else {})
 
 
 class Root:
-    """sum c_m sqrt(m), canonical (see SquareRoots): exact == and hash; mixes with numbers."""
-    __slots__ = ("t",)
+    """(sum c_m sqrt(m)) / den with integer c_m, canonical (see SquareRoots): no zero c_m,
+    den > 0 and gcd(den, every c_m) = 1, so == and hash are exact; mixes with numbers.
+    Integer coefficients over one denominator: a product of two elements of t terms costs
+    t^2 integer products, not t^2 fraction products with a gcd each (nine square roots and a
+    circumcentre give elements of 128 terms with 100-digit coefficients)."""
+    __slots__ = ("t", "den")
 
-    def __init__(self, terms: dict):
-        self.t = terms
+    def __init__(self, terms: dict, den: int = 1):
+        g = gcd(den, *terms.values())
+        if g != 1:
+            terms, den = {m: c // g for m, c in terms.items()}, den // g
+        self.t, self.den = terms, den
 
     @staticmethod
-    def _of(o) -> dict:
+    def of(terms: dict) -> "Root":
+        """From rational coefficients."""
+        den = lcm(*(Fraction(c).denominator for c in terms.values())) if terms else 1
+        return Root({m: int(c * den) for m, c in terms.items()}, den)
+
+    @staticmethod
+    def _of(o) -> "Root":
         if isinstance(o, Root):
-            return o.t
+            return o
         o = Fraction(o)
-        return {1: o} if o else {}
+        return Root({1: o.numerator} if o else {}, o.denominator)
 
     def __add__(self, o):
-        out = dict(self.t)
-        for m, c in self._of(o).items():
-            s = out.get(m, 0) + c
-            if s:
-                out[m] = s
+        o = self._of(o)
+        a, b = o.den, self.den
+        out = {m: c * a for m, c in self.t.items()}
+        for m, c in o.t.items():
+            v = out.get(m, 0) + c * b
+            if v:
+                out[m] = v
             else:
                 out.pop(m, None)
-        return Root(out)
+        return Root(out, a * b)
 
     def __mul__(self, o):
+        o = self._of(o)
         out: dict = {}
+        get = out.get
         for m, c in self.t.items():
-            for k, d in self._of(o).items():
+            for k, d in o.t.items():
                 g = gcd(m, k)
                 key = (m // g) * (k // g)
-                s = out.get(key, 0) + c * d * g
-                if s:
-                    out[key] = s
-                else:
-                    out.pop(key, None)
-        return Root(out)
+                out[key] = get(key, 0) + c * d * g
+        return Root({m: c for m, c in out.items() if c}, self.den * o.den)
 
     def __neg__(self):
-        return Root({m: -c for m, c in self.t.items()})
+        return Root({m: -c for m, c in self.t.items()}, self.den)
 
     def __sub__(self, o):
-        return self + (-Root(self._of(o)))
+        return self + (-self._of(o))
 
     def __rsub__(self, o):
         return -self + o
@@ -440,24 +550,27 @@ class Root:
     __radd__, __rmul__ = __add__, __mul__
 
     def __eq__(self, o):
-        return isinstance(o, (Root, int, Fraction)) and self.t == self._of(o)
+        if not isinstance(o, (Root, int, Fraction)):
+            return False
+        o = self._of(o)
+        return self.den == o.den and self.t == o.t
 
     def __hash__(self):
-        return hash(frozenset(self.t.items()))
+        return hash((frozenset(self.t.items()), self.den))
 
     def sign(self) -> int:
         """By rational enclosures sqrt(m) in [isqrt(m 4^b), isqrt(m 4^b) + 1] / 2^b, b rising
-        until 0 is excluded (a non-zero element is a non-zero real: this ends)."""
+        until 0 is excluded (a non-zero element is a non-zero real: this ends).  In integers:
+        lo, hi bound 2^b times the numerator; den > 0 does not change the sign."""
         if not self.t:
             return 0
         bits = 32
         while bits < 1 << 20:
-            lo = hi = Fraction(0)
+            lo = hi = 0
             for m, c in self.t.items():
                 r = isqrt(m << 2 * bits)
-                a, b = (Fraction(r, 1 << bits), Fraction(r + (r * r != m << 2 * bits),
-                                                         1 << bits))
-                lo, hi = lo + min(c * a, c * b), hi + max(c * a, c * b)
+                r1 = r + (r * r != m << 2 * bits)
+                lo, hi = (lo + c * r, hi + c * r1) if c > 0 else (lo + c * r1, hi + c * r)
             if lo > 0 or hi < 0:
                 return 1 if lo > 0 else -1
             bits *= 2

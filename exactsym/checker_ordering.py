@@ -26,6 +26,8 @@ one comparison at position L shows that start larger (or L = m: an equal reading
 
 from __future__ import annotations
 
+from math import gcd, lcm
+
 try:
     from .checker_numbers import need, rat, scaled, sgn
 except ImportError:     # run as a lone script (python exactsym/checker.py): a sibling file
@@ -36,18 +38,26 @@ def _cmp(a, b) -> int:
     return sgn(a - b)
 
 
-class _Plane:
-    """Points about c in one frame: the radius and the direction of each point off c."""
+def _native_sign(v) -> int:
+    return (v > 0) - (v < 0)
 
-    def __init__(self, polar: bool, r2: list, dirs: list, turn: int):
+
+class _Plane:
+    """Points about c in one frame: the radius and the direction of each point off c.
+    ``native``: every number is an int or a Fraction (no number field), so Python's own
+    comparisons are exact and symbols get canonical forms (see _symbols)."""
+
+    def __init__(self, polar: bool, r2: list, dirs: list, turn: int, native: bool = False):
         self.polar, self.r2, self.dirs, self.turn = polar, r2, dirs, turn
+        self.native = native
+        self.sign = _native_sign if native else sgn
 
     def mirrored(self) -> "_Plane":
         if self.polar:
             return _Plane(True, self.r2, [None if d is None else -d % self.turn
-                                          for d in self.dirs], self.turn)
+                                          for d in self.dirs], self.turn, self.native)
         return _Plane(False, self.r2, [None if d is None else (d[0], -d[1])
-                                       for d in self.dirs], self.turn)
+                                       for d in self.dirs], self.turn, self.native)
 
     def angle(self, i: int, j: int):
         """The angle from the direction of point i to that of point j, in [0, 2pi): a turn
@@ -61,23 +71,26 @@ class _Plane:
         if self.polar:
             return (a > b) - (a < b)
         # upper half [0, pi) before lower half [pi, 2pi); in one half, the cross product
-        half = [0 if sgn(y) > 0 or (y == 0 and sgn(x) > 0) else 1 for x, y in (a, b)]
+        sign = self.sign
+        half = [0 if sign(y) > 0 or (y == 0 and sign(x) > 0) else 1 for x, y in (a, b)]
         if half[0] != half[1]:
             return -1 if half[0] < half[1] else 1
-        return -sgn(a[0] * b[1] - a[1] * b[0])
+        return -sign(a[0] * b[1] - a[1] * b[0])
 
 
 def _rays(plane: _Plane, order: list) -> list:
     """The rays of ``order`` (points off c), checked to be sorted counter-clockwise from the
     first point's direction, each ray by increasing distance."""
     need(order, "the canonical order lists no point off the centre")
+    if plane.native and not plane.polar:
+        return _rays_native(plane, order)
     rays, last = [[order[0]]], plane.angle(order[0], order[0])
     for i in order[1:]:
         a = plane.angle(order[0], i)
         step = plane.cmp_angle(a, last)
         if step == 0:
-            need(_cmp(plane.r2[i], plane.r2[rays[-1][-1]]) > 0, f"ordering: point {i} is "
-                 "not farther from the centre than the point before it on its ray")
+            need(plane.sign(plane.r2[i] - plane.r2[rays[-1][-1]]) > 0, f"ordering: point {i} "
+                 "is not farther from the centre than the point before it on its ray")
             rays[-1].append(i)
         else:
             need(step > 0, f"ordering: point {i} is not in angular order")
@@ -86,18 +99,54 @@ def _rays(plane: _Plane, order: list) -> list:
     return rays
 
 
-def _symbols(plane: _Plane, rays: list, clockwise: bool) -> list:
-    """The reading from R_0: counter-clockwise, or (clockwise) the string of the mirror image
-    read from R_0: rays R_0, R_-1, ..., each with the angle from the ray before it."""
+def _rays_native(plane: _Plane, order: list) -> list:
+    """_rays with plane.angle and plane.cmp_angle written out for Python numbers: the angle
+    from the first direction u to v is (d, c) = (u . v, u x v), in the upper half (h = 0)
+    when c > 0 or (c = 0 and d > 0); in one half, a is after b iff b x a > 0."""
+    dirs, r2 = plane.dirs, plane.r2
+    ux, uy = dirs[order[0]]
+    rays, ld, lc, lh = [[order[0]]], ux * ux + uy * uy, 0, 0
+    for i in order[1:]:
+        vx, vy = dirs[i]
+        d, c = ux * vx + uy * vy, ux * vy - uy * vx
+        h = 0 if c > 0 or (c == 0 and d > 0) else 1
+        x = ld * c - lc * d if h == lh else h - lh
+        if x == 0:
+            need(r2[i] > r2[rays[-1][-1]], f"ordering: point {i} is not farther from the "
+                 "centre than the point before it on its ray")
+            rays[-1].append(i)
+        else:
+            need(x > 0, f"ordering: point {i} is not in angular order")
+            rays.append([i])
+        ld, lc, lh = d, c, h
+    return rays
+
+
+def _symbols(plane: _Plane, rays: list) -> tuple[list, list]:
+    """The readings from R_0: counter-clockwise, and clockwise (the string of the mirror image
+    read from R_0: rays R_0, R_-1, ..., each with the angle from the ray before it)."""
     m = len(rays)
     radii = [tuple(plane.r2[i] for i in ray) for ray in rays]
     gaps = [plane.angle(rays[j][0], rays[(j + 1) % m][0]) for j in range(m)]
-    if not clockwise:
-        return list(zip(radii, gaps))
-    return [(radii[-j % m], gaps[(-j - 1) % m]) for j in range(m)]
+    if plane.native and not plane.polar:        # equal angles: equal primitive vectors
+        gaps = [_primitive(x, y) for x, y in gaps]
+    return (list(zip(radii, gaps)),
+            [(radii[-j % m], gaps[(-j - 1) % m]) for j in range(m)])
+
+
+def _primitive(x, y) -> tuple[int, int]:
+    """The positive multiple of the vector (x, y) != 0 with coprime integer coordinates."""
+    d = lcm(x.denominator, y.denominator)
+    x, y = int(x * d), int(y * d)
+    g = gcd(x, y)
+    return x // g, y // g
 
 
 def _cmp_symbol(plane: _Plane, s, t) -> int:
+    if plane.native:                            # canonical radii and angles (see _symbols):
+        if s[0] != t[0]:                        # tuples compare with a proper prefix first
+            return -1 if s[0] < t[0] else 1
+        return 0 if s[1] == t[1] else plane.cmp_angle(s[1], t[1])
     for x, y in zip(s[0], t[0]):
         c = _cmp(x, y)
         if c:
@@ -113,10 +162,22 @@ def _least(plane: _Plane, x: list, others: list) -> None:
     for other in others:
         s = x + [None] + other + other[:-1]
         z, left, right = [0] * len(s), 0, 0
-        for i in range(1, 2 * m + 1):          # s[m + 1 + j:]: the rotation by j
+        positions = range(1, 2 * m + 1)        # s[m + 1 + j:]: the rotation by j
+        if plane.native:
+            # z[i] > 0 only where s[i] == x[0]; elsewhere z[i] = 0 leaves the Z-box as it is,
+            # so only those positions are visited, and a rotation starting elsewhere differs
+            # from x at symbol 0: one comparison (radii first) shows it larger
+            x0, r0 = x[0], x[0][0]
+            need(not [i for i in range(m + 1, 2 * m + 1) if s[i] != x0 and (
+                s[i][0] < r0 or s[i][0] == r0 and _cmp_symbol(plane, s[i], x0) < 0)],
+                "ordering: a reading is less than the claimed one at symbol 0: the claimed "
+                "order is not the canonical one")
+            positions = [i for i in positions if s[i] == x0]
+        for i in positions:
             zi = min(right - i, z[i - left]) if i < right else 0
-            while i + zi < len(s) and zi < m and s[i + zi] is not None and \
-                    _cmp_symbol(plane, s[zi], s[i + zi]) == 0:
+            while i + zi < len(s) and zi < m and s[i + zi] is not None and (
+                    s[zi] == s[i + zi] if plane.native else
+                    _cmp_symbol(plane, s[zi], s[i + zi]) == 0):
                 zi += 1
             z[i] = zi
             if i + zi > right:
@@ -147,7 +208,8 @@ def _plane(kind: str, points: list, field, witness: dict) -> _Plane:
         turns, T = scaled([rat(t) for _, t in points])
         r2 = scaled([rat(r) for r, _ in points])[0] if field is None else [
             field.num(r) for r, _ in points]
-        return _Plane(True, r2, [None if r == 0 else t % T for r, t in zip(r2, turns)], T)
+        return _Plane(True, r2, [None if r == 0 else t % T for r, t in zip(r2, turns)], T,
+                      field is None)
     sec = witness["sec"]
     if field is None:
         flat, _ = scaled([rat(v) for p in points + [sec["centre"]] for v in p])
@@ -174,7 +236,7 @@ def _plane(kind: str, points: list, field, witness: dict) -> _Plane:
         need(not {-1, 1} <= turns, "sec: the centre is outside the support triangle")
     else:
         need(big == 0, "sec: one support point must be the centre")
-    return _Plane(False, r2, [None if v == 0 else d for v, d in zip(r2, w)], 1)
+    return _Plane(False, r2, [None if v == 0 else d for v, d in zip(r2, w)], 1, field is None)
 
 
 def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
@@ -211,9 +273,9 @@ def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
     if _frame(spec):
         plane = plane.mirrored()
     rays = _rays(plane, order)
-    ccw = _symbols(plane, rays, False)
+    ccw, cw = _symbols(plane, rays)
     if orderable:
-        _least(plane, ccw, [ccw, _symbols(plane, rays, True)])
+        _least(plane, ccw, [ccw, cw])
         need(leader == ordering[0], "claim.leader is not the first of the ordering")
         return "ordering and leader"
     # D1, no point at c: the rays the mirror fixes (their points are fixed), the least reading
