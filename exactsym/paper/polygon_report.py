@@ -83,7 +83,7 @@ def _verdicts_and_type(polygon) -> tuple[dict, tuple | None]:
     n = polygon.n
     check = paper.check_symmetry(polygon)
     lines = paper.straight_lines(polygon)
-    mirrors = [key.value for key in mirror_lines(polygon)]       # exact, O(n)
+    mirrors = mirror_lines(polygon)       # exact line keys, O(n), no division
     kind = paper.polygon_type(polygon, mirrors)
     out = {
         "check": check.algorithm,
@@ -98,7 +98,7 @@ def _verdicts_and_type(polygon) -> tuple[dict, tuple | None]:
         "type_reason": None if kind is None else kind.reason,
     }
     if n <= DEFINITION_LIMIT:
-        mirrors = paper.definition_mirrors(polygon)
+        mirrors = paper.definition_mirror_keys(polygon)
         out["definition"] = {"straight": bool(mirrors), "skew": paper.is_skew_symmetric(polygon),
                              "mirrors": len(mirrors)}
     else:

@@ -110,7 +110,7 @@ def is_type4(ring: Ring) -> tuple[bool, str]:
     if ring.polygon is None:
         return False, "the robot at C"
     poly = ring.polygon
-    verdict = P.polygon_type(poly, [key.value for key in mirror_lines(poly)])
+    verdict = P.polygon_type(poly, mirror_lines(poly))
     if verdict is None:
         return False, "no line of straight symmetry"
     return str(verdict) == "type-4", f"{verdict} ({verdict.reason})"

@@ -45,7 +45,7 @@ from __future__ import annotations
 from .strings import (cw_string, acw_string, cw_string_edge, acw_string_edge, vertex_strings,
                       edge_strings, string_classes, string_classes_reference, perpendicular)
 from .definitions import (is_straight_symmetric, is_skew_symmetric, is_symmetric,
-                          definition_mirrors, theorem1_asymmetric, theorem1_1_asymmetric,
+                          definition_mirrors, definition_mirror_keys, theorem1_asymmetric, theorem1_1_asymmetric,
                           theorem1_violations)
 from .types import (vertex_palindromes, edge_palindromes, StraightLine, straight_lines,
                     is_regular, is_prime, TypeVerdict, polygon_type, vertices_on_line)
@@ -66,6 +66,7 @@ __all__ = [
     "is_skew_symmetric",
     "is_symmetric",
     "definition_mirrors",
+    "definition_mirror_keys",
     "theorem1_asymmetric",
     "theorem1_1_asymmetric",
     "theorem1_violations",

@@ -8,8 +8,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..circle_polygon import CirclePolygon
-from ..keys import ccw_gap_key, circle_line_keys, hashable_key, line_value
-from .definitions import definition_mirrors
+from ..keys import LineKey, circle_line_keys, gap_ids, line_key, line_value
+from .definitions import definition_mirror_keys
 from .strings import (HASH_BASE, HASH_MOD, Hasher, cw_string_edge, gap_classes, perpendicular,
                       string_classes, vertex_strings)
 
@@ -142,9 +142,7 @@ def is_regular(polygon: CirclePolygon) -> bool:
     n = polygon.n
     if n <= 1:
         return True
-    keys = {ccw_gap_key(polygon.polar, polygon.directions[b], polygon.directions[(b + 1) % n])
-            for b in range(n)}
-    return len(keys) == 1
+    return len(set(gap_ids(polygon))) == 1
 
 
 def is_prime(n: int) -> bool:
@@ -169,7 +167,11 @@ class TypeVerdict(str):
 
 def vertices_on_line(polygon: CirclePolygon, key) -> tuple:
     """The vertices (storage indices) whose direction from C lies on the line ``key``
-    (a line key of :func:`exactsym.paper.polygon.definition_mirrors`)."""
+    (a line key of :func:`exactsym.paper.polygon.definition_mirrors`, or a
+    :class:`~exactsym.paper.keys.LineKey`: compared without a division)."""
+    if isinstance(key, LineKey):
+        return tuple(i for i, d in enumerate(polygon.directions)
+                     if line_key(polygon.polar, d) == key)
     return tuple(i for i, d in enumerate(polygon.directions)
                  if line_value(polygon.polar, d) == key)
 
@@ -179,9 +181,10 @@ def polygon_type(polygon: CirclePolygon, mirrors=None):
     straight symmetric polygon by its definition, or None when the polygon has no line of
     straight symmetry (a skew-only or asymmetric polygon has no type).
 
-    ``mirrors``: its lines of straight symmetry as line keys, default the exact mirrors
-    of the definition (:func:`exactsym.paper.polygon.definition_mirrors`); the family
-    layer passes its O(n) :func:`exactsym.paper.family.mirror_lines`.  The lines the
+    ``mirrors``: its lines of straight symmetry as line keys or
+    :class:`~exactsym.paper.keys.LineKey`\\ s, default the exact mirrors of the definition
+    (:func:`exactsym.paper.polygon.definition_mirror_keys`); the family layer passes its
+    O(n) :func:`exactsym.paper.family.mirror_lines`.  The lines the
     CW/ACW strings find (:func:`straight_lines`) are *not* used: they can exceed the
     mirrors (``lemma-straight-sym``, reported separately as ``lines_by_strings``).
 
@@ -195,17 +198,18 @@ def polygon_type(polygon: CirclePolygon, mirrors=None):
     type 4 (k divides n, k < n as the polygon is not regular, so n is composite).  An
     odd polygon is therefore never unclassified."""
     if mirrors is None:
-        mirrors = definition_mirrors(polygon)
+        mirrors = definition_mirror_keys(polygon)
     mirrors = list(mirrors)
     n = polygon.n
     if not mirrors:
         return None
     count = len(mirrors)
     on_line: dict = {}
-    for d in polygon.directions:
-        k = hashable_key(line_value(polygon.polar, d))
+    for d in polygon.directions:            # LineKeys: no division
+        k = line_key(polygon.polar, d)
         on_line[k] = on_line.get(k, 0) + 1
-    through = [on_line.get(hashable_key(key), 0) for key in mirrors]
+    through = [on_line.get(key if isinstance(key, LineKey) else LineKey.of(key), 0)
+               for key in mirrors]
     if is_regular(polygon):
         return TypeVerdict("type-0", "regular", mirrors, through)
     on_vertices = sum(1 for t in through if t)
