@@ -70,8 +70,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import cached_property, cmp_to_key
 
-from ..exact import FieldElement, exact_key, fmpq, normal_turn, rational_sqrt, sign
+from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
 from ..geometry import compare_directions
+from .inverses import inverse_length
 
 __all__ = ["CirclePolygon", "level_polygon", "polygon_from_directions", "angular_distance",
            "POLAR_METRIC", "CARTESIAN_METRIC"]
@@ -99,7 +100,7 @@ def _cosine_key(u, v):
     s = sign(d)
     if s == 0:
         return d * 0
-    return -s * d * d / (_dot(u, u) * _dot(v, v))
+    return -s * d * d * inverse_length(_dot(u, u)) * inverse_length(_dot(v, v))
 
 
 @dataclass(frozen=True)
@@ -146,15 +147,7 @@ class CirclePolygon:
     @cached_property
     def inverse_lengths(self) -> tuple:
         """Cartesian: ``1 / |u|^2`` of each direction, one inverse per distinct length."""
-        seen: dict = {}
-        out = []
-        for d in self.directions:
-            length = _dot(d, d)
-            key = exact_key(length)
-            if key not in seen:
-                seen[key] = 1 / length
-            out.append(seen[key])
-        return tuple(out)
+        return tuple(inverse_length(_dot(d, d)) for d in self.directions)
 
     @cached_property
     def one_circle(self) -> bool:

@@ -15,6 +15,7 @@ from math import atan2, gcd, pi
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from ..geometry import compare_directions
 from .circle_polygon import CirclePolygon
+from .inverses import inverse_length
 
 
 HALF = fmpq(1, 2)
@@ -36,52 +37,29 @@ def ccw_gap_key(polar: bool, a, b):
         d = normal_turn(b - a)
         return d if d != 0 else fmpq(1)
     c, d = sign(cross(a, b)), dot(a, b)
-    if c > 0:
-        return (0, -sign(d) * d * d / (dot(a, a) * dot(b, b)))
+    if c > 0:       # d^2 / (|a|^2 |b|^2), one cached inverse per length (no inverse per gap)
+        return (0, -sign(d) * d * d * inverse_length(dot(a, a)) * inverse_length(dot(b, b)))
     if c < 0:
-        return (2, sign(d) * d * d / (dot(a, a) * dot(b, b)))
+        return (2, sign(d) * d * d * inverse_length(dot(a, a)) * inverse_length(dot(b, b)))
     return (1, 0) if sign(d) < 0 else (3, 0)
 
 
-def ray_key(polar: bool, d, inverse_length=None):
+def ray_key(polar: bool, d, inverse=None):
     """Exact hashable key of the ray from C with direction d (cheap to hash: numbers go
     through :func:`exactsym.exact.exact_key`): a turn (polar), else the signs of the
     coordinates of the unit vector u = d/|d| and ``u_x^2 = x^2 / (x^2 + y^2)``, which
     determine u, hence the ray.  The only division is by the squared length, a rational
     for points on a circle of rational radius about a rational centre; pass
-    ``inverse_length`` = 1/(x^2 + y^2) when it is known (else :func:`_inverse_length`:
-    one inverse per distinct length, never one per vertex: an inverse in a cyclotomic
-    field of degree hundreds costs a second)."""
+    ``inverse`` = 1/(x^2 + y^2) when it is known (else
+    :func:`exactsym.paper.inverses.inverse_length`: one inverse per distinct length, never
+    one per vertex: an inverse in a cyclotomic field of degree hundreds costs a second)."""
     if polar:
         return hashable_key(normal_turn(d))
     x, y = d
     xx = x * x
-    if inverse_length is None:
-        inverse_length = _inverse_length(xx + y * y)
-    return (sign(x), sign(y), exact_key(xx * inverse_length))
-
-
-def _reciprocal(v):
-    """1/v, exact (an ``int`` becomes an ``fmpq``, never a float)."""
-    return fmpq(1, v) if isinstance(v, int) else fmpq(1) / v
-
-
-_INVERSES: dict = {}
-_INVERSES_LIMIT = 256
-
-
-def _inverse_length(length):
-    """1/length, cached for irrational lengths (a level's directions share one length,
-    so one inverse serves all its rays and lines); rationals are divided directly."""
-    if not isinstance(length, FieldElement) or length.is_rational():
-        return _reciprocal(length)
-    k = exact_key(length)
-    inv = _INVERSES.get(k)
-    if inv is None:
-        if len(_INVERSES) >= _INVERSES_LIMIT:
-            _INVERSES.clear()
-        inv = _INVERSES[k] = _reciprocal(length)
-    return inv
+    if inverse is None:
+        inverse = inverse_length(xx + y * y)
+    return (sign(x), sign(y), exact_key(xx * inverse))
 
 
 def ray_keys(poly: CirclePolygon) -> tuple:
