@@ -22,9 +22,11 @@ from exactsym.audit_groups import SubGroups, group_about_centre
 from exactsym.exact import evaluate_all, fmpq
 from exactsym.exprtree import Const, Sqrt
 from exactsym.levels import levels_of
+from exactsym.paper.circle_polygon import polygon_from_directions
 from exactsym.paper.keys import (LineKey, angle_order_key, bisector_key, bisector_line,
                                  hashable_key, line_key, line_value, ray_key, ray_value,
                                  sort_by_angle)
+from exactsym.paper.polygon import straight_line_count, straight_lines
 from exactsym.symmetry import symmetry_group
 
 from strategies import polar_configuration
@@ -124,3 +126,19 @@ def test_subgroup_orderability_shortcuts_equal_the_computed_groups(k, mirror, se
         robots = [i for k in union for i in levels.levels[k - 1].points]
         expected = group_about_centre(config, levels, robots, union)[0].orderable
         assert subs.orderable(robots, union) == expected
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.fractions(0, 1, max_denominator=12), min_size=1, max_size=8, unique=True),
+       st.sampled_from([None, 7]), st.integers(1, 4))
+def test_straight_line_count_is_the_number_of_straight_lines(turns, root, k):
+    """Polar polygons, and the same turns as Cartesian vectors (rational when the turns
+    allow, else in Q(zeta)), symmetrised by C_k."""
+    turns = sorted({(t + Fraction(j, k)) % 1 for t in turns for j in range(k)})
+    polar = polygon_from_directions(range(len(turns)), [Q(t.numerator, t.denominator)
+                                                        for t in turns], True)
+    assert straight_line_count(polar) == len(straight_lines(polar))
+    if root is not None:
+        config = polar_configuration([(1, t) for t in turns]).cartesian()
+        cart = polygon_from_directions(range(len(turns)), config.points, False)
+        assert straight_line_count(cart) == len(straight_lines(cart))

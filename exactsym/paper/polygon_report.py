@@ -82,7 +82,7 @@ def _verdicts_and_type(polygon) -> tuple[dict, tuple | None]:
     """``(level_verdicts(polygon), type facts)`` (:func:`_type_facts`)."""
     n = polygon.n
     check = paper.check_symmetry(polygon)
-    lines = paper.straight_lines(polygon)
+    lines = paper.straight_line_count(polygon)       # no line values: no division
     mirrors = mirror_lines(polygon)       # exact line keys, O(n), no division
     kind = paper.polygon_type(polygon, mirrors)
     out = {
@@ -93,7 +93,7 @@ def _verdicts_and_type(polygon) -> tuple[dict, tuple | None]:
         "degree": degree_json(check.degree),
         "loop_terminates": (not check.axis_vertices) if n % 2 else None,
         "theorem1_symmetric": not paper.theorem1_asymmetric(polygon),
-        "lines_by_strings": len(lines),
+        "lines_by_strings": lines,
         "type": None if kind is None else str(kind),
         "type_reason": None if kind is None else kind.reason,
     }

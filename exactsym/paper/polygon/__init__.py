@@ -48,6 +48,7 @@ from .definitions import (is_straight_symmetric, is_skew_symmetric, is_symmetric
                           definition_mirrors, definition_mirror_keys, theorem1_asymmetric, theorem1_1_asymmetric,
                           theorem1_violations)
 from .types import (vertex_palindromes, edge_palindromes, StraightLine, straight_lines,
+                    straight_line_count,
                     is_regular, is_prime, TypeVerdict, polygon_type, vertices_on_line)
 from .check_symmetry import (CheckResult, check_symmetry_odd, check_symmetry_even, check_symmetry,
                              check_symmetry_odd_reference, check_symmetry_even_reference,
@@ -76,6 +77,7 @@ __all__ = [
     "edge_palindromes",
     "StraightLine",
     "straight_lines",
+    "straight_line_count",
     "is_regular",
     "is_prime",
     "TypeVerdict",

@@ -111,6 +111,29 @@ def straight_lines(polygon: CirclePolygon, reference: bool = False) -> list[Stra
             for key, at in found.items()]
 
 
+def straight_line_count(polygon: CirclePolygon) -> int:
+    """``len(straight_lines(polygon))`` (the report's ``lines_by_strings``) without the
+    lines' exact keys: the same palindromes, the lines told apart by
+    :func:`exactsym.paper.keys.circle_line_keys` on one circle, else by
+    :class:`~exactsym.paper.keys.LineKey` (no division)."""
+    n = polygon.n
+    if n == 0:
+        return 0
+    vp = vertex_palindromes(polygon)
+    edges = edge_palindromes(polygon) if n >= 2 else []
+    circle = circle_line_keys(polygon) if n >= 2 else None
+    if circle is not None:
+        vk, ek = circle
+        return len({vk[i] for i in vp} | {ek[e] for e in edges})
+    keys = {line_key(polygon.polar, polygon.directions[i]) for i in vp}
+    for e in edges:
+        w = polygon.edge_direction(e)
+        if w is None:
+            w = perpendicular(polygon, polygon.directions[e])
+        keys.add(line_key(polygon.polar, w))
+    return len(keys)
+
+
 def _straight_lines_on_circle(polygon, vp, circle, reference) -> list[StraightLine]:
     """:func:`straight_lines` with the division-free line keys of
     :func:`exactsym.paper.keys.circle_line_keys` (same lines, same order); the exact key of
