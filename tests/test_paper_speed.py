@@ -6,6 +6,9 @@ unions of levels equal what they replace (issue 9: speed, never a changed verdic
   equal exactly when the old divided keys (sign x, y/x) are, on rational and algebraic
   directions with many coincident rays and lines;
 * :func:`exactsym.paper.keys.sort_by_angle` orders as :func:`angle_order_key`;
+* the ball filters of :mod:`exactsym.paper.filtered` (gap classes on one circle, the
+  comparison of directions) equal the exact predicates on exact ties;
+* :func:`exactsym.paper.polygon.straight_line_count` counts :func:`straight_lines`;
 * :class:`exactsym.audit_groups.SubGroups` decides orderability of every level and pair
   of levels as the group computed from scratch does, on configurations of known
   symmetry (orbits of C_k / D_k, levels of several radii).
@@ -22,8 +25,12 @@ from exactsym.audit_groups import SubGroups, group_about_centre
 from exactsym.exact import evaluate_all, fmpq
 from exactsym.exprtree import Const, Sqrt
 from exactsym.levels import levels_of
+from exactsym import geometry
+from exactsym.paper import filtered
 from exactsym.paper.circle_polygon import polygon_from_directions
+from exactsym.paper.filtered import gap_classes_on_circle
 from exactsym.paper.keys import (LineKey, angle_order_key, bisector_key, bisector_line,
+                                 ccw_gap_key,
                                  hashable_key, line_key, line_value, ray_key, ray_value,
                                  sort_by_angle)
 from exactsym.paper.polygon import straight_line_count, straight_lines
@@ -142,3 +149,22 @@ def test_straight_line_count_is_the_number_of_straight_lines(turns, root, k):
         config = polar_configuration([(1, t) for t in turns]).cartesian()
         cart = polygon_from_directions(range(len(turns)), config.points, False)
         assert straight_line_count(cart) == len(straight_lines(cart))
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.fractions(0, 1, max_denominator=12), min_size=2, max_size=9, unique=True),
+       st.integers(1, 4), st.sampled_from([1, 2]))
+def test_filtered_gaps_and_directions_equal_the_exact_ones(turns, k, radius):
+    """One circle in Q(zeta): the gap classes of the ball filter equal those of the exact
+    keys (many exact ties: C_k orbits), and the filtered direction comparison is the
+    exact one."""
+    turns = sorted({(t + Fraction(j, k)) % 1 for t in turns for j in range(k)})
+    config = polar_configuration([(radius, t) for t in turns] + [(3, Fraction(1, 7))])
+    dirs = config.cartesian().points[:-1]
+    n = len(dirs)
+    tokens = gap_classes_on_circle(dirs)
+    exact = [hashable_key(ccw_gap_key(False, dirs[i], dirs[(i + 1) % n])) for i in range(n)]
+    for i, j in combinations(range(n), 2):
+        assert (tokens[i] == tokens[j]) == (exact[i] == exact[j])
+    for u, v in combinations(dirs, 2):
+        assert filtered.compare_directions(u, v) == geometry.compare_directions(u, v)

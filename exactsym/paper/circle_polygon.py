@@ -71,7 +71,7 @@ from dataclasses import dataclass
 from functools import cached_property, cmp_to_key
 
 from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
-from ..geometry import compare_directions
+from .filtered import compare_directions
 from .inverses import inverse_length
 
 __all__ = ["CirclePolygon", "level_polygon", "polygon_from_directions", "angular_distance",
@@ -281,4 +281,6 @@ def level_polygon(config, rings, level_index: int) -> CirclePolygon:
         return CirclePolygon(labels, tuple(config.polar[i][1] for i in labels), True)
     cx, cy = rings.sec.centre
     pts = config.points
-    return CirclePolygon(labels, tuple((pts[i][0] - cx, pts[i][1] - cy) for i in labels), False)
+    poly = CirclePolygon(labels, tuple((pts[i][0] - cx, pts[i][1] - cy) for i in labels), False)
+    poly.__dict__["one_circle"] = True      # a level: one exact distance to C, by definition
+    return poly

@@ -13,8 +13,8 @@ from functools import cmp_to_key
 from math import atan2, gcd, pi
 
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
-from ..geometry import compare_directions
 from .circle_polygon import CirclePolygon
+from .filtered import compare_directions, gap_classes_on_circle
 from .inverses import inverse_length
 
 
@@ -213,19 +213,10 @@ def gap_ids(poly: CirclePolygon) -> list:
         if u is not None:
             return [ids.setdefault(integer_gap_key(u[i], u[(i + 1) % n]), len(ids))
                     for i in range(n)]
-        lengths = [dot(d, d) for d in dirs]
-        if all(x == lengths[0] for x in lengths):
-            # one circle: |a|^2 |b|^2 is the same for every gap, so the undivided key
-            # orders (and identifies) the gaps of this polygon just as well
-            def key(a, b):
-                c, d = sign(cross(a, b)), dot(a, b)
-                if c > 0:
-                    return (0, hashable_key(-sign(d) * d * d))
-                if c < 0:
-                    return (2, hashable_key(sign(d) * d * d))
-                return (1, 0) if sign(d) < 0 else (3, 0)
-            return [ids.setdefault(key(dirs[i], dirs[(i + 1) % n]), len(ids))
-                    for i in range(n)]
+        if poly.one_circle:
+            # one circle: the gaps are told apart by the sign of the cross product and
+            # the dot product, filtered by balls (exact products only for near ties)
+            return [ids.setdefault(t, len(ids)) for t in gap_classes_on_circle(dirs)]
     return [ids.setdefault(hashable_key(ccw_gap_key(poly.polar, dirs[i], dirs[(i + 1) % n])),
                            len(ids)) for i in range(n)]
 
@@ -256,7 +247,7 @@ def sort_by_angle(dirs: list) -> None:
     (as :func:`angle_order_key`, which it equals on distinct rays), without a division:
     rationals by :func:`angle_order_key` (a rational division is cheap); algebraic
     vectors by a float proposal whose adjacent pairs are then checked exactly
-    (:func:`exactsym.geometry.compare_directions`, a cross product), falling back to an
+    (:func:`exactsym.paper.filtered.compare_directions`, a cross product), falling back to an
     exact comparison sort when a check fails: the float only proposes."""
     if all(type(x) is fmpq and type(y) is fmpq for x, y in dirs):
         dirs.sort(key=angle_order_key)

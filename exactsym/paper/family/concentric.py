@@ -126,7 +126,7 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None) 
             dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in robots])
         poly = new_polygon(CirclePolygon)       # CirclePolygon(labels, dirs, polar), faster
         poly.__dict__.update(labels=tuple([(i,) for i in robots]), directions=dirs,
-                             polar=polar)
+                             polar=polar, one_circle=True)    # a level: one radius
         out.append(new_ring(f"G{k + 1}", poly, level.radius_squared, (k + 1,), robots,
                             robots))
     return tuple(out)

@@ -12,7 +12,8 @@ from typing import Sequence
 from ...exact import fmpq, normal_turn, sign
 from ...strings import cyclic_period, first_occurrence
 from ..circle_polygon import CirclePolygon
-from ..keys import HALF, ccw_gap_key, cross
+from ..filtered import cross_sign
+from ..keys import HALF, ccw_gap_key
 
 
 def below_half(polygon: CirclePolygon, a, b, ccw: bool) -> int:
@@ -21,7 +22,7 @@ def below_half(polygon: CirclePolygon, a, b, ccw: bool) -> int:
     if polygon.polar:
         d = normal_turn(b - a) if ccw else normal_turn(a - b)
         return -1 if d < HALF else (0 if d == HALF else 1)
-    c = sign(cross(a, b))
+    c = cross_sign(a, b)                    # ball-filtered, exact
     c = c if ccw else -c
     return -1 if c > 0 else (1 if c < 0 else 0)
 
