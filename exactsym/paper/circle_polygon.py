@@ -103,6 +103,36 @@ def _cosine_key(u, v):
     return -s * d * d * inverse_length(_dot(u, u)) * inverse_length(_dot(v, v))
 
 
+def _circle_chord(u, v):
+    """``-sign(u.v) (u.v)^2``: :meth:`CirclePolygon.chord_key` on one circle."""
+    d = _dot(u, v)
+    return -sign(d) * d * d
+
+
+_PAIRS: dict = {}
+_PAIRS_LIMIT = 1 << 16
+
+
+def _pair_value(f, u, v):
+    """``f(u, v)`` for a symmetric ``f`` of two direction vectors, remembered per pair of
+    vector *objects* when they hold algebraic numbers (each product costs a millisecond
+    in a large number field, and the strings, Theorem 1 and Elect_Leader_Asym's polygons
+    G minus v_i read the same chords again).  The entry keeps both vectors, so an id is
+    never mistaken for another object's; rational vectors are recomputed (cheap)."""
+    if not isinstance(u[0], FieldElement) and not isinstance(u[1], FieldElement) and \
+            not isinstance(v[0], FieldElement) and not isinstance(v[1], FieldElement):
+        return f(u, v)
+    key = (f, id(u), id(v)) if id(u) <= id(v) else (f, id(v), id(u))
+    hit = _PAIRS.get(key)
+    if hit is not None and ((hit[0] is u and hit[1] is v) or (hit[0] is v and hit[1] is u)):
+        return hit[2]
+    value = f(u, v)
+    if len(_PAIRS) >= _PAIRS_LIMIT:
+        _PAIRS.clear()
+    _PAIRS[key] = (u, v, value)
+    return value
+
+
 @dataclass(frozen=True)
 class CirclePolygon:
     """A convex polygon inscribed in a circle about the centre C (Section 3: 'by convex
@@ -168,9 +198,8 @@ class CirclePolygon:
         if self.polar:
             return angular_distance(a, b)
         if not self.one_circle:
-            return _cosine_key(a, b)
-        d = _dot(a, b)
-        return -sign(d) * d * d
+            return _pair_value(_cosine_key, a, b)
+        return _pair_value(_circle_chord, a, b)
 
     def edge_key(self, i: int, j: int):
         """An exact key, strictly increasing in the distance from m (the point of edge

@@ -98,6 +98,21 @@ def string_classes_reference(polygon: CirclePolygon, orientation: int = 1):
     CW_i == ACW_j iff cw[i] == acw[j].  O(n^2) keys."""
     ids: dict = {}
     cw, acw = [], []
+    if polygon.n <= 8:
+        # few strings: intern by exact equality, not by hashing (hashing a number of a
+        # field of degree hundreds costs milliseconds; equality is a comparison)
+        seen: list = []
+
+        def intern(s):
+            for t, k in seen:
+                if t == s:
+                    return k
+            seen.append((s, len(seen)))
+            return len(seen) - 1
+        for a, b in vertex_strings(polygon, orientation):
+            cw.append(intern(a))
+            acw.append(intern(b))
+        return cw, acw
     for a, b in vertex_strings(polygon, orientation):
         cw.append(ids.setdefault(a, len(ids)))
         acw.append(ids.setdefault(b, len(ids)))
