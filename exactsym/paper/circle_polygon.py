@@ -72,7 +72,7 @@ from functools import cached_property, cmp_to_key
 
 from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
 from .filtered import compare_directions
-from .inverses import inverse_length
+from .inverses import inverse_length, squared_length
 
 __all__ = ["CirclePolygon", "level_polygon", "polygon_from_directions", "angular_distance",
            "POLAR_METRIC", "CARTESIAN_METRIC"]
@@ -100,7 +100,7 @@ def _cosine_key(u, v):
     s = sign(d)
     if s == 0:
         return d * 0
-    return -s * d * d * inverse_length(_dot(u, u)) * inverse_length(_dot(v, v))
+    return -s * d * d * inverse_length(squared_length(u)) * inverse_length(squared_length(v))
 
 
 def _circle_chord(u, v):
@@ -177,15 +177,15 @@ class CirclePolygon:
     @cached_property
     def inverse_lengths(self) -> tuple:
         """Cartesian: ``1 / |u|^2`` of each direction, one inverse per distinct length."""
-        return tuple(inverse_length(_dot(d, d)) for d in self.directions)
+        return tuple(inverse_length(squared_length(d)) for d in self.directions)
 
     @cached_property
     def one_circle(self) -> bool:
         """Cartesian: every direction vector has the same length (a level polygon)."""
         if self.polar or not self.directions:
             return True
-        first = _dot(self.directions[0], self.directions[0])
-        return all(_dot(d, d) == first for d in self.directions)
+        first = squared_length(self.directions[0])
+        return all(squared_length(d) == first for d in self.directions)
 
     def chord_key(self, i: int, j: int):
         """An exact key, strictly increasing in the chord |v_i v_j|, for comparing the

@@ -34,4 +34,24 @@ def inverse_length(length):
     return inv
 
 
-__all__ = ["inverse_length", "reciprocal"]
+_LENGTHS: dict = {}
+
+
+def squared_length(d):
+    """``d_x^2 + d_y^2`` of an exact vector, remembered per vector *object* when it holds
+    algebraic numbers (the entry keeps the vector, so an id is never mistaken for another
+    object's): the keys of one polygon read each vertex's length many times."""
+    x, y = d
+    if not isinstance(x, FieldElement) and not isinstance(y, FieldElement):
+        return x * x + y * y
+    hit = _LENGTHS.get(id(d))
+    if hit is not None and hit[0] is d:
+        return hit[1]
+    value = x * x + y * y
+    if len(_LENGTHS) >= 1 << 14:
+        _LENGTHS.clear()
+    _LENGTHS[id(d)] = (d, value)
+    return value
+
+
+__all__ = ["inverse_length", "reciprocal", "squared_length"]

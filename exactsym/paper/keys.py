@@ -15,7 +15,7 @@ from math import atan2, gcd, pi
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from .circle_polygon import CirclePolygon
 from .filtered import compare_directions, cross_sign, gap_classes_on_circle
-from .inverses import inverse_length
+from .inverses import inverse_length, squared_length
 
 
 HALF = fmpq(1, 2)
@@ -38,9 +38,11 @@ def ccw_gap_key(polar: bool, a, b):
         return d if d != 0 else fmpq(1)
     c, d = cross_sign(a, b), dot(a, b)      # the cross product's sign ball-filtered
     if c > 0:       # d^2 / (|a|^2 |b|^2), one cached inverse per length (no inverse per gap)
-        return (0, -sign(d) * d * d * inverse_length(dot(a, a)) * inverse_length(dot(b, b)))
+        return (0, -sign(d) * d * d * inverse_length(squared_length(a))
+                * inverse_length(squared_length(b)))
     if c < 0:
-        return (2, sign(d) * d * d * inverse_length(dot(a, a)) * inverse_length(dot(b, b)))
+        return (2, sign(d) * d * d * inverse_length(squared_length(a))
+                * inverse_length(squared_length(b)))
     return (1, 0) if sign(d) < 0 else (3, 0)
 
 
