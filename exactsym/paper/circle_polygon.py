@@ -211,12 +211,20 @@ class CirclePolygon:
         w = self.edge_direction(i)
         if w is None:      # the edge is a diameter: m = C, every vertex at distance r
             return self._zero()
-        d = _dot(w, self.directions[j % self.n])
-        return -sign(d) * d * d
+        return _pair_value(_circle_chord, w, self.directions[j % self.n])
 
     def edge_direction(self, i: int):
         """Direction (turn or vector) from C of the point m' of the circle on the ray C->m,
-        m the midpoint of edge (i, i+1); None when the edge is a diameter (m = C)."""
+        m the midpoint of edge (i, i+1); None when the edge is a diameter (m = C).
+        Computed once per edge (the edge strings read it n times)."""
+        n = self.n
+        cache = self.__dict__.setdefault("_edge_directions", {})
+        i %= n
+        if i not in cache:
+            cache[i] = self._edge_direction(i)
+        return cache[i]
+
+    def _edge_direction(self, i: int):
         n = self.n
         a, b = self.directions[i % n], self.directions[(i + 1) % n]
         if self.polar:
@@ -229,8 +237,8 @@ class CirclePolygon:
             if gap > _HALF:
                 mid += _HALF
             return normal_turn(mid)
-        la, lb = _dot(a, a), _dot(b, b)
-        if la != lb:
+        la, lb = squared_length(a), squared_length(b)
+        if not self.one_circle and la != lb:
             scale = _rational_ratio_root(la, lb)
             if scale is None:
                 raise NotImplementedError(
