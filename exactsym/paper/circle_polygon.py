@@ -22,9 +22,10 @@ an exact *key* that is a strictly increasing function of the distance:
   increasing in ``theta``; ``-cos(theta)`` is too, and so is
   ``-sign(cos) cos^2`` = ``-sign(u.v) (u.v)^2 / (|u|^2 |v|^2)``: the key
   (:meth:`CirclePolygon.separation`).  The strings use :meth:`CirclePolygon.chord_key`:
-  on one circle the same key times the constant ``r^4``, ``-sign(u.v) (u.v)^2``, with no
-  division (an inverse in a number field of large degree can cost seconds); it compares
-  the chords of one polygon, which is all the strings do.
+  on one circle ``-u.v = -r^2 cos(theta)``, another strictly increasing function of
+  ``theta``, with no division (an inverse in a number field of large degree can cost
+  seconds) and one product; it compares the chords of one polygon (and of the polygons
+  G minus v_i, on the same circle), which is all the strings do.
 
 The point m on an edge
 ----------------------
@@ -104,9 +105,10 @@ def _cosine_key(u, v):
 
 
 def _circle_chord(u, v):
-    """``-sign(u.v) (u.v)^2``: :meth:`CirclePolygon.chord_key` on one circle."""
-    d = _dot(u, v)
-    return -sign(d) * d * d
+    """``-u.v``: :meth:`CirclePolygon.chord_key` on one circle (strictly increasing in
+    the angle of u and v for |u| |v| fixed, as ``-sign(u.v) (u.v)^2`` is; one product
+    less, and no sign, which matters when a product costs a second: nine square roots)."""
+    return -_dot(u, v)
 
 
 _PAIRS: dict = {}
@@ -190,9 +192,9 @@ class CirclePolygon:
     def chord_key(self, i: int, j: int):
         """An exact key, strictly increasing in the chord |v_i v_j|, for comparing the
         chords of *this* polygon (the strings, Section 3): :meth:`separation`, or on one
-        circle (:attr:`one_circle`) ``-sign(u.v) (u.v)^2``, the separation times the
-        positive constant ``|u|^2 |v|^2 = r^4`` -- no division (a field inverse can cost
-        seconds in a large number field)."""
+        circle (:attr:`one_circle`) ``-u.v = -r^2 cos(angle)``, strictly increasing in the
+        angle in [0, pi], hence in the chord ``2 r sin(angle / 2)`` -- no division (a field
+        inverse can cost seconds in a large number field) and a single product."""
         n = self.n
         a, b = self.directions[i % n], self.directions[j % n]
         if self.polar:
@@ -204,8 +206,9 @@ class CirclePolygon:
     def edge_key(self, i: int, j: int):
         """An exact key, strictly increasing in the distance from m (the point of edge
         (i, i+1), as :meth:`separation_from_edge`) to vertex j, for comparing the
-        distances from *one* edge point (an edge string CW_m, ACW_m): on one circle the
-        separation times the positive constant ``|w|^2 r^2`` of that edge, no division."""
+        distances from *one* edge point (an edge string CW_m, ACW_m): on one circle
+        ``-w.v``, strictly increasing in the angle of w and v (|w| and |v| fixed for that
+        edge point), no division."""
         if self.polar or not self.one_circle:
             return self.separation_from_edge(i, j)
         w = self.edge_direction(i)
