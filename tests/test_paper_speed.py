@@ -29,6 +29,8 @@ from exactsym import geometry
 from exactsym.paper import filtered
 from exactsym.paper.circle_polygon import polygon_from_directions
 from exactsym.paper.filtered import gap_classes_on_circle
+from exactsym.paper import polygon as P
+from exactsym.paper.polygon import small as small_polygons
 from exactsym.paper.keys import (LineKey, angle_order_key, bisector_key, bisector_line,
                                  ccw_gap_key,
                                  hashable_key, line_key, line_value, ray_key, ray_value,
@@ -168,3 +170,22 @@ def test_filtered_gaps_and_directions_equal_the_exact_ones(turns, k, radius):
         assert (tokens[i] == tokens[j]) == (exact[i] == exact[j])
     for u, v in combinations(dirs, 2):
         assert filtered.compare_directions(u, v) == geometry.compare_directions(u, v)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.fractions(0, 1, max_denominator=12), min_size=1, max_size=3, unique=True),
+       st.booleans())
+def test_small_polygon_filters_equal_the_literal_strings(turns, mirror):
+    """At most three vertices on one circle in Q(zeta), often with equal chords (an
+    isosceles triangle when mirrored): the ball-filtered classes and edge palindromes
+    are those of the literal strings."""
+    turns = sorted({t % 1 for t in turns} | ({(-t) % 1 for t in turns} if mirror else set()))[:3]
+    config = polar_configuration([(1, t) for t in turns] + [(3, Fraction(1, 7))])
+    dirs = config.cartesian().points[:-1]
+    poly = polygon_from_directions(range(len(dirs)), dirs, False)
+    assert small_polygons.applies(poly)
+    for orientation in (1, -1):
+        assert small_polygons.string_classes_small(poly, orientation) == \
+            P.string_classes_reference(poly, orientation)
+    assert small_polygons.edge_palindromes_small(poly) == \
+        P.edge_palindromes(poly, reference=True)

@@ -13,6 +13,7 @@ from ...exact import fmpq, normal_turn, sign
 from ...strings import cyclic_period, first_occurrence
 from ..circle_polygon import CirclePolygon
 from ..filtered import cross_sign
+from . import small
 from ..keys import HALF, ccw_gap_key
 
 
@@ -163,6 +164,8 @@ def string_classes(polygon: CirclePolygon, orientation: int = 1):
     check_orientation(orientation)
     n = polygon.n
     if n <= 3:
+        if small.applies(polygon):          # entries compared by balls, exact on overlap
+            return small.string_classes_small(polygon, orientation)
         return string_classes_reference(polygon, orientation)
     dirs = polygon.directions
     ids, h = gap_classes(polygon)

@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..circle_polygon import CirclePolygon
+from . import small
 from ..keys import LineKey, circle_line_keys, gap_ids, line_key, line_value
 from .definitions import definition_mirror_keys
 from .strings import (HASH_BASE, HASH_MOD, Hasher, cw_string_edge, gap_classes, perpendicular,
@@ -30,6 +31,8 @@ def edge_palindromes(polygon: CirclePolygon, reference: bool = False) -> list[in
     of an odd string is unconstrained; an edge that is a diameter has m = C and every
     distance equal to r.  ``reference=True`` compares the literal strings (O(n^2))."""
     n = polygon.n
+    if not reference and small.applies(polygon):     # n <= 3: balls, exact on overlap
+        return small.edge_palindromes_small(polygon)
     if reference or n <= 3:
         out = []
         for e in range(n):
