@@ -29,7 +29,7 @@ from exactsym import geometry
 from exactsym.paper import filtered
 from exactsym.paper.circle_polygon import polygon_from_directions
 from exactsym.paper.filtered import gap_classes_on_circle
-from exactsym.paper import polygon as P
+from exactsym.paper import family as F, polygon as P
 from exactsym.paper.polygon import small as small_polygons
 from exactsym.paper.keys import (LineKey, angle_order_key, bisector_key, bisector_line,
                                  ccw_gap_key,
@@ -189,3 +189,17 @@ def test_small_polygon_filters_equal_the_literal_strings(turns, mirror):
             P.string_classes_reference(poly, orientation)
     assert small_polygons.edge_palindromes_small(poly) == \
         P.edge_palindromes(poly, reference=True)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(1, 4), st.booleans(),
+       st.lists(st.fractions(0, 1, max_denominator=10), min_size=1, max_size=3))
+def test_filtered_definition_mirrors_are_the_mirror_lines(k, mirror, seeds):
+    """Orbits of C_k / D_k on one circle in Q(zeta) (the ball filter of
+    definition_mirror_keys applies): its mirrors are those of the O(n) gap algorithm."""
+    turns = sorted({(s * t + Fraction(j, k)) % 1 for t in seeds for j in range(k)
+                    for s in ((1, -1) if mirror else (1,))})
+    config = polar_configuration([(1, t) for t in turns] + [(3, Fraction(1, 7))])
+    dirs = config.cartesian().points[:-1]
+    poly = polygon_from_directions(range(len(dirs)), dirs, False)
+    assert set(F.mirror_lines(poly)) == set(P.definition_mirror_keys(poly))
