@@ -189,6 +189,7 @@ def test_small_polygon_filters_equal_the_literal_strings(turns, mirror):
             P.string_classes_reference(poly, orientation)
     assert small_polygons.edge_palindromes_small(poly) == \
         P.edge_palindromes(poly, reference=True)
+    assert P.straight_line_count(poly) == len(P.straight_lines(poly, reference=True))
 
 
 @settings(max_examples=30, deadline=None)

@@ -64,29 +64,60 @@ def string_classes_small(polygon: CirclePolygon, orientation: int = 1):
 
 
 def edge_palindromes_small(polygon: CirclePolygon) -> list[int]:
-    """Edges whose edge string CW_m equals its reverse (as the literal test), the
-    entries -w.v compared by balls first, exactly on overlap."""
+    """Edges whose edge string CW_m equals its reverse (as the literal test).  For n <= 3
+    the string of edge (e, e+1) reads v_e, v_{e-1}, v_{e+1} (n = 3) or v_e, v_{e+1}
+    (n = 2), so the only entries compared are the edge's two endpoints, equidistant from
+    its midpoint m: m = C is at distance r from both when the edge is a diameter, and
+    otherwise, with w = v_e + v_{e+1} and |v_e| = |v_{e+1}| (one circle),
+    w.v_e = r^2 + v_e.v_{e+1} = w.v_{e+1}.  Every edge is therefore a palindrome; the
+    loop below checks that this is the only comparison."""
     n = polygon.n
-    d = polygon.directions
     out = []
     for e in range(n):
-        w = polygon.edge_direction(e)
         order = [(e - s) % n for s in range(n)]
-        if w is None:              # a diameter: m = C, every entry equal
-            out.append(e)
-            continue
-        ok = True
-        for s in range(n // 2):
-            a, b = order[s], order[n - 1 - s]
-            if a == b:
-                continue
-            if _disjoint(_dot_ball(w, d[a]), _dot_ball(w, d[b])) or \
-                    polygon.edge_key(e, a) != polygon.edge_key(e, b):
-                ok = False
-                break
-        if ok:
-            out.append(e)
+        pairs = {frozenset((order[s], order[n - 1 - s])) for s in range(n // 2)}
+        if not pairs <= {frozenset((e, (e + 1) % n))}:
+            raise AssertionError("edge_palindromes_small is for at most three vertices")
+        out.append(e)
     return out
 
 
-__all__ = ["applies", "chords_equal", "string_classes_small", "edge_palindromes_small"]
+def line_count_small(polygon: CirclePolygon, vertices, edges) -> int:
+    """The number of distinct lines through C among those of the vertices ``vertices``
+    and of the edge points of ``edges`` (as :func:`exactsym.paper.keys.circle_line_keys`
+    tells them apart: vectors of length r^2 along the doubled angle, equal iff the lines
+    are), the vectors compared by balls first and exactly on overlap."""
+    d = polygon.directions
+    n = polygon.n
+    items = []          # (ball x, ball y, exact thunk)
+    for i in vertices:
+        x, y = d[i]
+        bx, by = ball(x), ball(y)
+        items.append((bx * bx - by * by, 2 * bx * by,
+                      lambda x=x, y=y: (x * x - y * y, 2 * x * y)))
+    for e in edges:
+        (ax, ay), (cx, cy) = d[e], d[(e + 1) % n]
+        bax, bay, bcx, bcy = ball(ax), ball(ay), ball(cx), ball(cy)
+        items.append((bax * bcx - bay * bcy, bax * bcy + bay * bcx,
+                      lambda ax=ax, ay=ay, cx=cx, cy=cy: (ax * cx - ay * cy,
+                                                           ax * cy + ay * cx)))
+    exact: dict = {}
+
+    def value(k):
+        if k not in exact:
+            exact[k] = items[k][2]()
+        return exact[k]
+    distinct: list = []
+    for k, (bx, by, _) in enumerate(items):
+        same = False
+        for j in distinct:
+            if items[j][0].overlaps(bx) and items[j][1].overlaps(by) and value(j) == value(k):
+                same = True
+                break
+        if not same:
+            distinct.append(k)
+    return len(distinct)
+
+
+__all__ = ["applies", "chords_equal", "string_classes_small", "edge_palindromes_small",
+           "line_count_small"]

@@ -124,6 +124,8 @@ def straight_line_count(polygon: CirclePolygon) -> int:
         return 0
     vp = vertex_palindromes(polygon)
     edges = edge_palindromes(polygon) if n >= 2 else []
+    if n >= 2 and small.applies(polygon):       # the same keys, compared by balls first
+        return small.line_count_small(polygon, vp, edges)
     circle = circle_line_keys(polygon) if n >= 2 else None
     if circle is not None:
         vk, ek = circle
