@@ -163,8 +163,11 @@ class AsymLeader:
 
 def remove_vertex(polygon: CirclePolygon, i: int) -> CirclePolygon:
     """G \\ v_i: the polygon of the other vertices (same circle, same order)."""
-    return CirclePolygon(polygon.labels[:i] + polygon.labels[i + 1:],
-                         polygon.directions[:i] + polygon.directions[i + 1:], polygon.polar)
+    out = CirclePolygon(polygon.labels[:i] + polygon.labels[i + 1:],
+                        polygon.directions[:i] + polygon.directions[i + 1:], polygon.polar)
+    if polygon.__dict__.get("one_circle") is True:
+        out.__dict__["one_circle"] = True       # a subset of one circle: no length product
+    return out
 
 
 def elect_leader_asym(polygon: CirclePolygon, orientation: int = 1,
