@@ -45,11 +45,12 @@ was checked (``docs/interpretations.md``, "Bounds of the family layer").
 
 from __future__ import annotations
 
+from .audit_groups import SubGroups, group_about_centre
 from .audit_levels import level_findings
 from .configuration import Configuration, Similarity, no_cycle_collection
 from .exact import fmpq, number_text
 from .labels import ALGORITHMS, STATEMENTS
-from .levels import Level, Levels, levels_of
+from .levels import Levels, levels_of
 from .paper import family as F
 from .paper.polygon_report import level_section
 from .symmetry import SymmetryGroup, symmetry_group
@@ -130,30 +131,6 @@ def truth_in_O_S(group: SymmetryGroup, n: int) -> bool:
     if group.mirrors > 0 and not group.orderable:
         return True
     return group.rotations % 2 == 0
-
-
-def group_about_centre(config: Configuration, ring_data: Levels, robots,
-                       levels=None) -> tuple:
-    """``(group, robots)``: the symmetry group, about the SEC centre C of the whole
-    configuration, of the sub-configuration ``robots`` (sorted); its indices are
-    positions in ``robots``.  ``levels``: the 1-based numbers of the levels holding
-    ``robots``, when known (then only those levels are looked at: O(|robots|), not O(t))."""
-    robots = sorted(robots)
-    where = {r: k for k, r in enumerate(robots)}
-    if ring_data.polar:
-        sub = Configuration(polar=[config.polar[i] for i in robots],
-                            polar_system=config.polar_system, source=config.source)
-    else:
-        sub = Configuration(points=[config.points[i] for i in robots], system=config.system,
-                            source=config.source)
-    chosen = ring_data.levels if levels is None else \
-        [ring_data.levels[k - 1] for k in sorted(set(levels))]
-    out = []
-    for level in chosen:
-        pts = tuple(where[i] for i in level.points if i in where)
-        if pts:
-            out.append(Level(level.radius_squared, pts))
-    return symmetry_group(sub, Levels(ring_data.sec, tuple(out), ring_data.polar)), robots
 
 
 def _symmetry_witness(group: SymmetryGroup, robots) -> dict | None:
@@ -277,11 +254,13 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
     notes.extend(level_notes)
     covered |= level_covered
 
-    def add_counted(d):
-        """A statement checked on many levels or pairs: its first failures, then a count."""
-        failures[d["statement"]] = failures.get(d["statement"], 0) + 1
-        if examples is None or failures[d["statement"]] <= examples:
-            add(d)
+    def add_counted(statement, make):
+        """A statement checked on many levels or pairs: its first failures (``make()``
+        builds the entry: only those listed need the sub-configuration's group), then a
+        count."""
+        failures[statement] = failures.get(statement, 0) + 1
+        if examples is None or failures[statement] <= examples:
+            add(make())
 
     whole_witness = _symmetry_witness(group, list(range(n)))
     # lemma-sym-ord (n > 1): in O_S => not orderable
@@ -299,12 +278,15 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
         asym_checked = asym_levels
     if asym_checked:
         covered.add("lem-asym-ord")
+    subs = SubGroups(config, ring_data, group)      # orderability without recomputing
     for g in asym_checked:
-        sub, robots = group_about_centre(config, ring_data, g.robots, g.levels)
-        if not sub.orderable:
-            add_counted(_d("lem-asym-ord", f"{g.name} is an asymmetric polygon, hence orderable",
-                           f"{g.name} is not orderable (group {sub.name})",
-                           _symmetry_witness(sub, robots)))
+        if not subs.orderable(g.robots, g.levels):
+            def entry(g=g):
+                sub, robots = subs.group(g.robots, g.levels)
+                return _d("lem-asym-ord", f"{g.name} is an asymmetric polygon, hence orderable",
+                          f"{g.name} is not orderable (group {sub.name})",
+                          _symmetry_witness(sub, robots))
+            add_counted("lem-asym-ord", entry)
     bounded["lem_asym_ord_levels_checked"] = len(asym_checked)
     bounded["asymmetric_levels"] = len(asym_levels)
     # pairs of levels
@@ -314,23 +296,28 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
     for i, j in pairs:
         a, b = G[i], G[j]
         sym = F.is_symmetric_pair(a, b)
-        sub, robots = group_about_centre(config, ring_data, a.robots + b.robots,
-                                         a.levels + b.levels)
+        orderable = subs.orderable(a.robots + b.robots, a.levels + b.levels)
         covered.add("lem-sym-notord" if sym else "lem-asym-pair-ord")
-        if sym and sub.orderable:
-            common = F.intersect_lines(a.lines, b.lines)
-            add_counted(_d("lem-sym-notord",
-                           f"<{a.name}, {b.name}> is a symmetric pair "
-                           f"({F.lines_text(common, polar)} in common: {a.name} has "
-                           f"{F.lines_text(a, polar)}, {b.name} has "
-                           f"{F.lines_text(b, polar)}), hence not orderable",
-                           f"the union of {a.name} and {b.name} is orderable (group "
-                           f"{sub.name} about C)", {"pair": [a.name, b.name]}))
-        if not sym and not sub.orderable:
-            add_counted(_d("lem-asym-pair-ord", f"<{a.name}, {b.name}> is an asymmetric pair, "
-                           "hence orderable", f"the union of {a.name} and {b.name} is not "
-                           f"orderable (group {sub.name} about C)",
-                           _symmetry_witness(sub, robots)))
+        if sym and orderable:
+            def entry(a=a, b=b):
+                sub = subs.group(a.robots + b.robots, a.levels + b.levels)[0]
+                common = F.intersect_lines(a.lines, b.lines)
+                return _d("lem-sym-notord",
+                          f"<{a.name}, {b.name}> is a symmetric pair "
+                          f"({F.lines_text(common, polar)} in common: {a.name} has "
+                          f"{F.lines_text(a, polar)}, {b.name} has "
+                          f"{F.lines_text(b, polar)}), hence not orderable",
+                          f"the union of {a.name} and {b.name} is orderable (group "
+                          f"{sub.name} about C)", {"pair": [a.name, b.name]})
+            add_counted("lem-sym-notord", entry)
+        if not sym and not orderable:
+            def entry(a=a, b=b):
+                sub, robots = subs.group(a.robots + b.robots, a.levels + b.levels)
+                return _d("lem-asym-pair-ord", f"<{a.name}, {b.name}> is an asymmetric pair, "
+                          "hence orderable", f"the union of {a.name} and {b.name} is not "
+                          f"orderable (group {sub.name} about C)",
+                          _symmetry_witness(sub, robots))
+            add_counted("lem-asym-pair-ord", entry)
     for statement, count in failures.items():
         if examples is not None and count > examples:
             what = "levels" if statement == "lem-asym-ord" else "pairs of levels"

@@ -22,9 +22,10 @@ an exact *key* that is a strictly increasing function of the distance:
   increasing in ``theta``; ``-cos(theta)`` is too, and so is
   ``-sign(cos) cos^2`` = ``-sign(u.v) (u.v)^2 / (|u|^2 |v|^2)``: the key
   (:meth:`CirclePolygon.separation`).  The strings use :meth:`CirclePolygon.chord_key`:
-  on one circle the same key times the constant ``r^4``, ``-sign(u.v) (u.v)^2``, with no
-  division (an inverse in a number field of large degree can cost seconds); it compares
-  the chords of one polygon, which is all the strings do.
+  on one circle ``-u.v = -r^2 cos(theta)``, another strictly increasing function of
+  ``theta``, with no division (an inverse in a number field of large degree can cost
+  seconds) and one product; it compares the chords of one polygon (and of the polygons
+  G minus v_i, on the same circle), which is all the strings do.
 
 The point m on an edge
 ----------------------
@@ -70,8 +71,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import cached_property, cmp_to_key
 
-from ..exact import FieldElement, exact_key, fmpq, normal_turn, rational_sqrt, sign
-from ..geometry import compare_directions
+from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
+from .filtered import compare_directions
+from .inverses import inverse_length, squared_length
 
 __all__ = ["CirclePolygon", "level_polygon", "polygon_from_directions", "angular_distance",
            "POLAR_METRIC", "CARTESIAN_METRIC"]
@@ -99,7 +101,38 @@ def _cosine_key(u, v):
     s = sign(d)
     if s == 0:
         return d * 0
-    return -s * d * d / (_dot(u, u) * _dot(v, v))
+    return -s * d * d * inverse_length(squared_length(u)) * inverse_length(squared_length(v))
+
+
+def _circle_chord(u, v):
+    """``-u.v``: :meth:`CirclePolygon.chord_key` on one circle (strictly increasing in
+    the angle of u and v for |u| |v| fixed, as ``-sign(u.v) (u.v)^2`` is; one product
+    less, and no sign, which matters when a product costs a second: nine square roots)."""
+    return -_dot(u, v)
+
+
+_PAIRS: dict = {}
+_PAIRS_LIMIT = 1 << 16
+
+
+def _pair_value(f, u, v):
+    """``f(u, v)`` for a symmetric ``f`` of two direction vectors, remembered per pair of
+    vector *objects* when they hold algebraic numbers (each product costs a millisecond
+    in a large number field, and the strings, Theorem 1 and Elect_Leader_Asym's polygons
+    G minus v_i read the same chords again).  The entry keeps both vectors, so an id is
+    never mistaken for another object's; rational vectors are recomputed (cheap)."""
+    if not isinstance(u[0], FieldElement) and not isinstance(u[1], FieldElement) and \
+            not isinstance(v[0], FieldElement) and not isinstance(v[1], FieldElement):
+        return f(u, v)
+    key = (f, id(u), id(v)) if id(u) <= id(v) else (f, id(v), id(u))
+    hit = _PAIRS.get(key)
+    if hit is not None and ((hit[0] is u and hit[1] is v) or (hit[0] is v and hit[1] is u)):
+        return hit[2]
+    value = f(u, v)
+    if len(_PAIRS) >= _PAIRS_LIMIT:
+        _PAIRS.clear()
+    _PAIRS[key] = (u, v, value)
+    return value
 
 
 @dataclass(frozen=True)
@@ -146,55 +179,55 @@ class CirclePolygon:
     @cached_property
     def inverse_lengths(self) -> tuple:
         """Cartesian: ``1 / |u|^2`` of each direction, one inverse per distinct length."""
-        seen: dict = {}
-        out = []
-        for d in self.directions:
-            length = _dot(d, d)
-            key = exact_key(length)
-            if key not in seen:
-                seen[key] = 1 / length
-            out.append(seen[key])
-        return tuple(out)
+        return tuple(inverse_length(squared_length(d)) for d in self.directions)
 
     @cached_property
     def one_circle(self) -> bool:
         """Cartesian: every direction vector has the same length (a level polygon)."""
         if self.polar or not self.directions:
             return True
-        first = _dot(self.directions[0], self.directions[0])
-        return all(_dot(d, d) == first for d in self.directions)
+        first = squared_length(self.directions[0])
+        return all(squared_length(d) == first for d in self.directions)
 
     def chord_key(self, i: int, j: int):
         """An exact key, strictly increasing in the chord |v_i v_j|, for comparing the
         chords of *this* polygon (the strings, Section 3): :meth:`separation`, or on one
-        circle (:attr:`one_circle`) ``-sign(u.v) (u.v)^2``, the separation times the
-        positive constant ``|u|^2 |v|^2 = r^4`` -- no division (a field inverse can cost
-        seconds in a large number field)."""
+        circle (:attr:`one_circle`) ``-u.v = -r^2 cos(angle)``, strictly increasing in the
+        angle in [0, pi], hence in the chord ``2 r sin(angle / 2)`` -- no division (a field
+        inverse can cost seconds in a large number field) and a single product."""
         n = self.n
         a, b = self.directions[i % n], self.directions[j % n]
         if self.polar:
             return angular_distance(a, b)
         if not self.one_circle:
-            return _cosine_key(a, b)
-        d = _dot(a, b)
-        return -sign(d) * d * d
+            return _pair_value(_cosine_key, a, b)
+        return _pair_value(_circle_chord, a, b)
 
     def edge_key(self, i: int, j: int):
         """An exact key, strictly increasing in the distance from m (the point of edge
         (i, i+1), as :meth:`separation_from_edge`) to vertex j, for comparing the
-        distances from *one* edge point (an edge string CW_m, ACW_m): on one circle the
-        separation times the positive constant ``|w|^2 r^2`` of that edge, no division."""
+        distances from *one* edge point (an edge string CW_m, ACW_m): on one circle
+        ``-w.v``, strictly increasing in the angle of w and v (|w| and |v| fixed for that
+        edge point), no division."""
         if self.polar or not self.one_circle:
             return self.separation_from_edge(i, j)
         w = self.edge_direction(i)
         if w is None:      # the edge is a diameter: m = C, every vertex at distance r
             return self._zero()
-        d = _dot(w, self.directions[j % self.n])
-        return -sign(d) * d * d
+        return _pair_value(_circle_chord, w, self.directions[j % self.n])
 
     def edge_direction(self, i: int):
         """Direction (turn or vector) from C of the point m' of the circle on the ray C->m,
-        m the midpoint of edge (i, i+1); None when the edge is a diameter (m = C)."""
+        m the midpoint of edge (i, i+1); None when the edge is a diameter (m = C).
+        Computed once per edge (the edge strings read it n times)."""
+        n = self.n
+        cache = self.__dict__.setdefault("_edge_directions", {})
+        i %= n
+        if i not in cache:
+            cache[i] = self._edge_direction(i)
+        return cache[i]
+
+    def _edge_direction(self, i: int):
         n = self.n
         a, b = self.directions[i % n], self.directions[(i + 1) % n]
         if self.polar:
@@ -207,8 +240,8 @@ class CirclePolygon:
             if gap > _HALF:
                 mid += _HALF
             return normal_turn(mid)
-        la, lb = _dot(a, a), _dot(b, b)
-        if la != lb:
+        la, lb = squared_length(a), squared_length(b)
+        if not self.one_circle and la != lb:
             scale = _rational_ratio_root(la, lb)
             if scale is None:
                 raise NotImplementedError(
@@ -288,4 +321,6 @@ def level_polygon(config, rings, level_index: int) -> CirclePolygon:
         return CirclePolygon(labels, tuple(config.polar[i][1] for i in labels), True)
     cx, cy = rings.sec.centre
     pts = config.points
-    return CirclePolygon(labels, tuple((pts[i][0] - cx, pts[i][1] - cy) for i in labels), False)
+    poly = CirclePolygon(labels, tuple((pts[i][0] - cx, pts[i][1] - cy) for i in labels), False)
+    poly.__dict__["one_circle"] = True      # a level: one exact distance to C, by definition
+    return poly

@@ -9,11 +9,13 @@ turn of the line in [0, 1/2), or the ray of its doubled angle (``lemma-LOS-Passe
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from math import gcd
+from functools import cmp_to_key
+from math import atan2, gcd, pi
 
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from .circle_polygon import CirclePolygon
+from .filtered import compare_directions, cross_sign, gap_classes_on_circle
+from .inverses import inverse_length, squared_length
 
 
 HALF = fmpq(1, 2)
@@ -34,23 +36,32 @@ def ccw_gap_key(polar: bool, a, b):
     if polar:
         d = normal_turn(b - a)
         return d if d != 0 else fmpq(1)
-    c, d = sign(cross(a, b)), dot(a, b)
-    if c > 0:
-        return (0, -sign(d) * d * d / (dot(a, a) * dot(b, b)))
+    c, d = cross_sign(a, b), dot(a, b)      # the cross product's sign ball-filtered
+    if c > 0:       # d^2 / (|a|^2 |b|^2), one cached inverse per length (no inverse per gap)
+        return (0, -sign(d) * d * d * inverse_length(squared_length(a))
+                * inverse_length(squared_length(b)))
     if c < 0:
-        return (2, sign(d) * d * d / (dot(a, a) * dot(b, b)))
+        return (2, sign(d) * d * d * inverse_length(squared_length(a))
+                * inverse_length(squared_length(b)))
     return (1, 0) if sign(d) < 0 else (3, 0)
 
 
-def ray_key(polar: bool, d):
+def ray_key(polar: bool, d, inverse=None):
     """Exact hashable key of the ray from C with direction d (cheap to hash: numbers go
-    through :func:`exactsym.exact.exact_key`)."""
+    through :func:`exactsym.exact.exact_key`): a turn (polar), else the signs of the
+    coordinates of the unit vector u = d/|d| and ``u_x^2 = x^2 / (x^2 + y^2)``, which
+    determine u, hence the ray.  The only division is by the squared length, a rational
+    for points on a circle of rational radius about a rational centre; pass
+    ``inverse`` = 1/(x^2 + y^2) when it is known (else
+    :func:`exactsym.paper.inverses.inverse_length`: one inverse per distinct length, never
+    one per vertex: an inverse in a cyclotomic field of degree hundreds costs a second)."""
     if polar:
         return hashable_key(normal_turn(d))
     x, y = d
-    if sign(x) != 0:
-        return (sign(x), hashable_key(y / x))
-    return (0, sign(y))
+    xx = x * x
+    if inverse is None:
+        inverse = inverse_length(xx + y * y)
+    return (sign(x), sign(y), exact_key(xx * inverse))
 
 
 def ray_keys(poly: CirclePolygon) -> tuple:
@@ -66,17 +77,73 @@ def hashable_key(key):
     return key
 
 
-@dataclass(frozen=True)
 class LineKey:
-    """A line through C: ``value`` is the exact key of :mod:`.polygon` (the turn of the
-    line in [0, 1/2), or the ray of its doubled angle); equality and hashing use ``h``,
-    a canonical hashable form of it."""
-    h: object
-    value: object = field(compare=False)
+    """A line through C.  ``value`` is the exact key of :mod:`.polygon` (the turn of the
+    line in [0, 1/2), or the ray (sign x, y/x) of its doubled angle), ``h`` a canonical
+    hashable form of it; both are computed on demand only (the Cartesian value divides,
+    and an inverse in a cyclotomic field of degree hundreds costs a second).  Equality
+    and hashing use ``canon``: the polar value's key, or :func:`ray_key` of the doubled
+    angle's vector (the signs of its unit vector and its squared x coordinate): equal iff
+    the lines are equal, with no division but by a squared length
+    (:func:`line_key`, :func:`bisector_key`)."""
+
+    __slots__ = ("canon", "_value", "_vector")
+
+    def __init__(self, canon, value=None, vector=None):
+        self.canon = canon
+        self._value = value
+        self._vector = vector
 
     @classmethod
     def of(cls, value) -> "LineKey":
+        """The key of a line given by its :mod:`.polygon` value (a turn, or (sign, slope))."""
+        if isinstance(value, tuple):
+            s, v = value
+            vector = (s, s * v) if s else (0 * v, v)
+            return cls(line_canon(vector), value, vector)
         return cls(hashable_key(value), value)
+
+    @property
+    def value(self):
+        if self._value is None:
+            self._value = ray_value(*self._vector)
+        return self._value
+
+    @property
+    def h(self):
+        return hashable_key(self.value)
+
+    def __eq__(self, other):
+        return isinstance(other, LineKey) and self.canon == other.canon
+
+    def __hash__(self):       # as the frozen dataclass this class was: set orders unchanged
+        return hash((self.canon,))
+
+    def __repr__(self) -> str:
+        return f"LineKey({self.value!r})"
+
+
+def line_canon(doubled) -> tuple:
+    """:attr:`LineKey.canon` of the Cartesian line whose doubled angle has direction
+    ``doubled`` (a non-zero exact vector)."""
+    return ("line",) + ray_key(False, doubled)
+
+
+def line_key(polar: bool, d) -> LineKey:
+    """The :class:`LineKey` of the line through C with direction d (no division)."""
+    if polar:
+        return LineKey.of(line_value(True, d))
+    x, y = d
+    doubled = (x * x - y * y, 2 * x * y)
+    return LineKey(line_canon(doubled), None, doubled)
+
+
+def bisector_key(polar: bool, a, b) -> LineKey:
+    """The :class:`LineKey` of :func:`bisector_line` (no division)."""
+    if polar:
+        return LineKey.of(bisector_line(True, a, b))
+    prod = (a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0])
+    return LineKey(line_canon(prod), None, prod)
 
 
 def line_value(polar: bool, d):
@@ -148,19 +215,10 @@ def gap_ids(poly: CirclePolygon) -> list:
         if u is not None:
             return [ids.setdefault(integer_gap_key(u[i], u[(i + 1) % n]), len(ids))
                     for i in range(n)]
-        lengths = [dot(d, d) for d in dirs]
-        if all(x == lengths[0] for x in lengths):
-            # one circle: |a|^2 |b|^2 is the same for every gap, so the undivided key
-            # orders (and identifies) the gaps of this polygon just as well
-            def key(a, b):
-                c, d = sign(cross(a, b)), dot(a, b)
-                if c > 0:
-                    return (0, hashable_key(-sign(d) * d * d))
-                if c < 0:
-                    return (2, hashable_key(sign(d) * d * d))
-                return (1, 0) if sign(d) < 0 else (3, 0)
-            return [ids.setdefault(key(dirs[i], dirs[(i + 1) % n]), len(ids))
-                    for i in range(n)]
+        if poly.one_circle:
+            # one circle: the gaps are told apart by the sign of the cross product and
+            # the dot product, filtered by balls (exact products only for near ties)
+            return [ids.setdefault(t, len(ids)) for t in gap_classes_on_circle(dirs)]
     return [ids.setdefault(hashable_key(ccw_gap_key(poly.polar, dirs[i], dirs[(i + 1) % n])),
                            len(ids)) for i in range(n)]
 
@@ -184,6 +242,32 @@ def circle_line_keys(poly: CirclePolygon):
         (ax, ay), (bx, by) = dirs[i], dirs[(i + 1) % n]
         edge.append((exact_key(ax * bx - ay * by), exact_key(ax * by + ay * bx)))
     return vertex, edge
+
+
+def sort_by_angle(dirs: list) -> None:
+    """Sort non-zero exact vectors in place by their angle in [0, 2 pi) from the +x ray
+    (as :func:`angle_order_key`, which it equals on distinct rays), without a division:
+    rationals by :func:`angle_order_key` (a rational division is cheap); algebraic
+    vectors by a float proposal whose adjacent pairs are then checked exactly
+    (:func:`exactsym.paper.filtered.compare_directions`, a cross product), falling back to an
+    exact comparison sort when a check fails: the float only proposes."""
+    if all(type(x) is fmpq and type(y) is fmpq for x, y in dirs):
+        dirs.sort(key=angle_order_key)
+        return
+    try:
+        proposal = sorted(dirs, key=_float_angle)
+    except (OverflowError, ValueError, ZeroDivisionError):
+        proposal = None
+    if proposal is not None and all(compare_directions(a, b) < 0
+                                    for a, b in zip(proposal, proposal[1:])):
+        dirs[:] = proposal
+        return
+    dirs.sort(key=cmp_to_key(compare_directions))
+
+
+def _float_angle(d) -> float:
+    a = atan2(float(d[1]), float(d[0]))
+    return a if a >= 0 else a + 2 * pi
 
 
 def angle_order_key(d):

@@ -82,8 +82,8 @@ def _verdicts_and_type(polygon) -> tuple[dict, tuple | None]:
     """``(level_verdicts(polygon), type facts)`` (:func:`_type_facts`)."""
     n = polygon.n
     check = paper.check_symmetry(polygon)
-    lines = paper.straight_lines(polygon)
-    mirrors = [key.value for key in mirror_lines(polygon)]       # exact, O(n)
+    lines = paper.straight_line_count(polygon)       # no line values: no division
+    mirrors = mirror_lines(polygon)       # exact line keys, O(n), no division
     kind = paper.polygon_type(polygon, mirrors)
     out = {
         "check": check.algorithm,
@@ -93,12 +93,12 @@ def _verdicts_and_type(polygon) -> tuple[dict, tuple | None]:
         "degree": degree_json(check.degree),
         "loop_terminates": (not check.axis_vertices) if n % 2 else None,
         "theorem1_symmetric": not paper.theorem1_asymmetric(polygon),
-        "lines_by_strings": len(lines),
+        "lines_by_strings": lines,
         "type": None if kind is None else str(kind),
         "type_reason": None if kind is None else kind.reason,
     }
     if n <= DEFINITION_LIMIT:
-        mirrors = paper.definition_mirrors(polygon)
+        mirrors = paper.definition_mirror_keys(polygon)
         out["definition"] = {"straight": bool(mirrors), "skew": paper.is_skew_symmetric(polygon),
                              "mirrors": len(mirrors)}
     else:
@@ -229,15 +229,33 @@ class VerdictMemo:
     (:func:`verdict_key`), relabelled for the others (a configuration of t levels of one
     shape -- single robots, rotated regular polygons, the generic orbits of a dihedral
     group -- costs one computation, not t).  :meth:`type_facts` gives what the audit
-    reads of the polygon's type, shared the same way."""
+    reads of the polygon's type, shared the same way.  Shapes of different vertex counts
+    never match, so a polygon's key is computed only once a second polygon of its vertex
+    count arrives (a key costs exact products: a configuration with one polygon of each
+    size needs none)."""
 
     def __init__(self):
         self.memo: dict = {}
+        self.waiting: dict = {}         # n -> the first polygon of n vertices, key pending
+        self.keyed: set = set()         # vertex counts whose polygons are keyed
 
     def verdicts(self, polygon) -> dict:
         return self.verdicts_and_type(polygon)[0]
 
+    def _flush(self, n: int) -> None:
+        self.keyed.add(n)
+        first = self.waiting.pop(n, None)
+        if first is not None:
+            poly, verdict, facts = first
+            self.memo.setdefault(verdict_key(poly), (poly.labels, verdict, facts))
+
     def verdicts_and_type(self, polygon) -> tuple[dict, tuple | None]:
+        n = polygon.n
+        if n not in self.waiting and n not in self.keyed:
+            verdict, facts = _verdicts_and_type(polygon)
+            self.waiting[n] = (polygon, verdict, facts)
+            return verdict, facts
+        self._flush(n)
         key = verdict_key(polygon)
         hit = self.memo.get(key)
         if hit is None:

@@ -17,7 +17,7 @@ from .concentric import (ALL_LINES, Ring, common_lines, has_lines, intersect_lin
                          is_symmetric_family, is_symmetric_pair, is_symmetric_polygon,
                          line_value_text, lines_text, new_ring, polygon_name)
 from .find_asymmetry import find_asymmetry_pair
-from ..keys import angle_order_key
+from ..keys import sort_by_angle
 from .limits import DEFAULT_LIMITS, END_LEVELS, Limits, WorkBudgetExceeded
 from .projection import coincidence_note, is_type4, radial_projection
 from .trace import few_names, trace_entry
@@ -119,7 +119,7 @@ def union_lines(rings: Sequence[Ring]):
     if polar:
         dirs.sort()
     else:
-        dirs.sort(key=angle_order_key)
+        sort_by_angle(dirs)
     poly = CirclePolygon(tuple((k,) for k in range(len(dirs))), tuple(dirs), polar)
     ring = new_ring("G*", poly, rings[-1].radius_squared, (), (), ())
     return ring.lines, poly.n

@@ -24,7 +24,7 @@ from ...exact import number_text, sign
 from ...levels import Levels, levels_of
 from ...strings import find_all
 from ..circle_polygon import CirclePolygon
-from ..keys import LineKey, bisector_line, gap_ids, line_value, ray_keys
+from ..keys import bisector_key, gap_ids, line_key, ray_keys
 
 
 class _AllLines:
@@ -126,7 +126,7 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None) 
             dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in robots])
         poly = new_polygon(CirclePolygon)       # CirclePolygon(labels, dirs, polar), faster
         poly.__dict__.update(labels=tuple([(i,) for i in robots]), directions=dirs,
-                             polar=polar)
+                             polar=polar, one_circle=True)    # a level: one radius
         out.append(new_ring(f"G{k + 1}", poly, level.radius_squared, (k + 1,), robots,
                             robots))
     return tuple(out)
@@ -145,7 +145,7 @@ def mirror_lines(poly: CirclePolygon, seq: list | None = None) -> list:
         return []
     dirs = poly.directions
     if n == 1:
-        return [LineKey.of(line_value(poly.polar, dirs[0]))]
+        return [line_key(poly.polar, dirs[0])]
     seq = seq if seq is not None else gap_ids(poly)
     rev = seq[::-1]
     found = {}
@@ -153,7 +153,7 @@ def mirror_lines(poly: CirclePolygon, seq: list | None = None) -> list:
         s = (-p) % n
         if n == 2 and s == 0:
             continue
-        found.setdefault(LineKey.of(bisector_line(poly.polar, dirs[0], dirs[s])), None)
+        found.setdefault(bisector_key(poly.polar, dirs[0], dirs[s]), None)
     return list(found)
 
 

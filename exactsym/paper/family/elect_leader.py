@@ -67,7 +67,7 @@ def line_four(poly: CirclePolygon, check: P.CheckResult, degree: str = "paper"):
     (:func:`exactsym.paper.family.mirror_lines`) and it passes through one or two vertices.
     A 2-gon's only mirror is the perpendicular bisector of its vertices (through none), so
     line 4 is false for it."""
-    mirrors = [key.value for key in mirror_lines(poly)]
+    mirrors = mirror_lines(poly)              # LineKeys: no division
     if degree == "lines":
         deg = len(mirrors)
     elif degree == "paper":
@@ -136,7 +136,7 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
                     f": {why}", round=rnd)
     if line4:
         branch = "sym-degree-one"
-        axis = list(P.vertices_on_line(poly, mirror_lines(poly)[0].value))   # on the mirror
+        axis = list(P.vertices_on_line(poly, mirror_lines(poly)[0]))   # on the mirror
         if poly.n % 2 == 0 and len(axis) >= 2 and \
                 P.cw_string(poly, axis[0], orientation) == P.cw_string(poly, axis[1], orientation):
             trace_entry(trace, alg, 5, [g1.name], "Elect_Leader_Sym",

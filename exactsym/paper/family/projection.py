@@ -18,6 +18,7 @@ from functools import lru_cache
 from .. import polygon as P
 from ...exact import FieldElement, fmpq, rational_sqrt
 from ..circle_polygon import CirclePolygon, polygon_from_directions
+from ..inverses import inverse_length
 from .concentric import Ring, mirror_lines, polygon_name
 
 
@@ -31,7 +32,7 @@ class Projection:
 
 def scale_to(r2_to, r2_from):
     """sqrt(r2_to / r2_from) when rational, else None."""
-    ratio = r2_to / r2_from
+    ratio = r2_to * inverse_length(r2_from)          # cached: no inverse per projection
     if isinstance(ratio, FieldElement):
         if not ratio.is_rational():
             return None
@@ -110,7 +111,7 @@ def is_type4(ring: Ring) -> tuple[bool, str]:
     if ring.polygon is None:
         return False, "the robot at C"
     poly = ring.polygon
-    verdict = P.polygon_type(poly, [key.value for key in mirror_lines(poly)])
+    verdict = P.polygon_type(poly, mirror_lines(poly))
     if verdict is None:
         return False, "no line of straight symmetry"
     return str(verdict) == "type-4", f"{verdict} ({verdict.reason})"

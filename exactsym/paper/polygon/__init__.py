@@ -45,9 +45,10 @@ from __future__ import annotations
 from .strings import (cw_string, acw_string, cw_string_edge, acw_string_edge, vertex_strings,
                       edge_strings, string_classes, string_classes_reference, perpendicular)
 from .definitions import (is_straight_symmetric, is_skew_symmetric, is_symmetric,
-                          definition_mirrors, theorem1_asymmetric, theorem1_1_asymmetric,
+                          definition_mirrors, definition_mirror_keys, theorem1_asymmetric, theorem1_1_asymmetric,
                           theorem1_violations)
 from .types import (vertex_palindromes, edge_palindromes, StraightLine, straight_lines,
+                    straight_line_count,
                     is_regular, is_prime, TypeVerdict, polygon_type, vertices_on_line)
 from .check_symmetry import (CheckResult, check_symmetry_odd, check_symmetry_even, check_symmetry,
                              check_symmetry_odd_reference, check_symmetry_even_reference,
@@ -66,6 +67,7 @@ __all__ = [
     "is_skew_symmetric",
     "is_symmetric",
     "definition_mirrors",
+    "definition_mirror_keys",
     "theorem1_asymmetric",
     "theorem1_1_asymmetric",
     "theorem1_violations",
@@ -75,6 +77,7 @@ __all__ = [
     "edge_palindromes",
     "StraightLine",
     "straight_lines",
+    "straight_line_count",
     "is_regular",
     "is_prime",
     "TypeVerdict",

@@ -5,9 +5,10 @@ Theorem 1 (``theorem1``: the string conditions for asymmetry).
 
 from __future__ import annotations
 
-from ...exact import exact_key, normal_turn
+from ...exact import FieldElement, exact_key, normal_turn
+from ..filtered import ball
 from ..circle_polygon import CirclePolygon
-from ..keys import HALF, line_value, ray_value
+from ..keys import HALF, LineKey, line_canon, line_key, line_value, ray_key
 from .strings import string_classes
 
 
@@ -18,12 +19,12 @@ def _point_key(v) -> tuple:
 def direction_set(polygon: CirclePolygon, scale=None):
     """The vertices' directions as a set of hashable keys: turns (polar); on one circle
     (:attr:`~exactsym.paper.circle_polygon.CirclePolygon.one_circle`) the vectors times
-    ``scale`` themselves (no division); else the rays (sign x, y/x)."""
+    ``scale`` themselves (no division); else the rays (:func:`exactsym.paper.keys.ray_key`)."""
     if polygon.polar:
         return set(polygon.directions)
     if scale is not None:
         return {_point_key((scale * d[0], scale * d[1])) for d in polygon.directions}
-    return {ray_value(*d) for d in polygon.directions}
+    return {ray_key(False, d) for d in polygon.directions}
 
 
 def maps_onto_itself(polygon: CirclePolygon, image, scale=None) -> bool:
@@ -38,12 +39,20 @@ def maps_onto_itself(polygon: CirclePolygon, image, scale=None) -> bool:
         dirs = direction_set(polygon, scale)
         return all(_point_key(image(d)) in dirs for d in polygon.directions)
     dirs = direction_set(polygon)
-    return all(ray_value(*image(d)) in dirs for d in polygon.directions)
+    return all(ray_key(False, image(d)) in dirs for d in polygon.directions)
 
 
 def definition_mirrors(polygon: CirclePolygon) -> list:
     """The lines of straight symmetry of ``def-straight-symmetric-poly`` (as line keys),
-    computed from the definition with exact reflections.  Lines of symmetry of a
+    computed from the definition with exact reflections: the values of
+    :func:`definition_mirror_keys`."""
+    return [key.value for key in definition_mirror_keys(polygon)]
+
+
+def definition_mirror_keys(polygon: CirclePolygon) -> list:
+    """The lines of straight symmetry of ``def-straight-symmetric-poly``, as
+    :class:`~exactsym.paper.keys.LineKey`\\ s (no division), computed from the definition
+    with exact reflections.  Lines of symmetry of a
     polygon pass through its centre C (``lemma-LOS-Passes-CenterSECP``; the line through
     both points of a 2-gon is excluded by the definition: it contains all the points);
     a single vertex has exactly the line through C (the paper's note).  O(n^2).
@@ -56,31 +65,59 @@ def definition_mirrors(polygon: CirclePolygon) -> list:
     if n == 0:
         return []
     if n == 1:
-        return [line_value(polygon.polar, polygon.directions[0])]
+        return [line_key(polygon.polar, polygon.directions[0])]
     found = {}
     d0 = polygon.directions[0]
     # on one circle of radius r, |z_0 z_j conj(w)| = r^2 |w|: the images are r^2 times
     # the reflected vertices
     scale = None if polygon.polar else d0[0] * d0[0] + d0[1] * d0[1]
+    balls = _vertex_balls(polygon)
     for dj in polygon.directions:
         if polygon.polar:
             image = (lambda c: lambda t: normal_turn(c - t))(d0 + dj)
             if maps_onto_itself(polygon, image):
-                found[line_value(polygon.polar, (d0 + dj) / 2)] = True
+                found[LineKey.of(line_value(polygon.polar, (d0 + dj) / 2))] = True
         else:
+            if balls is not None and _certainly_not_onto(balls, d0, dj):
+                continue                    # the balls refute it: no exact product
             a = d0[0] * dj[0] - d0[1] * dj[1]
             b = d0[0] * dj[1] + d0[1] * dj[0]
             image = (lambda a, b: lambda w: (a * w[0] + b * w[1], b * w[0] - a * w[1]))(a, b)
             if maps_onto_itself(polygon, image, scale):
-                found[ray_value(a, b)] = True
+                found[LineKey(line_canon((a, b)), None, (a, b))] = True
     if n == 2:      # the line through both points contains all of them: not a line of symmetry
-        found.pop(line_value(polygon.polar, polygon.directions[0]), None)
+        found.pop(line_key(polygon.polar, polygon.directions[0]), None)
     return list(found)
+
+
+def _vertex_balls(polygon: CirclePolygon):
+    """Arb balls of the vertices of a Cartesian polygon on one circle with algebraic
+    coordinates (a filter for :func:`definition_mirror_keys`), else None."""
+    if polygon.polar or not polygon.one_circle or \
+            not any(isinstance(c, FieldElement) for d in polygon.directions for c in d):
+        return None
+    return [(ball(x), ball(y)) for x, y in polygon.directions]
+
+
+def _certainly_not_onto(balls, d0, dj) -> bool:
+    """The balls prove that w -> z_0 z_j conj(w) maps some vertex off every vertex's
+    ray times r^2 (the test of :func:`maps_onto_itself` with its ``scale``): the exact
+    image lies in the image ball, and a ball disjoint from every target ball cannot
+    equal any target."""
+    (x0, y0), (xj, yj) = (ball(d0[0]), ball(d0[1])), (ball(dj[0]), ball(dj[1]))
+    a, b = x0 * xj - y0 * yj, x0 * yj + y0 * xj
+    r2 = x0 * x0 + y0 * y0
+    targets = [(r2 * x, r2 * y) for x, y in balls]
+    for wx, wy in balls:
+        ix, iy = a * wx + b * wy, b * wx - a * wy
+        if not any(ix.overlaps(tx) and iy.overlaps(ty) for tx, ty in targets):
+            return True
+    return False
 
 
 def is_straight_symmetric(polygon: CirclePolygon) -> bool:
     """``def-straight-symmetric-poly``: the vertex set has a line of straight symmetry."""
-    return bool(definition_mirrors(polygon))
+    return bool(definition_mirror_keys(polygon))
 
 
 def is_skew_symmetric(polygon: CirclePolygon) -> bool:

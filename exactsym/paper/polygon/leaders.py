@@ -10,7 +10,7 @@ from ...exact import fmpq, normal_turn
 from ..circle_polygon import CirclePolygon, polygon_from_directions
 from ..keys import ccw_gap_key
 from .check_symmetry import CheckResult, check_symmetry, visit_order
-from .definitions import definition_mirrors, theorem1_asymmetric
+from .definitions import definition_mirror_keys, theorem1_asymmetric
 from .types import vertices_on_line
 from .strings import check_orientation, cw_string, vertex_strings
 
@@ -43,7 +43,7 @@ def elect_leader_sym(polygon: CirclePolygon, orientation: int = 1,
     check = check_symmetry(polygon, orientation)
     n = polygon.n
     if degree == "lines":
-        deg = fmpq(len(definition_mirrors(polygon)))
+        deg = fmpq(len(definition_mirror_keys(polygon)))
     elif degree == "paper":
         deg = check.degree
     else:
@@ -62,7 +62,7 @@ def elect_leader_sym(polygon: CirclePolygon, orientation: int = 1,
         # unique exact mirror and the vertices on it); "find two vertices v_i and v_j
         # with CW = ACW" read as the vertices on that line (both have CW = ACW; other
         # vertices may too, by the free middle entry of an odd-length string)
-        mirrors = definition_mirrors(polygon)
+        mirrors = definition_mirror_keys(polygon)
         on = vertices_on_line(polygon, mirrors[0]) if len(mirrors) == 1 else ()
         if not on:
             return SymLeader(None, None, "Leader Election is not possible for G (the line "
@@ -163,8 +163,11 @@ class AsymLeader:
 
 def remove_vertex(polygon: CirclePolygon, i: int) -> CirclePolygon:
     """G \\ v_i: the polygon of the other vertices (same circle, same order)."""
-    return CirclePolygon(polygon.labels[:i] + polygon.labels[i + 1:],
-                         polygon.directions[:i] + polygon.directions[i + 1:], polygon.polar)
+    out = CirclePolygon(polygon.labels[:i] + polygon.labels[i + 1:],
+                        polygon.directions[:i] + polygon.directions[i + 1:], polygon.polar)
+    if polygon.__dict__.get("one_circle") is True:
+        out.__dict__["one_circle"] = True       # a subset of one circle: no length product
+    return out
 
 
 def elect_leader_asym(polygon: CirclePolygon, orientation: int = 1,

@@ -12,7 +12,9 @@ from typing import Sequence
 from ...exact import fmpq, normal_turn, sign
 from ...strings import cyclic_period, first_occurrence
 from ..circle_polygon import CirclePolygon
-from ..keys import HALF, ccw_gap_key, cross
+from ..filtered import cross_sign
+from . import small
+from ..keys import HALF, ccw_gap_key
 
 
 def below_half(polygon: CirclePolygon, a, b, ccw: bool) -> int:
@@ -21,7 +23,7 @@ def below_half(polygon: CirclePolygon, a, b, ccw: bool) -> int:
     if polygon.polar:
         d = normal_turn(b - a) if ccw else normal_turn(a - b)
         return -1 if d < HALF else (0 if d == HALF else 1)
-    c = sign(cross(a, b))
+    c = cross_sign(a, b)                    # ball-filtered, exact
     c = c if ccw else -c
     return -1 if c > 0 else (1 if c < 0 else 0)
 
@@ -97,6 +99,21 @@ def string_classes_reference(polygon: CirclePolygon, orientation: int = 1):
     CW_i == ACW_j iff cw[i] == acw[j].  O(n^2) keys."""
     ids: dict = {}
     cw, acw = [], []
+    if polygon.n <= 8:
+        # few strings: intern by exact equality, not by hashing (hashing a number of a
+        # field of degree hundreds costs milliseconds; equality is a comparison)
+        seen: list = []
+
+        def intern(s):
+            for t, k in seen:
+                if t == s:
+                    return k
+            seen.append((s, len(seen)))
+            return len(seen) - 1
+        for a, b in vertex_strings(polygon, orientation):
+            cw.append(intern(a))
+            acw.append(intern(b))
+        return cw, acw
     for a, b in vertex_strings(polygon, orientation):
         cw.append(ids.setdefault(a, len(ids)))
         acw.append(ids.setdefault(b, len(ids)))
@@ -147,6 +164,8 @@ def string_classes(polygon: CirclePolygon, orientation: int = 1):
     check_orientation(orientation)
     n = polygon.n
     if n <= 3:
+        if small.applies(polygon):          # entries compared by balls, exact on overlap
+            return small.string_classes_small(polygon, orientation)
         return string_classes_reference(polygon, orientation)
     dirs = polygon.directions
     ids, h = gap_classes(polygon)

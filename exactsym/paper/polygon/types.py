@@ -8,8 +8,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..circle_polygon import CirclePolygon
-from ..keys import ccw_gap_key, circle_line_keys, hashable_key, line_value
-from .definitions import definition_mirrors
+from . import small
+from ..keys import LineKey, circle_line_keys, gap_ids, line_key, line_value
+from .definitions import definition_mirror_keys
 from .strings import (HASH_BASE, HASH_MOD, Hasher, cw_string_edge, gap_classes, perpendicular,
                       string_classes, vertex_strings)
 
@@ -30,6 +31,8 @@ def edge_palindromes(polygon: CirclePolygon, reference: bool = False) -> list[in
     of an odd string is unconstrained; an edge that is a diameter has m = C and every
     distance equal to r.  ``reference=True`` compares the literal strings (O(n^2))."""
     n = polygon.n
+    if not reference and small.applies(polygon):     # n <= 3: balls, exact on overlap
+        return small.edge_palindromes_small(polygon)
     if reference or n <= 3:
         out = []
         for e in range(n):
@@ -111,6 +114,31 @@ def straight_lines(polygon: CirclePolygon, reference: bool = False) -> list[Stra
             for key, at in found.items()]
 
 
+def straight_line_count(polygon: CirclePolygon) -> int:
+    """``len(straight_lines(polygon))`` (the report's ``lines_by_strings``) without the
+    lines' exact keys: the same palindromes, the lines told apart by
+    :func:`exactsym.paper.keys.circle_line_keys` on one circle, else by
+    :class:`~exactsym.paper.keys.LineKey` (no division)."""
+    n = polygon.n
+    if n == 0:
+        return 0
+    vp = vertex_palindromes(polygon)
+    edges = edge_palindromes(polygon) if n >= 2 else []
+    if n >= 2 and small.applies(polygon):       # the same keys, compared by balls first
+        return small.line_count_small(polygon, vp, edges)
+    circle = circle_line_keys(polygon) if n >= 2 else None
+    if circle is not None:
+        vk, ek = circle
+        return len({vk[i] for i in vp} | {ek[e] for e in edges})
+    keys = {line_key(polygon.polar, polygon.directions[i]) for i in vp}
+    for e in edges:
+        w = polygon.edge_direction(e)
+        if w is None:
+            w = perpendicular(polygon, polygon.directions[e])
+        keys.add(line_key(polygon.polar, w))
+    return len(keys)
+
+
 def _straight_lines_on_circle(polygon, vp, circle, reference) -> list[StraightLine]:
     """:func:`straight_lines` with the division-free line keys of
     :func:`exactsym.paper.keys.circle_line_keys` (same lines, same order); the exact key of
@@ -142,9 +170,7 @@ def is_regular(polygon: CirclePolygon) -> bool:
     n = polygon.n
     if n <= 1:
         return True
-    keys = {ccw_gap_key(polygon.polar, polygon.directions[b], polygon.directions[(b + 1) % n])
-            for b in range(n)}
-    return len(keys) == 1
+    return len(set(gap_ids(polygon))) == 1
 
 
 def is_prime(n: int) -> bool:
@@ -169,7 +195,11 @@ class TypeVerdict(str):
 
 def vertices_on_line(polygon: CirclePolygon, key) -> tuple:
     """The vertices (storage indices) whose direction from C lies on the line ``key``
-    (a line key of :func:`exactsym.paper.polygon.definition_mirrors`)."""
+    (a line key of :func:`exactsym.paper.polygon.definition_mirrors`, or a
+    :class:`~exactsym.paper.keys.LineKey`: compared without a division)."""
+    if isinstance(key, LineKey):
+        return tuple(i for i, d in enumerate(polygon.directions)
+                     if line_key(polygon.polar, d) == key)
     return tuple(i for i, d in enumerate(polygon.directions)
                  if line_value(polygon.polar, d) == key)
 
@@ -179,9 +209,10 @@ def polygon_type(polygon: CirclePolygon, mirrors=None):
     straight symmetric polygon by its definition, or None when the polygon has no line of
     straight symmetry (a skew-only or asymmetric polygon has no type).
 
-    ``mirrors``: its lines of straight symmetry as line keys, default the exact mirrors
-    of the definition (:func:`exactsym.paper.polygon.definition_mirrors`); the family
-    layer passes its O(n) :func:`exactsym.paper.family.mirror_lines`.  The lines the
+    ``mirrors``: its lines of straight symmetry as line keys or
+    :class:`~exactsym.paper.keys.LineKey`\\ s, default the exact mirrors of the definition
+    (:func:`exactsym.paper.polygon.definition_mirror_keys`); the family layer passes its
+    O(n) :func:`exactsym.paper.family.mirror_lines`.  The lines the
     CW/ACW strings find (:func:`straight_lines`) are *not* used: they can exceed the
     mirrors (``lemma-straight-sym``, reported separately as ``lines_by_strings``).
 
@@ -195,17 +226,18 @@ def polygon_type(polygon: CirclePolygon, mirrors=None):
     type 4 (k divides n, k < n as the polygon is not regular, so n is composite).  An
     odd polygon is therefore never unclassified."""
     if mirrors is None:
-        mirrors = definition_mirrors(polygon)
+        mirrors = definition_mirror_keys(polygon)
     mirrors = list(mirrors)
     n = polygon.n
     if not mirrors:
         return None
     count = len(mirrors)
     on_line: dict = {}
-    for d in polygon.directions:
-        k = hashable_key(line_value(polygon.polar, d))
+    for d in polygon.directions:            # LineKeys: no division
+        k = line_key(polygon.polar, d)
         on_line[k] = on_line.get(k, 0) + 1
-    through = [on_line.get(hashable_key(key), 0) for key in mirrors]
+    through = [on_line.get(key if isinstance(key, LineKey) else LineKey.of(key), 0)
+               for key in mirrors]
     if is_regular(polygon):
         return TypeVerdict("type-0", "regular", mirrors, through)
     on_vertices = sum(1 for t in through if t)

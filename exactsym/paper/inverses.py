@@ -1,0 +1,57 @@
+"""Exact reciprocals of the squared lengths the paper layer divides by, cached.
+
+An inverse in a cyclotomic field of degree hundreds costs up to a second (issue 9), and
+the paper layer's keys divide by squared lengths |u|^2 of direction vectors: the vertices
+of a level share one, so a cache by exact value makes it one inverse per distinct length
+instead of one per key.  Rationals (the usual case: a circle of rational radius about a
+rational centre) are divided directly, never cached.  The cache holds exact values: it
+changes how a key is computed, never its value.
+"""
+
+from __future__ import annotations
+
+from ..exact import FieldElement, exact_key, fmpq
+
+_INVERSES: dict = {}
+_LIMIT = 256
+
+
+def reciprocal(v):
+    """1/v, exact (an ``int`` becomes an ``fmpq``, never a float)."""
+    return fmpq(1, v) if isinstance(v, int) else fmpq(1) / v
+
+
+def inverse_length(length):
+    """1/length (``length`` a non-zero exact number), cached when irrational."""
+    if not isinstance(length, FieldElement) or length.is_rational():
+        return reciprocal(length)
+    k = exact_key(length)
+    inv = _INVERSES.get(k)
+    if inv is None:
+        if len(_INVERSES) >= _LIMIT:
+            _INVERSES.clear()
+        inv = _INVERSES[k] = reciprocal(length)
+    return inv
+
+
+_LENGTHS: dict = {}
+
+
+def squared_length(d):
+    """``d_x^2 + d_y^2`` of an exact vector, remembered per vector *object* when it holds
+    algebraic numbers (the entry keeps the vector, so an id is never mistaken for another
+    object's): the keys of one polygon read each vertex's length many times."""
+    x, y = d
+    if not isinstance(x, FieldElement) and not isinstance(y, FieldElement):
+        return x * x + y * y
+    hit = _LENGTHS.get(id(d))
+    if hit is not None and hit[0] is d:
+        return hit[1]
+    value = x * x + y * y
+    if len(_LENGTHS) >= 1 << 14:
+        _LENGTHS.clear()
+    _LENGTHS[id(d)] = (d, value)
+    return value
+
+
+__all__ = ["inverse_length", "reciprocal", "squared_length"]
