@@ -103,7 +103,7 @@ class Tower:
     def _interval(self, x, bits: int):
         if isinstance(x, Root):
             lo = hi = 0
-            for m, c in x.t.items():
+            for m, c in _items(x):
                 s = isqrt(m << 2 * bits)
                 a, b = s, s + (s * s != m << 2 * bits)       # sqrt(m) 2^bits in [a, b]
                 p, q = c.numerator, c.denominator
@@ -179,14 +179,19 @@ class Tower:
             a, b = _split(x, lev)
             x = _add(self.mul(a, a), _neg(self.mul(self.r[lev - 1], self.mul(b, b))))
         for q in self.base.radicands:
-            x = x * Root({m: (-c if m % q == 0 else c) for m, c in x.t.items()})
+            x = x * Root({m: (-c if m % q == 0 else c) for m, c in x.t.items()}, x.den)
         need(set(x.t) <= {1}, "a norm is not rational (bug)")
-        return Fraction(x.t.get(1, 0))
+        return Fraction(x.t.get(1, 0), x.den)
+
+
+def _items(x: Root):
+    """(radicand product, rational coefficient) of a base element (integers over x.den)."""
+    return ((m, Fraction(c, x.den)) for m, c in x.t.items())
 
 
 def _coefficients(x):
     if isinstance(x, Root):
-        yield from x.t.values()
+        yield from (c for _, c in _items(x))
     else:
         yield from _coefficients(x[1])
         yield from _coefficients(x[2])
@@ -195,7 +200,7 @@ def _coefficients(x):
 def _image(x, p: int, base: dict, roots: list) -> int:
     if isinstance(x, Root):
         total = 0
-        for m, c in x.t.items():
+        for m, c in _items(x):
             v = c.numerator * pow(c.denominator, -1, p)
             for q, s in base.items():
                 if m % q == 0:
@@ -217,8 +222,7 @@ class TNum:
         if isinstance(o, TNum):
             need(o.f is self.f, "numbers of two towers")
             return o.v
-        o = Fraction(o)
-        return Root({1: o} if o else {})
+        return Root._of(o)
 
     def __add__(self, o):
         return TNum(self.f, _add(self.v, self._of(o)))

@@ -29,11 +29,12 @@ Public names: :class:`Tower`, :class:`TowerElement`, :func:`height_bits`.
 from __future__ import annotations
 
 from fractions import Fraction
+from math import isqrt
 
 from flint import arb, ctx, fmpq, fmpz
 
 from .field import FieldElement
-from .multiquadratic import MQ, squarefree_split
+from .multiquadratic import MQ
 
 _ZERO = MQ()
 _MAX_PREC = 1 << 18
@@ -301,16 +302,19 @@ def _rational_root(q: fmpq, primes):
     """The non-negative root of the rational q in Q(sqrt p : p in primes), or None."""
     if q <= 0:
         return _ZERO if q == 0 else None
-    s, m = squarefree_split(int(q.p) * int(q.q))
-    return MQ({m: fmpq(s, int(q.q))}) if _covers(m, primes) else None
-
-
-def _covers(m: int, primes) -> bool:
-    """Whether the squarefree m is a product of some of ``primes``."""
+    # no factoring (a norm down the tower can be a huge integer): m is the product of the
+    # primes of K_0 that divide n to an odd power, and n / m must be a perfect square
+    n, m = int(q.p) * int(q.q), 1
     for p in primes:
-        if m % p == 0:
-            m //= p
-    return m == 1
+        e = 0
+        while n % p == 0:
+            n //= p
+            e += 1
+        if e % 2:
+            m *= p
+        n *= p ** (e - 1) if e % 2 else p ** e
+    s = isqrt(n)                  # now n = num * den / m
+    return MQ({m: fmpq(s, int(q.q))}) if s * s == n else None
 
 
 def text(tower: Tower, v) -> str:
