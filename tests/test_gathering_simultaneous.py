@@ -163,6 +163,26 @@ def test_a_cyclic_shift_is_free_together_and_collides_one_at_a_time():
     assert err.value.invariant == "I1" and err.value.robots == (0, 1)
 
 
+def test_the_joint_check_is_the_checkers_and_counted_like_the_others():
+    """``Checker.after_step`` holds the joint I1 check: called on its own it counts one
+    check per mover and fires on the crossing pair; with I1 off it neither counts nor
+    fires; in a world step each mover is counted twice (the joint check over the
+    interval, the per-robot check at its end)."""
+    w = _square_world(Checker(enabled=frozenset({"I1"})))
+    w.advance_together([(i, None, False) for i in range(4)])
+    assert w.checker.counts["I1"] == 8
+    crossing = {0: seg((0, -5), (0, 5)), 1: seg((-5, 0), (5, 0))}
+    w = World([(0, -5), (-5, 0), (20, 20), (-20, 20), (20, -20)])
+    on, off = Checker(enabled=frozenset({"I1"})), Checker(enabled=frozenset({"I3"}))
+    off.after_step(w, crossing)
+    assert off.counts["I1"] == 0
+    with pytest.raises(Violation) as err:
+        on.after_step(w, crossing)
+    assert on.counts["I1"] == 2 and err.value.robots == (0, 1)
+    on.after_step(w, {0: seg((0, -5), (0, -9)), 1: seg((-5, 0), (-9, 0))})
+    assert on.counts["I1"] == 4
+
+
 def test_joint_step_fires_between_movers_with_an_exact_instant():
     w = World([(0, -5), (-5, 0), (20, 20), (-20, 20), (20, -20)],
               checker=Checker(enabled=frozenset({"I1"})))

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .instants import critical_roots, look_points
 from .pattern import definition_defects, recognise
@@ -239,6 +240,35 @@ class Checker:
                             f"Look with robot {i} at {g.fmt_point(rob.pos)}{where} plans "
                             f"{_plan_text(plan)} ({d.status}: {d.detail})",
                             label=I3_LABEL_OF_ROLE.get(rob.role, I3_LEADER_LABEL))
+
+    # -- after a step of several robots ---------------------------------------------------
+    def after_step(self, world, pieces: dict):
+        """I1 over one interval of simultaneous motion (``World.advance_together``),
+        exact: each mover's piece against every robot standing still, each two movers by
+        their joint motion (``geometry.joint_motion_overlap``, a polynomial in the common
+        time, its roots isolated exactly).  Counted once per mover."""
+        if "I1" not in self.enabled:
+            return
+        t = world.events
+        movers = sorted(pieces)
+        self.counts["I1"] += len(movers)
+        for i in movers:
+            for k, other in enumerate(world.robots):
+                if k not in pieces and g.piece_hits(pieces[i], other.pos):
+                    raise Violation("I1", t, sorted((i, k)), f"robot {i} moving "
+                                    f"{_piece_text(pieces[i])} comes closer than 2 to robot "
+                                    f"{k} at {g.fmt_point(other.pos)}")
+        for x, i in enumerate(movers):
+            for k in movers[x + 1:]:
+                tau = g.joint_motion_overlap(pieces[i], pieces[k])
+                if tau is not None:
+                    p, q = pieces[i].at(MQ.rational(tau)), pieces[k].at(MQ.rational(tau))
+                    raise Violation("I1", t, [i, k], f"robots {i} and {k} move at once "
+                                    f"(robot {i} {_piece_text(pieces[i])}, robot {k} "
+                                    f"{_piece_text(pieces[k])}); at time {tau} of the "
+                                    f"interval robot {i} is at {g.fmt_point(p)}, robot {k} "
+                                    f"at {g.fmt_point(q)}: squared distance "
+                                    f"{g.dist2(p, q).text()} < 4")
 
     # -- after an arrival ----------------------------------------------------------------
     def after_arrival(self, world, i):

@@ -22,7 +22,8 @@ ASYNC run is the sequence of intervals between consecutive Looks and stops: each
 ``step`` of the robots that move during it (a busy robot left out waits or is slow).
 Collisions are decided exactly over the whole interval (:mod:`.geometry`): a mover
 against every robot standing still, and every two movers against each other
-(``geometry.joint_motion_overlap``: a polynomial in tau, its roots isolated exactly).
+(``geometry.joint_motion_overlap``: a polynomial in tau, its roots isolated exactly;
+checked by ``invariants.Checker.after_step``).
 """
 
 from __future__ import annotations
@@ -36,7 +37,6 @@ from flint import fmpq
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .corrected import decide_for
-from .invariants import Violation
 from .robot import Readings
 
 
@@ -240,8 +240,8 @@ class World:
             rob = self.robots[i]
             rob.pos, rob.path = piece.final, rest
             self.log.append(Step(self.events, i, "advance", (piece,)))
-        if self.checker is not None and "I1" in self.checker.enabled:
-            self._joint_collision({i: d for i, (d, _) in done.items()})
+        if self.checker is not None:
+            self.checker.after_step(self, {i: d for i, (d, _) in done.items()})
         if self.checker is not None:
             # the other invariants at the interval's end, a real instant: a zero-length
             # piece there (each mover's own piece would be checked against the others'
@@ -256,36 +256,6 @@ class World:
                     self.checker.after_arrival(self, i)
                 rob.role, rob.look_index, rob.target = None, None, None
 
-    def _joint_collision(self, pieces: dict):
-        """I1 over one interval of simultaneous motion, exact: each mover's piece against
-        every robot standing still, each two movers by their joint motion."""
-        t = self.events
-        movers = sorted(pieces)
-        self.checker.counts["I1"] += len(movers)
-        for i in movers:
-            for k, other in enumerate(self.robots):
-                if k not in pieces and g.piece_hits(pieces[i], other.pos):
-                    raise Violation("I1", t, sorted((i, k)), f"robot {i} moving "
-                                    f"{_piece_text(pieces[i])} comes closer than 2 to robot "
-                                    f"{k} at {g.fmt_point(other.pos)}")
-        for x, i in enumerate(movers):
-            for k in movers[x + 1:]:
-                tau = g.joint_motion_overlap(pieces[i], pieces[k])
-                if tau is not None:
-                    p, q = pieces[i].at(MQ.rational(tau)), pieces[k].at(MQ.rational(tau))
-                    raise Violation("I1", t, [i, k], f"robots {i} and {k} move at once "
-                                    f"(robot {i} {_piece_text(pieces[i])}, robot {k} "
-                                    f"{_piece_text(pieces[k])}); at time {tau} of the "
-                                    f"interval robot {i} is at {g.fmt_point(p)}, robot {k} "
-                                    f"at {g.fmt_point(q)}: squared distance "
-                                    f"{g.dist2(p, q).text()} < 4")
-
     def busy(self) -> list:
         return [i for i, r in enumerate(self.robots) if r.busy]
 
-
-def _piece_text(piece) -> str:
-    if isinstance(piece, g.Segment):
-        return f"along the segment {g.fmt_point(piece.start)} -> {g.fmt_point(piece.end)}"
-    return (f"along the arc about {g.fmt_point(piece.centre)} from {g.fmt_point(piece.start)} "
-            f"to {g.fmt_point(piece.end)}")
