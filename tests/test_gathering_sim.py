@@ -377,3 +377,32 @@ def test_a_complete_pattern_is_gathered():
     res = run(generate(7), "async", 0, max_events=20)
     assert res.outcome == "gathered" and res.events == 0
     assert res.pattern["size"] == 7 and res.pattern["layers"] == [[1, 2, 3, 4, 5, 6]]
+
+
+#: two antipodal robots on the SEC (G_t, |G_t| = 2) and an asymmetric G_{t-1} of three
+#: robots on the circle of radius 5: MakeAsym moves a G_{t-1} robot radially out to
+#: G_t's circle (L1526), the second case of lem-vl-move
+TO_GT_CIRCLE = [(20, 0), (-20, 0), (3, 4), (-5, 0), (4, -3)]
+
+
+def test_I3_of_a_move_to_G_t_circle_is_named_lem_vl_move():
+    from exactsym.gathering.invariants import i3_label
+    assert i3_label("MakeAsym", "to-G_t-circle") == "lem-vl-move"
+    assert i3_label("MakeAsym", "epsilon") == "obs-v-move"
+    assert i3_label("Make_SymToAsym", "epsilon") == "obs-v-move"
+    assert i3_label("leader") == "FormGPattern (L1642-1643)"
+    # holds: robot 2 Looks, moves to (12, 16); fresh Looks on the way name it again
+    w = world(TO_GT_CIRCLE, only("I3"))
+    d = w.look(2, IDENTITY)
+    assert d.move_of(2).kind == "to-G_t-circle" and w.robots[2].kind == "to-G_t-circle"
+    assert w.robots[2].target == g.point(12, 16)
+    w.advance(2, F(1, 2))
+    w.advance(2)
+    assert w.checker.counts["I3"] == 2 and w.robots[2].kind == "" and not w.busy()
+    # fires: under ASYNC (I2, I9 off) a fresh Look with robot 2 part-way elects robot 3
+    # through ElectLeader (Make_SymToAsym)
+    res = run(TO_GT_CIRCLE, "async", 1, checker=Checker(enabled=ALL_ON - {"I2", "I9"}),
+              max_events=40)
+    v = res.violation
+    assert v["invariant"] == "I3" and v["label"] == "lem-vl-move" and v["robots"] == [2, 3]
+    assert "robot 2 is on its way to (12, 16)" in v["witness"]

@@ -54,6 +54,14 @@ LABELS = {
 #: invariant"), which belongs to FormGPattern.
 I3_LABEL_OF_ROLE = {"MakeAsym": "obs-v-move", "Make_SymToAsym": "obs-v-move"}
 I3_LEADER_LABEL = "FormGPattern (L1642-1643)"
+#: ... except MakeAsym's move of a robot of G_{t-1} to G_t's circle (L1526): that branch
+#: is lem-vl-move's second case ("v_l moves to G_t"), not obs-v-move's epsilon mover.
+I3_LABEL_OF_KIND = {("MakeAsym", "to-G_t-circle"): "lem-vl-move"}
+
+
+def i3_label(role, kind: str = "") -> str:
+    """The statement a fresh Look contradicts, by the pending move's role and kind."""
+    return I3_LABEL_OF_KIND.get((role, kind)) or I3_LABEL_OF_ROLE.get(role, I3_LEADER_LABEL)
 
 #: I6 (C does not change while a robot moves): for MakeAsym's epsilon mover, its
 #: correctness sentence "more than 3 robots on G_t keep the SEC" (L1487, L1560); for
@@ -239,7 +247,7 @@ class Checker:
                             f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
                             f"Look with robot {i} at {g.fmt_point(rob.pos)}{where} plans "
                             f"{_plan_text(plan)} ({d.status}: {d.detail})",
-                            label=I3_LABEL_OF_ROLE.get(rob.role, I3_LEADER_LABEL))
+                            label=i3_label(rob.role, rob.kind))
 
     # -- after a step of several robots ---------------------------------------------------
     def after_step(self, world, pieces: dict):

@@ -93,6 +93,9 @@ class Move:
     robot: int
     path: tuple          # geometry.Segment / geometry.Arc pieces, in the snapshot's frame
     role: str            # "leader", "leader+epsilon" (A3=all), "MakeAsym", "Make_SymToAsym"
+    kind: str = ""       # the paper layer's kind of the robot's first move: "epsilon",
+    #                      "to-G_t-circle" (MakeAsym, L1526: lem-vl-move's second case); ""
+    #                      for FormGPattern's path
 
 
 @dataclass(frozen=True)
@@ -136,6 +139,7 @@ def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> De
     moves: dict = {}          # robot -> pieces, in the snapshot's frame
     order: list = []
     roles: dict = {}
+    kinds: dict = {}          # robot -> kind of its first paper move
     current = list(pts)       # positions after the moves named so far (A3 = all)
     leader = None
     detail = ""
@@ -164,6 +168,7 @@ def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> De
                     order.append(robot)
                 moves[robot] = moves.get(robot, []) + piece
                 roles[robot] = pm.algorithm
+                kinds.setdefault(robot, pm.kind)
                 current[robot] = piece[-1].final
         except ValueError as err:
             return Decision("undecided", (), centre, pat, None, str(err))
@@ -186,7 +191,7 @@ def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> De
     if not moves:
         return Decision("stay", (), centre, pat, None,
                         f"the paper elects no leader among the {len(R)} robots of R ({detail})")
-    out = tuple(Move(r, tuple(moves[r]), roles[r]) for r in order)
+    out = tuple(Move(r, tuple(moves[r]), roles[r], kinds.get(r, "")) for r in order)
     return Decision("move", out, centre, pat, leader, detail)
 
 

@@ -112,6 +112,7 @@ class RobotState:
     pos: tuple
     path: list = field(default_factory=list)    # remaining pieces, world frame
     role: str | None = None
+    kind: str = ""                              # robot.Move.kind of the pending move
     look_index: int | None = None               # event index of the Look
     start: tuple | None = None                  # where the current move began
     target: tuple | None = None                 # final point of the planned path
@@ -165,7 +166,7 @@ class World:
         d, paths = self.snapshot_decision(frame)
         if i in paths and paths[i]:
             rob.path = list(paths[i])
-            rob.role = d.move_of(i).role
+            rob.role, rob.kind = d.move_of(i).role, d.move_of(i).kind
             rob.look_index = self.events
             rob.start = rob.pos
             rob.target = paths[i][-1].final
@@ -204,7 +205,7 @@ class World:
         if not rob.path:
             if self.checker is not None:
                 self.checker.after_arrival(self, i)
-            rob.role, rob.look_index, rob.target = None, None, None
+            rob.role, rob.kind, rob.look_index, rob.target = None, "", None, None
 
     def advance_together(self, moves):
         """Several robots move at once: ``moves`` is ``[(robot, stop, end), ...]`` with
@@ -254,7 +255,7 @@ class World:
             if not rob.path:
                 if self.checker is not None:
                     self.checker.after_arrival(self, i)
-                rob.role, rob.look_index, rob.target = None, None, None
+                rob.role, rob.kind, rob.look_index, rob.target = None, "", None, None
 
     def busy(self) -> list:
         return [i for i, r in enumerate(self.robots) if r.busy]
