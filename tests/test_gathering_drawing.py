@@ -156,3 +156,29 @@ def test_a_gathered_run_has_one_frame_per_event_and_ends_in_the_pattern():
     # every robot ends at C or on layer 1 (distance 2), drawn from the exact log
     assert sorted(round(((x - c[0]) ** 2 + (y - c[1]) ** 2) ** 0.5, 9) for x, y in ends) == \
         [0.0, 2.0, 2.0, 2.0, 2.0]
+
+
+def test_two_movers_colliding_are_drawn_both_at_the_exact_instant(tmp_path):
+    """Two robots moving at once (SSYNC, handedness-two-movers-collide): the picture's
+    pair is at the joint check's instant 14/15 of the step, robot 2 at (-4/3, 0) and
+    robot 3 at (0, -4/3) -- both in motion, not one against the other's end (C)."""
+    points, _n, expect, _s = read_case(ROOT / "cases/gathering/handedness-two-movers-collide.toml")
+    res = run_settings(points, settings_of(expect))
+    v = res.violation
+    assert v["invariant"] == "I1" and sorted(v["robots"]) == [2, 3]
+    pic = drawing.run_picture(points, res, "case")
+    w = pic.violation
+    assert w.time == pytest.approx(v["instant"] - 1 + 14 / 15)
+    a, b = w.at
+    assert a == pytest.approx((-4 / 3, 0)) and b == pytest.approx((0, -4 / 3))
+    assert "move at once" in w.text
+    assert plot_run(pic, tmp_path / "run.svg").exists()
+
+
+def test_joint_witness_of_free_movers_is_none():
+    from exactsym.gathering import geometry as g
+    seg = g.Segment(g.point(0, 0), g.point(10, 0))
+    assert drawing._joint_witness(seg, g.Segment(g.point(0, 2), g.point(10, 2))) is None
+    tau, (p, q) = drawing._joint_witness(g.Segment(g.point(0, -5), g.point(0, 5)),
+                                         g.Segment(g.point(-5, 0), g.point(5, 0)))
+    assert tau == 0.5 and p == q == (0.0, 0.0)

@@ -12,7 +12,9 @@ pattern of ``n`` robots about the last C seen.  The violation's witness:
 
 * I1 (a collision along a piece moved): the pair, at the first instant of that piece
   where their centres are 2 apart (found in floats on the drawn path: drawing only;
-  the exact predicate has decided that they come closer than 2);
+  the exact predicate has decided that they come closer than 2); two robots moving
+  at once in one step: both centres at the exact instant ``geometry.joint_motion_overlap``
+  gives (``Violation.at``; both in motion, not one against the other's end);
 * I5 (a planned path that is not free): at the Look, the planned path, dashed
   (``Run.planned``: not travelled, the run stopped at the Look), and the two discs where
   the path first touches the other robot (``Violation.at``, found in floats);
@@ -24,6 +26,7 @@ from __future__ import annotations
 
 import math
 
+from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .pattern import capacity
 
@@ -84,6 +87,17 @@ def _first_contact(path, other, steps: int = 400) -> float:
     return 1.0
 
 
+def _joint_witness(piece_a, piece_b):
+    """``(tau, (centre a, centre b))`` at the instant of the common interval where two
+    robots moving at once are closer than 2 (``geometry.joint_motion_overlap``, exact;
+    floats only for drawing), or None."""
+    tau = g.joint_motion_overlap(piece_a, piece_b)
+    if tau is None:
+        return None
+    t = MQ.rational(tau)
+    return float(tau), (_xy(piece_a.at(t)), _xy(piece_b.at(t)))
+
+
 def _layers(n: int, centre, R) -> tuple:
     """The circles (radius 2L) of the complete pattern of ``n`` robots about ``centre``."""
     out, placed, L = [], 1, 1
@@ -128,11 +142,22 @@ def run_picture(points, res, name: str = "run", model: str = "fat"):
         when = float(v["instant"])
         text = f"{v['invariant']} {v['label']}"
         last = res.log[-1] if res.log else None
-        if v["invariant"] == "I1" and moves and last is not None and last.kind == "advance":
-            mover = last.robot
+        step = {s.robot: s for s in res.log
+                if last is not None and s.event == last.event and s.kind == "advance"}
+        if v["invariant"] == "I1" and a in step and b in step:
+            # two robots moving at once: both where they are at the exact instant the
+            # joint check found (not one against the other's end position)
+            at = _joint_witness(step[a].pieces[0], step[b].pieces[0])
+            if at is not None:
+                tau, at = at
+                when = float(last.event) - 1.0 + tau
+            text = f"robots {a} and {b} move at once and collide ({text})"
+        elif v["invariant"] == "I1" and moves and last is not None and last.kind == "advance":
+            mover = a if a in step else b
             other = b if mover == a else a
-            s = _first_contact(moves[-1].path, now[other])
-            when = moves[-1].start_time + s
+            move = next(m for m in reversed(moves) if m.robot == mover)
+            s = _first_contact(move.path, now[other])
+            when = move.start_time + s
             text = f"collision ({text})"
         elif v["invariant"] == "I5" and last is not None and last.kind == "look":
             planned = tuple(_piece(piece, R) for piece in last.pieces)
