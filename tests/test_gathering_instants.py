@@ -346,3 +346,55 @@ def test_instants_are_invariant_under_an_exact_similarity():
         def inv(roots):
             return [k for k in key(roots) if "pattern" not in k[1]]
         assert len(inv(base)) >= 3 and inv(got) == inv(base)
+
+
+# -- joint motions (exactsym.gathering.joint_instants) ------------------------------------
+def test_joint_relations_have_their_exact_instants():
+    from exactsym.gathering.joint_instants import (contact_poly, incircle_poly, ray_poly,
+                                                   right_poly, still, tie_poly)
+    P = g.point
+    m0 = motion_of(g.Segment(P(10, 0), P(0, 0)))           # |p0| = 10 - 10 tau
+    m1 = motion_of(g.Segment(P(0, 2), P(0, 10)))           # |p1| = 2 + 8 tau
+    c = P(0, 0)
+    assert [r.exact for r in roots_in_unit(tie_poly(m0, m1, c))] == [Q(F(4, 9))]
+    # (10, -5 + 10 tau) and the still (-10, 2): on one line through C at tau = 3/10
+    m2 = motion_of(g.Segment(P(10, -5), P(10, 5)))
+    assert [r.exact for r in roots_in_unit(ray_poly(m2, still(P(-10, 2)), c))] == [Q(F(3, 10))]
+    # two robots 2 apart: (10 - 10 tau, 0) and (0, 2 + 8 tau) never (>= 2 sqrt(...)),
+    # (10 - 10 tau, 0) and the still (3, 0) at tau = 1/2 and 9/10
+    assert roots_in_unit(contact_poly(m0, m1, Q(4))) == []
+    ex = sorted((r.exact for r in roots_in_unit(contact_poly(m0, still(P(3, 0)), Q(4)))),
+                key=float)
+    assert ex == [Q(F(1, 2)), Q(F(9, 10))]
+    # the moving q = (10 - 10 tau, 0) on the circle on the diameter (-4, 0)-(4, 0) at
+    # tau = 3/5 (|q| = 4), and on the circle through (4, 0), (0, 4), (-4, 0) then too
+    assert [r.exact for r in roots_in_unit(right_poly(m0, still(P(-4, 0)),
+                                                      still(P(4, 0))))] == [Q(F(3, 5))]
+    four = [m0, still(P(4, 0)), still(P(0, 4)), still(P(-4, 0))]
+    # (4, 0) is one of the three: the determinant vanishes where q meets it, tau = 3/5
+    assert [r.exact for r in roots_in_unit(incircle_poly(four))] == [Q(F(3, 5))]
+    four = [m0, still(P(0, -4)), still(P(0, 4)), still(P(-4, 0))]
+    assert [r.exact for r in roots_in_unit(incircle_poly(four))] == [Q(F(3, 5))]
+
+
+def test_joint_look_points_cover_each_stretch_and_each_exact_instant():
+    from exactsym.gathering.joint_instants import joint_critical_roots, joint_look_points
+    P = g.point
+    w = World([(0, -10), (-20, 6), (30, 30), (-30, 30), (0, -40)], Readings())
+    w.robots[0].centre = P(0, 0)
+    pieces = {0: g.Segment(P(0, -10), P(0, -5)), 1: g.Segment(P(-20, 6), P(20, 6))}
+    roots = joint_critical_roots(pieces, w)
+    tags = [t for r in roots for t in r.tags]
+    assert ("distance", "robots 0 and 1 as far from C") in tags
+    assert ("ray", "robots 0 and 1 on one line through C") in tags
+    pts, sided = joint_look_points(pieces, w)
+    taus = [p.tau for p in pts]
+    assert all(a < b for a, b in zip(taus, taus[1:]))           # in order, distinct
+    assert all(Q(0) < t < Q(1) for t in taus)
+    assert sum(not p.exact for p in pts) == len(roots) + 1      # one per stretch
+    assert sum(p.exact for p in pts) + sided == len(roots)
+    # a robot standing still everywhere and no movers near: no instant, half way
+    far = {1: g.Segment(P(-20, 6), P(-19, 6))}
+    w.robots[1].centre = P(0, 0)
+    pts, _ = joint_look_points(far, w)
+    assert [p.tau for p in pts] == [Q(F(1, 2))]

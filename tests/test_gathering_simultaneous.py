@@ -13,7 +13,7 @@ from exactsym.gathering import geometry as g
 from exactsym.gathering.invariants import ALL, Checker, Violation
 from exactsym.gathering.robot import Readings
 from exactsym.gathering.schedulers import run
-from exactsym.gathering.world import World
+from exactsym.gathering.world import IDENTITY as MIRROR_FREE, World
 
 P = g.point
 ONE_CIRCLE = [(20, 0), (0, 20), (-20, 0), (0, -20), (12, 16)]
@@ -287,3 +287,98 @@ def test_search_finds_the_simultaneous_overlap_first():
     assert [a["a"] for a in found] == ["look", "look", "step"]
     assert sorted(m[0] for m in found[-1]["moves"]) == [2, 3]
     assert exhaustive(ONE_CIRCLE, settings_, max_depth=2) is None
+
+
+# -- I3, I4, I6 over a joint step (exactsym.gathering.joint_instants) --------------------
+#: robot 4 Looks and gets Make_SymToAsym's epsilon arc about C = (0, 0); robots 0 and 1
+#: then move with it (made-up moves: no Look of their own)
+JOINT = [(20, 0), (-20, 0), (12, 16), (-16, 12), (5, 0)]
+
+
+def _joint_world(checker, chords: bool):
+    """``chords``: robots 0 and 1 cut across the SEC, (20, 0) -> (0, 20) and (-20, 0) ->
+    (0, -20) (part-way only robots 2 and 3, 90 degrees apart, are on the circle of
+    radius 20: the SEC and C change, and come back at the end); otherwise they slide
+    along that circle (C stays)."""
+    w = World(JOINT, checker=checker)
+    w.look(4, MIRROR_FREE)
+    if chords:
+        w.robots[0].path = [seg((20, 0), (0, 20))]
+        w.robots[1].path = [seg((-20, 0), (0, -20))]
+    else:
+        w.robots[0].path = [g.Arc(P(0, 0), P(20, 0), P(16, -12), -1)]
+        w.robots[1].path = [g.Arc(P(0, 0), P(-20, 0), P(-16, -12), 1)]
+    return w
+
+
+def _end_only(w, key):
+    """The old check of a joint step: each mover at the step's end only."""
+    c = Checker(enabled=frozenset({key}))
+    w.checker = c
+    for i in (0, 1, 4):
+        pos = w.robots[i].pos
+        c.after_advance(w, i, g.Segment(pos, pos))
+    return c
+
+
+STEP = [(0, None, False), (1, None, False), (4, F(1, 2), False)]
+
+
+@pytest.mark.parametrize("key", ["I3", "I6"])
+def test_I3_and_I6_fire_inside_a_joint_step_and_not_at_its_end(key):
+    w = _joint_world(None, chords=True)
+    w.advance_together(STEP)
+    assert _end_only(w, key).counts[key] >= 1             # at the end: no violation
+    w = _joint_world(Checker(enabled=frozenset({key})), chords=True)
+    with pytest.raises(Violation) as err:
+        w.advance_together(STEP)
+    v = err.value
+    assert v.invariant == key and 4 in v.robots
+    tau = F(v.witness.split("(time ")[1].split(" of the step")[0])
+    assert 0 < tau < 1
+    if key == "I6":
+        assert "C moved from (0, 0)" in v.witness
+        assert v.label == "conclusion (L1708-1710)"
+    else:
+        assert v.label == "obs-v-move" and "plans robot 0 (MakeAsym)" in v.witness
+
+
+def test_I3_and_I6_hold_over_a_joint_step_along_the_sec():
+    for key in ("I3", "I6"):
+        w = _joint_world(Checker(enabled=frozenset({key})), chords=False)
+        w.advance_together(STEP)
+        c = w.checker.counts
+        assert c["instants"] >= 3 and c[key] >= c["instants"]
+
+
+def _leader_world(checker, cross_at):
+    """Leader 0 goes from (0, -10) to (0, -5) towards C = (0, 0); robot 1 crosses the
+    plane along y = ``cross_at`` (a made-up move), nearest to C half way."""
+    w = World([(0, -10), (-20, cross_at), (30, 30), (-30, 30), (0, -40)], checker=checker)
+    lead = w.robots[0]
+    lead.path, lead.start, lead.role = [seg((0, -10), (0, -5))], lead.pos, "leader"
+    lead.centre, lead.target, lead.r_set = P(0, 0), P(0, 0), frozenset(range(5))
+    w.robots[1].path = [seg((-20, cross_at), (20, cross_at))]
+    return w
+
+
+def test_I4_fires_inside_a_joint_step_and_holds():
+    """Robot 1 passes (0, 6), nearer to C than the leader (at 15/2 then): I4 inside the
+    step; at the end robot 1 is at (20, 6), farther than the leader (at 5).  Along
+    y = 12 robot 1 is never as near."""
+    w = _leader_world(None, 6)
+    w.advance_together([(0, None, False), (1, None, False)])
+    c = Checker(enabled=frozenset({"I4"}))
+    c._nearest(w, 0, w.events, strict=True)                # the end alone: no violation
+    w = _leader_world(Checker(enabled=frozenset({"I4"})), 6)
+    with pytest.raises(Violation) as err:
+        w.advance_together([(0, None, False), (1, None, False)])
+    v = err.value
+    assert v.invariant == "I4" and v.robots == (0, 1) and v.label == "gather-min-distance"
+    # the first instant where robot 1 is as near: (10 - 5 tau)^2 = (40 tau - 20)^2 + 36,
+    # tau = 10/21 - 2 sqrt(37)/105, held exactly (a tie, not a sample)
+    assert ("(time 10/21 - 2/105*sqrt(37) of the step: robots 0 and 1 as far from C)"
+            in v.witness)
+    w = _leader_world(Checker(enabled=frozenset({"I4"})), 12)        # never nearer
+    w.advance_together([(0, None, False), (1, None, False)])
+    assert w.checker.counts["I4"] >= 2

@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .instants import critical_roots, look_points
+from .joint_instants import joint_look_points
 from .pattern import definition_defects, recognise
 
 #: How a violation names the statement it contradicts: the paper's ``\\label`` where
@@ -151,7 +152,7 @@ class Checker:
                                 f"a Look in frame {frame.as_list()} plans {_plan_text(mine)}, "
                                 f"one in frame {other.as_list()} plans {_plan_text(theirs)}")
 
-    def _nearest(self, world, i, t, strict: bool):
+    def _nearest(self, world, i, t, strict: bool, where: str = ""):
         """The lemma: the mover's distance to C is the minimum over R (at the Look a tie is
         allowed: "no other robot is inside the circle of radius d"; once moving, strictly)."""
         rob = world.robots[i]
@@ -163,7 +164,7 @@ class Checker:
             if (d_i - d_k).sign() > (-1 if strict else 0):
                 raise Violation("I4", t, [i, k], f"moving robot {i} is at squared distance "
                                 f"{d_i.text()} from C = {g.fmt_point(rob.centre)}, robot {k} "
-                                f"of R at {d_k.text()}")
+                                f"of R at {d_k.text()}{where}")
 
     # -- after an advance ----------------------------------------------------------------
     def after_advance(self, world, i, piece):
@@ -179,7 +180,7 @@ class Checker:
             self._nearest(world, i, t, strict=True)
         if self._on("I6") and rob.centre is not None:
             self._same_centre(world, i, t, "")
-        i3 = self._on("I3")
+        i3 = rob.target is not None and self._on("I3")   # no target: a made-up move
         if i3 or ("I6" in self.enabled and rob.centre is not None):
             # the critical instants inside the piece (each exactly when the kernel holds
             # it, and one Look in each stretch between them), then (unless it was the last
@@ -251,10 +252,17 @@ class Checker:
 
     # -- after a step of several robots ---------------------------------------------------
     def after_step(self, world, pieces: dict):
-        """I1 over one interval of simultaneous motion (``World.advance_together``),
-        exact: each mover's piece against every robot standing still, each two movers by
-        their joint motion (``geometry.joint_motion_overlap``, a polynomial in the common
-        time, its roots isolated exactly).  Counted once per mover."""
+        """One interval of simultaneous motion (``World.advance_together``; the world's
+        positions are already the step's end).  I1, exact: each mover's piece against
+        every robot standing still, each two movers by their joint motion
+        (``geometry.joint_motion_overlap``, a polynomial in the common time, its roots
+        isolated exactly); counted once per mover.  Then I3, I4 and I6 at the critical
+        instants of the joint motion (:mod:`.joint_instants`): every mover where it is
+        at each instant (the step's end is checked by ``after_advance``)."""
+        self._joint_collision(world, pieces)
+        self._joint_instants(world, pieces)
+
+    def _joint_collision(self, world, pieces: dict):
         if "I1" not in self.enabled:
             return
         t = world.events
@@ -277,6 +285,43 @@ class Checker:
                                     f"interval robot {i} is at {g.fmt_point(p)}, robot {k} "
                                     f"at {g.fmt_point(q)}: squared distance "
                                     f"{g.dist2(p, q).text()} < 4")
+
+    def _joint_instants(self, world, pieces: dict):
+        """A fresh Look (I3), C unchanged (I6) and the leader strictly nearest (I4) at
+        each critical instant of the joint motion that the kernel holds and at one
+        rational instant in each stretch between: all movers moved to that instant."""
+        movers = sorted(pieces)
+        rob = world.robots
+        looked = [i for i in movers if rob[i].target is not None]   # not made up (tests)
+        i3 = "I3" in self.enabled and bool(looked)
+        i6 = "I6" in self.enabled and any(rob[i].centre is not None for i in movers)
+        i4 = "I4" in self.enabled and any((rob[i].role or "").startswith("leader")
+                                          for i in movers)
+        if not (i3 or i6 or i4):
+            return
+        t = world.events
+        ends = {i: rob[i].pos for i in movers}
+        points, sided = joint_look_points(pieces, world, world.readings.A1 == "sec-r")
+        self.counts["sided"] += sided
+        try:
+            for jp in points:
+                for i in movers:
+                    rob[i].pos = pieces[i].at(jp.tau)
+                self.counts["instants"] += 1
+                where = f" (time {jp.tau.text()} of the step: {jp.where})"
+                for i in looked:
+                    if i4 and (rob[i].role or "").startswith("leader"):
+                        self.counts["I4"] += 1
+                        self._nearest(world, i, t, strict=True, where=where)
+                    if i6 and rob[i].centre is not None:
+                        self.counts["I6"] += 1
+                        self._same_centre(world, i, t, where)
+                    if i3:
+                        self.counts["I3"] += 1
+                        self._fresh_look(world, i, t, where)
+        finally:
+            for i in movers:
+                rob[i].pos = ends[i]
 
     # -- after an arrival ----------------------------------------------------------------
     def after_arrival(self, world, i):
