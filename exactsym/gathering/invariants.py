@@ -19,7 +19,10 @@ Exactness of the "at any instant" checks:
   support changes, where a symmetry can appear -- roots of polynomials in the path
   parameter, isolated exactly (:mod:`.polyroots`).  A Look at each instant the kernel
   holds, and one in each stretch between consecutive instants; an instant that needs a
-  nested radical is seen on both sides only (counted as ``sided``).
+  nested radical is seen on both sides only (counted as ``sided``);
+* over a step of several robots moving at once (:meth:`Checker.after_step`): I1 by the
+  joint motion's exact polynomial, and I3, I4 and I6 at the critical instants of the
+  joint motion (:mod:`.joint_instants`) and between them.
 """
 
 from __future__ import annotations

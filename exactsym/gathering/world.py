@@ -23,7 +23,8 @@ ASYNC run is the sequence of intervals between consecutive Looks and stops: each
 Collisions are decided exactly over the whole interval (:mod:`.geometry`): a mover
 against every robot standing still, and every two movers against each other
 (``geometry.joint_motion_overlap``: a polynomial in tau, its roots isolated exactly;
-checked by ``invariants.Checker.after_step``).
+checked by ``invariants.Checker.after_step``, which also checks I3, I4 and I6 at the
+critical instants of the joint motion, :mod:`.joint_instants`).
 """
 
 from __future__ import annotations
