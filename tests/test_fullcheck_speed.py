@@ -1,0 +1,31 @@
+"""The shortcuts of the full check (issue 9) equal what they replace."""
+
+from __future__ import annotations
+
+from hypothesis import given, settings, strategies as st
+
+from exactsym.analysis import built_levels
+from exactsym.configuration import Configuration
+from exactsym.levels import Level, RationalLevels, levels_of
+
+# many points on few circles about the origin (levels of several points, and ties of
+# squared radii), plus distinct random points: levels_of then keeps RationalLevels
+_ring_points = st.lists(st.sampled_from([(3, 4), (-4, 3), (5, 0), (0, -5), (-3, -4), (4, -3),
+                                         (1, 1), (-1, 1), (1, -1), (-1, -1), (0, 2), (2, 0)]),
+                        min_size=0, max_size=12, unique=True)
+
+
+@settings(max_examples=25, deadline=None)
+@given(_ring_points, st.lists(st.tuples(st.integers(-10**6, 10**6), st.integers(-10**6, 10**6)),
+                              min_size=70, max_size=120, unique=True))
+def test_built_levels_equal_the_lazy_levels(ring, extra):
+    points = list(dict.fromkeys([*ring, *extra]))
+    levels = levels_of(Configuration.from_points(points))
+    built = built_levels(levels)
+    assert isinstance(built.levels, tuple)
+    assert all(type(level) is Level for level in built.levels)
+    assert built.levels == tuple(levels.levels)          # radii and point orders
+    assert [hash(a) for a in built.levels] == [hash(b) for b in levels.levels]
+    assert built.sec == levels.sec and built.polar == levels.polar
+    if isinstance(levels.levels, RationalLevels):
+        assert built_levels(built) is built                # already a tuple: unchanged
