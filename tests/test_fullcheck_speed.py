@@ -29,3 +29,24 @@ def test_built_levels_equal_the_lazy_levels(ring, extra):
     assert built.sec == levels.sec and built.polar == levels.polar
     if isinstance(levels.levels, RationalLevels):
         assert built_levels(built) is built                # already a tuple: unchanged
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(-10**60, 10**60), st.integers(1, 10**60))
+def test_flint_writes_a_rational_as_number_text(p, q):
+    from flint import fmpq
+    from exactsym.exact import number_text
+    assert str(fmpq(p, q)) == number_text(fmpq(p, q))
+
+
+_json = st.recursive(st.none() | st.booleans() | st.integers() | st.text(max_size=8),
+                     lambda inner: st.lists(inner, max_size=4)
+                     | st.dictionaries(st.text(max_size=5), inner, max_size=4), max_leaves=20)
+
+
+@settings(max_examples=200, deadline=None)
+@given(_json)
+def test_prebuilt_encoder_writes_as_json_dumps(value):
+    import json
+    from exactsym.report import _item
+    assert _item(value) == json.dumps(value, separators=(", ", ": "))
