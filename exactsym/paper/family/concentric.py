@@ -120,12 +120,22 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None) 
             out.append(new_ring(f"G{k + 1}", None, level.radius_squared, (k + 1,), robots,
                                 robots))
             continue
-        if polar:
-            dirs = tuple([turns[i][1] for i in robots])
+        if len(robots) == 1:        # one robot per level on random input: no list made
+            i = robots[0]
+            labels = ((i,),)
+            if polar:
+                dirs = (turns[i][1],)
+            else:
+                x, y = pts[i]
+                dirs = ((x - cx, y - cy),)
         else:
-            dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in robots])
+            labels = tuple([(i,) for i in robots])
+            if polar:
+                dirs = tuple([turns[i][1] for i in robots])
+            else:
+                dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in robots])
         poly = new_polygon(CirclePolygon)       # CirclePolygon(labels, dirs, polar), faster
-        poly.__dict__.update(labels=tuple([(i,) for i in robots]), directions=dirs,
+        poly.__dict__.update(labels=labels, directions=dirs,
                              polar=polar, one_circle=True)    # a level: one radius
         out.append(new_ring(f"G{k + 1}", poly, level.radius_squared, (k + 1,), robots,
                             robots))
