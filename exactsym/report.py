@@ -19,6 +19,7 @@ from .configuration import Configuration, no_cycle_collection
 from .exact import evaluate, fmpq, number_system, number_text
 from .expr import parse_expression
 from .paper.family_report import paper_json
+from .paper.polygon_report import LabelledVerdict
 from .truth_report import truth_json
 
 
@@ -72,6 +73,13 @@ def _item(value) -> str:
     """``_ITEM(value)`` for a dict or list of JSON values."""
     if _C_ITEM is None:
         return _ITEM(value)
+    if type(value) is dict:
+        paper = value.get("paper")
+        if type(paper) is LabelledVerdict and paper.json_parts is not None:
+            # a level entry whose verdict carries its JSON text (one template per shape)
+            return "{" + ", ".join([encode_basestring_ascii(key) + ": " + (
+                paper.json_text() if item is paper else "".join(_C_ITEM(item, 0)))
+                for key, item in value.items()]) + "}"
     return "".join(_C_ITEM(value, 0))
 
 

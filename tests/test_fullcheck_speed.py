@@ -50,3 +50,32 @@ def test_prebuilt_encoder_writes_as_json_dumps(value):
     import json
     from exactsym.report import _item
     assert _item(value) == json.dumps(value, separators=(", ", ": "))
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.lists(st.tuples(st.integers(-50, 50), st.integers(-50, 50)), min_size=3, max_size=40,
+                unique=True))
+def test_verdict_templates_write_what_the_encoder_writes(points):
+    import json
+    from exactsym.paper.polygon_report import LabelledVerdict
+    from exactsym.report import _item, check_report
+    report = check_report(Configuration.from_points(points))
+    templated = 0
+    for entry in report["levels"]:
+        paper = entry.get("paper")
+        want = json.dumps(entry, separators=(", ", ": "))
+        assert _item(entry) == want
+        if type(paper) is LabelledVerdict and paper.json_parts is not None:
+            templated += 1
+            assert paper.json_text() == json.dumps(dict(paper), separators=(", ", ": "))
+    singles = sum(len(e["points"]) == 1 for e in report["levels"])
+    assert templated <= singles
+
+
+def test_single_robot_levels_carry_a_template():
+    from exactsym.paper.polygon_report import LabelledVerdict
+    from exactsym.report import check_report
+    report = check_report(Configuration.from_points([(0, 0), (1, 0), (0, 2), (3, 1), (-5, 2)]))
+    singles = [e["paper"] for e in report["levels"] if len(e["points"]) == 1]
+    assert len(singles) == 3
+    assert all(type(v) is LabelledVerdict and v.json_parts is not None for v in singles)

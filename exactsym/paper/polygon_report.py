@@ -41,6 +41,8 @@ axes), or ``{"omitted": reason}`` above :data:`STRING_LIMIT` vertices.
 
 from __future__ import annotations
 
+import json
+
 from dataclasses import dataclass
 
 from ..exact import as_fmpq, exact_key, number_text, sign
@@ -209,9 +211,11 @@ def _single_relabeller(verdict: dict, label):
         return None
     definition = verdict.get("definition")
     definition = definition if isinstance(definition, dict) else None
+    parts = _json_template(verdict, keys, asym)
 
     def relabelled(new) -> dict:
-        out = dict(verdict)
+        out = LabelledVerdict(verdict)
+        out.json_parts = parts
         for k in keys:
             out[k] = new
         if asym is not None:
@@ -222,6 +226,41 @@ def _single_relabeller(verdict: dict, label):
             out["definition"] = dict(definition)
         return out
     return relabelled
+
+
+class LabelledVerdict(dict):
+    """A relabelled single-vertex verdict (a plain dict to every reader) that also
+    carries its JSON text cut at the label: ``json_parts`` (or None), joined by the label
+    it is the text of the dict (:func:`json_text`).  Every robot of a random
+    configuration is a level with a verdict of this one shape: the report writes them
+    from the template instead of encoding 100,000 dicts (issue 9)."""
+    __slots__ = ("json_parts",)
+
+    def json_text(self) -> str | None:
+        """The dict's JSON text (separators ``", "`` and ``": "``), or None."""
+        parts = self.json_parts
+        if parts is None:
+            return None
+        return str(self[_LABEL_KEYS[0]]).join(parts)
+
+
+#: A label no verdict holds, for :func:`_json_template` (written "\u0000label").
+_MARK = "\0label"
+_ENCODE = json.JSONEncoder(separators=(", ", ": ")).encode
+
+
+def _json_template(verdict: dict, keys: list, asym) -> tuple | None:
+    """The JSON text of ``verdict`` relabelled to a mark, cut at the mark (see
+    :class:`LabelledVerdict`), or None unless every label in it is the one label of
+    ``keys`` (both of them set) and ``leader_asym`` holds none."""
+    if list(keys) != list(_LABEL_KEYS) or (asym is not None and (
+            asym["+1"] is not None or asym["-1"] is not None)):
+        return None
+    marked = dict(verdict)
+    for k in keys:
+        marked[k] = _MARK
+    parts = _ENCODE(marked).split(_ENCODE(_MARK))
+    return tuple(parts) if len(parts) == len(keys) + 1 else None
 
 
 class VerdictMemo:
