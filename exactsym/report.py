@@ -77,9 +77,16 @@ def _item(value) -> str:
         paper = value.get("paper")
         if type(paper) is LabelledVerdict and paper.json_parts is not None:
             # a level entry whose verdict carries its JSON text (one template per shape)
-            return "{" + ", ".join([encode_basestring_ascii(key) + ": " + (
-                paper.json_text() if item is paper else "".join(_C_ITEM(item, 0)))
-                for key, item in value.items()]) + "}"
+            out = []
+            for key, item in value.items():
+                if item is paper:
+                    text = paper.json_text()
+                elif type(item) is str:
+                    text = encode_basestring_ascii(item)
+                else:
+                    text = "".join(_C_ITEM(item, 0))
+                out.append(encode_basestring_ascii(key) + ": " + text)
+            return "{" + ", ".join(out) + "}"
     return "".join(_C_ITEM(value, 0))
 
 

@@ -219,7 +219,7 @@ def is_symmetric_polygon(ring: Ring) -> bool:
     """``def-symmetric-poly`` (straight or skew symmetric; the robot at C and a single
     vertex are symmetric).  At most two vertices: always (a single vertex has the line
     through it, two vertices the perpendicular bisector), decided without the lines."""
-    if ring.polygon is None or ring.polygon.n <= 2:
+    if ring.n <= 2:         # n: 1 for the robot at C (cached on the ring)
         return True
     return has_lines(ring.lines)
 
