@@ -91,12 +91,14 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
         truth = symmetry_group(config, levels) if "truth" in wanted else None
         if wanted - {"truth"}:
             levels = built_levels(levels)
-        verdicts = strings = types = None
+        verdicts = strings = types = polygons = None
         if "polygons" in wanted:
             section = level_section(config, levels, options.strings)
             verdicts, strings, types = section.verdicts, section.strings, section.types
+            polygons = section.polygons
         paper = paper_procedure(config, levels, reading=options.reading,
-                                degree=options.degree) if "family" in wanted else None
+                                degree=options.degree, level_polygons=polygons
+                                ) if "family" in wanted else None
         audited = run_audit(config, levels, paper, {"reading": options.reading,
                                                     "degree": options.degree,
                                                     "invariance": options.invariance},

@@ -79,3 +79,26 @@ def test_single_robot_levels_carry_a_template():
     singles = [e["paper"] for e in report["levels"] if len(e["points"]) == 1]
     assert len(singles) == 3
     assert all(type(v) is LabelledVerdict and v.json_parts is not None for v in singles)
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.lists(st.tuples(st.integers(-6, 6), st.integers(-6, 6)), min_size=3, max_size=40,
+                unique=True))
+def test_family_rings_from_the_polygon_layer_equal_the_computed_ones(points):
+    from exactsym.paper.family.concentric import concentric_polygons
+    from exactsym.paper.keys import gap_ids, integer_directions, polygon_integer_directions
+    from exactsym.paper.polygon_report import level_section
+    config = Configuration.from_points(points)
+    levels = levels_of(config)
+    section = level_section(config, levels)
+    shared = concentric_polygons(config, levels, section.polygons)
+    computed = concentric_polygons(config, levels)
+    assert shared == computed
+    for a, b in zip(shared, computed):
+        assert (a.polygon is None) == (b.polygon is None)
+        if a.polygon is not None:
+            assert a.polygon.directions == b.polygon.directions
+            assert polygon_integer_directions(a.polygon) == \
+                integer_directions(b.polygon.directions)
+            assert gap_ids(a.polygon) == gap_ids(b.polygon)
+            assert a.lines == b.lines

@@ -43,7 +43,7 @@ from __future__ import annotations
 
 import json
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from ..exact import as_fmpq, exact_key, number_text, sign
 from ..configuration import no_cycle_collection
@@ -317,6 +317,9 @@ class LevelSection:
     verdicts: tuple
     strings: tuple | None
     types: tuple
+    #: per level, the polygon built (None where none was: the robot at C, single robots):
+    #: the family layer reuses its directions (``concentric_polygons``)
+    polygons: tuple | None = field(default=None, compare=False, repr=False)
 
 
 def level_reports(config, levels, strings: bool = False) -> tuple[tuple, tuple | None]:
@@ -335,9 +338,10 @@ def level_section(config, levels, strings: bool = False) -> LevelSection:
 def _level_section(config, levels, strings: bool) -> LevelSection:
     memo = VerdictMemo()
     single = None          # the verdict of a single-vertex level, and its label
-    verdicts, texts, types = [], [], []
+    verdicts, texts, types, polygons = [], [], [], []
     for index, level in enumerate(levels.levels):
         if index == 0 and sign(level.radius_squared) == 0:
+            polygons.append(None)
             verdicts.append(None)
             texts.append(None)
             types.append(None)
@@ -349,12 +353,15 @@ def _level_section(config, levels, strings: bool) -> LevelSection:
                 verdict, facts = _verdicts_and_type(polygon)
                 single = (_single_relabeller(verdict, polygon.labels[0]), facts)
             if single[0] is not None:
+                polygons.append(None)
                 verdicts.append(single[0](level.points[0]))
                 types.append(single[1])
                 continue
         polygon = level_polygon(config, levels, index)
+        polygons.append(polygon)
         verdict, facts = memo.verdicts_and_type(polygon)
         verdicts.append(verdict)
         types.append(facts)
         texts.append(level_strings(polygon) if strings else None)
-    return LevelSection(tuple(verdicts), tuple(texts) if strings else None, tuple(types))
+    return LevelSection(tuple(verdicts), tuple(texts) if strings else None, tuple(types),
+                        tuple(polygons))

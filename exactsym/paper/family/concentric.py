@@ -101,10 +101,13 @@ def new_ring(name, polygon, radius_squared, levels, robots, own, keys=()) -> Rin
     return ring
 
 
-def concentric_polygons(config: Configuration, ring_data: Levels | None = None) -> tuple:
+def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
+                        level_polygons=None) -> tuple:
     """G_1, ..., G_t of ``config`` (Section 3: "Elements of G are sorted according to
     their distances from the center"), as :class:`Ring`\\ s with tuple labels (the
-    polygons of :func:`exactsym.paper.circle_polygon.level_polygon`, labels wrapped in tuples)."""
+    polygons of :func:`exactsym.paper.circle_polygon.level_polygon`, labels wrapped in tuples).
+    ``level_polygons``: those polygons of ``ring_data``'s levels (None where not built):
+    their directions and integer vectors are taken, not recomputed."""
     ring_data = ring_data if ring_data is not None else levels_of(config)
     out = []
     polar = ring_data.polar
@@ -130,6 +133,16 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None) 
                 dirs = ((x - cx, y - cy),)
         else:
             labels = tuple([(i,) for i in robots])
+            built = level_polygons[k] if level_polygons is not None else None
+            if built is not None and built.labels == robots:
+                poly = new_polygon(CirclePolygon)
+                poly.__dict__.update(labels=labels, directions=built.directions,
+                                     polar=polar, one_circle=True)
+                if "integer_vectors" in built.__dict__:
+                    poly.__dict__["integer_vectors"] = built.__dict__["integer_vectors"]
+                out.append(new_ring(f"G{k + 1}", poly, level.radius_squared, (k + 1,),
+                                    robots, robots))
+                continue
             if polar:
                 dirs = tuple([turns[i][1] for i in robots])
             else:
