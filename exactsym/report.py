@@ -12,12 +12,14 @@ its ``[expect]`` keys to :data:`EXPECTATIONS` and :data:`exactsym.fileformat.EXP
 from __future__ import annotations
 
 import json
+from json.encoder import c_make_encoder, encode_basestring_ascii
 
 from .analysis import Analysis, Options, analyse
 from .configuration import Configuration, no_cycle_collection
-from .exact import evaluate, number_system, number_text
+from .exact import evaluate, fmpq, number_system, number_text
 from .expr import parse_expression
 from .paper.family_report import paper_json
+from .paper.polygon_report import LabelledVerdict
 from .truth_report import truth_json
 
 
@@ -33,7 +35,9 @@ def _report_json(analysis: Analysis) -> dict:
         "n": config.n,
         "sec": {"center": [number_text(c) for c in levels.sec.centre],
                 "radius_squared": number_text(levels.sec.radius_squared)},
-        "levels": [{"radius_squared": number_text(level.radius_squared),
+        "levels": [{"radius_squared": str(level.radius_squared)
+                    if type(level.radius_squared) is fmpq      # flint writes p/q as we do
+                    else number_text(level.radius_squared),
                     "points": list(level.points)} for level in levels.levels],
         "number_field": getattr(config.polar_system if levels.polar else config.system,
                                 "name", "Q"),
@@ -59,6 +63,31 @@ def _report_json(analysis: Analysis) -> dict:
 LONG_LIST = 256
 
 _ITEM = json.JSONEncoder(separators=(", ", ": ")).encode     # the C encoder (no indent)
+# The same C encoder made once (``JSONEncoder.encode`` builds one per call: on 100,000
+# levels that was a third of the JSON time); no circular check (a report is a tree).
+_C_ITEM = c_make_encoder(None, json.JSONEncoder().default, encode_basestring_ascii, None, ": ", ", ", False,
+                         False, True) if c_make_encoder is not None else None
+
+
+def _item(value) -> str:
+    """``_ITEM(value)`` for a dict or list of JSON values."""
+    if _C_ITEM is None:
+        return _ITEM(value)
+    if type(value) is dict:
+        paper = value.get("paper")
+        if type(paper) is LabelledVerdict and paper.json_parts is not None:
+            # a level entry whose verdict carries its JSON text (one template per shape)
+            out = []
+            for key, item in value.items():
+                if item is paper:
+                    text = paper.json_text()
+                elif type(item) is str:
+                    text = encode_basestring_ascii(item)
+                else:
+                    text = "".join(_C_ITEM(item, 0))
+                out.append(encode_basestring_ascii(key) + ": " + text)
+            return "{" + ", ".join(out) + "}"
+    return "".join(_C_ITEM(value, 0))
 
 
 def json_text(report: dict, compact: bool = False) -> str:
@@ -88,9 +117,9 @@ def _write(value, pad: str, out: list) -> None:
         out.append("\n" + pad + "}")
     elif isinstance(value, list) and len(value) > LONG_LIST:
         if all(not isinstance(x, (dict, list)) for x in value):
-            out.append(_ITEM(value))
+            out.append(_item(value))
         else:
-            out.append("[\n" + inner + (",\n" + inner).join(map(_ITEM, value)) + "\n" + pad
+            out.append("[\n" + inner + (",\n" + inner).join(map(_item, value)) + "\n" + pad
                        + "]")
     elif isinstance(value, list) and value:
         out.append("[")

@@ -192,6 +192,16 @@ def integer_directions(dirs):
     return out
 
 
+def polygon_integer_directions(poly: CirclePolygon):
+    """:func:`integer_directions` of ``poly``'s directions, computed once per polygon
+    (kept in its ``__dict__``; the family layer's polygon of a level takes it from the
+    polygon layer's, which has the same directions: issue 9, no repeated work)."""
+    cached = poly.__dict__.get("integer_vectors", False)
+    if cached is False:
+        cached = poly.__dict__["integer_vectors"] = integer_directions(poly.directions)
+    return cached
+
+
 def integer_gap_key(a, b) -> tuple:
     """For int vectors a, b of one length: a key equal for equal counter-clockwise
     angles from a to b and increasing with it, (class, value) with class 0 below half a
@@ -211,7 +221,7 @@ def gap_ids(poly: CirclePolygon) -> list:
     n, dirs = poly.n, poly.directions
     ids: dict = {}
     if not poly.polar and n > 1:
-        u = integer_directions(dirs)
+        u = polygon_integer_directions(poly)
         if u is not None:
             return [ids.setdefault(integer_gap_key(u[i], u[(i + 1) % n]), len(ids))
                     for i in range(n)]

@@ -41,7 +41,9 @@ axes), or ``{"omitted": reason}`` above :data:`STRING_LIMIT` vertices.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import json
+
+from dataclasses import dataclass, field
 
 from ..exact import as_fmpq, exact_key, number_text, sign
 from ..configuration import no_cycle_collection
@@ -209,9 +211,11 @@ def _single_relabeller(verdict: dict, label):
         return None
     definition = verdict.get("definition")
     definition = definition if isinstance(definition, dict) else None
+    parts = _json_template(verdict, keys, asym)
 
     def relabelled(new) -> dict:
-        out = dict(verdict)
+        out = LabelledVerdict(verdict)
+        out.json_parts = parts
         for k in keys:
             out[k] = new
         if asym is not None:
@@ -222,6 +226,41 @@ def _single_relabeller(verdict: dict, label):
             out["definition"] = dict(definition)
         return out
     return relabelled
+
+
+class LabelledVerdict(dict):
+    """A relabelled single-vertex verdict (a plain dict to every reader) that also
+    carries its JSON text cut at the label: ``json_parts`` (or None), joined by the label
+    it is the text of the dict (:func:`json_text`).  Every robot of a random
+    configuration is a level with a verdict of this one shape: the report writes them
+    from the template instead of encoding 100,000 dicts (issue 9)."""
+    __slots__ = ("json_parts",)
+
+    def json_text(self) -> str | None:
+        """The dict's JSON text (separators ``", "`` and ``": "``), or None."""
+        parts = self.json_parts
+        if parts is None:
+            return None
+        return str(self[_LABEL_KEYS[0]]).join(parts)
+
+
+#: A label no verdict holds, for :func:`_json_template` (written "\u0000label").
+_MARK = "\0label"
+_ENCODE = json.JSONEncoder(separators=(", ", ": ")).encode
+
+
+def _json_template(verdict: dict, keys: list, asym) -> tuple | None:
+    """The JSON text of ``verdict`` relabelled to a mark, cut at the mark (see
+    :class:`LabelledVerdict`), or None unless every label in it is the one label of
+    ``keys`` (both of them set) and ``leader_asym`` holds none."""
+    if list(keys) != list(_LABEL_KEYS) or (asym is not None and (
+            asym["+1"] is not None or asym["-1"] is not None)):
+        return None
+    marked = dict(verdict)
+    for k in keys:
+        marked[k] = _MARK
+    parts = _ENCODE(marked).split(_ENCODE(_MARK))
+    return tuple(parts) if len(parts) == len(keys) + 1 else None
 
 
 class VerdictMemo:
@@ -278,6 +317,9 @@ class LevelSection:
     verdicts: tuple
     strings: tuple | None
     types: tuple
+    #: per level, the polygon built (None where none was: the robot at C, single robots):
+    #: the family layer reuses its directions (``concentric_polygons``)
+    polygons: tuple | None = field(default=None, compare=False, repr=False)
 
 
 def level_reports(config, levels, strings: bool = False) -> tuple[tuple, tuple | None]:
@@ -296,9 +338,10 @@ def level_section(config, levels, strings: bool = False) -> LevelSection:
 def _level_section(config, levels, strings: bool) -> LevelSection:
     memo = VerdictMemo()
     single = None          # the verdict of a single-vertex level, and its label
-    verdicts, texts, types = [], [], []
+    verdicts, texts, types, polygons = [], [], [], []
     for index, level in enumerate(levels.levels):
         if index == 0 and sign(level.radius_squared) == 0:
+            polygons.append(None)
             verdicts.append(None)
             texts.append(None)
             types.append(None)
@@ -310,12 +353,15 @@ def _level_section(config, levels, strings: bool) -> LevelSection:
                 verdict, facts = _verdicts_and_type(polygon)
                 single = (_single_relabeller(verdict, polygon.labels[0]), facts)
             if single[0] is not None:
+                polygons.append(None)
                 verdicts.append(single[0](level.points[0]))
                 types.append(single[1])
                 continue
         polygon = level_polygon(config, levels, index)
+        polygons.append(polygon)
         verdict, facts = memo.verdicts_and_type(polygon)
         verdicts.append(verdict)
         types.append(facts)
         texts.append(level_strings(polygon) if strings else None)
-    return LevelSection(tuple(verdicts), tuple(texts) if strings else None, tuple(types))
+    return LevelSection(tuple(verdicts), tuple(texts) if strings else None, tuple(types),
+                        tuple(polygons))

@@ -50,7 +50,7 @@ from math import gcd
 
 from ..exact import exact_key
 from .circle_polygon import CirclePolygon
-from .keys import (circle_line_keys, gap_ids, hashable_key, integer_directions,
+from .keys import (circle_line_keys, gap_ids, hashable_key, polygon_integer_directions,
                    integer_gap_key, line_value)
 from .polygon.strings import perpendicular
 
@@ -66,7 +66,7 @@ def combinatorial_key(polygon: CirclePolygon):
         raise ValueError(f"combinatorial keys are for polygons of at least {MIN_VERTICES} "
                          "vertices")
     if not polygon.polar:
-        vectors = integer_directions(polygon.directions)
+        vectors = polygon_integer_directions(polygon)
         if vectors is not None:
             return _integer_key(vectors)
     return _exact_key(polygon)

@@ -101,10 +101,13 @@ def new_ring(name, polygon, radius_squared, levels, robots, own, keys=()) -> Rin
     return ring
 
 
-def concentric_polygons(config: Configuration, ring_data: Levels | None = None) -> tuple:
+def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
+                        level_polygons=None) -> tuple:
     """G_1, ..., G_t of ``config`` (Section 3: "Elements of G are sorted according to
     their distances from the center"), as :class:`Ring`\\ s with tuple labels (the
-    polygons of :func:`exactsym.paper.circle_polygon.level_polygon`, labels wrapped in tuples)."""
+    polygons of :func:`exactsym.paper.circle_polygon.level_polygon`, labels wrapped in tuples).
+    ``level_polygons``: those polygons of ``ring_data``'s levels (None where not built):
+    their directions and integer vectors are taken, not recomputed."""
     ring_data = ring_data if ring_data is not None else levels_of(config)
     out = []
     polar = ring_data.polar
@@ -120,12 +123,32 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None) 
             out.append(new_ring(f"G{k + 1}", None, level.radius_squared, (k + 1,), robots,
                                 robots))
             continue
-        if polar:
-            dirs = tuple([turns[i][1] for i in robots])
+        if len(robots) == 1:        # one robot per level on random input: no list made
+            i = robots[0]
+            labels = ((i,),)
+            if polar:
+                dirs = (turns[i][1],)
+            else:
+                x, y = pts[i]
+                dirs = ((x - cx, y - cy),)
         else:
-            dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in robots])
+            labels = tuple([(i,) for i in robots])
+            built = level_polygons[k] if level_polygons is not None else None
+            if built is not None and built.labels == robots:
+                poly = new_polygon(CirclePolygon)
+                poly.__dict__.update(labels=labels, directions=built.directions,
+                                     polar=polar, one_circle=True)
+                if "integer_vectors" in built.__dict__:
+                    poly.__dict__["integer_vectors"] = built.__dict__["integer_vectors"]
+                out.append(new_ring(f"G{k + 1}", poly, level.radius_squared, (k + 1,),
+                                    robots, robots))
+                continue
+            if polar:
+                dirs = tuple([turns[i][1] for i in robots])
+            else:
+                dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in robots])
         poly = new_polygon(CirclePolygon)       # CirclePolygon(labels, dirs, polar), faster
-        poly.__dict__.update(labels=tuple([(i,) for i in robots]), directions=dirs,
+        poly.__dict__.update(labels=labels, directions=dirs,
                              polar=polar, one_circle=True)    # a level: one radius
         out.append(new_ring(f"G{k + 1}", poly, level.radius_squared, (k + 1,), robots,
                             robots))
@@ -209,7 +232,7 @@ def is_symmetric_polygon(ring: Ring) -> bool:
     """``def-symmetric-poly`` (straight or skew symmetric; the robot at C and a single
     vertex are symmetric).  At most two vertices: always (a single vertex has the line
     through it, two vertices the perpendicular bisector), decided without the lines."""
-    if ring.polygon is None or ring.polygon.n <= 2:
+    if ring.n <= 2:         # n: 1 for the robot at C (cached on the ring)
         return True
     return has_lines(ring.lines)
 

@@ -56,18 +56,23 @@ class PaperResult:
 def paper_procedure(config: Configuration, ring_data: Levels | None = None,
                     orientation: int = 1, reading: str = "literal", degree: str = "paper",
                     max_rounds: int = 3, claims: bool = True,
-                    check_vl: bool = True, limits: Limits | None = None) -> PaperResult:
+                    check_vl: bool = True, limits: Limits | None = None,
+                    level_polygons=None) -> PaperResult:
     """See :func:`_paper_procedure` (run with the cyclic garbage collector paused: the
-    family layer builds many small acyclic objects, one polygon per level)."""
+    family layer builds many small acyclic objects, one polygon per level).
+    ``level_polygons``: the polygon layer's polygons of ``ring_data``'s levels, when
+    built (:class:`exactsym.paper.polygon_report.LevelSection`): their directions are
+    reused."""
     with no_cycle_collection():
         return _paper_procedure(config, ring_data, orientation, reading, degree, max_rounds,
-                                claims, check_vl, limits)
+                                claims, check_vl, limits, level_polygons)
 
 
 def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
                      orientation: int = 1, reading: str = "literal", degree: str = "paper",
                      max_rounds: int = 3, claims: bool = True,
-                     check_vl: bool = True, limits: Limits | None = None) -> PaperResult:
+                     check_vl: bool = True, limits: Limits | None = None,
+                     level_polygons=None) -> PaperResult:
     """Run the paper on ``config``: GatheringPattern's decision (lines 1-5) and the leader
     election of Section 4.2 (Preprocess, MakeAsym when G_t is symmetric, ElectLeader).
 
@@ -85,7 +90,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
     ring_data = ring_data if ring_data is not None else levels_of(config)
     trace: list = []
     bounded: dict = {}
-    G = concentric_polygons(config, ring_data)
+    G = concentric_polygons(config, ring_data, level_polygons)
     polar = is_polar(G)
     trace_entry(trace, "GatheringPattern", 2, few_names(G), "def-sym-calG",
                 f"G = ({family_text(G)}) about the SEC centre", round=1)
