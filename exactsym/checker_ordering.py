@@ -162,28 +162,63 @@ def _least(plane: _Plane, x: list, others: list) -> None:
     for other in others:
         s = x + [None] + other + other[:-1]
         z, left, right = [0] * len(s), 0, 0
-        positions = range(1, 2 * m + 1)        # s[m + 1 + j:]: the rotation by j
-        if plane.native:
-            # z[i] > 0 only where s[i] == x[0]; elsewhere z[i] = 0 leaves the Z-box as it is,
-            # so only those positions are visited, and a rotation starting elsewhere differs
-            # from x at symbol 0: one comparison (radii first) shows it larger
-            x0, r0 = x[0], x[0][0]
-            need(not [i for i in range(m + 1, 2 * m + 1) if s[i] != x0 and (
-                s[i][0] < r0 or s[i][0] == r0 and _cmp_symbol(plane, s[i], x0) < 0)],
-                "ordering: a reading is less than the claimed one at symbol 0: the claimed "
-                "order is not the canonical one")
-            positions = [i for i in positions if s[i] == x0]
-        for i in positions:
+        for i in range(1, 2 * m + 1):           # s[m + 1 + j:]: the rotation by j
             zi = min(right - i, z[i - left]) if i < right else 0
-            while i + zi < len(s) and zi < m and s[i + zi] is not None and (
-                    s[zi] == s[i + zi] if plane.native else
-                    _cmp_symbol(plane, s[zi], s[i + zi]) == 0):
+            while i + zi < len(s) and zi < m and s[i + zi] is not None and \
+                    _cmp_symbol(plane, s[zi], s[i + zi]) == 0:
                 zi += 1
             z[i] = zi
             if i + zi > right:
                 left, right = i, i + zi
             if i > m and zi < m:
                 need(_cmp_symbol(plane, s[i + zi], x[zi]) > 0, "ordering: the reading from "
+                     f"ray {i - m - 1} is less than the claimed one (they differ at symbol "
+                     f"{zi}): the claimed order is not the canonical one")
+
+
+def _least_native(plane: _Plane, rays: list) -> None:
+    """_least for Python numbers, the symbols made only where needed.  Both frames' readings
+    have the same radii (ccw from R_0: R_0, R_1, ...; cw: R_0, R_-1, ...), so a start whose
+    first radii differ from X's is larger at symbol 0 when X's first radii are the least (one
+    min over the rays).  The Z-algorithm then visits only starts with X's first radii: at any
+    other position z = 0 (its symbol differs from X's first), which leaves the Z-box as it is.
+    A visited start whose first gap differs is shown larger by one angle comparison."""
+    m, r2 = len(rays), plane.r2
+    radii = [tuple(r2[i] for i in ray) for ray in rays]
+    r0 = radii[0]
+    need(min(radii) == r0, "ordering: a reading is less than the claimed one at symbol 0: "
+         "the claimed order is not the canonical one")
+    starts, gaps = [j for j, r in enumerate(radii) if r == r0], {}
+
+    def gap(j):         # the angle from R_j to R_(j+1), canonical: equal angles compare ==
+        j %= m
+        if j not in gaps:
+            a = plane.angle(rays[j][0], rays[(j + 1) % m][0])
+            gaps[j] = a if plane.polar else _primitive(*a)
+        return gaps[j]
+
+    readings = ((lambda j: (radii[j % m], gap(j))), starts[1:]), \
+        ((lambda j: (radii[-j % m], gap(-j - 1))), sorted(-j % m for j in starts))
+    x = readings[0][0]
+    x0 = x(0)
+    for other, js in readings:                  # s = X + sentinel + other doubled
+        def sym(i):
+            return x(i) if i < m else None if i == m else other(i - m - 1)
+        z, left, right = {}, 0, 0
+        for i in [i for i in starts[1:]] + [m + 1 + j for j in js]:
+            if sym(i) != x0:                    # same radii, another first gap
+                need(i < m or plane.cmp_angle(sym(i)[1], x0[1]) > 0, "ordering: the "
+                     f"reading from ray {i - m - 1} is less than the claimed one at symbol 0:"
+                     " the claimed order is not the canonical one")
+                continue
+            zi = min(right - i, z.get(i - left, 0)) if i < right else 0
+            while zi < m and sym(i + zi) == x(zi):
+                zi += 1
+            z[i] = zi
+            if i + zi > right:
+                left, right = i, i + zi
+            if i > m and zi < m:
+                need(_cmp_symbol(plane, sym(i + zi), x(zi)) > 0, "ordering: the reading from "
                      f"ray {i - m - 1} is less than the claimed one (they differ at symbol "
                      f"{zi}): the claimed order is not the canonical one")
 
@@ -273,11 +308,15 @@ def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
     if _frame(spec):
         plane = plane.mirrored()
     rays = _rays(plane, order)
-    ccw, cw = _symbols(plane, rays)
-    if orderable:
+    if orderable and plane.native:
+        _least_native(plane, rays)
+    elif orderable:
+        ccw, cw = _symbols(plane, rays)
         _least(plane, ccw, [ccw, cw])
+    if orderable:
         need(leader == ordering[0], "claim.leader is not the first of the ordering")
         return "ordering and leader"
+    ccw = _symbols(plane, rays)[0]
     # D1, no point at c: the rays the mirror fixes (their points are fixed), the least reading
     fixed = [j for j, ray in enumerate(rays) if mirror[ray[0]] == ray[0]]
     if not fixed:
