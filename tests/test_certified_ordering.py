@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import copy
 import json
+import tempfile
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings, strategies as st
@@ -141,3 +143,52 @@ def test_certified_ordering_follows_similarities(points, matrix):
     one, two = (json.loads(json.dumps(make_certificate(k))) for k in (config, moved))
     assert verdict(one)[0] and verdict(two)[0], (verdict(one), verdict(two))
     assert one["claim"] == two["claim"]
+
+
+def _every_reading(cert: dict) -> list:
+    """(orientation, ordering) for every start in both frames, read off the certified one:
+    in its frame the rays R_0 .. R_(m-1) follow the ordering; the other frame reads them
+    backwards."""
+    from exactsym.checker_ordering import _plane, _rays
+    config, claim = cert["configuration"], cert["claim"]
+    field = checker.number_field(config["field"]) if config.get("field") else None
+    plane = _plane(config["coordinates"], config["points"], field, cert["witness"])
+    centre = [i for i, d in enumerate(plane.dirs) if d is None]
+    frame = cert["witness"]["canonical"]["orientation"]
+    if frame == "cw":
+        plane = plane.mirrored()
+    rays = _rays(plane, claim["ordering"][len(centre):])
+    m, flip = len(rays), {"ccw": "cw", "cw": "ccw"}[frame]
+    out = []
+    for k in range(m):
+        out.append((frame, centre + [i for r in rays[k:] + rays[:k] for i in r]))
+        out.append((flip, centre + [i for j in range(m) for i in rays[(k - j) % m]]))
+    return out
+
+
+_POLAR = st.lists(st.tuples(st.sampled_from([1, 2]), st.integers(0, 11)), min_size=3,
+                  max_size=10, unique=True).map(
+    lambda ps: "".join(f"polar {r} {t}/12\n" for r, t in ps))
+_GRID = st.lists(st.tuples(st.integers(-2, 2), st.integers(-2, 2)), min_size=3, max_size=10,
+                 unique=True).map(lambda ps: "".join(f"{x} {y}\n" for x, y in ps))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.one_of(_POLAR, _GRID))
+def test_only_the_least_reading_passes(text):
+    """Points at twelfths of a turn on two circles, or on a small grid (many equal radii and
+    gaps: the leastness check must follow the symbols past the first): of the 2m readings,
+    the checker accepts exactly the certified one."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "p.txt"
+        path.write_text(text)
+        cert = json.loads(json.dumps(make_certificate(load(path))))
+    if not cert["claim"]["orderable"]:
+        return
+    assert verdict(copy.deepcopy(cert))[0]
+    for frame, order in _every_reading(cert):
+        bad = copy.deepcopy(cert)
+        bad["witness"]["canonical"]["orientation"] = frame
+        bad["claim"]["ordering"], bad["claim"]["leader"] = order, order[0]
+        ok, message = verdict(bad)
+        assert ok == (order == cert["claim"]["ordering"]), (frame, order, message)
