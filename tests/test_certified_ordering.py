@@ -42,7 +42,12 @@ D1_POLAR = "".join(f"polar {r} {t}\n" for r, t in
                    [(2, "0"), (2, "1/3"), (2, "2/3"), (1, "1/10"), (1, "-1/10")])
 
 
-@pytest.mark.parametrize("text", [C1, C1_POLAR, "0 0\nsqrt(2) 0\n0 sqrt(3)\n1 1\n"])
+# two polar rays (certify crashed on them: a turn difference taken "% 1" on an fmpq)
+TWO_RAYS_POLAR = "polar 1 0\npolar 2 0\npolar 3 1/3\n"
+
+
+@pytest.mark.parametrize("text", [C1, C1_POLAR, TWO_RAYS_POLAR,
+                                  "0 0\nsqrt(2) 0\n0 sqrt(3)\n1 1\n"])
 def test_orderable_certificate_proves_the_ordering(tmp_path, text):
     cert = certify_text(tmp_path, text)
     order = cert["claim"]["ordering"]
@@ -149,10 +154,13 @@ def _every_reading(cert: dict) -> list:
     """(orientation, ordering) for every start in both frames, read off the certified one:
     in its frame the rays R_0 .. R_(m-1) follow the ordering; the other frame reads them
     backwards."""
+    from exactsym.checker_groups import read_cartesian
     from exactsym.checker_ordering import _plane, _rays
     config, claim = cert["configuration"], cert["claim"]
     field = checker.number_field(config["field"]) if config.get("field") else None
-    plane = _plane(config["coordinates"], config["points"], field, cert["witness"])
+    kind, points = config["coordinates"], config["points"]
+    read = read_cartesian(points, field) if kind == "cartesian" else None
+    plane = _plane(kind, points, field, cert["witness"], read)
     centre = [i for i, d in enumerate(plane.dirs) if d is None]
     frame = cert["witness"]["canonical"]["orientation"]
     if frame == "cw":
