@@ -80,13 +80,19 @@ def distinct(keys: list) -> dict:
     return index
 
 
-def cartesian(points: list, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
-    n = len(points)
+def read_cartesian(points: list, field: Field | None) -> tuple[list, int, object]:
+    """(pts, scale, num): the points times scale > 0 (rationals: ints after scaling by a common
+    denominator, or Fractions; field elements: scale 1), and the reader of one number.  The
+    group and the ordering checks share them."""
     if field is None:
         flat, scale = scaled([rat(v) for x, y in points for v in (x, y)])
-        pts, num = list(zip(flat[0::2], flat[1::2])), frac
-    else:
-        pts, scale, num = [(field.num(x), field.num(y)) for x, y in points], 1, field.num
+        return list(zip(flat[0::2], flat[1::2])), scale, frac
+    return [(field.num(x), field.num(y)) for x, y in points], 1, field.num
+
+
+def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
+    pts, scale, num = read
+    n = len(pts)
     sx, sy = sum(x for x, _ in pts), sum(y for _, y in pts)
     w = [(n * x - sx, n * y - sy) for x, y in pts]     # n * scale * (p - centroid): exact
     distinct(w)
@@ -209,8 +215,9 @@ def verify_certificate(cert) -> tuple[bool, str]:
         need(isinstance(points, list) and points and all(
             isinstance(p, list) and len(p) == 2 for p in points), "points must be pairs")
         need(kind in ("cartesian", "polar"), f"unknown coordinates {kind!r}")
-        name, orderable, mirror = (cartesian if kind == "cartesian" else polar)(points, field,
-                                                                               witness)
+        read = read_cartesian(points, field) if kind == "cartesian" else None
+        name, orderable, mirror = cartesian(read, field, witness) if read else polar(
+            points, field, witness)
         need(claim["group"] == name, f"the claim says group {claim['group']!r} but the "
              f"witness proves {name}")
         need(claim["orderable"] is orderable, f"the claim says orderable "
@@ -218,7 +225,7 @@ def verify_certificate(cert) -> tuple[bool, str]:
         proved = ""
         if "ordering" in claim or "leader" in claim:    # optional: older certificates lack them
             proved = ", " + check_ordering(kind, points, field, witness, claim, name,
-                                           orderable, mirror)
+                                           orderable, mirror, read)
         return True, f"group {name}, orderable {str(orderable).lower()}{proved}"
     except Invalid as err:
         return False, str(err)

@@ -236,9 +236,10 @@ def _indices(order, n: int, what: str) -> list:
     return order
 
 
-def _plane(kind: str, points: list, field, witness: dict) -> _Plane:
+def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
     """The points about the SEC centre c (polar: the origin, verified by the group check;
-    Cartesian: c from witness.sec, verified here)."""
+    Cartesian: c from witness.sec, verified here; ``read``: the points as the group check read
+    them, (xy, scale, num): exact numbers times scale > 0, and the reader of one number)."""
     if kind == "polar":
         turns, T = scaled([rat(t) for _, t in points])
         r2 = scaled([rat(r) for r, _ in points])[0] if field is None else [
@@ -246,12 +247,13 @@ def _plane(kind: str, points: list, field, witness: dict) -> _Plane:
         return _Plane(True, r2, [None if r == 0 else t % T for r, t in zip(r2, turns)], T,
                       field is None)
     sec = witness["sec"]
-    if field is None:
-        flat, _ = scaled([rat(v) for p in points + [sec["centre"]] for v in p])
-        xy = list(zip(flat[0::2], flat[1::2]))
-    else:
-        xy = [(field.num(x), field.num(y)) for x, y in points + [sec["centre"]]]
-    (cx, cy), xy = xy[-1], xy[:-1]
+    xy, scale, num = read                       # the group check's points, times scale
+    cx, cy = (num(v) * scale for v in sec["centre"])
+    if field is None:                           # all times k more: c has integer coordinates
+        k = lcm(cx.denominator, cy.denominator)
+        if k > 1:
+            xy = [(k * x, k * y) for x, y in xy]
+        cx, cy = int(cx * k), int(cy * k)       # exact: k clears both denominators
     w = [(x - cx, y - cy) for x, y in xy]
     r2 = [x * x + y * y for x, y in w]
     # c is the SEC centre: every point within R of c, and c in the convex hull of support
@@ -275,7 +277,7 @@ def _plane(kind: str, points: list, field, witness: dict) -> _Plane:
 
 
 def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
-          orderable: bool, mirror: list | None) -> str:
+          orderable: bool, mirror: list | None, read=None) -> str:
     """Check ``claim.ordering`` and ``claim.leader`` (the group and orderability are proved);
     returns a phrase for the summary."""
     n = len(points)
@@ -287,7 +289,7 @@ def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
         return "ordering and leader"
     need((ordering is not None) == orderable, "claim.ordering must be given exactly when the "
          "configuration is orderable")
-    plane = _plane(kind, points, field, witness)
+    plane = _plane(kind, points, field, witness, read)
     centre = [i for i, d in enumerate(plane.dirs) if d is None]
     if not orderable and (centre or name != "D1"):
         expected = centre[0] if centre else None
