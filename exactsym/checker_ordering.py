@@ -100,17 +100,18 @@ def _rays(plane: _Plane, order: list) -> list:
 
 
 def _rays_native(plane: _Plane, order: list) -> list:
-    """_rays with plane.angle and plane.cmp_angle written out for Python numbers: the angle
-    from the first direction u to v is (d, c) = (u . v, u x v), in the upper half (h = 0)
-    when c > 0 or (c = 0 and d > 0); in one half, a is after b iff b x a > 0."""
+    """_rays with plane.angle and plane.cmp_angle written out for Python numbers: the
+    direction v is in the upper half (h = 0) of the first direction u when u x v > 0, or
+    u x v = 0 and u . v > 0; in one half (an arc shorter than pi) v is after the direction p
+    before it iff p x v > 0, and p x v = 0 iff v is p's direction."""
     dirs, r2 = plane.dirs, plane.r2
-    ux, uy = dirs[order[0]]
-    rays, ld, lc, lh = [[order[0]]], ux * ux + uy * uy, 0, 0
+    ux, uy = px, py = dirs[order[0]]
+    rays, lh = [[order[0]]], 0
     for i in order[1:]:
         vx, vy = dirs[i]
-        d, c = ux * vx + uy * vy, ux * vy - uy * vx
-        h = 0 if c > 0 or (c == 0 and d > 0) else 1
-        x = ld * c - lc * d if h == lh else h - lh
+        c = ux * vy - uy * vx
+        h = 0 if c > 0 or (c == 0 and ux * vx + uy * vy > 0) else 1
+        x = px * vy - py * vx if h == lh else h - lh
         if x == 0:
             need(r2[i] > r2[rays[-1][-1]], f"ordering: point {i} is not farther from the "
                  "centre than the point before it on its ray")
@@ -118,7 +119,7 @@ def _rays_native(plane: _Plane, order: list) -> list:
         else:
             need(x > 0, f"ordering: point {i} is not in angular order")
             rays.append([i])
-        ld, lc, lh = d, c, h
+        px, py, lh = vx, vy, h
     return rays
 
 
@@ -184,11 +185,15 @@ def _least_native(plane: _Plane, rays: list) -> None:
     other position z = 0 (its symbol differs from X's first), which leaves the Z-box as it is.
     A visited start whose first gap differs is shown larger by one angle comparison."""
     m, r2 = len(rays), plane.r2
-    radii = [tuple(r2[i] for i in ray) for ray in rays]
+    if sum(map(len, rays)) == m:                # one point a ray: its radius for its tuple
+        radii = [r2[ray[0]] for ray in rays]
+    else:
+        radii = [tuple(map(r2.__getitem__, ray)) for ray in rays]
     r0 = radii[0]
     need(min(radii) == r0, "ordering: a reading is less than the claimed one at symbol 0: "
          "the claimed order is not the canonical one")
-    starts, gaps = [j for j, r in enumerate(radii) if r == r0], {}
+    starts = [j for j, r in enumerate(radii) if r == r0] if radii.count(r0) > 1 else [0]
+    gaps = {}
 
     def gap(j):         # the angle from R_j to R_(j+1), canonical: equal angles compare ==
         j %= m
@@ -263,7 +268,8 @@ def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
     need(1 <= len(support) <= 3, "witness.sec.support: one to three points")
     big = r2[support[0]]
     need(all(r2[i] == big for i in support), "sec: the support points are not on one circle")
-    need(all(_cmp(v, big) <= 0 for v in r2), "sec: a point lies outside the circle")
+    need(max(r2) <= big if field is None else all(_cmp(v, big) <= 0 for v in r2),
+         "sec: a point lies outside the circle")
     if len(support) == 2:
         (ax, ay), (bx, by) = (w[i] for i in support)
         need(ax + bx == 0 and ay + by == 0, "sec: the centre is not the midpoint of the support")
@@ -273,7 +279,8 @@ def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
         need(not {-1, 1} <= turns, "sec: the centre is outside the support triangle")
     else:
         need(big == 0, "sec: one support point must be the centre")
-    return _Plane(False, r2, [None if v == 0 else d for v, d in zip(r2, w)], 1, field is None)
+    dirs = [None if v == 0 else d for v, d in zip(r2, w)] if 0 in r2 else w
+    return _Plane(False, r2, dirs, 1, field is None)
 
 
 def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
