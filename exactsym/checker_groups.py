@@ -95,7 +95,9 @@ def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, boo
     n = len(pts)
     sx, sy = sum(x for x, _ in pts), sum(y for _, y in pts)
     w = [(n * x - sx, n * y - sy) for x, y in pts]     # n * scale * (p - centroid): exact
-    distinct(w)
+    points_w = set(w)
+    if len(points_w) < n:
+        distinct(w)                             # names two points that coincide
     if n == 1:
         return "O2", True, None
 
@@ -129,14 +131,19 @@ def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, boo
         # The isometry about c with u = w[ref] -> v = w[b] (|u|^2 = |v|^2 = s) is the rotation
         # [[dot, -cross], [cross, dot]] / s or the reflection [[e, f], [f, -e]] / s; s times the
         # image of w[i] is looked up in s * P, so nothing is divided.
-        if not scaled_w:
-            scaled_w.update((s * x, s * y) for x, y in w)
         (vx, vy), (x, y) = w[b], w[i]
         if kind == "rotation":
             dot, cross = ux * vx + uy * vy, ux * vy - uy * vx
-            return (dot * x - cross * y, cross * x + dot * y) in scaled_w
-        e, f = ux * vx - uy * vy, ux * vy + uy * vx
-        return (e * x + f * y, f * x - e * y) in scaled_w
+            image = dot * x - cross * y, cross * x + dot * y
+        else:
+            e, f = ux * vx - uy * vy, ux * vy + uy * vx
+            image = e * x + f * y, f * x - e * y
+        if type(s) is int:                      # integer coordinates: s * P holds the image
+            # iff s divides it and the quotient is a point
+            return all(v % s == 0 for v in image) and (image[0] // s, image[1] // s) in points_w
+        if not scaled_w:
+            scaled_w.update((s * x, s * y) for x, y in w)
+        return image in scaled_w
 
     return group(n, ref, level, rot, mir, witness, image_in)
 
