@@ -29,10 +29,12 @@ from math import lcm
 
 try:
     from .checker_ordering import check as check_ordering
-    from .checker_numbers import Field, Invalid, frac, need, number_field, rat, scaled, sgn
+    from .checker_numbers import (Field, Invalid, frac, need, number_field, rat, rats,
+                                  scaled, sgn)
 except ImportError:     # run as a lone script (python exactsym/checker.py): a sibling file
     from checker_ordering import check as check_ordering
-    from checker_numbers import Field, Invalid, frac, need, number_field, rat, scaled, sgn
+    from checker_numbers import (Field, Invalid, frac, need, number_field, rat, rats,
+                                 scaled, sgn)
 
 
 def permutation(spec: dict, n: int, name: str) -> list:
@@ -86,7 +88,7 @@ def read_cartesian(points: list, field: Field | None) -> tuple[list, int, object
     denominator, or Fractions; field elements: scale 1), and the reader of one number.  The
     group and the ordering checks share them."""
     if field is None:
-        flat, scale = scaled([rat(v) for x, y in points for v in (x, y)])
+        flat, scale = scaled(rats([v for p in points for v in p]))
         return list(zip(flat[0::2], flat[1::2])), scale, frac
     return [(field.num(x), field.num(y)) for x, y in points], 1, field.num
 
