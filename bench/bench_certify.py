@@ -10,7 +10,9 @@ too.  Also shown: ``certify`` (which also runs the checker once on what it write
 part of ``verify`` that proves the canonical ordering and the leader (issue 9, point 6): the
 verify time minus that of the same certificate without ``claim.ordering`` and ``claim.leader``.
 The third input, 100,000 random rational points (C1, orderable), is where the whole ordering
-is proved (a Z-algorithm over 100,000 rays); on the symmetric sets only the leader is.
+is proved (the angular walk over 100,000 points and leastness over 100,000 rays); on the
+symmetric sets only the leader is.  Timings on a shared machine vary by 2x between runs: the
+ratio, measured in one process, is the figure to compare.
 """
 
 from __future__ import annotations

@@ -389,7 +389,8 @@ def _canonical(config, group, polar: bool) -> dict | None:
     # smaller one (below half a turn)
     a, b = rays[first][0], rays[1 - first][0]
     if polar:
-        below = (config.polar[b][1] - config.polar[a][1]) % 1 <= fmpq(1, 2)
+        turn = config.polar[b][1] - config.polar[a][1]     # an fmpq: no %, its floor
+        below = turn - turn.floor() <= fmpq(1, 2)
     else:
         (cx, cy), (ax, ay), (bx, by) = group.centre, config.points[a], config.points[b]
         below = (ax - cx) * (by - cy) - (ay - cy) * (bx - cx) >= 0

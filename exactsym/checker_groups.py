@@ -22,16 +22,19 @@ elements of one real number field Q(theta) written as coefficient lists in theta
 
 from __future__ import annotations
 
+import gc
 import hashlib
 import json
 from math import lcm
 
 try:
     from .checker_ordering import check as check_ordering
-    from .checker_numbers import Field, Invalid, frac, need, number_field, rat, scaled, sgn
+    from .checker_numbers import (Field, Invalid, frac, need, number_field, rat, rats,
+                                  scaled, sgn)
 except ImportError:     # run as a lone script (python exactsym/checker.py): a sibling file
     from checker_ordering import check as check_ordering
-    from checker_numbers import Field, Invalid, frac, need, number_field, rat, scaled, sgn
+    from checker_numbers import (Field, Invalid, frac, need, number_field, rat, rats,
+                                 scaled, sgn)
 
 
 def permutation(spec: dict, n: int, name: str) -> list:
@@ -80,16 +83,24 @@ def distinct(keys: list) -> dict:
     return index
 
 
-def cartesian(points: list, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
-    n = len(points)
+def read_cartesian(points: list, field: Field | None) -> tuple[list, int, object]:
+    """(pts, scale, num): the points times scale > 0 (rationals: ints after scaling by a common
+    denominator, or Fractions; field elements: scale 1), and the reader of one number.  The
+    group and the ordering checks share them."""
     if field is None:
-        flat, scale = scaled([rat(v) for x, y in points for v in (x, y)])
-        pts, num = list(zip(flat[0::2], flat[1::2])), frac
-    else:
-        pts, scale, num = [(field.num(x), field.num(y)) for x, y in points], 1, field.num
+        flat, scale = scaled(rats([v for p in points for v in p]))
+        return list(zip(flat[0::2], flat[1::2])), scale, frac
+    return [(field.num(x), field.num(y)) for x, y in points], 1, field.num
+
+
+def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
+    pts, scale, num = read
+    n = len(pts)
     sx, sy = sum(x for x, _ in pts), sum(y for _, y in pts)
     w = [(n * x - sx, n * y - sy) for x, y in pts]     # n * scale * (p - centroid): exact
-    distinct(w)
+    points_w = set(w)
+    if len(points_w) < n:
+        distinct(w)                             # names two points that coincide
     if n == 1:
         return "O2", True, None
 
@@ -123,14 +134,19 @@ def cartesian(points: list, field: Field | None, witness: dict) -> tuple[str, bo
         # The isometry about c with u = w[ref] -> v = w[b] (|u|^2 = |v|^2 = s) is the rotation
         # [[dot, -cross], [cross, dot]] / s or the reflection [[e, f], [f, -e]] / s; s times the
         # image of w[i] is looked up in s * P, so nothing is divided.
-        if not scaled_w:
-            scaled_w.update((s * x, s * y) for x, y in w)
         (vx, vy), (x, y) = w[b], w[i]
         if kind == "rotation":
             dot, cross = ux * vx + uy * vy, ux * vy - uy * vx
-            return (dot * x - cross * y, cross * x + dot * y) in scaled_w
-        e, f = ux * vx - uy * vy, ux * vy + uy * vx
-        return (e * x + f * y, f * x - e * y) in scaled_w
+            image = dot * x - cross * y, cross * x + dot * y
+        else:
+            e, f = ux * vx - uy * vy, ux * vy + uy * vx
+            image = e * x + f * y, f * x - e * y
+        if type(s) is int:                      # integer coordinates: s * P holds the image
+            # iff s divides it and the quotient is a point
+            return all(v % s == 0 for v in image) and (image[0] // s, image[1] // s) in points_w
+        if not scaled_w:
+            scaled_w.update((s * x, s * y) for x, y in w)
+        return image in scaled_w
 
     return group(n, ref, level, rot, mir, witness, image_in)
 
@@ -197,6 +213,16 @@ def digest(configuration) -> str:
 
 def verify_certificate(cert) -> tuple[bool, str]:
     """``(True, summary)`` when the certificate proves its claim, else ``(False, reason)``."""
+    collecting = gc.isenabled()
+    gc.disable()        # ~10^5 new tuples and lists, no cycles: the collector would only rescan
+    try:
+        return _verify(cert)
+    finally:
+        if collecting:
+            gc.enable()
+
+
+def _verify(cert) -> tuple[bool, str]:
     try:
         need(isinstance(cert, dict) and cert.get("format") == "exactsym-certificate"
              and cert.get("version") == 1, "not an exactsym certificate of version 1")
@@ -209,8 +235,9 @@ def verify_certificate(cert) -> tuple[bool, str]:
         need(isinstance(points, list) and points and all(
             isinstance(p, list) and len(p) == 2 for p in points), "points must be pairs")
         need(kind in ("cartesian", "polar"), f"unknown coordinates {kind!r}")
-        name, orderable, mirror = (cartesian if kind == "cartesian" else polar)(points, field,
-                                                                               witness)
+        read = read_cartesian(points, field) if kind == "cartesian" else None
+        name, orderable, mirror = cartesian(read, field, witness) if read else polar(
+            points, field, witness)
         need(claim["group"] == name, f"the claim says group {claim['group']!r} but the "
              f"witness proves {name}")
         need(claim["orderable"] is orderable, f"the claim says orderable "
@@ -218,7 +245,7 @@ def verify_certificate(cert) -> tuple[bool, str]:
         proved = ""
         if "ordering" in claim or "leader" in claim:    # optional: older certificates lack them
             proved = ", " + check_ordering(kind, points, field, witness, claim, name,
-                                           orderable, mirror)
+                                           orderable, mirror, read)
         return True, f"group {name}, orderable {str(orderable).lower()}{proved}"
     except Invalid as err:
         return False, str(err)

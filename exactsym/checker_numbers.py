@@ -42,6 +42,18 @@ def rat(text) -> tuple[int, int]:
     return p, q
 
 
+def rats(texts: list) -> list[tuple[int, int]]:
+    """``[rat(t) for t in texts]``, the common case (short texts "p/q") in one pass."""
+    try:
+        if max(map(len, texts), default=0) < 200:
+            pairs = list(map(_short_rat, texts))        # TypeError: not a string
+            if None not in pairs and 0 not in {q for _, q in pairs}:
+                return pairs
+    except TypeError:
+        pass
+    return [rat(t) for t in texts]
+
+
 @lru_cache(maxsize=1 << 18)
 def _short_rat(text: str) -> tuple[int, int] | None:
     """(p, q) for "p/q" or "p" in ASCII digits, else None (the group and the ordering
@@ -74,12 +86,12 @@ def scaled(pairs: list) -> tuple[list, int]:
     """Rationals as ints times a common denominator D (scaling all numbers of one kind by one
     D > 0 keeps equality, order and symmetries); Fractions and D = 1 if D would be huge."""
     d = 1
-    for _, q in pairs:
+    for q in {q for _, q in pairs}:             # each denominator once
         if d % q:
             d = lcm(d, q)
             if d.bit_length() > 8192:
                 return [Fraction(p, q) for p, q in pairs], 1
-    return [p * (d // q) for p, q in pairs], d
+    return [p * (d // q) for p, q in pairs] if d > 1 else [p for p, _ in pairs], d
 
 
 # ------------------------------------------------------------------ the number field

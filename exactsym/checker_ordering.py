@@ -100,17 +100,18 @@ def _rays(plane: _Plane, order: list) -> list:
 
 
 def _rays_native(plane: _Plane, order: list) -> list:
-    """_rays with plane.angle and plane.cmp_angle written out for Python numbers: the angle
-    from the first direction u to v is (d, c) = (u . v, u x v), in the upper half (h = 0)
-    when c > 0 or (c = 0 and d > 0); in one half, a is after b iff b x a > 0."""
+    """_rays with plane.angle and plane.cmp_angle written out for Python numbers: the
+    direction v is in the upper half (h = 0) of the first direction u when u x v > 0, or
+    u x v = 0 and u . v > 0; in one half (an arc shorter than pi) v is after the direction p
+    before it iff p x v > 0, and p x v = 0 iff v is p's direction."""
     dirs, r2 = plane.dirs, plane.r2
-    ux, uy = dirs[order[0]]
-    rays, ld, lc, lh = [[order[0]]], ux * ux + uy * uy, 0, 0
+    ux, uy = px, py = dirs[order[0]]
+    rays, lh = [[order[0]]], 0
     for i in order[1:]:
         vx, vy = dirs[i]
-        d, c = ux * vx + uy * vy, ux * vy - uy * vx
-        h = 0 if c > 0 or (c == 0 and d > 0) else 1
-        x = ld * c - lc * d if h == lh else h - lh
+        c = ux * vy - uy * vx
+        h = 0 if c > 0 or (c == 0 and ux * vx + uy * vy > 0) else 1
+        x = px * vy - py * vx if h == lh else h - lh
         if x == 0:
             need(r2[i] > r2[rays[-1][-1]], f"ordering: point {i} is not farther from the "
                  "centre than the point before it on its ray")
@@ -118,7 +119,7 @@ def _rays_native(plane: _Plane, order: list) -> list:
         else:
             need(x > 0, f"ordering: point {i} is not in angular order")
             rays.append([i])
-        ld, lc, lh = d, c, h
+        px, py, lh = vx, vy, h
     return rays
 
 
@@ -162,28 +163,67 @@ def _least(plane: _Plane, x: list, others: list) -> None:
     for other in others:
         s = x + [None] + other + other[:-1]
         z, left, right = [0] * len(s), 0, 0
-        positions = range(1, 2 * m + 1)        # s[m + 1 + j:]: the rotation by j
-        if plane.native:
-            # z[i] > 0 only where s[i] == x[0]; elsewhere z[i] = 0 leaves the Z-box as it is,
-            # so only those positions are visited, and a rotation starting elsewhere differs
-            # from x at symbol 0: one comparison (radii first) shows it larger
-            x0, r0 = x[0], x[0][0]
-            need(not [i for i in range(m + 1, 2 * m + 1) if s[i] != x0 and (
-                s[i][0] < r0 or s[i][0] == r0 and _cmp_symbol(plane, s[i], x0) < 0)],
-                "ordering: a reading is less than the claimed one at symbol 0: the claimed "
-                "order is not the canonical one")
-            positions = [i for i in positions if s[i] == x0]
-        for i in positions:
+        for i in range(1, 2 * m + 1):           # s[m + 1 + j:]: the rotation by j
             zi = min(right - i, z[i - left]) if i < right else 0
-            while i + zi < len(s) and zi < m and s[i + zi] is not None and (
-                    s[zi] == s[i + zi] if plane.native else
-                    _cmp_symbol(plane, s[zi], s[i + zi]) == 0):
+            while i + zi < len(s) and zi < m and s[i + zi] is not None and \
+                    _cmp_symbol(plane, s[zi], s[i + zi]) == 0:
                 zi += 1
             z[i] = zi
             if i + zi > right:
                 left, right = i, i + zi
             if i > m and zi < m:
                 need(_cmp_symbol(plane, s[i + zi], x[zi]) > 0, "ordering: the reading from "
+                     f"ray {i - m - 1} is less than the claimed one (they differ at symbol "
+                     f"{zi}): the claimed order is not the canonical one")
+
+
+def _least_native(plane: _Plane, rays: list) -> None:
+    """_least for Python numbers, the symbols made only where needed.  Both frames' readings
+    have the same radii (ccw from R_0: R_0, R_1, ...; cw: R_0, R_-1, ...), so a start whose
+    first radii differ from X's is larger at symbol 0 when X's first radii are the least (one
+    min over the rays).  The Z-algorithm then visits only starts with X's first radii: at any
+    other position z = 0 (its symbol differs from X's first), which leaves the Z-box as it is.
+    A visited start whose first gap differs is shown larger by one angle comparison."""
+    m, r2 = len(rays), plane.r2
+    if sum(map(len, rays)) == m:                # one point a ray: its radius for its tuple
+        radii = [r2[ray[0]] for ray in rays]
+    else:
+        radii = [tuple(map(r2.__getitem__, ray)) for ray in rays]
+    r0 = radii[0]
+    need(min(radii) == r0, "ordering: a reading is less than the claimed one at symbol 0: "
+         "the claimed order is not the canonical one")
+    starts = [j for j, r in enumerate(radii) if r == r0] if radii.count(r0) > 1 else [0]
+    gaps = {}
+
+    def gap(j):         # the angle from R_j to R_(j+1), canonical: equal angles compare ==
+        j %= m
+        if j not in gaps:
+            a = plane.angle(rays[j][0], rays[(j + 1) % m][0])
+            gaps[j] = a if plane.polar else _primitive(*a)
+        return gaps[j]
+
+    readings = ((lambda j: (radii[j % m], gap(j))), starts[1:]), \
+        ((lambda j: (radii[-j % m], gap(-j - 1))), sorted(-j % m for j in starts))
+    x = readings[0][0]
+    x0 = x(0)
+    for other, js in readings:                  # s = X + sentinel + other doubled
+        def sym(i):
+            return x(i) if i < m else None if i == m else other(i - m - 1)
+        z, left, right = {}, 0, 0
+        for i in [i for i in starts[1:]] + [m + 1 + j for j in js]:
+            if sym(i) != x0:                    # same radii, another first gap
+                need(i < m or plane.cmp_angle(sym(i)[1], x0[1]) > 0, "ordering: the "
+                     f"reading from ray {i - m - 1} is less than the claimed one at symbol 0:"
+                     " the claimed order is not the canonical one")
+                continue
+            zi = min(right - i, z.get(i - left, 0)) if i < right else 0
+            while zi < m and sym(i + zi) == x(zi):
+                zi += 1
+            z[i] = zi
+            if i + zi > right:
+                left, right = i, i + zi
+            if i > m and zi < m:
+                need(_cmp_symbol(plane, sym(i + zi), x(zi)) > 0, "ordering: the reading from "
                      f"ray {i - m - 1} is less than the claimed one (they differ at symbol "
                      f"{zi}): the claimed order is not the canonical one")
 
@@ -201,9 +241,10 @@ def _indices(order, n: int, what: str) -> list:
     return order
 
 
-def _plane(kind: str, points: list, field, witness: dict) -> _Plane:
+def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
     """The points about the SEC centre c (polar: the origin, verified by the group check;
-    Cartesian: c from witness.sec, verified here)."""
+    Cartesian: c from witness.sec, verified here; ``read``: the points as the group check read
+    them, (xy, scale, num): exact numbers times scale > 0, and the reader of one number)."""
     if kind == "polar":
         turns, T = scaled([rat(t) for _, t in points])
         r2 = scaled([rat(r) for r, _ in points])[0] if field is None else [
@@ -211,12 +252,13 @@ def _plane(kind: str, points: list, field, witness: dict) -> _Plane:
         return _Plane(True, r2, [None if r == 0 else t % T for r, t in zip(r2, turns)], T,
                       field is None)
     sec = witness["sec"]
-    if field is None:
-        flat, _ = scaled([rat(v) for p in points + [sec["centre"]] for v in p])
-        xy = list(zip(flat[0::2], flat[1::2]))
-    else:
-        xy = [(field.num(x), field.num(y)) for x, y in points + [sec["centre"]]]
-    (cx, cy), xy = xy[-1], xy[:-1]
+    xy, scale, num = read                       # the group check's points, times scale
+    cx, cy = (num(v) * scale for v in sec["centre"])
+    if field is None:                           # all times k more: c has integer coordinates
+        k = lcm(cx.denominator, cy.denominator)
+        if k > 1:
+            xy = [(k * x, k * y) for x, y in xy]
+        cx, cy = int(cx * k), int(cy * k)       # exact: k clears both denominators
     w = [(x - cx, y - cy) for x, y in xy]
     r2 = [x * x + y * y for x, y in w]
     # c is the SEC centre: every point within R of c, and c in the convex hull of support
@@ -226,7 +268,8 @@ def _plane(kind: str, points: list, field, witness: dict) -> _Plane:
     need(1 <= len(support) <= 3, "witness.sec.support: one to three points")
     big = r2[support[0]]
     need(all(r2[i] == big for i in support), "sec: the support points are not on one circle")
-    need(all(_cmp(v, big) <= 0 for v in r2), "sec: a point lies outside the circle")
+    need(max(r2) <= big if field is None else all(_cmp(v, big) <= 0 for v in r2),
+         "sec: a point lies outside the circle")
     if len(support) == 2:
         (ax, ay), (bx, by) = (w[i] for i in support)
         need(ax + bx == 0 and ay + by == 0, "sec: the centre is not the midpoint of the support")
@@ -236,11 +279,12 @@ def _plane(kind: str, points: list, field, witness: dict) -> _Plane:
         need(not {-1, 1} <= turns, "sec: the centre is outside the support triangle")
     else:
         need(big == 0, "sec: one support point must be the centre")
-    return _Plane(False, r2, [None if v == 0 else d for v, d in zip(r2, w)], 1, field is None)
+    dirs = [None if v == 0 else d for v, d in zip(r2, w)] if 0 in r2 else w
+    return _Plane(False, r2, dirs, 1, field is None)
 
 
 def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
-          orderable: bool, mirror: list | None) -> str:
+          orderable: bool, mirror: list | None, read=None) -> str:
     """Check ``claim.ordering`` and ``claim.leader`` (the group and orderability are proved);
     returns a phrase for the summary."""
     n = len(points)
@@ -252,7 +296,7 @@ def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
         return "ordering and leader"
     need((ordering is not None) == orderable, "claim.ordering must be given exactly when the "
          "configuration is orderable")
-    plane = _plane(kind, points, field, witness)
+    plane = _plane(kind, points, field, witness, read)
     centre = [i for i, d in enumerate(plane.dirs) if d is None]
     if not orderable and (centre or name != "D1"):
         expected = centre[0] if centre else None
@@ -273,11 +317,15 @@ def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
     if _frame(spec):
         plane = plane.mirrored()
     rays = _rays(plane, order)
-    ccw, cw = _symbols(plane, rays)
-    if orderable:
+    if orderable and plane.native:
+        _least_native(plane, rays)
+    elif orderable:
+        ccw, cw = _symbols(plane, rays)
         _least(plane, ccw, [ccw, cw])
+    if orderable:
         need(leader == ordering[0], "claim.leader is not the first of the ordering")
         return "ordering and leader"
+    ccw = _symbols(plane, rays)[0]
     # D1, no point at c: the rays the mirror fixes (their points are fixed), the least reading
     fixed = [j for j, ray in enumerate(rays) if mirror[ray[0]] == ray[0]]
     if not fixed:

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import copy
 import json
+import tempfile
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings, strategies as st
@@ -40,7 +42,12 @@ D1_POLAR = "".join(f"polar {r} {t}\n" for r, t in
                    [(2, "0"), (2, "1/3"), (2, "2/3"), (1, "1/10"), (1, "-1/10")])
 
 
-@pytest.mark.parametrize("text", [C1, C1_POLAR, "0 0\nsqrt(2) 0\n0 sqrt(3)\n1 1\n"])
+# two polar rays (certify crashed on them: a turn difference taken "% 1" on an fmpq)
+TWO_RAYS_POLAR = "polar 1 0\npolar 2 0\npolar 3 1/3\n"
+
+
+@pytest.mark.parametrize("text", [C1, C1_POLAR, TWO_RAYS_POLAR,
+                                  "0 0\nsqrt(2) 0\n0 sqrt(3)\n1 1\n"])
 def test_orderable_certificate_proves_the_ordering(tmp_path, text):
     cert = certify_text(tmp_path, text)
     order = cert["claim"]["ordering"]
@@ -141,3 +148,55 @@ def test_certified_ordering_follows_similarities(points, matrix):
     one, two = (json.loads(json.dumps(make_certificate(k))) for k in (config, moved))
     assert verdict(one)[0] and verdict(two)[0], (verdict(one), verdict(two))
     assert one["claim"] == two["claim"]
+
+
+def _every_reading(cert: dict) -> list:
+    """(orientation, ordering) for every start in both frames, read off the certified one:
+    in its frame the rays R_0 .. R_(m-1) follow the ordering; the other frame reads them
+    backwards."""
+    from exactsym.checker_groups import read_cartesian
+    from exactsym.checker_ordering import _plane, _rays
+    config, claim = cert["configuration"], cert["claim"]
+    field = checker.number_field(config["field"]) if config.get("field") else None
+    kind, points = config["coordinates"], config["points"]
+    read = read_cartesian(points, field) if kind == "cartesian" else None
+    plane = _plane(kind, points, field, cert["witness"], read)
+    centre = [i for i, d in enumerate(plane.dirs) if d is None]
+    frame = cert["witness"]["canonical"]["orientation"]
+    if frame == "cw":
+        plane = plane.mirrored()
+    rays = _rays(plane, claim["ordering"][len(centre):])
+    m, flip = len(rays), {"ccw": "cw", "cw": "ccw"}[frame]
+    out = []
+    for k in range(m):
+        out.append((frame, centre + [i for r in rays[k:] + rays[:k] for i in r]))
+        out.append((flip, centre + [i for j in range(m) for i in rays[(k - j) % m]]))
+    return out
+
+
+_POLAR = st.lists(st.tuples(st.sampled_from([1, 2]), st.integers(0, 11)), min_size=3,
+                  max_size=10, unique=True).map(
+    lambda ps: "".join(f"polar {r} {t}/12\n" for r, t in ps))
+_GRID = st.lists(st.tuples(st.integers(-2, 2), st.integers(-2, 2)), min_size=3, max_size=10,
+                 unique=True).map(lambda ps: "".join(f"{x} {y}\n" for x, y in ps))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.one_of(_POLAR, _GRID))
+def test_only_the_least_reading_passes(text):
+    """Points at twelfths of a turn on two circles, or on a small grid (many equal radii and
+    gaps: the leastness check must follow the symbols past the first): of the 2m readings,
+    the checker accepts exactly the certified one."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "p.txt"
+        path.write_text(text)
+        cert = json.loads(json.dumps(make_certificate(load(path))))
+    if not cert["claim"]["orderable"]:
+        return
+    assert verdict(copy.deepcopy(cert))[0]
+    for frame, order in _every_reading(cert):
+        bad = copy.deepcopy(cert)
+        bad["witness"]["canonical"]["orientation"] = frame
+        bad["claim"]["ordering"], bad["claim"]["leader"] = order, order[0]
+        ok, message = verdict(bad)
+        assert ok == (order == cert["claim"]["ordering"]), (frame, order, message)
