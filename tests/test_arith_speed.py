@@ -68,3 +68,43 @@ def test_dense_product_of_full_elements():
     b = MQ({m: fmpq(m % 11 - 5 or 2, m % 3 + 2) for m in RADICANDS})
     assert (a * b).terms == reference_product(a.terms, b.terms)
     assert a * a.inverse() == 1
+
+
+# -- tower products: scaled to integer coefficients, then divided back ----------------------
+from exactsym.exact import evaluate_all  # noqa: E402
+from exactsym.exact.tower import TowerElement  # noqa: E402
+from exactsym.expr import parse_expression  # noqa: E402
+
+TOWER_GENERATORS = ["sqrt(2+sqrt(3+sqrt(5)))", "sqrt(7-sqrt(2+sqrt(3)))", "sqrt(5-sqrt(2))"]
+
+
+def _tower_elements(data, values):
+    out = []
+    for _ in range(3):
+        x = MQ.rational(fmpq(data.draw(st.integers(-9, 9)), data.draw(st.integers(1, 9))))
+        for g in values:
+            x = x + fmpq(data.draw(st.integers(-9, 9)), data.draw(st.integers(1, 50))) * g
+        out.append(x)
+    if out[1] != 0:
+        out.append(out[0] / out[1])            # big common denominators, as inverses give
+    return out
+
+
+def _structure(v):
+    """A raw tower value with every MQ's terms as a list (so term order counts too)."""
+    if type(v) is tuple:
+        return (v[0], _structure(v[1]), _structure(v[2]))
+    return list(v.terms.items())
+
+
+@settings(max_examples=10, deadline=None)
+@given(st.data())
+def test_tower_product_equals_unscaled_recursion(data):
+    system, values = evaluate_all([parse_expression(t) for t in TOWER_GENERATORS])
+    tower = system.tower
+    xs = _tower_elements(data, values)
+    for x in xs:
+        for y in xs:
+            rx = x.v if isinstance(x, TowerElement) else x
+            ry = y.v if isinstance(y, TowerElement) else y
+            assert _structure(tower.mul(rx, ry)) == _structure(tower._mul(rx, ry))
