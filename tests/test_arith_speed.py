@@ -108,3 +108,50 @@ def test_tower_product_equals_unscaled_recursion(data):
             rx = x.v if isinstance(x, TowerElement) else x
             ry = y.v if isinstance(y, TowerElement) else y
             assert _structure(tower.mul(rx, ry)) == _structure(tower._mul(rx, ry))
+
+
+# -- large cyclotomic fields: Barrett remainders, Newton-lifted inverses ---------------------
+from flint import fmpq_poly, fmpz_poly  # noqa: E402
+
+from exactsym.exact.inverse import _inverse_multimodular, inverse_mod, remainder_function  # noqa: E402,E501
+
+PHI = fmpz_poly.cyclotomic(1001)          # degree 720: above the Barrett threshold
+
+
+def _poly(data, degree, bits):
+    coeffs = data.draw(st.lists(st.integers(-2**bits, 2**bits), min_size=1, max_size=degree + 1))
+    return fmpz_poly(coeffs)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.data())
+def test_barrett_remainder_equals_division(data):
+    rem = remainder_function(PHI)
+    n = PHI.degree()
+    x = _poly(data, 2 * n - 2, 200) * fmpz_poly([0] * data.draw(st.integers(0, n)) + [1])
+    if x.degree() > 2 * n - 2:
+        x = fmpz_poly(x.coeffs()[:2 * n - 1])
+    assert rem(x) == x % PHI
+
+
+@settings(max_examples=10, deadline=None)
+@given(st.data())
+def test_lifted_inverse_equals_multimodular(data):
+    """In Q(zeta_143) (degree 120), elements with a few small coefficients."""
+    step = data.draw(st.integers(1, 9))          # spread the terms over the degree
+    spread = fmpz_poly(_poly(data, 12, 8)).inflate(step)
+    a = fmpq_poly(spread) / data.draw(st.integers(1, 10**6))
+    minpoly = fmpq_poly(fmpz_poly.cyclotomic(143))
+    if (a % minpoly).is_zero():
+        return
+    u = inverse_mod(a, minpoly)
+    assert (a * u) % minpoly == 1
+    assert u == _inverse_multimodular(a, minpoly)
+
+
+def test_field_products_reduce_like_division():
+    from exactsym.exact.field import NumberField
+    field = NumberField(fmpq_poly(PHI), lambda prec: None, "Q(zeta_1001)")
+    x = fmpq_poly([fmpq(k % 17 - 8, k % 5 + 1) for k in range(720)])
+    y = fmpq_poly([fmpq(k % 13 - 6, k % 7 + 2) for k in range(700)])
+    assert field.reduce(x * y) == (x * y) % field.minpoly
