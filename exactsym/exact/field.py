@@ -266,11 +266,12 @@ class PolyElement(FieldElement):
             raise ZeroDivisionError("division by zero")
         if self.poly.degree() == 0:
             return PolyElement(self.field, fmpq_poly([1 / self.poly.coeffs()[0]]))
-        if self.field.degree <= 32 or \
-                self.field.degree * self.poly.numer().height_bits() <= _XGCD_BITS:
+        if self.field.degree <= 32 or (self.field.degree < _BARRETT_DEGREE and
+                                       self.field.degree * self.poly.numer().height_bits()
+                                       <= _XGCD_BITS):
             g, s, _ = self.poly.xgcd(self.field.minpoly)
             return PolyElement(self.field, s / g.coeffs()[0])
-        # large coefficients: fmpq_poly.xgcd explodes (minutes); see .inverse
+        # large degree or coefficients: fmpq_poly.xgcd explodes (minutes); see .inverse
         return PolyElement(self.field, inverse_mod(self.poly, self.field.minpoly))
 
     @_mixing
