@@ -19,15 +19,17 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Callable, Union
 
-from flint import acb_poly, arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz
+from flint import acb_poly, arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz, fmpz_poly
 
-from .inverse import inverse_mod
+from .inverse import inverse_mod, remainder_function
 
 Rational = fmpq
 Number = Union[fmpq, "FieldElement"]
 
 _START_PRECISION = 64
 _MAX_PRECISION = 1 << 22   # a sign that needs more bits than this means a bug upstream
+#: degree from which products are reduced by Barrett's method over Z
+_BARRETT_DEGREE = 512
 _XGCD_BITS = 20_000        # fmpq_poly.xgcd is faster below this degree x coefficient bits,
                            # and in degree <= 32 whatever the coefficients
 
@@ -70,6 +72,18 @@ class NumberField:
         self.name = name
         self.theta_text = theta_text
         self.conductor = conductor
+        self._remainder = None       # x -> x mod minpoly over Z (Barrett), built when needed
+
+    def reduce(self, poly: fmpq_poly) -> fmpq_poly:
+        """``poly`` modulo the minimal polynomial (deg poly <= 2 degree - 2).  For a large
+        monic integer minimal polynomial (cyclotomic fields) the numerator is reduced over Z
+        by Barrett's method (two fast products; FLINT's division is quadratic), then
+        divided by the denominator: the same canonical polynomial."""
+        if self.degree < _BARRETT_DEGREE or self.minpoly.denom() != 1:
+            return poly % self.minpoly
+        if self._remainder is None:
+            self._remainder = remainder_function(fmpz_poly(self.minpoly.numer()))
+        return fmpq_poly(self._remainder(fmpz_poly(poly.numer()))) / poly.denom()
 
     def enclosure(self, prec: int):
         ball = self._enclosures.get(prec)
@@ -243,7 +257,7 @@ class PolyElement(FieldElement):
             return NotImplemented
         if o.degree() <= 0 or self.poly.degree() <= 0:
             return PolyElement(self.field, self.poly * o)
-        return PolyElement(self.field, (self.poly * o) % self.field.minpoly)
+        return PolyElement(self.field, self.field.reduce(self.poly * o))
 
     __rmul__ = __mul__
 
@@ -252,11 +266,12 @@ class PolyElement(FieldElement):
             raise ZeroDivisionError("division by zero")
         if self.poly.degree() == 0:
             return PolyElement(self.field, fmpq_poly([1 / self.poly.coeffs()[0]]))
-        if self.field.degree <= 32 or \
-                self.field.degree * self.poly.numer().height_bits() <= _XGCD_BITS:
+        if self.field.degree <= 32 or (self.field.degree < _BARRETT_DEGREE and
+                                       self.field.degree * self.poly.numer().height_bits()
+                                       <= _XGCD_BITS):
             g, s, _ = self.poly.xgcd(self.field.minpoly)
             return PolyElement(self.field, s / g.coeffs()[0])
-        # large coefficients: fmpq_poly.xgcd explodes (minutes); see .inverse
+        # large degree or coefficients: fmpq_poly.xgcd explodes (minutes); see .inverse
         return PolyElement(self.field, inverse_mod(self.poly, self.field.minpoly))
 
     @_mixing

@@ -11,7 +11,7 @@ minimal polynomial.  That test decides: reconstruction only proposes.
 
 from __future__ import annotations
 
-from flint import fmpq_poly, fmpz, fmpz_poly, nmod_poly
+from flint import fmpq_poly, fmpz, fmpz_mod_poly_ctx, fmpz_poly, nmod_poly
 
 _PRIMES: list[int] = []
 _FIRST = (1 << 62) + 1
@@ -40,7 +40,99 @@ def _rational_reconstruction(a: int, m: int):
 
 
 def inverse_mod(poly: fmpq_poly, minpoly: fmpq_poly) -> fmpq_poly:
-    """``u`` of degree < deg(minpoly) with ``poly * u == 1`` modulo the irreducible ``minpoly``."""
+    """``u`` of degree < deg(minpoly) with ``poly * u == 1`` modulo the irreducible ``minpoly``.
+
+    The inverse modulo one prime p (``nmod_poly.xgcd``, the costly step at degree thousands)
+    is lifted by Newton's iteration u <- u (2 - a u) modulo p^2, p^4, ... (``fmpz_mod_poly``
+    products modulo the minimal polynomial, in C), which doubles the precision per step
+    with two products instead of one xgcd per further prime.  Rational reconstruction
+    proposes, the exact test decides."""
+    a = fmpz_poly(poly.numer())          # poly = a / den
+    den = fmpz(poly.denom())
+    m = fmpz_poly(minpoly.numer())
+    lead = int(m.coeffs()[-1])
+    if lead != 1:
+        return _inverse_multimodular(poly, minpoly)
+    i = 0
+    while True:
+        p = _prime(i)
+        i += 1
+        if lead % p == 0:
+            continue
+        g, s, _ = nmod_poly(a, p).xgcd(nmod_poly(m, p))
+        if g.degree() == 0:              # else p divides the resultant: skip it
+            break
+    s = s * pow(int(g.coeffs()[0]), -1, p)
+    u = fmpz_poly([int(c) for c in s.coeffs()])
+    rem = remainder_function(m)
+    modulus = p
+    lifts = 0
+    while True:
+        modulus *= modulus
+        ring = fmpz_mod_poly_ctx(modulus)
+        # products and remainders over Z (m monic), coefficients reduced mod p^(2^k)
+        t = _reduced(ring, rem(a * u))
+        u = _reduced(ring, rem(u * (2 - t)))
+        lifts += 1
+        if lifts < 2:                    # below 4 primes' worth of bits: too early to try
+            continue
+        values = [int(c) for c in u.coeffs()]
+        values += [0] * (m.degree() - len(values))
+        candidate = _reconstruct(values, modulus)
+        if candidate is not None:
+            numer, d = candidate
+            # poly * v = a * numer / (den * d) with v = numer * den / d: one iff
+            # a * numer == d (mod m), over Z since m is monic
+            if rem(a * fmpz_poly(numer)) == d:
+                return fmpq_poly(numer) / d * den
+
+
+_REMAINDERS: dict = {}
+
+
+def remainder_function(m: fmpz_poly):
+    """``x -> x mod m`` for a monic integer ``m`` and deg x <= 2 deg m - 2, by Barrett's
+    method: the quotient's reverse is rev(x) / rev(m) as a power series (rev(m) has
+    constant term 1, so its inverse series has integer coefficients, computed once per m by
+    Newton's iteration), two fast products instead of a schoolbook division."""
+    key = tuple(int(c) for c in m.coeffs())
+    found = _REMAINDERS.get(key)
+    if found is not None:
+        return found
+    n = m.degree()
+    rev_m = fmpz_poly(list(reversed(m.coeffs())))
+    inv, k = fmpz_poly([1]), 1               # 1 / rev(m) mod X^k
+    while k < n:
+        k = min(2 * k, n)
+        inv = inv.mul_low(2 - rev_m.mul_low(inv, k), k)
+
+    def remainder(x: fmpz_poly) -> fmpz_poly:
+        big = x.degree()
+        if big < n:
+            return x
+        if big > 2 * n - 2:
+            return x % m
+        count = big - n + 1                  # quotient coefficients
+        rev_x = fmpz_poly(list(reversed(x.coeffs())))
+        low = rev_x.mul_low(inv, count).coeffs()
+        q = fmpz_poly(list(reversed(low + [0] * (count - len(low)))))
+        return (x - q * m).truncate(n)
+
+    if len(_REMAINDERS) > 8:
+        _REMAINDERS.clear()
+    _REMAINDERS[key] = remainder
+    return remainder
+
+
+def _reduced(ring, x: fmpz_poly) -> fmpz_poly:
+    """``x`` with coefficients reduced into [0, modulus)."""
+    return fmpz_poly([int(c) for c in ring(x).coeffs()])
+
+
+def _inverse_multimodular(poly: fmpq_poly, minpoly: fmpq_poly) -> fmpq_poly:
+    """:func:`inverse_mod` for a minimal polynomial with integer numerator not monic: the
+    inverse modulo many primes (``nmod_poly.xgcd``), combined by the Chinese remainder
+    theorem, proposed by rational reconstruction, confirmed exactly."""
     a = fmpz_poly(poly.numer())          # poly = a / den
     den = fmpz(poly.denom())
     m = fmpz_poly(minpoly.numer())

@@ -21,9 +21,9 @@ Public names: :class:`MQ`, :func:`mq`, :func:`sqrt_rational`, :func:`squarefree_
 from __future__ import annotations
 
 from functools import lru_cache
-from math import gcd
+from math import gcd, lcm
 
-from flint import arb, ctx, fmpq, fmpz
+from flint import arb, ctx, fmpq, fmpz, fmpz_poly
 
 from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt
 from .field import FieldElement
@@ -127,9 +127,10 @@ class MQ(FieldElement):
 
     # -- arithmetic ---------------------------------------------------------
     def __add__(self, other):
-        other = _coerced(other)
-        if other is None:
-            return NotImplemented
+        if type(other) is not MQ:
+            other = _coerced(other)
+            if other is None:
+                return NotImplemented
         if not other.terms:
             return self
         if not self.terms:
@@ -165,39 +166,39 @@ class MQ(FieldElement):
         return (-self) + other
 
     def __mul__(self, other):
-        if not isinstance(other, MQ):
-            try:
-                q = _as_fmpq(other)
-            except TypeError:
-                return NotImplemented
-            if q == 0:
-                return MQ()
-            return MQ({m: c * q for m, c in self.terms.items()})
+        if type(other) is not MQ:
+            if not isinstance(other, MQ):
+                try:
+                    q = _as_fmpq(other)
+                except TypeError:
+                    return NotImplemented
+                if q == 0:
+                    return MQ()
+                return MQ({m: c * q for m, c in self.terms.items()})
         a, b = self.terms, other.terms
         if not a or not b:
             return MQ()
-        if len(a) * len(b) > _DENSE_PRODUCT:
-            base = sorted(_coprime_base([m for m in set(a) | set(b) if m != 1]))
-            if len(a) * len(b) > 2 * 3 ** len(base):     # Karatsuba does fewer products
+        la, lb = len(a), len(b)
+        if la * lb > _DENSE_PRODUCT:
+            base = _coprime_base_of(frozenset(a) | frozenset(b))
+            if 3 ** len(base) <= 2 * la * lb:     # the Kronecker product does fewer steps
                 return MQ(_dense_product(a, b, base))
-        if len(b) == 1 and 1 in b:
+        if lb == 1 and 1 in b:
             q = b[1]
             return MQ({m: c * q for m, c in a.items()})
-        if len(a) == 1 and 1 in a:
+        if la == 1 and 1 in a:
             q = a[1]
             return MQ({m: c * q for m, c in b.items()})
         out: dict = {}
+        pairs = _PAIRS
         for m1, c1 in a.items():
             for m2, c2 in b.items():
-                if m1 == 1:
-                    m, c = m2, c1 * c2
-                elif m2 == 1:
-                    m, c = m1, c1 * c2
-                elif m1 == m2:
-                    m, c = 1, c1 * c2 * m1
-                else:
-                    g = gcd(m1, m2)
-                    m, c = (m1 // g) * (m2 // g), c1 * c2 * g
+                # sqrt(m1) sqrt(m2) = g sqrt(m), cached: the same radicands meet again and again
+                mg = pairs.get((m1, m2))
+                if mg is None:
+                    mg = _radicand_product(m1, m2)
+                m, g = mg
+                c = c1 * c2 if g == 1 else c1 * c2 * g
                 v = out.get(m)
                 out[m] = c if v is None else v + c
         return MQ({m: c for m, c in out.items() if c != 0})
@@ -402,51 +403,77 @@ def from_tree(node: Node) -> MQ:
     raise ValueError(f"{type(node).__name__} is not multiquadratic")
 
 
-#: term pairs above which a product goes through the dense Karatsuba product (3^k, not 4^k)
-_DENSE_PRODUCT = 1024
+#: term pairs above which a product may go through the dense Kronecker product (3^k steps)
+_DENSE_PRODUCT = 64
+
+#: (m1, m2) -> (m, g) with sqrt(m1) sqrt(m2) = g sqrt(m), for squarefree m1, m2
+_PAIRS: dict = {}
+_PAIRS_MAX = 1 << 20
 
 
-def _dense_product(a: dict, b: dict, base: list[int]) -> dict:
-    """The product of two elements with many terms.  Over a coprime base b_1..b_k of their
-    radicands the field is the tensor product of the Q[x_i]/(x_i^2 - b_i), so with
-    x = A + B sqrt(b_k), y = C + D sqrt(b_k):
-    xy = (AC + b_k BD) + ((A + B)(C + D) - AC - BD) sqrt(b_k), three half-size products."""
+def _radicand_product(m1: int, m2: int) -> tuple[int, int]:
+    if m1 == m2:
+        mg = (1, m1)
+    else:
+        g = gcd(m1, m2)
+        mg = ((m1 // g) * (m2 // g), g)
+    if len(_PAIRS) >= _PAIRS_MAX:
+        _PAIRS.clear()
+    _PAIRS[(m1, m2)] = mg
+    return mg
+
+
+@lru_cache(maxsize=1024)
+def _coprime_base_of(radicands: frozenset) -> tuple[int, ...]:
+    return tuple(sorted(_coprime_base([m for m in radicands if m != 1])))
+
+
+def _dense_product(a: dict, b: dict, base) -> dict:
+    """The product of two elements with many terms, by Kronecker substitution.  Over a
+    coprime base b_1..b_k of their radicands the field is Z[x_1..x_k]/(x_i^2 - b_i)
+    (tensored with Q): scale each factor to integers over a common denominator, substitute
+    x_i = X^(3^(i-1)) (every exponent of the product is at most 2, so base-3 digits do not
+    carry), multiply the two integer polynomials in FLINT, then reduce x_i^2 = b_i digit by
+    digit.  The terms come out in the order of the radicands' masks over the base."""
     k = len(base)
-    size = 1 << k
+    masks: dict = {}
 
-    def dense(terms):
-        out = [fmpq(0)] * size
+    def poly(terms):
+        den = lcm(*[int(c.q) for c in terms.values()])
+        coeffs = [0] * ((3 ** k + 1) // 2)
         for m, c in terms.items():
-            mask = 0
-            for i, p in enumerate(base):
-                if m % p == 0:
-                    mask |= 1 << i
-            out[mask] = c
-        return out
+            index = masks.get(m)
+            if index is None:
+                index = 0
+                for i, p in enumerate(base):
+                    if m % p == 0:
+                        index += 3 ** i
+                masks[m] = index
+            coeffs[index] = int(c.p) * (den // int(c.q))
+        return fmpz_poly(coeffs), den
 
-    def product(x, y, level):
-        if level == 0:
-            return [x[0] * y[0]]
-        h = 1 << (level - 1)
-        a0, a1, b0, b1 = x[:h], x[h:], y[:h], y[h:]
-        low = product(a0, b0, level - 1)
-        high = product(a1, b1, level - 1)
-        mixed = product([u + v for u, v in zip(a0, a1)], [u + v for u, v in zip(b0, b1)],
-                        level - 1)
-        p = base[level - 1]
-        return [u + p * v for u, v in zip(low, high)] + \
-            [w - u - v for w, u, v in zip(mixed, low, high)]
-
-    result = product(dense(a), dense(b), k)
-    out = {}
-    for mask, c in enumerate(result):
-        if c != 0:
+    pa, da = poly(a)
+    pb, db = poly(b)
+    c = [int(x) for x in (pa * pb).coeffs()]
+    c += [0] * (3 ** k - len(c))
+    s = 1
+    for p in base:      # digit i in {0, 1, 2} -> {0, 1}: x_i^2 = b_i
+        out: list = []
+        for j in range(0, len(c), 3 * s):
+            out += [x + p * z if z else x for x, z in zip(c[j:j + s], c[j + 2 * s:j + 3 * s])]
+            out += c[j + s:j + 2 * s]
+        c = out
+        s *= 2
+    den = da * db
+    result = {}
+    for mask, v in enumerate(c):
+        if v:
             m = 1
             for i in range(k):
                 if mask >> i & 1:
                     m *= base[i]
-            out[m] = c
-    return out
+            result[m] = fmpq(v, den)
+    return result
 
 
 def _coprime_base(radicands) -> list[int]:

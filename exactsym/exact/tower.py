@@ -29,7 +29,7 @@ Public names: :class:`Tower`, :class:`TowerElement`, :func:`height_bits`.
 from __future__ import annotations
 
 from fractions import Fraction
-from math import isqrt
+from math import isqrt, lcm
 
 from flint import arb, ctx, fmpq, fmpz
 
@@ -87,6 +87,21 @@ def sub(x, y):
     return add(x, neg(y))
 
 
+
+def _denominator(v) -> int:
+    """The least common denominator of the rational coefficients of a raw value."""
+    if type(v) is tuple:
+        return lcm(_denominator(v[1]), _denominator(v[2]))
+    return lcm(*[int(c.q) for c in v.terms.values()]) if v.terms else 1
+
+
+def _scaled(v, q):
+    """q * v for a rational q != 0, coefficient by coefficient (same structure and order)."""
+    if type(v) is tuple:
+        return (v[0], _scaled(v[1], q), _scaled(v[2], q))
+    return MQ({m: c * q for m, c in v.terms.items()})
+
+
 def _mq_split(x: MQ, p: int):
     """x = A + B sqrt(p) with A, B free of the prime p."""
     a, b = {}, {}
@@ -134,29 +149,41 @@ class Tower:
 
     # -- arithmetic on raw values --------------------------------------------
     def mul(self, x, y):
+        """x * y.  Nested values carry big fractions (an inverse's coefficients share one
+        big denominator), and every fmpq product or sum of them pays gcds: so both factors
+        are scaled to integer coefficients, multiplied, and the product divided by the two
+        scales at the end (exact, and the same canonical value and term order)."""
+        if type(x) is not tuple or type(y) is not tuple:
+            return self._mul(x, y)
+        dx, dy = _denominator(x), _denominator(y)
+        if dx == 1 and dy == 1:
+            return self._mul(x, y)
+        return _scaled(self._mul(_scaled(x, dx), _scaled(y, dy)), fmpq(1, dx * dy))
+
+    def _mul(self, x, y):
         tx, ty = type(x) is tuple, type(y) is tuple
         if not tx:
             if not ty:
                 return x * y
             if not x.terms:
                 return _ZERO
-            return (y[0], self.mul(x, y[1]), self.mul(x, y[2]))   # a scalar of a lower level
+            return (y[0], self._mul(x, y[1]), self._mul(x, y[2]))   # a scalar of a lower level
         if not ty:
             if not y.terms:
                 return _ZERO
-            return (x[0], self.mul(x[1], y), self.mul(x[2], y))
+            return (x[0], self._mul(x[1], y), self._mul(x[2], y))
         lx, ly = x[0], y[0]
         if lx > ly:
-            return (lx, self.mul(x[1], y), self.mul(x[2], y))
+            return (lx, self._mul(x[1], y), self._mul(x[2], y))
         if ly > lx:
-            return (ly, self.mul(x, y[1]), self.mul(x, y[2]))
+            return (ly, self._mul(x, y[1]), self._mul(x, y[2]))
         lev = lx
         xa, xb, ya, yb = x[1], x[2], y[1], y[2]
         r = self.radicands[lev - 1]
-        low, high = self.mul(xa, ya), self.mul(xb, yb)
+        low, high = self._mul(xa, ya), self._mul(xb, yb)
         # Karatsuba: three products of the level below instead of four
-        mixed = sub(sub(self.mul(add(xa, xb), add(ya, yb)), low), high)
-        return _make(lev, add(low, self.mul(r, high)), mixed)
+        mixed = sub(sub(self._mul(add(xa, xb), add(ya, yb)), low), high)
+        return _make(lev, add(low, self._mul(r, high)), mixed)
 
     def inverse(self, x):
         if isinstance(x, MQ):
