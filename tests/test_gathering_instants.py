@@ -75,6 +75,15 @@ def test_separate_merges_a_common_root_and_keeps_distinct_ones_apart():
     assert all(x.hi < y.lo for x, y in zip(roots, roots[1:]))
 
 
+def test_separate_merges_many_repeats_of_one_irrational_root():
+    # a sweep run met 27 roots, most of them one root found by several families, each
+    # by another polynomial: a fixed budget of 400 refinements ran out (here at 30 copies)
+    p = poly(1 - S2, 0, 1)                                      # sqrt(sqrt2 - 1)
+    copies = [r for k in range(40) for r in roots_in_unit(pmul(p, poly(F(k + 2), 1)), k)]
+    roots = separate(copies)
+    assert len(roots) == 1 and sorted(roots[0].tags) == list(range(40))
+
+
 def test_mq_sqrt_denests_or_declines():
     assert mq_sqrt(3 + 2 * S2) == 1 + S2
     assert mq_sqrt(Q(F(9, 4))) == Q(F(3, 2))
