@@ -399,7 +399,6 @@ def _profile_less(a, b) -> int:
 def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> Decision:
     """The corrected algorithm's decision on one snapshot (see the module docstring)."""
     pts = list(snapshot)
-    unit2 = unit * unit
     approx = g.approx_points(pts)
     centre, pat, cands, detail = choose_centre(pts, readings, unit, approx)
     if centre is None:

@@ -46,7 +46,8 @@ from flint import fmpq
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
-from .polyroots import (Root, padd, pmul, pscale, psub, roots_in_unit, separate, trim)
+from .polyroots import (Root, padd, pmul, pscale, psub, roots_in_unit,
+                        separate_inside, trim)
 
 ONE = MQ.rational(1)
 
@@ -356,7 +357,6 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
     static = {k: r.pos for k, r in enumerate(world.robots) if k != mover}
     sec = g.smallest_enclosing_circle(list(static.values())) if len(static) >= 2 else None
     polys: list = []
-    params: list = []
     if centre is not None:
         polys += _about(piece, m, centre, static, "C")
         lo_c, hi_c = _reach(piece, centre)
@@ -403,11 +403,7 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
     from .polyroots import _bracket
     for f, what in sym_params:
         roots.append(_bracket((), f, ("symmetry", what)))
-    roots = separate(roots)
-    for r in roots:                # side points strictly inside the piece
-        while r.lo == 0 or r.hi == 1:
-            r.refine()
-    return separate(roots)
+    return separate_inside(roots)
 
 
 @dataclass(frozen=True)

@@ -37,7 +37,7 @@ from flint import fmpq
 
 from ..exact.multiquadratic import MQ
 from .instants import Motion, _reach, hull_indices, motion_of
-from .polyroots import padd, pmul, pscale, psub, roots_in_unit, separate
+from .polyroots import padd, pmul, pscale, psub, roots_in_unit, separate_inside
 
 ONE = MQ.rational(1)
 
@@ -175,11 +175,7 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
     for poly, tag in polys:
         if poly:
             roots += roots_in_unit(poly, tag)
-    roots = separate(roots)
-    for r in roots:
-        while r.lo == 0 or r.hi == 1:
-            r.refine()
-    return separate(roots)
+    return separate_inside(roots)
 
 
 @dataclass(frozen=True)

@@ -371,3 +371,13 @@ def separate(roots: list, max_rounds: int | None = None) -> list:
         a.refine()
         b.refine()
     raise ArithmeticError("root separation did not finish")
+
+
+def separate_inside(roots: list) -> list:
+    """:func:`separate`, then each interval kept strictly inside (0, 1), so that the points
+    just before and just after a root lie inside the piece."""
+    roots = separate(roots)
+    for r in roots:
+        while r.lo == 0 or r.hi == 1:
+            r.refine()
+    return separate(roots)

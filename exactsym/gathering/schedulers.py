@@ -174,7 +174,7 @@ def _stall(world: World, idle_rounds: int, leader_free: int):
 
 def _centralised(r: _Run, rng, reflections):
     w = r.world
-    idle_rounds, since_growth, size = 0, 0, -1
+    idle_rounds, since_growth = 0, 0
     while True:
         end = _terminal(w)
         if end:
