@@ -117,3 +117,20 @@ def test_text_forms():
     assert MQ().text() == "0"
     with pytest.raises(ValueError):
         from_tree(parse_expression("sqrt(1+sqrt(2))"))
+
+
+def test_factorization_merges_a_prime_flint_lists_twice():
+    # python-flint 0.9.0 lists 111053 twice, each with exponent 1, for this number; read as
+    # a factorisation it gave sqrt_rational a radicand with the square factor 111053^2 (an
+    # element that was not canonical: its sign could not be decided, found by a gathering sweep)
+    from exactsym.exact.factor import factorization
+    from exactsym.exact.cyclotomic import squarefree_decomposition
+    from exactsym.exact.multiquadratic import squarefree_split, sqrt_rational
+    n = 3513839015486888 * 110994919281
+    f = factorization(n)
+    assert f == {2: 3, 3: 2, 11: 2, 401: 1, 45949: 1, 111053: 2, 197009: 1}
+    assert squarefree_split(n) == (7329498, 7259997965882)
+    assert squarefree_decomposition(fmpq(n)) == (fmpq(7329498), 7259997965882)
+    root = sqrt_rational(fmpq(3513839015486888, 110994919281))
+    assert root.terms == {7259997965882: fmpq(22, 333159)}
+    assert root * root == MQ.rational(fmpq(3513839015486888, 110994919281))

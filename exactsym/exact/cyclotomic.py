@@ -12,8 +12,9 @@ from __future__ import annotations
 
 from math import gcd
 
-from flint import acb, arb, fmpq, fmpq_poly, fmpz, fmpz_poly
+from flint import acb, arb, fmpq, fmpq_poly, fmpz_poly
 
+from .factor import factorization
 from .field import FieldElement, NumberField
 
 #: Largest field degree phi(M) we build; beyond it arithmetic costs milliseconds.
@@ -22,8 +23,7 @@ MAX_DEGREE = 16384
 
 def euler_phi(m: int) -> int:
     result = m
-    for p, _ in fmpz(m).factor():
-        p = int(p)
+    for p in factorization(m):
         result = result // p * (p - 1)
     return result
 
@@ -37,8 +37,7 @@ def squarefree_decomposition(q: fmpq) -> tuple[fmpq, int]:
     num, den = int(q.p), int(q.q)
     n = num * den
     square, free = 1, 1
-    for p, e in fmpz(n).factor():
-        p = int(p)
+    for p, e in factorization(n).items():
         square *= p ** (e // 2)
         if e % 2:
             free *= p
@@ -48,8 +47,7 @@ def squarefree_decomposition(q: fmpq) -> tuple[fmpq, int]:
 def sqrt_conductor(s: int) -> int:
     """A conductor M such that Q(zeta_M) holds sqrt(s) as built by :func:`sqrt_element`."""
     m = 1
-    for p, _ in fmpz(s).factor():
-        p = int(p)
+    for p in factorization(s):
         m = lcm(m, 8 if p == 2 else (p if p % 4 == 1 else 4 * p))
     return m
 
@@ -119,8 +117,8 @@ def sqrt_element(field: NumberField, q: fmpq) -> FieldElement:
     """The non-negative square root of the rational ``q >= 0``."""
     c, s = squarefree_decomposition(q)
     root = field(1)
-    for p, _ in fmpz(s).factor():
-        root = root * _sqrt_prime(field, int(p))
+    for p in factorization(s):
+        root = root * _sqrt_prime(field, p)
     if root * root != s:
         raise ArithmeticError(f"Gauss sum for sqrt({s}) is wrong")  # cannot happen
     if root.sign() < 0:

@@ -26,6 +26,7 @@ from math import gcd, lcm
 from flint import arb, ctx, fmpq, fmpz, fmpz_poly
 
 from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt
+from .factor import factorization
 from .field import FieldElement
 
 _ULP = 2.0 ** -52
@@ -38,8 +39,7 @@ def squarefree_split(n: int) -> tuple[int, int]:
     if n < 1:
         raise ValueError("squarefree_split needs a positive integer")
     s, m = 1, 1
-    for p, e in fmpz(n).factor():
-        p = int(p)
+    for p, e in factorization(n).items():
         s *= p ** (e // 2)
         if e % 2:
             m *= p
