@@ -47,7 +47,7 @@ from flint import fmpq
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .polyroots import (Root, padd, pmul, pscale, psub, roots_in_unit,
-                        separate_inside, trim)
+                        roots_of, trim)
 
 ONE = MQ.rational(1)
 
@@ -397,13 +397,8 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
         for u in mirror_lines(rest_r, centre):
             polys.append((cross_poly(m, centre, u), ("symmetry", "a mirror line of the rest "
                                                      "of R through C")))
-    roots: list = []
-    for poly, tag in polys:
-        roots += roots_in_unit(poly, tag)
     from .polyroots import _bracket
-    for f, what in sym_params:
-        roots.append(_bracket((), f, ("symmetry", what)))
-    return separate_inside(roots)
+    return roots_of(polys, [_bracket((), f, ("symmetry", what)) for f, what in sym_params])
 
 
 @dataclass(frozen=True)

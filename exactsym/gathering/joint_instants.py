@@ -37,7 +37,7 @@ from flint import fmpq
 
 from ..exact.multiquadratic import MQ
 from .instants import Motion, _reach, hull_indices, motion_of
-from .polyroots import padd, pmul, pscale, psub, roots_in_unit, separate_inside
+from .polyroots import padd, pmul, pscale, psub, roots_of
 
 ONE = MQ.rational(1)
 
@@ -171,11 +171,7 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
         if rset and (sec_r or len(rset) < n):
             sub = {k: m for k, m in motions.items() if k in rset}
             polys += _sec(sub, movers & set(sub), "SEC of R")
-    roots: list = []
-    for poly, tag in polys:
-        if poly:
-            roots += roots_in_unit(poly, tag)
-    return separate_inside(roots)
+    return roots_of((poly, tag) for poly, tag in polys if poly)
 
 
 @dataclass(frozen=True)

@@ -381,3 +381,10 @@ def separate_inside(roots: list) -> list:
         while r.lo == 0 or r.hi == 1:
             r.refine()
     return separate(roots)
+
+
+def roots_of(polys, extra=()) -> list:
+    """The roots in (0, 1) of every ``(poly, tag)``, with ``extra`` roots, separated and
+    kept strictly inside (:func:`separate_inside`): the critical instants of a motion."""
+    roots = [r for poly, tag in polys for r in roots_in_unit(poly, tag)]
+    return separate_inside(roots + list(extra))
