@@ -10,9 +10,12 @@ A root is a :class:`Root`: a rational isolating interval ``(lo, hi)`` holding ex
 one root of its polynomial (Sturm sequences over the coefficient field, exact signs),
 and, when the kernel can hold it, its exact value (``exact``: a root of a linear
 factor, or a quadratic's root whose discriminant is a square in the multiquadratic
-field, found by :func:`mq_sqrt`).  A root that needs a nested radical (a quadratic's
-discriminant that is not a square there, or a cubic or quartic factor) has no exact
-value: :func:`exact_root_hook` is where towers of quadratic extensions will plug in.
+field, found by :func:`mq_sqrt`), or -- when it needs a nested radical -- a number of a
+tower of quadratic extensions over that field (:mod:`.tower_numbers`): a quadratic
+whose discriminant is a square in no multiquadratic field, or a biquadratic quartic
+``a f^4 + b f^2 + c`` (:func:`exact_root_hook`).  Roots of cubic or quartic factors
+that are not of these forms (not expressible by the square roots this code builds)
+have no exact value: they stay isolated by rationals only (``sided`` instants).
 
 :func:`separate` refines a list of roots until their intervals are pairwise disjoint,
 merging roots that are equal (same exact value, or a common root of the two polynomials:
@@ -30,6 +33,7 @@ from math import isqrt
 from flint import fmpq
 
 from ..exact.multiquadratic import MQ, _coprime_base, sqrt_rational
+from .tower_numbers import biquadratic_root, is_tower, quadratic_root, tower_sqrt
 
 ZERO = MQ()
 
@@ -132,7 +136,11 @@ def mq_sqrt(x: MQ, _depth: int = 0, big_ok: bool = False):
     rationals.  Every answer is verified by squaring, so a miss is a None, never a wrong
     root.  A rational that is not a square and has more than :data:`RATIONAL_BITS` bits
     is a miss (its square-free part needs a factorisation that can take minutes), except
-    ``x`` itself with ``big_ok`` (as :func:`sqrt_rational` always did)."""
+    ``x`` itself with ``big_ok`` (as :func:`sqrt_rational` always did).  For a tower
+    number ``x`` (:mod:`.tower_numbers`) the answer is its root in the tower, a new level
+    when it has none there (never None for ``x > 0``)."""
+    if is_tower(x):                     # a tower number: its root in the tower
+        return tower_sqrt(x, mq_sqrt) if x.sign() > 0 else None
     if x.is_zero():
         return MQ()
     if x.sign() < 0 or _depth > 8:
@@ -171,10 +179,18 @@ def _sqrt_rational(q: fmpq, big_ok: bool):
 
 
 def exact_root_hook(poly, lo, hi):
-    """The exact value of the root of ``poly`` in ``(lo, hi)`` when it needs a nested
-    radical: None today (the multiquadratic kernel cannot hold it).  Towers of quadratic
-    extensions (exactsym.exact, in progress) plug in here; callers then check the
-    instant itself instead of only both sides of it."""
+    """The exact value of the root of ``poly`` (square-free) in ``(lo, hi)`` when it
+    needs a nested radical: a quadratic (its discriminant a square in no multiquadratic
+    field) or a biquadratic quartic ``a f^4 + b f^2 + c``, as a tower number
+    (:mod:`.tower_numbers`).  None for other cubics and quartics: a root of an
+    irreducible factor of degree 3 or 4 is in general not expressible by square roots
+    (and factoring over the coefficients' field is not attempted), so such an instant
+    is only seen on both sides (``sided``)."""
+    if len(poly) == 3:
+        c, b, a = poly
+        return quadratic_root(c, b, a, lo, hi, mq_sqrt)
+    if len(poly) == 5 and poly[1].is_zero() and poly[3].is_zero() and lo >= 0:
+        return biquadratic_root(poly, lo, hi, mq_sqrt)
     return None
 
 
@@ -187,7 +203,7 @@ class Root:
     poly: tuple
     lo: fmpq
     hi: fmpq
-    exact: MQ | None = None
+    exact: object = None            # MQ, a tower number (nested radical) or None
     tags: list = field(default_factory=list)
 
     def _sign_at(self, x) -> int:
@@ -321,7 +337,7 @@ def _same_root(r: Root, s: Root) -> bool:
     """Do two roots with overlapping intervals coincide?  Exactly: equal exact values; an
     exact value that is a root of the other's polynomial inside its interval (which
     holds one root only); or the gcd of the two polynomials has a root in the overlap."""
-    if r.exact is not None and s.exact is not None:
+    if r.exact is not None and s.exact is not None and _comparable(r.exact, s.exact):
         return r.exact == s.exact
     if r.exact is not None or s.exact is not None:
         e, o = (r, s) if r.exact is not None else (s, r)
@@ -338,6 +354,12 @@ def _same_root(r: Root, s: Root) -> bool:
         return True
     chain = sturm_chain(squarefree(g))
     return _variations(chain, lo) - _variations(chain, hi) > 0
+
+
+def _comparable(x, y) -> bool:
+    """Can ``==`` decide: not two numbers of different towers (their canonical forms
+    differ even for equal values; :func:`_same_root` then uses a polynomial)."""
+    return not (is_tower(x) and is_tower(y) and x.tower is not y.tower)
 
 
 def separate(roots: list, max_rounds: int | None = None) -> list:

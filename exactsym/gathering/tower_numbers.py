@@ -1,0 +1,224 @@
+"""Nested radicals for the gathering simulator: critical instants held exactly in a tower.
+
+A critical instant of a motion (:mod:`.instants`) is a root of a polynomial with
+multiquadratic coefficients.  When that root needs a nested radical (a quadratic whose
+discriminant is not a square in any multiquadratic field, or a biquadratic quartic),
+it lives in a tower of quadratic extensions over the multiquadratic field
+(:mod:`exactsym.exact.tower`, used read-only).  This module is the small adapter the
+simulator needs on top of it:
+
+* :class:`TowerNumber` -- a :class:`~exactsym.exact.tower.TowerElement` that offers the
+  :class:`~exactsym.exact.multiquadratic.MQ` methods the gathering geometry calls
+  (``is_zero``, ``to_fmpq``, ``text``) and keeps its type through arithmetic, so the
+  geometry, the pattern recogniser and the robots' decisions run unchanged on points
+  whose coordinates are tower numbers (a level-0 result is an ``MQ`` again);
+* :func:`quadratic_root` and :func:`biquadratic_root` -- the root of a quadratic (or of
+  ``a f^4 + b f^2 + c``) inside a rational interval, as a tower number;
+* :func:`tower_sqrt` -- the square root of a tower number.
+
+Soundness of the canonical form.  The tower's canonical form (``a + b y`` with ``y^2``
+not a square below) makes ``==`` exact only while the radicand of every level is a
+non-square in the field below *whatever square roots of rationals appear later* (a
+Look builds new ones: layer slots, radial targets).  So a level is added only after
+:func:`~.polyroots.mq_sqrt` -- which searches the whole multiquadratic closure, any
+primes -- found no root: a radicand of level 1 is then a non-square in every
+multiquadratic field, and the same check one level down makes :func:`tower_sqrt`
+sound for level-1 numbers.  Square roots of numbers of level 2 or more fall back to the
+tower's own test over its base primes (never needed by the simulator's runs so far).
+
+Towers are shared by their first radicand (:func:`tower_of`), so the same instant
+computed twice (a Look's I3 and I9 checks, the snapshot cache) gives equal numbers;
+numbers of two different towers compare as different (:meth:`TowerNumber.__eq__`:
+callers that must decide equality across towers, :func:`.polyroots._same_root`, use
+the polynomials instead).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from flint import fmpz
+
+from ..exact.multiquadratic import MQ
+from ..exact.tower import Tower, TowerElement, _is_zero, _raw, add, neg, sub
+
+__all__ = ["TowerNumber", "tower_of", "quadratic_root", "biquadratic_root", "tower_sqrt",
+           "is_tower"]
+
+
+def is_tower(x) -> bool:
+    return isinstance(x, TowerElement)
+
+
+def _wrap(tower: Tower, v):
+    return v if isinstance(v, MQ) else TowerNumber(tower, v)
+
+
+class TowerNumber(TowerElement):
+    """A tower number that answers the MQ methods the gathering code calls and stays a
+    :class:`TowerNumber` through arithmetic."""
+
+    __slots__ = ()
+
+    def _bin(self, other, op):
+        if isinstance(other, TowerElement) and other.tower is not self.tower:
+            raise TypeError("numbers of two different towers do not mix")
+        o = _raw(self.tower, other)
+        return NotImplemented if o is None else _wrap(self.tower, op(self.v, o))
+
+    def __add__(self, other):
+        return self._bin(other, add)
+
+    __radd__ = __add__
+
+    def __sub__(self, other):
+        return self._bin(other, sub)
+
+    def __rsub__(self, other):
+        return self._bin(other, lambda x, y: sub(y, x))
+
+    def __neg__(self):
+        return TowerNumber(self.tower, neg(self.v))
+
+    def __mul__(self, other):
+        return self._bin(other, self.tower.mul)
+
+    __rmul__ = __mul__
+
+    def inverse(self):
+        return _wrap(self.tower, self.tower.inverse(self.v))
+
+    def __truediv__(self, other):
+        o = _raw(self.tower, other)
+        if o is None:
+            return NotImplemented
+        if _is_zero(o):
+            raise ZeroDivisionError("division by zero")
+        return _wrap(self.tower, self.tower.divide(self.v, o))
+
+    def __rtruediv__(self, other):
+        o = _raw(self.tower, other)
+        return NotImplemented if o is None else _wrap(self.tower,
+                                                      self.tower.divide(o, self.v))
+
+    def __pow__(self, k: int):
+        r = TowerElement.__pow__(self, k)
+        return r if r is NotImplemented else _wrap(self.tower, r.v if is_tower(r) else r)
+
+    def __abs__(self):
+        return -self if self.sign() < 0 else self
+
+    def __eq__(self, other):
+        if isinstance(other, TowerElement) and other.tower is not self.tower:
+            return False          # canonical forms of two towers are not comparable
+        return TowerElement.__eq__(self, other)
+
+    def __ne__(self, other):
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
+
+    __hash__ = TowerElement.__hash__
+
+    # -- the MQ methods the gathering code calls ------------------------------------
+    def is_zero(self) -> bool:
+        return False                     # a number of level >= 1 is never zero
+
+    def to_fmpq(self):
+        raise ValueError(f"{self.text()} is not rational")
+
+    def __repr__(self):
+        return f"TowerNumber({self.text()!r})"
+
+
+def _primes_of(values) -> list:
+    """The primes dividing the radicands of the MQ numbers ``values``."""
+    out: set = set()
+    for v in values:
+        for m in v.radicands():
+            out |= {int(p) for p, _ in fmpz(m).factor()}
+    return sorted(out)
+
+
+@lru_cache(maxsize=1024)
+def tower_of(radicand: MQ) -> Tower:
+    """A one-level tower ``K_0(sqrt(radicand))``, ``K_0`` the multiquadratic field of the
+    radicand's square roots; the same object for the same radicand.  The caller has
+    checked that ``radicand > 0`` has no square root in any multiquadratic field."""
+    tower = Tower(_primes_of([radicand]))
+    tower.sqrt(radicand)
+    return tower
+
+
+def _new_root(radicand: MQ) -> TowerNumber:
+    tower = tower_of(radicand)
+    return TowerNumber(tower, tower.sqrt(radicand))
+
+
+def mq_sqrt_any(x, sqrt_mq):
+    """The non-negative root of ``x >= 0`` (an MQ or a tower number): in the
+    multiquadratic closure when it lies there (``sqrt_mq``: :func:`.polyroots.mq_sqrt`),
+    else a tower number (a new tower, or a new level of ``x``'s tower)."""
+    if is_tower(x):
+        return tower_sqrt(x, sqrt_mq)
+    root = sqrt_mq(x, big_ok=True)
+    return root if root is not None else _new_root(x)
+
+
+def tower_sqrt(x: TowerElement, sqrt_mq):
+    """The non-negative square root of the tower number ``x > 0``: an element of its
+    tower when it has one there (level 1: searched over the multiquadratic closure, so
+    a miss is a true non-square), else the generator of a new level."""
+    tower = x.tower
+    if x.sign() < 0:
+        raise ValueError("square root of a negative number")
+    v = x.v
+    if v[0] == 1:
+        a, b = v[1], v[2]
+        r = tower.radicands[0]
+        n = sqrt_mq(a * a - r * b * b, big_ok=True)
+        if n is not None:
+            for t in ((a + n) / 2, (a - n) / 2):
+                c = sqrt_mq(t, big_ok=True) if t.sign() >= 0 else None
+                if c is not None and not c.is_zero():
+                    y = TowerNumber(tower, (1, c, b / (c * 2)))
+                    if y * y == x:
+                        return y if y.sign() >= 0 else -y
+        # no root in any multiquadratic K_0(y): a new level (the tower's own test agrees)
+    return _wrap(tower, tower.sqrt(v))
+
+
+def _in(x, lo, hi) -> bool:
+    return (x - lo).sign() > 0 and (x - hi).sign() < 0
+
+
+def quadratic_root(c, b, a, lo, hi, sqrt_mq):
+    """The root of ``a f^2 + b f + c`` (MQ coefficients, a != 0) in ``(lo, hi)``, exact:
+    an MQ when the discriminant is a square there, else a tower number; None when no
+    root lies in the interval."""
+    bm, cm = b / a, c / a                      # monic: one radicand per root
+    disc = bm * bm - cm * 4
+    if disc.sign() < 0:
+        return None
+    y = mq_sqrt_any(disc, sqrt_mq)
+    for r in ((-bm - y) / 2, (-bm + y) / 2):
+        if _in(r, lo, hi):
+            return r
+    return None
+
+
+def biquadratic_root(p, lo, hi, sqrt_mq):
+    """The root of ``p = c + b f^2 + a f^4`` (odd coefficients zero) in ``(lo, hi)``,
+    ``0 <= lo``: ``f = sqrt(u)``, ``u`` a root of ``a u^2 + b u + c``; None otherwise."""
+    c, _, b, _, a = p
+    bm, cm = b / a, c / a
+    disc = bm * bm - cm * 4
+    if disc.sign() < 0:
+        return None
+    y = mq_sqrt_any(disc, sqrt_mq)
+    for u in ((-bm - y) / 2, (-bm + y) / 2):
+        if u.sign() <= 0:
+            continue
+        f = mq_sqrt_any(u, sqrt_mq)
+        if _in(f, lo, hi):
+            return f
+    return None
