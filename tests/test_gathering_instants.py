@@ -42,15 +42,27 @@ def test_linear_and_square_discriminant_roots_are_exact():
     assert roots_in_unit(()) == []                       # identically zero: no instant
 
 
-def test_nested_radical_root_is_isolated_not_guessed():
-    # f^2 - (sqrt(2) - 1) = 0: f = sqrt(sqrt(2) - 1), a nested radical (~0.6436)
+def test_nested_radical_root_is_exact_in_a_tower():
+    # f^2 - (sqrt(2) - 1) = 0: f = sqrt(sqrt(2) - 1), a nested radical (~0.6436), held
+    # exactly in a tower of quadratic extensions (exactsym.gathering.tower_numbers)
     p = poly(1 - S2, 0, 1)
     (r,) = roots_in_unit(p)
-    assert r.exact is None
+    assert r.exact is not None and not isinstance(r.exact, MQ)
+    assert r.exact * r.exact == S2 - 1 and peval(p, r.exact).is_zero()
     assert peval(p, r.lo).sign() * peval(p, r.hi).sign() < 0
     for _ in range(30):
         r.refine()
     assert abs(float(r.lo) - 0.6435942529) < 1e-8 and r.hi - r.lo < fmpq(1, 10 ** 9)
+
+
+def test_cubic_root_is_isolated_not_guessed():
+    # f^3 - 2/5: the cube root of 2/5 (~0.7368) is not expressible by square roots
+    p = poly(F(-2, 5), 0, 0, 1)
+    (r,) = roots_in_unit(p)
+    assert r.exact is None
+    for _ in range(30):
+        r.refine()
+    assert abs(float(r.lo) - 0.7368062997) < 1e-8 and r.hi - r.lo < fmpq(1, 10 ** 9)
 
 
 def test_quartic_roots_by_sturm():
@@ -171,10 +183,11 @@ def test_mirror_lines_exact():
     assert mirror_lines([g.point(1, 0), g.point(0, 2), g.point(-3, -1)], g.point(0, 0)) == []
 
 
-def test_distance_tie_with_a_nested_radical_is_checked_on_both_sides():
+def test_distance_tie_with_a_nested_radical_is_checked_at_the_instant():
     # the mover on a segment from (sqrt2, 1) to (sqrt2, 9), C = 0; robot 1 at squared
     # distance 7 + 4 sqrt2: the tie is at y^2 = 5 + 4 sqrt2, whose root is not in any
-    # multiquadratic field (25 - 32 < 0: no denesting), a nested radical
+    # multiquadratic field (25 - 32 < 0: no denesting), a nested radical: the instant is
+    # a number of a tower, and the Look there sees the two distances exactly equal
     pts = [(0, 0), (0, 30), (21, 0), (-40, 1), (0, -40)]
     w = world(pts)
     start = (S2, Q(1))
@@ -185,13 +198,16 @@ def test_distance_tie_with_a_nested_radical_is_checked_on_both_sides():
     ties = [r for r in roots if any(t[0] == "distance" and "robot 1" in t[1] for t in r.tags)]
     assert len(ties) == 1
     r = ties[0]
-    assert r.exact is None
+    assert r.exact is not None and not isinstance(r.exact, MQ)
     points, sided = look_points(seg, w, 0, g.point(0, 0))
-    assert sided >= 1
-    # the Look points around it are in the field and on both sides of the tie
+    assert sided == 0
     d1 = g.dist2(w.robots[1].pos, g.point(0, 0))
+    at = [p for p in points if p.exact and "distance" in p.families]
+    assert len(at) == 1 and g.dist2(at[0].point, g.point(0, 0)) == d1
+    assert at[0].point[1] * at[0].point[1] == 5 + 4 * S2
+    # the Look points between instants are in the field and on both sides of the tie
     signs = {(g.dist2(p.point, g.point(0, 0)) - d1).sign() for p in points}
-    assert signs >= {-1, 1}
+    assert signs == {-1, 0, 1}
 
 
 def test_mq_sqrt_over_several_radicals():

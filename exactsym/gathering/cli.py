@@ -122,8 +122,10 @@ def _text(res, settings) -> str:
              "invariant checks: " + ", ".join(f"{k} {v}" for k, v in res.checks.items()
                                               if k.startswith("I")),
              f"fresh Looks at and between critical instants: {res.checks.get('instants', 0)}"
-             f" ({res.checks.get('sided', 0)} instants seen on both sides only: nested "
-             f"radicals); Looks the kernel could not hold: {res.checks.get('skipped', 0)}"]
+             f" ({res.checks.get('nested', 0)} at nested radicals, in a tower; "
+             f"{res.checks.get('sided', 0)} instants seen on both sides only: roots not "
+             f"expressible by square roots); Looks the kernel could not hold: "
+             f"{res.checks.get('skipped', 0)}"]
     if res.violation:
         v = res.violation
         lines.append(f"violation: {v['invariant']} ({v['label']}) at event {v['instant']}, "

@@ -456,7 +456,14 @@ def joint_motion_overlap(piece1, piece2, d2=4):
 # infinity (overflow) compares False and sends the pair to the exact test.
 
 def _approx(x):
-    vals = [float(c) * float(m) ** 0.5 for m, c in x.terms.items()]
+    terms = getattr(x, "terms", None)
+    if terms is None:
+        # a tower number (nested radical, gathering.tower_numbers): its Arb ball's centre,
+        # within the ball's radius plus the centre's rounding to a double
+        ball = x.enclosure(64)
+        mid = float(ball.mid())
+        return mid, 2 * (float(ball.rad()) + 2.0 ** -52 * abs(mid)) + 1e-300
+    vals = [float(c) * float(m) ** 0.5 for m, c in terms.items()]
     s = sum(abs(v) for v in vals)
     return sum(vals), 2 * (len(vals) + 6) * 2.0 ** -52 * s
 

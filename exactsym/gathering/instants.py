@@ -32,9 +32,12 @@ would be a missed check.  :func:`look_points` returns every root's exact point w
 kernel holds it, and one rational point in each open stretch between consecutive roots
 (before the first, after the last; half way when there is none), strictly inside the
 piece: in a stretch no relation above changes sign, so its Look stands for the whole
-stretch with respect to them.  A root that needs a nested radical is seen on both sides
-only (``sided``; :func:`.polyroots.exact_root_hook` is where towers of quadratic
-extensions will plug in).  Not enumerated: relations that involve neither C, nor an SEC,
+stretch with respect to them.  A root that needs a nested radical is exact too: a number
+of a tower of quadratic extensions (:func:`.polyroots.exact_root_hook`,
+:mod:`.tower_numbers`), and the mover's point there has tower coordinates, on which the
+fresh Look (geometry, pattern, the paper layer) runs unchanged.  Only a root of a cubic
+or quartic factor that square roots do not express is seen on both sides only
+(``sided``).  Not enumerated: relations that involve neither C, nor an SEC,
 a symmetry or a contact (the corrected variant's distance profiles, for example).
 """
 
@@ -403,7 +406,7 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
 
 @dataclass(frozen=True)
 class LookPoint:
-    f: MQ
+    f: object               # MQ, or a tower number at a nested radical
     point: tuple
     where: str
     families: frozenset
@@ -414,8 +417,9 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
     """``(points, sided)``: the :class:`LookPoint`\\ s to check, in order along the piece
     -- one rational point in each open stretch between consecutive instants (the first
     before the first instant, the last after the last) and each instant itself when the
-    kernel holds it -- and the number of instants checked only on both sides (nested
-    radicals)."""
+    kernel holds it (a nested radical: a point with tower coordinates) -- and the number
+    of instants checked only on both sides (roots of cubic or quartic factors that
+    square roots do not express)."""
     roots = critical_roots(piece, world, mover, centre, sec_r)
     if not roots:             # one stretch: the whole open piece
         half = MQ.rational(fmpq(1, 2))

@@ -19,7 +19,9 @@ Exactness of the "at any instant" checks:
   support changes, where a symmetry can appear -- roots of polynomials in the path
   parameter, isolated exactly (:mod:`.polyroots`).  A Look at each instant the kernel
   holds, and one in each stretch between consecutive instants; an instant that needs a
-  nested radical is seen on both sides only (counted as ``sided``);
+  nested radical is checked at the instant too, its point in a tower of quadratic
+  extensions (:mod:`.tower_numbers`, counted as ``nested``); only a root of a cubic or
+  quartic factor that square roots do not express is seen on both sides only (``sided``);
 * over a step of several robots moving at once (:meth:`Checker.after_step`): I1 by the
   joint motion's exact polynomial, and I3, I4 and I6 at the critical instants of the
   joint motion (:mod:`.joint_instants`) and between them.
@@ -34,6 +36,7 @@ from . import geometry as g
 from .instants import critical_roots, look_points
 from .joint_instants import joint_look_points
 from .pattern import definition_defects, recognise
+from .tower_numbers import is_tower
 
 #: How a violation names the statement it contradicts: the paper's ``\\label`` where
 #: the statement has one (``/paper/README.md``), otherwise the algorithm (or the model
@@ -98,9 +101,10 @@ ALL = tuple(f"I{k}" for k in range(1, 11))
 class Checker:
     enabled: frozenset = frozenset(ALL)
     # each invariant's checks; "instants": fresh Looks at critical instants of a motion
-    # and just beside them; "sided": instants seen only on both sides (nested radicals)
+    # and just beside them; "nested": of those, instants at a nested radical (a point in
+    # a tower); "sided": instants seen only on both sides (not expressible by square roots)
     counts: dict = field(default_factory=lambda: {**{k: 0 for k in ALL}, "instants": 0,
-                                                  "sided": 0})
+                                                  "nested": 0, "sided": 0})
     in_pattern: set = field(default_factory=set)       # robots ever recognised in P
     undecided_fresh: int = 0      # I3 / I9 Looks skipped: the kernel could not hold them
     frames: tuple = ()                                  # extra frames for I9 (besides mirror)
@@ -195,6 +199,7 @@ class Checker:
                 points, sided = look_points(piece, world, i, rob.centre,
                                             world.readings.A1 == "sec-r")
                 self.counts["sided"] += sided
+                self.counts["nested"] += sum(1 for lp in points if is_tower(lp.f))
                 for lp in points:
                     rob.pos = lp.point
                     self.counts["instants"] += 1
@@ -306,6 +311,7 @@ class Checker:
         ends = {i: rob[i].pos for i in movers}
         points, sided = joint_look_points(pieces, world, world.readings.A1 == "sec-r")
         self.counts["sided"] += sided
+        self.counts["nested"] += sum(1 for jp in points if is_tower(jp.tau))
         try:
             for jp in points:
                 for i in movers:
