@@ -15,7 +15,7 @@ from exactsym.gathering import geometry as g
 from exactsym.gathering.instants import look_points
 from exactsym.gathering.invariants import Checker, Violation
 from exactsym.gathering.pattern import recognise
-from exactsym.gathering.polyroots import mq_sqrt, peval, roots_in_unit
+from exactsym.gathering.polyroots import mq_sqrt, peval, pmul, roots_in_unit
 from exactsym.gathering.robot import Decision, Move, Readings
 from exactsym.gathering.tower_numbers import TowerNumber, is_tower, tower_sqrt
 from exactsym.gathering.world import IDENTITY, World
@@ -47,6 +47,17 @@ def test_biquadratic_quartic_root_in_a_tower():
     (r,) = roots
     assert is_tower(r.exact) and peval(p, r.exact).is_zero()
     assert abs(float(r.exact) - (1 - 2 ** 0.25 / 2) ** 0.5) < 1e-12
+
+
+def test_quartic_with_an_even_factor_is_solved_by_its_factors():
+    # an arc's denominator 1 + 2 f^2 times a quadratic with a nested-radical root; and
+    # (2 f - 1)-free cubic (1 + f^2)(f - sqrt(2)/2): the linear factor, exact in MQ
+    q = poly((1 - S2) / 4, F(1, 3), 1)
+    p = pmul(poly(1, 0, 2), q)
+    (r,) = roots_in_unit(p)
+    assert is_tower(r.exact) and peval(q, r.exact).is_zero()
+    (r,) = roots_in_unit(pmul(poly(1, 0, 1), (-S2 / 2, Q(1))))
+    assert r.exact == S2 / 2
 
 
 def test_denestable_discriminant_stays_in_the_multiquadratic_field():

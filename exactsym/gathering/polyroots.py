@@ -180,17 +180,32 @@ def _sqrt_rational(q: fmpq, big_ok: bool):
 
 def exact_root_hook(poly, lo, hi):
     """The exact value of the root of ``poly`` (square-free) in ``(lo, hi)`` when it
-    needs a nested radical: a quadratic (its discriminant a square in no multiquadratic
-    field) or a biquadratic quartic ``a f^4 + b f^2 + c``, as a tower number
-    (:mod:`.tower_numbers`).  None for other cubics and quartics: a root of an
-    irreducible factor of degree 3 or 4 is in general not expressible by square roots
-    (and factoring over the coefficients' field is not attempted), so such an instant
-    is only seen on both sides (``sided``)."""
+    needs a nested radical, as a tower number (:mod:`.tower_numbers`): a quadratic (its
+    discriminant a square in no multiquadratic field), a biquadratic quartic
+    ``a f^4 + b f^2 + c``, or a cubic or quartic with a factor ``h(f^2)`` (the common
+    factor of its even and odd parts: an arc's denominator ``1 + T^2 f^2`` times a
+    relation, for example), whose two factors are solved in turn.  None for the other
+    cubics and quartics: a root of an irreducible factor of degree 3 or 4 is in general
+    not expressible by square roots (and factoring over the coefficients' field is not
+    attempted), so such an instant is only seen on both sides (``sided``)."""
+    if len(poly) == 2:
+        r = _linear_root(poly)
+        return r if (r - lo).sign() > 0 and (r - hi).sign() < 0 else None
     if len(poly) == 3:
         c, b, a = poly
         return quadratic_root(c, b, a, lo, hi, mq_sqrt)
     if len(poly) == 5 and poly[1].is_zero() and poly[3].is_zero() and lo >= 0:
         return biquadratic_root(poly, lo, hi, mq_sqrt)
+    if len(poly) in (4, 5):
+        even = trim(c if k % 2 == 0 else ZERO for k, c in enumerate(poly))
+        odd = trim(poly[k + 1] if k % 2 == 0 and k + 1 < len(poly) else ZERO
+                   for k in range(len(poly) - 1))
+        h = pgcd(even, odd) if odd else ()
+        if 1 < len(h) < len(poly):
+            for factor in (h, pdivmod(poly, h)[0]):
+                r = exact_root_hook(factor, lo, hi)
+                if r is not None:
+                    return r
     return None
 
 
