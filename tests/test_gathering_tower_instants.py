@@ -70,10 +70,10 @@ def test_tower_sqrt_denests_and_adds_levels_only_when_needed():
     (r,) = roots_in_unit(poly(1 - S2, 0, 1))          # y = sqrt(sqrt(2) - 1)
     y = r.exact
     u = y + 1
-    assert is_tower(u * u) and tower_sqrt(u * u, mq_sqrt) == u       # denested in the tower
+    assert is_tower(u * u) and tower_sqrt(u * u) == u       # denested in the tower
     assert mq_sqrt(u * u * 9) == 3 * u
     assert mq_sqrt(y * y) is None                  # sqrt(2) - 1: no root in any MQ field
-    z = tower_sqrt(y, mq_sqrt)                        # a fourth root: a new level
+    z = tower_sqrt(y)                        # a fourth root: a new level
     assert is_tower(z) and z * z == y and z.sign() > 0
     assert mq_sqrt(-y) is None
 
@@ -169,3 +169,23 @@ def test_exact_isometry_moves_the_witness_along(rot, reflect, tx, ty):
     assert tie.point == sim(base_tie.point)                            # mapped exactly
     assert f"robot 0 at {g.fmt_point(tie.point)}" in v.witness
     assert w.checker.counts["nested"] >= 1
+
+
+# -- squares in the multiquadratic closure (what lets a tower level be built) ---------------
+_RADICANDS = (1, 2, 3, 5, 6, 7, 10, 15)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.fractions(min_value=-5, max_value=5, max_denominator=7),
+                min_size=len(_RADICANDS), max_size=len(_RADICANDS)),
+       st.sampled_from([1, 2, 3, 11, 13, 22, 39]))
+def test_decided_sqrt_finds_every_root_in_a_larger_field(coeffs, m):
+    from exactsym.exact.mq_closure import decided_sqrt
+    z = sum((Q(c) * sqrt_rational(r) for c, r in zip(coeffs, _RADICANDS)), MQ())
+    x = z * z * m
+    root, decided = decided_sqrt(x)
+    assert decided and root == abs(z) * sqrt_rational(m)
+    # and z^2 times a number that is not a square anywhere: no root, decided
+    if not z.is_zero():
+        root, decided = decided_sqrt(x * (5 + 4 * S2))
+        assert decided and root is None

@@ -28,11 +28,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from math import isqrt
-
 from flint import fmpq
 
-from ..exact.multiquadratic import MQ, _coprime_base, sqrt_rational
+from ..exact.mq_closure import RATIONAL_BITS, closure_sqrt  # noqa: F401 (re-exported)
+from ..exact.multiquadratic import MQ
 from .tower_numbers import biquadratic_root, is_tower, quadratic_root, tower_sqrt
 
 ZERO = MQ()
@@ -127,55 +126,16 @@ def _variations(chain, x) -> int:
 
 
 # -- square roots in the multiquadratic field ------------------------------------------
-def mq_sqrt(x: MQ, _depth: int = 0, big_ok: bool = False):
+def mq_sqrt(x, _depth: int = 0, big_ok: bool = False):
     """The non-negative square root of ``x >= 0`` when it lies in a multiquadratic field,
-    else None.  With ``b`` an element of a coprime base of ``x``'s radicands (every
-    radicand is a product of distinct base elements), ``x = A + B sqrt(b)`` with ``A``,
-    ``B`` free of ``b``; a root ``P + Q sqrt(b)`` has ``P^2 - b Q^2 = +-sqrt(A^2 - b B^2)``
-    and ``P^2 = (A + that) / 2``: square roots one level down, recursively, down to
-    rationals.  Every answer is verified by squaring, so a miss is a None, never a wrong
-    root.  A rational that is not a square and has more than :data:`RATIONAL_BITS` bits
-    is a miss (its square-free part needs a factorisation that can take minutes), except
-    ``x`` itself with ``big_ok`` (as :func:`sqrt_rational` always did).  For a tower
-    number ``x`` (:mod:`.tower_numbers`) the answer is its root in the tower, a new level
-    when it has none there (never None for ``x > 0``)."""
+    else None (:func:`exactsym.exact.mq_closure.closure_sqrt`: a recursive denesting
+    verified by squaring; a rational that is not a square and has more than
+    :data:`RATIONAL_BITS` bits is a miss, except ``x`` itself with ``big_ok``).  For a
+    tower number ``x`` (:mod:`.tower_numbers`) the answer is its root in the tower, a new
+    level when it has none there (None only when that cannot be decided)."""
     if is_tower(x):                     # a tower number: its root in the tower
-        return tower_sqrt(x, mq_sqrt) if x.sign() > 0 else None
-    if x.is_zero():
-        return MQ()
-    if x.sign() < 0 or _depth > 8:
-        return None
-    if x.is_rational():
-        return _sqrt_rational(x.to_fmpq(), big_ok)
-    b = max(_coprime_base(x.radicands()))
-    A = MQ({m: c for m, c in x.terms.items() if m % b})
-    B = MQ({m // b: c for m, c in x.terms.items() if m % b == 0})
-    n = mq_sqrt(A * A - B * B * b, _depth + 1)
-    if n is None:
-        return None
-    for half in ((A + n) / 2, (A - n) / 2):
-        P = mq_sqrt(half, _depth + 1) if half.sign() >= 0 else None
-        if P is None or P.is_zero():
-            continue
-        y = P + (B / (P * 2)) * MQ({b: fmpq(1)})        # b is square-free
-        if y * y == x:
-            return y if y.sign() >= 0 else -y
-    return None
-
-
-RATIONAL_BITS = 160
-
-
-def _sqrt_rational(q: fmpq, big_ok: bool):
-    if q < 0:
-        return None
-    num, den = int(q.p), int(q.q)
-    r = isqrt(num * den)
-    if r * r == num * den:
-        return MQ.rational(fmpq(r, den))
-    if not big_ok and (num * den).bit_length() > RATIONAL_BITS:
-        return None
-    return sqrt_rational(q)
+        return tower_sqrt(x) if x.sign() > 0 else None
+    return closure_sqrt(x, _depth, big_ok)
 
 
 def exact_root_hook(poly, lo, hi):
@@ -193,9 +153,9 @@ def exact_root_hook(poly, lo, hi):
         return r if (r - lo).sign() > 0 and (r - hi).sign() < 0 else None
     if len(poly) == 3:
         c, b, a = poly
-        return quadratic_root(c, b, a, lo, hi, mq_sqrt)
+        return quadratic_root(c, b, a, lo, hi)
     if len(poly) == 5 and poly[1].is_zero() and poly[3].is_zero() and lo >= 0:
-        return biquadratic_root(poly, lo, hi, mq_sqrt)
+        return biquadratic_root(poly, lo, hi)
     if len(poly) in (4, 5):
         even = trim(c if k % 2 == 0 else ZERO for k, c in enumerate(poly))
         odd = trim(poly[k + 1] if k % 2 == 0 and k + 1 < len(poly) else ZERO

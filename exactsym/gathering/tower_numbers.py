@@ -16,12 +16,15 @@ simulator needs on top of it:
   ``a f^4 + b f^2 + c``) inside a rational interval, as a tower number;
 * :func:`tower_sqrt` -- the square root of a tower number.
 
+A rational of more than 160 bits met on the way that is not a perfect square is not
+factored (minutes, possibly): the root then stays without an exact value (``sided``).
+
 Soundness of the canonical form.  The tower's canonical form (``a + b y`` with ``y^2``
 not a square below) makes ``==`` exact only while the radicand of every level is a
 non-square in the field below *whatever square roots of rationals appear later* (a
 Look builds new ones: layer slots, radial targets).  So a level is added only after
-:func:`~.polyroots.mq_sqrt` -- which searches the whole multiquadratic closure, any
-primes -- found no root: a radicand of level 1 is then a non-square in every
+:func:`~exactsym.exact.mq_closure.decided_sqrt` -- which searches the whole
+multiquadratic closure, any primes -- proved there is no root: a radicand of level 1 is then a non-square in every
 multiquadratic field, and the same check one level down makes :func:`tower_sqrt`
 sound for level-1 numbers.  Square roots of numbers of level 2 or more fall back to the
 tower's own test over its base primes (never needed by the simulator's runs so far).
@@ -39,6 +42,7 @@ from functools import lru_cache
 
 from flint import fmpz
 
+from ..exact.mq_closure import decided_sqrt
 from ..exact.multiquadratic import MQ
 from ..exact.tower import Tower, TowerElement, _is_zero, _raw, add, neg, sub
 
@@ -154,20 +158,24 @@ def _new_root(radicand: MQ) -> TowerNumber:
     return TowerNumber(tower, tower.sqrt(radicand))
 
 
-def mq_sqrt_any(x, sqrt_mq):
+def mq_sqrt_any(x):
     """The non-negative root of ``x >= 0`` (an MQ or a tower number): in the
-    multiquadratic closure when it lies there (``sqrt_mq``: :func:`.polyroots.mq_sqrt`),
-    else a tower number (a new tower, or a new level of ``x``'s tower)."""
+    multiquadratic closure when it lies there, else a tower number (a new tower, or a
+    new level of ``x``'s tower); None when that cannot be decided (a large rational left
+    unfactored on the way: :func:`~exactsym.exact.mq_closure.decided_sqrt`)."""
     if is_tower(x):
-        return tower_sqrt(x, sqrt_mq)
-    root = sqrt_mq(x, big_ok=True)
-    return root if root is not None else _new_root(x)
+        return tower_sqrt(x)
+    root, decided = decided_sqrt(x)
+    if root is not None or not decided:
+        return root
+    return _new_root(x)
 
 
-def tower_sqrt(x: TowerElement, sqrt_mq):
+def tower_sqrt(x: TowerElement):
     """The non-negative square root of the tower number ``x > 0``: an element of its
     tower when it has one there (level 1: searched over the multiquadratic closure, so
-    a miss is a true non-square), else the generator of a new level."""
+    a miss is a true non-square), else the generator of a new level; None when the
+    closure search cannot decide."""
     tower = x.tower
     if x.sign() < 0:
         raise ValueError("square root of a negative number")
@@ -175,10 +183,14 @@ def tower_sqrt(x: TowerElement, sqrt_mq):
     if v[0] == 1:
         a, b = v[1], v[2]
         r = tower.radicands[0]
-        n = sqrt_mq(a * a - r * b * b, big_ok=True)
+        n, decided = decided_sqrt(a * a - r * b * b)
+        if not decided:
+            return None
         if n is not None:
             for t in ((a + n) / 2, (a - n) / 2):
-                c = sqrt_mq(t, big_ok=True) if t.sign() >= 0 else None
+                c, decided = decided_sqrt(t) if t.sign() >= 0 else (None, True)
+                if not decided:
+                    return None
                 if c is not None and not c.is_zero():
                     y = TowerNumber(tower, (1, c, b / (c * 2)))
                     if y * y == x:
@@ -191,22 +203,24 @@ def _in(x, lo, hi) -> bool:
     return (x - lo).sign() > 0 and (x - hi).sign() < 0
 
 
-def quadratic_root(c, b, a, lo, hi, sqrt_mq):
+def quadratic_root(c, b, a, lo, hi):
     """The root of ``a f^2 + b f + c`` (MQ coefficients, a != 0) in ``(lo, hi)``, exact:
     an MQ when the discriminant is a square there, else a tower number; None when no
-    root lies in the interval."""
+    root lies in the interval (or a large rational on the way was left unfactored)."""
     bm, cm = b / a, c / a                      # monic: one radicand per root
     disc = bm * bm - cm * 4
     if disc.sign() < 0:
         return None
-    y = mq_sqrt_any(disc, sqrt_mq)
+    y = mq_sqrt_any(disc)
+    if y is None:
+        return None
     for r in ((-bm - y) / 2, (-bm + y) / 2):
         if _in(r, lo, hi):
             return r
     return None
 
 
-def biquadratic_root(p, lo, hi, sqrt_mq):
+def biquadratic_root(p, lo, hi):
     """The root of ``p = c + b f^2 + a f^4`` (odd coefficients zero) in ``(lo, hi)``,
     ``0 <= lo``: ``f = sqrt(u)``, ``u`` a root of ``a u^2 + b u + c``; None otherwise."""
     c, _, b, _, a = p
@@ -214,11 +228,13 @@ def biquadratic_root(p, lo, hi, sqrt_mq):
     disc = bm * bm - cm * 4
     if disc.sign() < 0:
         return None
-    y = mq_sqrt_any(disc, sqrt_mq)
+    y = mq_sqrt_any(disc)
+    if y is None:
+        return None
     for u in ((-bm - y) / 2, (-bm + y) / 2):
         if u.sign() <= 0:
             continue
-        f = mq_sqrt_any(u, sqrt_mq)
-        if _in(f, lo, hi):
+        f = mq_sqrt_any(u)
+        if f is not None and _in(f, lo, hi):
             return f
     return None
