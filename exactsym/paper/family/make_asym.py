@@ -14,6 +14,7 @@ from typing import Iterable, Sequence
 from .. import polygon as P
 from ...configuration import Configuration, Polar
 from ...errors import MoveImpossible
+from ...exact.adjoin_sqrt import adjoin_sqrt
 from ...exact import fmpq, normal_turn, number_text, sign
 from ...levels import Levels
 from ..circle_polygon import polygon_from_directions
@@ -44,6 +45,7 @@ class _Placement:
         else:
             self.points = list(config.points)
             self.centre = ring_data.sec.centre
+            self.system = config.system     # grows when a radial move adjoins a square root
 
     # -- reading
     def direction(self, i):
@@ -73,9 +75,25 @@ class _Placement:
         v = self.direction(i)
         scale = scale_to(self.r2_of(j), self.r2_of(i))
         if scale is None:
-            return False
+            # sqrt of the ratio outside the field: adjoin it (a square root of a rational,
+            # or a tower level for a nested radical); None: out of reach
+            found = adjoin_sqrt(self.system, [c for p in self.points for c in p]
+                                + list(self.centre), self.r2_of(j) / self.r2_of(i))
+            if found is None:
+                return False
+            self._rehome(found[0])
+            scale = found[1]
         self.set_vector(i, (v[0] * scale, v[1] * scale))
         return True
+
+    def _rehome(self, system):
+        """Write every number in ``system`` (a field that contains the old one)."""
+        if system is self.system:
+            return
+        c = system.coerce
+        self.points = [(c(x), c(y)) for x, y in self.points]
+        self.centre = (c(self.centre[0]), c(self.centre[1]))
+        self.system = system
 
     def r2_of(self, i):
         if self.polar:
@@ -88,7 +106,11 @@ class _Placement:
         if self.polar:
             return self.config.with_positions({i: Polar(self.radii[i], self.turns[i])
                                                for i in sorted(self.changed)})
-        return self.config.with_positions({i: self.points[i] for i in sorted(self.changed)})
+        config = self.config
+        if self.system is not config.system:    # a square root was adjoined
+            config = Configuration(source=config.source, name=config.name, model=config.model,
+                                   points=self.points, system=self.system)
+        return config.with_positions({i: self.points[i] for i in sorted(self.changed)})
 
 
 def _global_gap(place: _Placement, robots: Iterable[int]):

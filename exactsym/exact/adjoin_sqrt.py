@@ -1,0 +1,76 @@
+"""A square root that the configuration's number system may not hold: adjoin it.
+
+MakeAsym moves a robot radially to another circle (L1526, "move v_l to the circumference
+of the enclosing circle of G_t"): the scale factor is ``sqrt(r_to^2 / r_from^2)``.  When
+that square root is not in the configuration's field, the configuration after the move
+lives in a larger one: the multiquadratic field with one more square root of a rational,
+or a tower of quadratic extensions over it (:class:`~.evaluate.TowerSystem`, a nested
+radical).  :func:`adjoin_sqrt` returns the root and the number system that holds it with
+every number of the configuration.
+
+Out of reach (None): a configuration in a cyclotomic field (polar files with rational
+turns beyond square roots, ``FieldSystem``) -- a tower over a cyclotomic field is not
+provided -- and a radicand whose square-freeness check would factor a rational of more
+than 160 bits (:func:`~.mq_closure.decided_sqrt`).
+"""
+
+from __future__ import annotations
+
+from flint import fmpz
+
+from .evaluate import MultiquadraticSystem, RationalSystem, TowerSystem
+from .field import FieldElement
+from .mq_closure import decided_sqrt
+from .multiquadratic import MQ
+from .tower import TowerElement
+
+__all__ = ["adjoin_sqrt"]
+
+
+def _as_mq(x):
+    if isinstance(x, MQ):
+        return x
+    if isinstance(x, FieldElement):
+        return None                       # a cyclotomic (or tower) number
+    return MQ.rational(x)
+
+
+def _radicands(values) -> set:
+    out: set = set()
+    for v in values:
+        out |= set(v.radicands())
+    return out
+
+
+def adjoin_sqrt(system, numbers, x):
+    """``(system2, root)``: the non-negative square root of the kernel number ``x >= 0``
+    and a number system holding it and every one of ``numbers`` (the configuration's
+    coordinates, in ``system``); ``system2`` is ``system`` when it already holds the
+    root.  None when out of reach (see the module docstring)."""
+    if isinstance(system, TowerSystem):
+        raw = x.v if isinstance(x, TowerElement) else system.coerce(x)
+        if isinstance(raw, MQ):
+            root, decided = decided_sqrt(raw)
+            if root is not None:
+                return system, root
+            if not decided:
+                return None
+        return system, system.sqrt(x)
+    if not isinstance(system, (RationalSystem, MultiquadraticSystem)):
+        return None
+    mx = _as_mq(x)
+    values = [_as_mq(v) for v in numbers]
+    if mx is None or any(v is None for v in values):
+        return None
+    root, decided = decided_sqrt(mx)
+    if root is not None:
+        have = set(getattr(system, "radicands", ()))
+        need = _radicands([root]) - {1}
+        if isinstance(system, MultiquadraticSystem) and need <= have:
+            return system, root
+        return MultiquadraticSystem(have | need | _radicands(values)), root
+    if not decided:
+        return None
+    primes = sorted({int(p) for m in _radicands(values + [mx]) for p, _ in fmpz(m).factor()})
+    tower = TowerSystem(primes)
+    return tower, tower.sqrt(mx)
