@@ -217,8 +217,15 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
 
     Epsilon moves: :func:`_epsilon_rotation` (exact: a rational turn, or a rational
     rotation keeping the robot on its circle).  "Move v_l to the circumference of the
-    enclosing circle of G_t": radially, same direction (exact when polar or when the
-    radii's ratio is rational).  "Move v, epsilon distance" for a single-vertex polygon:
+    enclosing circle of G_t": radially, same direction, exact: polar, or the square root
+    of the radii's squared ratio -- adjoined when it is outside the configuration's field
+    (:func:`~exactsym.exact.adjoin_sqrt.adjoin_sqrt`: a larger multiquadratic field, or a
+    tower of quadratic extensions for a nested radical; the configuration after the
+    moves is then written in that field).  Out of reach, the move is "not exact"
+    (outcome "undecided", the paper layer's ``complete: false``): a Cartesian
+    configuration in a cyclotomic field (a tower over it is not provided), or a radicand
+    whose check needs a rational of more than 160 bits factored.  "Move v, epsilon
+    distance" for a single-vertex polygon:
     along its circle (the robot at C moves to a quarter of the smallest radius, towards
     the first vertex of G_t counter-clockwise from the observer's x axis: no invariant
     direction exists there)."""
@@ -255,7 +262,8 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
         if not ok:
             trace_entry(trace, alg, line, [Gt.name], alg,
                         f"move robot {robot} to the circle of {Gt.name}: the point is not exact "
-                        "in this number field (ratio of radii not a rational square)",
+                        "here (the square root of the ratio of radii is outside this cyclotomic "
+                        "field, or needs a large rational factored)",
                         robots=[robot], branch=branch, round=rnd)
             return False
         trace_entry(trace, alg, line, [Gp[-2].name if t > 1 else Gt.name, Gt.name], alg,
