@@ -99,18 +99,13 @@ def _kummer_root(y: MQ, primes, free: bool, unsure: list):
         return MQ()
     if y.is_rational():
         q = y.to_fmpq()
-        if q < 0:
-            return None
-        num, den = int(q.p), int(q.q)
-        r = isqrt(num * den)
-        if r * r == num * den:
-            return MQ.rational(fmpq(r, den))
-        if not free:
-            return None
-        if (num * den).bit_length() > RATIONAL_BITS:
-            unsure.append(y)
-            return None
-        return sqrt_rational(q)
+        root = _rational_square_root(q)
+        if root is not None or q < 0 or not free:
+            return root
+        root = _sqrt_rational(q, False)
+        if root is None:
+            unsure.append(y)                 # a large rational, left unfactored
+        return root
     if not primes:
         return None
     p, below = primes[-1], primes[:-1]
@@ -137,13 +132,22 @@ def _kummer_root(y: MQ, primes, free: bool, unsure: list):
     return None
 
 
-def _sqrt_rational(q: fmpq, big_ok: bool):
+def _rational_square_root(q: fmpq):
+    """The rational root of ``q``, or None (no factoring)."""
     if q < 0:
         return None
     num, den = int(q.p), int(q.q)
     r = isqrt(num * den)
-    if r * r == num * den:
-        return MQ.rational(fmpq(r, den))
+    return MQ.rational(fmpq(r, den)) if r * r == num * den else None
+
+
+def _sqrt_rational(q: fmpq, big_ok: bool):
+    if q < 0:
+        return None
+    root = _rational_square_root(q)
+    if root is not None:
+        return root
+    num, den = int(q.p), int(q.q)
     if not big_ok and (num * den).bit_length() > RATIONAL_BITS:
         return None
     return sqrt_rational(q)

@@ -44,7 +44,7 @@ from flint import fmpz
 
 from ..exact.mq_closure import decided_sqrt
 from ..exact.multiquadratic import MQ
-from ..exact.tower import Tower, TowerElement, _is_zero, _raw, add, neg, sub
+from ..exact.tower import Tower, TowerElement, _is_zero, _raw, neg
 
 __all__ = ["TowerNumber", "tower_of", "quadratic_root", "biquadratic_root", "tower_sqrt",
            "is_tower"]
@@ -70,24 +70,11 @@ class TowerNumber(TowerElement):
         o = _raw(self.tower, other)
         return NotImplemented if o is None else _wrap(self.tower, op(self.v, o))
 
-    def __add__(self, other):
-        return self._bin(other, add)
-
-    __radd__ = __add__
-
-    def __sub__(self, other):
-        return self._bin(other, sub)
-
-    def __rsub__(self, other):
-        return self._bin(other, lambda x, y: sub(y, x))
+    # + - * go through _bin (TowerElement's operators call it): only the operations that
+    # do not are written again here, to keep the type
 
     def __neg__(self):
         return TowerNumber(self.tower, neg(self.v))
-
-    def __mul__(self, other):
-        return self._bin(other, self.tower.mul)
-
-    __rmul__ = __mul__
 
     def inverse(self):
         return _wrap(self.tower, self.tower.inverse(self.v))
@@ -203,38 +190,31 @@ def _in(x, lo, hi) -> bool:
     return (x - lo).sign() > 0 and (x - hi).sign() < 0
 
 
+def _monic_roots(c, b, a):
+    """The real roots of ``a u^2 + b u + c`` (MQ coefficients, a != 0), exact (MQ or tower
+    numbers; the discriminant of the monic polynomial: one radicand per root); ``()``
+    when there are none, None when the square root cannot be decided."""
+    bm, cm = b / a, c / a
+    disc = bm * bm - cm * 4
+    if disc.sign() < 0:
+        return ()
+    y = mq_sqrt_any(disc)
+    return None if y is None else ((-bm - y) / 2, (-bm + y) / 2)
+
+
 def quadratic_root(c, b, a, lo, hi):
     """The root of ``a f^2 + b f + c`` (MQ coefficients, a != 0) in ``(lo, hi)``, exact:
     an MQ when the discriminant is a square there, else a tower number; None when no
     root lies in the interval (or a large rational on the way was left unfactored)."""
-    bm, cm = b / a, c / a                      # monic: one radicand per root
-    disc = bm * bm - cm * 4
-    if disc.sign() < 0:
-        return None
-    y = mq_sqrt_any(disc)
-    if y is None:
-        return None
-    for r in ((-bm - y) / 2, (-bm + y) / 2):
-        if _in(r, lo, hi):
-            return r
-    return None
+    return next((r for r in _monic_roots(c, b, a) or () if _in(r, lo, hi)), None)
 
 
 def biquadratic_root(p, lo, hi):
     """The root of ``p = c + b f^2 + a f^4`` (odd coefficients zero) in ``(lo, hi)``,
     ``0 <= lo``: ``f = sqrt(u)``, ``u`` a root of ``a u^2 + b u + c``; None otherwise."""
     c, _, b, _, a = p
-    bm, cm = b / a, c / a
-    disc = bm * bm - cm * 4
-    if disc.sign() < 0:
-        return None
-    y = mq_sqrt_any(disc)
-    if y is None:
-        return None
-    for u in ((-bm - y) / 2, (-bm + y) / 2):
-        if u.sign() <= 0:
-            continue
-        f = mq_sqrt_any(u)
+    for u in _monic_roots(c, b, a) or ():
+        f = mq_sqrt_any(u) if u.sign() > 0 else None
         if f is not None and _in(f, lo, hi):
             return f
     return None
