@@ -189,3 +189,15 @@ def test_decided_sqrt_finds_every_root_in_a_larger_field(coeffs, m):
     if not z.is_zero():
         root, decided = decided_sqrt(x * (5 + 4 * S2))
         assert decided and root is None
+
+
+def test_a_run_checks_its_nested_radical_instants_at_the_instant():
+    # the corrected variant's detour (an arc, then a segment) meets four instants that
+    # need nested radicals; before towers they were seen on both sides only (sided 4)
+    from pathlib import Path
+    from exactsym.gathering.cases import run_case_file
+    case = Path(__file__).resolve().parent.parent / "cases" / "gathering" / \
+        "corrected-obstacle-beside-path.toml"
+    run = run_case_file(case)
+    assert not run.failures and run.result.outcome == "gathered"
+    assert run.result.checks["nested"] == 4 and run.result.checks["sided"] == 0
