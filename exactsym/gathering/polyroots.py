@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 
 from flint import fmpq
 
-from ..exact.mq_closure import RATIONAL_BITS, closure_sqrt  # noqa: F401 (re-exported)
+from ..exact.mq_closure import RATIONAL_BITS, closure_sqrt, decided_sqrt  # noqa: F401
 from ..exact.multiquadratic import MQ
 from .tower_numbers import biquadratic_root, is_tower, quadratic_root, tower_sqrt
 
@@ -138,6 +138,13 @@ def mq_sqrt(x, _depth: int = 0, big_ok: bool = False):
     return closure_sqrt(x, _depth, big_ok)
 
 
+def _disc_root(disc):
+    """A discriminant's root in the multiquadratic closure, or None: the complete test
+    (:func:`~exactsym.exact.mq_closure.decided_sqrt`, a finite search), not
+    :func:`mq_sqrt`'s, whose recursion can branch thousands of times before it gives up."""
+    return decided_sqrt(disc)[0]
+
+
 def exact_root_hook(poly, lo, hi):
     """The exact value of the root of ``poly`` (square-free) in ``(lo, hi)`` when it
     needs a nested radical, as a tower number (:mod:`.tower_numbers`): a quadratic (its
@@ -236,7 +243,7 @@ def roots_in_unit(poly, tag=None) -> list:
         disc = b * b - a * c * 4
         if disc.sign() < 0:
             return []
-        root = mq_sqrt(disc)
+        root = _disc_root(disc)
         if root is not None:
             for r in {(-b - root) / (a * 2), (-b + root) / (a * 2)}:
                 if r.sign() > 0 and (r - 1).sign() < 0:
@@ -300,7 +307,7 @@ def _exact_in(p, a, b):
         return _linear_root(p)
     if len(p) == 3:
         c, bb, aa = p
-        root = mq_sqrt(bb * bb - aa * c * 4)
+        root = _disc_root(bb * bb - aa * c * 4)
         if root is not None:
             for r in ((-bb - root) / (aa * 2), (-bb + root) / (aa * 2)):
                 if (r - a).sign() > 0 and (r - b).sign() < 0:
