@@ -36,7 +36,9 @@ from itertools import combinations
 from flint import fmpq
 
 from ..exact.multiquadratic import MQ
+from . import geometry as g
 from .instants import Motion, _reach, hull_indices, motion_of
+from .joint_symmetry import symmetry_polys
 from .polyroots import padd, pmul, pscale, psub, roots_of
 
 ONE = MQ.rational(1)
@@ -166,12 +168,30 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
                 polys.append((contact_poly(motions[i], motions[k], MQ.rational(4)),
                               ("pattern", f"robots {i} and {k} touching")))
     polys += _sec(motions, movers, "SEC of all")
+    polys += symmetry_polys(motions, movers, sorted(motions), "all robots", centres)
     rsets = {world.robots[i].r_set for i in movers}
-    for rset in rsets:
+    for rset in sorted(rsets, key=sorted):
         if rset and (sec_r or len(rset) < n):
             sub = {k: m for k, m in motions.items() if k in rset}
             polys += _sec(sub, movers & set(sub), "SEC of R")
-    return roots_of((poly, tag) for poly, tag in polys if poly)
+            # the paper layer orders R about R's own SEC centre: the rays and ties about
+            # it (the centre of R's robots standing still: it moves only where a mover
+            # of R is a support, at the SEC of R instants above), as instants.py does
+            known = set(centres)
+            stills = [_const(m) for k, m in sub.items() if k not in movers]
+            if len(stills) >= 2 and movers & set(sub):
+                c_r = g.smallest_enclosing_circle(stills)[0]
+                if c_r not in centres:
+                    polys += _about(sub, movers, c_r, "the centre of R's SEC")
+                known.add(c_r)
+            polys += symmetry_polys(motions, movers, sorted(sub), "R", known)
+    roots = roots_of((poly, tag) for poly, tag in polys if poly)
+    for r in roots:
+        # a rotation or a reflection about that centre can swap two robots as far from
+        # it (joint_symmetry, case B): the ties are symmetry candidates too (the same
+        # description: a Look's text names the tie once)
+        r.tags += [("symmetry", w) for f, w in list(r.tags) if f == "distance"]
+    return roots
 
 
 @dataclass(frozen=True)
