@@ -18,14 +18,28 @@ involve at least one mover (the others do not change during the step):
   circle, among the SEC candidates: every mover and the hull vertices of the robots
   standing still (a still robot inside the still robots' hull is never on the hull,
   so never a support); of all robots, and of R when R is not all of them (A1 = sec-r,
-  or the pattern holds robots).
+  or the pattern holds robots);
+* ``symmetry`` -- a symmetry of all the robots, or of R, can appear
+  (:mod:`.joint_symmetry`: a mover on a mirror line of the robots standing still or
+  two movers mirror images in it, a mover at the centre of a rotation of the robots
+  standing still or two movers as far from it, a mover and a still robot as far from
+  the SEC centre of the robots standing still -- or from the moving centroid where a
+  mover can leave that SEC); every ``distance`` root is tagged ``symmetry`` too (a
+  rotation or a reflection about that centre can swap the two robots).  Necessary
+  conditions only: a superset of the instants where a symmetry appears.
 
-Not enumerated for a joint step (unlike :mod:`.instants`): the ``symmetry`` family
-(mirror lines and rotations of a moving set).  A superset of the events above: a
-candidate where nothing happens costs a Look.  :func:`joint_look_points` gives, as
-:func:`.instants.look_points` does, each instant whose value the kernel holds and one
-rational instant in each open stretch between consecutive instants (strictly inside
-(0, 1)); an instant that needs a nested radical is seen on both sides only (``sided``).
+About R's own SEC centre (the paper layer orders R about it), when R is not every
+robot or A1 = sec-r: the ``ray`` and ``distance`` relations among R's robots about the
+SEC centre of R's robots standing still, as :mod:`.instants` does for one mover (that
+centre moves only where a mover of R is a support: the SEC-of-R instants; the ties
+about the moving centre are not enumerated, only the symmetry family's centroid ties).
+
+A superset of the events above: a candidate where nothing happens costs a Look.
+:func:`joint_look_points` gives, as :func:`.instants.look_points` does, each instant
+whose value the kernel holds and one rational instant in each open stretch between
+consecutive instants (strictly inside (0, 1)); an instant that needs a nested radical
+is seen on both sides only (``sided``).  ``invariants.Checker`` checks I3, I4 and I6 at
+every Look, I9 at those of the ``sec`` and ``symmetry`` instants and beside them.
 """
 
 from __future__ import annotations
