@@ -292,3 +292,87 @@ def test_joint_symmetry_look_points_stay_in_order():
     assert sum(p.exact for p in pts) + sided == len(roots)
     assert symmetry_polys({k: still(P(k, k * k)) for k in range(5)}, set(), range(5),
                           "all") == []                            # nobody moves
+
+
+# -- the superset property ---------------------------------------------------------------
+def _symmetric_step(data, kind):
+    """Robots symmetric at a rational time ``ts`` under ``kind`` (``mirror``: x -> -x;
+    ``half``: p -> -p), then a random congruence: the robots standing still are pairs
+    of images (and, for the mirror, robots on the axis); the movers, each on a random
+    segment through its point at ``ts``, are a pair of images, on the axis / at the
+    centre, or the image of a robot standing still (that robot's partner)."""
+    img = (lambda p: (-p[0], p[1])) if kind == "mirror" else (lambda p: (-p[0], -p[1]))
+    coord = st.integers(-30, 30).filter(lambda v: v != 0)
+    pts, still_pairs = [], data.draw(st.integers(1, 3))
+    for _ in range(still_pairs):
+        p = (data.draw(coord), data.draw(coord))
+        pts += [p, img(p)]
+    if kind == "mirror" and data.draw(st.booleans()):
+        pts.append((0, data.draw(coord)))
+    ts = data.draw(st.fractions(F(1, 10), F(9, 10), max_denominator=12))
+    at_ts = []
+    shape = data.draw(st.sampled_from(["pair", "fixed", "swap"]))
+    if shape == "swap" and kind == "mirror" and len(pts) % 2:
+        pts.pop()                                  # the axis robot: its own image
+    if shape == "pair":
+        p = (data.draw(coord), data.draw(coord))
+        at_ts = [p, img(p)]
+    elif shape == "fixed":
+        at_ts = [(0, data.draw(coord)) if kind == "mirror" else (0, 0)]
+        q = (data.draw(coord), data.draw(coord))
+        at_ts += [q, img(q)]                      # a second pair of movers
+    else:
+        q = pts.pop()            # a mover at q: the image of the still robot img(q)
+        p = (data.draw(coord), data.draw(coord))
+        at_ts = [q, p, img(p)]
+    vel = st.tuples(st.integers(-9, 9), st.integers(-9, 9))
+    pieces = []
+    for p in at_ts:
+        v = data.draw(vel)
+        pieces.append(((p[0] - ts * v[0], p[1] - ts * v[1]),
+                       (p[0] + (1 - ts) * v[0], p[1] + (1 - ts) * v[1])))
+    a, b = data.draw(st.sampled_from([(F(3, 5), F(4, 5)), (F(5, 13), F(-12, 13)),
+                                      (F(1), F(0))]))
+    fr = Frame(a, b, data.draw(st.booleans()), F(data.draw(st.integers(-5, 5)), 3), F(2))
+    start = [P(*p) for p in pts] + [P(*s) for s, _ in pieces]
+    movers = {len(pts) + k: g.Segment(fr.to_local(P(*s)), fr.to_local(P(*e)))
+              for k, (s, e) in enumerate(pieces)}
+    start = [fr.to_local(p) for p in start]
+
+    def symmetric_at(t):         # before the congruence: closed under the image map
+        now = set(pts) | {(s[0] + t * (e[0] - s[0]), s[1] + t * (e[1] - s[1]))
+                          for s, e in pieces}
+        return all(img(p) in now for p in now)
+    return start, movers, ts, symmetric_at
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.data(), st.sampled_from(["mirror", "half"]))
+def test_every_symmetric_instant_of_a_joint_step_is_a_symmetry_root(data, kind):
+    """Whatever the movers do elsewhere, a time at which the robots are symmetric is
+    among the roots tagged ``symmetry`` (exactly, or a root of its polynomial in its
+    isolating interval): the family is a superset."""
+    start, movers, ts, symmetric_at = _symmetric_step(data, kind)
+    assert symmetric_at(ts)
+    if symmetric_at(ts + F(1, 97)):
+        return             # symmetric a moment later too: no instant where it appears
+    if len(start) - len(movers) < 2:
+        return             # fewer than two robots standing still: not enumerated
+    if len({(str(p[0]), str(p[1])) for p in start}) < len(start):
+        return                                    # two robots at one point: not a state
+    at = [movers[k].at(Q(ts)) if k in movers else p for k, p in enumerate(start)]
+    if len({(str(p[0]), str(p[1])) for p in at}) < len(at):
+        return
+    w = World([(0, 0)] * len(start), Readings())
+    for rob, p in zip(w.robots, start):
+        rob.pos = p
+    t = Q(ts)
+    hit = False
+    for r in joint_critical_roots(movers, w):
+        if not any(tag[0] == "symmetry" for tag in r.tags):
+            continue
+        if r.exact is not None:
+            hit = hit or r.exact == t
+        else:
+            hit = hit or (Q(r.lo) < t < Q(r.hi) and peval(r.poly, t).is_zero())
+    assert hit
