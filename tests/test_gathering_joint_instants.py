@@ -67,6 +67,14 @@ def test_two_movers_become_mirror_images_in_a_line_of_the_others():
     # at that instant the configuration is its own mirror image in x = 0
     pts = {(-x, y) for x, y in (pieces[3].at(Q(F(1, 3))), pieces[4].at(Q(F(1, 3))))}
     assert pts == {pieces[3].at(Q(F(1, 3))), pieces[4].at(Q(F(1, 3)))}
+    # a fresh Look at tau = 1/3 exactly (and beside it) compares the two frames: I9
+    # is checked there and holds (the symmetric configuration is in O_S in every frame:
+    # "gathering not possible", nobody moves)
+    pts, _ = joint_look_points(pieces, w)
+    assert [p.tau for p in pts if p.exact and "symmetry" in p.families] == [Q(F(1, 3))]
+    w.advance_together([(3, None, False), (4, None, False)])
+    assert w.checker.counts["I9"] == sum(1 for p in pts if p.families & {"sec", "symmetry"})
+    assert w.checker.counts["I9"] >= 2
     # the same movers one unit lower on the right: never mirror images, no such root
     pieces = {3: seg((-6, -10), (0, -10)), 4: seg((3, -11), (6, -11))}
     w = moved_world(STILL3 + [(-6, -10), (3, -11)], pieces)
