@@ -9,7 +9,7 @@ from fractions import Fraction as F
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from exactsym.exact.multiquadratic import MQ
+from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
 from exactsym.gathering.instants import motion_of
 from exactsym.gathering.invariants import Checker, Violation
@@ -171,17 +171,12 @@ def test_ties_and_rays_about_the_centre_of_Rs_sec():
     # |(0, 3 + 4 tau)|^2 = |(5 - 10 tau, -5 tau)|^2: 9 + 24 tau + 16 tau^2 =
     # 25 - 100 tau + 125 tau^2, 109 tau^2 - 124 tau + 16 = 0,
     # tau = (62 - 10 sqrt(21)) / 109
-    assert r.exact == Q(F(62, 109)) - Q(F(10, 109)) * _sqrt(21)
+    assert r.exact == Q(F(62, 109)) - Q(F(10, 109)) * sqrt_rational(21)
     assert ("symmetry", "robots 4 and 5 as far from the centre of R's SEC") in r.tags
     rays = roots_by_tag(pieces, w, "ray")
     assert rays["robots 2 and 5 on one line through the centre of R's SEC"] == Q(F(1, 2))
     w = moved_world(pts, pieces, centre=P(0, 0), r_set=range(6))
     assert not [k for k in roots_by_tag(pieces, w, "distance") if "R's SEC" in k]
-
-
-def _sqrt(n):
-    from exactsym.exact.multiquadratic import sqrt_rational
-    return sqrt_rational(n)
 
 
 # -- I9 inside a joint step -------------------------------------------------------------

@@ -5,7 +5,8 @@ In a step (``World.advance_together``) every mover is at ``piece.at(tau)`` at th
 time ``tau`` in [0, 1]: affine in ``tau`` on a segment, rational in it on an arc
 (:func:`.instants.motion_of`, denominator ``1 + T^2 tau^2 > 0``), and a robot standing
 still is a constant motion.  Each relation between robots below is, denominators
-cleared (positive factors: no sign changes), a polynomial in ``tau``; its roots in
+cleared (positive factors: no sign changes), a polynomial in ``tau``
+(:mod:`.joint_relations`); its roots in
 (0, 1) are isolated exactly (:mod:`.polyroots`).  Families, each over the relations that
 involve at least one mover (the others do not change during the step):
 
@@ -51,72 +52,11 @@ from flint import fmpq
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
-from .instants import Motion, _reach, hull_indices, motion_of
+from .instants import _reach, hull_indices, motion_of
+from .joint_relations import (const, contact_poly, incircle_poly, ray_poly, rel,
+                              right_poly, sq, still, tie_poly)
 from .joint_symmetry import symmetry_polys
-from .polyroots import padd, pmul, pscale, psub, roots_of
-
-ONE = MQ.rational(1)
-
-
-def still(p) -> Motion:
-    return Motion((p[0],), (p[1],), (ONE,))
-
-
-def _rel(m: Motion, c):
-    """``D (p - c)``."""
-    return psub(m.nx, pscale(m.d, c[0])), psub(m.ny, pscale(m.d, c[1]))
-
-
-def _sq(u, v):
-    return padd(pmul(u, u), pmul(v, v))
-
-
-def _diff(a: Motion, b: Motion):
-    """``D_a D_b (p_a - p_b)``."""
-    return (psub(pmul(a.nx, b.d), pmul(b.nx, a.d)), psub(pmul(a.ny, b.d), pmul(b.ny, a.d)))
-
-
-def tie_poly(a: Motion, b: Motion, c) -> tuple:
-    """``D_a^2 D_b^2 (|p_a - c|^2 - |p_b - c|^2)``."""
-    return psub(pmul(pmul(b.d, b.d), _sq(*_rel(a, c))), pmul(pmul(a.d, a.d), _sq(*_rel(b, c))))
-
-
-def ray_poly(a: Motion, b: Motion, c) -> tuple:
-    """``D_a D_b cross(p_a - c, p_b - c)``: zero where both are on one line through c."""
-    (ua, va), (ub, vb) = _rel(a, c), _rel(b, c)
-    return psub(pmul(ua, vb), pmul(va, ub))
-
-
-def contact_poly(a: Motion, b: Motion, r2) -> tuple:
-    """``D_a^2 D_b^2 (|p_a - p_b|^2 - r2)``."""
-    dd = pmul(a.d, b.d)
-    return psub(_sq(*_diff(a, b)), pscale(pmul(dd, dd), r2))
-
-
-def right_poly(q: Motion, a: Motion, b: Motion) -> tuple:
-    """``dot(p_q - p_a, p_q - p_b)`` times ``D_q^2 D_a D_b``: zero where ``q`` is on the
-    circle on the diameter ``a b`` (the angle at ``q`` is right)."""
-    (ux, uy), (wx, wy) = _diff(q, a), _diff(q, b)
-    return padd(pmul(ux, wx), pmul(uy, wy))
-
-
-def incircle_poly(ms) -> tuple:
-    """The in-circle determinant of four moving points, homogenised (rows
-    ``(X D, Y D, X^2 + Y^2, D^2)`` with ``p = (X, Y) / D``): zero where they are on one
-    circle (or one line)."""
-    rows = [(pmul(m.nx, m.d), pmul(m.ny, m.d), _sq(m.nx, m.ny), pmul(m.d, m.d)) for m in ms]
-    return _det(rows)
-
-
-def _det(rows) -> tuple:
-    if len(rows) == 1:
-        return rows[0][0]
-    out: tuple = ()
-    for j in range(len(rows)):
-        minor = [r[:j] + r[j + 1:] for r in rows[1:]]
-        term = pmul(rows[0][j], _det(minor))
-        out = padd(out, term) if j % 2 == 0 else psub(out, term)
-    return out
+from .polyroots import pmul, pscale, psub, roots_of
 
 
 # -- the families --------------------------------------------------------------------------
@@ -135,7 +75,7 @@ def _about(motions: dict, movers, c, name: str) -> list:
 
 def _sec(motions: dict, movers, tag: str) -> list:
     """SEC support changes among the candidates (movers, hull of the still robots)."""
-    still_pts = {k: _const(m) for k, m in motions.items() if k not in movers}
+    still_pts = {k: const(m) for k, m in motions.items() if k not in movers}
     cand = sorted(set(movers) | set(hull_indices(still_pts) if len(still_pts) > 2
                                      else still_pts))
     out = []
@@ -150,10 +90,6 @@ def _sec(motions: dict, movers, tag: str) -> list:
             out.append((incircle_poly([motions[k] for k in quad]),
                         ("sec", f"{tag}: robots {', '.join(map(str, quad))} on one circle")))
     return out
-
-
-def _const(m: Motion):
-    return (m.nx[0] if m.nx else MQ(), m.ny[0] if m.ny else MQ())
 
 
 def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
@@ -172,9 +108,9 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
             lo, hi = _reach(pieces[i], c)
             for L in range(1, top + 1):
                 if lo <= 2 * L <= hi:
-                    u, v = _rel(motions[i], c)
+                    u, v = rel(motions[i], c)
                     d2 = pmul(motions[i].d, motions[i].d)
-                    polys.append((psub(_sq(u, v), pscale(d2, MQ.rational(4 * L * L))),
+                    polys.append((psub(sq(u, v), pscale(d2, MQ.rational(4 * L * L))),
                                   ("pattern", f"robot {i} on the circle of layer {L}")))
     for i in movers:
         for k in motions:
@@ -192,7 +128,7 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
             # it (the centre of R's robots standing still: it moves only where a mover
             # of R is a support, at the SEC of R instants above), as instants.py does
             known = set(centres)
-            stills = [_const(m) for k, m in sub.items() if k not in movers]
+            stills = [const(m) for k, m in sub.items() if k not in movers]
             if len(stills) >= 2 and movers & set(sub):
                 c_r = g.smallest_enclosing_circle(stills)[0]
                 if c_r not in centres:

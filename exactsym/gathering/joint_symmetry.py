@@ -43,43 +43,11 @@ not appear at an instant, it holds or fails over a whole stretch).
 
 from __future__ import annotations
 
-from flint import fmpq
-
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .instants import Motion, _centroid, dist2_poly, mirror_lines
+from .joint_relations import const, crossv, diff, dotv, rel, tie_poly
 from .polyroots import padd, pgcd, pmul, pscale, psub, roots_in_unit
-
-HALF = MQ.rational(fmpq(1, 2))
-
-
-def _rel(m: Motion, c):
-    """``D (p - c)``."""
-    return psub(m.nx, pscale(m.d, c[0])), psub(m.ny, pscale(m.d, c[1]))
-
-
-def _diff(a: Motion, b: Motion):
-    """``D_a D_b (p_a - p_b)``."""
-    return (psub(pmul(a.nx, b.d), pmul(b.nx, a.d)), psub(pmul(a.ny, b.d), pmul(b.ny, a.d)))
-
-
-def _dotv(u, w) -> tuple:
-    """Dot product of a vector of polynomials with a constant vector."""
-    return padd(pscale(u[0], w[0]), pscale(u[1], w[1]))
-
-
-def _crossv(u, w) -> tuple:
-    """``cross(u, w)`` of a vector of polynomials with a constant vector."""
-    return psub(pscale(u[0], w[1]), pscale(u[1], w[0]))
-
-
-def _sq(u) -> tuple:
-    return padd(pmul(u[0], u[0]), pmul(u[1], u[1]))
-
-
-def tie_about(a: Motion, b: Motion, c) -> tuple:
-    """``D_a^2 D_b^2 (|p_a - c|^2 - |p_b - c|^2)`` for a constant point ``c``."""
-    return psub(pmul(pmul(b.d, b.d), _sq(_rel(a, c))), pmul(pmul(a.d, a.d), _sq(_rel(b, c))))
 
 
 def mirror_pair_poly(a: Motion, b: Motion, z, u) -> tuple:
@@ -87,11 +55,11 @@ def mirror_pair_poly(a: Motion, b: Motion, z, u) -> tuple:
     ``u``: the gcd of ``D_a D_b (p_b - p_a).u`` (same foot on the line) and ``D_a D_b
     cross(p_a + p_b - 2 z, u)`` (midpoint on the line); ``()`` when both vanish all the
     time (mirror images all along), ``(1,)``-like constants when never."""
-    along = _dotv(_diff(b, a), u)
+    along = dotv(diff(b, a), u)
     s = (padd(pmul(a.nx, b.d), pmul(b.nx, a.d)), padd(pmul(a.ny, b.d), pmul(b.ny, a.d)))
     dd2 = pscale(pmul(a.d, b.d), MQ.rational(2))
     mid = (psub(s[0], pscale(dd2, z[0])), psub(s[1], pscale(dd2, z[1])))
-    across = _crossv(mid, u)
+    across = crossv(mid, u)
     if not along:
         return across
     if not across:
@@ -124,7 +92,7 @@ def centroid_tie(motions: dict, members, movers, i: int, q: int) -> tuple:
             zx, zy = padd(zx, pscale(W, motions[k].nx[0] if motions[k].nx else MQ())), \
                 padd(zy, pscale(W, motions[k].ny[0] if motions[k].ny else MQ()))
     a, b = motions[i], motions[q]
-    first = _diff(a, b)                              # D_i (p_i - q) (q still: D_q = 1)
+    first = diff(a, b)                              # D_i (p_i - q) (q still: D_q = 1)
     odi = others_d(i)
     # n W (p_i + q - 2 z) = n N_i W/D_i + n W q - 2 n W z
     sx = psub(padd(pscale(pmul(a.nx, odi), n), pscale(pmul(W, b.nx), n)), pscale(zx, 2))
@@ -156,10 +124,6 @@ def rotation_symmetric(pts: list, z) -> bool:
     return False
 
 
-def _const(m: Motion):
-    return (m.nx[0] if m.nx else MQ(), m.ny[0] if m.ny else MQ())
-
-
 def _may_leave(m: Motion, c, r2) -> bool:
     """Can the mover be strictly outside the circle (c, r2) at some time in [0, 1]?"""
     e = dist2_poly(m, c, r2)
@@ -175,7 +139,7 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
     ``known_centres``: points whose ``distance`` ties over ``members`` the caller
     enumerates already (tagged ``symmetry`` by it)."""
     M = sorted(set(members) & set(movers))
-    still_pts = {k: _const(motions[k]) for k in members if k not in movers}
+    still_pts = {k: const(motions[k]) for k in members if k not in movers}
     if not M or len(still_pts) < 2:
         return []
     S = list(still_pts.values())
@@ -192,7 +156,7 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
 
     for u in mirror_lines(S, z):
         def rels(m, u=u):
-            own = [(_crossv(_rel(motions[m], z), u),
+            own = [(crossv(rel(motions[m], z), u),
                     f"{name}: robot {m} on a mirror line of the robots standing still")]
             return own + [(mirror_pair_poly(motions[m], motions[j], z, u),
                            f"{name}: robots {m} and {j} mirror images in a mirror line of "
@@ -203,7 +167,7 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
             return [(dist2_poly(motions[m], z, MQ()),
                      f"{name}: robot {m} at the centre of a rotation of the robots "
                      f"standing still")] + \
-                [(tie_about(motions[m], motions[j], z),
+                [(tie_poly(motions[m], motions[j], z),
                   f"{name}: robots {m} and {j} as far from the centre of a rotation of the "
                   f"robots standing still") for j in M if j != m]
         out += [(p, ("symmetry", w)) for p, w in first_usable(rels) if len(p) > 1]
@@ -211,7 +175,7 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
     c_s, r2_s = g.smallest_enclosing_circle(S)
     if not any(_may_leave(motions[i], c_s, r2_s) for i in M):
         if c_s not in set(known_centres):
-            out += [(tie_about(motions[i], motions[q], c_s),
+            out += [(tie_poly(motions[i], motions[q], c_s),
                      ("symmetry", f"{name}: robots {i} and {q} as far from the SEC centre "
                                   f"of the robots standing still"))
                     for i in M for q in still_pts]
@@ -222,5 +186,4 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
     return [(p, tag) for p, tag in out if len(p) > 1]
 
 
-__all__ = ["symmetry_polys", "mirror_pair_poly", "centroid_tie", "tie_about",
-           "rotation_symmetric"]
+__all__ = ["symmetry_polys", "mirror_pair_poly", "centroid_tie", "rotation_symmetric"]
