@@ -89,8 +89,8 @@ def centroid_tie(motions: dict, members, movers, i: int, q: int) -> tuple:
             od = others_d(k)
             zx, zy = padd(zx, pmul(motions[k].nx, od)), padd(zy, pmul(motions[k].ny, od))
         else:
-            zx, zy = padd(zx, pscale(W, motions[k].nx[0] if motions[k].nx else MQ())), \
-                padd(zy, pscale(W, motions[k].ny[0] if motions[k].ny else MQ()))
+            x, y = const(motions[k])
+            zx, zy = padd(zx, pscale(W, x)), padd(zy, pscale(W, y))
     a, b = motions[i], motions[q]
     first = diff(a, b)                              # D_i (p_i - q) (q still: D_q = 1)
     odi = others_d(i)
