@@ -16,7 +16,7 @@ from exactsym.gathering.invariants import Checker, Violation
 from exactsym.gathering.joint_instants import (joint_critical_roots, joint_look_points,
                                                still)
 from exactsym.gathering.joint_symmetry import (centroid_tie, mirror_pair_poly,
-                                               rotation_symmetric, symmetry_polys)
+                                               rotations_of, symmetry_polys)
 from exactsym.gathering.polyroots import peval, roots_in_unit
 from exactsym.gathering.robot import Readings
 from exactsym.gathering.world import Frame, World
@@ -85,24 +85,24 @@ def test_two_movers_become_mirror_images_in_a_line_of_the_others():
 def test_a_mover_crossing_the_mirror_line_and_a_rotation_centre():
     """One mover of R on the mirror line of the robots of R standing still (x = 0, at
     tau = 1/2); with four robots standing still on a square (a quarter-turn symmetry
-    about its centre) a mover through that centre (tau = 2/5) and two movers as far from
-    it (tau = 1/4): the rotation family."""
+    about its centre) a mover through that centre (tau = 2/5) and a mover at the image
+    of the other in one of the square's rotations (tau = 1/14): the rotation family."""
     pieces = {3: seg((-2, -10), (2, -10)), 4: seg((20, 20), (22, 20))}
     w = moved_world(STILL3 + [(-2, -10), (20, 20)], pieces, r_set={0, 1, 2, 3})
     tags = roots_by_tag(pieces, w, "symmetry")
     assert tags["R: robot 3 on a mirror line of the robots standing still"] == Q(F(1, 2))
     square = [(10, 10), (-10, 10), (-10, -10), (10, -10)]
-    assert rotation_symmetric([P(*p) for p in square], P(0, 0))
-    assert not rotation_symmetric([P(*p) for p in square[:3]], P(0, 0))
+    assert len(rotations_of([P(*p) for p in square], P(0, 0))) == 3   # 1/4, 1/2, 3/4 turn
+    assert rotations_of([P(*p) for p in square[:3]], P(0, 0)) == []
     pieces = {4: seg((-4, 0), (6, 0)), 5: seg((0, 3), (0, 7))}
     w = moved_world(square + [(-4, 0), (0, 3)], pieces)
     tags = roots_by_tag(pieces, w, "symmetry")
     rot = "all robots: robot 4 at the centre of a rotation of the robots standing still"
     assert tags[rot] == Q(F(2, 5))
-    # |(-4 + 10 tau, 0)| = |(0, 3 + 4 tau)|: -4 + 10 tau = 3 + 4 tau has no root in (0, 1);
-    # 4 - 10 tau = 3 + 4 tau at tau = 1/14
-    assert tags["all robots: robots 4 and 5 as far from the centre of a rotation of the "
-                "robots standing still"] == Q(F(1, 14))
+    # (0, 3 + 4 tau) is the image of (-4 + 10 tau, 0) in the clockwise quarter turn where
+    # 3 + 4 tau = 4 - 10 tau, tau = 1/14 (the other turns: no root in (0, 1))
+    assert tags["all robots: robot 5 the image of robot 4 in a rotation of the robots "
+                "standing still"] == Q(F(1, 14))
 
 
 def test_a_mover_leaving_the_sec_brings_the_centroid_ties():

@@ -16,8 +16,8 @@ X's SEC and X's centroid.  Either
     :func:`.instants.mirror_lines`): one chosen mover ``m`` is on ``l``, or is the mirror
     image in ``l`` of another mover ``j`` (two polynomials, their gcd: ``(p_j - p_m).u``
     and ``cross(p_j + p_m - 2 z_S, u)``);
-  - a rotation about ``z_S`` that maps S onto itself (tested exactly): ``m`` is at
-    ``z_S``, or as far from ``z_S`` as another mover;
+  - a rotation about ``z_S`` that maps S onto itself (finitely many, exact): ``m`` is
+    at ``z_S``, or another mover is its image (the gcd of the two components);
 
 * **B** -- ``s`` maps some mover ``i`` to a robot ``q`` standing still: then ``i`` and
   ``q`` are as far from every fixed point of ``s``.  When no mover of X leaves the SEC of
@@ -30,15 +30,16 @@ X's SEC and X's centroid.  Either
 
 So each family below is a **necessary condition only** (a superset of the instants where
 a symmetry appears: a candidate where nothing happens costs a Look); for case A only one
-mover's relations are listed (every mover must satisfy one).  Degrees: with ``W`` the
+mover's relations are listed (every mover must satisfy one), the first mover none of
+whose relations holds all the time (the case-A relations are exact for the given line
+or rotation: if every mover keeps one all the time, they pair the movers, and that
+symmetry holds over the whole step: it appears at no instant).  Degrees: with ``W`` the
 product of the movers' denominators (1 on segments, ``1 + T^2 tau^2`` on an arc), a
-mirror relation has degree at most 4, a tie about ``z_S`` or ``c_S`` at most 4, a tie
+mirror or rotation relation has degree at most 4, a tie about ``c_S`` at most 4, a tie
 about the moving centroid at most ``2 + 2 deg W`` (2 on segments; 4 per mover on an arc).
 
 Not enumerated: a set X with fewer than two robots standing still (at least four movers
-among five robots: its symmetries are not tied to fixed lines), and a case-A line or
-rotation along which every mover keeps a relation all the time (the symmetry then does
-not appear at an instant, it holds or fails over a whole stretch).
+among five robots: its symmetries are not tied to fixed lines).
 """
 
 from __future__ import annotations
@@ -100,28 +101,43 @@ def centroid_tie(motions: dict, members, movers, i: int, q: int) -> tuple:
     return padd(pmul(first[0], sx), pmul(first[1], sy))
 
 
-def rotation_symmetric(pts: list, z) -> bool:
-    """Is there a rotation about ``z`` other than the identity that maps ``pts`` onto
-    itself?  (Exact: the candidate rotations take one robot of the smallest distance
-    group to each other one of that group; each is tested on every point.)"""
+def rotations_of(pts: list, z) -> list:
+    """``[(cos, sin)]``: every rotation about ``z`` other than the identity that maps
+    ``pts`` onto itself (exact: the candidates take one robot of the smallest distance
+    group to each other one of that group; each is tested on every point)."""
     others = [p for p in pts if p != z]
     if len(others) < 2:
-        return False
+        return []
     groups: dict = {}
     for p in others:
         groups.setdefault(g.dist2(p, z), []).append(p)
     group = min(groups.values(), key=len)
-    if len(group) < 2:
-        return False
     y0 = g.sub(group[0], z)
     r2 = g.dot(y0, y0)
     have = set(pts)
+    out = []
     for y in group[1:]:
         v = g.sub(y, z)
         c, s = g.dot(y0, v) / r2, g.cross(y0, v) / r2
         if all(g.add(z, g.rotate(g.sub(p, z), c, s)) in have for p in pts):
-            return True
-    return False
+            out.append((c, s))
+    return out
+
+
+def rotation_pair_poly(a: Motion, b: Motion, z, rot) -> tuple:
+    """Zero where ``p_b`` is the image of ``p_a`` under the rotation ``rot = (cos, sin)``
+    about ``z``: the gcd of the two components of ``D_a D_b ((p_b - z) - rot(p_a - z))``;
+    ``()`` when that holds all the time."""
+    (ax, ay), (bx, by) = rel(a, z), rel(b, z)
+    ax, ay, bx, by = pmul(ax, b.d), pmul(ay, b.d), pmul(bx, a.d), pmul(by, a.d)
+    c, s = rot
+    ex = psub(bx, psub(pscale(ax, c), pscale(ay, s)))
+    ey = psub(by, padd(pscale(ax, s), pscale(ay, c)))
+    if not ex:
+        return ey
+    if not ey:
+        return ex
+    return pgcd(ex, ey)
 
 
 def _may_leave(m: Motion, c, r2) -> bool:
@@ -162,14 +178,14 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
                            f"{name}: robots {m} and {j} mirror images in a mirror line of "
                            f"the robots standing still") for j in M if j != m]
         out += [(p, ("symmetry", w)) for p, w in first_usable(rels) if len(p) > 1]
-    if rotation_symmetric(S, z):
-        def rels(m):
+    for rot in rotations_of(S, z):
+        def rels(m, rot=rot):
             return [(dist2_poly(motions[m], z, MQ()),
                      f"{name}: robot {m} at the centre of a rotation of the robots "
                      f"standing still")] + \
-                [(tie_poly(motions[m], motions[j], z),
-                  f"{name}: robots {m} and {j} as far from the centre of a rotation of the "
-                  f"robots standing still") for j in M if j != m]
+                [(rotation_pair_poly(motions[m], motions[j], z, rot),
+                  f"{name}: robot {j} the image of robot {m} in a rotation of the robots "
+                  f"standing still") for j in M if j != m]
         out += [(p, ("symmetry", w)) for p, w in first_usable(rels) if len(p) > 1]
     # B: a mover mapped to a robot standing still
     c_s, r2_s = g.smallest_enclosing_circle(S)
@@ -186,4 +202,5 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
     return [(p, tag) for p, tag in out if len(p) > 1]
 
 
-__all__ = ["symmetry_polys", "mirror_pair_poly", "centroid_tie", "rotation_symmetric"]
+__all__ = ["symmetry_polys", "mirror_pair_poly", "rotation_pair_poly", "centroid_tie",
+           "rotations_of"]
