@@ -108,16 +108,26 @@ def test_a_mover_crossing_the_mirror_line_and_a_rotation_centre():
 def test_a_mover_leaving_the_sec_brings_the_centroid_ties():
     """Robot 4 leaves the SEC of the others: the SEC centre moves, a symmetry mapping a
     mover to a robot standing still fixes the (moving) centroid; inside, the ties about
-    the SEC centre of the robots standing still (here C's, the ``distance`` family)."""
+    the SEC centre of the robots standing still (here C's, the ``distance`` family) --
+    except for robot 0 sliding on the circle of robots 1-3 about it (its ties vanish
+    identically: an epsilon move's), which gets the centroid ties with them."""
     pts = [(20, 0), (0, 20), (-20, 0), (0, -20), (5, 0)]
-    inside = {4: seg((5, 0), (5, 5)), 0: g.Arc(P(0, 0), P(20, 0), P(16, 12), 1)}
-    w = moved_world(pts, inside, centre=P(0, 0))
-    fam = {(t[0], t[1]) for r in joint_critical_roots(inside, w) for t in r.tags}
-    assert not [w_ for f, w_ in fam if "centroid" in w_]
-    outside = {4: seg((5, 0), (5, 30)), 0: g.Arc(P(0, 0), P(20, 0), P(16, 12), 1)}
-    w = moved_world(pts, outside, centre=P(0, 0))
-    assert [w_ for f, w_ in {t for r in joint_critical_roots(outside, w) for t in r.tags}
-            if "centroid" in w_]
+    arc = g.Arc(P(0, 0), P(20, 0), P(16, 12), 1)
+
+    def centroid_pairs(pieces):
+        w = moved_world(pts, pieces, centre=P(0, 0))
+        return sorted({t[1] for r in joint_critical_roots(pieces, w) for t in r.tags}
+                      | {w_ for _, (f, w_) in symmetry_polys(
+                          {k: motion_of(pieces[k]) if k in pieces else still(P(*p))
+                           for k, p in enumerate(pts)}, set(pieces), range(5), "all robots",
+                          {P(0, 0)})
+                         if "centroid" in w_})
+
+    inside = centroid_pairs({4: seg((5, 0), (5, 5)), 0: arc})
+    assert [w_ for w_ in inside if "centroid" in w_] == [
+        f"all robots: robots 0 and {q} as far from the centroid" for q in (1, 2, 3)]
+    outside = centroid_pairs({4: seg((5, 0), (5, 30)), 0: arc})
+    assert "all robots: robots 4 and 1 as far from the centroid" in outside
 
 
 PIECES = st.sampled_from([

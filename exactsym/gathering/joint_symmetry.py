@@ -25,8 +25,9 @@ X's SEC and X's centroid.  Either
   ``c_S``; when ``c_S`` is a centre whose ties the step already enumerates (C, or R's
   SEC centre: the ``distance`` family, whose roots :mod:`.joint_instants` tags
   ``symmetry`` too) nothing new, else those ties.  When a mover may leave it, the SEC
-  centre moves: a tie about X's centroid, which moves too (``z_X = (sum S + sum
-  p_m(tau)) / |X|``).
+  centre moves, and when ``i`` keeps ``q``'s distance from ``c_S`` all the time (an arc
+  about it: the tie says nothing): a tie about X's centroid, which moves too
+  (``z_X = (sum S + sum p_m(tau)) / |X|``).
 
 So each family below is a **necessary condition only** (a superset of the instants where
 a symmetry appears: a candidate where nothing happens costs a Look); for case A only one
@@ -39,7 +40,9 @@ mirror or rotation relation has degree at most 4, a tie about ``c_S`` at most 4,
 about the moving centroid at most ``2 + 2 deg W`` (2 on segments; 4 per mover on an arc).
 
 Not enumerated: a set X with fewer than two robots standing still (at least four movers
-among five robots: its symmetries are not tied to fixed lines).
+among five robots: its symmetries are not tied to fixed lines); in case B, a mover that
+keeps a still robot's distance from both the SEC centre and the moving centroid all the
+time (both ties vanish identically).
 """
 
 from __future__ import annotations
@@ -189,16 +192,21 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
         out += [(p, ("symmetry", w)) for p, w in first_usable(rels) if len(p) > 1]
     # B: a mover mapped to a robot standing still
     c_s, r2_s = g.smallest_enclosing_circle(S)
-    if not any(_may_leave(motions[i], c_s, r2_s) for i in M):
-        if c_s not in set(known_centres):
-            out += [(tie_poly(motions[i], motions[q], c_s),
-                     ("symmetry", f"{name}: robots {i} and {q} as far from the SEC centre "
-                                  f"of the robots standing still"))
-                    for i in M for q in still_pts]
-    else:
-        out += [(centroid_tie(motions, list(members), set(M), i, q),
-                 ("symmetry", f"{name}: robots {i} and {q} as far from the centroid"))
-                for i in M for q in still_pts]
+    inside = not any(_may_leave(motions[i], c_s, r2_s) for i in M)
+    for i in M:
+        for q in still_pts:
+            tie = tie_poly(motions[i], motions[q], c_s) if inside else ()
+            if tie and c_s in set(known_centres):
+                continue                     # the caller's distance tie, tagged symmetry
+            if tie:
+                out.append((tie, ("symmetry", f"{name}: robots {i} and {q} as far from the "
+                                              f"SEC centre of the robots standing still")))
+            else:
+                # the SEC moves, or robot i keeps q's distance from its centre all along
+                # (an arc about it): the centroid is fixed by every symmetry too
+                out.append((centroid_tie(motions, list(members), set(M), i, q),
+                            ("symmetry", f"{name}: robots {i} and {q} as far from the "
+                                         f"centroid")))
     return [(p, tag) for p, tag in out if len(p) > 1]
 
 
