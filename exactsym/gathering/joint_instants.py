@@ -23,9 +23,9 @@ involve at least one mover (the others do not change during the step):
 * ``symmetry`` -- a symmetry of all the robots, or of R, can appear
   (:mod:`.joint_symmetry`: a mover on a mirror line of the robots standing still or
   two movers mirror images in it, a mover at the centre of a rotation of the robots
-  standing still or two movers as far from it, a mover and a still robot as far from
-  the SEC centre of the robots standing still -- or from the moving centroid where a
-  mover can leave that SEC); every ``distance`` root is tagged ``symmetry`` too (a
+  standing still or the image of another mover in it, a mover and a still robot as far
+  from the SEC centre of the robots standing still -- or from the moving centroid where
+  a mover can leave that SEC or keeps the robot's distance from its centre); every ``distance`` root is tagged ``symmetry`` too (a
   rotation or a reflection about that centre can swap the two robots).  Necessary
   conditions only: a superset of the instants where a symmetry appears.
 
