@@ -1,6 +1,7 @@
 """Benchmark of the exact gathering simulator, against a float simulator of the same run in
-the same process.  Run: ``python bench/bench_gather.py [--quick]`` (a few minutes; CPU
-time, so that other processes on the machine change the figures less).
+the same process.  Run: ``python bench/bench_gather.py [--quick | --joint]`` (a few
+minutes; ``--joint``: section 4 only; CPU time, so that other processes on the machine
+change the figures less).
 
 1. The cost of one Look as n grows, cache cleared: the paper's ``robot.decide`` (SEC,
    pattern recogniser, the paper layer's Preprocess / MakeAsym / ElectLeader,
@@ -13,6 +14,12 @@ time, so that other processes on the machine change the figures less).
 3. The float baseline: the same action sequence replayed with float positions, a float
    SEC, float segment/arc collision tests against every robot and a float "nearest robot
    to the SEC centre" leader per Look: what an epsilon-based simulator pays per event.
+4. Joint steps (several robots moving at once): the critical instants of a step of two
+   movers (``joint_instants.joint_look_points``: every family, symmetry included) and the
+   whole check of the step (``Checker.after_step``: I1, then I3, I4, I6 and I9 at each
+   instant), on random configurations at n = 5, 30 (two segments towards C; two arcs
+   about C).  (Runs with every invariant on make no joint step: I2 stops the run at
+   the second pending move.)
 """
 
 from __future__ import annotations
@@ -111,7 +118,6 @@ def float_replay(points, actions) -> int:
     target = {}
     hits = 0
     for act in actions:
-        i = act["robot"]
         if act["a"] == "step":          # robots moving at once: each its own part
             for i, stop, _end in act["moves"]:
                 goal = target.get(i, pos[i])
@@ -122,6 +128,7 @@ def float_replay(points, actions) -> int:
                 pos[i] = new
             _fsec(pos)
             continue
+        i = act["robot"]
         if act["a"] == "look":
             cx, cy, _ = _fsec(pos)
             d = [(p[0] - cx) ** 2 + (p[1] - cy) ** 2 for p in pos]
@@ -176,5 +183,65 @@ def main() -> None:
               f"ratio {exact / flt:.0f}x")
 
 
+def joint_steps(n: int, arcs: bool, seed: int = 1):
+    """``(world, pieces)``: the two robots nearest the SEC centre C of a random
+    configuration move at once, half way to C along segments, or (``arcs``) along arcs
+    about C by the rational rotation (24/25, 7/25); both with the C and R of a Look."""
+    from exactsym.exact.multiquadratic import MQ
+    from exactsym.gathering import geometry as g
+    from exactsym.gathering.world import World
+    w = World(random_config(n, seed), Readings())
+    c = g.smallest_enclosing_circle(list(w.positions()))[0]
+    order = sorted(range(n), key=lambda k: float(g.dist2(w.robots[k].pos, c)))
+    pieces = {}
+    for i in order[:2]:
+        p = w.robots[i].pos
+        if arcs:
+            q = g.add(c, g.rotate(g.sub(p, c), MQ.rational(Fraction(24, 25)),
+                                  MQ.rational(Fraction(7, 25))))
+            pieces[i] = g.Arc(c, p, q, 1)
+        else:
+            pieces[i] = g.Segment(p, g.scale(g.add(p, c), MQ.rational(Fraction(1, 2))))
+        w.robots[i].path, w.robots[i].centre = [pieces[i]], c
+        w.robots[i].r_set = frozenset(range(n))
+    return w, pieces
+
+
+def time_joint(n: int, arcs: bool, repeat: int = 3) -> tuple:
+    """CPU seconds (best of ``repeat``) of the critical instants of the step and of the
+    whole after-step check (decisions cache cleared), and the number of instants."""
+    from exactsym.gathering.invariants import ALL
+    from exactsym.gathering.joint_instants import joint_look_points
+    best_i = best_c = math.inf
+    count = 0
+    for _ in range(repeat):
+        w, pieces = joint_steps(n, arcs)
+        t = time.process_time()
+        pts, sided = joint_look_points(pieces, w)
+        best_i = min(best_i, time.process_time() - t)
+        count = len(pts) + sided
+        robot.decide.cache_clear()
+        chk = Checker(enabled=frozenset(ALL) - {"I2"})
+        t = time.process_time()
+        chk.after_step(w, pieces)
+        best_c = min(best_c, time.process_time() - t)
+    return best_i, best_c, count
+
+
+def bench_joint() -> None:
+    print("joint steps (two movers; CPU time, best of 3):")
+    print("      n   pieces    Looks   instants (joint_look_points)   after_step (I1, I3, "
+          "I4, I6, I9)")
+    for n in (5, 30):
+        for arcs in (False, True):
+            ti, tc, k = time_joint(n, arcs)
+            print(f"  {n:5d}   {'arcs' if arcs else 'segments':8s} {k:5d}   "
+                  f"{ti * 1000:21.1f} ms   {tc * 1000:24.1f} ms")
+
+
 if __name__ == "__main__":
-    main()
+    if "--joint" in sys.argv[1:]:
+        bench_joint()
+    else:
+        main()
+        bench_joint()

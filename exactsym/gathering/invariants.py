@@ -24,7 +24,8 @@ Exactness of the "at any instant" checks:
   quartic factor that square roots do not express is seen on both sides only (``sided``);
 * over a step of several robots moving at once (:meth:`Checker.after_step`): I1 by the
   joint motion's exact polynomial, and I3, I4 and I6 at the critical instants of the
-  joint motion (:mod:`.joint_instants`) and between them.
+  joint motion (:mod:`.joint_instants`) and between them, I9 at its SEC and symmetry
+  instants (and the stretches beside them).
 """
 
 from __future__ import annotations
@@ -264,9 +265,9 @@ class Checker:
         positions are already the step's end).  I1, exact: each mover's piece against
         every robot standing still, each two movers by their joint motion
         (``geometry.joint_motion_overlap``, a polynomial in the common time, its roots
-        isolated exactly); counted once per mover.  Then I3, I4 and I6 at the critical
-        instants of the joint motion (:mod:`.joint_instants`): every mover where it is
-        at each instant (the step's end is checked by ``after_advance``)."""
+        isolated exactly); counted once per mover.  Then I3, I4, I6 and I9 at the
+        critical instants of the joint motion (:mod:`.joint_instants`): every mover
+        where it is at each instant (the step's end is checked by ``after_advance``)."""
         self._joint_collision(world, pieces)
         self._joint_instants(world, pieces)
 
@@ -297,7 +298,11 @@ class Checker:
     def _joint_instants(self, world, pieces: dict):
         """A fresh Look (I3), C unchanged (I6) and the leader strictly nearest (I4) at
         each critical instant of the joint motion that the kernel holds and at one
-        rational instant in each stretch between: all movers moved to that instant."""
+        rational instant in each stretch between: all movers moved to that instant.  At
+        the ``sec`` and ``symmetry`` instants (and the stretches beside them), I9: a
+        fresh Look in the reflected frame plans what one in the world's frame plans
+        (with several movers the fresh plan names one of them at most, so I9 compares
+        the two fresh plans, not the pending moves: that is I3's job)."""
         movers = sorted(pieces)
         rob = world.robots
         looked = [i for i in movers if rob[i].target is not None]   # not made up (tests)
@@ -305,7 +310,8 @@ class Checker:
         i6 = "I6" in self.enabled and any(rob[i].centre is not None for i in movers)
         i4 = "I4" in self.enabled and any((rob[i].role or "").startswith("leader")
                                           for i in movers)
-        if not (i3 or i6 or i4):
+        i9 = "I9" in self.enabled
+        if not (i3 or i6 or i4 or i9):
             return
         t = world.events
         ends = {i: rob[i].pos for i in movers}
@@ -328,9 +334,36 @@ class Checker:
                     if i3:
                         self.counts["I3"] += 1
                         self._fresh_look(world, i, t, where)
+                if i9 and jp.families & {"sec", "symmetry"}:
+                    self.counts["I9"] += 1
+                    self._joint_mirror_look(world, movers, t, where)
         finally:
             for i in movers:
                 rob[i].pos = ends[i]
+
+    def _joint_mirror_look(self, world, movers, t, where: str):
+        """I9 inside a joint step: fresh Looks in the world's frame, the reflected one
+        (and the extra frames) plan the same movers and leader targets."""
+        from .world import IDENTITY, MIRROR
+        d0, paths0 = world.snapshot_decision(IDENTITY)
+        if d0.status == "undecided":
+            self.undecided_fresh += 1
+            return
+        mine = _plan(paths0, d0)
+        for other in (MIRROR,) + tuple(self.frames):
+            d, paths = world.snapshot_decision(other)
+            if d.status == "undecided":
+                self.undecided_fresh += 1
+                continue
+            theirs = _plan(paths, d)
+            if not _same_plan(mine, theirs):
+                at = ", ".join(f"robot {i} at {g.fmt_point(world.robots[i].pos)}"
+                               for i in movers)
+                raise Violation("I9", t, sorted(set(mine) | set(theirs)),
+                                f"robots {list(movers)} move at once; with {at}{where} a "
+                                f"fresh Look in the world's frame plans {_plan_text(mine)}, "
+                                f"one in frame {other.as_list()} plans "
+                                f"{_plan_text(theirs)}")
 
     # -- after an arrival ----------------------------------------------------------------
     def after_arrival(self, world, i):

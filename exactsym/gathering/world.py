@@ -24,7 +24,8 @@ Collisions are decided exactly over the whole interval (:mod:`.geometry`): a mov
 against every robot standing still, and every two movers against each other
 (``geometry.joint_motion_overlap``: a polynomial in tau, its roots isolated exactly;
 checked by ``invariants.Checker.after_step``, which also checks I3, I4 and I6 at the
-critical instants of the joint motion, :mod:`.joint_instants`).
+critical instants of the joint motion, :mod:`.joint_instants`, and I9 at its SEC and
+symmetry instants).
 """
 
 from __future__ import annotations

@@ -1,0 +1,96 @@
+"""Relations between robots moving at once, as polynomials in the common time ``tau``.
+
+In a step every mover is at ``p = (X, Y) / D`` (:func:`.instants.motion_of`: ``D = 1``
+on a segment, ``1 + T^2 tau^2 > 0`` on an arc) and a robot standing still is a constant
+motion (:func:`still`).  Each relation below is a polynomial in ``tau`` with
+multiquadratic coefficients, denominators cleared by positive factors (so its sign is
+the relation's): :mod:`.joint_instants` and :mod:`.joint_symmetry` take their roots.
+"""
+
+from __future__ import annotations
+
+from ..exact.multiquadratic import MQ
+from .instants import Motion
+from .polyroots import padd, pmul, pscale, psub
+
+ONE = MQ.rational(1)
+
+
+def const(m: Motion):
+    """The point of a motion standing still."""
+    return (m.nx[0] if m.nx else MQ(), m.ny[0] if m.ny else MQ())
+
+
+def still(p) -> Motion:
+    return Motion((p[0],), (p[1],), (ONE,))
+
+
+def rel(m: Motion, c):
+    """``D (p - c)``."""
+    return psub(m.nx, pscale(m.d, c[0])), psub(m.ny, pscale(m.d, c[1]))
+
+
+def sq(u, v):
+    return padd(pmul(u, u), pmul(v, v))
+
+
+def diff(a: Motion, b: Motion):
+    """``D_a D_b (p_a - p_b)``."""
+    return (psub(pmul(a.nx, b.d), pmul(b.nx, a.d)), psub(pmul(a.ny, b.d), pmul(b.ny, a.d)))
+
+
+def tie_poly(a: Motion, b: Motion, c) -> tuple:
+    """``D_a^2 D_b^2 (|p_a - c|^2 - |p_b - c|^2)``."""
+    return psub(pmul(pmul(b.d, b.d), sq(*rel(a, c))), pmul(pmul(a.d, a.d), sq(*rel(b, c))))
+
+
+def ray_poly(a: Motion, b: Motion, c) -> tuple:
+    """``D_a D_b cross(p_a - c, p_b - c)``: zero where both are on one line through c."""
+    (ua, va), (ub, vb) = rel(a, c), rel(b, c)
+    return psub(pmul(ua, vb), pmul(va, ub))
+
+
+def contact_poly(a: Motion, b: Motion, r2) -> tuple:
+    """``D_a^2 D_b^2 (|p_a - p_b|^2 - r2)``."""
+    dd = pmul(a.d, b.d)
+    return psub(sq(*diff(a, b)), pscale(pmul(dd, dd), r2))
+
+
+def right_poly(q: Motion, a: Motion, b: Motion) -> tuple:
+    """``dot(p_q - p_a, p_q - p_b)`` times ``D_q^2 D_a D_b``: zero where ``q`` is on the
+    circle on the diameter ``a b`` (the angle at ``q`` is right)."""
+    (ux, uy), (wx, wy) = diff(q, a), diff(q, b)
+    return padd(pmul(ux, wx), pmul(uy, wy))
+
+
+def incircle_poly(ms) -> tuple:
+    """The in-circle determinant of four moving points, homogenised (rows
+    ``(X D, Y D, X^2 + Y^2, D^2)`` with ``p = (X, Y) / D``): zero where they are on one
+    circle (or one line)."""
+    rows = [(pmul(m.nx, m.d), pmul(m.ny, m.d), sq(m.nx, m.ny), pmul(m.d, m.d)) for m in ms]
+    return _det(rows)
+
+
+def _det(rows) -> tuple:
+    if len(rows) == 1:
+        return rows[0][0]
+    out: tuple = ()
+    for j in range(len(rows)):
+        minor = [r[:j] + r[j + 1:] for r in rows[1:]]
+        term = pmul(rows[0][j], _det(minor))
+        out = padd(out, term) if j % 2 == 0 else psub(out, term)
+    return out
+
+
+def dotv(u, w) -> tuple:
+    """The dot product of a vector of polynomials with a constant vector."""
+    return padd(pscale(u[0], w[0]), pscale(u[1], w[1]))
+
+
+def crossv(u, w) -> tuple:
+    """``cross(u, w)`` of a vector of polynomials with a constant vector."""
+    return psub(pscale(u[0], w[1]), pscale(u[1], w[0]))
+
+
+__all__ = ["still", "const", "rel", "sq", "diff", "tie_poly", "ray_poly", "contact_poly",
+           "right_poly", "incircle_poly", "dotv", "crossv"]

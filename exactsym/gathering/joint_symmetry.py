@@ -1,0 +1,214 @@
+"""The ``symmetry`` family of a joint step: where a symmetry of the robots can appear while
+several robots move at once (spec section 4, "a symmetry appears").
+
+In a step (``World.advance_together``) the movers ``M`` are at ``piece.at(tau)`` at the
+common time ``tau`` (:func:`.instants.motion_of`), the other robots stand still.  Let
+``X`` be a set of robots whose symmetry the algorithm reads (every robot; R, the robots
+outside the pattern, which the paper layer orders about R's own SEC centre), ``S`` its
+robots standing still, ``M_X`` its movers.  A symmetry ``s`` of X at time ``tau`` (a
+rotation or a reflection that maps X onto itself) permutes X and fixes the centre of
+X's SEC and X's centroid.  Either
+
+* **A** -- ``s`` maps ``M_X`` onto itself: then it maps ``S`` onto itself, so it is a
+  symmetry of S, fixing S's centroid ``z_S``:
+
+  - a reflection in a mirror line ``l`` of S (finitely many, exact:
+    :func:`.instants.mirror_lines`): one chosen mover ``m`` is on ``l``, or is the mirror
+    image in ``l`` of another mover ``j`` (two polynomials, their gcd: ``(p_j - p_m).u``
+    and ``cross(p_j + p_m - 2 z_S, u)``);
+  - a rotation about ``z_S`` that maps S onto itself (finitely many, exact): ``m`` is
+    at ``z_S``, or another mover is its image (the gcd of the two components);
+
+* **B** -- ``s`` maps some mover ``i`` to a robot ``q`` standing still: then ``i`` and
+  ``q`` are as far from every fixed point of ``s``.  When no mover of X leaves the SEC of
+  S during the step, the SEC of X is S's (a constant centre ``c_S``): a tie about
+  ``c_S``; when ``c_S`` is a centre whose ties the step already enumerates (C, or R's
+  SEC centre: the ``distance`` family, whose roots :mod:`.joint_instants` tags
+  ``symmetry`` too) nothing new, else those ties.  When a mover may leave it, the SEC
+  centre moves, and when ``i`` keeps ``q``'s distance from ``c_S`` all the time (an arc
+  about it: the tie says nothing): a tie about X's centroid, which moves too
+  (``z_X = (sum S + sum p_m(tau)) / |X|``).
+
+So each family below is a **necessary condition only** (a superset of the instants where
+a symmetry appears: a candidate where nothing happens costs a Look); for case A only one
+mover's relations are listed (every mover must satisfy one), the first mover none of
+whose relations holds all the time (the case-A relations are exact for the given line
+or rotation: if every mover keeps one all the time, they pair the movers, and that
+symmetry holds over the whole step: it appears at no instant).  Degrees: with ``W`` the
+product of the movers' denominators (1 on segments, ``1 + T^2 tau^2`` on an arc), a
+mirror or rotation relation has degree at most 4, a tie about ``c_S`` at most 4, a tie
+about the moving centroid at most ``2 + 2 deg W`` (2 on segments; 4 per mover on an arc).
+
+Not enumerated: a set X with fewer than two robots standing still (at least four movers
+among five robots: its symmetries are not tied to fixed lines); in case B, a mover that
+keeps a still robot's distance from both the SEC centre and the moving centroid all the
+time (both ties vanish identically).
+"""
+
+from __future__ import annotations
+
+from ..exact.multiquadratic import MQ
+from . import geometry as g
+from .instants import Motion, _centroid, dist2_poly, mirror_lines
+from .joint_relations import const, crossv, diff, dotv, rel, tie_poly
+from .polyroots import padd, pgcd, pmul, pscale, psub, roots_in_unit
+
+
+def mirror_pair_poly(a: Motion, b: Motion, z, u) -> tuple:
+    """Zero where ``p_b`` is the mirror image of ``p_a`` in the line through ``z`` along
+    ``u``: the gcd of ``D_a D_b (p_b - p_a).u`` (same foot on the line) and ``D_a D_b
+    cross(p_a + p_b - 2 z, u)`` (midpoint on the line); ``()`` when both vanish all the
+    time (mirror images all along), ``(1,)``-like constants when never."""
+    along = dotv(diff(b, a), u)
+    s = (padd(pmul(a.nx, b.d), pmul(b.nx, a.d)), padd(pmul(a.ny, b.d), pmul(b.ny, a.d)))
+    dd2 = pscale(pmul(a.d, b.d), MQ.rational(2))
+    mid = (psub(s[0], pscale(dd2, z[0])), psub(s[1], pscale(dd2, z[1])))
+    across = crossv(mid, u)
+    if not along:
+        return across
+    if not across:
+        return along
+    return pgcd(along, across)
+
+
+def centroid_tie(motions: dict, members, movers, i: int, q: int) -> tuple:
+    """Zero where mover ``i`` and robot ``q`` are as far from the centroid of
+    ``members`` (which moves with the movers): ``(p_i - q) . (p_i + q - 2 z)`` times
+    ``D_i W |X|`` with ``W`` the product of the movers' denominators."""
+    n = MQ.rational(len(members))
+    mov = sorted(movers)
+
+    def others_d(m):                    # W / D_m
+        out: tuple = (MQ.rational(1),)
+        for k in mov:
+            if k != m:
+                out = pmul(out, motions[k].d)
+        return out
+
+    W = pmul(others_d(mov[0]), motions[mov[0]].d)
+    # n W z = W sum(still) + sum_m N_m W / D_m
+    zx, zy = (), ()
+    for k in members:
+        if k in movers:
+            od = others_d(k)
+            zx, zy = padd(zx, pmul(motions[k].nx, od)), padd(zy, pmul(motions[k].ny, od))
+        else:
+            x, y = const(motions[k])
+            zx, zy = padd(zx, pscale(W, x)), padd(zy, pscale(W, y))
+    a, b = motions[i], motions[q]
+    first = diff(a, b)                              # D_i (p_i - q) (q still: D_q = 1)
+    odi = others_d(i)
+    # n W (p_i + q - 2 z) = n N_i W/D_i + n W q - 2 n W z
+    sx = psub(padd(pscale(pmul(a.nx, odi), n), pscale(pmul(W, b.nx), n)), pscale(zx, 2))
+    sy = psub(padd(pscale(pmul(a.ny, odi), n), pscale(pmul(W, b.ny), n)), pscale(zy, 2))
+    return padd(pmul(first[0], sx), pmul(first[1], sy))
+
+
+def rotations_of(pts: list, z) -> list:
+    """``[(cos, sin)]``: every rotation about ``z`` other than the identity that maps
+    ``pts`` onto itself (exact: the candidates take one robot of the smallest distance
+    group to each other one of that group; each is tested on every point)."""
+    others = [p for p in pts if p != z]
+    if len(others) < 2:
+        return []
+    groups: dict = {}
+    for p in others:
+        groups.setdefault(g.dist2(p, z), []).append(p)
+    group = min(groups.values(), key=len)
+    y0 = g.sub(group[0], z)
+    r2 = g.dot(y0, y0)
+    have = set(pts)
+    out = []
+    for y in group[1:]:
+        v = g.sub(y, z)
+        c, s = g.dot(y0, v) / r2, g.cross(y0, v) / r2
+        if all(g.add(z, g.rotate(g.sub(p, z), c, s)) in have for p in pts):
+            out.append((c, s))
+    return out
+
+
+def rotation_pair_poly(a: Motion, b: Motion, z, rot) -> tuple:
+    """Zero where ``p_b`` is the image of ``p_a`` under the rotation ``rot = (cos, sin)``
+    about ``z``: the gcd of the two components of ``D_a D_b ((p_b - z) - rot(p_a - z))``;
+    ``()`` when that holds all the time."""
+    (ax, ay), (bx, by) = rel(a, z), rel(b, z)
+    ax, ay, bx, by = pmul(ax, b.d), pmul(ay, b.d), pmul(bx, a.d), pmul(by, a.d)
+    c, s = rot
+    ex = psub(bx, psub(pscale(ax, c), pscale(ay, s)))
+    ey = psub(by, padd(pscale(ax, s), pscale(ay, c)))
+    if not ex:
+        return ey
+    if not ey:
+        return ex
+    return pgcd(ex, ey)
+
+
+def _may_leave(m: Motion, c, r2) -> bool:
+    """Can the mover be strictly outside the circle (c, r2) at some time in [0, 1]?"""
+    e = dist2_poly(m, c, r2)
+    if not e:
+        return False
+    return (sum(e, MQ()).sign() > 0 or e[0].sign() > 0 or bool(roots_in_unit(e)))
+
+
+def symmetry_polys(motions: dict, movers: set, members, name: str,
+                   known_centres=()) -> list:
+    """``[(poly, ("symmetry", description))]``: the necessary conditions above for a
+    symmetry of the robots ``members`` (indices into ``motions``) to hold at time tau;
+    ``known_centres``: points whose ``distance`` ties over ``members`` the caller
+    enumerates already (tagged ``symmetry`` by it)."""
+    M = sorted(set(members) & set(movers))
+    still_pts = {k: const(motions[k]) for k in members if k not in movers}
+    if not M or len(still_pts) < 2:
+        return []
+    S = list(still_pts.values())
+    z = _centroid(S)
+    out: list = []
+
+    def first_usable(rels):
+        """The relations of the first mover none of whose relations holds all along."""
+        for m in M:
+            polys = rels(m)
+            if all(p for p, _ in polys):
+                return polys
+        return []
+
+    for u in mirror_lines(S, z):
+        def rels(m, u=u):
+            own = [(crossv(rel(motions[m], z), u),
+                    f"{name}: robot {m} on a mirror line of the robots standing still")]
+            return own + [(mirror_pair_poly(motions[m], motions[j], z, u),
+                           f"{name}: robots {m} and {j} mirror images in a mirror line of "
+                           f"the robots standing still") for j in M if j != m]
+        out += [(p, ("symmetry", w)) for p, w in first_usable(rels) if len(p) > 1]
+    for rot in rotations_of(S, z):
+        def rels(m, rot=rot):
+            return [(dist2_poly(motions[m], z, MQ()),
+                     f"{name}: robot {m} at the centre of a rotation of the robots "
+                     f"standing still")] + \
+                [(rotation_pair_poly(motions[m], motions[j], z, rot),
+                  f"{name}: robot {j} the image of robot {m} in a rotation of the robots "
+                  f"standing still") for j in M if j != m]
+        out += [(p, ("symmetry", w)) for p, w in first_usable(rels) if len(p) > 1]
+    # B: a mover mapped to a robot standing still
+    c_s, r2_s = g.smallest_enclosing_circle(S)
+    inside = not any(_may_leave(motions[i], c_s, r2_s) for i in M)
+    for i in M:
+        for q in still_pts:
+            tie = tie_poly(motions[i], motions[q], c_s) if inside else ()
+            if tie and c_s in set(known_centres):
+                continue                     # the caller's distance tie, tagged symmetry
+            if tie:
+                out.append((tie, ("symmetry", f"{name}: robots {i} and {q} as far from the "
+                                              f"SEC centre of the robots standing still")))
+            else:
+                # the SEC moves, or robot i keeps q's distance from its centre all along
+                # (an arc about it): the centroid is fixed by every symmetry too
+                out.append((centroid_tie(motions, list(members), set(M), i, q),
+                            ("symmetry", f"{name}: robots {i} and {q} as far from the "
+                                         f"centroid")))
+    return [(p, tag) for p, tag in out if len(p) > 1]
+
+
+__all__ = ["symmetry_polys", "mirror_pair_poly", "rotation_pair_poly", "centroid_tie",
+           "rotations_of"]
