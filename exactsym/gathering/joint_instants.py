@@ -39,7 +39,9 @@ A superset of the events above: a candidate where nothing happens costs a Look.
 :func:`joint_look_points` gives, as :func:`.instants.look_points` does, each instant
 whose value the kernel holds and one rational instant in each open stretch between
 consecutive instants (strictly inside (0, 1)); an instant that needs a nested radical
-is seen on both sides only (``sided``).  ``invariants.Checker`` checks I3, I4 and I6 at
+is a point in a tower of quadratic extensions (:mod:`.tower_numbers`), and only a root of
+a cubic or quartic factor that square roots do not express is seen on both sides only
+(``sided``).  ``invariants.Checker`` checks I3, I4 and I6 at
 every Look, I9 at those of the ``sec`` and ``symmetry`` instants and beside them.
 """
 
@@ -153,7 +155,8 @@ class JointPoint:
 
 
 def joint_look_points(pieces: dict, world, sec_r: bool = False) -> tuple:
-    """``(points, sided)`` as :func:`.instants.look_points`, over the common time."""
+    """``(points, sided)`` as :func:`.instants.look_points`, over the common time (an
+    exact root may be a tower number)."""
     roots = joint_critical_roots(pieces, world, sec_r)
     if not roots:
         return [JointPoint(MQ.rational(fmpq(1, 2)), "half way, no critical instant",
