@@ -511,12 +511,11 @@ def _frame_difference(config: Configuration, paper: F.PaperResult, res: F.PaperR
     ``Elect_Leader_Asym`` refuted under the literal reading (kind ``reading``), not a
     failure of ``lem-asym-ord``."""
     first, second, continued, where = paper, res, False, config
-    if frame == "reflection" and _actions(paper)[0] == _actions(res)[0] and \
-            any(m.get("kind") == "epsilon" for m in paper.moves) and \
-            paper.final_config is not None:
+    sensed = _after_epsilon(paper, res) if frame == "reflection" else None
+    if sensed is not None:
         # both senses: the configuration after the identity frame's moves, and the one
         # after the reflected frame's (the mover may take either sense)
-        after = [c for c in (paper.final_config, res.final_config) if c is not None]
+        after, moved = sensed
         runs = []
         for c in after:
             try:
@@ -527,7 +526,7 @@ def _frame_difference(config: Configuration, paper: F.PaperResult, res: F.PaperR
                 break
             runs.append((c, q0, qf))
         if len(runs) == len(after):
-            eps = [m for m in paper.moves if m.get("kind") == "epsilon"]
+            eps = [m for m in moved if m.get("kind") == "epsilon"]
             movers = [m["robot"] for m in eps]
             bad = [(c, q0, qf) for c, q0, qf in runs if _actions(q0) != _actions(qf)]
             if not bad:
@@ -565,6 +564,27 @@ def _frame_difference(config: Configuration, paper: F.PaperResult, res: F.PaperR
     if step is not None and step[3] != "Elect_Leader_Asym":
         statement = step[0]
     return _difference_entry(statement, first, second, frame, continued), None
+
+
+def _after_epsilon(paper: F.PaperResult, res: F.PaperResult):
+    """``(configurations, moves)``: where to continue comparing two frames that may
+    differ only in the sense of an epsilon move (the mover chooses it: "clockwise for
+    this observer"), or None.  Either both frames move the same robots with an epsilon
+    move among them (continue after all the moves), or their first round of MakeAsym
+    moves the same robots and ends with an epsilon move in both (continue after that
+    round: what follows is computed on a configuration the mover's sense made, so the
+    frames may part there without disagreeing on any one configuration)."""
+    if _actions(paper)[0] == _actions(res)[0] and paper.final_config is not None and \
+            any(m.get("kind") == "epsilon" for m in paper.moves):
+        return [c for c in (paper.final_config, res.final_config) if c is not None], \
+            paper.moves
+    if paper.round_configs and res.round_configs:
+        (k, a), (k2, b) = paper.round_configs[0], res.round_configs[0]
+        robots = [m["robot"] for m in paper.moves[:k]]
+        if k and k == k2 and robots == [m["robot"] for m in res.moves[:k]] and \
+                paper.moves[k - 1].get("kind") == "epsilon" == res.moves[k - 1].get("kind"):
+            return [a, b], paper.moves[:k]
+    return None
 
 
 def _leader_text(leader) -> str:

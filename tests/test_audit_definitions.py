@@ -243,6 +243,29 @@ def test_epsilon_sense_is_not_a_discrepancy():
                                       "sense)")
 
 
+def test_frames_parting_after_the_first_rounds_epsilon_move_is_not_a_discrepancy():
+    """The reflected frame's epsilon move (the other sense) leaves a configuration on which
+    MakeAsym runs a second round (robot 2 to G_t's circle) while the file's frame stops
+    after one: the move lists differ, yet on each configuration after round one both
+    frames act alike -- the mover's choice of sense, not a frame-dependent leader."""
+    from exactsym.audit import _procedure
+    config = load(CASES / "gathering/reaches-symmetric-configuration.toml")
+    ident, refl = _procedure(config, "identity", {}), _procedure(config, "reflection", {})
+    assert [m["robot"] for m in ident.moves] == [0, 4]
+    assert [m["robot"] for m in refl.moves] == [0, 2, 4]
+    assert ident.round_configs[0][0] == refl.round_configs[0][0] == 1
+    for _, after in (ident.round_configs[0], refl.round_configs[0]):
+        a, b = _procedure(after, "identity", {}), _procedure(after, "reflection", {})
+        assert [m["robot"] for m in a.moves] == [m["robot"] for m in b.moves]
+        assert a.leader == b.leader == 4
+    rep = report("gathering/reaches-symmetric-configuration.toml")
+    assert ("ElectLeader", "conclusion") not in findings(rep)
+    assert ("lem-asym-ord", "conclusion") not in findings(rep)
+    sense = [d for d in rep["audit"]["notes"] if d["kind"] == "epsilon-sense"]
+    assert [(d["statement"], d["witness"]["epsilon_movers"], d["witness"]["leaders_after_move"])
+            for d in sense] == [("MakeAsym", [0], [4, 4])]
+
+
 def test_gathering_pattern_out_of_scope_below_five_robots():
     rep = report("discrepancies/family-collinear.toml")
     assert rep["n"] == 3 and "GatheringPattern" not in [s for s, _ in findings(rep)]

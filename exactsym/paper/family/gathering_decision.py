@@ -36,7 +36,10 @@ class PaperResult:
     exactly (then the leader is None); ``G``/``Gprime``: names and sizes;
     ``final_config``: the configuration after every move (MakeAsym's and
     Make_SymToAsym's), on which ``leader`` is elected (None when nothing moved or when
-    it cannot be built exactly): the audit continues a comparison of frames there."""
+    it cannot be built exactly): the audit continues a comparison of frames there;
+    ``round_configs``: ``(number of moves so far, configuration)`` after each round of
+    MakeAsym's moves, in order (the audit continues there when two frames part after an
+    epsilon move)."""
     orderable: bool
     gathering_possible: bool
     leader: int | None
@@ -51,6 +54,7 @@ class PaperResult:
     bounded: dict = field(default_factory=dict)
     G_rings: tuple = field(default=(), repr=False, compare=False)   # G, as Rings (family.Ring)
     final_config: Configuration | None = field(default=None, repr=False, compare=False)
+    round_configs: tuple = field(default=(), repr=False, compare=False)
 
 
 def paper_procedure(config: Configuration, ring_data: Levels | None = None,
@@ -142,6 +146,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
                        orderable, gathering, el.leader, [], True, trace, G, Gp,
                        None, el.branch, polar)
     rnd = 1
+    rounds: list = []          # the configuration after each round of MakeAsym's moves
     while True:
         gt = cur_Gp[-1]
         if not is_symmetric_polygon(gt):
@@ -203,6 +208,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
             _check_vl_move(trace, current, new, result, orientation, reading, rnd, limits)
         rnd += 1
         current, cur_rings = new, new_rings
+        rounds.append((len(moves), new))
         G2 = concentric_polygons(current, cur_rings)
         stats2: dict = {}
         cur_Gp = preprocess(G2, [], limits, stats2)
@@ -217,7 +223,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
     final = _after_move(current, cur_rings, el.moved_to) if moves else None
     return _finish(limits, bounded, config,
                    orderable, gathering, leader, moves, complete, trace, G, Gp,
-                   ma_outcome, el.branch, polar, final)
+                   ma_outcome, el.branch, polar, final, tuple(rounds))
 
 
 def _after_move(current: Configuration, rings: Levels, moved_to: dict):
@@ -236,7 +242,7 @@ def _after_move(current: Configuration, rings: Levels, moved_to: dict):
 
 
 def _finish(limits: Limits, bounded: dict, config, orderable, gathering, leader, moves,
-            complete, trace, G, Gp, ma, el, polar, final=None) -> PaperResult:
+            complete, trace, G, Gp, ma, el, polar, final=None, rounds=()) -> PaperResult:
     if not bounded.get("preprocess_complete", True):
         complete, leader = False, None        # G' is not the one the paper computes
     first = moves[0]["robot"] if moves else leader
@@ -246,7 +252,8 @@ def _finish(limits: Limits, bounded: dict, config, orderable, gathering, leader,
         bounded["polygons_described"] = limits.described
     return PaperResult(orderable, gathering, leader, moves, first, complete, trace,
                        describe(G, polar, limits.described),
-                       describe(Gp, polar, limits.described), ma, el, bounded, tuple(G), final)
+                       describe(Gp, polar, limits.described), ma, el, bounded, tuple(G), final,
+                       rounds)
 
 
 def _sense_note(before: Configuration, after: Configuration, result: MakeAsymResult,
