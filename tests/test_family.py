@@ -23,7 +23,7 @@ from exactsym.configuration import load
 from exactsym.exact import fmpq
 from exactsym.levels import levels_of
 from exactsym.paper import family as F
-from exactsym.paper.keys import hashable_key, line_value
+from exactsym.paper.keys import hashable_key
 from exactsym.paper import polygon as P
 from exactsym.paper.circle_polygon import polygon_from_directions
 

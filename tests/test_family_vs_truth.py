@@ -31,7 +31,7 @@ from exactsym.audit import audit, transformed
 from exactsym.configuration import Configuration, load
 from exactsym.levels import levels_of
 from exactsym.paper import family as F
-from exactsym.paper.keys import hashable_key, line_value
+from exactsym.paper.keys import line_value
 from exactsym.symmetry import symmetry_group
 
 from strategies import (PolarSimilarity, polar_configuration, rational_group_points,

@@ -16,7 +16,6 @@ from hypothesis import given, settings
 
 import exactsym.pictures as plot_pkg
 from exactsym.configuration import Configuration, load
-from exactsym.exact import fmpq as Q
 from exactsym.pictures import PlotUnavailable, plot
 from exactsym.pictures.cli import main
 

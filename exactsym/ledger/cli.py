@@ -29,7 +29,7 @@ from .audit_doc import render
 from .evidence import check_evidence, missing_files
 from .graph import dependency_graph, support
 from .model import load_ledger
-from .sweeps import SweepError, consistency, import_sweep, load_sweep, sweep_item
+from .sweeps import SweepError, import_sweep, load_sweep, sweep_item
 
 __all__ = ["add_arguments", "run", "main", "find_root", "ledger_json"]
 

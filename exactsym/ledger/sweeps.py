@@ -26,7 +26,6 @@ from __future__ import annotations
 
 import json
 import re
-import shutil
 from pathlib import Path
 
 __all__ = ["load_sweep", "sweep_item", "consistency", "needs_case", "import_sweep",

@@ -268,7 +268,7 @@ def _sense_note(before: Configuration, after: Configuration, result: MakeAsymRes
     head = f": robot {v} moved by epsilon clockwise for this observer"
     try:
         if before.radii is not None and after.radii is not None and ring_data.polar:
-            (r2, ta), (_, tb) = before.polar[v], after.polar[v]
+            (_, ta), (_, tb) = before.polar[v], after.polar[v]
             other = after.moved(v, Polar(after.radius(v), normal_turn(2 * ta - tb)))
             sec = polar_sec(other.polar)
             keeps = sec is not None and sec.radius_squared == ring_data.sec.radius_squared
