@@ -19,7 +19,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .configuration import Configuration, no_cycle_collection
-from .exact import exact_key, exact_sorted, fmpq
+from .algebraic_filtered import Enclosures, filtered_levels
+from .exact import FieldElement, exact_key, exact_sorted, fmpq
 from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
                        float_coordinates, float_differences, float_squared_norms,
                        sorted_by_value, squared_distance)
@@ -47,6 +48,9 @@ class Levels:
     # (points, fx, fy): the configuration's point sequence itself and the float arrays of
     # its coordinates, when the rational filters computed them (reused by the rays)
     floats: tuple | None = field(default=None, repr=False, compare=False)
+    # irrational coordinates: the Arb balls about the centre (algebraic_filtered.py),
+    # reused by the rays
+    enclosures: object = field(default=None, repr=False, compare=False)
 
 
 def polar_sec(polar) -> Circle | None:
@@ -80,6 +84,13 @@ def _levels_of(config: Configuration) -> Levels:
     floats = float_coordinates(points) if len(points) >= _FILTER_MIN \
         and isinstance(points[0][0], fmpq) else None
     circle = smallest_enclosing_circle(points, floats)
+    if len(points) >= 3 and floats is None and any(
+            isinstance(c, FieldElement) for p in points for c in p):
+        # irrational coordinates: distances and directions decided by certified balls,
+        # ties confirmed exactly; each level's exact radius computed when it is read
+        enc = Enclosures(config.points, circle.homogeneous)
+        flat, bounds = filtered_levels(enc, circle.support)
+        return Levels(circle, AlgebraicLevels(flat, bounds, enc), False, enclosures=enc)
     x, y, d = circle.homogeneous
     if isinstance(d, fmpq) and d == 1:
         centre = circle.centre
@@ -221,6 +232,32 @@ class RationalLevels(Sequence):
         rank = np.full(n, -1, dtype=np.int64)
         rank[flat] = np.repeat(np.arange(len(self)), np.diff(self.bounds))
         return None if (rank < 0).any() else rank.tolist()
+
+
+class AlgebraicLevels(RationalLevels):
+    """The levels of points with irrational coordinates (:mod:`exactsym.algebraic_filtered`),
+    lazily as :class:`RationalLevels`: a level's exact squared radius
+    ``D^2 |p - C|^2 / D^2`` is computed when the level is read (the truth reads none)."""
+
+    __slots__ = ("enclosures", "_d2")
+
+    def __init__(self, flat: list, bounds: list, enclosures):
+        super().__init__(flat, bounds, {})
+        self.enclosures = enclosures
+        self._d2 = None
+
+    def radius_squared(self, i: int):
+        enc = self.enclosures
+        r = enc.scaled_r2(i)
+        if enc.unit:
+            return r
+        if self._d2 is None:
+            d = enc.homogeneous[2]
+            self._d2 = d * d
+        return r / self._d2
+
+    def __reduce__(self):
+        return (tuple, (tuple(self),))
 
 
 def _group_rational_levels(n: int, radii_squared, order_level, approx=None, radius=None

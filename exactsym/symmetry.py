@@ -52,7 +52,9 @@ import numpy as np
 from .configuration import Configuration, no_cycle_collection
 from .geometry import PseudoAngle, intern_by_value, sorted_by_value
 from .exact import fmpq
-from .levels import Levels, levels_of
+from .algebraic_filtered import certified_c1
+from .levels import Levels, RationalLevels, levels_of
+from .sec import LazyCentre
 from .rays_filtered import filtered_rays, integer_pseudo_angle as _pseudo_angle_of_integers, \
     level_ranks
 from .strings import cyclic_occurrences as occurrences, cyclic_period
@@ -366,6 +368,12 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     if n == 1 and (not config.polar[0][0] if ring.polar else config.points[0] == centre):
         return SymmetryGroup("O2", 0, 0, centre, ring.polar, None, None, None, True, (0,), 0)
 
+    if not ring.polar and ring.enclosures is not None \
+            and ring.enclosures.points is config.points:
+        certified = _certified_c1(config, ring)
+        if certified is not None:
+            return certified
+
     filtered = None
     if ring.polar:
         centre_index, rays, ray_turns, radii, gaps = _polar_rays(config.polar)
@@ -465,6 +473,29 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
                          reference, orderable, ordering, leader, layout)
 
 
+def _certified_c1(config: Configuration, ring: Levels) -> SymmetryGroup | None:
+    """C1 certified by Arb balls (:func:`exactsym.algebraic_filtered.certified_c1`), with
+    the same canonical labelling as the exact path below; None when the balls leave a
+    symmetry possible.  The centre is divided out only when read."""
+    enc = ring.enclosures
+    rank = level_ranks(ring, config.n)
+    if rank is None:
+        return None
+    found = certified_c1(enc, rank, enc.centre_index)
+    if found is None:
+        return None
+    rays, labelling = found
+    centre_index = enc.centre_index
+    if centre_index is not None:
+        labelling.insert(0, centre_index)
+    reference = _reference(ring, labelling, centre_index)
+    centre = LazyCentre(ring.sec)
+    layout = _Layout(centre, reference, centre_index, tuple(rays), None, config.points,
+                     config.n, len(rays), ())
+    return SymmetryGroup("C1", 1, 0, centre, False, None, None, reference, True,
+                         tuple(labelling), labelling[0], layout)
+
+
 class _Symbols:
     """The symbols ``(radii of ray r, angle to the next ray)`` read counter-clockwise, or
     clockwise (``(radii of ray -i, angle from ray -i-1 to ray -i)``), made on demand."""
@@ -517,16 +548,25 @@ def _is_half_turn(gap, polar: bool) -> bool:
 
 def _reference(ring: Levels, labelling: list[int], centre_index: int | None) -> int | None:
     """The first point, in the canonical labelling, of the sparsest level off the centre
-    (fewest points; the nearest on a tie)."""
+    (fewest points; the nearest on a tie).  The level of radius 0 is the one point at the
+    centre: no radius is read (a lazy level's exact radius costs field products)."""
+    levels = ring.levels
+    if isinstance(levels, RationalLevels):
+        flat, bounds = levels.flat, levels.bounds
+        members_of = (flat[bounds[k]:bounds[k + 1]] for k in range(len(bounds) - 1))
+    else:
+        members_of = (level.points for level in levels)
     sparsest = None
-    for level in ring.levels:
-        if level.radius_squared and level.points and \
-                (sparsest is None or len(level.points) < len(sparsest.points)):
-            sparsest = level
-            if len(level.points) == 1:         # none is sparser, and nearer ones came first
+    for points in members_of:
+        if not points or (centre_index is not None and len(points) == 1
+                          and points[0] == centre_index):
+            continue
+        if sparsest is None or len(points) < len(sparsest):
+            sparsest = points
+            if len(points) == 1:         # none is sparser, and nearer ones came first
                 break
     if sparsest is not None:
-        members = set(sparsest.points)
+        members = set(sparsest)
         for i in labelling:
             if i in members and i != centre_index:
                 return i
