@@ -27,7 +27,7 @@ from functools import cmp_to_key
 
 from flint import arb, ctx
 
-from .exact import FieldElement, exact_key, exact_sorted
+from .exact import FieldElement, exact_sorted
 from .exact.field import PolyElement
 from .geometry import PseudoAngle
 from .strings import cyclic_occurrences, cyclic_period
@@ -91,6 +91,51 @@ def sum_of_products(pairs):
     return total
 
 
+_BALLS: dict = {}      # id(points) -> (points, xs, ys): the last few point tuples' balls
+
+
+def coordinate_balls(points, polar=None) -> tuple[list, list]:
+    """Arb balls of the coordinates of ``points`` (a tuple, kept alive by the cache entry,
+    so its id is not reused while cached); computed once per point tuple (the duplicate
+    check of ``load`` and the levels share them).  ``polar``: ``(radii, turns)`` of the
+    same points, when given in polar form: ``r cos(2 pi t)``, ``r sin(2 pi t)`` are then
+    enclosed directly (a cosine in a cyclotomic field of degree 5,760 is a polynomial of
+    that degree to evaluate)."""
+    hit = _BALLS.get(id(points))
+    if hit is not None and hit[0] is points:
+        return hit[1], hit[2]
+    with ctx.workprec(PREC):
+        if polar is not None:
+            radii = [_ball(r) for r in polar[0]]
+            xs = [r * arb.cos_pi_fmpq(2 * t) for r, t in zip(radii, polar[1])]
+            ys = [r * arb.sin_pi_fmpq(2 * t) for r, t in zip(radii, polar[1])]
+        else:
+            xs = [_ball(p[0]) for p in points]
+            ys = [_ball(p[1]) for p in points]
+    if len(_BALLS) >= 4:
+        _BALLS.clear()
+    _BALLS[id(points)] = (points, xs, ys)
+    return xs, ys
+
+
+def overlapping_pairs(xs: list, ys: list) -> list[tuple[int, int]]:
+    """The pairs ``(j, i)``, ``j < i``, that the balls cannot separate: every pair of equal
+    points is among them.  Points are split into certainly ordered groups by x
+    (:func:`interval_groups`), each group by y; pairs are taken inside the final groups."""
+    lx, ly = [_bounds(b) for b in xs], [_bounds(b) for b in ys]
+    ylo, yhi = [b[0] for b in ly], [b[1] for b in ly]
+    pairs = []
+    by_x = sorted(range(len(xs)), key=lambda i: float(xs[i].mid()))
+    for gx in interval_groups([b[0] for b in lx], [b[1] for b in lx], by_x):
+        if len(gx) < 2:
+            continue
+        by_y = sorted(gx, key=lambda i: float(ys[i].mid()))
+        for g in interval_groups(ylo, yhi, by_y):
+            g = sorted(g)
+            pairs.extend((j, i) for k, i in enumerate(g) for j in g[:k])
+    return pairs
+
+
 class Enclosures:
     """Balls of the points about the centre ``(X/D, Y/D)`` (``homogeneous``, ``D > 0``),
     and their exact counterparts computed on demand."""
@@ -103,8 +148,9 @@ class Enclosures:
         with ctx.workprec(PREC):
             bd = _ball(d)
             cx, cy = _ball(x) / bd, _ball(y) / bd
-            self.vx = [_ball(p[0]) - cx for p in points]
-            self.vy = [_ball(p[1]) - cy for p in points]
+            xs, ys = coordinate_balls(points)
+            self.vx = [b - cx for b in xs]
+            self.vy = [b - cy for b in ys]
             self.r2 = [a * a + b * b for a, b in zip(self.vx, self.vy)]
             self.two_pi = 2 * arb.pi()
         self._vectors: dict = {}
@@ -213,7 +259,8 @@ def filtered_levels(enc: Enclosures, support: tuple[int, ...]):
         if len(group) == 1 or all(i in on_circle for i in group):
             classes = [group]
         else:
-            keyed: dict = {}
+            # exact classes by == (canonical forms; hashing a long polynomial costs more)
+            found: list = []
             rep = None                  # one support point stands for all of them
             for i in group:
                 if i in on_circle:
@@ -223,8 +270,13 @@ def filtered_levels(enc: Enclosures, support: tuple[int, ...]):
                 else:
                     j = i
                 r = enc.scaled_r2(j)
-                keyed.setdefault(exact_key(r), [r]).append(i)
-            classes = [c[1:] for c in exact_sorted(list(keyed.values()), key=lambda c: c[0])]
+                for c in found:
+                    if c[0] == r:
+                        c.append(i)
+                        break
+                else:
+                    found.append([r, i])
+            classes = [c[1:] for c in exact_sorted(found, key=lambda c: c[0])]
         for members in classes:
             bounds.append(len(flat))
             if len(members) > 1:
@@ -264,7 +316,7 @@ class _Gaps:
                 self.enc.vector(self.firsts[(a + 1) % m])
             dot = sum_of_products([(ux, vx), (uy, vy)])
             cross = sum_of_products([(ux, vy), (-uy, vx)])
-            g = self._exact[a] = (PseudoAngle(dot, cross), (exact_key(dot), exact_key(cross)))
+            g = self._exact[a] = (PseudoAngle(dot, cross), (dot, cross))
         return g
 
     def compare(self, a: int, b: int) -> int:
@@ -279,7 +331,7 @@ class _Gaps:
         if x > y:
             return 1
         (ga, ka), (gb, kb) = self.exact(a), self.exact(b)
-        if ka == kb:
+        if ka[0] == kb[0] and ka[1] == kb[1]:     # equal dot and cross: the same angle
             return 0
         return ga._cmp(gb)
 

@@ -19,12 +19,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .configuration import Configuration, no_cycle_collection
-from .algebraic_filtered import Enclosures, filtered_levels
+from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels
 from .exact import FieldElement, exact_key, exact_sorted, fmpq
 from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
                        float_coordinates, float_differences, float_squared_norms,
                        sorted_by_value, squared_distance)
-from .sec import Circle, smallest_enclosing_circle
+from .sec import Circle, floats_of_balls, smallest_enclosing_circle
 
 _FILTER_MIN = 64    # from this many rational points, levels are ordered by certified floats
 _EXACT_SORT_BUDGET = 256    # points of levels sorted exactly before the filtered pass pays
@@ -83,14 +83,17 @@ def _levels_of(config: Configuration) -> Levels:
     # (through Levels.floats) the rays
     floats = float_coordinates(points) if len(points) >= _FILTER_MIN \
         and isinstance(points[0][0], fmpq) else None
-    circle = smallest_enclosing_circle(points, floats)
     if len(points) >= 3 and floats is None and any(
             isinstance(c, FieldElement) for p in points for c in p):
         # irrational coordinates: distances and directions decided by certified balls,
         # ties confirmed exactly; each level's exact radius computed when it is read
+        balls = coordinate_balls(config.points, _polar_parts(config))
+        fx, fy, errors = floats_of_balls(*balls)
+        circle = smallest_enclosing_circle(points, (fx, fy), errors)
         enc = Enclosures(config.points, circle.homogeneous)
         flat, bounds = filtered_levels(enc, circle.support)
         return Levels(circle, AlgebraicLevels(flat, bounds, enc), False, enclosures=enc)
+    circle = smallest_enclosing_circle(points, floats)
     x, y, d = circle.homogeneous
     if isinstance(d, fmpq) and d == 1:
         centre = circle.centre
@@ -131,6 +134,13 @@ def _levels_of(config: Configuration) -> Levels:
     levels = _group_levels(scaled, lambda members: _angular_order(vectors, members))
     return Levels(circle, tuple(Level(level.radius_squared / d2, level.points)
                                 for level in levels), False)
+
+
+def _polar_parts(config: Configuration):
+    """``(radii, turns)`` of a configuration given in polar form, else None."""
+    if config.polar is None or config.radii is None:
+        return None
+    return config.radii, [t for _, t in config.polar]
 
 
 def _angular_order(vectors, members: list[int]) -> list[int]:

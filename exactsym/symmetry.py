@@ -363,16 +363,15 @@ def symmetry_group(config: Configuration, rings: Levels | None = None) -> Symmet
 
 
 def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
-    centre = ring.sec.centre
-    n = config.n
-    if n == 1 and (not config.polar[0][0] if ring.polar else config.points[0] == centre):
-        return SymmetryGroup("O2", 0, 0, centre, ring.polar, None, None, None, True, (0,), 0)
-
     if not ring.polar and ring.enclosures is not None \
             and ring.enclosures.points is config.points:
         certified = _certified_c1(config, ring)
         if certified is not None:
             return certified
+    centre = ring.sec.centre
+    n = config.n
+    if n == 1 and (not config.polar[0][0] if ring.polar else config.points[0] == centre):
+        return SymmetryGroup("O2", 0, 0, centre, ring.polar, None, None, None, True, (0,), 0)
 
     filtered = None
     if ring.polar:
