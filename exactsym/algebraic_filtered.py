@@ -194,6 +194,8 @@ class Enclosures:
                 return arb.atan2(by, bx)
             if by < 0:
                 return arb.atan2(by, bx) + self.two_pi
+            if bx < 0:                  # near the -x ray: pi + the angle of -(p - C)
+                return arb.pi() + arb.atan2(-by, -bx)
             if bx > 0:                  # near the +x ray: the exact sign of y says which end
                 s = _sign(self.vector(i)[1])
                 if s == 0:

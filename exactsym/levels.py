@@ -28,6 +28,9 @@ from .sec import Circle, floats_of_balls, smallest_enclosing_circle
 
 _FILTER_MIN = 64    # from this many rational points, levels are ordered by certified floats
 _EXACT_SORT_BUDGET = 256    # points of levels sorted exactly before the filtered pass pays
+#: irrational coordinates go through the Arb-ball filters (False: the exact path alone,
+#: which the tests compare them with)
+ALGEBRAIC_FILTER = True
 
 
 @dataclass(frozen=True)
@@ -83,7 +86,7 @@ def _levels_of(config: Configuration) -> Levels:
     # (through Levels.floats) the rays
     floats = float_coordinates(points) if len(points) >= _FILTER_MIN \
         and isinstance(points[0][0], fmpq) else None
-    if len(points) >= 3 and floats is None and any(
+    if ALGEBRAIC_FILTER and len(points) >= 3 and floats is None and any(
             isinstance(c, FieldElement) for p in points for c in p):
         # irrational coordinates: distances and directions decided by certified balls,
         # ties confirmed exactly; each level's exact radius computed when it is read
