@@ -159,6 +159,11 @@ class Enclosures:
         self.centre_index = None
         self.theta = [self._theta(i) for i in range(len(points))]
 
+    def __reduce__(self):
+        # Arb balls do not pickle: a pickled Levels loses its enclosures (the exact path
+        # then decides), never its values
+        return (_dropped, ())
+
     # -- exact values, on demand -------------------------------------------------------
     def vector(self, i: int):
         """``D (p_i - C)``, exactly."""
@@ -234,6 +239,10 @@ class Enclosures:
             order = sorted(indices, key=cmp_to_key(self.compare_directions))
             adjacent = [self.compare_directions(a, b) for a, b in zip(order, order[1:])]
         return order, adjacent
+
+
+def _dropped() -> None:
+    return None
 
 
 def _sign(x) -> int:

@@ -20,7 +20,7 @@ import numpy as np
 
 from .configuration import Configuration, no_cycle_collection
 from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels
-from .exact import FieldElement, exact_key, exact_sorted, fmpq
+from .exact import FieldElement, RationalSystem, exact_key, exact_sorted, fmpq
 from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
                        float_coordinates, float_differences, float_squared_norms,
                        sorted_by_value, squared_distance)
@@ -85,7 +85,8 @@ def _levels_of(config: Configuration) -> Levels:
     # many rational points: their floats, converted once, filter the SEC, the levels and
     # (through Levels.floats) the rays
     floats = float_coordinates(points) if len(points) >= _FILTER_MIN \
-        and isinstance(points[0][0], fmpq) else None
+        and isinstance(points[0][0], fmpq) and isinstance(config.system, RationalSystem) \
+        else None
     if ALGEBRAIC_FILTER and len(points) >= 3 and floats is None and any(
             isinstance(c, FieldElement) for p in points for c in p):
         # irrational coordinates: distances and directions decided by certified balls,

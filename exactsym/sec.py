@@ -271,7 +271,7 @@ def _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2, errors=Non
             # |(e + t)^2 - e^2| <= 2 |e| t + t^2 per coordinate, t the float's error
             err = np.asarray(errors, dtype=float)
             slack += (2 * spread * err + 2 * err * err) * 1.01
-        elif not all(isinstance(c, fmpq) for p in points for c in p):
+        elif not isinstance(points[0][0], fmpq):     # given floats of algebraic points
             slack += 4 * (np.abs(px) + np.abs(py)) * 2.0 ** -40 * (spread + 1)
         if np.any(d2 - slack > fr2):
             return False

@@ -217,3 +217,11 @@ def test_coincident_irrational_matches_exact_keys():
     points = config.points
     keys = [(exact_key(x), exact_key(y)) for x, y in points]
     assert len(set(keys)) == 3 and _coincident(config) is None
+
+
+def test_levels_pickle_without_their_balls():
+    config = _make([("sqrt(2)", "sqrt(3)"), ("sqrt(5)", "0"), ("0", "sqrt(7)")])
+    ring = levels_of(config)
+    copy = pickle.loads(pickle.dumps(ring))
+    assert copy.enclosures is None and copy.levels == ring.levels
+    assert symmetry_group(config, copy).ordering == symmetry_group(config, ring).ordering
