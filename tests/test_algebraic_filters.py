@@ -18,6 +18,7 @@ import exactsym.levels as levels_module
 from exactsym.configuration import Similarity, _coincident, from_file
 from exactsym.errors import InputError
 from exactsym.exact import exact_key, fmpq
+from exactsym.exact.field import PolyElement
 from exactsym.fileformat import parse_config_text
 from exactsym.levels import AlgebraicLevels, levels_of
 from exactsym.symmetry import _certified_c1, symmetry_group
@@ -186,22 +187,24 @@ def test_lazy_values_equal_the_exact_ones():
 @settings(max_examples=25, deadline=None)
 @given(st.lists(st.tuples(st.integers(0, 3), st.integers(0, 3)), min_size=3, max_size=9))
 def test_duplicate_check_by_balls_equals_the_exact_scan(picks):
-    # coordinates from spellings of a few numbers (equal values, different spellings)
-    spellings = [["sqrt(2)", "sqrt(8)/2", "2/sqrt(2)"], ["1", "sqrt(4)/2", "1"],
-                 ["sqrt(3)+1", "1+sqrt(3)", "sqrt(12)/2 + 1"], ["1/3", "2/6", "1/3"]]
+    # coordinates from spellings of a few numbers (equal values, different spellings), in
+    # a cyclotomic field (the last row's cosine): the duplicate check uses the balls
+    spellings = [["cos(pi/5)", "(1+sqrt(5))/4", "sin(pi/10)+1/2"], ["1", "cos(0)", "2*cos(pi/3)"],
+                 ["sqrt(3)+1", "2*sin(pi/3)+1", "1+sqrt(12)/2"], ["1/3", "2/6", "cos(pi/3)-1/6"]]
     rows = [(spellings[a][i % 3], spellings[b][(i + 1) % 3]) for i, (a, b) in enumerate(picks)]
+    rows.append(("cos(pi/7)", "5"))
     text = "format = 1\npoints = [\n" + "".join(f'  ["{x}", "{y}"],\n' for x, y in rows) + "]\n"
     expected = None
     seen: dict = {}
-    values = [(a, b) for a, b in picks]
-    for i, v in enumerate(values):
+    for i, v in enumerate(picks):
         j = seen.setdefault(v, i)
         if j != i:
             expected = (j, i)
             break
     try:
-        from_file(parse_config_text(text, "<test>.toml", "toml"))
+        config = from_file(parse_config_text(text, "<test>.toml", "toml"))
         found = None
+        assert isinstance(config.points[-1][0], PolyElement)
     except InputError as err:
         found = tuple(int(w) for w in str(err).split("points ")[1].split(" coincide")[0]
                       .split(" and "))
@@ -209,11 +212,12 @@ def test_duplicate_check_by_balls_equals_the_exact_scan(picks):
 
 
 def test_coincident_irrational_matches_exact_keys():
-    rows = [("sqrt(2)", "1"), ("1", "0"), ("sqrt(8)/2", "1"), ("1", "sqrt(1)"), ("1", "0")]
+    rows = [("cos(pi/5)", "1"), ("1", "0"), ("(1+sqrt(5))/4", "1"), ("1", "sqrt(1)"),
+            ("1", "0")]
     text = "format = 1\npoints = [\n" + "".join(f'  ["{x}", "{y}"],\n' for x, y in rows) + "]\n"
     with pytest.raises(InputError, match="points 0 and 2 coincide"):
         from_file(parse_config_text(text, "<test>.toml", "toml"))
-    config = _config([("sqrt(2)", "1"), ("1", "0"), ("sqrt(3)", "1/2")])
+    config = _config([("cos(pi/5)", "1"), ("1", "0"), ("sqrt(5)", "1/2")])
     points = config.points
     keys = [(exact_key(x), exact_key(y)) for x, y in points]
     assert len(set(keys)) == 3 and _coincident(config) is None
