@@ -105,8 +105,8 @@ def rotation(layout: Layout, shift: int) -> Isometry:
         one, zero = _one_zero(layout.centre)
         return Isometry("rotation", layout.centre, None, ((one, zero), (zero, one)), perm)
     (ux, uy), (vx, vy) = _reference_image(layout, image_ray)
-    u2 = ux * ux + uy * uy
-    cos, sin = (ux * vx + uy * vy) / u2, (ux * vy - uy * vx) / u2
+    inverse = 1 / (ux * ux + uy * uy)      # one field inverse, not two
+    cos, sin = (ux * vx + uy * vy) * inverse, (ux * vy - uy * vx) * inverse
     return Isometry("rotation", layout.centre, None, ((cos, -sin), (sin, cos)), perm)
 
 
@@ -125,6 +125,6 @@ def reflection(layout: Layout, offset: int) -> Isometry:
             axis -= fmpq(1, 2)
         return Isometry("reflection", layout.centre, axis, None, perm)
     (ux, uy), (vx, vy) = _reference_image(layout, image_ray)
-    u2 = ux * ux + uy * uy
-    c, s = (ux * vx - uy * vy) / u2, (ux * vy + uy * vx) / u2
+    inverse = 1 / (ux * ux + uy * uy)      # one field inverse, not two
+    c, s = (ux * vx - uy * vy) * inverse, (ux * vy + uy * vx) * inverse
     return Isometry("reflection", layout.centre, None, ((c, s), (s, -c)), perm)
