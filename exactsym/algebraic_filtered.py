@@ -301,15 +301,20 @@ def filtered_levels(enc: Enclosures, support: tuple[int, ...]):
 
 class _Gaps:
     """The angles from ray a to ray a + 1: balls, provisional classes (certified order
-    between classes) and exact pseudo-angles on demand."""
+    between classes) and exact comparisons on demand.  ``rank[i]``: point i's level."""
 
-    def __init__(self, enc: Enclosures, firsts: list[int]):
+    def __init__(self, enc: Enclosures, firsts: list[int], rank: list[int]):
         self.enc, self.firsts = enc, firsts
         m = len(firsts)
         theta = [enc.theta[i] for i in firsts]
         with ctx.workprec(PREC):
             self.balls = [theta[(a + 1) % m] - theta[a] + (enc.two_pi if a == m - 1 else 0)
                           for a in range(m)]
+            pi = arb.pi()
+            # -1: the gap is certainly below a half turn, 1: above, 0: unknown
+            self.side = [-1 if g < pi else (1 if g > pi else 0) for g in self.balls]
+        # the levels of the two rays of each gap (their nearest points)
+        self.radii = [(rank[firsts[a]], rank[firsts[(a + 1) % m]]) for a in range(m)]
         lohi = [_bounds(b) for b in self.balls]
         order = sorted(range(m), key=lambda a: float(self.balls[a].mid()))
         self.cls = [0] * m
@@ -317,18 +322,28 @@ class _Gaps:
                                                   order)):
             for a in group:
                 self.cls[a] = c
-        self._exact: dict = {}
+        self._dot: dict = {}
+        self._cross: dict = {}
 
-    def exact(self, a: int):
-        g = self._exact.get(a)
-        if g is None:
-            m = len(self.firsts)
-            (ux, uy), (vx, vy) = self.enc.vector(self.firsts[a]), \
-                self.enc.vector(self.firsts[(a + 1) % m])
-            dot = sum_of_products([(ux, vx), (uy, vy)])
-            cross = sum_of_products([(ux, vy), (-uy, vx)])
-            g = self._exact[a] = (PseudoAngle(dot, cross), (dot, cross))
-        return g
+    def _vectors(self, a: int):
+        m = len(self.firsts)
+        return self.enc.vector(self.firsts[a]), self.enc.vector(self.firsts[(a + 1) % m])
+
+    def dot(self, a: int):
+        """``u . v`` for the rays at and after gap a, exactly (scaled by D^2)."""
+        d = self._dot.get(a)
+        if d is None:
+            (ux, uy), (vx, vy) = self._vectors(a)
+            d = self._dot[a] = sum_of_products([(ux, vx), (uy, vy)])
+        return d
+
+    def cross(self, a: int):
+        """``u x v`` for the rays at and after gap a, exactly (scaled by D^2)."""
+        c = self._cross.get(a)
+        if c is None:
+            (ux, uy), (vx, vy) = self._vectors(a)
+            c = self._cross[a] = sum_of_products([(ux, vy), (-uy, vx)])
+        return c
 
     def compare(self, a: int, b: int) -> int:
         if a == b:
@@ -341,10 +356,20 @@ class _Gaps:
             return -1
         if x > y:
             return 1
-        (ga, ka), (gb, kb) = self.exact(a), self.exact(b)
-        if ka[0] == kb[0] and ka[1] == kb[1]:     # equal dot and cross: the same angle
+        side = self.side[a]
+        if side != 0 and side == self.side[b] and self.radii[a] == self.radii[b]:
+            # equal |u|, |v| (same levels) and both angles on one side of a half turn:
+            # u . v = |u| |v| cos(angle) decides alone (cos is monotone there)
+            dot_a, dot_b = self.dot(a), self.dot(b)
+            if dot_a == dot_b:
+                return 0
+            smaller = dot_a > dot_b if side < 0 else dot_a < dot_b
+            return -1 if smaller else 1
+        dot_a, dot_b = self.dot(a), self.dot(b)
+        cross_a, cross_b = self.cross(a), self.cross(b)
+        if dot_a == dot_b and cross_a == cross_b:     # the same angle (signs not needed)
             return 0
-        return ga._cmp(gb)
+        return PseudoAngle(dot_a, cross_a)._cmp(PseudoAngle(dot_b, cross_b))
 
 
 def certified_c1(enc: Enclosures, rank: list[int], centre_index: int | None):
@@ -371,7 +396,7 @@ def certified_c1(enc: Enclosures, rank: list[int], centre_index: int | None):
     distinct = sorted(set(keys))
     key_id = {k: r for r, k in enumerate(distinct)}
     ray_ids = [key_id[k] for k in keys]
-    gaps = _Gaps(enc, [ray[0] for ray in rays_t])
+    gaps = _Gaps(enc, [ray[0] for ray in rays_t], rank)
     width = max(gaps.cls) + 1
     ccw = [ray_ids[i] * width + gaps.cls[i] for i in range(m)]
     cw = [ray_ids[-i % m] * width + gaps.cls[(-i - 1) % m] for i in range(m)]

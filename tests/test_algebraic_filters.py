@@ -229,3 +229,24 @@ def test_levels_pickle_without_their_balls():
     copy = pickle.loads(pickle.dumps(ring))
     assert copy.enclosures is None and copy.levels == ring.levels
     assert symmetry_group(config, copy).ordering == symmetry_group(config, ring).ordering
+
+
+@pytest.mark.parametrize("t", ["1e-45", "-1e-45"])
+@pytest.mark.parametrize("moved", [0, 5])
+def test_gap_near_tie_beyond_the_balls_decided_exactly(t, moved):
+    # C4 rings at 10 and 50 degrees and one point on the ray at 140 degrees (so the balls
+    # certify C1, the gaps unchanged); one ring point turned about C by an exact
+    # Pythagorean rotation of about 2e-45 rad, radius unchanged: two gaps between the same
+    # levels differ by less than the balls resolve, and that decides the labelling
+    rows = []
+    for j in range(4):
+        rows.append((f"cos({1 + 9 * j}*pi/18)", f"sin({1 + 9 * j}*pi/18)"))
+        rows.append((f"2*cos({5 + 9 * j}*pi/18)", f"2*sin({5 + 9 * j}*pi/18)"))
+    rows.append(("3/2*cos(14*pi/18)", "3/2*sin(14*pi/18)"))
+    x, y = rows[moved]
+    c, s = f"((1-({t})^2)/(1+({t})^2))", f"(2*({t})/(1+({t})^2))"
+    rows[moved] = (f"{c}*{x} - {s}*{y}", f"{s}*{x} + {c}*{y}")
+    config = _make(rows)
+    filtered, exact = _both(config)
+    assert filtered == exact
+    assert _certified_c1(config, levels_of(config)) is not None
