@@ -265,10 +265,10 @@ class AlgebraicLevels(RationalLevels):
         r = enc.scaled_r2(i)
         if enc.unit:
             return r
-        if self._d2 is None:
+        if self._d2 is None:               # 1 / D^2, one field inverse for all levels
             d = enc.homogeneous[2]
-            self._d2 = d * d
-        return r / self._d2
+            self._d2 = 1 / (d * d)
+        return r * self._d2
 
     def __reduce__(self):
         return (tuple, (tuple(self),))
