@@ -387,7 +387,7 @@ def _coincident_irrational(config: Configuration) -> tuple[int, int] | None:
     hashes faster than it is enclosed, so those keep the dictionary scan)."""
     from .algebraic_filtered import coordinate_balls, overlapping_pairs
     points = config.points
-    xs, ys = coordinate_balls(points)
+    xs, ys = coordinate_balls(points, specs=config.specs or None)
     best = None
     for j, i in overlapping_pairs(xs, ys):         # j < i
         if points[i][0] == points[j][0] and points[i][1] == points[j][1]:

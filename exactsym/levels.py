@@ -91,7 +91,7 @@ def _levels_of(config: Configuration) -> Levels:
             isinstance(c, FieldElement) for p in points for c in p):
         # irrational coordinates: distances and directions decided by certified balls,
         # ties confirmed exactly; each level's exact radius computed when it is read
-        balls = coordinate_balls(config.points, _polar_parts(config))
+        balls = coordinate_balls(config.points, _polar_parts(config), config.specs or None)
         fx, fy, errors = floats_of_balls(*balls)
         circle = smallest_enclosing_circle(points, (fx, fy), errors)
         enc = Enclosures(config.points, circle.homogeneous)

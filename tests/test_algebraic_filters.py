@@ -11,6 +11,7 @@ from contextlib import contextmanager
 from fractions import Fraction
 
 import pytest
+from flint import arb
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -293,3 +294,19 @@ def test_filtered_equals_exact_on_mixed_fields(rows):
         return
     filtered, exact = _both(config)
     assert filtered == exact
+
+
+@pytest.mark.parametrize("rows", [
+    [("cos(2*pi/5)^3 - 1/2", "sin(pi/5)*3/4 + (1 + 1e-40) - 1"),
+     ("2/(1+cos(pi/5))", "sqrt(5)"), ("sqrt(0)", "cos(pi/10)^-1")],
+    [("sqrt(2+sqrt(3))/2", "(sqrt(3)-1)^-2"), ("1", "0"), ("0", "sqrt(5-sqrt(2))")],
+])
+def test_expression_balls_enclose_the_exact_values(rows):
+    from exactsym.algebraic_filtered import coordinate_balls
+    config = _config(rows)
+    xs, ys = coordinate_balls(config.points, specs=config.specs)
+    for (x, y), bx, by in zip(config.points, xs, ys):
+        for value, ball in ((x, bx), (y, by)):
+            exact = value.enclosure(200) if hasattr(value, "enclosure") else arb(value)
+            assert ball.is_finite() and ball.overlaps(exact)
+            assert ball.rad() < 1e-30
