@@ -5,6 +5,12 @@ symmetry_group) is timed in a child process, and so is the whole ``exactsym chec
 (a subprocess with a timeout).  Run: ``python bench/bench_small_algebraic.py``
 (``--timeout S`` per run, default 60; ``--only NAME`` for one input).
 
+``--in-process``: only the truth, timed inside the child after its imports (load + levels
++ symmetry_group, wall and CPU seconds; the best of ``--repeat`` fresh children, default
+3, since the first call in a process also builds the number fields), against the 0.2 s
+target for asymmetric inputs (group C1) and 1 s for the others, judged on CPU seconds
+(the wall clock of a busy shared machine measures the other processes too).
+
 Targets (issue 9): truth < 1 s and full check < 5 s for up to 100 points whose numbers are
 square roots of rationals, cos/sin of rational multiples of pi or nested radicals of depth
 up to 3; asymmetric ones < 0.2 s; a refusal only beyond documented bounds, within a second.
@@ -25,10 +31,10 @@ import sys, time
 from exactsym.configuration import load
 from exactsym.levels import levels_of
 from exactsym.symmetry import symmetry_group
-start = time.perf_counter()
+start, cpu = time.perf_counter(), time.process_time()
 config = load(sys.argv[1])
 group = symmetry_group(config, levels_of(config))
-print(f"{time.perf_counter() - start:.3f} {group.name}")
+print(f"{time.perf_counter() - start:.4f} {time.process_time() - cpu:.4f} {group.name}")
 """
 
 
@@ -114,11 +120,50 @@ def run(args: list[str], timeout: float) -> tuple[float, str]:
     return elapsed, done.stdout.split()[-1] if done.stdout.split() else "?"
 
 
+def in_process(opts) -> None:
+    """The truth's time inside a fresh interpreter, imports excluded (best of repeats)."""
+    print(f"{'input':32} {'wall s':>7} {'cpu s':>7} {'group':>6}  target (cpu; C1 < 0.2 s)")
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, text in inputs().items():
+            if opts.only and opts.only not in name:
+                continue
+            path = Path(tmp) / "input.toml"
+            path.write_text(text)
+            best = None
+            for _ in range(opts.repeat):
+                try:
+                    done = subprocess.run([sys.executable, "-c", TRUTH, str(path)],
+                                          capture_output=True, text=True, timeout=opts.timeout)
+                except subprocess.TimeoutExpired:
+                    best = None
+                    break
+                fields = done.stdout.split()
+                if done.returncode != 0 or len(fields) != 3:
+                    break
+                wall, cpu, group = float(fields[0]), float(fields[1]), fields[2]
+                if best is None or wall < best[0]:
+                    best = (wall, cpu, group)
+            if best is None:
+                print(f"{name:32} {'-':>7} {'-':>7} {'-':>6}  refused or timeout", flush=True)
+                continue
+            wall, cpu, group = best
+            # judged on CPU seconds: on a shared machine the wall clock measures the others
+            limit = 0.2 if group == "C1" else 1.0
+            target = f"< {limit:g} s " + ("ok" if cpu < limit else "MISSED")
+            print(f"{name:32} {wall:7.3f} {cpu:7.3f} {group:>6}  {target}", flush=True)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--timeout", type=float, default=60.0)
     parser.add_argument("--only")
+    parser.add_argument("--in-process", action="store_true",
+                        help="only the truth, timed inside the child, imports excluded")
+    parser.add_argument("--repeat", type=int, default=3)
     opts = parser.parse_args()
+    if opts.in_process:
+        in_process(opts)
+        return
     exactsym = [sys.executable, "-m", "exactsym"]
     print(f"{'input':28} {'truth s':>8} {'group':>8} {'check s':>8}  outcome")
     with tempfile.TemporaryDirectory() as tmp:

@@ -30,6 +30,7 @@ from .errors import ExpressionError, InputError, MoveImpossible
 from .exact import (FieldElement, RationalSystem, evaluate, exact_key, fmpq, normal_turn,
                     number_system, sign)
 from .exprtree import Const, Node
+from .exact.field import PolyElement
 from .geometry import float_coordinates
 
 
@@ -363,6 +364,9 @@ def _coincident(config: Configuration) -> tuple[int, int] | None:
         candidates = _equal_float_groups(config.points)
         if candidates is not None:
             return _first_coincident(config.points, candidates)
+    if config.polar is None and config.n >= 3 and any(
+            isinstance(c, PolyElement) for p in config.points for c in p):
+        return _coincident_irrational(config)      # polynomials: hashing them is slow
     seen: dict = {}
     keys = config.polar if config.polar is not None else config.points
     for i, (a, b) in enumerate(keys):
@@ -372,6 +376,24 @@ def _coincident(config: Configuration) -> tuple[int, int] | None:
         if j != i:
             return j, i
     return None
+
+
+def _coincident_irrational(config: Configuration) -> tuple[int, int] | None:
+    """:func:`_coincident` for points with irrational coordinates: Arb balls of the
+    coordinates (kept for the levels, ``algebraic_filtered.coordinate_balls``) separate
+    the points whose balls are disjoint; only points whose balls overlap in both
+    coordinates are compared exactly (hashing a polynomial of degree 960 per coordinate
+    cost more than the rest of the truth, issue 9; a multiquadratic or tower element
+    hashes faster than it is enclosed, so those keep the dictionary scan)."""
+    from .algebraic_filtered import coordinate_balls, overlapping_pairs
+    points = config.points
+    xs, ys = coordinate_balls(points, specs=config.specs or None)
+    best = None
+    for j, i in overlapping_pairs(xs, ys):         # j < i
+        if points[i][0] == points[j][0] and points[i][1] == points[j][1]:
+            if best is None or i < best[1] or (i == best[1] and j < best[0]):
+                best = (j, i)
+    return best
 
 
 def _equal_float_groups(points):

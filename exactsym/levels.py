@@ -19,14 +19,18 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .configuration import Configuration, no_cycle_collection
-from .exact import exact_key, exact_sorted, fmpq
+from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels
+from .exact import FieldElement, RationalSystem, exact_key, exact_sorted, fmpq
 from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
                        float_coordinates, float_differences, float_squared_norms,
                        sorted_by_value, squared_distance)
-from .sec import Circle, smallest_enclosing_circle
+from .sec import Circle, floats_of_balls, smallest_enclosing_circle
 
 _FILTER_MIN = 64    # from this many rational points, levels are ordered by certified floats
 _EXACT_SORT_BUDGET = 256    # points of levels sorted exactly before the filtered pass pays
+#: irrational coordinates go through the Arb-ball filters (False: the exact path alone,
+#: which the tests compare them with)
+ALGEBRAIC_FILTER = True
 
 
 @dataclass(frozen=True)
@@ -47,6 +51,9 @@ class Levels:
     # (points, fx, fy): the configuration's point sequence itself and the float arrays of
     # its coordinates, when the rational filters computed them (reused by the rays)
     floats: tuple | None = field(default=None, repr=False, compare=False)
+    # irrational coordinates: the Arb balls about the centre (algebraic_filtered.py),
+    # reused by the rays
+    enclosures: object = field(default=None, repr=False, compare=False)
 
 
 def polar_sec(polar) -> Circle | None:
@@ -78,7 +85,18 @@ def _levels_of(config: Configuration) -> Levels:
     # many rational points: their floats, converted once, filter the SEC, the levels and
     # (through Levels.floats) the rays
     floats = float_coordinates(points) if len(points) >= _FILTER_MIN \
-        and isinstance(points[0][0], fmpq) else None
+        and isinstance(points[0][0], fmpq) and isinstance(config.system, RationalSystem) \
+        else None
+    if ALGEBRAIC_FILTER and len(points) >= 3 and floats is None and any(
+            isinstance(c, FieldElement) for p in points for c in p):
+        # irrational coordinates: distances and directions decided by certified balls,
+        # ties confirmed exactly; each level's exact radius computed when it is read
+        balls = coordinate_balls(config.points, _polar_parts(config), config.specs or None)
+        fx, fy, errors = floats_of_balls(*balls)
+        circle = smallest_enclosing_circle(points, (fx, fy), errors)
+        enc = Enclosures(config.points, circle.homogeneous)
+        flat, bounds = filtered_levels(enc, circle.support)
+        return Levels(circle, AlgebraicLevels(flat, bounds, enc), False, enclosures=enc)
     circle = smallest_enclosing_circle(points, floats)
     x, y, d = circle.homogeneous
     if isinstance(d, fmpq) and d == 1:
@@ -120,6 +138,13 @@ def _levels_of(config: Configuration) -> Levels:
     levels = _group_levels(scaled, lambda members: _angular_order(vectors, members))
     return Levels(circle, tuple(Level(level.radius_squared / d2, level.points)
                                 for level in levels), False)
+
+
+def _polar_parts(config: Configuration):
+    """``(radii, turns)`` of a configuration given in polar form, else None."""
+    if config.polar is None or config.radii is None:
+        return None
+    return config.radii, [t for _, t in config.polar]
 
 
 def _angular_order(vectors, members: list[int]) -> list[int]:
@@ -221,6 +246,32 @@ class RationalLevels(Sequence):
         rank = np.full(n, -1, dtype=np.int64)
         rank[flat] = np.repeat(np.arange(len(self)), np.diff(self.bounds))
         return None if (rank < 0).any() else rank.tolist()
+
+
+class AlgebraicLevels(RationalLevels):
+    """The levels of points with irrational coordinates (:mod:`exactsym.algebraic_filtered`),
+    lazily as :class:`RationalLevels`: a level's exact squared radius
+    ``D^2 |p - C|^2 / D^2`` is computed when the level is read (the truth reads none)."""
+
+    __slots__ = ("enclosures", "_d2")
+
+    def __init__(self, flat: list, bounds: list, enclosures):
+        super().__init__(flat, bounds, {})
+        self.enclosures = enclosures
+        self._d2 = None
+
+    def radius_squared(self, i: int):
+        enc = self.enclosures
+        r = enc.scaled_r2(i)
+        if enc.unit:
+            return r
+        if self._d2 is None:               # 1 / D^2, one field inverse for all levels
+            d = enc.homogeneous[2]
+            self._d2 = 1 / (d * d)
+        return r * self._d2
+
+    def __reduce__(self):
+        return (tuple, (tuple(self),))
 
 
 def _group_rational_levels(n: int, radii_squared, order_level, approx=None, radius=None

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 import random
+from collections.abc import Sequence
 
 import numpy as np
 from flint import arb, ctx
@@ -79,6 +80,40 @@ class Circle:
         return f"Circle(homogeneous={self.homogeneous!r}, support={self.support!r})"
 
 
+class LazyCentre(Sequence):
+    """The centre ``(x, y)`` of a :class:`Circle`, read as a pair; the exact division
+    ``(X/D, Y/D)`` is made when a coordinate is first read (issue 9: in a
+    multiquadratic field of degree 512 it cost 0.1 s, more than the rest of the truth)."""
+
+    __slots__ = ("circle",)
+
+    def __init__(self, circle: Circle):
+        self.circle = circle
+
+    def __len__(self) -> int:
+        return 2
+
+    def __getitem__(self, k):
+        return self.circle.centre[k]
+
+    def __iter__(self):
+        return iter(self.circle.centre)
+
+    def __eq__(self, other):
+        if isinstance(other, LazyCentre):
+            other = other.circle.centre
+        return tuple(self.circle.centre) == other
+
+    def __hash__(self):
+        return hash(tuple(self.circle.centre))
+
+    def __repr__(self) -> str:
+        return repr(tuple(self.circle.centre))
+
+    def __reduce__(self):
+        return (tuple, (tuple(self.circle.centre),))
+
+
 def _circle(points, support: tuple[int, ...]) -> Circle:
     if len(support) == 1:
         p = points[support[0]]
@@ -86,7 +121,9 @@ def _circle(points, support: tuple[int, ...]) -> Circle:
     if len(support) == 2:
         a, b = (points[i] for i in support)
         c = midpoint(a, b)
-        return Circle(c, squared_distance(c, a), support)
+        if isinstance(c[0], fmpq) and isinstance(c[1], fmpq):
+            return Circle(c, squared_distance(c, a), support)
+        return Circle(c, None, support, through=a)      # radius computed when read
     a, b, c = (points[i] for i in support)
     x, y, d = circumcentre_homogeneous(a, b, c)
     if isinstance(d, fmpq):                  # rationals: dividing is cheap, do it now
@@ -185,20 +222,22 @@ def sec_is_minimal(points, circle: Circle) -> bool:
     return not (Turn.LEFT in turns and Turn.RIGHT in turns)
 
 
-def _exact_contains_all(points, circle: Circle, fx, fy) -> bool:
+def _exact_contains_all(points, circle: Circle, fx, fy, errors=None) -> bool:
     """Every point inside or on ``circle``.  A float test with a proven error bound clears
     the points well inside: the centre and squared radius are Arb balls (so a centre kept
     as X/D is enclosed without dividing exactly), each float coordinate is within a
     relative 2^-50 of its exact value (fmpq: correctly rounded; algebraic: the midpoint of
     a 53-bit ball, whose radius is added), and the comparison keeps a relative 2^-40 slack
-    plus the balls' radii.  The rest are decided exactly, division-free.  A point the
-    filter sees well outside makes the caller fall back to exact Welzl."""
+    plus the balls' radii (``errors[i]``, when given, bounds the error of both floats of
+    point i, and replaces the relative bound).  The rest are decided exactly,
+    division-free, but for the support points, which are on the circle by construction.
+    A point the filter sees well outside makes the caller fall back to exact Welzl."""
     x, y, d = circle.homogeneous
     if isinstance(d, fmpq) and d == 1 and circle._radius_squared is not None \
             and isinstance(x, fmpq) and isinstance(y, fmpq):
         # rational centre: float() of an fmpq is correctly rounded, no ball needed
         return _float_filtered(points, circle, fx, fy, float(x), float(y),
-                               float(circle._radius_squared), 0.0, 0.0)
+                               float(circle._radius_squared), 0.0, 0.0, errors)
     with ctx.workprec(64):
         bd = _ball(d)
         bx, by = _ball(x) / bd, _ball(y) / bd
@@ -210,10 +249,10 @@ def _exact_contains_all(points, circle: Circle, fx, fy) -> bool:
     fcx, fcy, fr2 = float(bx.mid()), float(by.mid()), float(br2.mid())
     rad = float(bx.rad()) + float(by.rad())
     rad2 = float(br2.rad())
-    return _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2)
+    return _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2, errors)
 
 
-def _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2) -> bool:
+def _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2, errors=None) -> bool:
     """The test of :func:`_exact_contains_all` with the centre and radius as floats within
     ``rad`` and ``rad2`` of their exact values, vectorised over all points: the points the
     slack cannot settle (and any overflow, which makes the bound NaN or infinite) are
@@ -228,21 +267,51 @@ def _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2) -> bool:
         ax, ay = np.abs(px) + abs(fcx), np.abs(py) + abs(fcy)
         slack = (ax * ax + ay * ay + abs(fr2)) * 2.0 ** -40 + 1e-290 \
             + 4 * (spread + rad) * rad + rad2
-        if not isinstance(points[0][0], fmpq):
+        if errors is not None:
+            # |(e + t)^2 - e^2| <= 2 |e| t + t^2 per coordinate, t the float's error
+            err = np.asarray(errors, dtype=float)
+            slack += (2 * spread * err + 2 * err * err) * 1.01
+        elif not isinstance(points[0][0], fmpq):     # given floats of algebraic points
             slack += 4 * (np.abs(px) + np.abs(py)) * 2.0 ** -40 * (spread + 1)
         if np.any(d2 - slack > fr2):
             return False
         unsure = np.flatnonzero(~(d2 + slack < fr2))
-    return all(sign(circle.scaled_power(points[i])) <= 0 for i in unsure.tolist())
+    on_circle = set(circle.support)         # through the support by construction
+    return all(sign(circle.scaled_power(points[i])) <= 0 for i in unsure.tolist()
+               if i not in on_circle)
 
 
 def _ball(v):
     return v.enclosure(64) if hasattr(v, "enclosure") else arb(v)
 
 
-def smallest_enclosing_circle(points: list[Point], floats=None) -> Circle:
+def point_floats(points) -> tuple[list, list, list | None]:
+    """``(fx, fy, errors)``: floats of the coordinates and, unless every coordinate is
+    rational (then ``float`` is correctly rounded and ``errors`` is None), a bound
+    ``errors[i]`` on the error of both floats of point i, from 64-bit Arb balls
+    (``float`` of an algebraic number is only an approximation)."""
+    if all(isinstance(c, fmpq) for p in points for c in p):
+        return [float(p[0]) for p in points], [float(p[1]) for p in points], None
+    return floats_of_balls(*(list(b) for b in zip(*[(_ball(p[0]), _ball(p[1]))
+                                                      for p in points])))
+
+
+def floats_of_balls(xs, ys) -> tuple[list, list, list]:
+    """``(fx, fy, errors)`` of :func:`point_floats` from balls of the coordinates."""
+    fx, fy, errors = [], [], []
+    for bx, by in zip(xs, ys):
+        x, y = float(bx.mid()), float(by.mid())
+        r = max(float(bx.rad()), float(by.rad()))
+        fx.append(x)
+        fy.append(y)
+        errors.append(math.nextafter(r, math.inf) + (abs(x) + abs(y)) * 2.0 ** -52)
+    return fx, fy, errors
+
+
+def smallest_enclosing_circle(points: list[Point], floats=None, errors=None) -> Circle:
     """The SEC of a non-empty list of distinct exact points.  ``floats``: the points'
-    correctly rounded float coordinates (``geometry.float_coordinates``), if known."""
+    correctly rounded float coordinates (``geometry.float_coordinates``), if known, or
+    with ``errors`` (:func:`point_floats`) approximations within ``errors[i]``."""
     n = len(points)
     if n == 1:
         return _circle(points, (0,))
@@ -253,10 +322,10 @@ def smallest_enclosing_circle(points: list[Point], floats=None) -> Circle:
         if floats is not None:
             fx, fy = floats
         else:
-            fx = [float(p[0]) for p in points]
-            fy = [float(p[1]) for p in points]
+            fx, fy, errors = point_floats(points)
         guess = _circle(points, _float_support(points, order, fx, fy))
-        if sec_is_minimal(points, guess) and _exact_contains_all(points, guess, fx, fy):
+        if sec_is_minimal(points, guess) and _exact_contains_all(points, guess, fx, fy,
+                                                                  errors):
             return _canonical(points, guess)
     except (ValueError, OverflowError, ZeroDivisionError):
         pass

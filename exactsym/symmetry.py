@@ -51,8 +51,11 @@ import numpy as np
 
 from .configuration import Configuration, no_cycle_collection
 from .geometry import PseudoAngle, intern_by_value, sorted_by_value
+from .isometries import Isometry, Layout, identity, reflection, rotation
 from .exact import fmpq
-from .levels import Levels, levels_of
+from .algebraic_filtered import certified_c1
+from .levels import Levels, RationalLevels, levels_of
+from .sec import LazyCentre
 from .rays_filtered import filtered_rays, integer_pseudo_angle as _pseudo_angle_of_integers, \
     level_ranks
 from .strings import cyclic_occurrences as occurrences, cyclic_period
@@ -65,38 +68,6 @@ __all__ = ["Isometry", "SymmetryGroup", "symmetry_group", "pseudo_angle", "least
 # even near 24 points (64: 0.2 ms against 0.6 ms exact), D4 orbits near 48 (64: 0.41
 # against 0.54 ms; 1,024: 4.5 against 7.1 ms).
 _FILTER_MIN = 64
-
-
-@dataclass(frozen=True)
-class Isometry:
-    """A symmetry of a configuration, exact.
-
-    ``g(p) = centre + M (p - centre)``.  On the polar path ``turn`` says which
-    one: a rotation by ``turn`` full turns (counter-clockwise), or the reflection
-    ``t -> 2*turn - t`` in the mirror line at angle ``turn`` (in ``[0, 1/2)``);
-    ``matrix`` is then None.  On the Cartesian path ``matrix`` is the exact
-    orthogonal matrix ``((a, b), (c, d))`` and ``turn`` is None.
-    ``permutation[i]`` is the index of the image of point ``i``.
-    """
-    kind: str
-    centre: tuple
-    turn: fmpq | None
-    matrix: tuple | None
-    permutation: tuple[int, ...]
-
-
-@dataclass(frozen=True)
-class _Layout:
-    """The rays about the centre, counter-clockwise (internal to this module)."""
-    centre: tuple
-    reference: int               # the point whose image fixes a Cartesian matrix
-    centre_index: int | None     # the point at the centre, if any
-    rays: tuple                  # tuple of tuples of indices, each by increasing radius
-    ray_turns: tuple | None      # polar path: the turn of each ray
-    points: tuple | None         # Cartesian path: config.points
-    n: int
-    period: int                  # rotation by `period` rays is the rotation by 1/k turn
-    mirror_offsets: tuple        # reflections map ray i to ray (j - i) mod m, j in this tuple
 
 
 @dataclass(frozen=True)
@@ -127,20 +98,20 @@ class SymmetryGroup:
     orderable: bool
     ordering: tuple[int, ...] | None
     leader: int | None
-    _layout: _Layout | None = field(default=None, repr=False, compare=False)
+    _layout: Layout | None = field(default=None, repr=False, compare=False)
 
     def symmetries(self) -> Iterator[Isometry]:
         """All ``rotations + mirrors`` symmetries, generated lazily: the identity first,
         then the rotations by ``j/k`` turn (j = 1..k-1), then the reflections."""
         layout = self._layout
         if layout is None:          # O2: one point
-            yield _identity(self)
+            yield identity(self.polar, self.centre)
             return
         m = len(layout.rays)
         for j in range(self.rotations):
-            yield _rotation(layout, j * layout.period % m)
+            yield rotation(layout, j * layout.period % m)
         for offset in layout.mirror_offsets:
-            yield _reflection(layout, offset)
+            yield reflection(layout, offset)
 
 
 # ---------------------------------------------------------------- exact angle keys
@@ -361,6 +332,11 @@ def symmetry_group(config: Configuration, rings: Levels | None = None) -> Symmet
 
 
 def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
+    if not ring.polar and ring.enclosures is not None \
+            and ring.enclosures.points is config.points:
+        certified = _certified_c1(config, ring)
+        if certified is not None:
+            return certified
     centre = ring.sec.centre
     n = config.n
     if n == 1 and (not config.polar[0][0] if ring.polar else config.points[0] == centre):
@@ -456,13 +432,36 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     else:
         leader = None
 
-    layout = _Layout(centre, reference, centre_index, tuple(rays),
+    layout = Layout(centre, reference, centre_index, tuple(rays),
                      tuple(ray_turns) if ray_turns is not None else None, points, n, period,
                      offsets)
     return SymmetryGroup(f"{'D' if mirrors else 'C'}{k}", k, mirrors, centre, ring.polar,
-                         _rotation(layout, period % m) if k > 1 else None,
-                         _reflection(layout, offsets[0]) if offsets else None,
+                         rotation(layout, period % m) if k > 1 else None,
+                         reflection(layout, offsets[0]) if offsets else None,
                          reference, orderable, ordering, leader, layout)
+
+
+def _certified_c1(config: Configuration, ring: Levels) -> SymmetryGroup | None:
+    """C1 certified by Arb balls (:func:`exactsym.algebraic_filtered.certified_c1`), with
+    the same canonical labelling as the exact path below; None when the balls leave a
+    symmetry possible.  The centre is divided out only when read."""
+    enc = ring.enclosures
+    rank = level_ranks(ring, config.n)
+    if rank is None:
+        return None
+    found = certified_c1(enc, rank, enc.centre_index)
+    if found is None:
+        return None
+    rays, labelling = found
+    centre_index = enc.centre_index
+    if centre_index is not None:
+        labelling.insert(0, centre_index)
+    reference = _reference(ring, labelling, centre_index)
+    centre = LazyCentre(ring.sec)
+    layout = Layout(centre, reference, centre_index, tuple(rays), None, config.points,
+                     config.n, len(rays), ())
+    return SymmetryGroup("C1", 1, 0, centre, False, None, None, reference, True,
+                         tuple(labelling), labelling[0], layout)
 
 
 class _Symbols:
@@ -517,16 +516,25 @@ def _is_half_turn(gap, polar: bool) -> bool:
 
 def _reference(ring: Levels, labelling: list[int], centre_index: int | None) -> int | None:
     """The first point, in the canonical labelling, of the sparsest level off the centre
-    (fewest points; the nearest on a tie)."""
+    (fewest points; the nearest on a tie).  The level of radius 0 is the one point at the
+    centre: no radius is read (a lazy level's exact radius costs field products)."""
+    levels = ring.levels
+    if isinstance(levels, RationalLevels):
+        flat, bounds = levels.flat, levels.bounds
+        members_of = (flat[bounds[k]:bounds[k + 1]] for k in range(len(bounds) - 1))
+    else:
+        members_of = (level.points for level in levels)
     sparsest = None
-    for level in ring.levels:
-        if level.radius_squared and level.points and \
-                (sparsest is None or len(level.points) < len(sparsest.points)):
-            sparsest = level
-            if len(level.points) == 1:         # none is sparser, and nearer ones came first
+    for points in members_of:
+        if not points or (centre_index is not None and len(points) == 1
+                          and points[0] == centre_index):
+            continue
+        if sparsest is None or len(points) < len(sparsest):
+            sparsest = points
+            if len(points) == 1:         # none is sparser, and nearer ones came first
                 break
     if sparsest is not None:
-        members = set(sparsest.points)
+        members = set(sparsest)
         for i in labelling:
             if i in members and i != centre_index:
                 return i
@@ -547,88 +555,3 @@ def _leader_on_mirror(rays, ids, values, offset: int) -> int | None:
         if _rotation_less(ids, values, r, ids, values, best):
             best = r
     return rays[best][0]
-
-
-# ---------------------------------------------------------------- isometries
-
-def _identity(group: SymmetryGroup) -> Isometry:
-    if group.polar:
-        return Isometry("rotation", group.centre, fmpq(0), None, (0,))
-    one, zero = _one_zero(group.centre)
-    return Isometry("rotation", group.centre, None, ((one, zero), (zero, one)), (0,))
-
-
-def _one_zero(centre):
-    zero = centre[0] * 0
-    return zero + 1, zero
-
-
-def _permutation(layout: _Layout, image_ray) -> tuple[int, ...]:
-    """``perm[i]``: the image of point i when ray r goes to ray ``image_ray(r)`` (a
-    function that also maps a NumPy array of ray indices)."""
-    rays = layout.rays
-    m = len(rays)
-    if m > 64 and layout.n == m + (layout.centre_index is not None):  # one point per ray
-        first = np.fromiter((ray[0] for ray in rays), dtype=np.int64, count=m)
-        perm = np.arange(layout.n)
-        perm[first] = first[image_ray(np.arange(m))]
-        return tuple(perm.tolist())
-    perm = list(range(layout.n))
-    for r, ray in enumerate(rays):
-        target = rays[image_ray(r)]
-        for i, j in zip(ray, target):
-            perm[i] = j
-    return tuple(perm)
-
-
-def _reference_image(layout: _Layout, image_ray):
-    """``(u, v)``: the reference point and its image, relative to the centre."""
-    ref = layout.reference
-    for r, ray in enumerate(layout.rays):
-        if ref in ray:
-            image = layout.rays[image_ray(r)][ray.index(ref)]
-            break
-    cx, cy = layout.centre
-    a, b = layout.points[ref], layout.points[image]
-    return (a[0] - cx, a[1] - cy), (b[0] - cx, b[1] - cy)
-
-
-def _rotation(layout: _Layout, shift: int) -> Isometry:
-    """The rotation mapping ray r to ray r + shift (counter-clockwise by the angle from
-    ray 0 to ray ``shift``)."""
-    m = len(layout.rays)
-
-    def image_ray(r):
-        return (r + shift) % m
-
-    perm = _permutation(layout, image_ray)
-    if layout.ray_turns is not None:
-        turns = layout.ray_turns
-        return Isometry("rotation", layout.centre, turns[shift] - turns[0], None, perm)
-    if shift == 0:
-        one, zero = _one_zero(layout.centre)
-        return Isometry("rotation", layout.centre, None, ((one, zero), (zero, one)), perm)
-    (ux, uy), (vx, vy) = _reference_image(layout, image_ray)
-    u2 = ux * ux + uy * uy
-    cos, sin = (ux * vx + uy * vy) / u2, (ux * vy - uy * vx) / u2
-    return Isometry("rotation", layout.centre, None, ((cos, -sin), (sin, cos)), perm)
-
-
-def _reflection(layout: _Layout, offset: int) -> Isometry:
-    """The reflection mapping ray r to ray offset - r."""
-    m = len(layout.rays)
-
-    def image_ray(r):
-        return (offset - r) % m
-
-    perm = _permutation(layout, image_ray)
-    if layout.ray_turns is not None:
-        turns = layout.ray_turns
-        axis = (turns[0] + turns[offset]) / 2
-        if axis >= fmpq(1, 2):
-            axis -= fmpq(1, 2)
-        return Isometry("reflection", layout.centre, axis, None, perm)
-    (ux, uy), (vx, vy) = _reference_image(layout, image_ray)
-    u2 = ux * ux + uy * uy
-    c, s = (ux * vx - uy * vy) / u2, (ux * vy + uy * vx) / u2
-    return Isometry("reflection", layout.centre, None, ((c, s), (s, -c)), perm)
