@@ -155,20 +155,57 @@ def _trager_sqrt(field: NumberField, a: PolyElement) -> PolyElement | None:
         _, factors = norm.factor()
         if len(factors) == 1 and factors[0][1] == 1:
             return None                             # N irreducible: F irreducible over K
-        zeta = field.gen
-        c1 = 2 * s * zeta                           # X^2 = c1 X + c0 modulo F
-        c0 = field.element(fmpq_poly(b_int)) - s * s * zeta * zeta
+        zeta = fmpz_poly([0, 1])
+        c1 = 2 * s * zeta                           # X^2 = c1 X + c0 modulo F (integral)
+        c0 = (b_int - s * s * zeta * zeta) % phi
         for g, _ in factors:
-            u, v = field(0), field(0)
+            u, v = fmpz_poly([0]), fmpz_poly([0])
             for coeff in reversed(g.coeffs()):
-                u, v = v * c0 + int(coeff), u + v * c1
-            if v:
-                z = (-u / v - s * zeta) / d
+                u, v = (v * c0 + coeff) % phi, (u + v * c1) % phi
+            if not v.is_zero():
+                # u + v (s zeta + r) = 0 with r = sqrt(b) in Z[zeta] (the ring of integers):
+                # r = -(u + s zeta v) / v, an exact quotient with small integer coefficients,
+                # found modulo primes (an inverse of v over Q would have huge coefficients)
+                r = _integral_quotient(-(u + s * zeta * v) % phi, v, phi, b_int % phi)
+                z = field.element(fmpq_poly(r)) / d
                 if z * z == a:
                     return z
                 raise ArithmeticError("Trager square root does not square back (bug)")
         raise ArithmeticError("reducible norm without a linear factor of F (bug)")
     raise ArithmeticError("no squarefree norm for 63 shifts (bug)")
+
+
+def _integral_quotient(num: fmpz_poly, den: fmpz_poly, phi: fmpz_poly,
+                       square: fmpz_poly) -> fmpz_poly:
+    """The r in Z[zeta] with r * den == num modulo phi, known to satisfy r^2 == square: r
+    modulo 62-bit primes (``nmod_poly.xgcd``), combined by the Chinese remainder theorem
+    into symmetric residues, the number of primes growing until r^2 == square modulo phi
+    exactly (the test decides; the residues only propose)."""
+    from .inverse import _prime
+    n = phi.degree()
+    residues: list[int] = [0] * n
+    modulus, i = 1, 0
+    while True:
+        p = _prime(i)
+        i += 1
+        phi_p = nmod_poly([int(c) % p for c in phi.coeffs()], p)
+        den_p = nmod_poly([int(c) % p for c in den.coeffs()], p)
+        g, inv, _ = den_p.xgcd(phi_p)
+        if g.degree() != 0:
+            continue                                # p divides the resultant: skip it
+        q = (nmod_poly([int(c) % p for c in num.coeffs()], p) * inv) % phi_p
+        q = q * pow(int(g.coeffs()[0]), -1, p)
+        coeffs = [int(c) for c in q.coeffs()] + [0] * (n - len(q.coeffs()))
+        m_inv = pow(modulus, -1, p)
+        for j in range(n):
+            residues[j] += modulus * ((coeffs[j] - residues[j]) * m_inv % p)
+        modulus *= p
+        half = modulus >> 1
+        r = fmpz_poly([c - modulus if c > half else c for c in residues])
+        if (r * r) % phi == square:
+            return r
+        if i > 4096:
+            raise ArithmeticError("no integral quotient (bug)")
 
 
 __all__ = ["field_sqrt", "refuted", "split_primes", "root_of_unity_mod", "image_mod"]
