@@ -149,6 +149,8 @@ class Encoder:
         self._cyclotomic(tower.field)
         base = self.spec
         self.tower = tower
+        if not tower.radicands:         # every radical denested: the real-cyclotomic field
+            return
         levels = []
         for i, r in enumerate(tower.radicands, start=1):
             proof = cyclotomic_nonsquare_witness(tower, i)
@@ -170,7 +172,8 @@ class Encoder:
             return rational_text(value)
         if value.degree() <= 0:
             return rational_text(value.coeffs()[0] if value.degree() == 0 else 0)
-        return {"theta": [rational_text(c) for c in value.coeffs()]}
+        coeffs = [rational_text(c) for c in value.coeffs()]
+        return {"theta": coeffs} if self.tower.radicands else coeffs
 
     # -- the real subfield of Q(zeta_M)
     def _cyclotomic(self, field):
