@@ -67,10 +67,12 @@ class CyclotomicTower(Tower):
 
     @property
     def name(self) -> str:
-        head = f"Q(cos(2*pi/{self.conductor}))"
-        tops = "".join(f"(sqrt({self.text_of(r)}))" for r in self.radicands)
-        name = head + tops
-        return name if len(name) <= 200 else f"{head} with {self.levels} quadratic levels"
+        # one group of parentheses, Q(cos(2*pi/M), sqrt(r_1), ...): the field generated
+        gens = [f"cos(2*pi/{self.conductor})"] + [f"sqrt({self.text_of(r)})"
+                                                  for r in self.radicands]
+        name = f"Q({', '.join(gens)})"
+        return name if len(name) <= 200 else \
+            f"Q(cos(2*pi/{self.conductor})) with {self.levels} quadratic levels"
 
     def text_of(self, v) -> str:
         from .tower import text
