@@ -38,8 +38,9 @@ from .certificate_fields import square_root_proof
 from .configuration import Configuration
 from .exact import FieldElement
 from .exact.multiquadratic import MQ
+from .exact.cyclotomic_tower import CyclotomicTower
 from .exact.tower import TowerElement
-from .exact.tower_proof import nonsquare_witness
+from .exact.tower_proof import cyclotomic_nonsquare_witness, nonsquare_witness
 
 FORMAT = "exactsym-certificate"
 VERSION = 1
@@ -124,6 +125,9 @@ class Encoder:
     def _tower(self, tower, values):
         """K_0 = Q(sqrt p) over the tower's base primes, then each level's radicand with a
         homomorphism to F_p proving it a non-square in the field below (checker_tower)."""
+        if isinstance(tower, CyclotomicTower):
+            self._cyclotomic_tower(tower)
+            return
         levels = []
         for i, r in enumerate(tower.radicands, start=1):
             proof = nonsquare_witness(tower, i)
@@ -135,6 +139,41 @@ class Encoder:
                            "base": [str(s) for s in base], "roots": [str(t) for t in roots]})
         self.field, self.tower = None, tower
         self.spec = {"tower": {"radicands": [str(p) for p in tower.primes], "levels": levels}}
+
+    def _cyclotomic_tower(self, tower):
+        """K_0 = Q(theta), theta = 2cos(2pi/M), written as the real-cyclotomic field below
+        (its elements converted to powers of theta), then each level's radicand with a prime
+        p = 1 mod M and the roots of Psi_M modulo p (checker_tower, "Towers over Q(zeta_M)")."""
+        self.field = tower.field
+        self.atoms = None
+        self._cyclotomic(tower.field)
+        base = self.spec
+        self.tower = tower
+        if not tower.radicands:         # every radical denested: the real-cyclotomic field
+            return
+        levels = []
+        for i, r in enumerate(tower.radicands, start=1):
+            proof = cyclotomic_nonsquare_witness(tower, i)
+            if proof is None:
+                raise CertificateError(f"no prime below 200000 proves the radicand of level {i} "
+                                       f"of {tower.name} a non-square; cannot certify")
+            p, thetas, roots = proof
+            levels.append({"radicand": self._tower_text(r), "prime": p,
+                           "theta": [str(h) for h in thetas], "roots": [str(t) for t in roots]})
+        self.spec = {"tower": {"base": base, "levels": levels}}
+
+    def _tower_text(self, v):
+        """A raw value of a tower over Q(zeta_M): a rational, {"theta": [c_0, ...]} in the
+        base (coefficients of powers of theta = 2cos(2pi/M)), or [i, a, b] = a + b y_i."""
+        if type(v) is tuple:
+            return [v[0], self._tower_text(v[1]), self._tower_text(v[2])]
+        value = self.convert(v)
+        if isinstance(value, fmpq):
+            return rational_text(value)
+        if value.degree() <= 0:
+            return rational_text(value.coeffs()[0] if value.degree() == 0 else 0)
+        coeffs = [rational_text(c) for c in value.coeffs()]
+        return {"theta": coeffs} if self.tower.radicands else coeffs
 
     # -- the real subfield of Q(zeta_M)
     def _cyclotomic(self, field):
@@ -214,6 +253,9 @@ class Encoder:
         return result
 
     def text(self, x):
+        if isinstance(self.tower, CyclotomicTower):
+            return self._tower_text(x.v if isinstance(x, TowerElement) else
+                                    x.rational() if isinstance(x, FieldElement) else fmpq(x))
         if self.tower is not None:
             return _tower_text(x.v if isinstance(x, TowerElement) else
                                x if isinstance(x, MQ) else MQ.rational(x))

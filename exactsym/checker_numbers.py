@@ -597,7 +597,14 @@ def number_field(spec: dict):
 
 
 def tower_field(spec: dict):
-    """Nested radicals: a tower of quadratic extensions (exactsym.checker_tower)."""
+    """Nested radicals: a tower of quadratic extensions (exactsym.checker_tower), over the
+    square roots or, with a "base" field, over Q(theta) (exactsym.checker_tower_cyclotomic)."""
+    if isinstance(spec, dict) and "base" in spec:
+        try:
+            from .checker_tower_cyclotomic import CyclotomicTower
+        except ImportError:     # run as a lone script: a sibling file
+            from checker_tower_cyclotomic import CyclotomicTower
+        return CyclotomicTower(spec)
     try:
         from .checker_tower import Tower
     except ImportError:     # run as a lone script: a sibling file

@@ -23,23 +23,34 @@ try:
 except ImportError:     # run as a lone script: a sibling file
     from checker_numbers import Invalid, Root, SquareRoots, integer, need
 
-_ZERO = Root({})
-
+# A value is a base number (a Root of the square-root field, or an Alg of Q(theta) for a
+# tower over Q(zeta_M): checker_tower_cyclotomic.py) or a tuple (i, A, B) = A + B y_i.
 
 def _level(v) -> int:
-    return 0 if isinstance(v, Root) else v[0]
+    return v[0] if isinstance(v, tuple) else 0
+
+
+def _zero_like(v):
+    """The zero of the base of v (Root or Alg: zeros of two types must not meet)."""
+    while isinstance(v, tuple):
+        v = v[1]
+    return v * 0
 
 
 def _split(v, lev):
-    return (v[1], v[2]) if _level(v) == lev else (v, _ZERO)
+    return (v[1], v[2]) if _level(v) == lev else (v, _zero_like(v))
+
+
+def _is_zero(b) -> bool:
+    return not isinstance(b, tuple) and b == 0
 
 
 def _make(lev, a, b):
-    return a if isinstance(b, Root) and not b.t else (lev, a, b)
+    return a if _is_zero(b) else (lev, a, b)
 
 
 def _add(x, y):
-    if isinstance(x, Root) and isinstance(y, Root):
+    if not isinstance(x, tuple) and not isinstance(y, tuple):
         return x + y
     lev = max(_level(x), _level(y))
     (xa, xb), (ya, yb) = _split(x, lev), _split(y, lev)
@@ -47,7 +58,7 @@ def _add(x, y):
 
 
 def _neg(x):
-    return -x if isinstance(x, Root) else (x[0], _neg(x[1]), _neg(x[2]))
+    return (x[0], _neg(x[1]), _neg(x[2])) if isinstance(x, tuple) else -x
 
 
 def _is_prime(p: int) -> bool:
@@ -83,15 +94,22 @@ class Tower:
                  and 1 <= value[0] <= top, f"tower element {value!r:.60}: bad level")
             lev = value[0]
             a, b = self._read(value[1], lev - 1), self._read(value[2], lev - 1)
-            need(not (isinstance(b, Root) and not b.t), "tower element with a zero y coefficient")
+            need(not _is_zero(b), "tower element with a zero y coefficient")
             return (lev, a, b)
+        return self.base_num(value)
+
+    def base_num(self, value):
         return self.base.num(value)
+
+    def base_of(self, o):
+        """An int or Fraction as a base number."""
+        return Root._of(o)
 
     def num(self, value) -> "TNum":
         return TNum(self, self._read(value, len(self.r)))
 
     def mul(self, x, y):
-        if isinstance(x, Root) and isinstance(y, Root):
+        if not isinstance(x, tuple) and not isinstance(y, tuple):
             return x * y
         lev = max(_level(x), _level(y))
         (xa, xb), (ya, yb) = _split(x, lev), _split(y, lev)
@@ -222,7 +240,7 @@ class TNum:
         if isinstance(o, TNum):
             need(o.f is self.f, "numbers of two towers")
             return o.v
-        return Root._of(o)
+        return self.f.base_of(o)
 
     def __add__(self, o):
         return TNum(self.f, _add(self.v, self._of(o)))

@@ -9,8 +9,9 @@ configuration once and picks the smallest machinery that holds them all:
    cosines/sines of rational multiples of pi (:mod:`.cyclotomic`);
 3. nested radicals of square roots: a tower of quadratic extensions over the
    multiquadratic field of the square roots, built lazily (:mod:`.tower`);
-4. otherwise (nested radicals mixed with cos/sin) a field Q(theta) built once with
-   sympy's ``primitive_element`` (:mod:`.general`).
+4. nested radicals mixed with cos/sin: the same tower over the real subfield of Q(zeta_M)
+   (:mod:`.cyclotomic_tower`).  (sympy's primitive element, :mod:`.general`, is no longer
+   chosen here; it stays for callers that build Q(theta) from atoms.)
 
 Every evaluation error a user can cause (division by zero, the root of a
 negative number, a field too large) is an :class:`ExpressionError` carrying the
@@ -133,6 +134,23 @@ class TowerSystem:
         from .tower import TowerElement, wrap
         raw = x.v if isinstance(x, TowerElement) else self.coerce(x)
         return wrap(self.tower, self.tower.sqrt(raw))
+
+
+class CyclotomicTowerSystem(TowerSystem):
+    """Nested radicals mixed with cos/sin: a :class:`~.cyclotomic_tower.CyclotomicTower` over
+    the real subfield of Q(zeta_M).  Numbers are ``MQ`` (rationals) or
+    :class:`~.tower.TowerElement` (irrational base elements and the levels above)."""
+
+    def __init__(self, conductor: int):
+        from .cyclotomic_tower import CyclotomicTower, check_base
+        check_base(conductor)                      # a-priori bound, before anything is built
+        self.tower = CyclotomicTower(cyclotomic.cyclotomic_field(conductor))
+
+    def cos_turn(self, turn: fmpq):
+        value = rational_cos_turn(turn)
+        if value is not None:
+            return MQ.rational(value)
+        return self.tower.wrap(cyclotomic.cos_turn(self.tower.field, turn))
 
 
 class FieldSystem:
@@ -338,15 +356,8 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
     if all(kind == "sqrt" for kind, *_ in atoms):
         return MultiquadraticSystem(squarefree_split(int(q.p) * int(q.q))[1] for _, q in atoms)
     if all(kind != "nested" for kind, *_ in atoms):
-        conductor = 1
-        for atom in atoms:
-            if atom[0] == "cos":
-                conductor = cyclotomic.lcm(conductor, cyclotomic.turn_conductor(atom[1], "cos"))
-            else:
-                conductor = cyclotomic.lcm(conductor, cyclotomic.sqrt_conductor(
-                    cyclotomic.squarefree_decomposition(atom[1])[1]))
         # sines are cosines of 1/4 - t, already in the list; i needs 4 | M for them
-        conductor = cyclotomic.lcm(conductor, 4)
+        conductor = cyclotomic.lcm(_conductor(atoms), 4)
         degree = cyclotomic.euler_phi(conductor)
         if degree <= cyclotomic.MAX_DEGREE:
             return FieldSystem(cyclotomic.cyclotomic_field(conductor))
@@ -361,8 +372,26 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
                 m = squarefree_split(int(atom[1].p) * int(atom[1].q))[1]
                 primes.update(int(p) for p, _ in fmpz(m).factor())
         return TowerSystem(primes)
-    from .general import general_system   # sympy is imported only for nested radicals
-    return general_system(atoms)
+    return _mixed_system(atoms)
+
+
+def _mixed_system(atoms):
+    """Nested radicals mixed with cos/sin (tests swap in ``general.general_system``, the
+    former path, for a differential test)."""
+    return CyclotomicTowerSystem(cyclotomic.lcm(_conductor(atoms), 4))
+
+
+def _conductor(atoms) -> int:
+    """The least M with Q(zeta_M) holding the cosines and square roots of rationals among
+    the atoms (nested radicals are not counted: a tower holds them)."""
+    conductor = 1
+    for atom in atoms:
+        if atom[0] == "cos":
+            conductor = cyclotomic.lcm(conductor, cyclotomic.turn_conductor(atom[1], "cos"))
+        elif atom[0] == "sqrt":
+            conductor = cyclotomic.lcm(conductor, cyclotomic.sqrt_conductor(
+                cyclotomic.squarefree_decomposition(atom[1])[1]))
+    return conductor
 
 
 def evaluate(node: Node, system):
@@ -378,5 +407,6 @@ def evaluate_all(exprs: Sequence[Node], turns: Sequence[fmpq] = ()):
         return system, [_evaluate(expr, system) for expr in exprs]
 
 
-__all__ = ["RationalSystem", "MultiquadraticSystem", "TowerSystem", "FieldSystem", "number_system", "evaluate", "evaluate_all",
+__all__ = ["RationalSystem", "MultiquadraticSystem", "TowerSystem", "CyclotomicTowerSystem",
+           "FieldSystem", "number_system", "evaluate", "evaluate_all",
            "rational_cos_turn", "rational_sqrt", "normal_turn", "Fraction"]

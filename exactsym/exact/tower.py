@@ -53,11 +53,12 @@ def _split(v, lev: int):
 
 
 def _make(lev: int, a, b):
-    return a if type(b) is not tuple and not b.terms else (lev, a, b)
+    return a if type(b) is not tuple and not b else (lev, a, b)
 
 
 def _is_zero(v) -> bool:
-    return type(v) is not tuple and not v.terms
+    # a base value (MQ, or a PolyElement of a cyclotomic base) is false exactly when zero
+    return type(v) is not tuple and not v
 
 
 def add(x, y):
@@ -66,13 +67,13 @@ def add(x, y):
     if not tx:
         if not ty:
             return x + y
-        return (y[0], add(x, y[1]), y[2]) if x.terms else y
+        return (y[0], add(x, y[1]), y[2]) if x else y
     if not ty:
-        return (x[0], add(x[1], y), x[2]) if y.terms else x
+        return (x[0], add(x[1], y), x[2]) if y else x
     lx, ly = x[0], y[0]
     if lx == ly:
         b = add(x[2], y[2])
-        return add(x[1], y[1]) if type(b) is not tuple and not b.terms else \
+        return add(x[1], y[1]) if type(b) is not tuple and not b else \
             (lx, add(x[1], y[1]), b)
     if lx > ly:
         return (lx, add(x[1], y), x[2])
@@ -118,11 +119,16 @@ def height_bits(v) -> int:
     if isinstance(v, MQ):
         return max((int(c.p).bit_length() + int(c.q).bit_length() for c in v.terms.values()),
                    default=1)
+    if type(v) is not tuple:                # a PolyElement of a cyclotomic base
+        return max(int(v.poly.numer().height_bits()), 1) + int(v.poly.denom()).bit_length()
     return max(height_bits(v[1]), height_bits(v[2]))
 
 
 class Tower:
     """One tower K_0 < K_1 < ... for one configuration (grows as square roots are asked)."""
+
+    zero = _ZERO
+    one = MQ.rational(1)
 
     def __init__(self, primes):
         self.primes = tuple(sorted(set(int(p) for p in primes)))
@@ -147,6 +153,28 @@ class Tower:
         name = head + tops
         return name if len(name) <= 200 else f"{head} with {self.levels} quadratic levels"
 
+    # -- the base field K_0 (overridden by a cyclotomic base, exact/cyclotomic_tower.py) ----
+    def const(self, q):
+        return MQ.rational(q)
+
+    def coerce_base(self, other):
+        """A kernel number of K_0 (or a rational) as a raw base value, or None."""
+        if isinstance(other, MQ):
+            return other
+        if isinstance(other, (int, fmpz, fmpq, Fraction)):
+            return MQ.rational(other)
+        return None
+
+    def wrap(self, v):
+        return v if isinstance(v, MQ) else TowerElement(self, v)
+
+    def base_root(self, x):
+        """A root in K_0 of the base value x > 0, or None (complete)."""
+        return self._mq_root(x, len(self.primes))
+
+    def base_text(self, v) -> str:
+        return v.text()
+
     # -- arithmetic on raw values --------------------------------------------
     def mul(self, x, y):
         """x * y.  Nested values carry big fractions (an inverse's coefficients share one
@@ -165,12 +193,12 @@ class Tower:
         if not tx:
             if not ty:
                 return x * y
-            if not x.terms:
-                return _ZERO
+            if not x:
+                return self.zero
             return (y[0], self._mul(x, y[1]), self._mul(x, y[2]))   # a scalar of a lower level
         if not ty:
-            if not y.terms:
-                return _ZERO
+            if not y:
+                return self.zero
             return (x[0], self._mul(x[1], y), self._mul(x[2], y))
         lx, ly = x[0], y[0]
         if lx > ly:
@@ -186,7 +214,7 @@ class Tower:
         return _make(lev, add(low, self._mul(r, high)), mixed)
 
     def inverse(self, x):
-        if isinstance(x, MQ):
+        if type(x) is not tuple:
             return x.inverse()
         lev, a, b = x
         norm = sub(self.mul(a, a), self.mul(self.radicands[lev - 1], self.mul(b, b)))
@@ -200,9 +228,9 @@ class Tower:
         return self._divide(x, y, {})
 
     def _divide(self, x, y, cache):
-        if isinstance(y, MQ):
+        if type(y) is not tuple:
             if y.is_rational():
-                return self.mul(x, MQ.rational(1 / y.to_fmpq()))
+                return self.mul(x, self.const(1 / y.rational()))
             inv = cache.get(y)
             if inv is None:
                 inv = cache[y] = y.inverse()
@@ -220,8 +248,8 @@ class Tower:
         return self._divide(self.mul(x, conj), norm, cache)
 
     def ball(self, x, prec: int) -> arb:
-        if isinstance(x, MQ):
-            return x.to_arb(prec)
+        if type(x) is not tuple:
+            return x.enclosure(prec)
         lev, a, b = x
         with ctx.workprec(prec):
             return self.ball(a, prec) + self.ball(b, prec) * self._root_ball(lev, prec)
@@ -235,7 +263,7 @@ class Tower:
         return ball
 
     def sign(self, x) -> int:
-        if isinstance(x, MQ):
+        if type(x) is not tuple:
             return x.sign()
         prec = 64
         while prec <= _MAX_PREC:
@@ -253,7 +281,7 @@ class Tower:
         if self.sign(x) < 0:
             return None
         if lev == 0:
-            return self._mq_root(x, len(self.primes))
+            return self.base_root(x)
         a, b = _split(x, lev)
         r = self.radicands[lev - 1]
         if _is_zero(b):
@@ -261,11 +289,11 @@ class Tower:
             if c is not None:
                 return c
             d = self.root_in(self.mul(a, self.inverse(r)), lev - 1)
-            return None if d is None else (lev, _ZERO, d)
+            return None if d is None else (lev, self.zero, d)
         n = self.root_in(sub(self.mul(a, a), self.mul(r, self.mul(b, b))), lev - 1)
         if n is None:
             return None
-        half = MQ.rational(fmpq(1, 2))
+        half = self.const(fmpq(1, 2))
         for t in (self.mul(add(a, n), half), self.mul(sub(a, n), half)):
             c = self.root_in(t, lev - 1)
             if c is not None and not _is_zero(c):
@@ -308,21 +336,30 @@ class Tower:
         root = self._roots.get(key)
         if root is not None:
             return root
-        if isinstance(x, MQ) and x.is_rational():
-            root = _rational_root(x.to_fmpq(), self.primes)
+        root = self._rational_sqrt(x)
         if root is None:
             root = self.root_in(x, self.levels)
         if root is None:
-            if self.levels >= MAX_LEVELS:
-                from ..errors import FieldTooLargeError
-                raise FieldTooLargeError(f"these nested radicals need more than {MAX_LEVELS} "
-                                         "quadratic extensions above the square roots")
+            self._check_new_level()
             self.radicands.append(x)
-            root = (self.levels, _ZERO, MQ.rational(1))
+            root = (self.levels, self.zero, self.one)
         elif self.sign(root) < 0:
             root = neg(root)
         self._roots[key] = root
         return root
+
+    def _rational_sqrt(self, x):
+        """The root of a rational x in K_0 without the general test, or None."""
+        if isinstance(x, MQ) and x.is_rational():
+            return _rational_root(x.to_fmpq(), self.primes)
+        return None
+
+    def _check_new_level(self) -> None:
+        """Raise FieldTooLargeError before a level beyond the documented bound is built."""
+        if self.levels >= MAX_LEVELS:
+            from ..errors import FieldTooLargeError
+            raise FieldTooLargeError(f"these nested radicals need more than {MAX_LEVELS} "
+                                     "quadratic extensions above the square roots")
 
 
 def _rational_root(q: fmpq, primes):
@@ -346,12 +383,12 @@ def _rational_root(q: fmpq, primes):
 
 def text(tower: Tower, v) -> str:
     """The configuration-syntax text of a raw value: a + b*sqrt(radicand), nested."""
-    if isinstance(v, MQ):
-        return v.text()
+    if type(v) is not tuple:
+        return tower.base_text(v)
     lev, a, b = v
     root = f"sqrt({text(tower, tower.radicands[lev - 1])})"
-    if isinstance(b, MQ) and b.is_rational():
-        c = b.to_fmpq()
+    if type(b) is not tuple and b.is_rational():
+        c = b.rational()
         mag = -c if c < 0 else c
         body = root if mag == 1 else f"{mag.p}*{root}" if mag.q == 1 else \
             f"{root}/{mag.q}" if mag.p == 1 else f"{mag.p}*{root}/{mag.q}"
@@ -370,20 +407,18 @@ def _raw(tower: Tower, other):
         if other.tower is not tower:
             raise TypeError("elements of two different number fields do not mix")
         return other.v
-    if isinstance(other, MQ):
-        return other
-    if isinstance(other, (int, fmpz, fmpq, Fraction)):
-        return MQ.rational(other)
-    return None
+    return tower.coerce_base(other)
 
 
 def wrap(tower: Tower, v):
-    """A raw value as a kernel number: an MQ at level 0, a :class:`TowerElement` above."""
-    return v if isinstance(v, MQ) else TowerElement(tower, v)
+    """A raw value as a kernel number: an MQ at level 0 (any rational), a
+    :class:`TowerElement` above (or an irrational of a cyclotomic base)."""
+    return tower.wrap(v)
 
 
 class TowerElement(FieldElement):
-    """A number of a :class:`Tower` at level >= 1 (never rational, never an MQ)."""
+    """A number of a :class:`Tower` at level >= 1, or an irrational number of a cyclotomic
+    base (exact/cyclotomic_tower.py): never rational (rationals are MQ), never an MQ."""
 
     __slots__ = ("tower", "v", "_hash")
 
@@ -435,7 +470,7 @@ class TowerElement(FieldElement):
         if not isinstance(k, int):
             return NotImplemented
         base = self.v if k >= 0 else self.tower.inverse(self.v)
-        out, k = MQ.rational(1), abs(k)
+        out, k = self.tower.one, abs(k)
         while k:
             if k & 1:
                 out = self.tower.mul(out, base)
@@ -494,7 +529,7 @@ class TowerElement(FieldElement):
 
     def enclosure(self, prec: int = 53) -> arb:
         """An ``arb`` ball around the value (filters and drawing only)."""
-        return self.tower.ball(self.v, prec + 8 * self.v[0])
+        return self.tower.ball(self.v, prec + 8 * level(self.v))
 
     def __float__(self):
         return float(self.enclosure(53).mid())
@@ -510,4 +545,6 @@ def key(v):
     """An injective hashable key of a raw value (tags keep levels and MQ parts apart)."""
     if isinstance(v, MQ):
         return ("sqrt",) + tuple(sorted((m, int(c.p), int(c.q)) for m, c in v.terms.items()))
+    if type(v) is not tuple:                # a PolyElement of a cyclotomic base: canonical
+        return ("cyclotomic",) + tuple((int(c.p), int(c.q)) for c in v.poly.coeffs())
     return ("level", v[0], key(v[1]), key(v[2]))

@@ -6,13 +6,19 @@ which r_i is a quadratic non-residue; docs/certificates.md ("Towers") gives the 
 its conditions (p odd, p divides no base radicand, r_j p-integral and N(r_j) a p-unit for
 j < i), which the checker (exactsym.checker_tower) re-checks.
 
-Public names: :func:`nonsquare_witness`, :func:`norm`, :func:`image`.
+Over a cyclotomic base (:mod:`.cyclotomic_tower`) the map sends zeta to a root w of Phi_M
+modulo a prime p = 1 mod M (:func:`cyclotomic_nonsquare_witness`); the checker re-checks it in
+``exactsym.checker_tower``.
+
+Public names: :func:`nonsquare_witness`, :func:`cyclotomic_nonsquare_witness`, :func:`norm`,
+:func:`image`.
 """
 
 from __future__ import annotations
 
 from flint import fmpq
 
+from .cyclotomic_sqrt import image_mod, root_of_unity_mod, split_primes
 from .multiquadratic import MQ
 from .tower import Tower, _split, level, sub
 
@@ -131,4 +137,91 @@ def _search(tower: Tower, p: int, radicands: list, base_roots: list, budget: int
         t = _sqrt_mod(value, p)
         if t is not None:
             stack += [(signs, roots + [t]), (signs, roots + [p - t])]
+    return None
+
+
+# ------------------------------------------------------------------ over a cyclotomic base
+def _cyclotomic_image(x, p: int, w: int, roots: list):
+    """phi(x) in F_p: zeta -> w, y_j -> roots[j - 1]; None if p divides a denominator."""
+    if type(x) is not tuple:
+        return image_mod(x.poly, w, p)
+    lev, a, b = x
+    va, vb = _cyclotomic_image(a, p, w, roots), _cyclotomic_image(b, p, w, roots)
+    return None if va is None or vb is None else (va + vb * roots[lev - 1]) % p
+
+
+def _tower_norm_to_base(tower, x):
+    """N_(K_L/K_0)(x), a base value (conjugates a^2 - r b^2 down the tower)."""
+    for lev in range(level(x), 0, -1):
+        a, b = _split(x, lev)
+        x = sub(tower.mul(a, a), tower.mul(tower.radicands[lev - 1], tower.mul(b, b)))
+    return x
+
+
+def cyclotomic_nonsquare_witness(tower, lev: int, limit: int = 200_000):
+    """``(p, thetas, roots)`` proving the radicand of level ``lev`` of a
+    :class:`~.cyclotomic_tower.CyclotomicTower` a non-square of K_(lev-1): p = 1 mod M, thetas
+    the phi(M)/2 roots w^k + w^-k of Psi_M modulo p (distinct: Psi_M splits, so the base ring
+    is integrally closed at p), the map theta -> thetas[0] (zeta -> w^k) and a root of the
+    image of each lower radicand, under which r_lev is a non-residue and every lower radicand
+    is p-integral with a norm prime to p (docs/certificates.md, "Towers over Q(zeta_M)").
+    None if no prime below ``limit`` is found."""
+    from math import gcd
+    m = tower.conductor
+    radicands = tower.radicands[:lev]
+    base_norms = [_tower_norm_to_base(tower, r) for r in radicands[:-1]]
+    half = [k for k in range(1, m // 2 + 1) if gcd(k, m) == 1] if m > 2 else [1]
+    for p in split_primes(m, start=3):
+        if p >= limit:
+            return None
+        w = root_of_unity_mod(m, p)
+        ok = True
+        for n in base_norms:            # N_(K_0/Q)(n) mod p: the product over the e embeddings
+            total = 1
+            for k in half:
+                v = image_mod(n.poly, pow(w, k, p), p)
+                total = 0 if v is None else total * v % p
+            if total == 0:
+                ok = False
+                break
+        if not ok or any(image_mod(c.poly, w, p) is None
+                         for r in radicands for c in _base_parts(r)):
+            continue
+        for k in half[:8]:
+            wk = pow(w, k, p)
+            roots = _cyclotomic_search(p, wk, radicands)
+            if roots is not None:
+                thetas = [(pow(w, j, p) + pow(w, -j, p)) % p for j in half]
+                chosen = (wk + pow(wk, -1, p)) % p
+                thetas.remove(chosen)
+                return p, [chosen] + thetas, roots
+    return None
+
+
+def _base_parts(x):
+    if type(x) is not tuple:
+        yield x
+    else:
+        yield from _base_parts(x[1])
+        yield from _base_parts(x[2])
+
+
+def _cyclotomic_search(p: int, w: int, radicands: list, budget: int = 64):
+    """Roots of the images of the lower radicands, depth first, until the image of the last
+    one is a non-residue (``budget`` leaves at most); None if none found."""
+    stack, leaves = [[]], 0
+    while stack and leaves < budget:
+        roots = stack.pop()
+        j = len(roots)
+        value = _cyclotomic_image(radicands[j], p, w, roots)
+        if value is None:
+            return None
+        if j == len(radicands) - 1:
+            leaves += 1
+            if pow(value, (p - 1) // 2, p) == p - 1:
+                return roots
+            continue
+        t = _sqrt_mod(value, p)
+        if t is not None:
+            stack += [roots + [t], roots + [(p - t) % p]]
     return None
