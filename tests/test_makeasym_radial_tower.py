@@ -103,7 +103,16 @@ def test_adjoin_sqrt_choices_and_limits():
     # a denestable one stays multiquadratic
     system, root = adjoin_sqrt(mq, [S2], 3 + 2 * S2)
     assert root == 1 + S2
-    # cyclotomic configurations stay out of reach
+    # a cyclotomic configuration: a tower over Q(zeta_M), a level only for a non-square
     from exactsym.exact import cyclotomic
+    from exactsym.exact.evaluate import CyclotomicTowerSystem
     field = cyclotomic.cyclotomic_field(12)
-    assert adjoin_sqrt(FieldSystem(field), [field(1)], field(2)) is None
+    system, root = adjoin_sqrt(FieldSystem(field), [field(1)], field(2))
+    assert isinstance(system, CyclotomicTowerSystem) and root * root == system.coerce(field(2))
+    # degrees over Q: the real subfield Q(sqrt(3)) of Q(zeta_12) is 2; sqrt(2) is a level
+    assert system.tower.degree == 4
+    system, root = adjoin_sqrt(FieldSystem(field), [field(1)], field(3))
+    assert root * root == 3 and system.tower.degree == 2      # sqrt(3) is in the base
+    # beyond the tower's a-priori bound (phi(1009) = 1008 > 192): out of reach, at once
+    big = cyclotomic.cyclotomic_field(1009)
+    assert adjoin_sqrt(FieldSystem(big), [big(1)], big(2)) is None

@@ -8,17 +8,23 @@ or a tower of quadratic extensions over it (:class:`~.evaluate.TowerSystem`, a n
 radical).  :func:`adjoin_sqrt` returns the root and the number system that holds it with
 every number of the configuration.
 
-Out of reach (None): a configuration in a cyclotomic field (polar files with rational
-turns beyond square roots, ``FieldSystem``) -- a tower over a cyclotomic field is not
-provided -- and a radicand whose square-freeness check would factor a rational of more
-than 160 bits (:func:`~.mq_closure.decided_sqrt`).
+A configuration in a cyclotomic field (``FieldSystem`` of Q(zeta_M)) or already in a tower
+over one (:class:`~.evaluate.CyclotomicTowerSystem`) gets the root from that tower's
+complete square-root test (:mod:`.cyclotomic_sqrt`): a new level only for a non-square.
+
+Out of reach (None): a base Q(zeta_M) beyond the tower's a-priori bound
+(:data:`~.cyclotomic_tower.MAX_BASE_DEGREE`), a number field that is not cyclotomic, and a
+radicand whose square-freeness check would factor a rational of more than 160 bits
+(:func:`~.mq_closure.decided_sqrt`).
 """
 
 from __future__ import annotations
 
 from flint import fmpz
 
-from .evaluate import MultiquadraticSystem, RationalSystem, TowerSystem
+from ..errors import FieldTooLargeError
+from .evaluate import (CyclotomicTowerSystem, FieldSystem, MultiquadraticSystem,
+                       RationalSystem, TowerSystem)
 from .field import FieldElement
 from .mq_closure import decided_sqrt
 from .multiquadratic import MQ
@@ -47,6 +53,14 @@ def adjoin_sqrt(system, numbers, x):
     and a number system holding it and every one of ``numbers`` (the configuration's
     coordinates, in ``system``); ``system2`` is ``system`` when it already holds the
     root.  None when out of reach (see the module docstring)."""
+    if isinstance(system, FieldSystem) and system.field.conductor is not None:
+        try:
+            system = CyclotomicTowerSystem(system.field.conductor)
+        except FieldTooLargeError:
+            return None
+    if isinstance(system, CyclotomicTowerSystem):
+        # its numbers are Q(zeta_M) elements and MQ rationals only: never an irrational MQ
+        return system, system.sqrt(system.coerce(x))
     if isinstance(system, TowerSystem):
         raw = x.v if isinstance(x, TowerElement) else system.coerce(x)
         if isinstance(raw, MQ):

@@ -29,7 +29,7 @@ from flint import fmpq, fmpz
 from ..errors import ExpressionError, FieldTooLargeError
 from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 from . import cyclotomic
-from .field import FieldElement, NumberField, as_fmpq
+from .field import FieldElement, NumberField, PolyElement, as_fmpq
 from .multiquadratic import MQ, sqrt_rational, squarefree_split
 
 
@@ -151,6 +151,16 @@ class CyclotomicTowerSystem(TowerSystem):
         if value is not None:
             return MQ.rational(value)
         return self.tower.wrap(cyclotomic.cos_turn(self.tower.field, turn))
+
+    def coerce(self, value):
+        """Also a number of the base field as ``FieldSystem`` makes it (MakeAsym's radial
+        move rewrites a cyclotomic configuration in this tower)."""
+        field = self.tower.field
+        if isinstance(value, PolyElement) and value.field.conductor == field.conductor:
+            # same Q(zeta_M), possibly another NumberField object: same power basis
+            return self.tower.wrap(value if value.field is field else
+                                   PolyElement(field, value.poly))
+        return super().coerce(value)
 
 
 class FieldSystem:

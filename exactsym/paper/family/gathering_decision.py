@@ -199,10 +199,13 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
             return _finish(limits, bounded, config,
                            orderable, gathering, None, moves, False, trace, G, Gp,
                            ma_outcome, None, polar)
-        if not _same_sec(ring_data, new_rings):
+        # this round's moves against the SEC they started from (a later round is not
+        # blamed again for an SEC an earlier round changed)
+        if not _same_sec(cur_rings, new_rings,
+                         new.system if new.system is not current.system else None):
             trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
                         "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
-                        "not)" + _sense_note(current, new, result, ring_data), holds=False,
+                        "not)" + _sense_note(current, new, result, cur_rings), holds=False,
                         round=rnd)
         if check_vl:
             _check_vl_move(trace, current, new, result, orientation, reading, rnd, limits)
@@ -273,13 +276,17 @@ def _sense_note(before: Configuration, after: Configuration, result: MakeAsymRes
             sec = polar_sec(other.polar)
             keeps = sec is not None and sec.radius_squared == ring_data.sec.radius_squared
         else:
-            cx, cy = ring_data.sec.centre
-            (ux, uy), (wx, wy) = ((p[0] - cx, p[1] - cy) for p in (before.points[v],
-                                                                     after.points[v]))
+            # a radial move of this round may have adjoined a square root: ``after`` is
+            # then in a larger system, and ``before``'s numbers are written in it
+            system = after.system if after.system is not before.system else None
+            to = system.coerce if system is not None else (lambda x: x)
+            cx, cy = (to(x) for x in ring_data.sec.centre)
+            (ux, uy), (wx, wy) = ((to(p[0]) - cx, to(p[1]) - cy) for p in (before.points[v],
+                                                                             after.points[v]))
             norm = ux * ux + uy * uy
             c, s_ = (ux * wx + uy * wy) / norm, (ux * wy - uy * wx) / norm
             other = after.moved(v, (cx + ux * c + uy * s_, cy - ux * s_ + uy * c))
-            keeps = _same_sec(ring_data, levels_of(other))
+            keeps = _same_sec(ring_data, levels_of(other), system)
     except (MoveImpossible, ArithmeticError, InputError, NotImplementedError, TypeError,
             ValueError):
         return head + "; the move in the other sense could not be built exactly"
@@ -287,9 +294,13 @@ def _sense_note(before: Configuration, after: Configuration, result: MakeAsymRes
                    "; the same move counter-clockwise changes the SEC too")
 
 
-def _same_sec(a: Levels, b: Levels) -> bool:
-    return a.sec.centre[0] == b.sec.centre[0] and a.sec.centre[1] == b.sec.centre[1] and \
-        a.sec.radius_squared == b.sec.radius_squared
+def _same_sec(a: Levels, b: Levels, system=None) -> bool:
+    """``system``: the number system of ``b`` when a radial move adjoined a square root
+    (``a``'s numbers are written in it first: a cyclotomic number and one of a tower over
+    that field do not compare directly)."""
+    c = system.coerce if system is not None else (lambda x: x)
+    return c(a.sec.centre[0]) == b.sec.centre[0] and c(a.sec.centre[1]) == b.sec.centre[1] \
+        and c(a.sec.radius_squared) == b.sec.radius_squared
 
 
 def _check_vl_move(trace, before: Configuration, after: Configuration, result: MakeAsymResult,

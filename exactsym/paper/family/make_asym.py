@@ -82,7 +82,7 @@ class _Placement:
             if found is None:
                 return False
             self._rehome(found[0])
-            scale = found[1]
+            scale, v = found[1], self.direction(i)      # v rewritten in the new field
         self.set_vector(i, (v[0] * scale, v[1] * scale))
         return True
 
@@ -220,11 +220,11 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
     enclosing circle of G_t": radially, same direction, exact: polar, or the square root
     of the radii's squared ratio -- adjoined when it is outside the configuration's field
     (:func:`~exactsym.exact.adjoin_sqrt.adjoin_sqrt`: a larger multiquadratic field, or a
-    tower of quadratic extensions for a nested radical; the configuration after the
-    moves is then written in that field).  Out of reach, the move is "not exact"
-    (outcome "undecided", the paper layer's ``complete: false``): a Cartesian
-    configuration in a cyclotomic field (a tower over it is not provided), or a radicand
-    whose check needs a rational of more than 160 bits factored.  "Move v, epsilon
+    tower of quadratic extensions, over the multiquadratic field or over Q(zeta_M) for a
+    cyclotomic configuration; the configuration after the moves is then written in that
+    field).  Out of reach, the move is "not exact" (outcome "undecided", the paper
+    layer's ``complete: false``): a base Q(zeta_M) beyond the tower's bound (phi(M) <=
+    192), or a radicand whose check needs a rational of more than 160 bits factored.  "Move v, epsilon
     distance" for a single-vertex polygon:
     along its circle (the robot at C moves to a quarter of the smallest radius, towards
     the first vertex of G_t counter-clockwise from the observer's x axis: no invariant
@@ -262,8 +262,8 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
         if not ok:
             trace_entry(trace, alg, line, [Gt.name], alg,
                         f"move robot {robot} to the circle of {Gt.name}: the point is not exact "
-                        "here (the square root of the ratio of radii is outside this cyclotomic "
-                        "field, or needs a large rational factored)",
+                        "here (the square root of the ratio of radii needs a tower over a "
+                        "cyclotomic field beyond its bound, or a large rational factored)",
                         robots=[robot], branch=branch, round=rnd)
             return False
         trace_entry(trace, alg, line, [Gp[-2].name if t > 1 else Gt.name, Gt.name], alg,
