@@ -116,3 +116,25 @@ def test_adjoin_sqrt_choices_and_limits():
     # beyond the tower's a-priori bound (phi(1009) = 1008 > 192): out of reach, at once
     big = cyclotomic.cyclotomic_field(1009)
     assert adjoin_sqrt(FieldSystem(big), [big(1)], big(2)) is None
+
+
+def test_each_round_is_checked_against_the_sec_it_started_from():
+    """Round 1's epsilon moves change the SEC (a finding); round 2 moves a robot radially
+    onto G_t's circle (a square root adjoined in a tower over Q(zeta_12)) and keeps the SEC
+    of round 1: one finding, not two, and the round-2 configuration is exact."""
+    from pathlib import Path
+    from exactsym.configuration import load
+    from exactsym.levels import levels_of
+    from exactsym.paper import family as F
+    config = load(Path(__file__).resolve().parent.parent /
+                  "cases/sweeps/roots_12_le6/sweep-MakeAsym.toml")
+    res = F.paper_procedure(config, levels_of(config))
+    changed = [e["round"] for e in res.trace if "the SEC changed" in e.get("detail", "")]
+    assert changed == [1]
+    assert [m["kind"] for m in res.moves][:3] == ["epsilon", "epsilon", "to-G_t-circle"]
+    (_, one), (_, two) = res.round_configs[:2]
+    a, b = levels_of(one).sec, levels_of(two).sec
+    to = two.system.coerce
+    assert (to(a.centre[0]), to(a.centre[1]), to(a.radius_squared)) == \
+        (b.centre[0], b.centre[1], b.radius_squared)
+    assert res.leader == 2 and res.complete
