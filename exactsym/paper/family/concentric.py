@@ -262,14 +262,17 @@ def lines_text(ring_or_lines, polar: bool) -> str:
         return "every line through C"
     if not lines:
         return "no line"
-    keys = sorted((k.value for k in lines), key=_display_order)
+    keys = sorted((k.value for k in lines), key=display_order)
     shown = ", ".join(line_value_text(k) for k in keys[:8])
     more = f", ... ({len(keys)} in all)" if len(keys) > 8 else ""
     unit = "turns" if polar else "doubled-angle rays"
     return f"{len(keys)} line{'s' if len(keys) != 1 else ''} ({unit} {shown}{more})"
 
 
-def _display_order(v):
+def display_order(v):
+    """The order in which lines are shown (a line key's value): exact, so a witness
+    picked as the first line in this order is the same in every run (the line sets are
+    frozensets, whose iteration order follows string hashes)."""
     return v if not isinstance(v, tuple) else (v[0], v[1] if v[0] else 0)
 
 
