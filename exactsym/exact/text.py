@@ -19,6 +19,10 @@ def rational_text(q) -> str:
     return str(q.p) if q.q == 1 else f"{q.p}/{q.q}"
 
 
+#: cos(2 pi k/M) by the denominator of k/M, where it is rational
+_RATIONAL_COS = {1: fmpq(1), 2: fmpq(-1), 3: fmpq(-1, 2), 4: fmpq(0), 6: fmpq(1, 2)}
+
+
 def _pi_multiple_text(q: fmpq) -> str:
     sign, p = ("-", -q.p) if q < 0 else ("", q.p)
     head = "pi" if p == 1 else f"{p}*pi"
@@ -110,11 +114,19 @@ def number_text(x) -> str:
     field = x.field
     coeffs = x.poly.coeffs()
     if field.conductor is not None:
-        # x = sum c_k zeta^k is real, so x = sum c_k cos(2 pi k / M)
+        # x = sum c_k zeta^k is real, so x = sum c_k cos(2 pi k / M); the cosines that
+        # are rational (k/M of denominator 1, 2, 3, 4 or 6) join the constant term
         m = field.conductor
-        terms = [(coeffs[0], "")] + [(c, f"cos({_pi_multiple_text(fmpq(2 * k, m))})")
-                                    for k, c in enumerate(coeffs) if k and c != 0]
-        return _sum_text(terms)
+        const, terms = fmpq(coeffs[0]), []
+        for k, c in enumerate(coeffs):
+            if not k or c == 0:
+                continue
+            rational = _RATIONAL_COS.get(fmpq(k, m).q)
+            if rational is not None:
+                const += c * rational
+            else:
+                terms.append((c, f"cos({_pi_multiple_text(fmpq(2 * k, m))})"))
+        return _sum_text([(const, "")] + terms)
     theta = f"({field.theta_text})"
     terms = [(coeffs[0], "")] + [(c, theta if k == 1 else f"{theta}^{k}")
                                 for k, c in enumerate(coeffs) if k and c != 0]
