@@ -14,7 +14,7 @@ from math import atan2, gcd, pi
 
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from .circle_polygon import CirclePolygon
-from .filtered import compare_directions, cross_sign, gap_classes_on_circle
+from .filtered import compare_directions, cross_sign, gap_classes_on_circle, ray_ratio_key
 from .inverses import inverse_length, squared_length
 
 
@@ -54,10 +54,16 @@ def ray_key(polar: bool, d, inverse=None):
     for points on a circle of rational radius about a rational centre; pass
     ``inverse`` = 1/(x^2 + y^2) when it is known (else
     :func:`exactsym.paper.inverses.inverse_length`: one inverse per distinct length, never
-    one per vertex: an inverse in a cyclotomic field of degree hundreds costs a second)."""
+    one per vertex: an inverse in a cyclotomic field of degree hundreds costs a second).
+    In a polynomial field of large degree the squared x coordinate is held undivided
+    (:func:`exactsym.paper.filtered.ray_ratio_key`: the same equalities, no inverse)."""
     if polar:
         return hashable_key(normal_turn(d))
     x, y = d
+    if inverse is None:
+        ratio = ray_ratio_key(x, y)          # a field of degree >= 64: no inverse at all
+        if ratio is not None:
+            return (sign(x), sign(y), ratio)
     xx = x * x
     if inverse is None:
         inverse = inverse_length(xx + y * y)
