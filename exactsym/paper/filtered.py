@@ -13,10 +13,9 @@ Rationals (``fmpq``, ``int``) skip the filter: their exact products are cheap.
 
 from __future__ import annotations
 
-from flint import arb, ctx, fmpq, fmpq_poly
+from flint import arb
 
 from ..exact import FieldElement, exact_key, sign
-from ..exact.field import PolyElement
 
 _PREC = 64
 _BALLS: dict = {}
@@ -126,102 +125,4 @@ def gap_classes_on_circle(dirs) -> list:
     return tokens
 
 
-#: polynomial fields from this degree get :class:`RatioKey`\ s: an inverse there costs
-#: from 0.1 s (degree 5,760: xgcd and Newton lift) to seconds, a product milliseconds
-RATIO_KEY_DEGREE = 64
-_CELLS = 1 << 24           # hash cells: floor(2^24 * value)
-
-
-def _ball_at(x, prec: int) -> arb:
-    if isinstance(x, FieldElement):
-        return x.enclosure(prec)
-    with ctx.workprec(prec):
-        return arb(x)
-
-
-def _big_field(x) -> bool:
-    return isinstance(x, PolyElement) and x.field.degree >= RATIO_KEY_DEGREE
-
-
-class RatioKey:
-    """The exact number num/den (den > 0), irrational, held without dividing: equal iff
-    num * den' == num' * den (two exact products), hashed by the cell floor(2^24 *
-    num/den), a function of the value alone read from Arb balls (when the ball of the
-    value straddles a cell boundary j, the exact sign of 2^24 num - j den settles the
-    cell: balls only filter).  It stands for ``exact_key(num / den)`` where that key is
-    compared for equality only (ray keys, line keys: sets and dicts), saving the inverse
-    of den in a field of degree thousands.  Never equal to another kind of key: the
-    caller gives rational values their ``exact_key`` (decided exactly, see
-    :func:`ray_ratio_key`), so one value always gets one kind of key."""
-
-    __slots__ = ("num", "den", "_hash")
-
-    def __init__(self, num, den, x, y):
-        self.num, self.den = num, den
-        self._hash = hash(("ratio", self._cell(x, y)))
-
-    def _cell(self, x, y) -> int:
-        """floor(2^24 num / den), num / den = x^2 / (x^2 + y^2), from balls of x and y
-        at rising precision (a tiny vector needs more bits), the boundary by an exact sign."""
-        prec = _PREC
-        while True:
-            bx, by = (ball(x), ball(y)) if prec == _PREC else (_ball_at(x, prec),
-                                                                 _ball_at(y, prec))
-            xx = bx * bx
-            scaled = xx / (xx + by * by) * _CELLS
-            if scaled.is_finite() and scaled.rad() < 0.25:
-                break
-            prec *= 4
-        cell = scaled.floor().unique_fmpz()
-        if cell is not None:
-            return int(cell)
-        j = int(scaled.upper().floor().unique_fmpz())     # the one boundary in the ball
-        return j if sign(_CELLS * self.num - j * self.den) >= 0 else j - 1
-
-    def __hash__(self) -> int:
-        return self._hash
-
-    def __eq__(self, other) -> bool:
-        if self is other:
-            return True
-        if not isinstance(other, RatioKey):
-            return False
-        if self._hash != other._hash:        # the cells differ: the values differ
-            return False
-        return self.num * other.den == other.num * self.den
-
-    def __ne__(self, other) -> bool:
-        return not self.__eq__(other)
-
-    def __repr__(self) -> str:
-        return f"RatioKey({self.num!r} / {self.den!r})"
-
-
-def ray_ratio_key(x, y):
-    """``exact_key(x^2 / (x^2 + y^2))`` for a non-zero vector with a coordinate in a
-    polynomial field of degree >= :data:`RATIO_KEY_DEGREE`, or None (other vectors: the
-    caller divides).  A rational value (decided exactly: x^2 is a rational multiple of
-    the squared length, compared coefficient by coefficient) keys as before; an irrational
-    one as a :class:`RatioKey`, hashed from the balls of x and y (cached per object)."""
-    if not (_big_field(x) or _big_field(y)):
-        return None
-    xx = x * x
-    length = xx + y * y
-    if not isinstance(xx, FieldElement):
-        num = fmpq_poly([xx])
-    else:
-        num = xx.poly
-    den = length.poly if isinstance(length, PolyElement) else fmpq_poly([length])
-    if num.is_zero():
-        return exact_key(fmpq(0))
-    coeffs = den.coeffs()
-    i = next(k for k, c in enumerate(coeffs) if c != 0)
-    top = num.coeffs()
-    q = (top[i] if i < len(top) else fmpq(0)) / coeffs[i]
-    if num == q * den:                      # x^2 = q |d|^2: the value is the rational q
-        return exact_key(q)
-    return RatioKey(xx, length, x, y)
-
-
-__all__ = ["ball", "cross_sign", "dot_sign", "compare_directions", "gap_classes_on_circle",
-           "RatioKey", "ray_ratio_key"]
+__all__ = ["ball", "cross_sign", "dot_sign", "compare_directions", "gap_classes_on_circle"]
