@@ -14,8 +14,8 @@ from math import atan2, gcd, pi
 
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, number_text, sign
 from .circle_polygon import CirclePolygon
-from .filtered import compare_directions, cross_sign, gap_classes_on_circle
-from .ratio_keys import big_field, gap_ratio_key, ray_ratio_key
+from .filtered import compare_directions, cross_sign, dot_sign, gap_classes_on_circle
+from .ratio_keys import gap_ratio_key, ray_ratio_key
 from .inverses import inverse_length, squared_length
 
 
@@ -284,8 +284,10 @@ def gap_ids(poly: CirclePolygon) -> list:
             # one circle: the gaps are told apart by the sign of the cross product and
             # the dot product, filtered by balls (exact products only for near ties)
             return [ids.setdefault(t, len(ids)) for t in gap_classes_on_circle(dirs)]
-    if not poly.polar and any(big_field(*d) for d in dirs):
-        # a field of degree thousands: the gap keys held undivided (equal iff equal)
+    if not poly.polar and any(isinstance(c, FieldElement) for d in dirs for c in d):
+        # algebraic: the gap keys held undivided (equal iff equal), told apart by balls;
+        # exact products only for gaps in one hash cell (a field inverse costs up to a
+        # second at degree thousands, tower products a millisecond each)
         return [ids.setdefault(_gap_equality_key(dirs[i], dirs[(i + 1) % n]), len(ids))
                 for i in range(n)]
     return [ids.setdefault(hashable_key(ccw_gap_key(poly.polar, dirs[i], dirs[(i + 1) % n])),
@@ -295,10 +297,10 @@ def gap_ids(poly: CirclePolygon) -> list:
 def _gap_equality_key(a, b):
     """A hashable key of :func:`ccw_gap_key` (Cartesian), equal iff those keys are equal,
     with no inverse (:func:`exactsym.paper.ratio_keys.gap_ratio_key`)."""
-    c, d = cross_sign(a, b), dot(a, b)
+    c, s = cross_sign(a, b), dot_sign(a, b)        # both ball-filtered
     if c == 0:
-        return (1, 0) if sign(d) < 0 else (3, 0)
-    return gap_ratio_key(a, b, c, d)
+        return (1, 0) if s < 0 else (3, 0)
+    return gap_ratio_key(a, b, c, s)
 
 
 def circle_line_keys(poly: CirclePolygon):

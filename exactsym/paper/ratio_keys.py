@@ -150,14 +150,52 @@ def _largest_field(numbers):
     return best
 
 
-def gap_ratio_key(a, b, c: int, d):
+class AngleKey(RatioKey):
+    """The counter-clockwise angle from a to b as the value of :func:`gap_ratio_key`
+    (-sign(d) c d^2 / (|a|^2 |b|^2), hashed by its cell like a :class:`RatioKey`), but
+    compared as angles: equal iff (a.b, a x b) and (a'.b', a' x b') are positively
+    proportional (equal signs of the dot products, the cross products' signs being equal
+    in the key's class, and d e' == e d'): products of degree 4 in the coordinates, not
+    the degree 8 of cross-multiplied quotients (in a tower of radicals a product costs
+    more the larger its operands)."""
+
+    __slots__ = ("a", "b", "dot_sign", "_de")
+
+    def __init__(self, a, b, dot_sign: int, parts, value_ball, home):
+        self.a, self.b, self.dot_sign, self._de = a, b, dot_sign, None
+        super().__init__(parts, value_ball, home)
+
+    def dot_cross(self) -> tuple:
+        if self._de is None:
+            a, b = self.a, self.b
+            self._de = (a[0] * b[0] + a[1] * b[1], a[0] * b[1] - a[1] * b[0])
+        return self._de
+
+    def __eq__(self, other) -> bool:
+        if self is other:
+            return True
+        if not isinstance(other, AngleKey):
+            return False
+        if self._hash != other._hash or self.home is not other.home \
+                or self.dot_sign != other.dot_sign:
+            return False
+        (d, e), (d2, e2) = self.dot_cross(), other.dot_cross()
+        return d * e2 == e * d2
+
+    def __hash__(self) -> int:
+        return self._hash
+
+
+def gap_ratio_key(a, b, c: int, dot_sign: int):
     """The value of :func:`exactsym.paper.keys.ccw_gap_key` for vectors a, b with
-    cross-product sign ``c`` (non-zero) and dot product ``d``, ``(class, key)`` with key
-    a :class:`RatioKey` of -sign(d) c d^2 / (|a|^2 |b|^2): equal iff the gap keys are
-    equal.  For equality only (small integer ids): every gap gets this kind of key."""
-    s = -sign(d) * c
+    cross-product sign ``c`` (non-zero) and dot-product sign ``dot_sign``, as ``(class,
+    key)`` with key an :class:`AngleKey`: equal iff the gap keys are equal.  For equality
+    only (small integer ids): every gap of a polygon gets this kind of key.  No exact
+    product until two gaps share a hash cell."""
+    s = -dot_sign * c
 
     def parts():
+        d = a[0] * b[0] + a[1] * b[1]
         la = a[0] * a[0] + a[1] * a[1]
         lb = b[0] * b[0] + b[1] * b[1]
         return s * d * d, la * lb
@@ -166,8 +204,9 @@ def gap_ratio_key(a, b, c: int, d):
         ax, ay, bx, by = (ball_at(v, prec) for v in (a[0], a[1], b[0], b[1]))
         dot = ax * bx + ay * by
         return s * dot * dot / ((ax * ax + ay * ay) * (bx * bx + by * by))
-    return (0 if c > 0 else 2, RatioKey(parts, value_ball, _largest_field(a + b)))
+    return (0 if c > 0 else 2, AngleKey(a, b, dot_sign, parts, value_ball,
+                                        _largest_field(a + b)))
 
 
-__all__ = ["RATIO_KEY_DEGREE", "RatioKey", "big_field", "gap_ratio_key", "rational_ratio",
+__all__ = ["RATIO_KEY_DEGREE", "AngleKey", "RatioKey", "big_field", "gap_ratio_key", "rational_ratio",
            "ray_ratio_key"]
