@@ -50,7 +50,7 @@ class RatioKey:
     value's cell (module docstring).  Never equal to another kind of key: a caller that
     mixes kinds must give every value of one kind (:func:`ray_ratio_key` gives rational
     values their ``exact_key``, decided exactly).  ``home``: the number field the value
-    would lie in (keys of two fields are unequal, as their ``exact_key``\ s were: they
+    would lie in (keys of two fields are unequal, as their exact keys were: those
     name the field object)."""
 
     __slots__ = ("_parts", "_exact", "_hash", "home")
