@@ -1,7 +1,8 @@
 """Keys of quotients num/den held without dividing, for fields of large degree (issue 9).
 
 In a cyclotomic field of degree thousands an inverse costs 0.1 s to seconds (an xgcd
-modulo a prime and a Newton lift, :mod:`exactsym.exact.inverse`), a product milliseconds.
+modulo a prime and a Newton lift, :mod:`exactsym.exact.inverse`), a product milliseconds;
+with coefficients of thousands of digits an inverse costs as much at degree 4.
 The paper layer's ray keys (x^2 / |d|^2) and gap keys (d^2 / (|a|^2 |b|^2)) are only
 compared for equality (sets, dicts, small integer ids), so there they are held as
 :class:`RatioKey`: equal iff num den' == num' den, exactly; hashed by the cell
@@ -18,8 +19,10 @@ from ..exact import FieldElement, exact_key, sign
 from ..exact.field import PolyElement
 from .filtered import ball
 
-#: polynomial fields from this degree get ratio keys (below it an inverse is cheap)
-RATIO_KEY_DEGREE = 64
+#: polynomial fields from this degree get ratio keys: all of them, since an inverse is
+#: slow at degree thousands and also at degree 4 with coefficients of thousands of digits
+#: (a pentagon moved by 10^-1000: fmpq_poly.xgcd, 0.6 s per squared length)
+RATIO_KEY_DEGREE = 2
 _CELLS = 1 << 24           # hash cells: floor(2^24 * value)
 _PREC = 64
 
