@@ -98,10 +98,12 @@ def _lifted_inverse(a: fmpz_poly, den: fmpz, m: fmpz_poly) -> fmpq_poly:
     rem = remainder_function(m)
     modulus = fmpz(p)
     while True:
-        modulus *= modulus
-        # products and remainders over Z (m monic), coefficients reduced mod p^(2^k)
-        t = rem(a * u) % modulus
-        u = rem(u * (2 - t)) % modulus
+        old, modulus = modulus, modulus * modulus
+        # a u = 1 + old e (mod m, modulus); u' = u - old (u e mod old) has a u' = 1 - old^2
+        # e^2 = 1 (mod modulus): the product u e has operands of old's size, not modulus's
+        # (products and remainders over Z, m monic)
+        e = (rem(a * u) % modulus - 1) // old
+        u = (u - old * (rem(u * e) % old)) % modulus
         if modulus.bit_length() < 120:   # too few bits for any answer but the tiniest
             continue
         values = [int(c) for c in u.coeffs()]
