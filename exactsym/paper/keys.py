@@ -61,8 +61,8 @@ def ray_key(polar: bool, d, inverse=None):
     if polar:
         return hashable_key(normal_turn(d))
     x, y = d
-    if inverse is None:
-        ratio = ray_ratio_key(x, y)          # a field of degree >= 64: no inverse at all
+    if inverse is None and (isinstance(x, FieldElement) or isinstance(y, FieldElement)):
+        ratio = ray_ratio_key(x, y)          # a polynomial field: no inverse at all
         if ratio is not None:
             return (sign(x), sign(y), ratio)
     xx = x * x
