@@ -159,3 +159,4 @@ def test_newton_inverse_equals_xgcd_inverse_at_degree_hundreds():
     other = fmpq_poly(fmpz_poly.cyclotomic(643))
     v = inverse_mod(a, other)
     assert (a * v) % other == 1 and v != u
+
