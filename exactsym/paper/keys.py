@@ -12,9 +12,10 @@ from __future__ import annotations
 from functools import cmp_to_key
 from math import atan2, gcd, pi
 
-from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
+from ..exact import FieldElement, exact_key, fmpq, normal_turn, number_text, sign
 from .circle_polygon import CirclePolygon
-from .filtered import compare_directions, cross_sign, gap_classes_on_circle
+from .filtered import compare_directions, cross_sign, dot_sign, gap_classes_on_circle
+from .ratio_keys import gap_ratio_key, ray_ratio_key
 from .inverses import inverse_length, squared_length
 
 
@@ -54,10 +55,16 @@ def ray_key(polar: bool, d, inverse=None):
     for points on a circle of rational radius about a rational centre; pass
     ``inverse`` = 1/(x^2 + y^2) when it is known (else
     :func:`exactsym.paper.inverses.inverse_length`: one inverse per distinct length, never
-    one per vertex: an inverse in a cyclotomic field of degree hundreds costs a second)."""
+    one per vertex: an inverse in a cyclotomic field of degree hundreds costs a second).
+    In a polynomial field of large degree the squared x coordinate is held undivided
+    (:func:`exactsym.paper.ratio_keys.ray_ratio_key`: the same equalities, no inverse)."""
     if polar:
         return hashable_key(normal_turn(d))
     x, y = d
+    if inverse is None and (isinstance(x, FieldElement) or isinstance(y, FieldElement)):
+        ratio = ray_ratio_key(x, y)          # a polynomial field: no inverse at all
+        if ratio is not None:
+            return (sign(x), sign(y), ratio)
     xx = x * x
     if inverse is None:
         inverse = inverse_length(xx + y * y)
@@ -87,12 +94,13 @@ class LineKey:
     the lines are equal, with no division but by a squared length
     (:func:`line_key`, :func:`bisector_key`)."""
 
-    __slots__ = ("canon", "_value", "_vector")
+    __slots__ = ("canon", "_value", "_vector", "_text")
 
     def __init__(self, canon, value=None, vector=None):
         self.canon = canon
         self._value = value
         self._vector = vector
+        self._text = None
 
     @classmethod
     def of(cls, value) -> "LineKey":
@@ -106,8 +114,37 @@ class LineKey:
     @property
     def value(self):
         if self._value is None:
-            self._value = ray_value(*self._vector)
+            # one division per line, not per key object: equal keys have one value
+            slot = self._slot()
+            known = _LINE_VALUES.get(slot)
+            if known is None:
+                if len(_LINE_VALUES) >= _LINE_LIMIT:
+                    _LINE_VALUES.clear()
+                known = _LINE_VALUES[slot] = [ray_value(*self._vector), None]
+            self._value = known[0]
         return self._value
+
+    def _slot(self) -> tuple:
+        """The key of this line's entry in the value cache: the line and the number
+        fields of its vector (objects, compared by identity), so a value is shared only
+        by keys of one configuration's numbers, never across inputs checked in one
+        process (equal lines of two fields are printed in each field's terms)."""
+        return (tuple(_number_home(c) for c in self._vector), self)     # fields first
+
+    @property
+    def text(self) -> str:
+        """The value as :mod:`exactsym.paper.family` prints it (a turn, or ``(sign,
+        slope)``), written once per line: in a field of degree thousands the text of a
+        slope is a megabyte and the claims print each line several times."""
+        if self._text is None:
+            value = self.value
+            known = _LINE_VALUES.get(self._slot()) if self._vector is not None else None
+            if known is None or known[0] is not value:     # the text of this very value
+                known = [value, None]
+            if known[1] is None:
+                known[1] = line_value_text(value)
+            self._text = known[1]
+        return self._text
 
     @property
     def h(self):
@@ -121,6 +158,24 @@ class LineKey:
 
     def __repr__(self) -> str:
         return f"LineKey({self.value!r})"
+
+
+_LINE_VALUES: dict = {}     # (LineKey, fields) -> [value, text or None]
+
+
+def _number_home(x):
+    """The object a number's exact key names (its field or tower), or its type."""
+    home = getattr(x, "field", None)
+    if home is None:
+        home = getattr(x, "tower", None)
+    return home if home is not None else type(x).__name__
+_LINE_LIMIT = 4096
+
+
+def line_value_text(k) -> str:
+    """The text of a line value (a turn, or ``(sign, slope)``)."""
+    return number_text(k) if not isinstance(k, tuple) else \
+        f"({k[0]}, {number_text(k[1]) if not isinstance(k[1], int) else k[1]})"
 
 
 def line_canon(doubled) -> tuple:
@@ -229,8 +284,23 @@ def gap_ids(poly: CirclePolygon) -> list:
             # one circle: the gaps are told apart by the sign of the cross product and
             # the dot product, filtered by balls (exact products only for near ties)
             return [ids.setdefault(t, len(ids)) for t in gap_classes_on_circle(dirs)]
+    if not poly.polar and any(isinstance(c, FieldElement) for d in dirs for c in d):
+        # algebraic: the gap keys held undivided (equal iff equal), told apart by balls;
+        # exact products only for gaps in one hash cell (a field inverse costs up to a
+        # second at degree thousands, tower products a millisecond each)
+        return [ids.setdefault(_gap_equality_key(dirs[i], dirs[(i + 1) % n]), len(ids))
+                for i in range(n)]
     return [ids.setdefault(hashable_key(ccw_gap_key(poly.polar, dirs[i], dirs[(i + 1) % n])),
                            len(ids)) for i in range(n)]
+
+
+def _gap_equality_key(a, b):
+    """A hashable key of :func:`ccw_gap_key` (Cartesian), equal iff those keys are equal,
+    with no inverse (:func:`exactsym.paper.ratio_keys.gap_ratio_key`)."""
+    c, s = cross_sign(a, b), dot_sign(a, b)        # both ball-filtered
+    if c == 0:
+        return (1, 0) if s < 0 else (3, 0)
+    return gap_ratio_key(a, b, c, s)
 
 
 def circle_line_keys(poly: CirclePolygon):

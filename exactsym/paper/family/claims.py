@@ -15,8 +15,7 @@ from typing import Iterable, Sequence
 from ..circle_polygon import CirclePolygon
 from .concentric import (ALL_LINES, Ring, common_lines, display_order, has_lines,
                          intersect_lines, is_odd, is_symmetric_family, is_symmetric_pair,
-                         is_symmetric_polygon, line_value_text, lines_text, new_ring,
-                         polygon_name)
+                         is_symmetric_polygon, lines_text, new_ring, polygon_name)
 from .find_asymmetry import find_asymmetry_pair
 from ..keys import sort_by_angle
 from .limits import DEFAULT_LIMITS, END_LEVELS, Limits, WorkBudgetExceeded
@@ -406,7 +405,7 @@ def _lines_not_in(lines, allowed):
         return None
     if lines is ALL_LINES:
         return "every line through C (skew symmetric)"
-    extra = [k.value for k in lines if k not in allowed]
+    extra = [k for k in lines if k not in allowed]
     if not extra:
         return None
-    return line_value_text(min(extra, key=display_order))
+    return min(extra, key=lambda k: display_order(k.value)).text

@@ -262,8 +262,8 @@ def lines_text(ring_or_lines, polar: bool) -> str:
         return "every line through C"
     if not lines:
         return "no line"
-    keys = sorted((k.value for k in lines), key=display_order)
-    shown = ", ".join(line_value_text(k) for k in keys[:8])
+    keys = sorted(lines, key=lambda k: display_order(k.value))
+    shown = ", ".join(k.text for k in keys[:8])
     more = f", ... ({len(keys)} in all)" if len(keys) > 8 else ""
     unit = "turns" if polar else "doubled-angle rays"
     return f"{len(keys)} line{'s' if len(keys) != 1 else ''} ({unit} {shown}{more})"
@@ -274,11 +274,6 @@ def display_order(v):
     picked as the first line in this order is the same in every run (the line sets are
     frozensets, whose iteration order follows string hashes)."""
     return v if not isinstance(v, tuple) else (v[0], v[1] if v[0] else 0)
-
-
-def line_value_text(k) -> str:
-    return number_text(k) if not isinstance(k, tuple) else \
-        f"({k[0]}, {number_text(k[1]) if not isinstance(k[1], int) else k[1]})"
 
 
 def is_odd(ring: Ring) -> bool:

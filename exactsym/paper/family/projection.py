@@ -19,6 +19,7 @@ from .. import polygon as P
 from ...exact import FieldElement, fmpq, rational_sqrt
 from ..circle_polygon import CirclePolygon, polygon_from_directions
 from ..inverses import inverse_length
+from ..ratio_keys import big_field, rational_ratio
 from .concentric import Ring, mirror_lines, polygon_name
 
 
@@ -32,6 +33,9 @@ class Projection:
 
 def scale_to(r2_to, r2_from):
     """sqrt(r2_to / r2_from) when rational, else None."""
+    if big_field(r2_to, r2_from):        # degree thousands: rational or not, no inverse
+        ratio = rational_ratio(r2_to, r2_from)
+        return None if ratio is None else rational_sqrt(ratio)
     ratio = r2_to * inverse_length(r2_from)          # cached: no inverse per projection
     if isinstance(ratio, FieldElement):
         if not ratio.is_rational():

@@ -60,7 +60,15 @@ def definition_mirror_keys(polygon: CirclePolygon) -> list:
     Candidates: the reflection mapping vertex 0 to vertex j, for each j.  Polar:
     t -> t_0 + t_j - t.  Cartesian, as complex numbers: w -> z_0 z_j conj(w) (up to a
     positive factor, which directions ignore), whose axis is the line whose doubled
-    angle is the direction of z_0 z_j."""
+    angle is the direction of z_0 z_j.  Computed once per polygon (kept in its
+    ``__dict__``: the report and Elect_Leader_Sym, in both orientations, ask again)."""
+    known = polygon.__dict__.get("_definition_mirror_keys")
+    if known is None:
+        known = polygon.__dict__["_definition_mirror_keys"] = _definition_mirror_keys(polygon)
+    return list(known)
+
+
+def _definition_mirror_keys(polygon: CirclePolygon) -> list:
     n = polygon.n
     if n == 0:
         return []

@@ -1,0 +1,215 @@
+"""Keys of quotients num/den held without dividing, for fields of large degree (issue 9).
+
+In a cyclotomic field of degree thousands an inverse costs 0.1 s to seconds (an xgcd
+modulo a prime and a Newton lift, :mod:`exactsym.exact.inverse`), a product milliseconds;
+with coefficients of thousands of digits an inverse costs as much at degree 4.
+The paper layer's ray keys (x^2 / |d|^2) and gap keys (d^2 / (|a|^2 |b|^2)) are only
+compared for equality (sets, dicts, small integer ids), so there they are held as
+:class:`RatioKey`: equal iff num den' == num' den, exactly; hashed by the cell
+floor(2^24 num / den), a function of the value alone, read from Arb balls; a ball only
+filters: when it straddles a cell boundary j, the exact sign of 2^24 num - j den settles
+the cell.  The value is never computed, and no decision reads a ball.
+"""
+
+from __future__ import annotations
+
+from flint import arb, ctx, fmpq, fmpq_poly
+
+from ..exact import FieldElement, exact_key, sign
+from ..exact.field import PolyElement
+from .filtered import ball
+
+#: polynomial fields from this degree get ratio keys: all of them, since an inverse is
+#: slow at degree thousands and also at degree 4 with coefficients of thousands of digits
+#: (a pentagon moved by 10^-1000: fmpq_poly.xgcd, 0.6 s per squared length)
+RATIO_KEY_DEGREE = 2
+_CELLS = 1 << 24           # hash cells: floor(2^24 * value)
+_PREC = 64
+
+
+def big_field(*numbers) -> bool:
+    """Whether one of ``numbers`` lies in a polynomial field of degree >= RATIO_KEY_DEGREE."""
+    return any(isinstance(x, PolyElement) and x.field.degree >= RATIO_KEY_DEGREE
+               for x in numbers)
+
+
+def ball_at(x, prec: int) -> arb:
+    """An Arb ball of the exact number ``x`` at about ``prec`` bits (the 64-bit balls of
+    :func:`exactsym.paper.filtered.ball` are cached per object)."""
+    if prec == _PREC:
+        return ball(x)
+    if isinstance(x, FieldElement):
+        return x.enclosure(prec)
+    with ctx.workprec(prec):
+        return arb(x)
+
+
+class RatioKey:
+    """The exact number num/den (den > 0) as a hashable key, without a division.
+
+    ``parts()`` returns ``(num, den)``, exact (called at most once, when an equality or
+    a cell boundary needs them); ``value_ball(prec)`` an Arb ball of num/den from balls
+    at ``prec`` bits.  Equal iff the values are equal (exact products); the hash is the
+    value's cell (module docstring).  Never equal to another kind of key: a caller that
+    mixes kinds must give every value of one kind (:func:`ray_ratio_key` gives rational
+    values their ``exact_key``, decided exactly).  ``home``: the number field the value
+    would lie in (keys of two fields are unequal, as their exact keys were: those
+    name the field object)."""
+
+    __slots__ = ("_parts", "_exact", "_hash", "home")
+
+    def __init__(self, parts, value_ball, home):
+        self._parts, self._exact, self.home = parts, None, home
+        self._hash = hash(("ratio", self._cell(value_ball)))
+
+    def exact(self) -> tuple:
+        if self._exact is None:
+            self._exact = self._parts()
+            self._parts = None
+        return self._exact
+
+    def _cell(self, value_ball) -> int:
+        """floor(2^24 num / den): balls at rising precision (a tiny vector needs more
+        bits) until the ball is narrow, then the cell, or at a boundary an exact sign."""
+        prec = _PREC
+        while True:
+            scaled = value_ball(prec) * _CELLS
+            if scaled.is_finite() and scaled.rad() < 0.25:
+                break
+            prec *= 4
+        cell = scaled.floor().unique_fmpz()
+        if cell is not None:
+            return int(cell)
+        j = int(scaled.upper().floor().unique_fmpz())     # the one boundary in the ball
+        num, den = self.exact()
+        return j if sign(_CELLS * num - j * den) >= 0 else j - 1
+
+    def __hash__(self) -> int:
+        return self._hash
+
+    def __eq__(self, other) -> bool:
+        if self is other:
+            return True
+        if not isinstance(other, RatioKey):
+            return False
+        if self._hash != other._hash or self.home is not other.home:
+            return False    # the cells differ; or two fields, whose exact_keys differed too
+        (a, b), (c, d) = self.exact(), other.exact()
+        return a * d == c * b
+
+    def __ne__(self, other) -> bool:
+        return not self.__eq__(other)
+
+    def __repr__(self) -> str:
+        num, den = self.exact()
+        return f"RatioKey({num!r} / {den!r})"
+
+
+def _poly(x) -> fmpq_poly:
+    return x.poly if isinstance(x, PolyElement) else fmpq_poly([x])
+
+
+def rational_ratio(num, den):
+    """``num / den`` as an ``fmpq`` when it is rational, else None, without a division
+    in the field: num must be a rational multiple q of den, read off one coefficient
+    and checked on all (``den`` a non-zero element of a polynomial field, or rational)."""
+    n, d = _poly(num), _poly(den)
+    if n.is_zero():
+        return fmpq(0)
+    coeffs = d.coeffs()
+    i = next(k for k, c in enumerate(coeffs) if c != 0)
+    top = n.coeffs()
+    q = (top[i] if i < len(top) else fmpq(0)) / coeffs[i]
+    return q if n == q * d else None
+
+
+def ray_ratio_key(x, y):
+    """``exact_key(x^2 / (x^2 + y^2))`` for a non-zero vector with a coordinate in a big
+    field (:func:`big_field`), or None (other vectors: the caller divides).  A rational
+    value (decided exactly, :func:`rational_ratio`) keys as ``exact_key`` did; an
+    irrational one as a :class:`RatioKey`."""
+    if not big_field(x, y):
+        return None
+    xx = x * x
+    length = xx + y * y
+    q = rational_ratio(xx, length)
+    if q is not None:
+        return exact_key(q)
+
+    def value_ball(prec):
+        bx, by = ball_at(x, prec), ball_at(y, prec)
+        sq = bx * bx
+        return sq / (sq + by * by)
+    return RatioKey(lambda: (xx, length), value_ball, length.field)
+
+
+def _largest_field(numbers):
+    """The field a product of ``numbers`` lands in: the largest of their polynomial fields
+    (the smaller ones embed into it, :func:`exactsym.exact.field._common`)."""
+    best = None
+    for x in numbers:
+        if isinstance(x, PolyElement) and (best is None or x.field.degree > best.degree):
+            best = x.field
+    return best
+
+
+class AngleKey(RatioKey):
+    """The counter-clockwise angle from a to b as the value of :func:`gap_ratio_key`
+    (-sign(d) c d^2 / (|a|^2 |b|^2), hashed by its cell like a :class:`RatioKey`), but
+    compared as angles: equal iff (a.b, a x b) and (a'.b', a' x b') are positively
+    proportional (equal signs of the dot products, the cross products' signs being equal
+    in the key's class, and d e' == e d'): products of degree 4 in the coordinates, not
+    the degree 8 of cross-multiplied quotients (in a tower of radicals a product costs
+    more the larger its operands)."""
+
+    __slots__ = ("a", "b", "dot_sign", "_de")
+
+    def __init__(self, a, b, dot_sign: int, parts, value_ball, home):
+        self.a, self.b, self.dot_sign, self._de = a, b, dot_sign, None
+        super().__init__(parts, value_ball, home)
+
+    def dot_cross(self) -> tuple:
+        if self._de is None:
+            a, b = self.a, self.b
+            self._de = (a[0] * b[0] + a[1] * b[1], a[0] * b[1] - a[1] * b[0])
+        return self._de
+
+    def __eq__(self, other) -> bool:
+        if self is other:
+            return True
+        if not isinstance(other, AngleKey):
+            return False
+        if self._hash != other._hash or self.home is not other.home \
+                or self.dot_sign != other.dot_sign:
+            return False
+        (d, e), (d2, e2) = self.dot_cross(), other.dot_cross()
+        return d * e2 == e * d2
+
+    def __hash__(self) -> int:
+        return self._hash
+
+
+def gap_ratio_key(a, b, c: int, dot_sign: int):
+    """The value of :func:`exactsym.paper.keys.ccw_gap_key` for vectors a, b with
+    cross-product sign ``c`` (non-zero) and dot-product sign ``dot_sign``, as ``(class,
+    key)`` with key an :class:`AngleKey`: equal iff the gap keys are equal.  For equality
+    only (small integer ids): every gap of a polygon gets this kind of key.  No exact
+    product until two gaps share a hash cell."""
+    s = -dot_sign * c
+
+    def parts():
+        d = a[0] * b[0] + a[1] * b[1]
+        la = a[0] * a[0] + a[1] * a[1]
+        lb = b[0] * b[0] + b[1] * b[1]
+        return s * d * d, la * lb
+
+    def value_ball(prec):
+        ax, ay, bx, by = (ball_at(v, prec) for v in (a[0], a[1], b[0], b[1]))
+        dot = ax * bx + ay * by
+        return s * dot * dot / ((ax * ax + ay * ay) * (bx * bx + by * by))
+    return (0 if c > 0 else 2, AngleKey(a, b, dot_sign, parts, value_ball,
+                                        _largest_field(a + b)))
+
+
+__all__ = ["RATIO_KEY_DEGREE", "AngleKey", "RatioKey", "big_field", "gap_ratio_key", "rational_ratio",
+           "ray_ratio_key"]

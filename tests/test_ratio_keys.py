@@ -1,0 +1,162 @@
+"""Division-free keys of the paper layer (exactsym/paper/ratio_keys.py) against the divided
+keys they replace, in Q(zeta_136) (degree 64), and the
+Newton-lifted inverse against the xgcd inverse at degree hundreds."""
+
+from __future__ import annotations
+
+from hypothesis import given, settings, strategies as st
+
+from flint import fmpq, fmpq_poly, fmpz_poly
+
+from exactsym.exact import exact_key, sign
+from exactsym.exact.cyclotomic import cos_turn, cyclotomic_field, sin_turn
+from exactsym.exact.inverse import inverse_mod
+from exactsym.paper.circle_polygon import CirclePolygon
+from exactsym.paper.keys import (LineKey, ccw_gap_key, gap_ids, hashable_key, line_key,
+                                 ray_key)
+from exactsym.paper.ratio_keys import (AngleKey, RATIO_KEY_DEGREE, RatioKey, rational_ratio,
+                                       ray_ratio_key)
+
+FIELD = cyclotomic_field(136)
+assert FIELD.degree >= RATIO_KEY_DEGREE
+
+
+def _real(coeffs):
+    """sum c_k cos(2 pi k / 136): a real element of the field."""
+    out = FIELD(0)
+    for k, c in enumerate(coeffs):
+        if c:
+            out = out + c * cos_turn(FIELD, fmpq(k, 136))
+    return out
+
+
+def _old_ray_key(d):
+    x, y = d
+    xx = x * x
+    return (sign(x), sign(y), exact_key(xx / (xx + y * y)))
+
+
+elements = st.lists(st.integers(-3, 3), min_size=1, max_size=6).map(_real)
+turns = st.integers(0, 135).map(lambda k: fmpq(k, 136))
+scales = st.lists(st.integers(-2, 2), min_size=1, max_size=3).map(
+    lambda cs: 1 + _real(cs) * _real(cs))           # positive: 1 + c^2
+
+
+def _unit(t):
+    return (cos_turn(FIELD, t), sin_turn(FIELD, t))
+
+
+def _vectors(draw_turns, draw_scales, extra):
+    """Vectors on a few rays (exact cos/sin of turns, 45 degree rays among them: rational
+    x^2 / |d|^2), each ray several times at different positive scales."""
+    out = []
+    for t in draw_turns:
+        u = _unit(t)
+        for s in draw_scales:
+            out.append((s * u[0], s * u[1]))
+    out += [(e, e) for e in extra if e != 0] + [(e, -2 * e) for e in extra if e != 0]
+    return out
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.lists(turns, min_size=1, max_size=4), st.lists(scales, min_size=1, max_size=3),
+       st.lists(elements, max_size=2))
+def test_ray_keys_equal_iff_the_divided_keys_are_equal(ts, ss, extra):
+    vectors = _vectors(ts + [fmpq(1, 8), fmpq(3, 8)], ss, extra)
+    new = [ray_key(False, v) for v in vectors]
+    old = [_old_ray_key(v) for v in vectors]
+    for a in range(len(vectors)):
+        # a rational value keeps its exact key, an irrational one is a RatioKey
+        assert (new[a] == old[a]) == (not isinstance(new[a][2], RatioKey))
+        for b in range(len(vectors)):
+            assert (new[a] == new[b]) == (old[a] == old[b])
+            if new[a] == new[b]:
+                assert hash(new[a]) == hash(new[b])
+    assert len(set(new)) == len(set(old))
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.lists(turns, min_size=1, max_size=4), st.lists(scales, min_size=1, max_size=2))
+def test_line_keys_undivided_agree_with_their_values(ts, ss):
+    """Line keys made from vectors (no division) equal those made from their divided
+    values (LineKey.of), and the cached value of a line is its divided value."""
+    vectors = _vectors(ts + [fmpq(1, 17)], ss, [])
+    for v in vectors:
+        key = line_key(False, v)
+        x, y = v
+        doubled = (x * x - y * y, 2 * x * y)
+        value = (sign(doubled[0]), doubled[1] / doubled[0]) if sign(doubled[0]) \
+            else (0, sign(doubled[1]))
+        assert key.value == value
+        assert LineKey.of(value) == key and hash(LineKey.of(value)) == hash(key)
+        assert key.text == LineKey.of(value).text
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.lists(turns, min_size=3, max_size=7, unique=True), st.lists(scales, min_size=1,
+                                                                       max_size=3))
+def test_gap_ids_equal_the_divided_gap_keys(ts, ss):
+    """Polygons whose vertices lie at different distances (the G_ij of the family layer):
+    the AngleKey ids equal the ids of the divided gap keys; right angles and 45 degree
+    gaps put the value on a hash-cell boundary (the exact sign decides the cell)."""
+    ts = sorted(set(ts) | {fmpq(0), fmpq(1, 8), fmpq(1, 4), fmpq(1, 2)})
+    dirs = []
+    for i, t in enumerate(ts):
+        s = ss[i % len(ss)]
+        u = _unit(t)
+        dirs.append((s * u[0], s * u[1]))
+    poly = CirclePolygon(tuple(range(len(dirs))), tuple(dirs), False)
+    n = len(dirs)
+    ids: dict = {}
+    old = [ids.setdefault(hashable_key(ccw_gap_key(False, dirs[i], dirs[(i + 1) % n])),
+                          len(ids)) for i in range(n)]
+    assert gap_ids(poly) == old
+
+
+def test_angle_keys_compare_angles():
+    a, b = _unit(fmpq(1, 136)), _unit(fmpq(9, 136))
+    c, d = _unit(fmpq(50, 136)), _unit(fmpq(58, 136))
+    two = FIELD(2) + cos_turn(FIELD, fmpq(1, 136))
+    far = (two * d[0], two * d[1])
+    ids = gap_ids(CirclePolygon((0, 1, 2, 3), (a, b, c, far), False))
+    assert ids[0] == ids[2] and len(set(ids)) == 3   # a->b and c->far: 8/136 turn each
+    key = ray_ratio_key(*a)
+    assert isinstance(key, RatioKey) and not isinstance(key, AngleKey)
+
+
+@settings(max_examples=20, deadline=None)
+@given(elements, elements, st.integers(-5, 5))
+def test_rational_ratio_is_the_quotient_when_rational(x, y, q):
+    if y == 0:
+        return
+    assert rational_ratio(q * y, y) == fmpq(q)
+    quotient = x / y
+    expected = quotient.rational() if quotient.is_rational() else None
+    assert rational_ratio(x, y) == expected
+
+
+def test_ray_ratio_key_is_only_for_polynomial_fields():
+    from exactsym.exact.multiquadratic import MQ
+    small = cyclotomic_field(24)
+    assert isinstance(ray_ratio_key(cos_turn(small, fmpq(1, 24)), sin_turn(small, fmpq(1, 24))),
+                      RatioKey)
+    assert ray_ratio_key(fmpq(1), fmpq(2)) is None
+    root = MQ({2: fmpq(1)})
+    assert ray_ratio_key(root, fmpq(1)) is None
+
+
+def test_newton_inverse_equals_xgcd_inverse_at_degree_hundreds():
+    """Q(zeta_641) (degree 640): the lifted inverse (from a 31-bit prime) equals the xgcd
+    inverse over Q, times the input it is one, and the cache answers per minimal
+    polynomial (an element of two fields has two inverses)."""
+    phi = fmpq_poly(fmpz_poly.cyclotomic(641))
+    a = fmpq_poly([(k * 7919) % 11 - 5 for k in range(40)] + [0] * 300 + [3, -1]) / 7
+    u = inverse_mod(a, phi)
+    assert (a * u) % phi == 1
+    g, s, _ = a.xgcd(phi)
+    assert u == s / g.coeffs()[0]
+    assert inverse_mod(a, phi) == u
+    other = fmpq_poly(fmpz_poly.cyclotomic(643))
+    v = inverse_mod(a, other)
+    assert (a * v) % other == 1 and v != u
+
