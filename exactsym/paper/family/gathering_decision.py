@@ -201,8 +201,9 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
                            ma_outcome, None, polar)
         # this round's moves against the SEC they started from (a later round is not
         # blamed again for an SEC an earlier round changed)
-        if not _same_sec(cur_rings, new_rings,
-                         new.system if new.system is not current.system else None):
+        # (polar levels: turns about C, no Cartesian system is built for the comparison)
+        grown = None if cur_rings.polar or new.system is current.system else new.system
+        if not _same_sec(cur_rings, new_rings, grown):
             trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
                         "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
                         "not)" + _sense_note(current, new, result, cur_rings), holds=False,
