@@ -81,6 +81,25 @@ def inputs() -> dict[str, str]:
     out["rhombus sqrt(9+4sqrt2)"] = _polar([("sqrt(9+4*sqrt(2))", "0"), ("sqrt(9+4*sqrt(2))", "1/2"),
                                             ("3/2", "1/4"), ("3/2", "3/4")])
     out.update(nested_inputs())
+    out.update(mixed_inputs())
+    return out
+
+
+def mixed_inputs() -> dict[str, str]:
+    """Nested radicals with cos/sin (a tower over Q(zeta_M)): issue 9's five points, and
+    100 points: 20 orbits of C5 on circles of depth-3 radii, and the same with one moved."""
+    out = {"nested+cos(2pi/13), 5 pts": _cartesian([
+        ("sqrt(1+sqrt(2))", "0"), ("cos(2*pi/13)", "sin(2*pi/13)"), ("1", "1"), ("0", "-1"),
+        ("-1/2", "1/3")])}
+    draw = random.Random(5)
+    orbit = []
+    for _ in range(20):
+        r = f"{draw.randint(1, 9)}*sqrt(2+sqrt(3+sqrt(5)))/{draw.randint(1, 9)}"
+        a = draw.randrange(1, 24)
+        orbit += [(f"{r}*cos(2*pi*({24 * j + a})/120)", f"{r}*sin(2*pi*({24 * j + a})/120)")
+                  for j in range(5)]
+    out["nested3+cos, 100 pts C5"] = _cartesian(orbit)
+    out["nested3+cos, 100 pts asym"] = _cartesian(orbit[:-1] + [("1/7", "2/7")])
     return out
 
 
