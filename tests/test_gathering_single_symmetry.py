@@ -180,7 +180,7 @@ def _symmetric_piece(data, kind):
     mapped = (g.Segment(fr.to_local(piece.start), fr.to_local(piece.end))
               if isinstance(piece, g.Segment) else
               g.Arc(fr.to_local(piece.centre), fr.to_local(piece.start),
-                    fr.to_local(piece.end), piece.sense))
+                    fr.to_local(piece.end), -piece.sense if fr.reflect else piece.sense))
 
     def symmetric_at(t):          # before the congruence: closed under the image map
         q = piece.at(Q(t))
