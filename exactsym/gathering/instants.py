@@ -11,7 +11,9 @@ Families (each root carries a tag naming the family and the robots):
 * ``ray``      -- the mover crosses the line through C and another robot (angular
   orders about C, the levels' polygons and their mirror lines change there);
 * ``distance`` -- its distance to C equals another robot's (the levels change; a
-  rotation or a reflection about C can swap the mover with that robot there);
+  rotation or a reflection about C can swap the mover with that robot there, so every
+  such root is tagged ``symmetry`` too, as for a joint step); where that tie vanishes
+  all along (an arc about C at the robot's distance), :func:`on_circle_candidates`;
 * ``pattern``  -- the mover is on the circle of a layer of the gathering pattern about C
   (``|p - C| = 2L``) or touches another robot (the recognised pattern P, hence R, can
   change there);

@@ -13,8 +13,9 @@ Exactness of the "at any instant" checks:
   and constant along an arc about C (the only arcs FormGPattern makes), and the other
   robots are still;
 * I6 and I9 are checked at the end of every piece and at every adversary stop point
-  (rational instants); I3 and I6 (and I9 at SEC and symmetry instants) also at the critical
-  instants inside each piece (:mod:`.instants`): where the mover crosses the line
+  (rational instants); I3 and I6 (and I9 at SEC and symmetry instants, the distance ties
+  among them: a fresh Look in the reflected frame plans what one in the world's frame
+  plans) also at the critical instants inside each piece (:mod:`.instants`): where the mover crosses the line
   through C and another robot, where two distances to C become equal, where the SEC's
   support changes, where a symmetry can appear -- roots of polynomials in the path
   parameter, isolated exactly (:mod:`.polyroots`).  A Look at each instant the kernel
