@@ -11,7 +11,9 @@ Families (each root carries a tag naming the family and the robots):
 * ``ray``      -- the mover crosses the line through C and another robot (angular
   orders about C, the levels' polygons and their mirror lines change there);
 * ``distance`` -- its distance to C equals another robot's (the levels change; a
-  rotation or a reflection about C can swap the mover with that robot there);
+  rotation or a reflection about C can swap the mover with that robot there, so every
+  such root is tagged ``symmetry`` too, as for a joint step); where that tie vanishes
+  all along (an arc about C at the robot's distance), :func:`on_circle_candidates`;
 * ``pattern``  -- the mover is on the circle of a layer of the gathering pattern about C
   (``|p - C| = 2L``) or touches another robot (the recognised pattern P, hence R, can
   change there);
@@ -336,21 +338,85 @@ def _reach(piece, x) -> tuple:
     return lo * (1 - 1e-6) - 1e-6, hi * (1 + 1e-6) + 1e-6
 
 
-def _about(piece, m: Motion, centre, static: dict, name: str) -> list:
-    """The ``ray`` and ``distance`` polynomials about ``centre``."""
-    out = []
+def _about(piece, m: Motion, centre, static: dict, name: str, mover: int = -1,
+           groups=()) -> tuple:
+    """``(polys, params)``: the ``ray`` and ``distance`` polynomials about ``centre``;
+    where a tie vanishes identically (the mover on an arc about ``centre`` at robot k's
+    distance), for each of ``groups`` (``[(robots standing still, name)]``) that holds
+    k, the ``symmetry`` candidates of :func:`on_circle_candidates` instead."""
+    polys, params = [], []
     lo_c, hi_c = _reach(piece, centre)
     for k, q in static.items():
         w = g.sub(q, centre)
         if w[0].is_zero() and w[1].is_zero():
             continue
-        out.append((cross_poly(m, centre, w), ("ray", f"on the line through {name} and "
-                                                      f"robot {k}")))
+        polys.append((cross_poly(m, centre, w), ("ray", f"on the line through {name} and "
+                                                        f"robot {k}")))
         dq = float(g.dot(w, w)) ** 0.5
         if lo_c <= dq <= hi_c:
-            out.append((dist2_poly(m, centre, g.dot(w, w)),
-                        ("distance", f"as far from {name} as robot {k}")))
-    return out
+            tie = dist2_poly(m, centre, g.dot(w, w))
+            if tie:
+                polys.append((tie, ("distance", f"as far from {name} as robot {k}")))
+                continue
+            for members, who in groups:
+                if k in members:
+                    more, at = on_circle_candidates(piece, m, mover, members, k, centre,
+                                                    f"{who}, on robot {k}'s circle about "
+                                                    f"{name}")
+                    polys += [(p, ("symmetry", w)) for p, w in more]
+                    params += [(f, ("symmetry", w)) for f, w in at]
+    return polys, params
+
+
+def on_circle_candidates(piece, m: Motion, mover: int, still: dict, q: int, centre,
+                         what: str) -> tuple:
+    """``([(poly, description)], [(f, description)])``: where a symmetry of X (the mover
+    and the robots ``still``, ``{index: point}``, q among them) can map the mover p to
+    q while p moves on q's circle about ``centre`` (the tie about it vanishes all along:
+    an epsilon move along the SEC's circle is one).  Necessary conditions:
+
+    * a symmetry s of a finite set is affine and permutes it, so it fixes X's centroid
+      z, which moves with p: if s(p) = q then ``|p - z| = |s(p) - s(z)| = |q - z|``
+      (the polynomial; degree 2 on a segment, 6 on an arc,
+      :func:`.joint_symmetry.centroid_tie` with one mover);
+    * a reflection is an involution: s(p) = q gives s(q) = p, so it maps the rest
+      (X without p and q) onto itself: p is the mirror image of q in a mirror line of
+      the rest (through the rest's centroid, or through ``centre`` when s fixes it);
+    * a rotation about ``centre`` (a fixed point of every symmetry when ``centre`` is
+      the SEC's centre and the mover is no support) with s(p) = q: either s(q) = p (a
+      half turn, p = 2 centre - q) or s(q) = r, a robot of the rest on q's circle, and
+      s is the rotation taking q to r, so p = s^-1(q);
+
+    the last two are exact points (their parameters on the piece).  The centroid tie
+    alone can vanish all along too (when the rest's centroid is ``centre``), the exact
+    points cannot."""
+    from .joint_relations import still as still_motion
+    from .joint_symmetry import centroid_tie
+    motions = {k: still_motion(p) for k, p in still.items()}
+    motions[mover] = m
+    tie = centroid_tie(motions, sorted(motions), {mover}, mover, q)
+    polys = [(tie, f"symmetry: as far from the centroid of {what}")] if len(tie) > 1 else []
+    qp = still[q]
+    rest = [p for k, p in still.items() if k != q]
+    cands = [(g.sub(g.scale(centre, 2), qp), "a half turn about the centre")]
+    for z, zname in ((_centroid(rest), "the rest's centroid"), (centre, "the centre")):
+        if rest:
+            cands += [(_reflect(qp, z, u), f"the mirror image in a mirror line through "
+                                           f"{zname}") for u in mirror_lines(rest, z)]
+    w = g.sub(qp, centre)
+    r2 = g.dot(w, w)
+    for r in rest:
+        v = g.sub(r, centre)
+        if g.dot(v, v) == r2:
+            c, s = g.dot(w, v) / r2, g.cross(w, v) / r2
+            cands.append((g.add(centre, g.rotate(w, c, -s)), "a rotation about the "
+                          "centre"))
+    params = []
+    for p_star, how in cands:
+        f = point_param(piece, p_star)
+        if f is not None:
+            params.append((f, f"symmetry: robot {q}'s image ({how}; {what})"))
+    return polys, params
 
 
 def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> list:
@@ -360,8 +426,16 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
     static = {k: r.pos for k, r in enumerate(world.robots) if k != mover}
     sec = g.smallest_enclosing_circle(list(static.values())) if len(static) >= 2 else None
     polys: list = []
+    rset = world.robots[mover].r_set
+    sub_r = {k: p for k, p in static.items() if k in rset}
+    proper_r = bool(rset) and len(sub_r) < len(static)
+    # the symmetries the algorithm reads: of all the robots, and of R (the paper layer
+    # decides on R) when the pattern holds robots or A1 = sec-r
+    groups = [(static, "all robots")] + ([(sub_r, "R")] if sec_r or proper_r else [])
+    about_params: list = []
     if centre is not None:
-        polys += _about(piece, m, centre, static, "C")
+        more, at = _about(piece, m, centre, static, "C", mover, groups)
+        polys, about_params = polys + more, about_params + at
         lo_c, hi_c = _reach(piece, centre)
         # the pattern: the mover on a layer's circle (|p - C| = 2L), or touching a robot;
         # layer L holds a robot of P only when the inner layers are full: 1 + 3L(L - 1)
@@ -374,15 +448,15 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
                               ("pattern", f"on the circle of layer {L}")))
     # the paper layer orders R about R's own SEC centre: when the pattern holds robots,
     # R's SEC (its support changes) and the lines and ties about its centre too
-    rset = world.robots[mover].r_set
-    sub_r = {k: p for k, p in static.items() if k in rset}
-    if sec_r or (rset and len(sub_r) < len(static)):
+    if sec_r or proper_r:
         for poly, what in _sec_family(m, sub_r, "SEC of R"):
             polys.append((poly, ("sec", what)))
         if len(sub_r) >= 2:
             c_r = g.smallest_enclosing_circle(list(sub_r.values()))[0]
             if centre is None or c_r != centre:
-                polys += _about(piece, m, c_r, sub_r, "the centre of R's SEC")
+                more, at = _about(piece, m, c_r, sub_r, "the centre of R's SEC", mover,
+                                  [(sub_r, "R")])
+                polys, about_params = polys + more, about_params + at
     for k, q in static.items():
         if _reach(piece, q)[0] <= 2:
             polys.append((dist2_poly(m, q, MQ.rational(4)),
@@ -394,14 +468,18 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
     polys += [(p, ("symmetry", w)) for p, w in sym_polys]
     # the paper decides on R (the robots outside the pattern) about C: mirror lines of
     # the rest of R through C too, when the pattern holds robots
-    rset = world.robots[mover].r_set
-    rest_r = [p for k, p in static.items() if k in rset]
-    if centre is not None and rset and len(rest_r) < len(static):
-        for u in mirror_lines(rest_r, centre):
+    if centre is not None and proper_r:
+        for u in mirror_lines(list(sub_r.values()), centre):
             polys.append((cross_poly(m, centre, u), ("symmetry", "a mirror line of the rest "
                                                      "of R through C")))
     from .polyroots import _bracket
-    return roots_of(polys, [_bracket((), f, ("symmetry", what)) for f, what in sym_params])
+    roots = roots_of(polys, [_bracket((), f, ("symmetry", what)) for f, what in sym_params]
+                     + [_bracket((), f, tag) for f, tag in about_params])
+    for r in roots:
+        # a rotation or a reflection about that centre can swap the mover with a robot as
+        # far from it: the ties are symmetry candidates too (as for a joint step)
+        r.tags += [("symmetry", w) for f, w in list(r.tags) if f == "distance"]
+    return roots
 
 
 @dataclass(frozen=True)

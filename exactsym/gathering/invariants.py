@@ -13,8 +13,9 @@ Exactness of the "at any instant" checks:
   and constant along an arc about C (the only arcs FormGPattern makes), and the other
   robots are still;
 * I6 and I9 are checked at the end of every piece and at every adversary stop point
-  (rational instants); I3 and I6 (and I9 at SEC and symmetry instants) also at the critical
-  instants inside each piece (:mod:`.instants`): where the mover crosses the line
+  (rational instants); I3 and I6 (and I9 at SEC and symmetry instants, the distance ties
+  among them: a fresh Look in the reflected frame plans what one in the world's frame
+  plans) also at the critical instants inside each piece (:mod:`.instants`): where the mover crosses the line
   through C and another robot, where two distances to C become equal, where the SEC's
   support changes, where a symmetry can appear -- roots of polynomials in the path
   parameter, isolated exactly (:mod:`.polyroots`).  A Look at each instant the kernel
@@ -188,13 +189,16 @@ class Checker:
             self._nearest(world, i, t, strict=True)
         if self._on("I6") and rob.centre is not None:
             self._same_centre(world, i, t, "")
-        i3 = rob.target is not None and self._on("I3")   # no target: a made-up move
-        if i3 or ("I6" in self.enabled and rob.centre is not None):
+        looked = rob.target is not None                   # no target: a made-up move
+        i3 = looked and self._on("I3")
+        i9 = looked and "I9" in self.enabled
+        if i3 or i9 or ("I6" in self.enabled and rob.centre is not None):
             # the critical instants inside the piece (each exactly when the kernel holds
             # it, and one Look in each stretch between them), then (unless it was the last
             # piece) its end: the fresh Look must name the same mover and target (I3), C
-            # must not have moved (I6), and at SEC and symmetry instants the reflected
-            # frame must agree (I9)  (:mod:`.instants`)
+            # must not have moved (I6), and at SEC and symmetry instants (the distance
+            # ties among them) the reflected frame must plan what the world's frame
+            # plans (I9)  (:mod:`.instants`)
             end = rob.pos
             try:
                 points, sided = look_points(piece, world, i, rob.centre,
@@ -210,9 +214,9 @@ class Checker:
                         self._same_centre(world, i, t, where)
                     if i3:
                         self._fresh_look(world, i, t, where)
-                    if i3 and "I9" in self.enabled and lp.families & {"sec", "symmetry"}:
+                    if i9 and lp.families & {"sec", "symmetry"}:
                         self.counts["I9"] += 1
-                        self._mirror_look(world, i, t, where)
+                        self._mirror_look(world, [i], t, where)
             finally:
                 rob.pos = end
             if i3 and rob.path:
@@ -227,22 +231,6 @@ class Checker:
                             f"{g.fmt_point(d.centre)} while robot {i} moves ({rob.role} "
                             f"move), robot {i} at {g.fmt_point(rob.pos)}{where}",
                             label=I6_LABEL_OF_ROLE.get(rob.role, I6_OTHER_LABEL))
-
-    def _mirror_look(self, world, i, t, where: str):
-        """I9 at a critical instant: a fresh Look in the reflected frame plans the mover's
-        own move too."""
-        from .world import MIRROR
-        rob = world.robots[i]
-        d, paths = world.snapshot_decision(MIRROR)
-        if d.status == "undecided":
-            self.undecided_fresh += 1
-            return
-        plan = _plan(paths, d)
-        if not _same_plan(plan, {i: (rob.role, rob.target)}):
-            raise Violation("I9", t, sorted(set(plan) | {i}),
-                            f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
-                            f"Look in the reflected frame with robot {i} at "
-                            f"{g.fmt_point(rob.pos)}{where} plans {_plan_text(plan)}")
 
     def _fresh_look(self, world, i, t, where: str):
         from .world import IDENTITY
@@ -336,14 +324,15 @@ class Checker:
                         self._fresh_look(world, i, t, where)
                 if i9 and jp.families & {"sec", "symmetry"}:
                     self.counts["I9"] += 1
-                    self._joint_mirror_look(world, movers, t, where)
+                    self._mirror_look(world, movers, t, where)
         finally:
             for i in movers:
                 rob[i].pos = ends[i]
 
-    def _joint_mirror_look(self, world, movers, t, where: str):
-        """I9 inside a joint step: fresh Looks in the world's frame, the reflected one
-        (and the extra frames) plan the same movers and leader targets."""
+    def _mirror_look(self, world, movers, t, where: str):
+        """I9 inside a piece (one mover) or a joint step: fresh Looks in the world's
+        frame, the reflected one (and the extra frames) plan the same movers and leader
+        targets (the fresh plans are compared, not the pending moves: that is I3's)."""
         from .world import IDENTITY, MIRROR
         d0, paths0 = world.snapshot_decision(IDENTITY)
         if d0.status == "undecided":
@@ -359,11 +348,15 @@ class Checker:
             if not _same_plan(mine, theirs):
                 at = ", ".join(f"robot {i} at {g.fmt_point(world.robots[i].pos)}"
                                for i in movers)
+                moving = (f"robot {movers[0]} moves" if len(movers) == 1 else
+                          f"robots {list(movers)} move at once")
                 raise Violation("I9", t, sorted(set(mine) | set(theirs)),
-                                f"robots {list(movers)} move at once; with {at}{where} a "
+                                f"{moving}; with {at}{where} a "
                                 f"fresh Look in the world's frame plans {_plan_text(mine)}, "
                                 f"one in frame {other.as_list()} plans "
                                 f"{_plan_text(theirs)}")
+
+    _joint_mirror_look = _mirror_look          # the name before one mover shared it
 
     # -- after an arrival ----------------------------------------------------------------
     def after_arrival(self, world, i):
