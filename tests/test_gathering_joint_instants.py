@@ -232,7 +232,7 @@ def test_I9_fires_at_a_tie_inside_a_joint_step():
     w.checker = None
     w.advance_together(STEP)
     c = Checker(enabled=frozenset({"I9"}))
-    c._joint_mirror_look(w, [3, 4], 1, "")
+    c._mirror_look(w, [3, 4], 1, "")
 
 
 def test_I9_holds_over_a_joint_step_without_the_tie():

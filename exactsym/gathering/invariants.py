@@ -356,7 +356,6 @@ class Checker:
                                 f"one in frame {other.as_list()} plans "
                                 f"{_plan_text(theirs)}")
 
-    _joint_mirror_look = _mirror_look          # the name before one mover shared it
 
     # -- after an arrival ----------------------------------------------------------------
     def after_arrival(self, world, i):
