@@ -19,6 +19,7 @@ up to 3; asymmetric ones < 0.2 s; a refusal only beyond documented bounds, withi
 from __future__ import annotations
 
 import argparse
+from fractions import Fraction as fmpq_of
 import random
 import subprocess
 import sys
@@ -76,6 +77,11 @@ def inputs() -> dict[str, str]:
     out["polar 7@1 + 7@sqrt(2)"] = _polar([("1", f"2/45 + {k}/7") for k in range(7)] +
                                           [("sqrt(2)", f"1/9 + {k}/7") for k in range(7)])
     out["polar 5, turns 1/7..5/13"] = _polar([("1", t) for t in ("0", "1/7", "2/5", "3/11", "5/13")])
+    # three C7 orbits and two free points, turns of denominators 7 to 12, SEC off the
+    # origin: Q(zeta_27720), degree 5760, elements with large coefficients
+    off = [(str(r), f"{(fmpq_of(t) + fmpq_of(f'{j}/7')) % 1}") for r, t in
+           ((1, "1/11"), (2, "3/8"), (3, "5/12")) for j in range(7)]
+    out["polar C7 orbits off-centre"] = _polar(off + [("4", "1/9"), ("2", "7/10")])
     out["sqrt(2+sqrt(3)), 1 point"] = _cartesian([("sqrt(2+sqrt(3))", "0")])
     out["denestable sqrt(3+2sqrt2)"] = _cartesian([("sqrt(3+2*sqrt(2))", "0"), ("1", "0")])
     out["rhombus sqrt(9+4sqrt2)"] = _polar([("sqrt(9+4*sqrt(2))", "0"), ("sqrt(9+4*sqrt(2))", "1/2"),

@@ -160,3 +160,33 @@ def test_newton_inverse_equals_xgcd_inverse_at_degree_hundreds():
     v = inverse_mod(a, other)
     assert (a * v) % other == 1 and v != u
 
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(turns, min_size=2, max_size=6, unique=True), st.lists(scales, min_size=1,
+                                                                       max_size=2))
+def test_lines_are_shown_in_the_order_of_their_divided_values(ts, ss):
+    """``LineKey.display_key`` (no division) orders lines as their values (sign, slope)
+    do, with the vertical doubled direction as (0, 0)."""
+    lines = list({line_key(False, d) for d in _vectors(ts, ss, [])})
+
+    def divided(k):
+        s, v = k.value
+        return (s, v if s else 0)
+    assert sorted(lines, key=lambda k: k.display_key()) == sorted(lines, key=divided)
+
+
+def test_a_slope_in_a_large_field_is_written_undivided_and_reads_back():
+    from exactsym.expr import parse_expression
+    from exactsym.exact import evaluate, number_system
+    from exactsym.paper import keys
+    field = cyclotomic_field(1024)                      # degree 512
+    assert field.degree >= keys.QUOTIENT_DEGREE
+    u = (cos_turn(field, fmpq(3, 1024)), sin_turn(field, fmpq(3, 1024)))
+    key = line_key(False, (u[0] + 2, u[1]))
+    text = key.text
+    assert text.startswith("(1, (") and ")/(" in text
+    slope = text[len("(1, "):-1]
+    node = parse_expression(slope)
+    value = evaluate(node, number_system([node]))
+    assert value == key.value[1]                     # the same number as the division

@@ -15,7 +15,7 @@ from math import atan2, gcd, pi
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, number_text, sign
 from .circle_polygon import CirclePolygon
 from .filtered import compare_directions, cross_sign, dot_sign, gap_classes_on_circle
-from .ratio_keys import gap_ratio_key, ray_ratio_key
+from .ratio_keys import ball_at, gap_ratio_key, ray_ratio_key
 from .inverses import inverse_length, squared_length
 
 
@@ -131,11 +131,30 @@ class LineKey:
         process (equal lines of two fields are printed in each field's terms)."""
         return (tuple(_number_home(c) for c in self._vector), self)     # fields first
 
+    def display_key(self):
+        """The order in which lines are shown: by the value (a turn; or ``(sign, slope)``,
+        the vertical doubled direction as ``(0, 0)``), compared without dividing for a
+        Cartesian line (:class:`_Slope`): in a field of degree thousands one slope costs
+        seconds to divide."""
+        if self._vector is None:
+            return self.value
+        x, y = self._vector
+        s = sign(x)
+        return (s, _Slope(x, y)) if s else (0, 0)
+
     @property
     def text(self) -> str:
         """The value as :mod:`exactsym.paper.family` prints it (a turn, or ``(sign,
         slope)``), written once per line: in a field of degree thousands the text of a
-        slope is a megabyte and the claims print each line several times."""
+        slope is a megabyte and the claims print each line several times.  In a field of
+        degree >= :data:`QUOTIENT_DEGREE` the slope is written as the quotient ``(Y)/(X)``
+        of the doubled direction, undivided (exact; it reads back as the same number)."""
+        if self._text is None and self._value is None and self._vector is not None and \
+                _quotient_field(*self._vector):
+            x, y = self._vector
+            s = sign(x)
+            self._text = f"({s}, ({number_text(y)})/({number_text(x)}))" if s else \
+                f"(0, {sign(y)})"
         if self._text is None:
             value = self.value
             known = _LINE_VALUES.get(self._slot()) if self._vector is not None else None
@@ -161,6 +180,48 @@ class LineKey:
 
 
 _LINE_VALUES: dict = {}     # (LineKey, fields) -> [value, text or None]
+
+#: fields from this degree print a line's slope undivided (:attr:`LineKey.text`)
+QUOTIENT_DEGREE = 512
+
+
+def _quotient_field(*numbers) -> bool:
+    return any(getattr(getattr(x, "field", None), "degree", 0) >= QUOTIENT_DEGREE
+               for x in numbers)
+
+
+class _Slope:
+    """The slope y/x (x != 0) of a line's doubled direction, ordered without dividing:
+    Arb balls at rising precision (distinct lines have distinct slopes), and if they
+    never separate, the exact sign of y x' - y' x over sign(x x')."""
+
+    __slots__ = ("x", "y")
+
+    def __init__(self, x, y):
+        self.x, self.y = x, y
+
+    def _cmp(self, other) -> int:
+        prec = 64
+        for _ in range(4):
+            a = ball_at(self.y, prec) / ball_at(self.x, prec)
+            b = ball_at(other.y, prec) / ball_at(other.x, prec)
+            if a < b:
+                return -1
+            if a > b:
+                return 1
+            prec *= 4
+        return sign(self.y * other.x - other.y * self.x) * sign(self.x) * sign(other.x)
+
+    def __lt__(self, other) -> bool:
+        return self._cmp(other) < 0
+
+    def __gt__(self, other) -> bool:
+        return self._cmp(other) > 0
+
+    def __eq__(self, other) -> bool:
+        return isinstance(other, _Slope) and self._cmp(other) == 0
+
+    __hash__ = None
 
 
 def _number_home(x):

@@ -13,7 +13,7 @@ from math import gcd
 from typing import Iterable, Sequence
 
 from ..circle_polygon import CirclePolygon
-from .concentric import (ALL_LINES, Ring, common_lines, display_order, has_lines,
+from .concentric import (ALL_LINES, Ring, common_lines, first_shown, has_lines,
                          intersect_lines, is_odd, is_symmetric_family, is_symmetric_pair,
                          is_symmetric_polygon, lines_text, new_ring, polygon_name)
 from .find_asymmetry import find_asymmetry_pair
@@ -408,4 +408,4 @@ def _lines_not_in(lines, allowed):
     extra = [k for k in lines if k not in allowed]
     if not extra:
         return None
-    return min(extra, key=lambda k: display_order(k.value)).text
+    return first_shown(extra).text

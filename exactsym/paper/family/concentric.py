@@ -262,18 +262,18 @@ def lines_text(ring_or_lines, polar: bool) -> str:
         return "every line through C"
     if not lines:
         return "no line"
-    keys = sorted(lines, key=lambda k: display_order(k.value))
+    keys = sorted(lines, key=lambda k: k.display_key())
     shown = ", ".join(k.text for k in keys[:8])
     more = f", ... ({len(keys)} in all)" if len(keys) > 8 else ""
     unit = "turns" if polar else "doubled-angle rays"
     return f"{len(keys)} line{'s' if len(keys) != 1 else ''} ({unit} {shown}{more})"
 
 
-def display_order(v):
-    """The order in which lines are shown (a line key's value): exact, so a witness
-    picked as the first line in this order is the same in every run (the line sets are
+def first_shown(lines):
+    """The first of ``lines`` (line keys) in the order :func:`lines_text` shows them:
+    exact, so a witness picked this way is the same in every run (the line sets are
     frozensets, whose iteration order follows string hashes)."""
-    return v if not isinstance(v, tuple) else (v[0], v[1] if v[0] else 0)
+    return min(lines, key=lambda k: k.display_key())
 
 
 def is_odd(ring: Ring) -> bool:
