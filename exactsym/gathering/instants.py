@@ -162,16 +162,25 @@ def _reflect(x, z, u):
     return g.sub(g.add(z, g.scale(u, k)), v)
 
 
-def mirror_lines(pts, z) -> list:
-    """Directions ``u`` of the lines through ``z`` in which the point set ``pts`` is its
-    own mirror image (exact; every candidate line is tested on every point)."""
+def smallest_distance_group(pts, z) -> list:
+    """The robots of ``pts`` (other than ``z``) at the distance from ``z`` that the fewest
+    share: a symmetry about ``z`` maps the group onto itself, so its first robot's image
+    is one of them (empty when fewer than two robots are not at ``z``)."""
     others = [p for p in pts if p != z]
     if len(others) < 2:
         return []
     groups: dict = {}
     for p in others:
         groups.setdefault(g.dist2(p, z), []).append(p)
-    group = min(groups.values(), key=len)
+    return min(groups.values(), key=len)
+
+
+def mirror_lines(pts, z) -> list:
+    """Directions ``u`` of the lines through ``z`` in which the point set ``pts`` is its
+    own mirror image (exact; every candidate line is tested on every point)."""
+    group = smallest_distance_group(pts, z)
+    if not group:
+        return []
     y0 = group[0]
     have = set(pts)
     out: list = []

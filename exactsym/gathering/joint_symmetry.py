@@ -49,7 +49,7 @@ from __future__ import annotations
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
-from .instants import Motion, _centroid, dist2_poly, mirror_lines
+from .instants import Motion, _centroid, dist2_poly, mirror_lines, smallest_distance_group
 from .joint_relations import const, crossv, diff, dotv, rel, tie_poly
 from .polyroots import padd, pgcd, pmul, pscale, psub, roots_in_unit
 
@@ -108,13 +108,9 @@ def rotations_of(pts: list, z) -> list:
     """``[(cos, sin)]``: every rotation about ``z`` other than the identity that maps
     ``pts`` onto itself (exact: the candidates take one robot of the smallest distance
     group to each other one of that group; each is tested on every point)."""
-    others = [p for p in pts if p != z]
-    if len(others) < 2:
+    group = smallest_distance_group(pts, z)
+    if not group:
         return []
-    groups: dict = {}
-    for p in others:
-        groups.setdefault(g.dist2(p, z), []).append(p)
-    group = min(groups.values(), key=len)
     y0 = g.sub(group[0], z)
     r2 = g.dot(y0, y0)
     have = set(pts)
