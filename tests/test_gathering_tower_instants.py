@@ -201,3 +201,18 @@ def test_a_run_checks_its_nested_radical_instants_at_the_instant():
     run = run_case_file(case)
     assert not run.failures and run.result.outcome == "gathered"
     assert run.result.checks["nested"] == 4 and run.result.checks["sided"] == 0
+
+
+def test_numbers_of_two_towers_are_never_declared_different():
+    """sqrt(5+4*sqrt(2)) and 2*sqrt((5+4*sqrt(2))/4) are one number held in two towers
+    (their first radicands differ): their canonical forms differ, so no answer is given
+    (ValueError: the decision that needs it is undecided) rather than a wrong one."""
+    import pytest
+    from exactsym.exact.multiquadratic import MQ, sqrt_rational
+    from exactsym.gathering.tower_numbers import mq_sqrt_any
+    r = MQ.rational(5) + 4 * sqrt_rational(2)
+    a, b = mq_sqrt_any(r), 2 * mq_sqrt_any(r / 4)
+    assert a.tower is not b.tower
+    with pytest.raises(ValueError):
+        a == b
+    assert a == mq_sqrt_any(r)                      # one tower: decided exactly

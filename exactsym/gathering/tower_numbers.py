@@ -31,7 +31,8 @@ tower's own test over its base primes (never needed by the simulator's runs so f
 
 Towers are shared by their first radicand (:func:`tower_of`), so the same instant
 computed twice (a Look's I3 and I9 checks, the snapshot cache) gives equal numbers;
-numbers of two different towers compare as different (:meth:`TowerNumber.__eq__`:
+numbers of two different towers are not compared (:meth:`TowerNumber.__eq__`:
+it raises ValueError, so a decision that would need it is ``undecided``, never wrong;
 callers that must decide equality across towers, :func:`.polyroots._same_root`, use
 the polynomials instead).
 """
@@ -101,7 +102,9 @@ class TowerNumber(TowerElement):
 
     def __eq__(self, other):
         if isinstance(other, TowerElement) and other.tower is not self.tower:
-            return False          # canonical forms of two towers are not comparable
+            # canonical forms of two towers are not comparable: equal values may differ
+            # in form, so no answer is given (a Look that needs one is "undecided")
+            raise ValueError("numbers of two different towers cannot be compared here")
         return TowerElement.__eq__(self, other)
 
     def __ne__(self, other):
