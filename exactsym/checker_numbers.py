@@ -270,8 +270,9 @@ class Field:
         Q(zeta_Mj) meet only in Q, so Galois subfields of them are linearly disjoint), inside
         Q(zeta_M), M = prod M_j.  A rational a is a square in K only if sqrt(a) lies in
         Q(zeta_M), i.e. (a's squarefree part s > 1) only if Q(sqrt s) has conductor dividing
-        M: s if s = 1 mod 4, else 4s (conductor-discriminant formula).  So the checker requires, for every non-empty
-        subset, a squarefree part s > 1 whose conductor does not divide M
+        M: s if s = 1 mod 4, else 4s (conductor-discriminant formula).  So the checker
+        requires, for every non-empty subset, a squarefree part s > 1 whose conductor does
+        not divide M
         (e.g. Q(sqrt 2, sqrt 3, cos(2pi/13)): 2^2 * 6 = 24; Q(sqrt 3, cos(2pi/16)): 2 * 4, where
         sqrt 2 is in K and may not be a radicand)."""
         a = [integer(x) for x in radicands]

@@ -311,7 +311,8 @@ def from_file(config_file: ConfigFile) -> Configuration:
             if r < 0:
                 raise InputError("polar radius must be >= 0", config_file.source, spec.line,
                                  spec.column)
-            turn = normal_turn(fmpq(spec.turn.numerator, spec.turn.denominator)) if r != 0 else fmpq(0)
+            turn = normal_turn(fmpq(spec.turn.numerator, spec.turn.denominator)) \
+                if r != 0 else fmpq(0)
             polar.append((r * r, turn))
         config = Configuration(polar=polar, polar_system=system, radii=radii, **common)
     else:

@@ -228,7 +228,8 @@ def _rational_value(node: Node) -> fmpq | None:
 
 
 def _collect(node: Node, atoms: list) -> None:
-    """Append the irrational atoms of ``node``: ("sqrt", q), ("cos", turn), ("nested", Sqrt node)."""
+    """Append the irrational atoms of ``node``: ("sqrt", q), ("cos", turn), ("nested",
+    Sqrt node)."""
     if isinstance(node, Const):
         return
     if isinstance(node, Neg):

@@ -15,10 +15,10 @@ Exactness of the "at any instant" checks:
 * I6 and I9 are checked at the end of every piece and at every adversary stop point
   (rational instants); I3 and I6 (and I9 at SEC and symmetry instants, the distance ties
   among them: a fresh Look in the reflected frame plans what one in the world's frame
-  plans) also at the critical instants inside each piece (:mod:`.instants`): where the mover crosses the line
-  through C and another robot, where two distances to C become equal, where the SEC's
-  support changes, where a symmetry can appear -- roots of polynomials in the path
-  parameter, isolated exactly (:mod:`.polyroots`).  A Look at each instant the kernel
+  plans) also at the critical instants inside each piece (:mod:`.instants`): where the
+  mover crosses the line through C and another robot, where two distances to C become
+  equal, where the SEC's support changes, where a symmetry can appear -- roots of
+  polynomials in the path parameter, isolated exactly (:mod:`.polyroots`).  A Look at each instant the kernel
   holds, and one in each stretch between consecutive instants; an instant that needs a
   nested radical is checked at the instant too, its point in a tower of quadratic
   extensions (:mod:`.tower_numbers`, counted as ``nested``); only a root of a cubic or

@@ -25,8 +25,9 @@ involve at least one mover (the others do not change during the step):
   two movers mirror images in it, a mover at the centre of a rotation of the robots
   standing still or the image of another mover in it, a mover and a still robot as far
   from the SEC centre of the robots standing still -- or from the moving centroid where
-  a mover can leave that SEC or keeps the robot's distance from its centre); every ``distance`` root is tagged ``symmetry`` too (a
-  rotation or a reflection about that centre can swap the two robots).  Necessary
+  a mover can leave that SEC or keeps the robot's distance from its centre); every
+  ``distance`` root is tagged ``symmetry`` too (a rotation or a reflection about that
+  centre can swap the two robots).  Necessary
   conditions only: a superset of the instants where a symmetry appears.
 
 About R's own SEC centre (the paper layer orders R about it), when R is not every

@@ -211,5 +211,5 @@ def gap_ratio_key(a, b, c: int, dot_sign: int):
                                         _largest_field(a + b)))
 
 
-__all__ = ["RATIO_KEY_DEGREE", "AngleKey", "RatioKey", "big_field", "gap_ratio_key", "rational_ratio",
-           "ray_ratio_key"]
+__all__ = ["RATIO_KEY_DEGREE", "AngleKey", "RatioKey", "big_field", "gap_ratio_key",
+           "rational_ratio", "ray_ratio_key"]

@@ -224,11 +224,10 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
     cyclotomic configuration; the configuration after the moves is then written in that
     field).  Out of reach, the move is "not exact" (outcome "undecided", the paper
     layer's ``complete: false``): a base Q(zeta_M) beyond the tower's bound (phi(M) <=
-    192), or a radicand whose check needs a rational of more than 160 bits factored.  "Move v, epsilon
-    distance" for a single-vertex polygon:
-    along its circle (the robot at C moves to a quarter of the smallest radius, towards
-    the first vertex of G_t counter-clockwise from the observer's x axis: no invariant
-    direction exists there)."""
+    192), or a radicand whose check needs a rational of more than 160 bits factored.
+    "Move v, epsilon distance" for a single-vertex polygon: along its circle (the robot at
+    C moves to a quarter of the smallest radius, towards the first vertex of G_t
+    counter-clockwise from the observer's x axis: no invariant direction exists there)."""
     alg = "MakeAsym"
     t = len(Gp)
     Gt = Gp[-1]
