@@ -27,7 +27,8 @@ Look builds new ones: layer slots, radial targets).  So a level is added only af
 multiquadratic closure, any primes -- proved there is no root: a radicand of level 1 is
 then a non-square in every multiquadratic field, and the same check one level down makes
 :func:`tower_sqrt` sound for level-1 numbers.  Square roots of numbers of level 2 or more
-fall back to the tower's own test over its base primes (never needed by the simulator's runs so far).
+fall back to the tower's own test over its base primes (never needed by the simulator's
+runs so far).
 
 Towers are shared by their first radicand (:func:`tower_of`), so the same instant
 computed twice (a Look's I3 and I9 checks, the snapshot cache) gives equal numbers;
