@@ -140,9 +140,27 @@ class FieldElement:
     the generator of a :class:`NumberField`) or a multiquadratic element
     (:class:`exactsym.exact.multiquadratic.MQ`).  Both offer ``+ - * / **``, exact
     comparisons, ``sign()``, ``is_rational()``, ``rational()`` and ``hash``; algorithms only
-    ask ``isinstance(x, FieldElement)`` to tell them from ``fmpq``."""
+    ask ``isinstance(x, FieldElement)`` to tell them from ``fmpq``.  The order comparisons
+    below read ``self._cmp(other)``: the sign of ``self - other``, or None for a foreign
+    type (MQ writes its own)."""
 
     __slots__ = ()
+
+    def __lt__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c < 0
+
+    def __le__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c <= 0
+
+    def __gt__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c > 0
+
+    def __ge__(self, other):
+        c = self._cmp(other)
+        return NotImplemented if c is None else c >= 0
 
 
 def _embedding(small: NumberField, large: NumberField):
@@ -336,22 +354,6 @@ class PolyElement(FieldElement):
         if diff.is_zero():
             return 0
         return PolyElement(self.field, diff).sign()
-
-    def __lt__(self, other):
-        c = self._cmp(other)
-        return NotImplemented if c is None else c < 0
-
-    def __le__(self, other):
-        c = self._cmp(other)
-        return NotImplemented if c is None else c <= 0
-
-    def __gt__(self, other):
-        c = self._cmp(other)
-        return NotImplemented if c is None else c > 0
-
-    def __ge__(self, other):
-        c = self._cmp(other)
-        return NotImplemented if c is None else c >= 0
 
     def __hash__(self):
         if self.poly.degree() <= 0:

@@ -425,9 +425,13 @@ class TowerElement(FieldElement):
     def __init__(self, tower: Tower, v):
         self.tower, self.v, self._hash = tower, v, None
 
+    def _new(self, v):
+        """A raw value of this tower as a number (a subclass keeps its own type)."""
+        return wrap(self.tower, v)
+
     def _bin(self, other, op):
         o = _raw(self.tower, other)
-        return NotImplemented if o is None else wrap(self.tower, op(self.v, o))
+        return NotImplemented if o is None else self._new(op(self.v, o))
 
     def __add__(self, other):
         return self._bin(other, add)
@@ -441,7 +445,7 @@ class TowerElement(FieldElement):
         return self._bin(other, lambda x, y: sub(y, x))
 
     def __neg__(self):
-        return TowerElement(self.tower, neg(self.v))
+        return type(self)(self.tower, neg(self.v))
 
     def __pos__(self):
         return self
@@ -452,7 +456,7 @@ class TowerElement(FieldElement):
     __rmul__ = __mul__
 
     def inverse(self):
-        return wrap(self.tower, self.tower.inverse(self.v))
+        return self._new(self.tower.inverse(self.v))
 
     def __truediv__(self, other):
         o = _raw(self.tower, other)
@@ -460,11 +464,11 @@ class TowerElement(FieldElement):
             return NotImplemented
         if _is_zero(o):
             raise ZeroDivisionError("division by zero")
-        return wrap(self.tower, self.tower.divide(self.v, o))
+        return self._new(self.tower.divide(self.v, o))
 
     def __rtruediv__(self, other):
         o = _raw(self.tower, other)
-        return NotImplemented if o is None else wrap(self.tower, self.tower.divide(o, self.v))
+        return NotImplemented if o is None else self._new(self.tower.divide(o, self.v))
 
     def __pow__(self, k: int):
         if not isinstance(k, int):
@@ -476,7 +480,7 @@ class TowerElement(FieldElement):
                 out = self.tower.mul(out, base)
             base = self.tower.mul(base, base)
             k >>= 1
-        return wrap(self.tower, out)
+        return self._new(out)
 
     # -- exact comparison -------------------------------------------------------
     def is_rational(self) -> bool:
@@ -499,22 +503,6 @@ class TowerElement(FieldElement):
     def _cmp(self, other):
         o = _raw(self.tower, other)
         return None if o is None else self.tower.sign(sub(self.v, o))
-
-    def __lt__(self, other):
-        c = self._cmp(other)
-        return NotImplemented if c is None else c < 0
-
-    def __le__(self, other):
-        c = self._cmp(other)
-        return NotImplemented if c is None else c <= 0
-
-    def __gt__(self, other):
-        c = self._cmp(other)
-        return NotImplemented if c is None else c > 0
-
-    def __ge__(self, other):
-        c = self._cmp(other)
-        return NotImplemented if c is None else c >= 0
 
     def __hash__(self):
         if self._hash is None:

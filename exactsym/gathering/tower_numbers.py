@@ -46,7 +46,7 @@ from flint import fmpz
 
 from ..exact.mq_closure import decided_sqrt
 from ..exact.multiquadratic import MQ
-from ..exact.tower import Tower, TowerElement, _is_zero, _raw, neg
+from ..exact.tower import Tower, TowerElement
 
 __all__ = ["TowerNumber", "tower_of", "quadratic_root", "biquadratic_root", "tower_sqrt",
            "is_tower"]
@@ -66,37 +66,8 @@ class TowerNumber(TowerElement):
 
     __slots__ = ()
 
-    def _bin(self, other, op):
-        if isinstance(other, TowerElement) and other.tower is not self.tower:
-            raise TypeError("numbers of two different towers do not mix")
-        o = _raw(self.tower, other)
-        return NotImplemented if o is None else _wrap(self.tower, op(self.v, o))
-
-    # + - * go through _bin (TowerElement's operators call it): only the operations that
-    # do not are written again here, to keep the type
-
-    def __neg__(self):
-        return TowerNumber(self.tower, neg(self.v))
-
-    def inverse(self):
-        return _wrap(self.tower, self.tower.inverse(self.v))
-
-    def __truediv__(self, other):
-        o = _raw(self.tower, other)
-        if o is None:
-            return NotImplemented
-        if _is_zero(o):
-            raise ZeroDivisionError("division by zero")
-        return _wrap(self.tower, self.tower.divide(self.v, o))
-
-    def __rtruediv__(self, other):
-        o = _raw(self.tower, other)
-        return NotImplemented if o is None else _wrap(self.tower,
-                                                      self.tower.divide(o, self.v))
-
-    def __pow__(self, k: int):
-        r = TowerElement.__pow__(self, k)
-        return r if r is NotImplemented else _wrap(self.tower, r.v if is_tower(r) else r)
+    def _new(self, v):
+        return _wrap(self.tower, v)      # TowerElement's arithmetic keeps this type
 
     def __abs__(self):
         return -self if self.sign() < 0 else self
