@@ -128,15 +128,9 @@ class Encoder:
         if isinstance(tower, CyclotomicTower):
             self._cyclotomic_tower(tower)
             return
-        levels = []
-        for i, r in enumerate(tower.radicands, start=1):
-            proof = nonsquare_witness(tower, i)
-            if proof is None:
-                raise CertificateError(f"no prime below 200000 proves the radicand of level {i} "
-                                       f"of {tower.name} a non-square; cannot certify")
-            p, base, roots = proof
-            levels.append({"radicand": _tower_text(r), "prime": p,
-                           "base": [str(s) for s in base], "roots": [str(t) for t in roots]})
+        levels = _level_proofs(tower, nonsquare_witness, lambda r, p, base, roots: {
+            "radicand": _tower_text(r), "prime": p, "base": [str(s) for s in base],
+            "roots": [str(t) for t in roots]})
         self.field, self.tower = None, tower
         self.spec = {"tower": {"radicands": [str(p) for p in tower.primes], "levels": levels}}
 
@@ -151,15 +145,11 @@ class Encoder:
         self.tower = tower
         if not tower.radicands:         # every radical denested: the real-cyclotomic field
             return
-        levels = []
-        for i, r in enumerate(tower.radicands, start=1):
-            proof = cyclotomic_nonsquare_witness(tower, i)
-            if proof is None:
-                raise CertificateError(f"no prime below 200000 proves the radicand of level {i} "
-                                       f"of {tower.name} a non-square; cannot certify")
-            p, thetas, roots = proof
-            levels.append({"radicand": self._tower_text(r), "prime": p,
-                           "theta": [str(h) for h in thetas], "roots": [str(t) for t in roots]})
+        levels = _level_proofs(tower, cyclotomic_nonsquare_witness,
+                               lambda r, p, thetas, roots: {
+                                   "radicand": self._tower_text(r), "prime": p,
+                                   "theta": [str(h) for h in thetas],
+                                   "roots": [str(t) for t in roots]})
         self.spec = {"tower": {"base": base, "levels": levels}}
 
     def _tower_text(self, v):
@@ -271,6 +261,19 @@ class Encoder:
         if value.degree() <= 0:
             return rational_text(value.coeffs()[0] if value.degree() == 0 else 0)
         return [rational_text(c) for c in value.coeffs()]
+
+
+def _level_proofs(tower, witness, entry) -> list:
+    """Each level's radicand with its non-square proof (``witness(tower, i)``: a prime and
+    the data the checker re-runs), written by ``entry(radicand, *proof)``."""
+    levels = []
+    for i, r in enumerate(tower.radicands, start=1):
+        proof = witness(tower, i)
+        if proof is None:
+            raise CertificateError(f"no prime below 200000 proves the radicand of level {i} "
+                                   f"of {tower.name} a non-square; cannot certify")
+        levels.append(entry(r, *proof))
+    return levels
 
 
 def _tower_text(v):
