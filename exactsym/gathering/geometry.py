@@ -22,6 +22,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..exact.multiquadratic import MQ, mq, sqrt_rational
+from .polyroots import padd, peval, pmul, pscale, trim
 
 Point = tuple  # (MQ, MQ)
 
@@ -289,39 +290,7 @@ def smallest_enclosing_circle(points) -> tuple:
 # (X(tau), Y(tau)) / W(tau) with multiquadratic coefficients: a segment linearly
 # (W = 1); an arc by the rational rotation of half-angle tangent k*tau, k the tangent of
 # the whole arc's half angle (what ``Arc.at`` does), W = 1 + k^2 tau^2.  Polynomials are
-# coefficient lists, lowest degree first.
-
-def _padd(p, q):
-    n = max(len(p), len(q))
-    return [(p[i] if i < len(p) else ZERO) + (q[i] if i < len(q) else ZERO) for i in range(n)]
-
-
-def _pmul(p, q):
-    out = [ZERO] * (len(p) + len(q) - 1)
-    for i, a in enumerate(p):
-        if a.is_zero():
-            continue
-        for j, b in enumerate(q):
-            out[i + j] = out[i + j] + a * b
-    return out
-
-
-def _pscale(p, s):
-    return [a * s for a in p]
-
-
-def _peval(p, t):
-    acc = ZERO
-    for a in reversed(p):
-        acc = acc * t + a
-    return acc
-
-
-def _trim(p):
-    p = list(p)
-    while p and p[-1].is_zero():
-        p.pop()
-    return p
+# coefficient lists, lowest degree first (:mod:`.polyroots`' arithmetic).
 
 
 def piece_motion(piece):
@@ -347,10 +316,10 @@ def joint_gap_polynomial(piece1, piece2, d2=4):
     instants where the two moving centres are closer than ``sqrt(d2)``."""
     x1, y1, w1 = piece_motion(piece1)
     x2, y2, w2 = piece_motion(piece2)
-    dx = _padd(_pmul(x1, w2), _pscale(_pmul(x2, w1), -ONE))
-    dy = _padd(_pmul(y1, w2), _pscale(_pmul(y2, w1), -ONE))
-    ww = _pmul(w1, w2)
-    return _trim(_padd(_padd(_pmul(dx, dx), _pmul(dy, dy)), _pscale(_pmul(ww, ww), -mq(d2))))
+    dx = padd(pmul(x1, w2), pscale(pmul(x2, w1), -ONE))
+    dy = padd(pmul(y1, w2), pscale(pmul(y2, w1), -ONE))
+    ww = pmul(w1, w2)
+    return trim(padd(padd(pmul(dx, dx), pmul(dy, dy)), pscale(pmul(ww, ww), -mq(d2))))
 
 
 def _rational_norm(f):
@@ -359,7 +328,7 @@ def _rational_norm(f):
     from ..exact.multiquadratic import _coprime_base
     rads = sorted({m for a in f for m in a.radicands()})
     for b in _coprime_base(rads):
-        f = _trim(_pmul(f, [a.conjugate(b) for a in f]))
+        f = trim(pmul(f, [a.conjugate(b) for a in f]))
     return [a.to_fmpq() for a in f]
 
 
@@ -394,7 +363,7 @@ def negative_instant(f):
     an exactly zero imaginary part); between two consecutive roots ``f`` keeps its sign,
     so one rational sample per gap, evaluated exactly, decides."""
     from flint import fmpq, fmpq_poly
-    f = _trim(f)
+    f = trim(f)
     if not f:
         return None                                   # f = 0: touching all along
     samples = [fmpq(0), fmpq(1)]
@@ -413,7 +382,7 @@ def negative_instant(f):
             if left < right:
                 samples.append(_simplest_between(left, right))
     for t in sorted(samples):
-        if 0 <= t <= 1 and _peval(f, MQ.rational(t)).sign() < 0:
+        if 0 <= t <= 1 and peval(f, MQ.rational(t)).sign() < 0:
             from fractions import Fraction
             return Fraction(int(t.p), int(t.q))
     return None
