@@ -132,6 +132,18 @@ def nested_inputs() -> dict[str, str]:
     return out
 
 
+def input_files(only: str | None):
+    """``(name, path)`` of each input (those whose name contains ``only``), written in
+    turn to one temporary file."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "input.toml"
+        for name, text in inputs().items():
+            if only and only not in name:
+                continue
+            path.write_text(text)
+            yield name, path
+
+
 def run(args: list[str], timeout: float) -> tuple[float, str]:
     start = time.perf_counter()
     try:
@@ -148,34 +160,29 @@ def run(args: list[str], timeout: float) -> tuple[float, str]:
 def in_process(opts) -> None:
     """The truth's time inside a fresh interpreter, imports excluded (best of repeats)."""
     print(f"{'input':32} {'wall s':>7} {'cpu s':>7} {'group':>6}  target (cpu; C1 < 0.2 s)")
-    with tempfile.TemporaryDirectory() as tmp:
-        for name, text in inputs().items():
-            if opts.only and opts.only not in name:
-                continue
-            path = Path(tmp) / "input.toml"
-            path.write_text(text)
-            best = None
-            for _ in range(opts.repeat):
-                try:
-                    done = subprocess.run([sys.executable, "-c", TRUTH, str(path)],
-                                          capture_output=True, text=True, timeout=opts.timeout)
-                except subprocess.TimeoutExpired:
-                    best = None
-                    break
-                fields = done.stdout.split()
-                if done.returncode != 0 or len(fields) != 3:
-                    break
-                wall, cpu, group = float(fields[0]), float(fields[1]), fields[2]
-                if best is None or wall < best[0]:
-                    best = (wall, cpu, group)
-            if best is None:
-                print(f"{name:32} {'-':>7} {'-':>7} {'-':>6}  refused or timeout", flush=True)
-                continue
-            wall, cpu, group = best
-            # judged on CPU seconds: on a shared machine the wall clock measures the others
-            limit = 0.2 if group == "C1" else 1.0
-            target = f"< {limit:g} s " + ("ok" if cpu < limit else "MISSED")
-            print(f"{name:32} {wall:7.3f} {cpu:7.3f} {group:>6}  {target}", flush=True)
+    for name, path in input_files(opts.only):
+        best = None
+        for _ in range(opts.repeat):
+            try:
+                done = subprocess.run([sys.executable, "-c", TRUTH, str(path)],
+                                      capture_output=True, text=True, timeout=opts.timeout)
+            except subprocess.TimeoutExpired:
+                best = None
+                break
+            fields = done.stdout.split()
+            if done.returncode != 0 or len(fields) != 3:
+                break
+            wall, cpu, group = float(fields[0]), float(fields[1]), fields[2]
+            if best is None or wall < best[0]:
+                best = (wall, cpu, group)
+        if best is None:
+            print(f"{name:32} {'-':>7} {'-':>7} {'-':>6}  refused or timeout", flush=True)
+            continue
+        wall, cpu, group = best
+        # judged on CPU seconds: on a shared machine the wall clock measures the others
+        limit = 0.2 if group == "C1" else 1.0
+        target = f"< {limit:g} s " + ("ok" if cpu < limit else "MISSED")
+        print(f"{name:32} {wall:7.3f} {cpu:7.3f} {group:>6}  {target}", flush=True)
 
 
 def main() -> None:
@@ -191,21 +198,16 @@ def main() -> None:
         return
     exactsym = [sys.executable, "-m", "exactsym"]
     print(f"{'input':28} {'truth s':>8} {'group':>8} {'check s':>8}  outcome")
-    with tempfile.TemporaryDirectory() as tmp:
-        for name, text in inputs().items():
-            if opts.only and opts.only not in name:
-                continue
-            path = Path(tmp) / "input.toml"
-            path.write_text(text)
-            t_truth, group = run([sys.executable, "-c", TRUTH, str(path)], opts.timeout)
-            if group.startswith("timeout"):
-                group = "timeout"
-            elif group.startswith("exit"):
-                group = "refused"
-            t_check, outcome = run(exactsym + ["check", "--json", str(path)], opts.timeout)
-            if not outcome.startswith(("timeout", "exit")):
-                outcome = "answered"
-            print(f"{name:28} {t_truth:8.2f} {group:>8} {t_check:8.2f}  {outcome}", flush=True)
+    for name, path in input_files(opts.only):
+        t_truth, group = run([sys.executable, "-c", TRUTH, str(path)], opts.timeout)
+        if group.startswith("timeout"):
+            group = "timeout"
+        elif group.startswith("exit"):
+            group = "refused"
+        t_check, outcome = run(exactsym + ["check", "--json", str(path)], opts.timeout)
+        if not outcome.startswith(("timeout", "exit")):
+            outcome = "answered"
+        print(f"{name:28} {t_truth:8.2f} {group:>8} {t_check:8.2f}  {outcome}", flush=True)
 
 
 if __name__ == "__main__":

@@ -247,8 +247,9 @@ def _exact_contains_all(points, circle: Circle, fx, fy, errors=None) -> bool:
             t = circle._through
             br2 = (_ball(t[0]) - bx) ** 2 + (_ball(t[1]) - by) ** 2
     fcx, fcy, fr2 = float(bx.mid()), float(by.mid()), float(br2.mid())
-    rad = float(bx.rad()) + float(by.rad())
-    rad2 = float(br2.rad())
+    # the radii rounded up: float() of a radius rounds to nearest, possibly down
+    rad = (float(bx.rad()) + float(by.rad())) * (1 + 2.0 ** -50)
+    rad2 = float(br2.rad()) * (1 + 2.0 ** -50)
     return _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2, errors)
 
 
