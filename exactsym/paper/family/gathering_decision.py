@@ -199,6 +199,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
             return _finish(limits, bounded, config,
                            orderable, gathering, None, moves, False, trace, G, Gp,
                            ma_outcome, None, polar)
+        # MakeAsym's correctness paragraph ("|G_t| > 3 ... the SEC would not change"):
         # this round's moves against the SEC they started from (a later round is not
         # blamed again for an SEC an earlier round changed)
         # (polar levels: turns about C, no Cartesian system is built for the comparison)
