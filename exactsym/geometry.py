@@ -161,7 +161,7 @@ class PseudoAngle:
     __hash__ = None     # equal values may have different (num, den): group with intern_by_value
 
     def ball(self, prec: int = 64):
-        from flint import arb, ctx
+        from flint import ctx
         with ctx.workprec(prec):
             return self.quadrant + _ball(self.num, prec) / _ball(self.den, prec)
 

@@ -225,10 +225,7 @@ def _candidate(pts, P, c, step, k, rho, phi, sigma, tol):
         scale = 10 ** 9           # a rational direction within about 1e-9 rad of phi
         a1, a2 = round(math.cos(phi) * scale), round(math.sin(phi) * scale)
         den = fmpq(a1 * a1 + a2 * a2)
-        m11, m12 = F(fmpq(a1 * a1 - a2 * a2) / den), F(fmpq(2 * a1 * a2) / den)
-
-        def reflect(u):
-            return (m11 * u[0] + m12 * u[1], m12 * u[0] - m11 * u[1])
+        reflect = _mirror(F(fmpq(a1 * a1 - a2 * a2) / den), F(fmpq(2 * a1 * a2) / den))
     n = len(pts)
     # group elements as (j, mirrored): g = R^j or R^j S, with their float permutations
     elements = [(j, False) for j in range(k)] + ([(j, True) for j in range(k)] if reflect else [])
@@ -266,6 +263,13 @@ def _candidate(pts, P, c, step, k, rho, phi, sigma, tol):
             elif out[j] != image:               # the float matching was inconsistent
                 return None
     return out, system
+
+
+def _mirror(m11, m12):
+    """The reflection with matrix [[m11, m12], [m12, -m11]] (a mirror through 0)."""
+    def reflect(u):
+        return (m11 * u[0] + m12 * u[1], m12 * u[0] - m11 * u[1])
+    return reflect
 
 
 def _q(f: Fraction) -> fmpq:

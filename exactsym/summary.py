@@ -175,8 +175,8 @@ def _truth_rows(analysis: Analysis) -> list[str]:
         rows.append(_row("orderable", f"yes: ordering {listed(group.ordering)}"))
         rows.append(_row("leader", f"robot {group.leader} (the first of the ordering)"))
     else:
-        rows.append(_row("orderable", f"no: a symmetry moves some robot, so observers "
-                                      f"cannot all number the robots the same way"))
+        rows.append(_row("orderable", "no: a symmetry moves some robot, so observers "
+                                      "cannot all number the robots the same way"))
         rows.append(_row("leader", f"robot {group.leader} (fixed by every symmetry)"
                          if group.leader is not None
                          else "none (no robot is fixed by every symmetry)"))
