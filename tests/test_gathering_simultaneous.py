@@ -382,3 +382,33 @@ def test_I4_fires_inside_a_joint_step_and_holds():
     w = _leader_world(Checker(enabled=frozenset({"I4"})), 12)        # never nearer
     w.advance_together([(0, None, False), (1, None, False)])
     assert w.checker.counts["I4"] >= 2
+
+
+# -- I3 compares a fresh Look with the plan of the mover's own Look ----------------------
+def test_I3_under_A3_all_asks_for_the_mover_and_its_target():
+    from exactsym.gathering.invariants import _names_the_mover
+    a, b, c = P(3, -4), P(1, 1), P(5, 5)
+    looked = {0: ("MakeAsym", a), 3: ("leader", b)}                # A3 = all: two movers
+    assert _names_the_mover({0: ("MakeAsym", a), 3: ("leader", b)}, looked, 0)
+    assert _names_the_mover({0: ("MakeAsym", a)}, looked, 0)            # robot 3 arrived
+    assert _names_the_mover({0: ("MakeAsym", a), 2: ("leader", c)}, looked, 0)
+    assert not _names_the_mover({3: ("leader", b)}, looked, 0)          # 0 not named
+    assert not _names_the_mover({0: ("MakeAsym", a), 3: ("leader", c)}, looked, 0)
+    assert not _names_the_mover({5: ("leader", c)}, {5: ("leader", a)}, 5)
+
+
+def test_a_joint_step_of_the_two_movers_one_look_named_is_no_I3_violation():
+    """Sweep run n = 5 (``bench_gather.random_config(5, seed=501)``), FSYNC seed 1, A3 =
+    all, I2 off: robot 0 (MakeAsym's mover) and robot 3 (the leader) move at once, each
+    on the move every Look named.  A fresh Look inside the step names the same two moves:
+    I3 compared it with robot 0's move alone and fired; it holds, and the run stalls
+    later (three robots Elect_Leader_Asym does not order)."""
+    pts = [(F(21, 2), 10), (-10, F(43, 2)), (F(-17, 3), -14), (F(31, 2), F(-15, 2)),
+           (16, F(-59, 2))]
+    checker = Checker(enabled=frozenset(k for k in ALL if k != "I2"))
+    res = run(pts, "fsync", 1, Readings(A3="all", EL="unordered"), max_events=200,
+              checker=checker)
+    step = next(k for k, a in enumerate(res.actions) if a["a"] == "step")
+    assert res.actions[step]["moves"] == [[0, None, False], [3, None, False]]
+    assert checker.counts["I3"] >= 3 and checker.counts["instants"] >= 3
+    assert res.outcome == "stalled" and res.violation is None

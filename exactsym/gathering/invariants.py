@@ -111,6 +111,8 @@ class Checker:
     in_pattern: set = field(default_factory=set)       # robots ever recognised in P
     undecided_fresh: int = 0      # I3 / I9 Looks skipped: the kernel could not hold them
     frames: tuple = ()                                  # extra frames for I9 (besides mirror)
+    # robot -> the plan of its last Look (every mover it named): what I3 compares with
+    look_plans: dict = field(default_factory=dict)
 
     def _on(self, key) -> bool:
         if key in self.enabled:
@@ -130,6 +132,7 @@ class Checker:
                                 f"(robot {i} has just Looked)")
         if not mine:
             return
+        self.look_plans[i] = _plan(paths, decision)
         if self._on("I7") and i in self.in_pattern:
             raise Violation("I7", t, [i], f"robot {i} was in the pattern and plans a move")
         if self._on("I5"):
@@ -191,7 +194,10 @@ class Checker:
         if self._on("I6") and rob.centre is not None:
             self._same_centre(world, i, t, "")
         looked = rob.target is not None                   # no target: a made-up move
-        i3 = looked and self._on("I3")
+        # a joint step's end is checked on a zero-length piece; a mover whose move ended
+        # there has arrived, and a fresh Look need not name it again (after_arrival's)
+        arrived = not rob.path and isinstance(piece, g.Segment) and piece.start == piece.end
+        i3 = looked and not arrived and self._on("I3")
         i9 = looked and "I9" in self.enabled
         if i3 or i9 or ("I6" in self.enabled and rob.centre is not None):
             # the critical instants inside the piece (each exactly when the kernel holds
@@ -241,7 +247,9 @@ class Checker:
             self.undecided_fresh += 1
             return
         plan = _plan(paths, d)
-        if not _same_plan(plan, {i: (rob.role, rob.target)}):
+        own = {i: (rob.role, rob.target)}
+        if not (_names_the_mover(plan, self.look_plans.get(i) or own, i)
+                if world.readings.A3 == "all" else _same_plan(plan, own)):
             raise Violation("I3", t, sorted(set(plan) | {i}),
                             f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
                             f"Look with robot {i} at {g.fmt_point(rob.pos)}{where} plans "
@@ -421,6 +429,20 @@ def _same_plan(a: dict, b: dict) -> bool:
         if role_a == role_b == "leader" and ta != tb:
             return False
     return True
+
+
+def _names_the_mover(fresh: dict, looked: dict, i: int) -> bool:
+    """I3 for mover ``i`` under A3 = all, where a Look names several movers, each making
+    its own move: the fresh plan names ``i`` with the same target, and each robot that
+    both plans name the same way (as :func:`_same_plan` compares them).  A further mover
+    is not ``i``'s business: it may come from another robot's move since ``i``'s Look,
+    and its own Look is checked when it moves.  (Asking, as with one mover per Look,
+    that the fresh plan name ``i`` alone fired at every Look that named two movers,
+    before any motion.)"""
+    if i not in fresh:
+        return False
+    common = set(fresh) & set(looked)
+    return _same_plan({r: fresh[r] for r in common}, {r: looked[r] for r in common})
 
 
 def _plan_text(plan: dict) -> str:
