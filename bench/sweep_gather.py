@@ -7,9 +7,10 @@ readings, and A3=all with EL=unordered) and for the corrected variant
 and I2 (one pending move) off, so that runs go on with several robots moving at once and
 show whether they collide (I1 over the joint motion).  Prints one table row per
 algorithm and scheduler: gathered, violated (by label), stalled, not possible, other
-(undecided, max-events), and how many runs had robots moving at once.
+(undecided, max-events), and how many runs had robots moving at once (and of those, how many were stopped by a
+violation at an instant inside such a step).
 
-Run: ``python bench/sweep_gather.py [--seeds K] [--n 5-12] [--json OUT]`` (the default,
+Run: ``python bench/sweep_gather.py [--seeds K] [--n 5-12] [--setting K ...] [--json OUT]`` (the default,
 3 seeds: 384 runs, some ten minutes on one core; the table is in docs/gathering.md).
 """
 
@@ -33,10 +34,10 @@ SETTINGS = (("paper", "paper (default readings)", Readings(), ALL),
             ("corrected", "corrected", Readings(), ALL))
 
 
-def sweep(ns, seeds: int, max_events: int = 3000):
+def sweep(ns, seeds: int, max_events: int = 3000, settings=SETTINGS):
     rows: dict = {}
     failures: list = []
-    for algorithm, title, readings, invariants in SETTINGS:
+    for algorithm, title, readings, invariants in settings:
         for scheduler in SCHEDULERS:
             tally: collections.Counter = collections.Counter()
             for n in ns:
@@ -46,7 +47,10 @@ def sweep(ns, seeds: int, max_events: int = 3000):
                               checker=Checker(enabled=frozenset(invariants)))
                     key = res.outcome if res.outcome != "violated" else f"violated {res.label}"
                     tally[key] += 1
-                    tally["~together"] += any(a["a"] == "step" for a in res.actions)
+                    steps = {k + 1 for k, a in enumerate(res.actions) if a["a"] == "step"}
+                    tally["~together"] += bool(steps)
+                    # the run's violation at an instant inside a step of several movers
+                    tally["~inside"] += bool(res.violation) and res.violation["instant"] in steps
                     if algorithm == "corrected" and res.outcome != "gathered":
                         failures.append({"n": n, "seed": seed, "scheduler": scheduler,
                                          "outcome": res.outcome, "label": res.label,
@@ -57,16 +61,18 @@ def sweep(ns, seeds: int, max_events: int = 3000):
 
 def table(rows) -> str:
     lines = ["| algorithm | scheduler | runs | gathered | violated (label: count) | stalled "
-             "| not possible | other | moving at once |", "|---|---|---|---|---|---|---|---|---|"]
+             "| not possible | other | moving at once | violated inside such a step |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for (title, scheduler), tally in rows.items():
         viol = ", ".join(f"{k[9:]}: {v}" for k, v in sorted(tally.items())
                          if k.startswith("violated"))
         other = sum(v for k, v in tally.items() if k not in ("gathered", "stalled",
-                    "not-possible", "~together") and not k.startswith("violated"))
-        runs = sum(v for k, v in tally.items() if k != "~together")
+                    "not-possible") and not k.startswith(("violated", "~")))
+        runs = sum(v for k, v in tally.items() if not k.startswith("~"))
         lines.append(f"| {title} | {scheduler} | {runs} | "
                      f"{tally['gathered']} | {viol or '-'} | {tally['stalled']} | "
-                     f"{tally['not-possible']} | {other} | {tally['~together']} |")
+                     f"{tally['not-possible']} | {other} | {tally['~together']} | "
+                     f"{tally['~inside']} |")
     return "\n".join(lines)
 
 
@@ -74,16 +80,20 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--n", default="5-12", help="a range a-b of robot counts")
+    ap.add_argument("--setting", type=int, action="append", default=None,
+                    help="only these rows of SETTINGS (0-3; repeatable), e.g. to split the "
+                    "sweep over several processes")
     ap.add_argument("--json", default=None, help="also write the tallies and the corrected "
                     "variant's failures as JSON")
     args = ap.parse_args()
     lo, hi = (int(x) for x in args.n.split("-"))
     start = time.perf_counter()
-    rows, failures = sweep(range(lo, hi + 1), args.seeds)
+    settings = [SETTINGS[k] for k in args.setting] if args.setting else SETTINGS
+    rows, failures = sweep(range(lo, hi + 1), args.seeds, settings=settings)
     print(table(rows))
     for f in failures:
         print(f"corrected, not gathered: {f}")
-    print(f"{sum(v for t in rows.values() for k, v in t.items() if k != '~together')} runs in "
+    print(f"{sum(v for t in rows.values() for k, v in t.items() if not k.startswith('~'))} runs in "
           f"{time.perf_counter() - start:.0f} s")
     if args.json:
         with open(args.json, "w", encoding="utf-8") as fh:
