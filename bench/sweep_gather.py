@@ -7,11 +7,12 @@ readings, and A3=all with EL=unordered) and for the corrected variant
 and I2 (one pending move) off, so that runs go on with several robots moving at once and
 show whether they collide (I1 over the joint motion).  Prints one table row per
 algorithm and scheduler: gathered, violated (by label), stalled, not possible, other
-(undecided, max-events), and how many runs had robots moving at once (and of those, how many were stopped by a
-violation at an instant inside such a step).
+(undecided, max-events), how many runs had robots moving at once, and how many of those
+a violation stopped at an instant inside such a step.
 
-Run: ``python bench/sweep_gather.py [--seeds K] [--n 5-12] [--setting K ...] [--json OUT]`` (the default,
-3 seeds: 384 runs, some ten minutes on one core; the table is in docs/gathering.md).
+Run: ``python bench/sweep_gather.py [--seeds K] [--n 5-12] [--setting K ...] [--json OUT]``
+(the default, 3 seeds: 384 runs, some fifteen minutes on one core; ``--setting`` splits
+them over processes; the table is in docs/gathering.md).
 """
 
 from __future__ import annotations
