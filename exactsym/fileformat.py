@@ -61,7 +61,7 @@ EXPECT_KEYS: dict[str, type | tuple] = {
     "audit_agrees": bool,           # exactsym.audit finds no false statement
     # the gathering simulator (exactsym.gathering.cases): the outcome and the run's setting
     "gather_outcome": str, "gather_label": str, "gather_invariant": str,
-    "gather_robots": list, "gather_scheduler": str, "gather_seed": int,
+    "gather_robots": list, "gather_time": str, "gather_scheduler": str, "gather_seed": int,
     "gather_readings": list, "gather_invariants": list, "gather_max_events": int,
     "gather_non_rigid": ExpressionText, "gather_algorithm": str,
 }

@@ -182,3 +182,23 @@ def test_joint_witness_of_free_movers_is_none():
     tau, (p, q) = drawing._joint_witness(g.Segment(g.point(0, -5), g.point(0, 5)),
                                          g.Segment(g.point(-5, 0), g.point(5, 0)))
     assert tau == 0.5 and p == q == (0.0, 0.0)
+
+
+def test_a_fresh_look_inside_a_step_is_drawn_at_its_instant(tmp_path):
+    """joint-step-fresh-look-plans-makeasym: I3 at time 419429/1048576 of the step of
+    event 4; the picture's pair is at t = 3 + that, robots 2 and 3 part way (robot 2 at
+    (-3145735/262144, 0), as the witness says), not at the step's end (both at C); the
+    pair is far apart, so no zoom window."""
+    path = ROOT / "cases/gathering/joint-step-fresh-look-plans-makeasym.toml"
+    points, _n, expect, _s = read_case(path)
+    res = run_settings(points, settings_of(expect))
+    assert res.violation["time"] == "419429/1048576"
+    pic = drawing.run_picture(points, res, "case")
+    when = 3 + 419429 / 1048576
+    assert pic.violation.time == pytest.approx(when)
+    from exactsym.pictures.run import position
+    assert position(pic, 2, when) == pytest.approx((-3145735 / 262144, 0))
+    assert position(pic, 3, when) == pytest.approx((0, 3145735 / 262144 * -1))
+    out = tmp_path / "run.svg"
+    plot_run(pic, out)
+    assert not any(i.startswith("zoom") for i in svg_ids(out))

@@ -412,3 +412,22 @@ def test_a_joint_step_of_the_two_movers_one_look_named_is_no_I3_violation():
     assert res.actions[step]["moves"] == [[0, None, False], [3, None, False]]
     assert checker.counts["I3"] >= 3 and checker.counts["instants"] >= 3
     assert res.outcome == "stalled" and res.violation is None
+
+
+def test_a_violation_inside_a_step_carries_its_exact_instant():
+    """The I3 case of a joint step: ``Violation.time`` is the instant of the step where
+    the fresh Look was taken (the witness says the same), in the JSON as text; a
+    violation at a Look (I2) has none."""
+    w = _joint_world(Checker(enabled=frozenset({"I3"})), chords=True)
+    with pytest.raises(Violation) as err:
+        w.advance_together(STEP)
+    v = err.value
+    tau = v.witness.split("(time ")[1].split(" of the step")[0]
+    assert v.time is not None and v.time.text() == tau and 0 < F(tau) < 1
+    assert v.as_dict()["time"] == tau
+    w = World(JOINT, checker=Checker(enabled=frozenset({"I2"})))
+    w.look(4, MIRROR_FREE)
+    w.robots[0].path = [seg((20, 0), (0, 20))]
+    with pytest.raises(Violation) as err:
+        w.look(1, MIRROR_FREE)
+    assert err.value.time is None and "time" not in err.value.as_dict()

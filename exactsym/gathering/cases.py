@@ -6,6 +6,8 @@
 * ``gather_label`` -- the violated statement's label (``gather-no-obstacle``, ...);
 * ``gather_invariant`` -- the invariant that fires (``I1`` ... ``I10``);
 * ``gather_robots`` -- the robots the violation names (e.g. the colliding pair);
+* ``gather_time`` -- the instant inside the violation's piece or step (exact text, in
+  [0, 1]) when it is seen at a critical instant of a motion (``Violation.time``);
 * the run's setting, so the expectation is reproducible: ``gather_scheduler``,
   ``gather_seed``, ``gather_readings`` (``["A3=all", ...]``), ``gather_invariants``
   (the invariants checked; default all), ``gather_max_events``, ``gather_non_rigid``
@@ -24,7 +26,8 @@ from .robot import Readings
 from .schedulers import Result, run
 
 #: The keys compared with a run (the others, :data:`SETTING_KEYS`, set the run up).
-CHECKED_KEYS = ("gather_outcome", "gather_label", "gather_invariant", "gather_robots")
+CHECKED_KEYS = ("gather_outcome", "gather_label", "gather_invariant", "gather_robots",
+                "gather_time")
 SETTING_KEYS = ("gather_scheduler", "gather_seed", "gather_readings", "gather_invariants",
                 "gather_max_events", "gather_non_rigid", "gather_algorithm")
 
@@ -60,7 +63,8 @@ def expectation_failures(expect: dict, res: Result) -> list:
     out = []
     got = dict(zip(CHECKED_KEYS, (
         res.outcome, res.label, res.violation["invariant"] if res.violation else None,
-        sorted(res.violation["robots"]) if res.violation else None)))
+        sorted(res.violation["robots"]) if res.violation else None,
+        res.violation.get("time") if res.violation else None)))
     for key, value in got.items():
         if key in expect:
             want = sorted(expect[key]) if key == "gather_robots" else expect[key]

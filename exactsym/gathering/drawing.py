@@ -18,8 +18,11 @@ pattern of ``n`` robots about the last C seen.  The violation's witness:
 * I5 (a planned path that is not free): at the Look, the planned path, dashed
   (``Run.planned``: not travelled, the run stopped at the Look), and the two discs where
   the path first touches the other robot (``Violation.at``, found in floats);
-* any other invariant naming two robots: the pair at the violation's event; naming
-  one or three and more: the robots highlighted by an event text, no pair.
+* any other invariant naming two robots: the pair at the violation's event -- or, when
+  it was seen at a critical instant inside the last piece or step (``Result.violation_time``,
+  tau in [0, 1]), at that instant, ``t = k - 1 + tau`` (exact on segments; on an arc the
+  picture's uniform angle stands in for the piece's parameter); naming one or three and
+  more: the robots highlighted by an event text, no pair.
 """
 
 from __future__ import annotations
@@ -159,6 +162,9 @@ def run_picture(points, res, name: str = "run", model: str = "fat"):
             s = _first_contact(move.path, now[other])
             when = move.start_time + s
             text = f"collision ({text})"
+        elif (res.violation_time is not None and last is not None
+              and last.kind == "advance"):
+            when = float(last.event) - 1.0 + float(res.violation_time)
         elif v["invariant"] == "I5" and last is not None and last.kind == "look":
             planned = tuple(_piece(piece, R) for piece in last.pieces)
             mover = last.robot

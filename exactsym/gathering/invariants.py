@@ -32,6 +32,7 @@ Exactness of the "at any instant" checks:
 
 from __future__ import annotations
 
+import contextlib
 from dataclasses import dataclass, field
 
 from ..exact.multiquadratic import MQ
@@ -83,8 +84,11 @@ I6_OTHER_LABEL = "conclusion (L1708-1710)"
 
 class Violation(Exception):
     def __init__(self, invariant: str, instant: int, robots, witness: str,
-                 label: str | None = None):
+                 label: str | None = None, time=None):
         self.invariant = invariant
+        # the instant inside the event's piece or step (exact, in [0, 1]) when the
+        # violation is seen at a critical instant of a motion; None: at the event itself
+        self.time = time
         self.label = label or LABELS[invariant]
         self.instant = instant
         self.robots = tuple(robots)
@@ -93,8 +97,11 @@ class Violation(Exception):
                          f"{list(self.robots)}: {witness}")
 
     def as_dict(self) -> dict:
-        return {"invariant": self.invariant, "label": self.label, "instant": self.instant,
-                "robots": list(self.robots), "witness": self.witness}
+        out = {"invariant": self.invariant, "label": self.label, "instant": self.instant,
+               "robots": list(self.robots), "witness": self.witness}
+        if self.time is not None:
+            out["time"] = self.time.text()
+        return out
 
 
 ALL = tuple(f"I{k}" for k in range(1, 11))
@@ -216,14 +223,15 @@ class Checker:
                     rob.pos = lp.point
                     self.counts["instants"] += 1
                     where = f" ({lp.where})"
-                    if "I6" in self.enabled and rob.centre is not None:
-                        self.counts["I6"] += 1
-                        self._same_centre(world, i, t, where)
-                    if i3:
-                        self._fresh_look(world, i, t, where)
-                    if i9 and lp.families & {"sec", "symmetry"}:
-                        self.counts["I9"] += 1
-                        self._mirror_look(world, [i], t, where)
+                    with _at_time(lp.f):
+                        if "I6" in self.enabled and rob.centre is not None:
+                            self.counts["I6"] += 1
+                            self._same_centre(world, i, t, where)
+                        if i3:
+                            self._fresh_look(world, i, t, where)
+                        if i9 and lp.families & {"sec", "symmetry"}:
+                            self.counts["I9"] += 1
+                            self._mirror_look(world, [i], t, where)
             finally:
                 rob.pos = end
             if i3 and rob.path:
@@ -321,19 +329,20 @@ class Checker:
                     rob[i].pos = pieces[i].at(jp.tau)
                 self.counts["instants"] += 1
                 where = f" (time {jp.tau.text()} of the step: {jp.where})"
-                for i in looked:
-                    if i4 and (rob[i].role or "").startswith("leader"):
-                        self.counts["I4"] += 1
-                        self._nearest(world, i, t, strict=True, where=where)
-                    if i6 and rob[i].centre is not None:
-                        self.counts["I6"] += 1
-                        self._same_centre(world, i, t, where)
-                    if i3:
-                        self.counts["I3"] += 1
-                        self._fresh_look(world, i, t, where)
-                if i9 and jp.families & {"sec", "symmetry"}:
-                    self.counts["I9"] += 1
-                    self._mirror_look(world, movers, t, where)
+                with _at_time(jp.tau):
+                    for i in looked:
+                        if i4 and (rob[i].role or "").startswith("leader"):
+                            self.counts["I4"] += 1
+                            self._nearest(world, i, t, strict=True, where=where)
+                        if i6 and rob[i].centre is not None:
+                            self.counts["I6"] += 1
+                            self._same_centre(world, i, t, where)
+                        if i3:
+                            self.counts["I3"] += 1
+                            self._fresh_look(world, i, t, where)
+                    if i9 and jp.families & {"sec", "symmetry"}:
+                        self.counts["I9"] += 1
+                        self._mirror_look(world, movers, t, where)
         finally:
             for i in movers:
                 rob[i].pos = ends[i]
@@ -406,6 +415,17 @@ def critical_points(piece, centre, world, mover: int) -> list:
             if fam in ("ray", "distance"):
                 out.append((what, piece.at(r.exact)))
     return out
+
+
+@contextlib.contextmanager
+def _at_time(tau):
+    """A violation raised inside marks the instant ``tau`` of the piece or step."""
+    try:
+        yield
+    except Violation as v:
+        if v.time is None:
+            v.time = tau
+        raise
 
 
 def _plan(paths, decision) -> dict:

@@ -52,6 +52,7 @@ class Result:
     pattern: dict
     actions: list = field(default_factory=list)
     log: tuple = ()               # world.Step per Look and advance: the paths, exact
+    violation_time: object = None  # Violation.time, exact (the dict has its text)
 
     @property
     def label(self) -> str | None:
@@ -125,6 +126,7 @@ def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Re
     r = _Run(world, max_events, progress)
     rng = random.Random(seed)
     outcome, detail, violation = "max-events", f"stopped after {max_events} events", None
+    violation_time = None
     try:
         if actions is not None:
             outcome, detail = _replay(r, actions)
@@ -132,6 +134,7 @@ def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Re
             outcome, detail = _POLICIES[scheduler](r, rng, reflections)
     except Violation as v:
         outcome, detail, violation = "violated", str(v), v.as_dict()
+        violation_time = v.time
     except _MaxEvents:
         pass
     pts = world.positions()
@@ -146,7 +149,7 @@ def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Re
     checks = dict(checker.counts)
     checks["skipped"] = checker.undecided_fresh   # I3/I9 Looks the kernel could not hold
     return Result(outcome, detail, world.events, world.looks, checks, violation,
-                  pattern, r.actions, tuple(world.log))
+                  pattern, r.actions, tuple(world.log), violation_time)
 
 
 def _terminal(world: World):

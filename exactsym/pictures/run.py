@@ -317,11 +317,18 @@ def _witness(run: Run, when: float):
     return position(run, a, when), position(run, b, when)
 
 
+def _close(run: Run, when: float) -> bool:
+    pa, pb = _witness(run, when)
+    return math.hypot(pa[0] - pb[0], pa[1] - pb[1]) <= ZOOM_HALF
+
+
 def draw_run(run: Run, t: float | None = None, prefix: str = ""):
     """A Figure of ``run``: the whole run (``t`` None: every path, robots where the run
     ends, the violation) or the instant ``t`` (paths travelled so far).  When the
     violation is shown and the picture is much wider than a few robots, a zoom on the
-    colliding pair is drawn under the legend (SVG ids prefixed ``zoom-``)."""
+    colliding pair is drawn under the legend (SVG ids prefixed ``zoom-``) -- when the pair
+    is near enough for both to show in it (a pair that a fresh Look names is often far
+    apart: no zoom then)."""
     matplotlib, Figure = matplotlib_modules()
     from matplotlib.patches import Rectangle
 
@@ -338,7 +345,7 @@ def draw_run(run: Run, t: float | None = None, prefix: str = ""):
         when = end_time(run) if t is None else t
         handles: list = []
         hit = _draw_scene(ax, run, t, when, half, prefix, handles)
-        if hit and run.model == "fat" and half > ZOOM_WHEN * ZOOM_HALF:
+        if hit and run.model == "fat" and half > ZOOM_WHEN * ZOOM_HALF and _close(run, when):
             a, b = run.violation.robots
             pa, pb = _witness(run, when)
             mx, my = (pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2
