@@ -31,13 +31,15 @@ square-root test at level 0 is :func:`~exactsym.exact.mq_closure.decided_sqrt` (
 theory, any primes), so the tower's recursive test (:meth:`.Tower.root_in`) is complete
 at every level and a level is added only on a radicand that is a square in no field
 reached by square roots of rationals added later (layer slots, other radial targets).
-When that test would factor a rational of more than 160 bits, ValueError: the decision
-is then ``undecided``, never wrong.  Runs that never meet a nested radical build no
+When that test would factor a rational of more than 160 bits, or a level beyond
+:data:`~exactsym.exact.tower.MAX_LEVELS` would be needed, ValueError: the decision is
+then ``undecided``, never wrong.  Runs that never meet a nested radical build no
 tower at all.
 """
 
 from __future__ import annotations
 
+from ..errors import FieldTooLargeError
 from ..exact import tower as T
 from ..exact.mq_closure import decided_sqrt
 from ..exact.multiquadratic import MQ
@@ -76,7 +78,10 @@ def sqrt_exact(x, tower: RunTower | None = None):
     ``x``'s tower, of ``tower`` (x an MQ), or of a new :class:`RunTower`.  ValueError
     when ``x < 0`` or when the closure test cannot decide."""
     if is_tower(x):
-        root = tower_sqrt(x)
+        try:
+            root = tower_sqrt(x)
+        except FieldTooLargeError as err:
+            raise ValueError(str(err)) from None
         if root is None:
             raise ValueError("the square root of a tower number cannot be decided")
         return root
@@ -91,7 +96,10 @@ def sqrt_exact(x, tower: RunTower | None = None):
         raise ValueError("a square root would need a rational of more than 160 bits "
                          "factored (mq_closure.decided_sqrt)")
     tower = tower if tower is not None else RunTower()
-    return tower.number(tower.sqrt(x))
+    try:
+        return tower.number(tower.sqrt(x))
+    except FieldTooLargeError as err:        # more levels than the tower allows
+        raise ValueError(str(err)) from None
 
 
 def _coordinates(obj):
