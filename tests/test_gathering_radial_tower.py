@@ -166,3 +166,22 @@ def test_joint_motion_of_a_tower_piece_is_exact():
     gap = g.joint_gap_polynomial(seg, low)
     assert all(c is not None for c in gap) and len(g._tower_norm(gap)) == 2 * len(gap) - 1
     assert all(isinstance(c, MQ) for c in g._tower_norm(gap))
+
+
+def test_a_rational_run_reaches_a_nested_radical_target_and_goes_on():
+    # cases/gathering/radial-target-nested-radical.toml: before, "undecided"
+    from exactsym.gathering.schedulers import run
+    pts = [(20, 0), (-20, 0), (12, 16), (-12, 16), (3, 1)]
+    inv = frozenset({"I1", "I2", "I4", "I5", "I7", "I8", "I10"})
+    res = run([(F(x), F(y)) for x, y in pts], "async", 0, ALL_FIRST, max_events=200,
+              checker=Checker(enabled=inv))
+    assert res.outcome == "stalled" and res.violation is None
+    assert res.pattern["layers"] == [[3]] and res.pattern["centre_robot"] == 4
+    ends = [s for s in res.log if s.kind == "advance" and s.robot == 3]
+    last = ends[-1].pieces[-1].final
+    (tower,) = towers_of([last])
+    assert isinstance(tower, RunTower) and tower.levels == 1
+    # robot 3 ends exactly on layer 1 about the pattern's centre (robot 4's position)
+    centre = [s for s in res.log if s.kind == "advance" and s.robot == 4][-1].pieces[-1].final
+    assert g.dist2(last, centre) == 4
+    assert res.checks["I1"] > 0 and res.checks["I8"] > 0

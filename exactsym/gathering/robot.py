@@ -286,10 +286,13 @@ def radial_point(centre, p, radius, tower=None):
     root is an MQ when it lies in the multiquadratic closure, else a number of the
     snapshot's ``tower`` of nested radicals (a new level when it has none there; a new
     tower when ``tower`` is None: :func:`.run_tower.sqrt_exact`).  ValueError (the
-    decision is then ``undecided``) only when the closure test would factor a rational
-    of more than 160 bits."""
+    decision is then ``undecided``) when the closure test would factor a rational of
+    more than 160 bits, the tower would exceed its levels, or ``p = C``."""
     v = g.sub(p, centre)
     r2 = g.dot(v, v)
+    if r2.is_zero():
+        # a robot of R standing on C (runs with I1 off can put it there): no ray
+        raise ValueError("radial_point: the robot stands on C, no direction towards it")
     if r2.is_rational():
         return g.radial_point(centre, p, radius)
     return g.add(centre, g.scale(v, MQ.coerce(radius) / sqrt_exact(r2, tower)))
