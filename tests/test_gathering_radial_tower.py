@@ -185,3 +185,17 @@ def test_a_rational_run_reaches_a_nested_radical_target_and_goes_on():
     centre = [s for s in res.log if s.kind == "advance" and s.robot == 4][-1].pieces[-1].final
     assert g.dist2(last, centre) == 4
     assert res.checks["I1"] > 0 and res.checks["I8"] > 0
+
+
+def test_critical_instants_over_a_run_tower_are_built_in_it():
+    # a quadratic with coefficients in the run's tower: its root is a new level of the
+    # same tower (tower_numbers.tower_sqrt defers to the run tower's complete test)
+    run = RunTower()
+    z = sqrt_exact(3 + S2, run)                     # sqrt(3 + sqrt 2), about 2.11
+    (r,) = roots_in_unit((-z / 16, Q(0), Q(1)))     # f^2 = z / 16: f = sqrt(z) / 4
+    f = r.exact
+    assert is_tower(f) and f.tower is run and run.levels == 2
+    assert f * f * 16 == z and f.sign() > 0
+    # a square there is found without a new level
+    (r,) = roots_in_unit((-(z + 1) ** 2 / 16, Q(0), Q(1)))
+    assert r.exact == (z + 1) / 4 and run.levels == 2

@@ -77,8 +77,8 @@ def radial_point(centre, p, radius: int):
     v = sub(p, centre)
     r2 = dot(v, v)
     if not r2.is_rational():
-        # p already lies on a circle about the centre whose radius is known only through
-        # its square in a larger field; the simulator never asks for this (see robot.py)
+        # p lies on a circle whose radius is known only through its square in a larger
+        # field: robot.radial_point takes that root (multiquadratic, or a run's tower)
         raise ValueError("radial_point needs a rational squared distance")
     inv = sqrt_rational(1 / r2.to_fmpq())   # 1/|v|, a single radical
     return add(centre, scale(v, inv * radius))
