@@ -199,3 +199,19 @@ def test_critical_instants_over_a_run_tower_are_built_in_it():
     # a square there is found without a new level
     (r,) = roots_in_unit((-(z + 1) ** 2 / 16, Q(0), Q(1)))
     assert r.exact == (z + 1) / 4 and run.levels == 2
+
+
+def test_a_copied_world_keeps_its_own_tower():
+    # the adversary search (search.py) deep-copies worlds: the copy's positions and its
+    # tower move together, and its Looks are decided in its own tower
+    import copy
+    world = World(NESTED, ALL_FIRST)
+    world.look(4, IDENTITY)
+    while world.robots[4].busy:
+        world.advance(4)
+    twin = copy.deepcopy(world)
+    assert twin.home.tower is not world.home.tower
+    assert towers_of([twin.robots[4].pos]) == (twin.home.tower,)
+    d = twin.look(6, IDENTITY)
+    assert d.status == "move" and towers_of(twin.robots[6].path) == (twin.home.tower,)
+    assert home_point(twin.robots[4].pos, world.home.tower) == world.robots[4].pos

@@ -67,6 +67,16 @@ class RunTower(Tower):
                              "factored (mq_closure.decided_sqrt)")
         return root
 
+    def __deepcopy__(self, memo):
+        # the adversary search copies worlds (search.py): a copy grows on its own; raw
+        # values, radicands and Arb balls are immutable, so its tables are copied
+        # shallowly (Arb balls cannot be deep-copied at all)
+        twin = RunTower.__new__(RunTower)
+        memo[id(self)] = twin
+        for name, value in vars(self).items():
+            setattr(twin, name, value.copy() if isinstance(value, (list, dict)) else value)
+        return twin
+
     def number(self, v):
         """A raw value as a kernel number of this tower (an MQ at level 0)."""
         return v if isinstance(v, MQ) else TowerNumber(self, v)
