@@ -45,6 +45,8 @@ def test_radial_point_at_a_nested_radical_is_exact():
     (tower,) = towers_of([q])
     assert isinstance(tower, RunTower) and tower.levels == 1
     assert tower.radicands[0] == 52 + 2 * S2
+    ball = q[0].to_arb(80)                                 # the filters' ball
+    assert ball.contains(q[0].enclosure(200)) and ball.rad() < 1e-15
 
 
 def test_radial_point_stays_multiquadratic_when_it_can():

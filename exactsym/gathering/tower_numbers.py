@@ -92,6 +92,10 @@ class TowerNumber(TowerElement):
     def to_fmpq(self):
         raise ValueError(f"{self.text()} is not rational")
 
+    def to_arb(self, prec: int = 53):
+        """An Arb ball around the value (MQ's name for it: filters and drawing only)."""
+        return self.enclosure(prec)
+
     def __repr__(self):
         return f"TowerNumber({self.text()!r})"
 
