@@ -6,6 +6,7 @@ nested radical build no tower at all."""
 from fractions import Fraction as F
 
 from flint import fmpq
+from hypothesis import given, settings, strategies as st
 
 from exactsym.exact.mq_closure import decided_sqrt
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
@@ -69,12 +70,20 @@ def test_decide_moves_to_the_nested_target_instead_of_undecided():
     assert g.cross(g.sub(start, d.centre), g.sub(end, d.centre)) == 0
 
 
-def test_a_similar_snapshot_gives_the_similar_target():
+@settings(max_examples=8, deadline=None)
+@given(st.integers(-6, 6), st.integers(1, 4), st.integers(1, 3),
+       st.tuples(st.integers(-9, 9), st.integers(-9, 9)))
+def test_a_similar_snapshot_gives_the_similar_target(t, k_num, k_den, shift):
+    # a Pythagorean rotation (parameter t/3), a rational scale, a translation
+    tau = F(t, 3)
+    c, s = (1 - tau * tau) / (1 + tau * tau), 2 * tau / (1 + tau * tau)
+    k = F(k_num, k_den)
+    sim = lambda p: _similar(p, c, s, k, (F(shift[0]), F(shift[1])))   # noqa: E731
     d = decide(NESTED, ALL_FIRST)
-    moved = tuple(_similar(p) for p in NESTED)
-    d2 = decide(moved, ALL_FIRST, fmpq(2))
+    moved = tuple(sim(p) for p in NESTED)
+    d2 = decide(moved, ALL_FIRST, fmpq(k.numerator, k.denominator))
     assert d2.status == "move" and d2.leader == 4
-    want = _similar(d.move_of(4).path[-1].final)
+    want = sim(d.move_of(4).path[-1].final)
     got = d2.move_of(4).path[-1].final
     # two decisions, two towers: compared after re-homing into the first one
     (tower,) = towers_of([want])

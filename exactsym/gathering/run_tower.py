@@ -201,7 +201,8 @@ class RunHome:
 
     def path(self, pieces) -> list:
         pieces = list(pieces)
-        if not towers_of(pieces) or all(t is self.tower for t in towers_of(pieces)):
+        towers = towers_of(pieces)
+        if not towers or towers == (self.tower,):
             return pieces
         if self.tower is None:
             self.tower = RunTower()
