@@ -19,6 +19,7 @@ from math import isqrt
 from flint import fmpq, fmpz
 
 from .multiquadratic import MQ, _coprime_base, sqrt_rational
+from .tower import TowerElement
 
 __all__ = ["closure_sqrt", "decided_sqrt", "RATIONAL_BITS"]
 
@@ -75,7 +76,21 @@ def decided_sqrt(x):
     square ``n^2`` *in* K_(k-1) (m drops out of the norm) and ``(a +- n)/2`` must be
     ``m c^2``; for b = 0, ``a`` or ``a / p_k`` must be.  At Q, ``m c^2`` is any positive
     rational (its root is :func:`sqrt_rational`); a true square is a rational square.
-    Every answer is verified by squaring."""
+    Every answer is verified by squaring.
+
+    A number of a tower of nested radicals (:class:`~.tower.TowerElement`, level >= 1:
+    a critical instant or a position of the gathering simulator) gets its root in its
+    own tower (the tower's test, :meth:`~.tower.Tower.root_in`, over all its levels),
+    or None: then ``x`` has no root below a new level (complete for a tower whose base
+    test is this function, :mod:`exactsym.gathering.run_tower`)."""
+    if isinstance(x, TowerElement):
+        if x.sign() < 0:
+            return None, True
+        raw = x.tower.root_in(x.v, x.tower.levels)
+        if raw is None:
+            return None, True
+        root = x._new(raw)
+        return (-root if root.sign() < 0 else root), True
     if not isinstance(x, MQ):
         x = MQ.rational(x)
     if x.is_zero():

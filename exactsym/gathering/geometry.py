@@ -22,6 +22,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..exact.multiquadratic import MQ, mq, sqrt_rational
+from ..exact.tower import neg as tuple_neg
 from .polyroots import padd, peval, pmul, pscale, trim
 
 Point = tuple  # (MQ, MQ)
@@ -76,8 +77,8 @@ def radial_point(centre, p, radius: int):
     v = sub(p, centre)
     r2 = dot(v, v)
     if not r2.is_rational():
-        # p already lies on a circle about the centre whose radius is known only through
-        # its square in a larger field; the simulator never asks for this (see robot.py)
+        # p lies on a circle whose radius is known only through its square in a larger
+        # field: robot.radial_point takes that root (multiquadratic, or a run's tower)
         raise ValueError("radial_point needs a rational squared distance")
     inv = sqrt_rational(1 / r2.to_fmpq())   # 1/|v|, a single radical
     return add(centre, scale(v, inv * radius))
@@ -322,10 +323,37 @@ def joint_gap_polynomial(piece1, piece2, d2=4):
     return trim(padd(padd(pmul(dx, dx), pmul(dy, dy)), pscale(pmul(ww, ww), -mq(d2))))
 
 
+def _tower_norm(f):
+    """For coefficients in a tower of nested radicals (a run's positions after a
+    nested-radical radial move, :mod:`.run_tower`): the product of ``f``'s conjugates
+    over the tower's levels, top level first (``y_L -> -y_L`` is an automorphism of K_L
+    over K_(L-1), and the product ``f * conj(f)`` has its coefficients in K_(L-1)): MQ
+    coefficients, every real root of ``f`` among its roots.  ``f`` unchanged when its
+    coefficients are MQ."""
+    towers = {id(a.tower): a.tower for a in f if hasattr(a, "tower")}
+    if not towers:
+        return f
+    if len(towers) > 1:
+        raise ValueError("a polynomial over two towers of nested radicals")
+    (tower,) = towers.values()
+    for lev in range(tower.levels, 0, -1):
+        f = trim(pmul(f, [_conjugate_level(a, lev) for a in f]))
+    return f
+
+
+def _conjugate_level(a, lev: int):
+    """``a`` (of level <= ``lev``) with the generator of level ``lev`` negated."""
+    v = getattr(a, "v", None)
+    if type(v) is not tuple or v[0] != lev:
+        return a
+    return a._new((lev, v[1], tuple_neg(v[2])))
+
+
 def _rational_norm(f):
     """The product of the Galois conjugates of ``f``: rational coefficients, and every
-    real root of ``f`` is one of its roots."""
+    real root of ``f`` is one of its roots (over a tower: :func:`_tower_norm` first)."""
     from ..exact.multiquadratic import _coprime_base
+    f = _tower_norm(f)
     rads = sorted({m for a in f for m in a.radicands()})
     for b in _coprime_base(rads):
         f = trim(pmul(f, [a.conjugate(b) for a in f]))
@@ -399,8 +427,9 @@ def _far_apart(piece1, piece2, d2) -> bool:
     """A filter: the two pieces' discs are certainly more than ``sqrt(d2)`` apart
     (Arb balls; False when they cannot tell, and the exact test runs)."""
     (m1, h1), (m2, h2) = _piece_disc(piece1), _piece_disc(piece2)
-    gap = dist2(m1, m2).to_arb().sqrt() - h1.to_arb().sqrt() - h2.to_arb().sqrt()
-    return bool(gap * gap > mq(d2).to_arb()) and bool(gap > 0)
+    # enclosure: MQ's Arb ball, or a tower number's (a nested radical)
+    gap = dist2(m1, m2).enclosure().sqrt() - h1.enclosure().sqrt() - h2.enclosure().sqrt()
+    return bool(gap * gap > mq(d2).enclosure()) and bool(gap > 0)
 
 
 def joint_motion_overlap(piece1, piece2, d2=4):

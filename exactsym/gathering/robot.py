@@ -44,8 +44,8 @@ from ..exact.multiquadratic import MQ
 from flint import fmpq
 from . import geometry as g
 from .paper_bridge import paper_decision
-from .polyroots import mq_sqrt
 from .pattern import Pattern, recognise, slot
+from .run_tower import common_tower, sqrt_exact, towers_of
 
 READINGS = {
     "A1": ("sec-all", "sec-r"),
@@ -122,8 +122,22 @@ def compute(snapshot, me: int, readings: Readings = Readings(), unit=1):
     return None if m is None else m.path
 
 
-@lru_cache(maxsize=4096)
 def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> Decision:
+    """Every robot's answer on ``snapshot`` (see the module docstring).  A snapshot
+    whose coordinates come from several towers of nested radicals is first re-homed
+    into one (:func:`.run_tower.common_tower`); a nested-radical target is built in
+    that tower.  Cached per snapshot and per tower: numbers of two towers are never
+    compared, not even as cache keys."""
+    snapshot, _tower = common_tower(tuple(snapshot))
+    return _decide((towers_of(snapshot), snapshot), readings, unit)
+
+
+@lru_cache(maxsize=4096)
+def _decide(key: tuple, readings: Readings, unit) -> Decision:
+    # key = (towers, snapshot): a tuple compares its towers (by identity) first, so two
+    # snapshots of different towers are never compared coordinate by coordinate
+    towers, snapshot = key
+    tower = towers[0] if towers else None
     pts = list(snapshot)
     centre, _ = g.smallest_enclosing_circle(pts)
     pat = recognise(pts, centre, readings.lone, unit)
@@ -160,7 +174,7 @@ def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> De
         try:
             for pm in (d.moves if readings.A3 == "all" else d.moves[:1]):
                 robot = R[pm.robot]
-                piece = _paper_move(pm, current[robot], centre_r, current, R)
+                piece = _paper_move(pm, current[robot], centre_r, current, R, tower)
                 if piece is None:
                     return Decision("undecided", (), centre, pat, None,
                                     f"{pm.algorithm} move of kind {pm.kind} is not simulated")
@@ -180,7 +194,8 @@ def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> De
         return Decision("undecided", (), centre, pat, None, "MakeAsym moves for 3 rounds")
     if leader is not None and (readings.A3 == "all" or not moves):
         try:
-            path = form_pattern_path(current[leader], current, pat, centre, readings, unit)
+            path = form_pattern_path(current[leader], current, pat, centre, readings, unit,
+                                     tower)
         except ValueError as err:
             return Decision("undecided", (), centre, pat, None, str(err))
         if leader not in moves:
@@ -195,8 +210,10 @@ def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> De
     return Decision("move", out, centre, pat, leader, detail)
 
 
-def _paper_move(pm, start, centre_r, pts, R):
-    """The path of one of the paper layer's moves, in the multiquadratic field."""
+def _paper_move(pm, start, centre_r, pts, R, tower=None):
+    """The path of one of the paper layer's moves: in the multiquadratic field, or in
+    ``tower`` (a new tower when None) when the radial scale factor is a nested
+    radical."""
     if pm.kind == "epsilon" and pm.tau is not None:
         t = MQ.rational(pm.tau)
         den = 1 + t * t
@@ -205,9 +222,7 @@ def _paper_move(pm, start, centre_r, pts, R):
     if pm.kind == "to-G_t-circle" and pm.target_ring_robot is not None:
         target = pts[R[pm.target_ring_robot]]
         r2t, r2p = g.dist2(target, centre_r), g.dist2(start, centre_r)
-        k = mq_sqrt(r2t / r2p, big_ok=True)
-        if k is None:              # a nested radical: not in the kernel
-            return None
+        k = sqrt_exact(r2t / r2p, tower)
         return [g.Segment(start, g.add(centre_r, g.scale(g.sub(start, centre_r), k)))]
     return None
 
@@ -221,9 +236,11 @@ def occupied(pts, pat: Pattern, centre, reading: str, unit=1) -> bool:
                (reading == "covers" and g.dist2(p, centre) == bound) for p in pts)
 
 
-def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1) -> list:
+def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1,
+                      tower=None) -> list:
     """FormGPattern for a leader at ``p`` (see the module docstring); ``unit``: the robot
-    radius in this frame."""
+    radius in this frame; ``tower``: the snapshot's tower of nested radicals, where a
+    nested-radical target is built (None: a new one, :func:`radial_point`)."""
     if not occupied(pts, pat, centre, readings.A4, unit):
         return [g.Segment(p, centre)]
     if pat.centre_robot is None:
@@ -231,9 +248,9 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1) 
                          "no layer to extend")
     l = pat.last_layer
     if pat.last_full():
-        return [g.Segment(p, radial_point(centre, p, 2 * (l + 1) * unit))]
+        return [g.Segment(p, radial_point(centre, p, 2 * (l + 1) * unit, tower))]
     chain = pat.layers[-1]
-    q = radial_point(centre, p, 2 * l * unit)
+    q = radial_point(centre, p, 2 * l * unit, tower)
     s_ccw = slot(centre, pts[chain[-1]], l, 1)      # past the counter-clockwise end
     s_cw = slot(centre, pts[chain[0]], l, -1)       # past the clockwise end
     vq, v1, v2 = g.sub(q, centre), g.sub(s_ccw, centre), g.sub(s_cw, centre)
@@ -253,11 +270,7 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1) 
         return [g.Segment(p, target)]
     if readings.A5 == "arc-radial":
         vp = g.sub(p, centre)
-        root = mq_sqrt(g.dot(vp, vp), big_ok=True)
-        if root is None:
-            raise ValueError("arc-radial needs |p - C| in a multiquadratic field (a nested "
-                             "radical otherwise)")
-        k = root / (2 * l * unit)
+        k = sqrt_exact(g.dot(vp, vp), tower) / (2 * l * unit)
         above = g.add(centre, g.scale(g.sub(target, centre), k))
         pieces = g.arc_path(centre, p, above, sense)
         return pieces + [g.Segment(above, target)]
@@ -265,21 +278,24 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1) 
     return pieces + g.arc_path(centre, q, target, sense)
 
 
-def radial_point(centre, p, radius):
-    """The point at distance ``radius`` from ``centre`` towards ``p``.  ``|p - C|^2`` is
-    rational for a robot that has not slid along an arc; after a slide (or with C moved)
-    it is a multiquadratic number, and its square root is taken when it lies in a
-    multiquadratic field (:func:`.polyroots.mq_sqrt`); otherwise the target is a nested
-    radical and ``ValueError`` says so (the decision is then ``undecided``)."""
+def radial_point(centre, p, radius, tower=None):
+    """The point at distance ``radius`` from ``centre`` towards ``p``, exactly.
+    ``|p - C|^2`` is rational for a robot that has not slid along an arc (then one
+    square root of a rational); after a slide, with C moved, or for a point caught at a
+    nested-radical instant it is an irrational multiquadratic or a tower number: its
+    root is an MQ when it lies in the multiquadratic closure, else a number of the
+    snapshot's ``tower`` of nested radicals (a new level when it has none there; a new
+    tower when ``tower`` is None: :func:`.run_tower.sqrt_exact`).  ValueError (the
+    decision is then ``undecided``) when the closure test would factor a rational of
+    more than 160 bits, the tower would exceed its levels, or ``p = C``."""
     v = g.sub(p, centre)
     r2 = g.dot(v, v)
+    if r2.is_zero():
+        # a robot of R standing on C (runs with I1 off can put it there): no ray
+        raise ValueError("radial_point: the robot stands on C, no direction towards it")
     if r2.is_rational():
         return g.radial_point(centre, p, radius)
-    root = mq_sqrt(r2, big_ok=True)
-    if root is None:
-        raise ValueError("radial_point: |p - C| is a nested radical (|p - C|^2 has no square "
-                         "root in a multiquadratic field)")
-    return g.add(centre, g.scale(v, MQ.coerce(radius) / root))
+    return g.add(centre, g.scale(v, MQ.coerce(radius) / sqrt_exact(r2, tower)))
 
 
 def path_end(path):
@@ -287,4 +303,6 @@ def path_end(path):
 
 
 __all__ = ["Readings", "READINGS", "Decision", "Move", "compute", "decide",
-           "form_pattern_path"]
+           "form_pattern_path", "radial_point"]
+
+decide.cache_clear = _decide.cache_clear      # the benchmarks time cold Looks

@@ -92,6 +92,10 @@ class TowerNumber(TowerElement):
     def to_fmpq(self):
         raise ValueError(f"{self.text()} is not rational")
 
+    def to_arb(self, prec: int = 53):
+        """An Arb ball around the value (MQ's name for it: filters and drawing only)."""
+        return self.enclosure(prec)
+
     def __repr__(self):
         return f"TowerNumber({self.text()!r})"
 
@@ -142,6 +146,9 @@ def tower_sqrt(x: TowerElement):
     if x.sign() < 0:
         raise ValueError("square root of a negative number")
     v = x.v
+    if getattr(tower, "closure_base", False):
+        # a run's tower (:mod:`.run_tower`): its own test is complete at every level
+        return _wrap(tower, tower.sqrt(v))
     if v[0] == 1:
         a, b = v[1], v[2]
         r = tower.radicands[0]

@@ -1,7 +1,9 @@
 """The world of the gathering simulator: unit discs, Looks in adversary frames, moves.
 
 Model (spec section 1; ``docs/gathering.md``): robots are unit discs whose centres are
-exact multiquadratic points.  A robot is idle, or holds a pending path computed at its
+exact multiquadratic points, or -- after a radial move whose length is a nested radical
+-- points of the run's one tower of quadratic extensions (``World.home``,
+:mod:`.run_tower`).  A robot is idle, or holds a pending path computed at its
 last Look (ASYNC: the path may be stale when it moves).  The adversary's actions are
 plain data (Pactole's demon):
 
@@ -40,6 +42,7 @@ from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .corrected import decide_for
 from .robot import Readings
+from .run_tower import RunHome
 
 
 @dataclass(frozen=True)
@@ -141,6 +144,9 @@ class World:
         self.events = 0
         self.looks = 0
         self.log: list = []       # Step per Look and per advance (what a picture draws)
+        # the run's tower of nested radicals (none until a radial target needs one): every
+        # planned path is re-homed into it, so all positions compare in one tower
+        self.home = RunHome()
 
     @property
     def n(self) -> int:
@@ -155,7 +161,8 @@ class World:
         local = tuple(frame.to_local(p) for p in self.positions())
         d = self.decide(local, self.readings,
                         fmpq(frame.unit.numerator, frame.unit.denominator))
-        paths = {m.robot: [frame.piece_to_world(pc) for pc in m.path] for m in d.moves}
+        paths = {m.robot: self.home.path(frame.piece_to_world(pc) for pc in m.path)
+                 for m in d.moves}
         return d, paths
 
     def look(self, i: int, frame: Frame):
