@@ -56,10 +56,11 @@ from flint import fmpq
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .instants import _reach, hull_indices, motion_of
-from .joint_relations import (const, contact_poly, incircle_poly, ray_poly, rel,
-                              right_poly, sq, still, tie_poly)
-from .joint_symmetry import symmetry_polys
-from .polyroots import pmul, pscale, psub, roots_of
+from .joint_relations import (circumcentre_motion, const, contact_poly, incircle_poly,
+                              midpoint_motion, ray_about, ray_poly, rel, right_poly, sq,
+                              still, tie_about, tie_poly)
+from .joint_symmetry import _may_leave, symmetry_polys
+from .polyroots import peval, pmul, pscale, psub, roots_of
 
 
 # -- the families --------------------------------------------------------------------------
@@ -95,6 +96,57 @@ def _sec(motions: dict, movers, tag: str) -> list:
     return out
 
 
+def _at(m, t):
+    return (peval(m.nx, t) / peval(m.d, t), peval(m.ny, t) / peval(m.d, t))
+
+
+def _about_moving_sec(sub: dict, movers: set, sec_roots: list, known: set) -> list:
+    """The ``ray`` and ``distance`` relations of R's robots about R's SEC centre while a
+    mover of R may support that SEC (the centre moves).  Between two consecutive roots of
+    the SEC of R family (``sec_roots``: its support changes there) the support is fixed:
+    read exactly at one rational instant of each stretch, the centre there is the moving
+    midpoint of two supports or the moving circumcentre of three, a rational function of
+    tau (:func:`.joint_relations.midpoint_motion`, :func:`circumcentre_motion`); every
+    pair of R (two robots standing still too: the centre moves) gets its ray and its tie
+    about it, denominators cleared by squares.  A polynomial's roots outside its
+    stretch are extra candidates (a Look each), never a missed one.  A support whose
+    centre stays put (three robots standing still, a mover sliding on the circle of
+    the others) is a constant centre: the relations that involve a mover about it,
+    unless ``known`` holds it already."""
+    if len(sub) < 3:
+        return []              # two robots: on one line through their midpoint, as far
+    half = MQ.rational(fmpq(1, 2))
+    samples = ([MQ.rational(sec_roots[0].lo)] + [MQ.rational(r.hi) for r in sec_roots]
+               if sec_roots else [half])
+    centres, out = {}, []
+    for t in samples:
+        pts = {k: _at(m, t) for k, m in sub.items()}
+        c, r2 = g.smallest_enclosing_circle(list(pts.values()))
+        on = sorted((k for k in pts if g.dist2(pts[k], c) == r2), key=lambda k: (k in movers, k))
+        pair = next(((a, b) for a, b in combinations(on, 2)
+                     if g.scale(g.add(pts[a], pts[b]), half) == c), None)
+        sup = pair if pair is not None and len([k for k in on if k not in movers]) < 3 \
+            else tuple(on[:3])
+        m = midpoint_motion(*(sub[k] for k in sup)) if len(sup) == 2 else \
+            circumcentre_motion(*(sub[k] for k in sup))
+        if not (psub(m.nx, pscale(m.d, c[0])) or psub(m.ny, pscale(m.d, c[1]))):
+            if c not in known:                   # it stays put on this stretch
+                known.add(c)
+                out += _about(sub, movers, c, "the centre of R's SEC")
+            continue
+        centres.setdefault(sup, m)
+    for sup, m in centres.items():
+        name = f"the centre of R's SEC (supports {', '.join(map(str, sup))})"
+        ks = sorted(sub)
+        for x, a in enumerate(ks):
+            for b in ks[x + 1:]:
+                out.append((ray_about(sub[a], sub[b], m),
+                            ("ray", f"robots {a} and {b} on one line through {name}")))
+                out.append((tie_about(sub[a], sub[b], m),
+                            ("distance", f"robots {a} and {b} as far from {name}")))
+    return out
+
+
 def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
     """Every critical instant strictly inside the step's interval, as separated
     :class:`.polyroots.Root`\\ s (``pieces``: mover -> the piece it moves along)."""
@@ -120,25 +172,35 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
             if k != i and (k not in movers or k > i):
                 polys.append((contact_poly(motions[i], motions[k], MQ.rational(4)),
                               ("pattern", f"robots {i} and {k} touching")))
+    extra: list = []
     polys += _sec(motions, movers, "SEC of all")
     polys += symmetry_polys(motions, movers, sorted(motions), "all robots", centres)
     rsets = {world.robots[i].r_set for i in movers}
     for rset in sorted(rsets, key=sorted):
         if rset and (sec_r or len(rset) < n):
             sub = {k: m for k, m in motions.items() if k in rset}
-            polys += _sec(sub, movers & set(sub), "SEC of R")
+            sec_r_polys = _sec(sub, movers & set(sub), "SEC of R")
             # the paper layer orders R about R's own SEC centre: the rays and ties about
             # it (the centre of R's robots standing still: it moves only where a mover
             # of R is a support, at the SEC of R instants above), as instants.py does
             known = set(centres)
             stills = [const(m) for k, m in sub.items() if k not in movers]
+            c_r = None
             if len(stills) >= 2 and movers & set(sub):
-                c_r = g.smallest_enclosing_circle(stills)[0]
+                c_r, r2_r = g.smallest_enclosing_circle(stills)
                 if c_r not in centres:
                     polys += _about(sub, movers, c_r, "the centre of R's SEC")
                 known.add(c_r)
+            if movers & set(sub) and (c_r is None or any(
+                    _may_leave(sub[i], c_r, r2_r) for i in movers & set(sub))):
+                # a mover of R can be a support of R's SEC: its centre moves
+                sec_roots = roots_of((p, t) for p, t in sec_r_polys if p)
+                polys += _about_moving_sec(sub, movers & set(sub), sec_roots, known)
+                extra += sec_roots
+            else:
+                polys += sec_r_polys
             polys += symmetry_polys(motions, movers, sorted(sub), "R", known)
-    roots = roots_of((poly, tag) for poly, tag in polys if poly)
+    roots = roots_of(((poly, tag) for poly, tag in polys if poly), extra)
     for r in roots:
         # a rotation or a reflection about that centre can swap two robots as far from
         # it (joint_symmetry, case B): the ties are symmetry candidates too (the same

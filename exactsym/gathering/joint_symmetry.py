@@ -50,7 +50,8 @@ from __future__ import annotations
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .instants import Motion, _centroid, dist2_poly, mirror_lines, smallest_distance_group
-from .joint_relations import const, crossv, diff, dotv, rel, tie_poly
+from .joint_relations import (centroid_motion, collinear_poly, const, crossv, diff, dotv,
+                              pair_tie, rel, tie_about, tie_poly)
 from .polyroots import padd, pgcd, pmul, pscale, psub, roots_in_unit
 
 
@@ -155,8 +156,12 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
     enumerates already (tagged ``symmetry`` by it)."""
     M = sorted(set(members) & set(movers))
     still_pts = {k: const(motions[k]) for k in members if k not in movers}
-    if not M or len(still_pts) < 2:
+    if not M:
         return []
+    if len(still_pts) < 2:
+        # no fixed lines or rotations to start from: the hypotheses on images below
+        return [(p, ("symmetry", f"{name}: {w}")) for p, w in
+                image_polys(motions, members, set(M), [])]
     S = list(still_pts.values())
     z = _centroid(S)
     out: list = []
@@ -200,11 +205,87 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
             else:
                 # the SEC moves, or robot i keeps q's distance from its centre all along
                 # (an arc about it): the centroid is fixed by every symmetry too
-                out.append((centroid_tie(motions, list(members), set(M), i, q),
-                            ("symmetry", f"{name}: robots {i} and {q} as far from the "
-                                         f"centroid")))
+                ct = centroid_tie(motions, list(members), set(M), i, q)
+                if ct:
+                    out.append((ct, ("symmetry", f"{name}: robots {i} and {q} as far from "
+                                                 f"the centroid")))
+                else:
+                    # as far from both centres all along: what the images of the other
+                    # robots need if s(i) = q (the joint analogue of instants'
+                    # on_circle_candidates: its swap images are these ties' roots)
+                    out += [(p, ("symmetry", f"{name}: if robot {i}'s image is robot {q}, "
+                                             f"{w}"))
+                            for p, w in image_polys(motions, members, set(M), [(i, q)])]
     return [(p, tag) for p, tag in out if len(p) > 1]
 
 
+#: how many pairs ``x -> s(x)`` :func:`image_polys` may assume before it gives up (a
+#: hypothesis whose every consequence holds all along: see its docstring)
+DEPTH = 3
+
+
+def image_polys(motions: dict, members, movers: set, hyp: list, depth: int = DEPTH,
+                _z=None) -> list:
+    """``[(poly, description)]``: necessary conditions for a symmetry ``s`` (not the
+    identity) of the robots ``members`` at time tau with ``s(x) = y`` for every pair of
+    ``hyp``; needs no robot standing still.
+
+    ``s`` is an isometry that permutes the robots and fixes their centroid ``z`` (which
+    moves with the movers), so for a robot ``c`` with ``s(c) = d``: ``|c - z| = |d - z|``
+    and ``|c - x| = |d - y|`` for every ``(x, y)`` of ``hyp``.  For one robot ``c`` (the
+    first not yet mapped, robots standing still first) and every candidate image ``d``
+    (not already an image) the first of these relations that does not vanish
+    identically is listed (a nonzero constant: ``d`` is impossible); when all of them
+    vanish for some ``d`` (``c -> d`` is consistent all along: ``d = c`` under the empty
+    hypothesis, a swap whose ties vanish) that ``d`` is assumed in turn, up to ``depth``
+    pairs.  Two fixed robots ``x, y`` make ``s`` the reflection in the line ``xy`` (not
+    the identity): then ``z`` is on it (one polynomial), and ``c`` fixed means ``c`` on
+    it.  A hypothesis that maps every robot, each relation vanishing identically, is a
+    symmetry all along, or no isometry: it appears at no instant.  Left out (a gap,
+    not a superset there): a branch still open after ``depth`` assumptions, each
+    relation of its next robot vanishing identically for some image."""
+    members = sorted(members, key=lambda k: (k in movers, k))
+    if len(members) < 3:
+        return []              # two points are always symmetric (a half turn swaps them)
+    mo = {k: motions[k] for k in members}
+    z = _z if _z is not None else centroid_motion(motions, members)
+    fixed = [x for x, y in hyp if x == y]
+    line = fixed[:2] if len(fixed) >= 2 else None
+    if line:
+        on = collinear_poly(mo[line[0]], mo[line[1]], z)
+        if on:
+            return [(on, f"the centroid on the line through robots {line[0]} and "
+                         f"{line[1]} (a reflection fixing both)")]
+    mapped, images = {x for x, _ in hyp}, {y for _, y in hyp}
+    todo = [c for c in members if c not in mapped]
+    if not todo:
+        return []
+    c = todo[0]
+    out, consistent = [], []
+    for d in members:
+        if d in images:
+            continue
+        if line and d == c:
+            rels = [(collinear_poly(mo[line[0]], mo[line[1]], mo[c]),
+                     f"robot {c} on the line through robots {line[0]} and {line[1]}")]
+        else:
+            rels = [(lambda d=d: tie_about(mo[c], mo[d], z),
+                     f"robots {c} and {d} as far from the centroid")]
+            rels += [(lambda d=d, x=x, y=y: pair_tie(mo[c], mo[x], mo[d], mo[y]),
+                      f"|{c} - {x}| = |{d} - {y}|") for x, y in hyp]
+        for make, what in rels:
+            p = make() if callable(make) else make
+            if p:
+                if len(p) > 1:
+                    out.append((p, what))
+                break
+        else:
+            consistent.append(d)
+    for d in consistent:
+        if depth > 0:
+            out += image_polys(motions, members, movers, hyp + [(c, d)], depth - 1, z)
+    return out
+
+
 __all__ = ["symmetry_polys", "mirror_pair_poly", "rotation_pair_poly", "centroid_tie",
-           "rotations_of"]
+           "rotations_of", "image_polys"]
