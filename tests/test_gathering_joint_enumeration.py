@@ -224,7 +224,7 @@ def test_rays_about_Rs_moving_sec_centre(monkeypatch):
     v = err.value
     assert (v.invariant, v.robots, _instant(v)) == ("I3", (4,), "1/2")
     # before: the rays about the still robots' SEC centre (10, 0) only
-    monkeypatch.setattr(joint_instants, "_about_moving_sec", lambda *a, **k: [])
+    monkeypatch.setattr(joint_instants, "_about_moving_sec", lambda *a, **k: ([], []))
     assert not [t for t in _tags_at(MOVING_PIECES, _world(MOVING, MOVING_PIECES, ORIGIN,
                                                           r_set=R_SET), half)
                 if t[0] == "ray"]

@@ -32,9 +32,11 @@ involve at least one mover (the others do not change during the step):
 
 About R's own SEC centre (the paper layer orders R about it), when R is not every
 robot or A1 = sec-r: the ``ray`` and ``distance`` relations among R's robots about the
-SEC centre of R's robots standing still, as :mod:`.instants` does for one mover (that
-centre moves only where a mover of R is a support: the SEC-of-R instants; the ties
-about the moving centre are not enumerated, only the symmetry family's centroid ties).
+SEC centre of R's robots standing still, as :mod:`.instants` does for one mover; and
+when a mover of R can leave that SEC (it is then a support, and the centre moves), on
+each stretch between two SEC-of-R instants (a fixed support there) the rays and ties of
+every pair of R about the moving centre of that support, a rational function of tau
+(:func:`_about_moving_sec`; the roots in that stretch).
 
 A superset of the events above: a candidate where nothing happens costs a Look.
 :func:`joint_look_points` gives, as :func:`.instants.look_points` does, each instant
@@ -60,7 +62,7 @@ from .joint_relations import (circumcentre_motion, const, contact_poly, incircle
                               midpoint_motion, ray_about, ray_poly, rel, right_poly, sq,
                               still, tie_about, tie_poly)
 from .joint_symmetry import _may_leave, symmetry_polys
-from .polyroots import peval, pmul, pscale, psub, roots_of
+from .polyroots import peval, pmul, pscale, psub, roots_in_unit, roots_of
 
 
 # -- the families --------------------------------------------------------------------------
@@ -100,51 +102,69 @@ def _at(m, t):
     return (peval(m.nx, t) / peval(m.d, t), peval(m.ny, t) / peval(m.d, t))
 
 
-def _about_moving_sec(sub: dict, movers: set, sec_roots: list, known: set) -> list:
-    """The ``ray`` and ``distance`` relations of R's robots about R's SEC centre while a
-    mover of R may support that SEC (the centre moves).  Between two consecutive roots of
-    the SEC of R family (``sec_roots``: its support changes there) the support is fixed:
-    read exactly at one rational instant of each stretch, the centre there is the moving
-    midpoint of two supports or the moving circumcentre of three, a rational function of
-    tau (:func:`.joint_relations.midpoint_motion`, :func:`circumcentre_motion`); every
-    pair of R (two robots standing still too: the centre moves) gets its ray and its tie
-    about it, denominators cleared by squares.  A polynomial's roots outside its
-    stretch are extra candidates (a Look each), never a missed one.  A support whose
-    centre stays put (three robots standing still, a mover sliding on the circle of
-    the others) is a constant centre: the relations that involve a mover about it,
-    unless ``known`` holds it already."""
+def _about_moving_sec(sub: dict, movers: set, sec_roots: list, known: set) -> tuple:
+    """``(polys, roots)``: the ``ray`` and ``distance`` relations of R's robots about
+    R's SEC centre while a mover of R may support that SEC (the centre moves).  Between
+    two consecutive roots of the SEC of R family (``sec_roots``: its support changes
+    there) the support is fixed: read exactly at one rational instant of each stretch,
+    the centre there is the moving midpoint of two supports or the moving circumcentre
+    of three, a rational function of tau (:func:`.joint_relations.midpoint_motion`,
+    :func:`.joint_relations.circumcentre_motion`); every pair of R (two robots standing
+    still too: the centre moves) gets its ray and its tie about it, denominators cleared
+    by squares, and only their roots in that stretch are kept (``roots``; a root whose
+    interval still straddles the stretch's end after refining is kept: a superset).  A
+    support whose centre stays put (three robots standing still, a mover sliding on the
+    circle of the others) is a constant centre: the relations that involve a mover
+    about it (``polys``), unless ``known`` holds it already."""
     if len(sub) < 3:
-        return []              # two robots: on one line through their midpoint, as far
+        return [], []          # two robots: on one line through their midpoint, as far
     half = MQ.rational(fmpq(1, 2))
     samples = ([MQ.rational(sec_roots[0].lo)] + [MQ.rational(r.hi) for r in sec_roots]
                if sec_roots else [half])
-    centres, out = {}, []
-    for t in samples:
-        pts = {k: _at(m, t) for k, m in sub.items()}
+    ends = [fmpq(0)] + [r.lo for r in sec_roots], [r.hi for r in sec_roots] + [fmpq(1)]
+    centres: dict = {}
+    polys: list = []
+    for k, t in enumerate(samples):
+        pts = {j: _at(m, t) for j, m in sub.items()}
         c, r2 = g.smallest_enclosing_circle(list(pts.values()))
-        on = sorted((k for k in pts if g.dist2(pts[k], c) == r2), key=lambda k: (k in movers, k))
+        on = sorted((j for j in pts if g.dist2(pts[j], c) == r2),
+                    key=lambda j: (j in movers, j))
         pair = next(((a, b) for a, b in combinations(on, 2)
                      if g.scale(g.add(pts[a], pts[b]), half) == c), None)
-        sup = pair if pair is not None and len([k for k in on if k not in movers]) < 3 \
+        sup = pair if pair is not None and len([j for j in on if j not in movers]) < 3 \
             else tuple(on[:3])
-        m = midpoint_motion(*(sub[k] for k in sup)) if len(sup) == 2 else \
-            circumcentre_motion(*(sub[k] for k in sup))
+        m = midpoint_motion(*(sub[j] for j in sup)) if len(sup) == 2 else \
+            circumcentre_motion(*(sub[j] for j in sup))
         if not (psub(m.nx, pscale(m.d, c[0])) or psub(m.ny, pscale(m.d, c[1]))):
             if c not in known:                   # it stays put on this stretch
                 known.add(c)
-                out += _about(sub, movers, c, "the centre of R's SEC")
+                polys += _about(sub, movers, c, "the centre of R's SEC")
             continue
-        centres.setdefault(sup, m)
-    for sup, m in centres.items():
+        centres.setdefault(sup, (m, []))[1].append((ends[0][k], ends[1][k]))
+    roots: list = []
+    ks = sorted(sub)
+    for sup, (m, windows) in centres.items():
         name = f"the centre of R's SEC (supports {', '.join(map(str, sup))})"
-        ks = sorted(sub)
         for x, a in enumerate(ks):
             for b in ks[x + 1:]:
-                out.append((ray_about(sub[a], sub[b], m),
-                            ("ray", f"robots {a} and {b} on one line through {name}")))
-                out.append((tie_about(sub[a], sub[b], m),
-                            ("distance", f"robots {a} and {b} as far from {name}")))
-    return out
+                for poly, tag in ((ray_about(sub[a], sub[b], m),
+                                   ("ray", f"robots {a} and {b} on one line through {name}")),
+                                  (tie_about(sub[a], sub[b], m),
+                                   ("distance", f"robots {a} and {b} as far from {name}"))):
+                    roots += [r for r in roots_in_unit(poly, tag) if _in_windows(r, windows)]
+    return polys, roots
+
+
+def _in_windows(r, windows, rounds: int = 48) -> bool:
+    """Can root ``r`` lie in one of the closed ``windows`` (refined until its interval
+    is inside one or outside all; still straddling after ``rounds``: kept)."""
+    for _ in range(rounds):
+        if any(lo <= r.lo and r.hi <= hi for lo, hi in windows):
+            return True
+        if all(r.hi <= lo or r.lo >= hi for lo, hi in windows):
+            return False
+        r.refine()
+    return True
 
 
 def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
@@ -195,8 +215,9 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
                     _may_leave(sub[i], c_r, r2_r) for i in movers & set(sub))):
                 # a mover of R can be a support of R's SEC: its centre moves
                 sec_roots = roots_of((p, t) for p, t in sec_r_polys if p)
-                polys += _about_moving_sec(sub, movers & set(sub), sec_roots, known)
-                extra += sec_roots
+                more, found = _about_moving_sec(sub, movers & set(sub), sec_roots, known)
+                polys += more
+                extra += sec_roots + found
             else:
                 polys += sec_r_polys
             polys += symmetry_polys(motions, movers, sorted(sub), "R", known)

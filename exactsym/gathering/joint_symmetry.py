@@ -39,10 +39,17 @@ product of the movers' denominators (1 on segments, ``1 + T^2 tau^2`` on an arc)
 mirror or rotation relation has degree at most 4, a tie about ``c_S`` at most 4, a tie
 about the moving centroid at most ``2 + 2 deg W`` (2 on segments; 4 per mover on an arc).
 
-Not enumerated: a set X with fewer than two robots standing still (at least four movers
-among five robots: its symmetries are not tied to fixed lines); in case B, a mover that
-keeps a still robot's distance from both the SEC centre and the moving centroid all the
-time (both ties vanish identically).
+A set X with fewer than two robots standing still (its symmetries are tied to no fixed
+line), and in case B a mover ``i`` that keeps a still robot ``q``'s distance from both
+the SEC centre and the moving centroid all the time (both ties vanish identically), get
+the **hypotheses on images** instead (:func:`image_polys`): a symmetry permutes X and
+preserves distances, so with ``s(i) = q`` assumed (or, with no hypothesis, for X's first
+robot and each possible image), each other robot ``c`` goes to some ``d`` with
+``|c - z| = |d - z|`` and ``|c - i| = |d - q|``: polynomials in tau; where all of them
+vanish for some ``d`` that pair is assumed too (up to :data:`DEPTH` pairs).  Not
+enumerated: a hypothesis still open after :data:`DEPTH` pairs, each relation of its next
+robot vanishing identically for some image (a step that keeps that many distance
+relations all along).
 """
 
 from __future__ import annotations
