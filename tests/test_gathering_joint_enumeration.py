@@ -373,3 +373,43 @@ def test_image_polys_of_two_robots_are_empty_and_three_are_not():
     whats = [w_ for _, w_ in image_polys(ms, [0, 1, 2], {0, 1, 2}, [])]
     assert "robots 0 and 1 as far from the centroid" in whats
     assert "robots 0 and 2 as far from the centroid" in whats
+
+
+# -- the superset property about R's SEC centre ------------------------------------------
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.tuples(st.integers(-12, 12), st.integers(-12, 12)), min_size=4,
+                max_size=4, unique=True),
+       st.lists(st.tuples(st.integers(-6, 6), st.integers(-6, 6)), min_size=2, max_size=2))
+def test_no_ray_or_tie_about_Rs_sec_centre_changes_inside_a_stretch(r_pts, vel):
+    """R = robots 2-5 (robots 0, 1 in the pattern, far away); robots 4 and 5 of R move
+    (they may drag R's SEC).  Between two consecutive critical instants the sign of
+    every ray and every tie of two robots of R about the true SEC centre of R is the
+    same at both ends of the stretch: no relation about the (moving) centre changes
+    unseen."""
+    pts = [(0, 60), (2, 60)] + r_pts
+    pieces = {4: seg(r_pts[2], (r_pts[2][0] + 3 * vel[0][0], r_pts[2][1] + 3 * vel[0][1])),
+              5: seg(r_pts[3], (r_pts[3][0] + 3 * vel[1][0], r_pts[3][1] + 3 * vel[1][1]))}
+    w = _world(pts, pieces, P(0, 60), r_set={2, 3, 4, 5})
+
+    def signs(t):
+        at = {k: pieces[k].at(t) if k in pieces else P(*pts[k]) for k in (2, 3, 4, 5)}
+        if len(set(at.values())) < 4:
+            return None                               # two robots at one point
+        c = g.smallest_enclosing_circle(list(at.values()))[0]
+        out = []
+        for a in (2, 3, 4, 5):
+            for b in range(a + 1, 6):
+                out.append(g.cross(g.sub(at[a], c), g.sub(at[b], c)).sign())
+                out.append((g.dist2(at[a], c) - g.dist2(at[b], c)).sign())
+        return out
+
+    cuts = [F(0)] + [F(int(x.p), int(x.q)) for r in joint_critical_roots(pieces, w)
+                     for x in (r.lo, r.hi)] + [F(1)]
+    # the open stretches (0, lo_0), (hi_0, lo_1), ..., (hi_last, 1), each by two of its
+    # points (its rational ends, or half way to 0 or 1)
+    ends = [(a if a > 0 else b / 4, b if b < 1 else (3 + a) / 4)
+            for a, b in zip(cuts[::2], cuts[1::2])]
+    for a, b in ends:
+        sa, sb = signs(Q(a)), signs(Q(b))
+        if sa is not None and sb is not None:
+            assert sa == sb, (a, b)
