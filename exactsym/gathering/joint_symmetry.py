@@ -167,8 +167,8 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
         return []
     if len(still_pts) < 2:
         # no fixed lines or rotations to start from: the hypotheses on images below
-        return [(p, ("symmetry", f"{name}: {w}")) for p, w in
-                image_polys(motions, members, set(M), [])]
+        return _distinct([(p, ("symmetry", f"{name}: {w}")) for p, w in
+                          image_polys(motions, members, set(M), [])])
     S = list(still_pts.values())
     z = _centroid(S)
     out: list = []
@@ -201,6 +201,7 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
     # B: a mover mapped to a robot standing still
     c_s, r2_s = g.smallest_enclosing_circle(S)
     inside = not any(_may_leave(motions[i], c_s, r2_s) for i in M)
+    swaps: list = []
     for i in M:
         for q in still_pts:
             tie = tie_poly(motions[i], motions[q], c_s) if inside else ()
@@ -220,10 +221,24 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
                     # as far from both centres all along: what the images of the other
                     # robots need if s(i) = q (the joint analogue of instants'
                     # on_circle_candidates: its swap images are these ties' roots)
-                    out += [(p, ("symmetry", f"{name}: if robot {i}'s image is robot {q}, "
-                                             f"{w}"))
-                            for p, w in image_polys(motions, members, set(M), [(i, q)])]
-    return [(p, tag) for p, tag in out if len(p) > 1]
+                    swaps += [(p, ("symmetry", f"{name}: if robot {i}'s image is robot "
+                                               f"{q}, {w}"))
+                              for p, w in image_polys(motions, members, set(M), [(i, q)])]
+    return [(p, tag) for p, tag in out if len(p) > 1] + _distinct(swaps)
+
+
+def _distinct(polys: list) -> list:
+    """The non-constant polynomials, each once up to a constant factor (the first
+    description kept): the hypotheses on images meet the same relation in many
+    branches, and equal roots cost refinements before they merge."""
+    seen, out = set(), []
+    for p, tag in polys:
+        if len(p) > 1:
+            key = tuple(pscale(p, 1 / p[-1]))
+            if key not in seen:
+                seen.add(key)
+                out.append((p, tag))
+    return out
 
 
 #: how many pairs ``x -> s(x)`` :func:`image_polys` may assume before it gives up (a
