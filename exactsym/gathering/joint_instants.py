@@ -25,7 +25,9 @@ involve at least one mover (the others do not change during the step):
   two movers mirror images in it, a mover at the centre of a rotation of the robots
   standing still or the image of another mover in it, a mover and a still robot as far
   from the SEC centre of the robots standing still -- or from the moving centroid where
-  a mover can leave that SEC or keeps the robot's distance from its centre); every
+  a mover can leave that SEC or keeps the robot's distance from its centre; with fewer
+  than two robots standing still, or a mover keeping a still robot's distance from
+  both centres, the hypotheses on images of :func:`.joint_symmetry.image_polys`); every
   ``distance`` root is tagged ``symmetry`` too (a rotation or a reflection about that
   centre can swap the two robots).  Necessary
   conditions only: a superset of the instants where a symmetry appears.
