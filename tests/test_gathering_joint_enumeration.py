@@ -413,3 +413,32 @@ def test_no_ray_or_tie_about_Rs_sec_centre_changes_inside_a_stretch(r_pts, vel):
         sa, sb = signs(Q(a)), signs(Q(b))
         if sa is not None and sb is not None:
             assert sa == sb, (a, b)
+
+
+# -- metamorphic: an exact congruence moves no instant -----------------------------------
+CONGRUENCES = [Frame(F(3, 5), F(4, 5), False, F(7), F(-3)),
+               Frame(F(-5, 13), F(12, 13), True, F(1, 2), F(9)),
+               Frame(F(1), F(0), True, F(0), F(0))]
+SCENES = {"one still": (ONE_STILL, ONE_STILL_PIECES, C1, None),
+          "swap": (SWAP, SWAP_PIECES, ORIGIN, None),
+          "moving centre": (MOVING, MOVING_PIECES, ORIGIN, R_SET)}
+
+
+@pytest.mark.parametrize("frame", CONGRUENCES)
+@pytest.mark.parametrize("scene", sorted(SCENES))
+def test_the_new_instants_survive_an_exact_congruence(scene, frame):
+    """A Pythagorean rotation, a translation and a reflection of the whole step give the
+    same exact instants with the same families."""
+    pts, pieces, centre, r_set = SCENES[scene]
+
+    def key(pts, pieces, centre):
+        w = _world(pts, pieces, centre, r_set)
+        return sorted((r.exact.text(), tuple(sorted({t[0] for t in r.tags})))
+                      for r in joint_critical_roots(pieces, w)
+                      if r.exact is not None and not is_tower(r.exact))
+
+    moved = key([frame.to_world(P(*p)) for p in pts],
+                {i: frame.piece_to_world(p) for i, p in pieces.items()},
+                frame.to_world(centre))
+    assert moved == key(pts, pieces, centre)
+    assert moved                                      # the scene has exact instants
