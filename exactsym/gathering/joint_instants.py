@@ -61,8 +61,8 @@ from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .instants import _reach, hull_indices, motion_of
 from .joint_relations import (circumcentre_motion, const, contact_poly, incircle_poly,
-                              midpoint_motion, ray_about, ray_poly, rel, right_poly, sq,
-                              still, tie_about, tie_poly)
+                              midpoint_motion, ray_about, ray_poly, rel, right_poly,
+                              seen_from, sq, still, tie_about, tie_poly)
 from .joint_symmetry import _may_leave, symmetry_polys
 from .polyroots import peval, pmul, pscale, psub, roots_in_unit, roots_of
 
@@ -147,11 +147,13 @@ def _about_moving_sec(sub: dict, movers: set, sec_roots: list, known: set) -> tu
     ks = sorted(sub)
     for sup, (m, windows) in centres.items():
         name = f"the centre of R's SEC (supports {', '.join(map(str, sup))})"
+        seen = {a: seen_from(sub[a], m) for a in ks}
         for x, a in enumerate(ks):
             for b in ks[x + 1:]:
-                for poly, tag in ((ray_about(sub[a], sub[b], m),
+                pair = (seen[a], seen[b])
+                for poly, tag in ((ray_about(sub[a], sub[b], m, pair),
                                    ("ray", f"robots {a} and {b} on one line through {name}")),
-                                  (tie_about(sub[a], sub[b], m),
+                                  (tie_about(sub[a], sub[b], m, pair),
                                    ("distance", f"robots {a} and {b} as far from {name}"))):
                     roots += [r for r in roots_in_unit(poly, tag) if _in_windows(r, windows)]
     return polys, roots

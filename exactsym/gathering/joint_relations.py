@@ -127,15 +127,25 @@ def circumcentre_motion(a: Motion, b: Motion, c: Motion) -> Motion:
     return Motion(padd(pmul(a.nx, e), ux), padd(pmul(a.ny, e), uy), pmul(a.d, e))
 
 
-def tie_about(a: Motion, b: Motion, c: Motion) -> tuple:
-    """``D_a^2 D_b^2 D_c^2 (|p_a - c|^2 - |p_b - c|^2)``, ``c`` a moving point."""
-    return psub(pmul(pmul(b.d, b.d), sq(*diff(a, c))), pmul(pmul(a.d, a.d), sq(*diff(b, c))))
+def seen_from(a: Motion, c: Motion) -> tuple:
+    """``(D_a D_c (p_a - c), D_a^2 D_c^2 |p_a - c|^2, D_a^2)``: what :func:`tie_about` and
+    :func:`ray_about` need of one robot (computed once per robot when a caller relates
+    every pair about one moving point)."""
+    v = diff(a, c)
+    return v, sq(*v), pmul(a.d, a.d)
 
 
-def ray_about(a: Motion, b: Motion, c: Motion) -> tuple:
+def tie_about(a: Motion, b: Motion, c: Motion, seen=None) -> tuple:
+    """``D_a^2 D_b^2 D_c^2 (|p_a - c|^2 - |p_b - c|^2)``, ``c`` a moving point
+    (``seen``: :func:`seen_from` of a and of b, when the caller has them)."""
+    (_, na, da2), (_, nb, db2) = seen or (seen_from(a, c), seen_from(b, c))
+    return psub(pmul(db2, na), pmul(da2, nb))
+
+
+def ray_about(a: Motion, b: Motion, c: Motion, seen=None) -> tuple:
     """``D_a D_b D_c^2 cross(p_a - c, p_b - c)``, ``c`` a moving point: zero where a and
     b are on one line through c."""
-    (ua, va), (ub, vb) = diff(a, c), diff(b, c)
+    ((ua, va), _, _), ((ub, vb), _, _) = seen or (seen_from(a, c), seen_from(b, c))
     return psub(pmul(ua, vb), pmul(va, ub))
 
 
@@ -154,5 +164,6 @@ def collinear_poly(a: Motion, b: Motion, c: Motion) -> tuple:
 
 __all__ = ["still", "const", "rel", "sq", "diff", "tie_poly", "ray_poly", "contact_poly",
            "right_poly", "incircle_poly", "dotv", "crossv", "centroid_motion",
-           "midpoint_motion", "circumcentre_motion", "tie_about", "ray_about", "pair_tie",
+           "midpoint_motion", "circumcentre_motion", "seen_from", "tie_about", "ray_about",
+           "pair_tie",
            "collinear_poly"]
