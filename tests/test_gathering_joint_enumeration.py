@@ -14,7 +14,7 @@ import pytest
 from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
-from exactsym.exact.multiquadratic import MQ
+from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
 from exactsym.gathering import joint_instants, joint_symmetry
 from exactsym.gathering.instants import motion_of
@@ -196,7 +196,8 @@ def test_a_mover_on_a_still_robots_circle_about_both_centres(monkeypatch):
 #: x-axis from (25, 0) to (35, 0): with robots 2 (10, 10) and 3 (10, -10) it supports R's
 #: SEC, whose centre (h, 0), h = (x^2 - 200) / (2x - 20), moves.  Robot 4 moves up x = 12
 #: from (12, 16/3) to (12, 28/3): at tau = 1/2 (x = 30, h = 35/2) it is on the line
-#: through that centre and robot 2, at (12, 22/3).
+#: through that centre and robot 2, at (12, 22/3); it crossed that line once before, at
+#: tau = -7/6 + sqrt(13)/3 (about 0.035: the ray's quadratic factor).
 MOVING = [(0, 0), (2, 0), (10, 10), (10, -10), (12, F(16, 3)), (25, 0)]
 MOVING_PIECES = {4: seg((12, F(16, 3)), (12, F(28, 3))), 5: seg((25, 0), (35, 0))}
 R_SET = {2, 3, 4, 5}
@@ -218,11 +219,17 @@ def test_rays_about_Rs_moving_sec_centre(monkeypatch):
     assert g.smallest_enclosing_circle([pts[k] for k in sorted(R_SET)])[0] == \
         P(F(35, 2), 0)
     assert _on_ray_2_4(pts)
+    first = Q(F(-7, 6)) + sqrt_rational(13) / 3
+    assert ("ray", "robots 2 and 4 on one line through the centre of R's SEC (supports "
+            "2, 3, 5)") in _tags_at(MOVING_PIECES, w, first)
+    assert _on_ray_2_4([MOVING_PIECES[k].at(first) if k in MOVING_PIECES else P(*p)
+                        for k, p in enumerate(MOVING)])
+    # a fresh Look at the first of the two instants, exactly, catches the stub there
     w = _step(MOVING, 4, MOVING_PIECES, ORIGIN, _on_ray_2_4, r_set=R_SET)
     with pytest.raises(Violation) as err:
         w.advance_together([(4, None, False), (5, None, False)])
     v = err.value
-    assert (v.invariant, v.robots, _instant(v)) == ("I3", (4,), "1/2")
+    assert (v.invariant, v.robots, _instant(v)) == ("I3", (4,), "-7/6 + sqrt(13)/3")
     # before: the rays about the still robots' SEC centre (10, 0) only
     monkeypatch.setattr(joint_instants, "_about_moving_sec", lambda *a, **k: ([], []))
     assert not [t for t in _tags_at(MOVING_PIECES, _world(MOVING, MOVING_PIECES, ORIGIN,
@@ -282,10 +289,12 @@ def test_relations_about_moving_points_have_the_signs_of_their_definitions(p1, p
     zt = (peval(z.nx, t) / peval(z.d, t), peval(z.ny, t) / peval(z.d, t))
     assert zt == g.scale(g.add(g.add(pa, pb), pq), Q(F(1, 3)))
     for c, cv in ((circ, cc), (z, zt)):
-        assert peval(tie_about(a, q, c), t).sign() == \
-            (g.dist2(pa, cv) - g.dist2(pq, cv)).sign()
-        assert peval(ray_about(a, q, c), t).sign() == \
-            g.cross(g.sub(pa, cv), g.sub(pq, cv)).sign()
+        sd = peval(c.d, t).sign()              # the moving point's denominator's sign
+        for u, pu in ((q, pq), (b, pb)):
+            assert peval(tie_about(a, u, c), t).sign() == \
+                sd * (g.dist2(pa, cv) - g.dist2(pu, cv)).sign()
+            assert peval(ray_about(a, u, c), t).sign() == \
+                sd * g.cross(g.sub(pa, cv), g.sub(pu, cv)).sign()
     assert peval(pair_tie(a, b, q, a), t).sign() == \
         (g.dist2(pa, pb) - g.dist2(pq, pa)).sign()
 

@@ -113,7 +113,8 @@ def _about_moving_sec(sub: dict, movers: set, sec_roots: list, known: set) -> tu
     of three, a rational function of tau (:func:`.joint_relations.midpoint_motion`,
     :func:`.joint_relations.circumcentre_motion`); every pair of R (two robots standing
     still too: the centre moves) gets its ray and its tie about it, denominators cleared
-    by squares, and only their roots in that stretch are kept (``roots``; a root whose
+    (:func:`.joint_relations.tie_about`: the centre's denominator, of constant sign on
+    the stretch, divided out), and only their roots in that stretch are kept (``roots``; a root whose
     interval still straddles the stretch's end after refining is kept: a superset).  A
     support whose centre stays put (three robots standing still, a mover sliding on the
     circle of the others) is a constant centre: the relations that involve a mover

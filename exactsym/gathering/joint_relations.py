@@ -128,25 +128,35 @@ def circumcentre_motion(a: Motion, b: Motion, c: Motion) -> Motion:
 
 
 def seen_from(a: Motion, c: Motion) -> tuple:
-    """``(D_a D_c (p_a - c), D_a^2 D_c^2 |p_a - c|^2, D_a^2)``: what :func:`tie_about` and
-    :func:`ray_about` need of one robot (computed once per robot when a caller relates
-    every pair about one moving point)."""
-    v = diff(a, c)
-    return v, sq(*v), pmul(a.d, a.d)
+    """What :func:`tie_about` and :func:`ray_about` need of one robot ``a`` and the
+    moving point ``c = C / D_c``: ``(N_a, D_a, |N_a|^2, D_a^2, N_a . C, cross(N_a, C))``
+    (computed once per robot when a caller relates every pair about one point)."""
+    C = (c.nx, c.ny)
+    return ((a.nx, a.ny), a.d, sq(a.nx, a.ny), pmul(a.d, a.d),
+            padd(pmul(a.nx, C[0]), pmul(a.ny, C[1])), psub(pmul(a.nx, C[1]), pmul(a.ny, C[0])))
 
 
 def tie_about(a: Motion, b: Motion, c: Motion, seen=None) -> tuple:
-    """``D_a^2 D_b^2 D_c^2 (|p_a - c|^2 - |p_b - c|^2)``, ``c`` a moving point
-    (``seen``: :func:`seen_from` of a and of b, when the caller has them)."""
-    (_, na, da2), (_, nb, db2) = seen or (seen_from(a, c), seen_from(b, c))
-    return psub(pmul(db2, na), pmul(da2, nb))
+    """``D_a^2 D_b^2 D_c (|p_a - c|^2 - |p_b - c|^2)``, ``c = C / D_c`` a moving point:
+    ``D_c (D_b^2 |N_a|^2 - D_a^2 |N_b|^2) - 2 (D_a D_b^2 N_a.C - D_a^2 D_b N_b.C)`` (the
+    ``|C|^2`` terms cancel, so one factor ``D_c`` is divided out: the sign is the
+    relation's times ``sign(D_c)``, constant wherever ``c`` is defined).  ``seen``:
+    :func:`seen_from` of a and of b, when the caller has them."""
+    (_, da, na2, da2, nca, _), (_, db, nb2, db2, ncb, _) = \
+        seen or (seen_from(a, c), seen_from(b, c))
+    return psub(pmul(c.d, psub(pmul(db2, na2), pmul(da2, nb2))),
+                pscale(psub(pmul(pmul(da, db2), nca), pmul(pmul(da2, db), ncb)),
+                       MQ.rational(2)))
 
 
 def ray_about(a: Motion, b: Motion, c: Motion, seen=None) -> tuple:
-    """``D_a D_b D_c^2 cross(p_a - c, p_b - c)``, ``c`` a moving point: zero where a and
-    b are on one line through c."""
-    ((ua, va), _, _), ((ub, vb), _, _) = seen or (seen_from(a, c), seen_from(b, c))
-    return psub(pmul(ua, vb), pmul(va, ub))
+    """``D_a D_b D_c cross(p_a - c, p_b - c)``, ``c = C / D_c`` a moving point:
+    ``D_c cross(N_a, N_b) - D_b cross(N_a, C) + D_a cross(N_b, C)``, zero where a and b
+    are on one line through c (sign: the relation's times ``sign(D_c)``)."""
+    ((xa, ya), da, _, _, _, ka), ((xb, yb), db, _, _, _, kb) = \
+        seen or (seen_from(a, c), seen_from(b, c))
+    return padd(psub(pmul(c.d, psub(pmul(xa, yb), pmul(ya, xb))), pmul(db, ka)),
+                pmul(da, kb))
 
 
 def pair_tie(a: Motion, b: Motion, c: Motion, d: Motion) -> tuple:
