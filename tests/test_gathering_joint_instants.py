@@ -369,6 +369,8 @@ def test_every_symmetric_instant_of_a_joint_step_is_a_symmetry_root(data, kind):
     assert symmetric_at(ts)
     if symmetric_at(ts + F(1, 97)):
         return             # symmetric a moment later too: no instant where it appears
+    if len(start) - len(movers) < 2:
+        return             # fewer than two robots standing still: not enumerated
     if len({(str(p[0]), str(p[1])) for p in start}) < len(start):
         return                                    # two robots at one point: not a state
     at = [movers[k].at(Q(ts)) if k in movers else p for k, p in enumerate(start)]
