@@ -25,16 +25,20 @@ involve at least one mover (the others do not change during the step):
   two movers mirror images in it, a mover at the centre of a rotation of the robots
   standing still or the image of another mover in it, a mover and a still robot as far
   from the SEC centre of the robots standing still -- or from the moving centroid where
-  a mover can leave that SEC or keeps the robot's distance from its centre); every
+  a mover can leave that SEC or keeps the robot's distance from its centre; with fewer
+  than two robots standing still, or a mover keeping a still robot's distance from
+  both centres, the hypotheses on images of :func:`.joint_symmetry.image_polys`); every
   ``distance`` root is tagged ``symmetry`` too (a rotation or a reflection about that
   centre can swap the two robots).  Necessary
   conditions only: a superset of the instants where a symmetry appears.
 
 About R's own SEC centre (the paper layer orders R about it), when R is not every
 robot or A1 = sec-r: the ``ray`` and ``distance`` relations among R's robots about the
-SEC centre of R's robots standing still, as :mod:`.instants` does for one mover (that
-centre moves only where a mover of R is a support: the SEC-of-R instants; the ties
-about the moving centre are not enumerated, only the symmetry family's centroid ties).
+SEC centre of R's robots standing still, as :mod:`.instants` does for one mover; and
+when a mover of R can leave that SEC (it is then a support, and the centre moves), on
+each stretch between two SEC-of-R instants (a fixed support there) the rays and ties of
+every pair of R about the moving centre of that support, a rational function of tau
+(:func:`_about_moving_sec`; the roots in that stretch).
 
 A superset of the events above: a candidate where nothing happens costs a Look.
 :func:`joint_look_points` gives, as :func:`.instants.look_points` does, each instant
@@ -56,10 +60,11 @@ from flint import fmpq
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .instants import _reach, hull_indices, motion_of
-from .joint_relations import (const, contact_poly, incircle_poly, ray_poly, rel,
-                              right_poly, sq, still, tie_poly)
-from .joint_symmetry import symmetry_polys
-from .polyroots import pmul, pscale, psub, roots_of
+from .joint_relations import (circumcentre_motion, const, contact_poly, incircle_poly,
+                              midpoint_motion, ray_about, ray_poly, rel, right_poly,
+                              seen_from, sq, still, tie_about, tie_poly)
+from .joint_symmetry import _may_leave, symmetry_polys
+from .polyroots import peval, pmul, pscale, psub, roots_in_unit, roots_of
 
 
 # -- the families --------------------------------------------------------------------------
@@ -95,6 +100,78 @@ def _sec(motions: dict, movers, tag: str) -> list:
     return out
 
 
+def _at(m, t):
+    return (peval(m.nx, t) / peval(m.d, t), peval(m.ny, t) / peval(m.d, t))
+
+
+def _about_moving_sec(sub: dict, movers: set, sec_roots: list, known: set) -> tuple:
+    """``(polys, roots)``: the ``ray`` and ``distance`` relations of R's robots about
+    R's SEC centre while a mover of R may support that SEC (the centre moves).  Between
+    two consecutive roots of the SEC of R family (``sec_roots``: its support changes
+    there) the support is fixed: read exactly at one rational instant of each stretch,
+    the centre there is the moving midpoint of two supports or the moving circumcentre
+    of three, a rational function of tau (:func:`.joint_relations.midpoint_motion`,
+    :func:`.joint_relations.circumcentre_motion`); every pair of R (two robots standing
+    still too: the centre moves) gets its ray and its tie about it, denominators cleared
+    (:func:`.joint_relations.tie_about`: the centre's denominator, of constant sign on
+    the stretch, divided out), and only their roots in that stretch are kept (``roots``; a root whose
+    interval still straddles the stretch's end after refining is kept: a superset).  A
+    support whose centre stays put (three robots standing still, a mover sliding on the
+    circle of the others) is a constant centre: the relations that involve a mover
+    about it (``polys``), unless ``known`` holds it already."""
+    if len(sub) < 3:
+        return [], []          # two robots: on one line through their midpoint, as far
+    half = MQ.rational(fmpq(1, 2))
+    samples = ([MQ.rational(sec_roots[0].lo)] + [MQ.rational(r.hi) for r in sec_roots]
+               if sec_roots else [half])
+    ends = [fmpq(0)] + [r.lo for r in sec_roots], [r.hi for r in sec_roots] + [fmpq(1)]
+    centres: dict = {}
+    polys: list = []
+    for k, t in enumerate(samples):
+        pts = {j: _at(m, t) for j, m in sub.items()}
+        c, r2 = g.smallest_enclosing_circle(list(pts.values()))
+        on = sorted((j for j in pts if g.dist2(pts[j], c) == r2),
+                    key=lambda j: (j in movers, j))
+        pair = next(((a, b) for a, b in combinations(on, 2)
+                     if g.scale(g.add(pts[a], pts[b]), half) == c), None)
+        sup = pair if pair is not None and len([j for j in on if j not in movers]) < 3 \
+            else tuple(on[:3])
+        m = midpoint_motion(*(sub[j] for j in sup)) if len(sup) == 2 else \
+            circumcentre_motion(*(sub[j] for j in sup))
+        if not (psub(m.nx, pscale(m.d, c[0])) or psub(m.ny, pscale(m.d, c[1]))):
+            if c not in known:                   # it stays put on this stretch
+                known.add(c)
+                polys += _about(sub, movers, c, "the centre of R's SEC")
+            continue
+        centres.setdefault(sup, (m, []))[1].append((ends[0][k], ends[1][k]))
+    roots: list = []
+    ks = sorted(sub)
+    for sup, (m, windows) in centres.items():
+        name = f"the centre of R's SEC (supports {', '.join(map(str, sup))})"
+        seen = {a: seen_from(sub[a], m) for a in ks}
+        for x, a in enumerate(ks):
+            for b in ks[x + 1:]:
+                pair = (seen[a], seen[b])
+                for poly, tag in ((ray_about(sub[a], sub[b], m, pair),
+                                   ("ray", f"robots {a} and {b} on one line through {name}")),
+                                  (tie_about(sub[a], sub[b], m, pair),
+                                   ("distance", f"robots {a} and {b} as far from {name}"))):
+                    roots += [r for r in roots_in_unit(poly, tag) if _in_windows(r, windows)]
+    return polys, roots
+
+
+def _in_windows(r, windows, rounds: int = 48) -> bool:
+    """Can root ``r`` lie in one of the closed ``windows`` (refined until its interval
+    is inside one or outside all; still straddling after ``rounds``: kept)."""
+    for _ in range(rounds):
+        if any(lo <= r.lo and r.hi <= hi for lo, hi in windows):
+            return True
+        if all(r.hi <= lo or r.lo >= hi for lo, hi in windows):
+            return False
+        r.refine()
+    return True
+
+
 def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
     """Every critical instant strictly inside the step's interval, as separated
     :class:`.polyroots.Root`\\ s (``pieces``: mover -> the piece it moves along)."""
@@ -120,25 +197,36 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
             if k != i and (k not in movers or k > i):
                 polys.append((contact_poly(motions[i], motions[k], MQ.rational(4)),
                               ("pattern", f"robots {i} and {k} touching")))
+    extra: list = []
     polys += _sec(motions, movers, "SEC of all")
     polys += symmetry_polys(motions, movers, sorted(motions), "all robots", centres)
     rsets = {world.robots[i].r_set for i in movers}
     for rset in sorted(rsets, key=sorted):
         if rset and (sec_r or len(rset) < n):
             sub = {k: m for k, m in motions.items() if k in rset}
-            polys += _sec(sub, movers & set(sub), "SEC of R")
+            sec_r_polys = _sec(sub, movers & set(sub), "SEC of R")
             # the paper layer orders R about R's own SEC centre: the rays and ties about
             # it (the centre of R's robots standing still: it moves only where a mover
             # of R is a support, at the SEC of R instants above), as instants.py does
             known = set(centres)
             stills = [const(m) for k, m in sub.items() if k not in movers]
+            c_r = None
             if len(stills) >= 2 and movers & set(sub):
-                c_r = g.smallest_enclosing_circle(stills)[0]
+                c_r, r2_r = g.smallest_enclosing_circle(stills)
                 if c_r not in centres:
                     polys += _about(sub, movers, c_r, "the centre of R's SEC")
                 known.add(c_r)
+            if movers & set(sub) and (c_r is None or any(
+                    _may_leave(sub[i], c_r, r2_r) for i in movers & set(sub))):
+                # a mover of R can be a support of R's SEC: its centre moves
+                sec_roots = roots_of((p, t) for p, t in sec_r_polys if p)
+                more, found = _about_moving_sec(sub, movers & set(sub), sec_roots, known)
+                polys += more
+                extra += sec_roots + found
+            else:
+                polys += sec_r_polys
             polys += symmetry_polys(motions, movers, sorted(sub), "R", known)
-    roots = roots_of((poly, tag) for poly, tag in polys if poly)
+    roots = roots_of(((poly, tag) for poly, tag in polys if poly), extra)
     for r in roots:
         # a rotation or a reflection about that centre can swap two robots as far from
         # it (joint_symmetry, case B): the ties are symmetry candidates too (the same

@@ -39,10 +39,17 @@ product of the movers' denominators (1 on segments, ``1 + T^2 tau^2`` on an arc)
 mirror or rotation relation has degree at most 4, a tie about ``c_S`` at most 4, a tie
 about the moving centroid at most ``2 + 2 deg W`` (2 on segments; 4 per mover on an arc).
 
-Not enumerated: a set X with fewer than two robots standing still (at least four movers
-among five robots: its symmetries are not tied to fixed lines); in case B, a mover that
-keeps a still robot's distance from both the SEC centre and the moving centroid all the
-time (both ties vanish identically).
+A set X with fewer than two robots standing still (its symmetries are tied to no fixed
+line), and in case B a mover ``i`` that keeps a still robot ``q``'s distance from both
+the SEC centre and the moving centroid all the time (both ties vanish identically), get
+the **hypotheses on images** instead (:func:`image_polys`): a symmetry permutes X and
+preserves distances, so with ``s(i) = q`` assumed (or, with no hypothesis, for X's first
+robot and each possible image), each other robot ``c`` goes to some ``d`` with
+``|c - z| = |d - z|`` and ``|c - i| = |d - q|``: polynomials in tau; where all of them
+vanish for some ``d`` that pair is assumed too (up to :data:`DEPTH` pairs).  Not
+enumerated: a hypothesis still open after :data:`DEPTH` pairs, each relation of its next
+robot vanishing identically for some image (a step that keeps that many distance
+relations all along).
 """
 
 from __future__ import annotations
@@ -50,7 +57,8 @@ from __future__ import annotations
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .instants import Motion, _centroid, dist2_poly, mirror_lines, smallest_distance_group
-from .joint_relations import const, crossv, diff, dotv, rel, tie_poly
+from .joint_relations import (centroid_motion, collinear_poly, const, crossv, diff, dotv,
+                              pair_tie, rel, tie_about, tie_poly)
 from .polyroots import padd, pgcd, pmul, pscale, psub, roots_in_unit
 
 
@@ -155,8 +163,12 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
     enumerates already (tagged ``symmetry`` by it)."""
     M = sorted(set(members) & set(movers))
     still_pts = {k: const(motions[k]) for k in members if k not in movers}
-    if not M or len(still_pts) < 2:
+    if not M:
         return []
+    if len(still_pts) < 2:
+        # no fixed lines or rotations to start from: the hypotheses on images below
+        return _distinct([(p, ("symmetry", f"{name}: {w}")) for p, w in
+                          image_polys(motions, members, set(M), [])])
     S = list(still_pts.values())
     z = _centroid(S)
     out: list = []
@@ -189,6 +201,7 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
     # B: a mover mapped to a robot standing still
     c_s, r2_s = g.smallest_enclosing_circle(S)
     inside = not any(_may_leave(motions[i], c_s, r2_s) for i in M)
+    swaps: list = []
     for i in M:
         for q in still_pts:
             tie = tie_poly(motions[i], motions[q], c_s) if inside else ()
@@ -200,11 +213,101 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
             else:
                 # the SEC moves, or robot i keeps q's distance from its centre all along
                 # (an arc about it): the centroid is fixed by every symmetry too
-                out.append((centroid_tie(motions, list(members), set(M), i, q),
-                            ("symmetry", f"{name}: robots {i} and {q} as far from the "
-                                         f"centroid")))
-    return [(p, tag) for p, tag in out if len(p) > 1]
+                ct = centroid_tie(motions, list(members), set(M), i, q)
+                if ct:
+                    out.append((ct, ("symmetry", f"{name}: robots {i} and {q} as far from "
+                                                 f"the centroid")))
+                else:
+                    # as far from both centres all along: what the images of the other
+                    # robots need if s(i) = q (the joint analogue of instants'
+                    # on_circle_candidates: its swap images are these ties' roots)
+                    swaps += [(p, ("symmetry", f"{name}: if robot {i}'s image is robot "
+                                               f"{q}, {w}"))
+                              for p, w in image_polys(motions, members, set(M), [(i, q)])]
+    return [(p, tag) for p, tag in out if len(p) > 1] + _distinct(swaps)
+
+
+def _distinct(polys: list) -> list:
+    """The non-constant polynomials, each once up to a constant factor (the first
+    description kept): the hypotheses on images meet the same relation in many
+    branches, and equal roots cost refinements before they merge."""
+    seen, out = set(), []
+    for p, tag in polys:
+        if len(p) > 1:
+            key = tuple(pscale(p, 1 / p[-1]))
+            if key not in seen:
+                seen.add(key)
+                out.append((p, tag))
+    return out
+
+
+#: how many pairs ``x -> s(x)`` :func:`image_polys` may assume before it gives up (a
+#: hypothesis whose every consequence holds all along: see its docstring)
+DEPTH = 3
+
+
+def image_polys(motions: dict, members, movers: set, hyp: list, depth: int = DEPTH,
+                _z=None) -> list:
+    """``[(poly, description)]``: necessary conditions for a symmetry ``s`` (not the
+    identity) of the robots ``members`` at time tau with ``s(x) = y`` for every pair of
+    ``hyp``; needs no robot standing still.
+
+    ``s`` is an isometry that permutes the robots and fixes their centroid ``z`` (which
+    moves with the movers), so for a robot ``c`` with ``s(c) = d``: ``|c - z| = |d - z|``
+    and ``|c - x| = |d - y|`` for every ``(x, y)`` of ``hyp``.  For one robot ``c`` (the
+    first not yet mapped, robots standing still first) and every candidate image ``d``
+    (not already an image) the first of these relations that does not vanish
+    identically is listed (a nonzero constant: ``d`` is impossible); when all of them
+    vanish for some ``d`` (``c -> d`` is consistent all along: ``d = c`` under the empty
+    hypothesis, a swap whose ties vanish) that ``d`` is assumed in turn, up to ``depth``
+    pairs.  Two fixed robots ``x, y`` make ``s`` the reflection in the line ``xy`` (not
+    the identity): then ``z`` is on it (one polynomial), and ``c`` fixed means ``c`` on
+    it.  A hypothesis that maps every robot, each relation vanishing identically, is a
+    symmetry all along, or no isometry: it appears at no instant.  Left out (a gap,
+    not a superset there): a branch still open after ``depth`` assumptions, each
+    relation of its next robot vanishing identically for some image."""
+    members = sorted(members, key=lambda k: (k in movers, k))
+    if len(members) < 3:
+        return []              # two points are always symmetric (a half turn swaps them)
+    mo = {k: motions[k] for k in members}
+    z = _z if _z is not None else centroid_motion(motions, members)
+    fixed = [x for x, y in hyp if x == y]
+    line = fixed[:2] if len(fixed) >= 2 else None
+    if line:
+        on = collinear_poly(mo[line[0]], mo[line[1]], z)
+        if on:
+            return [(on, f"the centroid on the line through robots {line[0]} and "
+                         f"{line[1]} (a reflection fixing both)")]
+    mapped, images = {x for x, _ in hyp}, {y for _, y in hyp}
+    todo = [c for c in members if c not in mapped]
+    if not todo:
+        return []
+    c = todo[0]
+    out, consistent = [], []
+    for d in members:
+        if d in images:
+            continue
+        if line and d == c:
+            rels = [(collinear_poly(mo[line[0]], mo[line[1]], mo[c]),
+                     f"robot {c} on the line through robots {line[0]} and {line[1]}")]
+        else:
+            rels = [(lambda d=d: tie_about(mo[c], mo[d], z),
+                     f"robots {c} and {d} as far from the centroid")]
+            rels += [(lambda d=d, x=x, y=y: pair_tie(mo[c], mo[x], mo[d], mo[y]),
+                      f"|{c} - {x}| = |{d} - {y}|") for x, y in hyp]
+        for make, what in rels:
+            p = make() if callable(make) else make
+            if p:
+                if len(p) > 1:
+                    out.append((p, what))
+                break
+        else:
+            consistent.append(d)
+    for d in consistent:
+        if depth > 0:
+            out += image_polys(motions, members, movers, hyp + [(c, d)], depth - 1, z)
+    return out
 
 
 __all__ = ["symmetry_polys", "mirror_pair_poly", "rotation_pair_poly", "centroid_tie",
-           "rotations_of"]
+           "rotations_of", "image_polys"]
