@@ -32,6 +32,7 @@ from flint import fmpq
 
 from ..exact.mq_closure import RATIONAL_BITS, closure_sqrt, decided_sqrt  # noqa: F401
 from ..exact.multiquadratic import MQ
+from .algebraic_instants import algebraic_root, algebraic_sqrt, is_algebraic
 from .tower_numbers import biquadratic_root, is_tower, quadratic_root, tower_sqrt
 
 ZERO = MQ()
@@ -135,6 +136,8 @@ def mq_sqrt(x, _depth: int = 0, big_ok: bool = False):
     level when it has none there (None only when that cannot be decided)."""
     if is_tower(x):                     # a tower number: its root in the tower
         return tower_sqrt(x) if x.sign() > 0 else None
+    if is_algebraic(x):                 # a number of K(alpha): not built
+        return algebraic_sqrt(x)
     return closure_sqrt(x, _depth, big_ok)
 
 
@@ -173,6 +176,8 @@ def exact_root_hook(poly, lo, hi):
                 r = exact_root_hook(factor, lo, hi)
                 if r is not None:
                     return r
+    if len(poly) >= 4:      # factored over K: a root of K(alpha) (algebraic_instants)
+        return algebraic_root(poly, lo, hi)
     return None
 
 
@@ -340,8 +345,13 @@ def _same_root(r: Root, s: Root) -> bool:
 
 def _comparable(x, y) -> bool:
     """Can ``==`` decide: not two numbers of different towers (their canonical forms
-    differ even for equal values; :func:`_same_root` then uses a polynomial)."""
-    return not (is_tower(x) and is_tower(y) and x.tower is not y.tower)
+    differ even for equal values; :func:`_same_root` then uses a polynomial), nor of two
+    different roots' fields (:mod:`.algebraic_instants`)."""
+    if is_tower(x) and is_tower(y):
+        return x.tower is y.tower
+    if is_algebraic(x) and is_algebraic(y):        # two instants' fields: not mixed
+        return x.root is y.root
+    return True
 
 
 def separate(roots: list, max_rounds: int | None = None) -> list:

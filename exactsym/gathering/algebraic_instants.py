@@ -1,0 +1,474 @@
+"""Critical instants at roots of cubic (and other) factors that square roots do not express.
+
+A critical instant of a motion (:mod:`.instants`, :mod:`.joint_instants`) is a real root
+``alpha`` of a square-free polynomial ``p`` with multiquadratic coefficients, isolated by
+a rational interval (:mod:`.polyroots`).  Linear and quadratic factors, and the quartics
+that square roots solve, are exact already (``MQ`` numbers, tower numbers).  This module
+makes the other roots exact: the mover's point at ``tau = alpha`` has coordinates in
+``K(alpha)``, and the fresh Look runs on them.
+
+**Factoring first.**  :func:`factor_over_k` factors ``p`` into irreducible factors over
+``K = Q(sqrt q : q a prime of p's coefficients)`` by Trager's algorithm: the norm
+``N(x) = prod_sigma sigma(p)(x - s theta)`` over the automorphisms of ``K`` (each flips the
+sign of one ``sqrt q``; ``theta`` = the sum of the ``sqrt q``, a primitive element; the
+shift ``s = 0, 1, 2, ...`` until ``N`` is square-free) is a rational polynomial, python-flint
+factors it over Q, and the gcd over ``K`` of ``p(x - s theta)`` with each rational factor is
+an irreducible factor over ``K`` (Trager 1976, Algebraic factoring and rational function
+integration, valid for any number field).  ``alpha``'s factor ``f`` is the one that changes
+sign on the isolating interval (the interval holds one root of ``p``, a simple one).
+
+**Why reduction modulo f is canonical for every multiquadratic field.**  The gathering code
+mixes ``alpha``'s numbers with positions holding square roots that ``K`` lacks (other robots,
+layer slots).  So ``f`` must stay irreducible over every multiquadratic extension ``K'`` of
+``K``; then ``{1, alpha, ..., alpha^(d-1)}`` is a basis of ``K'(alpha)`` over ``K'``, a number
+reduced modulo ``f`` has one representation, ``==`` and ``hash`` are structural, a
+non-constant one is never a multiquadratic number, and ``g(alpha) = 0`` iff ``f | g``.
+
+* ``f`` of odd degree ``d``: over ``K' = K(sqrt q)``, ``[K'(alpha):K] = 2 d'`` is a multiple
+  of ``d``, so ``d' = d`` (and by induction over any number of square roots).
+* ``f`` of degree 4: its Galois group over ``K`` is S4 or A4 iff its resolvent cubic is
+  irreducible over ``K`` (tested by the same factoring).  Then ``K(alpha)`` has no field
+  strictly between ``K`` and it (the stabiliser of a root, S3 or C3, is maximal), so
+  ``sqrt q`` is not in ``K(alpha)`` and ``[K'(alpha):K'] = 4``; the group over ``K'`` is
+  again S4 or A4 (index at most 2), so the argument repeats.
+* other even degrees, and quartics with a reducible resolvent (D4, C4, V4: their roots are
+  nested square roots that :mod:`.tower_numbers` does not build): no exact value
+  (``sided``, as before).
+
+**Signs**: an Arb ball of ``alpha`` from its rational interval, refined by bisection (signs
+of ``f`` at rationals: an Arb evaluation, exact evaluation when the ball holds 0), and the
+element's value at it, precision doubled until the ball excludes 0 (a non-zero element
+has a non-zero value, so this ends).  **Square roots** of numbers of ``K(alpha)`` (a radial
+target of the mover at the instant) are not built: :func:`algebraic_sqrt` returns None,
+the caller raises ``ValueError`` and the fresh Look at that instant is ``undecided`` (the
+Looks just before and after it still run).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from flint import arb, ctx, fmpq, fmpq_poly, fmpz
+
+from ..exact.field import FieldElement
+from ..exact.multiquadratic import MQ
+
+__all__ = ["AlgebraicNumber", "AlgebraicRoot", "factor_over_k", "algebraic_root",
+           "is_algebraic", "algebraic_sqrt", "MAX_NORM_DEGREE"]
+
+ZERO = MQ()
+ONE = MQ.rational(1)
+
+#: The largest degree of the rational norm factored (degree of p times 2^#primes of K).
+MAX_NORM_DEGREE = 96
+
+
+# -- polynomials over MQ (tuples, lowest degree first) -----------------------------------
+def _trim(p) -> tuple:
+    p = list(p)
+    while p and p[-1].is_zero():
+        p.pop()
+    return tuple(p)
+
+
+def _add(p, q) -> tuple:
+    n = max(len(p), len(q))
+    return _trim((p[i] if i < len(p) else ZERO) + (q[i] if i < len(q) else ZERO)
+                 for i in range(n))
+
+
+def _mul(p, q) -> tuple:
+    if not p or not q:
+        return ()
+    out = [ZERO] * (len(p) + len(q) - 1)
+    for i, a in enumerate(p):
+        if not a.is_zero():
+            for j, b in enumerate(q):
+                out[i + j] = out[i + j] + a * b
+    return _trim(out)
+
+
+def _divmod(p, q) -> tuple:
+    p, q = list(_trim(p)), _trim(q)
+    inv = 1 / q[-1]
+    quot = [ZERO] * max(len(p) - len(q) + 1, 0)
+    while len(p) >= len(q) and p:
+        k = len(p) - len(q)
+        c = p[-1] * inv
+        quot[k] = c
+        for i, b in enumerate(q):
+            p[i + k] = p[i + k] - c * b
+        p = list(_trim(p))
+    return _trim(quot), tuple(p)
+
+
+def _monic(p) -> tuple:
+    inv = 1 / p[-1]
+    return tuple(c * inv for c in p)
+
+
+def _gcd(p, q) -> tuple:
+    p, q = _trim(p), _trim(q)
+    while q:
+        p, q = q, _divmod(p, q)[1]
+    return _monic(p) if p else p
+
+
+def _eval(p, x):
+    acc = ZERO
+    for c in reversed(p):
+        acc = acc * x + c
+    return acc
+
+
+def _shift(p, c) -> tuple:
+    """``p(x + c)`` (Horner)."""
+    acc: tuple = ()
+    for a in reversed(p):
+        acc = _add(_mul(acc, (c, ONE)), (a,))
+    return acc
+
+
+def _primes(p) -> list:
+    out: set = set()
+    for c in p:
+        for m in c.radicands():
+            out |= {int(q) for q, _ in fmpz(m).factor()}
+    return sorted(out)
+
+
+def _rational_poly(p) -> fmpq_poly:
+    return fmpq_poly([c.to_fmpq() for c in p])
+
+
+def _from_rational(h: fmpq_poly) -> tuple:
+    return tuple(MQ.rational(c) for c in h.coeffs())
+
+
+# -- factoring over K = Q(sqrt primes) ---------------------------------------------------------
+@lru_cache(maxsize=512)
+def factor_over_k(p: tuple):
+    """The monic irreducible factors of the square-free ``p`` (MQ coefficients, degree >= 1)
+    over ``K``, the multiquadratic field of its coefficients' primes (Trager's algorithm);
+    None when the norm's degree exceeds :data:`MAX_NORM_DEGREE`."""
+    p = _monic(_trim(p))
+    primes = _primes(p)
+    if len(p) - 1 << len(primes) > MAX_NORM_DEGREE:
+        return None
+    if not primes:
+        return tuple(_monic(_from_rational(h)) for h, _ in _rational_poly(p).factor()[1])
+    theta = MQ({q: fmpq(1) for q in primes})
+    for s in range(0, 12):
+        ps = _shift(p, -theta * s) if s else p          # ps(x) = p(x - s theta)
+        norm = ps
+        for q in primes:                     # the product over the group, one prime at a time
+            norm = _mul(norm, tuple(c.conjugate(q) for c in norm))
+        n = _rational_poly(norm)
+        if n.gcd(n.derivative()).degree() > 0:
+            continue                         # not square-free: another shift
+        out = []
+        for h, _ in n.factor()[1]:
+            g = _gcd(ps, _from_rational(h))
+            if len(g) > 1:
+                out.append(_monic(_shift(g, theta * s)) if s else g)
+        return tuple(out)
+    return None
+
+
+def _changes_sign(f, lo, hi) -> bool:
+    return _eval(f, MQ.rational(lo)).sign() * _eval(f, MQ.rational(hi)).sign() < 0
+
+
+def _stable(f) -> bool:
+    """Is the irreducible ``f`` over K irreducible over every multiquadratic extension
+    of K (module docstring)?"""
+    d = len(f) - 1
+    if d % 2:
+        return True
+    if d == 4:
+        e, dd, c, b = f[3], f[2], f[1], f[0]          # x^4 + e x^3 + dd x^2 + c x + b
+        resolvent = (-(e * e * b - dd * b * 4 + c * c), e * c - b * 4, -dd, ONE)
+        factors = factor_over_k(_trim(resolvent))
+        return factors is not None and len(factors) == 1 and len(factors[0]) == 4
+    return False
+
+
+def algebraic_root(p, lo, hi):
+    """The root of the square-free ``p`` in ``(lo, hi)`` (rationals, one root of ``p``
+    inside, none at the ends), exact: an MQ (a linear factor over K), the factor's
+    quadratic root (tower numbers, :func:`.tower_numbers.quadratic_root`), or an
+    :class:`AlgebraicNumber` (a factor of odd degree, or a quartic with an S4 or A4 group);
+    None otherwise (other even degrees, a quartic of group D4, C4 or V4, a norm too big)."""
+    factors = factor_over_k(_trim(p))
+    if factors is None:
+        return None
+    held = [f for f in factors if _changes_sign(f, lo, hi)]
+    if len(held) != 1:
+        return None
+    f = held[0]
+    if len(f) == 2:
+        return -f[0]
+    if len(f) == 3:
+        from .tower_numbers import quadratic_root
+        return quadratic_root(f[0], f[1], f[2], lo, hi)
+    if not _stable(f):
+        return None
+    root = AlgebraicRoot.of(f, fmpq(lo), fmpq(hi))
+    return AlgebraicNumber(root, (ZERO, ONE))
+
+
+# -- the number type ------------------------------------------------------------------------
+class AlgebraicRoot:
+    """``alpha``: the root of the monic ``f`` (irreducible over every multiquadratic
+    field, :func:`_stable`) in the rational interval ``(lo, hi)``; one object per root
+    (:meth:`of`), so numbers of the same instant share it."""
+
+    _known: dict = {}            # f -> [AlgebraicRoot]
+
+    def __init__(self, f: tuple, lo: fmpq, hi: fmpq):
+        self.f, self.lo, self.hi = f, lo, hi
+        self.degree = len(f) - 1
+        self._balls: dict = {}
+
+    @classmethod
+    def of(cls, f: tuple, lo: fmpq, hi: fmpq) -> "AlgebraicRoot":
+        for r in cls._known.setdefault(f, []):
+            # (lo, hi) holds one root of f: r's root is in it iff it is the same root
+            while not (lo <= r.lo and r.hi <= hi) and not (r.hi <= lo or hi <= r.lo):
+                r._bisect()
+            if lo <= r.lo and r.hi <= hi:
+                return r
+        root = cls(f, lo, hi)
+        cls._known[f].append(root)
+        if len(cls._known) > 4096:            # a bound on the memory, not on correctness
+            cls._known.clear()
+            cls._known[f] = [root]
+        return root
+
+    def _sign_at(self, x: fmpq) -> int:
+        with ctx.workprec(128):
+            v = arb(0)
+            xa = arb(x)
+            for c in reversed(self.f):
+                v = v * xa + c.enclosure(128)
+        if v > 0:
+            return 1
+        if v < 0:
+            return -1
+        return _eval(self.f, MQ.rational(x)).sign()
+
+    def _bisect(self) -> None:
+        mid = (self.lo + self.hi) / 2
+        s = self._sign_at(mid)
+        if s == 0:
+            raise ArithmeticError("a rational root of an irreducible factor")
+        if s == self._sign_at(self.lo):
+            self.lo = mid
+        else:
+            self.hi = mid
+
+    def ball(self, prec: int) -> arb:
+        """An Arb ball holding ``alpha``, of radius below ``2^-prec``."""
+        b = self._balls.get(prec)
+        if b is None:
+            eps = fmpq(1, 1 << prec)
+            while self.hi - self.lo > eps:
+                self._bisect()
+            with ctx.workprec(prec + 32):
+                b = arb(self.lo).union(arb(self.hi))
+            self._balls[prec] = b
+        return b
+
+    def text(self) -> str:
+        terms = []
+        for k, c in enumerate(self.f):
+            if not c.is_zero():
+                x = "" if k == 0 else "x" if k == 1 else f"x^{k}"
+                terms.append(f"({c.text()})*{x}" if x else f"({c.text()})")
+        return f"the root of {' + '.join(reversed(terms))} in ({self.lo}, {self.hi})"
+
+
+def _coerce(other):
+    if isinstance(other, MQ):
+        return other
+    if isinstance(other, FieldElement):
+        return None
+    try:
+        return MQ.rational(other)
+    except TypeError:
+        return None
+
+
+class AlgebraicNumber(FieldElement):
+    """A number of ``K(alpha)``: ``sum c_k alpha^k``, ``k < deg f``, MQ coefficients,
+    reduced modulo ``f`` (canonical, module docstring); never an MQ (a constant result of
+    arithmetic is returned as its MQ).  Offers the MQ methods the gathering code calls."""
+
+    __slots__ = ("root", "c", "_hash")
+
+    def __init__(self, root: AlgebraicRoot, c: tuple):
+        self.root, self.c, self._hash = root, c, None
+
+    def _new(self, c):
+        c = _trim(c)
+        if len(c) > self.root.degree:
+            c = _divmod(c, self.root.f)[1]
+        if len(c) <= 1:
+            return c[0] if c else ZERO
+        return AlgebraicNumber(self.root, c)
+
+    def _other(self, other):
+        if isinstance(other, AlgebraicNumber):
+            if other.root is not self.root:
+                raise ValueError("numbers of two different algebraic instants are not mixed")
+            return other.c
+        o = _coerce(other)
+        return None if o is None else ((o,) if not o.is_zero() else ())
+
+    def __add__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else self._new(_add(self.c, o))
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return AlgebraicNumber(self.root, tuple(-x for x in self.c))
+
+    def __pos__(self):
+        return self
+
+    def __sub__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else self._new(_add(self.c, tuple(-x for x in o)))
+
+    def __rsub__(self, other):
+        return (-self).__add__(other)
+
+    def __mul__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else self._new(_mul(self.c, o))
+
+    __rmul__ = __mul__
+
+    def inverse(self):
+        """By the extended Euclidean algorithm with ``f`` (coprime: ``f`` is irreducible
+        and this number is not zero)."""
+        r0, r1 = self.root.f, self.c
+        s0, s1 = (), (ONE,)
+        while len(r1) > 1:
+            q, r = _divmod(r0, r1)
+            r0, r1 = r1, r
+            s0, s1 = s1, _add(s0, tuple(-x for x in _mul(q, s1)))
+        inv = 1 / r1[0]
+        return self._new(tuple(x * inv for x in s1))
+
+    def __truediv__(self, other):
+        if isinstance(other, AlgebraicNumber):
+            return self * other.inverse()
+        o = _coerce(other)
+        if o is None:
+            return NotImplemented
+        if o.is_zero():
+            raise ZeroDivisionError("division by zero")
+        inv = 1 / o
+        return self._new(tuple(x * inv for x in self.c))
+
+    def __rtruediv__(self, other):
+        o = _coerce(other)
+        return NotImplemented if o is None else self.inverse() * o
+
+    def __pow__(self, k: int):
+        if not isinstance(k, int):
+            return NotImplemented
+        base = self if k >= 0 else self.inverse()
+        out, k = ONE, abs(k)
+        while k:
+            if k & 1:
+                out = base * out
+            base = base * base
+            k >>= 1
+        return out
+
+    # -- exact comparison ------------------------------------------------------------------
+    def __eq__(self, other):
+        if isinstance(other, AlgebraicNumber):
+            if other.root is not self.root:
+                raise ValueError("numbers of two different algebraic instants are not "
+                                 "compared here")
+            return self.c == other.c
+        o = _coerce(other)
+        return NotImplemented if o is None else False     # never a multiquadratic number
+
+    def __ne__(self, other):
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
+
+    def __hash__(self):
+        if self._hash is None:
+            self._hash = hash((id(self.root), self.c))
+        return self._hash
+
+    def _cmp(self, other):
+        d = self - other
+        return None if d is NotImplemented else d.sign()
+
+    def sign(self) -> int:
+        prec = 64
+        while prec <= 1 << 16:
+            v = self.enclosure(prec)
+            if v > 0:
+                return 1
+            if v < 0:
+                return -1
+            prec *= 2
+        raise ArithmeticError("sign undecided at maximal precision (a non-zero number)")
+
+    def enclosure(self, prec: int = 53) -> arb:
+        """An Arb ball around the value (filters and drawing only)."""
+        a = self.root.ball(prec + 16)
+        with ctx.workprec(prec + 32):
+            v = arb(0)
+            for x in reversed(self.c):
+                v = v * a + x.enclosure(prec + 32)
+        return v
+
+    def __float__(self):
+        return float(self.enclosure(53).mid())
+
+    def __bool__(self):
+        return True
+
+    def __abs__(self):
+        return -self if self.sign() < 0 else self
+
+    # -- the MQ methods the gathering code calls ----------------------------------------------
+    def is_zero(self) -> bool:
+        return False
+
+    def is_rational(self) -> bool:
+        return False
+
+    def to_fmpq(self):
+        raise ValueError(f"{self.text()} is not rational")
+
+    rational = to_fmpq
+
+    def text(self) -> str:
+        terms = []
+        for k, x in enumerate(self.c):
+            if not x.is_zero():
+                a = "" if k == 0 else "a" if k == 1 else f"a^{k}"
+                terms.append(f"({x.text()})*{a}" if a else f"({x.text()})")
+        return f"[{' + '.join(reversed(terms))}, a = {self.root.text()}]"
+
+    def __repr__(self):
+        return f"AlgebraicNumber({self.text()!r})"
+
+
+def is_algebraic(x) -> bool:
+    return isinstance(x, AlgebraicNumber)
+
+
+def algebraic_sqrt(x):
+    """The square root of a number of ``K(alpha)``: not built (None; module docstring)."""
+    return None
