@@ -277,3 +277,32 @@ def test_rational_norm_agrees_with_flint():
     f = fmpq_poly([-1, -8, 0, 64])
     assert len(factor_over_k(poly(-1, -8, 0, 64))) == len(f.factor()[1]) == 2
     assert len(factor_over_k(poly(-S2 / 4, -1, 0, 8))) == 1
+
+
+@settings(max_examples=8, deadline=None)
+@given(st.integers(-12, -4), st.integers(2, 12), st.integers(4, 12), st.integers(2, 12),
+       st.integers(-40, -30))
+def test_joint_ray_and_tie_instants_are_exact(x0, y0, x1, y1, ky):
+    """A segment (x0, y0) -> (x1, y1) and an arc about (0, ky) of radius 25 moving at
+    once: every instant where the two are on one line through C or as far from C is
+    exact (no sided instant), the relation holds exactly there and not at the Looks
+    just before and after it."""
+    pts = [P(x0, y0), P(-7, ky + 24), P(40, 40), P(-40, 40), P(0, -90)]
+    (arc,) = g.arc_path(P(0, ky), pts[1], P(7, ky + 24), -1)
+    seg = g.Segment(pts[0], P(x1, y1))
+    w = World(pts, Readings(), checker=None)
+    for i, piece in ((0, seg), (1, arc)):
+        w.robots[i].path, w.robots[i].centre = [piece], CENTRE
+    points, sided = joint_look_points({0: seg, 1: arc}, w)
+    assert sided == 0
+
+    def rel(tau, what):
+        p, q = seg.at(tau), arc.at(tau)
+        return g.cross(p, q) if "one line" in what else g.dist2(p, CENTRE) - g.dist2(q, CENTRE)
+
+    for k, jp in enumerate(points):
+        for what in ("robots 0 and 1 on one line through C", "robots 0 and 1 as far from C"):
+            if jp.exact and what in jp.where:
+                assert rel(jp.tau, what) == 0
+                before, after = points[k - 1], points[k + 1]
+                assert rel(before.tau, what) != 0 and rel(after.tau, what) != 0

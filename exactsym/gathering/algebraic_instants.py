@@ -61,6 +61,8 @@ ONE = MQ.rational(1)
 
 #: The largest degree of the rational norm factored (degree of p times 2^#primes of K).
 MAX_NORM_DEGREE = 96
+#: The largest coefficient size (bits of a rational) of a remainder in a gcd over K.
+GCD_BITS = 20000
 
 
 # -- polynomials over MQ (tuples, lowest degree first) -----------------------------------
@@ -107,10 +109,19 @@ def _monic(p) -> tuple:
     return tuple(c * inv for c in p)
 
 
-def _gcd(p, q) -> tuple:
+def _bits(p) -> int:
+    return max((int(c.p).bit_length() + int(c.q).bit_length()
+                for x in p for c in x.terms.values()), default=0)
+
+
+def _gcd(p, q, budget: int | None = None):
+    """The monic gcd over the coefficients' field; None when a remainder's coefficients
+    exceed ``budget`` bits."""
     p, q = _trim(p), _trim(q)
     while q:
         p, q = q, _divmod(p, q)[1]
+        if budget is not None and _bits(q) > budget:
+            return None
     return _monic(p) if p else p
 
 
@@ -129,12 +140,42 @@ def _shift(p, c) -> tuple:
     return acc
 
 
-def _primes(p) -> list:
-    out: set = set()
-    for c in p:
-        for m in c.radicands():
-            out |= {int(q) for q, _ in fmpz(m).factor()}
-    return sorted(out)
+def _group_basis(p) -> tuple:
+    """``(basis, coords)``: squarefree ``b_1, ..., b_d`` independent modulo squares with
+    ``K = Q(sqrt b_1, ..., sqrt b_d)`` (``[K:Q] = 2^d``), and ``coords(m)``: the set of
+    ``j`` with ``m = prod_{j} b_j`` modulo squares, for every radicand ``m`` of ``p``
+    (Gaussian elimination over GF(2) on the primes' exponent vectors).  The automorphism
+    ``sigma_j`` flips the sign of ``sqrt m`` iff ``j`` is in ``coords(m)``."""
+    rads = sorted({m for c in p for m in c.radicands()})
+    primes = sorted({int(q) for m in rads for q, _ in fmpz(m).factor()})
+    bit = {q: 1 << k for k, q in enumerate(primes)}
+
+    def vec(m):
+        return sum(bit[int(q)] for q, e in fmpz(m).factor() if e % 2)
+
+    rows: list = []                 # (vector, pivot, combination of basis indices)
+    basis: list = []
+    for m in rads:
+        v, comb = vec(m), 0
+        for w, piv, c in rows:
+            if v & piv:
+                v, comb = v ^ w, comb ^ c
+        if v:
+            j = len(basis)
+            basis.append(m)
+            rows.append((v, v & -v, comb ^ (1 << j)))
+    coords: dict = {}
+    for m in rads:
+        v, comb = vec(m), 0
+        for w, piv, c in rows:
+            if v & piv:
+                v, comb = v ^ w, comb ^ c
+        coords[m] = comb
+    return tuple(basis), coords
+
+
+def _conjugate(x: MQ, j: int, coords: dict) -> MQ:
+    return MQ({m: (-c if m != 1 and coords[m] >> j & 1 else c) for m, c in x.terms.items()})
 
 
 def _rational_poly(p) -> fmpq_poly:
@@ -150,25 +191,34 @@ def _from_rational(h: fmpq_poly) -> tuple:
 def factor_over_k(p: tuple):
     """The monic irreducible factors of the square-free ``p`` (MQ coefficients, degree >= 1)
     over ``K``, the multiquadratic field of its coefficients' primes (Trager's algorithm);
-    None when the norm's degree exceeds :data:`MAX_NORM_DEGREE`."""
+    None when the norm's degree exceeds :data:`MAX_NORM_DEGREE`, or when ``p`` is
+    reducible over ``K`` and a gcd over ``K`` grows beyond :data:`GCD_BITS` (Euclid's
+    coefficients swell over a number field)."""
     p = _monic(_trim(p))
-    primes = _primes(p)
-    if len(p) - 1 << len(primes) > MAX_NORM_DEGREE:
+    basis, coords = _group_basis(p)
+    if len(p) - 1 << len(basis) > MAX_NORM_DEGREE:
         return None
-    if not primes:
+    if not basis:
         return tuple(_monic(_from_rational(h)) for h, _ in _rational_poly(p).factor()[1])
-    theta = MQ({q: fmpq(1) for q in primes})
+    theta = MQ({b: fmpq(1) for b in basis})            # a primitive element of K
     for s in range(0, 12):
         ps = _shift(p, -theta * s) if s else p          # ps(x) = p(x - s theta)
+        coords_s = dict(coords)
+        coords_s.update({b: 1 << j for j, b in enumerate(basis)})
         norm = ps
-        for q in primes:                     # the product over the group, one prime at a time
-            norm = _mul(norm, tuple(c.conjugate(q) for c in norm))
+        for j in range(len(basis)):         # the product over the group, one flip at a time
+            norm = _mul(norm, tuple(_conjugate(c, j, coords_s) for c in norm))
         n = _rational_poly(norm)
         if n.gcd(n.derivative()).degree() > 0:
             continue                         # not square-free: another shift
+        factors = n.factor()[1]
+        if len(factors) == 1:                # N(p) irreducible: so is p over K (no gcd)
+            return (p,)
         out = []
-        for h, _ in n.factor()[1]:
-            g = _gcd(ps, _from_rational(h))
+        for h, _ in factors:
+            g = _gcd(ps, _from_rational(h), GCD_BITS)
+            if g is None:
+                return None
             if len(g) > 1:
                 out.append(_monic(_shift(g, theta * s)) if s else g)
         return tuple(out)
