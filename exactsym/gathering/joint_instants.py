@@ -40,9 +40,9 @@ A superset of the events above: a candidate where nothing happens costs a Look.
 :func:`joint_look_points` gives, as :func:`.instants.look_points` does, each instant
 whose value the kernel holds and one rational instant in each open stretch between
 consecutive instants (strictly inside (0, 1)); an instant that needs a nested radical
-is a point in a tower of quadratic extensions (:mod:`.tower_numbers`), and only a root of
-a cubic or quartic factor that square roots do not express is seen on both sides only
-(``sided``).  ``invariants.Checker`` checks I3, I4 and I6 at
+is a point in a tower of quadratic extensions (:mod:`.tower_numbers`), one at a root of a
+cubic or quartic factor a point of ``K(alpha)`` (:mod:`.algebraic_instants`); only the
+roots that module leaves without a value are seen on both sides only (``sided``).  ``invariants.Checker`` checks I3, I4 and I6 at
 every Look, I9 at those of the ``sec`` and ``symmetry`` instants and beside them.
 """
 

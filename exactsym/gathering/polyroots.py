@@ -13,9 +13,11 @@ factor, or a quadratic's root whose discriminant is a square in the multiquadrat
 field, found by :func:`mq_sqrt`), or -- when it needs a nested radical -- a number of a
 tower of quadratic extensions over that field (:mod:`.tower_numbers`): a quadratic
 whose discriminant is a square in no multiquadratic field, or a biquadratic quartic
-``a f^4 + b f^2 + c`` (:func:`exact_root_hook`).  Roots of cubic or quartic factors
-that are not of these forms (not expressible by the square roots this code builds)
-have no exact value: they stay isolated by rationals only (``sided`` instants).
+``a f^4 + b f^2 + c`` (:func:`exact_root_hook`); or -- a root of a factor of degree 3
+or more -- a number of ``K(alpha)`` (:mod:`.algebraic_instants`: the polynomial factored
+over its coefficients' field K, numbers reduced modulo alpha's factor).  The roots that
+module leaves without a value (a quartic factor of group D4, C4 or V4, other even
+degrees) stay isolated by rationals only (``sided`` instants).
 
 :func:`separate` refines a list of roots until their intervals are pairwise disjoint,
 merging roots that are equal (same exact value, or a common root of the two polynomials:
@@ -154,10 +156,11 @@ def exact_root_hook(poly, lo, hi):
     discriminant a square in no multiquadratic field), a biquadratic quartic
     ``a f^4 + b f^2 + c``, or a cubic or quartic with a factor ``h(f^2)`` (the common
     factor of its even and odd parts: an arc's denominator ``1 + T^2 f^2`` times a
-    relation, for example), whose two factors are solved in turn.  None for the other
-    cubics and quartics: a root of an irreducible factor of degree 3 or 4 is in general
-    not expressible by square roots (and factoring over the coefficients' field is not
-    attempted), so such an instant is only seen on both sides (``sided``)."""
+    relation, for example), whose two factors are solved in turn.  Any other polynomial
+    of degree 3 or more is factored over its coefficients' field
+    (:func:`.algebraic_instants.algebraic_root`): a root of a factor of degree 3, 5, ...
+    or of a quartic factor of group S4 or A4 is a number of ``K(alpha)``; None for the
+    rest, whose instants are only seen on both sides (``sided``)."""
     if len(poly) == 2:
         r = _linear_root(poly)
         return r if (r - lo).sign() > 0 and (r - hi).sign() < 0 else None
@@ -190,7 +193,7 @@ class Root:
     poly: tuple
     lo: fmpq
     hi: fmpq
-    exact: object = None            # MQ, a tower number (nested radical) or None
+    exact: object = None            # MQ, a tower number, a number of K(alpha), or None
     tags: list = field(default_factory=list)
 
     def _sign_at(self, x) -> int:
