@@ -66,9 +66,18 @@ def test_quartics_s4_exact_d4_sided():
     assert r.exact is None
 
 
-def test_square_roots_in_k_alpha_are_not_built():
-    (r,) = roots_in_unit(poly(-S2 / 4, -1, 0, 8))
-    assert is_algebraic(r.exact) and mq_sqrt(r.exact * r.exact) is None
+@pytest.mark.parametrize("coeffs", [(-S2 / 4, -1, 0, 8), (F(-1, 2), 1, 0, 0, 1)])
+def test_square_roots_in_k_alpha_and_its_multiquadratic_extensions(coeffs):
+    """sqrt(w^2) = |w|, sqrt(3 w^2) = sqrt(3) |w| (cubic alpha: any multiquadratic
+    factor is found through the norm), none for w itself, alpha, or w^2 (5 + sqrt 2)
+    (a nested radical)."""
+    (r,) = roots_in_unit(poly(*coeffs))
+    a = r.exact
+    w = a * a + S2 * a + 1
+    assert mq_sqrt(w * w) == abs(w)
+    assert (mq_sqrt(3 * w * w) == S3 * abs(w)) == (a.root.degree == 3)
+    for x in (w, a, w * w * (5 + S2), -w * w):
+        assert mq_sqrt(x) is None
 
 
 # -- the number type -------------------------------------------------------------------------

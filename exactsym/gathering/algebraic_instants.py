@@ -38,10 +38,12 @@ non-constant one is never a multiquadratic number, and ``g(alpha) = 0`` iff ``f 
 **Signs**: an Arb ball of ``alpha`` from its rational interval, refined by bisection (signs
 of ``f`` at rationals: an Arb evaluation, exact evaluation when the ball holds 0), and the
 element's value at it, precision doubled until the ball excludes 0 (a non-zero element
-has a non-zero value, so this ends).  **Square roots** of numbers of ``K(alpha)`` (a radial
-target of the mover at the instant) are not built: :func:`algebraic_sqrt` returns None,
-the caller raises ``ValueError`` and the fresh Look at that instant is ``undecided`` (the
-Looks just before and after it still run).
+has a non-zero value, so this ends).  **Square roots** (a radial target of the mover at
+the instant): :func:`algebraic_sqrt` finds a root that lies in ``K'(alpha)``, ``K'`` a
+multiquadratic field (complete for alpha of odd degree); a root outside (the usual case:
+``|p - C|`` of a generic point) would need a quadratic extension of ``K(alpha)``, which is
+not built: None, the caller raises ``ValueError`` and the fresh Look at that instant is
+``undecided`` (counted as ``skipped``; the Looks just before and after it still run).
 """
 
 from __future__ import annotations
@@ -519,6 +521,87 @@ def is_algebraic(x) -> bool:
     return isinstance(x, AlgebraicNumber)
 
 
-def algebraic_sqrt(x):
-    """The square root of a number of ``K(alpha)``: not built (None; module docstring)."""
+def _minpoly(u: AlgebraicNumber) -> tuple:
+    """The monic minimal polynomial over K of ``u`` (not in K, so of degree d: alpha's
+    factor stays irreducible and K(alpha) has no field strictly between, for d prime or
+    a quartic of group S4 or A4; otherwise the linear system below is singular and
+    ValueError is raised): ``u^d`` in the basis ``1, u, ..., u^(d-1)`` by Gaussian
+    elimination over K."""
+    d = u.root.degree
+    powers, x = [], ONE
+    for _ in range(d + 1):
+        c = x.c if is_algebraic(x) else (x,)
+        powers.append([c[i] if i < len(c) else ZERO for i in range(d)])
+        x = u * x
+    # rows: coordinates i; unknowns: the coefficients of 1, u, ..., u^(d-1)
+    rows = [[powers[k][i] for k in range(d)] + [powers[d][i]] for i in range(d)]
+    for col in range(d):
+        piv = next((r for r in range(col, d) if not rows[r][col].is_zero()), None)
+        if piv is None:
+            raise ValueError("u does not generate K(alpha)")
+        rows[col], rows[piv] = rows[piv], rows[col]
+        inv = 1 / rows[col][col]
+        rows[col] = [v * inv for v in rows[col]]
+        for r in range(d):
+            if r != col and not rows[r][col].is_zero():
+                k = rows[r][col]
+                rows[r] = [a - k * b for a, b in zip(rows[r], rows[col])]
+    return tuple(-rows[i][d] for i in range(d)) + (ONE,)
+
+
+def _sqrt_in_k_alpha(u: AlgebraicNumber):
+    """A square root of ``u`` in ``K(alpha)``, or None: one lies there iff the minimal
+    polynomial P of ``u`` has ``P(y^2) = +- h(y) h(-y)`` over K, and then ``h`` and
+    ``y^2 - u`` share the root ``s``: ``h(y) = A + B y`` modulo ``y^2 - u``,
+    ``s = -A/B`` (checked: ``s^2 == u``)."""
+    try:
+        P = _minpoly(u)
+    except ValueError:
+        return None
+    even = []
+    for c in P:
+        even += [c, ZERO]
+    factors = factor_over_k(_trim(even))
+    for h in factors or ():
+        if len(h) - 1 != u.root.degree:
+            continue
+        A, B, power = ZERO, ZERO, ONE           # power = u^(k // 2)
+        for k, c in enumerate(h):
+            if k % 2:
+                B = B + c * power
+                power = power * u
+            else:
+                A = A + c * power
+        if not (is_algebraic(B) or not B.is_zero()):
+            continue
+        s = -A / B
+        if s * s == u:
+            return s
     return None
+
+
+def algebraic_sqrt(x):
+    """The non-negative square root of ``x > 0`` in ``K'(alpha)``, ``K'`` a multiquadratic
+    field (then the representation of :class:`AlgebraicNumber` holds it), or None: not
+    built.  For alpha of odd degree d the search is complete: ``x = q t^2`` with ``t`` in
+    K(alpha) and ``sqrt q`` in ``K'`` (the quadratic subextensions of ``K'(alpha)/K(alpha)``
+    come from ``K'/K``), and the norm gives ``q = N(x)`` modulo squares of K: so ``sqrt
+    N(x)`` in the multiquadratic closure (:func:`~exactsym.exact.mq_closure.decided_sqrt`)
+    times a root of ``x / N(x)`` in K(alpha).  For a quartic alpha only roots in K(alpha)
+    itself are found.  Each root is checked by squaring."""
+    if x.sign() <= 0:
+        return None
+    s = _sqrt_in_k_alpha(x)
+    if s is None and x.root.degree % 2:
+        from ..exact.mq_closure import decided_sqrt
+        P = _minpoly(x)
+        norm = -P[0] if x.root.degree % 2 else P[0]
+        rn, _ = decided_sqrt(norm) if norm.sign() > 0 else (None, True)
+        if rn is not None:
+            t = _sqrt_in_k_alpha(x / norm)
+            if t is not None:
+                s = rn * t
+    if s is None:
+        return None
+    s = s if s.sign() > 0 else -s
+    return s if s * s == x else None
