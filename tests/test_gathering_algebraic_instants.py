@@ -14,8 +14,10 @@ from hypothesis import given, settings, strategies as st
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
 from exactsym.gathering.algebraic_kernel import kernel_configuration, kernel_field
+from exactsym.gathering.algebraic_tower import is_algebraic_tower
 from exactsym.gathering.algebraic_instants import (AlgebraicNumber, algebraic_root,
-                                                   factor_over_k, is_algebraic)
+                                                   algebraic_sqrt, factor_over_k,
+                                                   is_algebraic)
 from exactsym.gathering.invariants import Checker, Violation
 from exactsym.gathering.joint_instants import joint_look_points
 from exactsym.gathering.pattern import recognise
@@ -69,15 +71,38 @@ def test_quartics_s4_exact_d4_sided():
 @pytest.mark.parametrize("coeffs", [(-S2 / 4, -1, 0, 8), (F(-1, 2), 1, 0, 0, 1)])
 def test_square_roots_in_k_alpha_and_its_multiquadratic_extensions(coeffs):
     """sqrt(w^2) = |w|, sqrt(3 w^2) = sqrt(3) |w| (cubic alpha: any multiquadratic
-    factor is found through the norm), none for w itself, alpha, or w^2 (5 + sqrt 2)
-    (a nested radical)."""
+    factor is found through the norm), none in any K'(alpha) for w, alpha, or
+    w^2 (5 + sqrt 2) (a nested radical)."""
     (r,) = roots_in_unit(poly(*coeffs))
     a = r.exact
     w = a * a + S2 * a + 1
-    assert mq_sqrt(w * w) == abs(w)
-    assert (mq_sqrt(3 * w * w) == S3 * abs(w)) == (a.root.degree == 3)
+    assert algebraic_sqrt(w * w) == abs(w) == mq_sqrt(w * w)
+    assert (algebraic_sqrt(3 * w * w) == S3 * abs(w)) == (a.root.degree == 3)
     for x in (w, a, w * w * (5 + S2), -w * w):
-        assert mq_sqrt(x) is None
+        assert algebraic_sqrt(x) is None
+    assert mq_sqrt(-w * w) is None
+
+
+def test_square_roots_outside_k_alpha_are_a_tower_level_over_it():
+    """Cubic alpha: sqrt(w) is a new level y over K(alpha) (w is a square in no
+    K'(alpha)); sqrt(4 w) = 2 y and sqrt(3 w) = sqrt(3) y are found in it, sqrt(y) is
+    a second level; a radial point at distance 4 is exact.  Quartic alpha: no level."""
+    from exactsym.gathering.robot import radial_point
+    (r,) = roots_in_unit(poly(-S2 / 4, -1, 0, 8))
+    a = r.exact
+    w = a * a + S2 * a + 1
+    y = mq_sqrt(w)
+    assert is_algebraic_tower(y) and y * y == w and y.sign() == 1
+    assert mq_sqrt(4 * w) == 2 * y and mq_sqrt(3 * w) == S3 * y
+    assert mq_sqrt(w) == y and hash(mq_sqrt(w)) == hash(y)
+    assert (y + a) - a == y and (y + a) * (y - a) == w - a * a
+    z = mq_sqrt(y)
+    assert z * z == y and z.tower.levels == 2
+    p = (3 * a, 5 + a)
+    t = radial_point((Q(0), Q(0)), p, 4)
+    assert g.dist2(t, (Q(0), Q(0))) == 16 and g.cross(t, p) == 0 and g.dot(t, p) > 0
+    (q,) = roots_in_unit(poly(F(-1, 2), 1, 0, 0, 1))
+    assert mq_sqrt(q.exact * q.exact + 1) is None
 
 
 # -- the number type -------------------------------------------------------------------------
@@ -336,10 +361,10 @@ def test_kernel_field_is_a_field_isomorphism(data):
 def test_the_paper_layer_reads_a_cubic_instant_through_the_kernel(monkeypatch):
     """With ``paper_bridge.configuration_of`` reading K(alpha) snapshots through
     :func:`kernel_configuration` (a wiring left to paper_bridge), the paper's decision
-    at the cubic instant is no longer the kernel's "undecided" but the paper layer's own
-    (here MakeAsym's move to G_t's circle, whose target needs a square root outside
-    K(alpha): not simulated); and the kernel configuration's squared distances are the
-    simulator's."""
+    at the cubic instant is no longer the kernel's "undecided" but the paper layer's own:
+    MakeAsym's move of robot 0 to G_t's circle, whose end needs a square root outside
+    K(alpha) (a level over it, :mod:`.algebraic_tower`); and the kernel configuration's
+    squared distances are the simulator's."""
     from exactsym.gathering import paper_bridge, robot
     pts, centre, target, k, end1 = _scene()
     seg = g.Segment(pts[0], target)
@@ -364,6 +389,9 @@ def test_the_paper_layer_reads_a_cubic_instant_through_the_kernel(monkeypatch):
                         if any(is_algebraic(c) for p in ps for c in p) else original(ps))
     robot.decide.cache_clear()
     d, _ = w.snapshot_decision(IDENTITY)
-    assert not d.detail.startswith("kernel:")
-    assert d.detail == "MakeAsym move of kind to-G_t-circle is not simulated"
+    assert d.status == "move" and d.detail == "MakeAsym moves first"
+    (move,) = d.moves
+    end = move.path[-1].final
+    assert move.robot == 0 and move.kind == "to-G_t-circle"
+    assert is_algebraic_tower(end[0]) or is_algebraic_tower(end[1])
     robot.decide.cache_clear()

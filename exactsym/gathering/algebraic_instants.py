@@ -56,7 +56,7 @@ from ..exact.field import FieldElement
 from ..exact.multiquadratic import MQ
 
 __all__ = ["AlgebraicNumber", "AlgebraicRoot", "factor_over_k", "algebraic_root",
-           "is_algebraic", "algebraic_sqrt", "MAX_NORM_DEGREE"]
+           "is_algebraic", "algebraic_sqrt", "algebraic_sqrt_decided", "MAX_NORM_DEGREE"]
 
 ZERO = MQ()
 ONE = MQ.rational(1)
@@ -549,20 +549,23 @@ def _minpoly(u: AlgebraicNumber) -> tuple:
     return tuple(-rows[i][d] for i in range(d)) + (ONE,)
 
 
-def _sqrt_in_k_alpha(u: AlgebraicNumber):
-    """A square root of ``u`` in ``K(alpha)``, or None: one lies there iff the minimal
-    polynomial P of ``u`` has ``P(y^2) = +- h(y) h(-y)`` over K, and then ``h`` and
-    ``y^2 - u`` share the root ``s``: ``h(y) = A + B y`` modulo ``y^2 - u``,
-    ``s = -A/B`` (checked: ``s^2 == u``)."""
+def _sqrt_in_k_alpha(u: AlgebraicNumber) -> tuple:
+    """``(s, decided)``: a square root ``s`` of ``u`` in ``K(alpha)``, or None; one lies
+    there iff the minimal polynomial P of ``u`` has ``P(y^2) = +- h(y) h(-y)`` over K, and
+    then ``h`` and ``y^2 - u`` share the root ``s``: ``h(y) = A + B y`` modulo ``y^2 - u``,
+    ``s = -A/B`` (checked: ``s^2 == u``).  ``decided`` is False when the factoring gave
+    up (a norm or a gcd too large)."""
     try:
         P = _minpoly(u)
     except ValueError:
-        return None
+        return None, False
     even = []
     for c in P:
         even += [c, ZERO]
     factors = factor_over_k(_trim(even))
-    for h in factors or ():
+    if factors is None:
+        return None, False
+    for h in factors:
         if len(h) - 1 != u.root.degree:
             continue
         A, B, power = ZERO, ZERO, ONE           # power = u^(k // 2)
@@ -576,32 +579,39 @@ def _sqrt_in_k_alpha(u: AlgebraicNumber):
             continue
         s = -A / B
         if s * s == u:
-            return s
-    return None
+            return s, True
+    return None, True
 
 
-def algebraic_sqrt(x):
-    """The non-negative square root of ``x > 0`` in ``K'(alpha)``, ``K'`` a multiquadratic
-    field (then the representation of :class:`AlgebraicNumber` holds it), or None: not
-    built.  For alpha of odd degree d the search is complete: ``x = q t^2`` with ``t`` in
-    K(alpha) and ``sqrt q`` in ``K'`` (the quadratic subextensions of ``K'(alpha)/K(alpha)``
-    come from ``K'/K``), and the norm gives ``q = N(x)`` modulo squares of K: so ``sqrt
-    N(x)`` in the multiquadratic closure (:func:`~exactsym.exact.mq_closure.decided_sqrt`)
-    times a root of ``x / N(x)`` in K(alpha).  For a quartic alpha only roots in K(alpha)
-    itself are found.  Each root is checked by squaring."""
+def algebraic_sqrt_decided(x) -> tuple:
+    """``(root, decided)``: the non-negative square root of ``x > 0`` in ``K'(alpha)``,
+    ``K'`` a multiquadratic field (then the representation of :class:`AlgebraicNumber`
+    holds it), or None; ``decided``: the search was complete -- for alpha of odd degree
+    d: ``x = q t^2`` with ``t`` in K(alpha) and ``sqrt q`` in ``K'`` (the quadratic
+    subextensions of ``K'(alpha)/K(alpha)`` come from ``K'/K``), and the norm gives ``q =
+    N(x)`` modulo squares of K: so ``sqrt N(x)`` in the multiquadratic closure
+    (:func:`~exactsym.exact.mq_closure.decided_sqrt`) times a root of ``x / N(x)`` in
+    K(alpha).  For a quartic alpha only roots in K(alpha) itself are searched (never
+    ``decided`` when none is found).  Each root is checked by squaring."""
     if x.sign() <= 0:
-        return None
-    s = _sqrt_in_k_alpha(x)
-    if s is None and x.root.degree % 2:
+        return None, True
+    s, decided = _sqrt_in_k_alpha(x)
+    odd = x.root.degree % 2 == 1
+    if s is None and decided and odd:
         from ..exact.mq_closure import decided_sqrt
-        P = _minpoly(x)
-        norm = -P[0] if x.root.degree % 2 else P[0]
-        rn, _ = decided_sqrt(norm) if norm.sign() > 0 else (None, True)
+        norm = -_minpoly(x)[0]                     # N(x) = (-1)^d P(0), d odd
+        rn, decided = decided_sqrt(norm) if norm.sign() > 0 else (None, True)
         if rn is not None:
-            t = _sqrt_in_k_alpha(x / norm)
+            t, decided = _sqrt_in_k_alpha(x / norm)
             if t is not None:
                 s = rn * t
     if s is None:
-        return None
+        return None, decided and odd
     s = s if s.sign() > 0 else -s
-    return s if s * s == x else None
+    return (s, True) if s * s == x else (None, False)
+
+
+def algebraic_sqrt(x):
+    """:func:`algebraic_sqrt_decided`'s root (None: none in any ``K'(alpha)``, or not
+    decided)."""
+    return algebraic_sqrt_decided(x)[0]

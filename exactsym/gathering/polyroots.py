@@ -34,7 +34,8 @@ from flint import fmpq
 
 from ..exact.mq_closure import RATIONAL_BITS, closure_sqrt, decided_sqrt  # noqa: F401
 from ..exact.multiquadratic import MQ
-from .algebraic_instants import algebraic_root, algebraic_sqrt, is_algebraic
+from .algebraic_instants import algebraic_root, is_algebraic
+from .algebraic_tower import is_algebraic_tower, sqrt_over_k_alpha
 from .tower_numbers import biquadratic_root, is_tower, quadratic_root, tower_sqrt
 
 ZERO = MQ()
@@ -135,11 +136,13 @@ def mq_sqrt(x, _depth: int = 0, big_ok: bool = False):
     verified by squaring; a rational that is not a square and has more than
     :data:`RATIONAL_BITS` bits is a miss, except ``x`` itself with ``big_ok``).  For a
     tower number ``x`` (:mod:`.tower_numbers`) the answer is its root in the tower, a new
-    level when it has none there (None only when that cannot be decided)."""
+    level when it has none there (None only when that cannot be decided); for a number
+    of ``K(alpha)`` (:mod:`.algebraic_instants`) its root there or one level over it
+    (:mod:`.algebraic_tower`)."""
+    if is_algebraic(x) or is_algebraic_tower(x):   # K(alpha), or one level over it
+        return sqrt_over_k_alpha(x)
     if is_tower(x):                     # a tower number: its root in the tower
         return tower_sqrt(x) if x.sign() > 0 else None
-    if is_algebraic(x):                 # a number of K(alpha): not built
-        return algebraic_sqrt(x)
     return closure_sqrt(x, _depth, big_ok)
 
 
