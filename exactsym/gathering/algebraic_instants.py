@@ -41,9 +41,10 @@ element's value at it, precision doubled until the ball excludes 0 (a non-zero e
 has a non-zero value, so this ends).  **Square roots** (a radial target of the mover at
 the instant): :func:`algebraic_sqrt` finds a root that lies in ``K'(alpha)``, ``K'`` a
 multiquadratic field (complete for alpha of odd degree); a root outside (the usual case:
-``|p - C|`` of a generic point) would need a quadratic extension of ``K(alpha)``, which is
-not built: None, the caller raises ``ValueError`` and the fresh Look at that instant is
-``undecided`` (counted as ``skipped``; the Looks just before and after it still run).
+``|p - C|`` of a generic point) is a level of a tower over ``K(alpha)``
+(:mod:`.algebraic_tower`, for alpha of odd degree only; for a quartic alpha the caller
+gets None, raises ``ValueError`` and the fresh Look at that instant is ``undecided``,
+counted as ``skipped``, the Looks just before and after it still running).
 """
 
 from __future__ import annotations
