@@ -15,9 +15,8 @@ from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
 from exactsym.gathering.algebraic_kernel import kernel_configuration, kernel_field
 from exactsym.gathering.algebraic_tower import is_algebraic_tower
-from exactsym.gathering.algebraic_instants import (AlgebraicNumber, algebraic_root,
-                                                   algebraic_sqrt, factor_over_k,
-                                                   is_algebraic)
+from exactsym.gathering.algebraic_instants import (algebraic_root, algebraic_sqrt,
+                                                   factor_over_k, is_algebraic)
 from exactsym.gathering.invariants import Checker, Violation
 from exactsym.gathering.joint_instants import joint_look_points
 from exactsym.gathering.pattern import recognise

@@ -55,6 +55,8 @@ from flint import arb, ctx, fmpq, fmpq_poly, fmpz
 
 from ..exact.field import FieldElement
 from ..exact.multiquadratic import MQ
+from .polyroots import padd as _add, pdivmod as _divmod, peval as _eval, pmul as _mul, \
+    trim as _trim
 
 __all__ = ["AlgebraicNumber", "AlgebraicRoot", "factor_over_k", "algebraic_root",
            "is_algebraic", "algebraic_sqrt", "algebraic_sqrt_decided", "MAX_NORM_DEGREE"]
@@ -68,45 +70,7 @@ MAX_NORM_DEGREE = 96
 GCD_BITS = 20000
 
 
-# -- polynomials over MQ (tuples, lowest degree first) -----------------------------------
-def _trim(p) -> tuple:
-    p = list(p)
-    while p and p[-1].is_zero():
-        p.pop()
-    return tuple(p)
-
-
-def _add(p, q) -> tuple:
-    n = max(len(p), len(q))
-    return _trim((p[i] if i < len(p) else ZERO) + (q[i] if i < len(q) else ZERO)
-                 for i in range(n))
-
-
-def _mul(p, q) -> tuple:
-    if not p or not q:
-        return ()
-    out = [ZERO] * (len(p) + len(q) - 1)
-    for i, a in enumerate(p):
-        if not a.is_zero():
-            for j, b in enumerate(q):
-                out[i + j] = out[i + j] + a * b
-    return _trim(out)
-
-
-def _divmod(p, q) -> tuple:
-    p, q = list(_trim(p)), _trim(q)
-    inv = 1 / q[-1]
-    quot = [ZERO] * max(len(p) - len(q) + 1, 0)
-    while len(p) >= len(q) and p:
-        k = len(p) - len(q)
-        c = p[-1] * inv
-        quot[k] = c
-        for i, b in enumerate(q):
-            p[i + k] = p[i + k] - c * b
-        p = list(_trim(p))
-    return _trim(quot), tuple(p)
-
-
+# -- polynomials over MQ (tuples, lowest degree first; polyroots' arithmetic) -------------
 def _monic(p) -> tuple:
     inv = 1 / p[-1]
     return tuple(c * inv for c in p)
@@ -126,13 +90,6 @@ def _gcd(p, q, budget: int | None = None):
         if budget is not None and _bits(q) > budget:
             return None
     return _monic(p) if p else p
-
-
-def _eval(p, x):
-    acc = ZERO
-    for c in reversed(p):
-        acc = acc * x + c
-    return acc
 
 
 def _shift(p, c) -> tuple:
@@ -333,12 +290,17 @@ class AlgebraicRoot:
         return b
 
     def text(self) -> str:
-        terms = []
-        for k, c in enumerate(self.f):
-            if not c.is_zero():
-                x = "" if k == 0 else "x" if k == 1 else f"x^{k}"
-                terms.append(f"({c.text()})*{x}" if x else f"({c.text()})")
-        return f"the root of {' + '.join(reversed(terms))} in ({self.lo}, {self.hi})"
+        return f"the root of {_poly_text(self.f, 'x')} in ({self.lo}, {self.hi})"
+
+
+def _poly_text(cs, var: str) -> str:
+    """``(c_n)*var^n + ... + (c_0)``, the zero terms left out."""
+    terms = []
+    for k, c in enumerate(cs):
+        if not c.is_zero():
+            x = "" if k == 0 else var if k == 1 else f"{var}^{k}"
+            terms.append(f"({c.text()})*{x}" if x else f"({c.text()})")
+    return " + ".join(reversed(terms))
 
 
 def _coerce(other):
@@ -507,12 +469,7 @@ class AlgebraicNumber(FieldElement):
     rational = to_fmpq
 
     def text(self) -> str:
-        terms = []
-        for k, x in enumerate(self.c):
-            if not x.is_zero():
-                a = "" if k == 0 else "a" if k == 1 else f"a^{k}"
-                terms.append(f"({x.text()})*{a}" if a else f"({x.text()})")
-        return f"[{' + '.join(reversed(terms))}, a = {self.root.text()}]"
+        return f"[{_poly_text(self.c, 'a')}, a = {self.root.text()}]"
 
     def __repr__(self):
         return f"AlgebraicNumber({self.text()!r})"

@@ -23,9 +23,9 @@ equal numbers; numbers of two towers are not compared (ValueError, as
 from __future__ import annotations
 
 from ..exact.mq_closure import decided_sqrt
-from ..exact.multiquadratic import MQ
-from ..exact.tower import Tower, TowerElement
+from ..exact.tower import Tower
 from .algebraic_instants import AlgebraicNumber, algebraic_sqrt_decided, is_algebraic
+from .tower_numbers import TowerNumber
 
 __all__ = ["AlgebraicTower", "AlgebraicTowerNumber", "is_algebraic_tower",
            "sqrt_over_k_alpha", "MAX_LEVELS"]
@@ -62,30 +62,23 @@ class AlgebraicTower(Tower):
         return self._mul(x, y)            # no rescaling of rational coefficients (MQ only)
 
 
-class AlgebraicTowerNumber(TowerElement):
-    """A number ``a + b y`` of an :class:`AlgebraicTower` (``b != 0``), with the MQ methods
-    the gathering code calls."""
+class AlgebraicTowerNumber(TowerNumber):
+    """A number ``a + b y`` of an :class:`AlgebraicTower` (``b != 0``): a
+    :class:`~.tower_numbers.TowerNumber` (the MQ methods the gathering code calls) whose
+    arithmetic keeps base values (MQ, numbers of ``K(alpha)``) as they are."""
 
     __slots__ = ()
 
+    def _new(self, v):
+        return self.tower.wrap(v)
+
     def __eq__(self, other):
-        if isinstance(other, TowerElement) and other.tower is not self.tower:
-            raise ValueError("numbers of two different towers cannot be compared here")
         if isinstance(other, AlgebraicNumber) and other.root is not self.tower.root:
             raise ValueError("numbers of two different algebraic instants are not compared")
-        return TowerElement.__eq__(self, other)
+        return TowerNumber.__eq__(self, other)
 
-    def __ne__(self, other):
-        eq = self.__eq__(other)
-        return eq if eq is NotImplemented else not eq
-
-    __hash__ = TowerElement.__hash__
-
-    def is_zero(self) -> bool:
-        return False
-
-    def to_fmpq(self):
-        raise ValueError(f"{self.text()} is not rational")
+    __ne__ = TowerNumber.__ne__
+    __hash__ = TowerNumber.__hash__
 
     def __repr__(self):
         return f"AlgebraicTowerNumber({self.text()!r})"

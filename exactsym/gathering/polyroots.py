@@ -34,8 +34,6 @@ from flint import fmpq
 
 from ..exact.mq_closure import RATIONAL_BITS, closure_sqrt, decided_sqrt  # noqa: F401
 from ..exact.multiquadratic import MQ
-from .algebraic_instants import algebraic_root, is_algebraic
-from .algebraic_tower import is_algebraic_tower, sqrt_over_k_alpha
 from .tower_numbers import biquadratic_root, is_tower, quadratic_root, tower_sqrt
 
 ZERO = MQ()
@@ -139,6 +137,7 @@ def mq_sqrt(x, _depth: int = 0, big_ok: bool = False):
     level when it has none there (None only when that cannot be decided); for a number
     of ``K(alpha)`` (:mod:`.algebraic_instants`) its root there or one level over it
     (:mod:`.algebraic_tower`)."""
+    from .algebraic_tower import is_algebraic_tower, sqrt_over_k_alpha
     if is_algebraic(x) or is_algebraic_tower(x):   # K(alpha), or one level over it
         return sqrt_over_k_alpha(x)
     if is_tower(x):                     # a tower number: its root in the tower
@@ -183,6 +182,7 @@ def exact_root_hook(poly, lo, hi):
                 if r is not None:
                     return r
     if len(poly) >= 4:      # factored over K: a root of K(alpha) (algebraic_instants)
+        from .algebraic_instants import algebraic_root
         return algebraic_root(poly, lo, hi)
     return None
 
@@ -347,6 +347,13 @@ def _same_root(r: Root, s: Root) -> bool:
         return True
     chain = sturm_chain(squarefree(g))
     return _variations(chain, lo) - _variations(chain, hi) > 0
+
+
+def is_algebraic(x) -> bool:
+    """A number of ``K(alpha)`` (:mod:`.algebraic_instants`, imported there: it builds
+    on this module's arithmetic)?"""
+    from .algebraic_instants import AlgebraicNumber
+    return isinstance(x, AlgebraicNumber)
 
 
 def _comparable(x, y) -> bool:
