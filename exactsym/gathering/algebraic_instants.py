@@ -239,6 +239,7 @@ class AlgebraicRoot:
         self.f, self.lo, self.hi = f, lo, hi
         self.degree = len(f) - 1
         self._balls: dict = {}
+        self._canonical = None
 
     @classmethod
     def of(cls, f: tuple, lo: fmpq, hi: fmpq) -> "AlgebraicRoot":
@@ -290,7 +291,25 @@ class AlgebraicRoot:
         return b
 
     def text(self) -> str:
-        return f"the root of {_poly_text(self.f, 'x')} in ({self.lo}, {self.hi})"
+        lo, hi = self.canonical_interval()
+        return f"the root of {_poly_text(self.f, 'x')} in ({lo}, {hi})"
+
+    def canonical_interval(self) -> tuple:
+        """The largest dyadic interval ``(k/2^j, (k+1)/2^j)`` inside ``(0, 1)``'s halvings
+        that holds alpha and no other root of ``f`` (Sturm counts): the same for the same
+        root whatever interval it was isolated by, so texts (witnesses, replays) do not
+        depend on the history of refinements."""
+        if self._canonical is None:
+            from .polyroots import _variations, sturm_chain
+            chain = sturm_chain(self.f)
+            lo, hi = fmpq(min(0, self.lo.floor())), fmpq(max(1, self.hi.ceil()))
+            while _variations(chain, MQ.rational(lo)) - _variations(chain, MQ.rational(hi)) > 1:
+                mid = (lo + hi) / 2
+                while self.lo < mid < self.hi:
+                    self._bisect()
+                lo, hi = (mid, hi) if self.lo >= mid else (lo, mid)
+            self._canonical = (lo, hi)
+        return self._canonical
 
 
 def _poly_text(cs, var: str) -> str:
