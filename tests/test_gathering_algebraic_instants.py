@@ -394,3 +394,22 @@ def test_the_paper_layer_reads_a_cubic_instant_through_the_kernel(monkeypatch):
     assert move.robot == 0 and move.kind == "to-G_t-circle"
     assert is_algebraic_tower(end[0]) or is_algebraic_tower(end[1])
     robot.decide.cache_clear()
+
+
+def test_k_alpha_does_not_mix_with_a_runs_tower():
+    """A robot standing at a nested-radical position (a run's tower number): the cubic
+    instant is seen on both sides only (sided), no K(alpha) point is built.  (Positions
+    in a run's tower exist once robots can move to nested-radical targets: run_tower.)"""
+    pytest.importorskip("exactsym.gathering.run_tower")
+    from exactsym.gathering.tower_numbers import mq_sqrt_any
+    y = mq_sqrt_any(1 + S2)                          # sqrt(1 + sqrt 2): a tower number
+    pts, centre, target, k, end1 = _scene()
+    seg = g.Segment(pts[0], target)
+    (arc,) = g.arc_path(k, pts[1], end1, -1)
+    w = World(pts, Readings(), checker=None)
+    w.robots[2].pos = (y + 39, Q(40))                # moved there earlier in the run
+    for i, piece in ((0, seg), (1, arc)):
+        w.robots[i].path, w.robots[i].centre = [piece], CENTRE
+    points, sided = joint_look_points({0: seg, 1: arc}, w)
+    assert sided >= 1 and not any(is_algebraic(jp.tau) for jp in points)
+    assert any("robots 0 and 1 on one line through C" in jp.where for jp in points)

@@ -208,7 +208,10 @@ def algebraic_root(p, lo, hi):
     inside, none at the ends), exact: an MQ (a linear factor over K), the factor's
     quadratic root (tower numbers, :func:`.tower_numbers.quadratic_root`), or an
     :class:`AlgebraicNumber` (a factor of odd degree, or a quartic with an S4 or A4 group);
-    None otherwise (other even degrees, a quartic of group D4, C4 or V4, a norm too big)."""
+    None otherwise (other even degrees, a quartic of group D4, C4 or V4, a norm too big,
+    coefficients that are not multiquadratic: a run's tower numbers)."""
+    if not all(isinstance(c, MQ) for c in p):
+        return None
     factors = factor_over_k(_trim(p))
     if factors is None:
         return None
@@ -496,6 +499,20 @@ class AlgebraicNumber(FieldElement):
 
 def is_algebraic(x) -> bool:
     return isinstance(x, AlgebraicNumber)
+
+
+def mixes(world, pieces=()) -> bool:
+    """Would numbers of ``K(alpha)`` meet numbers of another kind (a run's tower of
+    nested radicals) in a fresh Look at an instant of ``pieces``: a robot standing, a
+    pending target or a planned path in such a field?  They do not mix (no common field
+    is built), so such an instant stays ``sided``."""
+    pts = [p for pc in pieces for p in (pc.start, pc.end)]
+    for r in world.robots:
+        pts.append(r.pos)
+        pts += [p for pc in (r.path or ()) for p in (pc.start, pc.end)]
+        if r.target is not None:
+            pts.append(r.target)
+    return any(not isinstance(c, MQ) for p in pts for c in p)
 
 
 def _minpoly(u: AlgebraicNumber) -> tuple:

@@ -55,6 +55,7 @@ from flint import fmpq
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
+from .algebraic_instants import is_algebraic, mixes
 from .polyroots import (Root, padd, pmul, pscale, psub, roots_in_unit,
                         roots_of, trim)
 
@@ -517,13 +518,15 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
         return [LookPoint(half, piece.at(half), "half way, no critical instant",
                           frozenset(), False)], 0
     out, sided = [], 0
+    # K(alpha)'s numbers do not mix with a run's tower numbers (algebraic_instants.mixes)
+    apart = mixes(world, [piece])
     for k, r in enumerate(roots):
         fams = frozenset(t[0] for t in r.tags)
         what = "; ".join(sorted({t[1] for t in r.tags}))
         if k == 0:
             lo = MQ.rational(r.lo)
             out.append(LookPoint(lo, piece.at(lo), f"just before: {what}", fams, False))
-        if r.exact is not None:
+        if r.exact is not None and not (apart and is_algebraic(r.exact)):
             out.append(LookPoint(r.exact, piece.at(r.exact), what, fams, True))
         else:
             sided += 1

@@ -55,6 +55,7 @@ from flint import fmpq
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
+from .algebraic_instants import is_algebraic, mixes
 from .instants import _reach, hull_indices, motion_of
 from .joint_relations import (const, contact_poly, incircle_poly, ray_poly, rel,
                               right_poly, sq, still, tie_poly)
@@ -163,12 +164,13 @@ def joint_look_points(pieces: dict, world, sec_r: bool = False) -> tuple:
         return [JointPoint(MQ.rational(fmpq(1, 2)), "half way, no critical instant",
                            frozenset(), False)], 0
     out, sided = [], 0
+    apart = mixes(world, pieces.values())
     for k, r in enumerate(roots):
         fams = frozenset(t[0] for t in r.tags)
         what = "; ".join(sorted({t[1] for t in r.tags}))
         if k == 0:
             out.append(JointPoint(MQ.rational(r.lo), f"just before: {what}", fams, False))
-        if r.exact is not None:
+        if r.exact is not None and not (apart and is_algebraic(r.exact)):
             out.append(JointPoint(r.exact, what, fams, True))
         else:
             sided += 1
