@@ -56,10 +56,11 @@ def test_nested_radical_root_is_exact_in_a_tower():
 
 
 def test_cubic_root_is_isolated_not_guessed():
-    # f^3 - 2/5: the cube root of 2/5 (~0.7368) is not expressible by square roots
+    # f^3 - 2/5: the cube root of 2/5 (~0.7368) is not expressible by square roots; it
+    # is exact in Q(alpha) (algebraic_instants), and its interval still refines exactly
     p = poly(F(-2, 5), 0, 0, 1)
     (r,) = roots_in_unit(p)
-    assert r.exact is None
+    assert r.exact is not None and r.exact ** 3 == Q(F(2, 5)) and r.exact * r.exact != 0
     for _ in range(30):
         r.refine()
     assert abs(float(r.lo) - 0.7368062997) < 1e-8 and r.hi - r.lo < fmpq(1, 10 ** 9)

@@ -37,8 +37,12 @@ piece: in a stretch no relation above changes sign, so its Look stands for the w
 stretch with respect to them.  A root that needs a nested radical is exact too: a number
 of a tower of quadratic extensions (:func:`.polyroots.exact_root_hook`,
 :mod:`.tower_numbers`), and the mover's point there has tower coordinates, on which the
-fresh Look (geometry, pattern, the paper layer) runs unchanged.  Only a root of a cubic
-or quartic factor that square roots do not express is seen on both sides only
+fresh Look (geometry, pattern, the paper layer) runs unchanged.  A root of an
+irreducible factor of degree 3 or more is exact too, a number of ``K(alpha)``
+(:mod:`.algebraic_instants`: the polynomial factored over its coefficients' field K,
+alpha's factor of odd degree or a quartic of group S4 or A4).  Only the other roots (a
+quartic of group D4, C4 or V4, other even degrees, a norm or gcd too large, a radicand
+whose square test meets a rational of more than 160 bits) are seen on both sides only
 (``sided``).  Not enumerated: relations that involve neither C, nor an SEC,
 a symmetry or a contact (the corrected variant's distance profiles, for example).
 """
@@ -51,6 +55,7 @@ from flint import fmpq
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
+from .algebraic_instants import is_algebraic, mixes
 from .polyroots import (Root, padd, pmul, pscale, psub, roots_in_unit,
                         roots_of, trim)
 
@@ -493,7 +498,7 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
 
 @dataclass(frozen=True)
 class LookPoint:
-    f: object               # MQ, or a tower number at a nested radical
+    f: object               # MQ, a tower number (nested radical), or K(alpha)'s number
     point: tuple
     where: str
     families: frozenset
@@ -504,22 +509,24 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
     """``(points, sided)``: the :class:`LookPoint`\\ s to check, in order along the piece
     -- one rational point in each open stretch between consecutive instants (the first
     before the first instant, the last after the last) and each instant itself when the
-    kernel holds it (a nested radical: a point with tower coordinates) -- and the number
-    of instants checked only on both sides (roots of cubic or quartic factors that
-    square roots do not express)."""
+    kernel holds it (a nested radical: a point with tower coordinates; a root of a cubic
+    or quartic factor: a point of ``K(alpha)``) -- and the number of instants checked
+    only on both sides (the roots :mod:`.algebraic_instants` leaves without a value)."""
     roots = critical_roots(piece, world, mover, centre, sec_r)
     if not roots:             # one stretch: the whole open piece
         half = MQ.rational(fmpq(1, 2))
         return [LookPoint(half, piece.at(half), "half way, no critical instant",
                           frozenset(), False)], 0
     out, sided = [], 0
+    # K(alpha)'s numbers do not mix with a run's tower numbers (algebraic_instants.mixes)
+    apart = mixes(world, [piece])
     for k, r in enumerate(roots):
         fams = frozenset(t[0] for t in r.tags)
         what = "; ".join(sorted({t[1] for t in r.tags}))
         if k == 0:
             lo = MQ.rational(r.lo)
             out.append(LookPoint(lo, piece.at(lo), f"just before: {what}", fams, False))
-        if r.exact is not None:
+        if r.exact is not None and not (apart and is_algebraic(r.exact)):
             out.append(LookPoint(r.exact, piece.at(r.exact), what, fams, True))
         else:
             sided += 1

@@ -44,9 +44,9 @@ A superset of the events above: a candidate where nothing happens costs a Look.
 :func:`joint_look_points` gives, as :func:`.instants.look_points` does, each instant
 whose value the kernel holds and one rational instant in each open stretch between
 consecutive instants (strictly inside (0, 1)); an instant that needs a nested radical
-is a point in a tower of quadratic extensions (:mod:`.tower_numbers`), and only a root of
-a cubic or quartic factor that square roots do not express is seen on both sides only
-(``sided``).  ``invariants.Checker`` checks I3, I4 and I6 at
+is a point in a tower of quadratic extensions (:mod:`.tower_numbers`), one at a root of a
+cubic or quartic factor a point of ``K(alpha)`` (:mod:`.algebraic_instants`); only the
+roots that module leaves without a value are seen on both sides only (``sided``).  ``invariants.Checker`` checks I3, I4 and I6 at
 every Look, I9 at those of the ``sec`` and ``symmetry`` instants and beside them.
 """
 
@@ -59,6 +59,7 @@ from flint import fmpq
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
+from .algebraic_instants import is_algebraic, mixes
 from .instants import _reach, hull_indices, motion_of
 from .joint_relations import (circumcentre_motion, const, contact_poly, incircle_poly,
                               midpoint_motion, ray_about, ray_poly, rel, right_poly,
@@ -251,12 +252,13 @@ def joint_look_points(pieces: dict, world, sec_r: bool = False) -> tuple:
         return [JointPoint(MQ.rational(fmpq(1, 2)), "half way, no critical instant",
                            frozenset(), False)], 0
     out, sided = [], 0
+    apart = mixes(world, pieces.values())
     for k, r in enumerate(roots):
         fams = frozenset(t[0] for t in r.tags)
         what = "; ".join(sorted({t[1] for t in r.tags}))
         if k == 0:
             out.append(JointPoint(MQ.rational(r.lo), f"just before: {what}", fams, False))
-        if r.exact is not None:
+        if r.exact is not None and not (apart and is_algebraic(r.exact)):
             out.append(JointPoint(r.exact, what, fams, True))
         else:
             sided += 1

@@ -13,9 +13,11 @@ factor, or a quadratic's root whose discriminant is a square in the multiquadrat
 field, found by :func:`mq_sqrt`), or -- when it needs a nested radical -- a number of a
 tower of quadratic extensions over that field (:mod:`.tower_numbers`): a quadratic
 whose discriminant is a square in no multiquadratic field, or a biquadratic quartic
-``a f^4 + b f^2 + c`` (:func:`exact_root_hook`).  Roots of cubic or quartic factors
-that are not of these forms (not expressible by the square roots this code builds)
-have no exact value: they stay isolated by rationals only (``sided`` instants).
+``a f^4 + b f^2 + c`` (:func:`exact_root_hook`); or -- a root of a factor of degree 3
+or more -- a number of ``K(alpha)`` (:mod:`.algebraic_instants`: the polynomial factored
+over its coefficients' field K, numbers reduced modulo alpha's factor).  The roots that
+module leaves without a value (a quartic factor of group D4, C4 or V4, other even
+degrees) stay isolated by rationals only (``sided`` instants).
 
 :func:`separate` refines a list of roots until their intervals are pairwise disjoint,
 merging roots that are equal (same exact value, or a common root of the two polynomials:
@@ -132,7 +134,12 @@ def mq_sqrt(x, _depth: int = 0, big_ok: bool = False):
     verified by squaring; a rational that is not a square and has more than
     :data:`RATIONAL_BITS` bits is a miss, except ``x`` itself with ``big_ok``).  For a
     tower number ``x`` (:mod:`.tower_numbers`) the answer is its root in the tower, a new
-    level when it has none there (None only when that cannot be decided)."""
+    level when it has none there (None only when that cannot be decided); for a number
+    of ``K(alpha)`` (:mod:`.algebraic_instants`) its root there or one level over it
+    (:mod:`.algebraic_tower`)."""
+    from .algebraic_tower import is_algebraic_tower, sqrt_over_k_alpha
+    if is_algebraic(x) or is_algebraic_tower(x):   # K(alpha), or one level over it
+        return sqrt_over_k_alpha(x)
     if is_tower(x):                     # a tower number: its root in the tower
         return tower_sqrt(x) if x.sign() > 0 else None
     return closure_sqrt(x, _depth, big_ok)
@@ -151,10 +158,11 @@ def exact_root_hook(poly, lo, hi):
     discriminant a square in no multiquadratic field), a biquadratic quartic
     ``a f^4 + b f^2 + c``, or a cubic or quartic with a factor ``h(f^2)`` (the common
     factor of its even and odd parts: an arc's denominator ``1 + T^2 f^2`` times a
-    relation, for example), whose two factors are solved in turn.  None for the other
-    cubics and quartics: a root of an irreducible factor of degree 3 or 4 is in general
-    not expressible by square roots (and factoring over the coefficients' field is not
-    attempted), so such an instant is only seen on both sides (``sided``)."""
+    relation, for example), whose two factors are solved in turn.  Any other polynomial
+    of degree 3 or more is factored over its coefficients' field
+    (:func:`.algebraic_instants.algebraic_root`): a root of a factor of degree 3, 5, ...
+    or of a quartic factor of group S4 or A4 is a number of ``K(alpha)``; None for the
+    rest, whose instants are only seen on both sides (``sided``)."""
     if len(poly) == 2:
         r = _linear_root(poly)
         return r if (r - lo).sign() > 0 and (r - hi).sign() < 0 else None
@@ -173,6 +181,9 @@ def exact_root_hook(poly, lo, hi):
                 r = exact_root_hook(factor, lo, hi)
                 if r is not None:
                     return r
+    if len(poly) >= 4:      # factored over K: a root of K(alpha) (algebraic_instants)
+        from .algebraic_instants import algebraic_root
+        return algebraic_root(poly, lo, hi)
     return None
 
 
@@ -185,7 +196,7 @@ class Root:
     poly: tuple
     lo: fmpq
     hi: fmpq
-    exact: object = None            # MQ, a tower number (nested radical) or None
+    exact: object = None            # MQ, a tower number, a number of K(alpha), or None
     tags: list = field(default_factory=list)
 
     def _sign_at(self, x) -> int:
@@ -338,10 +349,22 @@ def _same_root(r: Root, s: Root) -> bool:
     return _variations(chain, lo) - _variations(chain, hi) > 0
 
 
+def is_algebraic(x) -> bool:
+    """A number of ``K(alpha)`` (:mod:`.algebraic_instants`, imported there: it builds
+    on this module's arithmetic)?"""
+    from .algebraic_instants import AlgebraicNumber
+    return isinstance(x, AlgebraicNumber)
+
+
 def _comparable(x, y) -> bool:
     """Can ``==`` decide: not two numbers of different towers (their canonical forms
-    differ even for equal values; :func:`_same_root` then uses a polynomial)."""
-    return not (is_tower(x) and is_tower(y) and x.tower is not y.tower)
+    differ even for equal values; :func:`_same_root` then uses a polynomial), nor of two
+    different roots' fields (:mod:`.algebraic_instants`)."""
+    if is_tower(x) and is_tower(y):
+        return x.tower is y.tower
+    if is_algebraic(x) and is_algebraic(y):        # two instants' fields: not mixed
+        return x.root is y.root
+    return True
 
 
 def separate(roots: list, max_rounds: int | None = None) -> list:

@@ -1,0 +1,611 @@
+"""Critical instants at roots of cubic (and other) factors that square roots do not express.
+
+A critical instant of a motion (:mod:`.instants`, :mod:`.joint_instants`) is a real root
+``alpha`` of a square-free polynomial ``p`` with multiquadratic coefficients, isolated by
+a rational interval (:mod:`.polyroots`).  Linear and quadratic factors, and the quartics
+that square roots solve, are exact already (``MQ`` numbers, tower numbers).  This module
+makes the other roots exact: the mover's point at ``tau = alpha`` has coordinates in
+``K(alpha)``, and the fresh Look runs on them.
+
+**Factoring first.**  :func:`factor_over_k` factors ``p`` into irreducible factors over
+``K = Q(sqrt q : q a prime of p's coefficients)`` by Trager's algorithm: the norm
+``N(x) = prod_sigma sigma(p)(x - s theta)`` over the automorphisms of ``K`` (each flips the
+sign of one ``sqrt q``; ``theta`` = the sum of the ``sqrt q``, a primitive element; the
+shift ``s = 0, 1, 2, ...`` until ``N`` is square-free) is a rational polynomial, python-flint
+factors it over Q, and the gcd over ``K`` of ``p(x - s theta)`` with each rational factor is
+an irreducible factor over ``K`` (Trager 1976, Algebraic factoring and rational function
+integration, valid for any number field).  ``alpha``'s factor ``f`` is the one that changes
+sign on the isolating interval (the interval holds one root of ``p``, a simple one).
+
+**Why reduction modulo f is canonical for every multiquadratic field.**  The gathering code
+mixes ``alpha``'s numbers with positions holding square roots that ``K`` lacks (other robots,
+layer slots).  So ``f`` must stay irreducible over every multiquadratic extension ``K'`` of
+``K``; then ``{1, alpha, ..., alpha^(d-1)}`` is a basis of ``K'(alpha)`` over ``K'``, a number
+reduced modulo ``f`` has one representation, ``==`` and ``hash`` are structural, a
+non-constant one is never a multiquadratic number, and ``g(alpha) = 0`` iff ``f | g``.
+
+* ``f`` of odd degree ``d``: over ``K' = K(sqrt q)``, ``[K'(alpha):K] = 2 d'`` is a multiple
+  of ``d``, so ``d' = d`` (and by induction over any number of square roots).
+* ``f`` of degree 4: its Galois group over ``K`` is S4 or A4 iff its resolvent cubic is
+  irreducible over ``K`` (tested by the same factoring).  Then ``K(alpha)`` has no field
+  strictly between ``K`` and it (the stabiliser of a root, S3 or C3, is maximal), so
+  ``sqrt q`` is not in ``K(alpha)`` and ``[K'(alpha):K'] = 4``; the group over ``K'`` is
+  again S4 or A4 (index at most 2), so the argument repeats.
+* other even degrees, and quartics with a reducible resolvent (D4, C4, V4: their roots are
+  nested square roots that :mod:`.tower_numbers` does not build): no exact value
+  (``sided``, as before).
+
+**Signs**: an Arb ball of ``alpha`` from its rational interval, refined by bisection (signs
+of ``f`` at rationals: an Arb evaluation, exact evaluation when the ball holds 0), and the
+element's value at it, precision doubled until the ball excludes 0 (a non-zero element
+has a non-zero value, so this ends).  **Square roots** (a radial target of the mover at
+the instant): :func:`algebraic_sqrt` finds a root that lies in ``K'(alpha)``, ``K'`` a
+multiquadratic field (complete for alpha of odd degree); a root outside (the usual case:
+``|p - C|`` of a generic point) is a level of a tower over ``K(alpha)``
+(:mod:`.algebraic_tower`, for alpha of odd degree only; for a quartic alpha the caller
+gets None, raises ``ValueError`` and the fresh Look at that instant is ``undecided``,
+counted as ``skipped``, the Looks just before and after it still running).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from flint import arb, ctx, fmpq, fmpq_poly, fmpz
+
+from ..exact.field import FieldElement
+from ..exact.multiquadratic import MQ
+from .polyroots import padd as _add, pdivmod as _divmod, peval as _eval, pmul as _mul, \
+    trim as _trim
+
+__all__ = ["AlgebraicNumber", "AlgebraicRoot", "factor_over_k", "algebraic_root",
+           "is_algebraic", "algebraic_sqrt", "algebraic_sqrt_decided", "MAX_NORM_DEGREE"]
+
+ZERO = MQ()
+ONE = MQ.rational(1)
+
+#: The largest degree of the rational norm factored (degree of p times 2^#primes of K).
+MAX_NORM_DEGREE = 96
+#: The largest coefficient size (bits of a rational) of a remainder in a gcd over K.
+GCD_BITS = 20000
+
+
+# -- polynomials over MQ (tuples, lowest degree first; polyroots' arithmetic) -------------
+def _monic(p) -> tuple:
+    inv = 1 / p[-1]
+    return tuple(c * inv for c in p)
+
+
+def _bits(p) -> int:
+    return max((int(c.p).bit_length() + int(c.q).bit_length()
+                for x in p for c in x.terms.values()), default=0)
+
+
+def _gcd(p, q, budget: int | None = None):
+    """The monic gcd over the coefficients' field; None when a remainder's coefficients
+    exceed ``budget`` bits."""
+    p, q = _trim(p), _trim(q)
+    while q:
+        p, q = q, _divmod(p, q)[1]
+        if budget is not None and _bits(q) > budget:
+            return None
+    return _monic(p) if p else p
+
+
+def _shift(p, c) -> tuple:
+    """``p(x + c)`` (Horner)."""
+    acc: tuple = ()
+    for a in reversed(p):
+        acc = _add(_mul(acc, (c, ONE)), (a,))
+    return acc
+
+
+def _group_basis(p) -> tuple:
+    """``(basis, coords)``: squarefree ``b_1, ..., b_d`` independent modulo squares with
+    ``K = Q(sqrt b_1, ..., sqrt b_d)`` (``[K:Q] = 2^d``), and ``coords(m)``: the set of
+    ``j`` with ``m = prod_{j} b_j`` modulo squares, for every radicand ``m`` of ``p``
+    (Gaussian elimination over GF(2) on the primes' exponent vectors).  The automorphism
+    ``sigma_j`` flips the sign of ``sqrt m`` iff ``j`` is in ``coords(m)``."""
+    rads = sorted({m for c in p for m in c.radicands()})
+    primes = sorted({int(q) for m in rads for q, _ in fmpz(m).factor()})
+    bit = {q: 1 << k for k, q in enumerate(primes)}
+
+    def vec(m):
+        return sum(bit[int(q)] for q, e in fmpz(m).factor() if e % 2)
+
+    rows: list = []                 # (vector, pivot, combination of basis indices)
+    basis: list = []
+    for m in rads:
+        v, comb = vec(m), 0
+        for w, piv, c in rows:
+            if v & piv:
+                v, comb = v ^ w, comb ^ c
+        if v:
+            j = len(basis)
+            basis.append(m)
+            rows.append((v, v & -v, comb ^ (1 << j)))
+    coords: dict = {}
+    for m in rads:
+        v, comb = vec(m), 0
+        for w, piv, c in rows:
+            if v & piv:
+                v, comb = v ^ w, comb ^ c
+        coords[m] = comb
+    return tuple(basis), coords
+
+
+def _conjugate(x: MQ, j: int, coords: dict) -> MQ:
+    return MQ({m: (-c if m != 1 and coords[m] >> j & 1 else c) for m, c in x.terms.items()})
+
+
+def _rational_poly(p) -> fmpq_poly:
+    return fmpq_poly([c.to_fmpq() for c in p])
+
+
+def _from_rational(h: fmpq_poly) -> tuple:
+    return tuple(MQ.rational(c) for c in h.coeffs())
+
+
+# -- factoring over K = Q(sqrt primes) ---------------------------------------------------------
+@lru_cache(maxsize=512)
+def factor_over_k(p: tuple):
+    """The monic irreducible factors of the square-free ``p`` (MQ coefficients, degree >= 1)
+    over ``K``, the multiquadratic field of its coefficients' primes (Trager's algorithm);
+    None when the norm's degree exceeds :data:`MAX_NORM_DEGREE`, or when ``p`` is
+    reducible over ``K`` and a gcd over ``K`` grows beyond :data:`GCD_BITS` (Euclid's
+    coefficients swell over a number field)."""
+    p = _monic(_trim(p))
+    basis, coords = _group_basis(p)
+    if len(p) - 1 << len(basis) > MAX_NORM_DEGREE:
+        return None
+    if not basis:
+        return tuple(_monic(_from_rational(h)) for h, _ in _rational_poly(p).factor()[1])
+    theta = MQ({b: fmpq(1) for b in basis})            # a primitive element of K
+    for s in range(0, 12):
+        ps = _shift(p, -theta * s) if s else p          # ps(x) = p(x - s theta)
+        coords_s = dict(coords)
+        coords_s.update({b: 1 << j for j, b in enumerate(basis)})
+        norm = ps
+        for j in range(len(basis)):         # the product over the group, one flip at a time
+            norm = _mul(norm, tuple(_conjugate(c, j, coords_s) for c in norm))
+        n = _rational_poly(norm)
+        if n.gcd(n.derivative()).degree() > 0:
+            continue                         # not square-free: another shift
+        factors = n.factor()[1]
+        if len(factors) == 1:                # N(p) irreducible: so is p over K (no gcd)
+            return (p,)
+        out = []
+        for h, _ in factors:
+            g = _gcd(ps, _from_rational(h), GCD_BITS)
+            if g is None:
+                return None
+            if len(g) > 1:
+                out.append(_monic(_shift(g, theta * s)) if s else g)
+        return tuple(out)
+    return None
+
+
+def _changes_sign(f, lo, hi) -> bool:
+    return _eval(f, MQ.rational(lo)).sign() * _eval(f, MQ.rational(hi)).sign() < 0
+
+
+def _stable(f) -> bool:
+    """Is the irreducible ``f`` over K irreducible over every multiquadratic extension
+    of K (module docstring)?"""
+    d = len(f) - 1
+    if d % 2:
+        return True
+    if d == 4:
+        e, dd, c, b = f[3], f[2], f[1], f[0]          # x^4 + e x^3 + dd x^2 + c x + b
+        resolvent = (-(e * e * b - dd * b * 4 + c * c), e * c - b * 4, -dd, ONE)
+        factors = factor_over_k(_trim(resolvent))
+        return factors is not None and len(factors) == 1 and len(factors[0]) == 4
+    return False
+
+
+def algebraic_root(p, lo, hi):
+    """The root of the square-free ``p`` in ``(lo, hi)`` (rationals, one root of ``p``
+    inside, none at the ends), exact: an MQ (a linear factor over K), the factor's
+    quadratic root (tower numbers, :func:`.tower_numbers.quadratic_root`), or an
+    :class:`AlgebraicNumber` (a factor of odd degree, or a quartic with an S4 or A4 group);
+    None otherwise (other even degrees, a quartic of group D4, C4 or V4, a norm too big,
+    coefficients that are not multiquadratic: a run's tower numbers)."""
+    if not all(isinstance(c, MQ) for c in p):
+        return None
+    factors = factor_over_k(_trim(p))
+    if factors is None:
+        return None
+    held = [f for f in factors if _changes_sign(f, lo, hi)]
+    if len(held) != 1:
+        return None
+    f = held[0]
+    if len(f) == 2:
+        return -f[0]
+    if len(f) == 3:
+        from .tower_numbers import quadratic_root
+        return quadratic_root(f[0], f[1], f[2], lo, hi)
+    if not _stable(f):
+        return None
+    root = AlgebraicRoot.of(f, fmpq(lo), fmpq(hi))
+    return AlgebraicNumber(root, (ZERO, ONE))
+
+
+# -- the number type ------------------------------------------------------------------------
+class AlgebraicRoot:
+    """``alpha``: the root of the monic ``f`` (irreducible over every multiquadratic
+    field, :func:`_stable`) in the rational interval ``(lo, hi)``; one object per root
+    (:meth:`of`), so numbers of the same instant share it."""
+
+    _known: dict = {}            # f -> [AlgebraicRoot]
+
+    def __init__(self, f: tuple, lo: fmpq, hi: fmpq):
+        self.f, self.lo, self.hi = f, lo, hi
+        self.degree = len(f) - 1
+        self._balls: dict = {}
+        self._canonical = None
+
+    @classmethod
+    def of(cls, f: tuple, lo: fmpq, hi: fmpq) -> "AlgebraicRoot":
+        for r in cls._known.setdefault(f, []):
+            # (lo, hi) holds one root of f: r's root is in it iff it is the same root
+            while not (lo <= r.lo and r.hi <= hi) and not (r.hi <= lo or hi <= r.lo):
+                r._bisect()
+            if lo <= r.lo and r.hi <= hi:
+                return r
+        root = cls(f, lo, hi)
+        cls._known[f].append(root)
+        if len(cls._known) > 4096:            # a bound on the memory, not on correctness
+            cls._known.clear()
+            cls._known[f] = [root]
+        return root
+
+    def _sign_at(self, x: fmpq) -> int:
+        with ctx.workprec(128):
+            v = arb(0)
+            xa = arb(x)
+            for c in reversed(self.f):
+                v = v * xa + c.enclosure(128)
+        if v > 0:
+            return 1
+        if v < 0:
+            return -1
+        return _eval(self.f, MQ.rational(x)).sign()
+
+    def _bisect(self) -> None:
+        mid = (self.lo + self.hi) / 2
+        s = self._sign_at(mid)
+        if s == 0:
+            raise ArithmeticError("a rational root of an irreducible factor")
+        if s == self._sign_at(self.lo):
+            self.lo = mid
+        else:
+            self.hi = mid
+
+    def ball(self, prec: int) -> arb:
+        """An Arb ball holding ``alpha``, of radius below ``2^-prec``."""
+        b = self._balls.get(prec)
+        if b is None:
+            eps = fmpq(1, 1 << prec)
+            while self.hi - self.lo > eps:
+                self._bisect()
+            with ctx.workprec(prec + 32):
+                b = arb(self.lo).union(arb(self.hi))
+            self._balls[prec] = b
+        return b
+
+    def text(self) -> str:
+        lo, hi = self.canonical_interval()
+        return f"the root of {_poly_text(self.f, 'x')} in ({lo}, {hi})"
+
+    def canonical_interval(self) -> tuple:
+        """The largest dyadic interval ``(k/2^j, (k+1)/2^j)`` inside ``(0, 1)``'s halvings
+        that holds alpha and no other root of ``f`` (Sturm counts): the same for the same
+        root whatever interval it was isolated by, so texts (witnesses, replays) do not
+        depend on the history of refinements."""
+        if self._canonical is None:
+            from .polyroots import _variations, sturm_chain
+            chain = sturm_chain(self.f)
+            lo, hi = fmpq(min(0, self.lo.floor())), fmpq(max(1, self.hi.ceil()))
+            while _variations(chain, MQ.rational(lo)) - _variations(chain, MQ.rational(hi)) > 1:
+                mid = (lo + hi) / 2
+                while self.lo < mid < self.hi:
+                    self._bisect()
+                lo, hi = (mid, hi) if self.lo >= mid else (lo, mid)
+            self._canonical = (lo, hi)
+        return self._canonical
+
+
+def _poly_text(cs, var: str) -> str:
+    """``(c_n)*var^n + ... + (c_0)``, the zero terms left out."""
+    terms = []
+    for k, c in enumerate(cs):
+        if not c.is_zero():
+            x = "" if k == 0 else var if k == 1 else f"{var}^{k}"
+            terms.append(f"({c.text()})*{x}" if x else f"({c.text()})")
+    return " + ".join(reversed(terms))
+
+
+def _coerce(other):
+    if isinstance(other, MQ):
+        return other
+    if isinstance(other, FieldElement):
+        return None
+    try:
+        return MQ.rational(other)
+    except TypeError:
+        return None
+
+
+class AlgebraicNumber(FieldElement):
+    """A number of ``K(alpha)``: ``sum c_k alpha^k``, ``k < deg f``, MQ coefficients,
+    reduced modulo ``f`` (canonical, module docstring); never an MQ (a constant result of
+    arithmetic is returned as its MQ).  Offers the MQ methods the gathering code calls."""
+
+    __slots__ = ("root", "c", "_hash")
+
+    def __init__(self, root: AlgebraicRoot, c: tuple):
+        self.root, self.c, self._hash = root, c, None
+
+    def _new(self, c):
+        c = _trim(c)
+        if len(c) > self.root.degree:
+            c = _divmod(c, self.root.f)[1]
+        if len(c) <= 1:
+            return c[0] if c else ZERO
+        return AlgebraicNumber(self.root, c)
+
+    def _other(self, other):
+        if isinstance(other, AlgebraicNumber):
+            if other.root is not self.root:
+                raise ValueError("numbers of two different algebraic instants are not mixed")
+            return other.c
+        o = _coerce(other)
+        return None if o is None else ((o,) if not o.is_zero() else ())
+
+    def __add__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else self._new(_add(self.c, o))
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return AlgebraicNumber(self.root, tuple(-x for x in self.c))
+
+    def __pos__(self):
+        return self
+
+    def __sub__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else self._new(_add(self.c, tuple(-x for x in o)))
+
+    def __rsub__(self, other):
+        return (-self).__add__(other)
+
+    def __mul__(self, other):
+        o = self._other(other)
+        return NotImplemented if o is None else self._new(_mul(self.c, o))
+
+    __rmul__ = __mul__
+
+    def inverse(self):
+        """By the extended Euclidean algorithm with ``f`` (coprime: ``f`` is irreducible
+        and this number is not zero)."""
+        r0, r1 = self.root.f, self.c
+        s0, s1 = (), (ONE,)
+        while len(r1) > 1:
+            q, r = _divmod(r0, r1)
+            r0, r1 = r1, r
+            s0, s1 = s1, _add(s0, tuple(-x for x in _mul(q, s1)))
+        inv = 1 / r1[0]
+        return self._new(tuple(x * inv for x in s1))
+
+    def __truediv__(self, other):
+        if isinstance(other, AlgebraicNumber):
+            return self * other.inverse()
+        o = _coerce(other)
+        if o is None:
+            return NotImplemented
+        if o.is_zero():
+            raise ZeroDivisionError("division by zero")
+        inv = 1 / o
+        return self._new(tuple(x * inv for x in self.c))
+
+    def __rtruediv__(self, other):
+        o = _coerce(other)
+        return NotImplemented if o is None else self.inverse() * o
+
+    def __pow__(self, k: int):
+        if not isinstance(k, int):
+            return NotImplemented
+        base = self if k >= 0 else self.inverse()
+        out, k = ONE, abs(k)
+        while k:
+            if k & 1:
+                out = base * out
+            base = base * base
+            k >>= 1
+        return out
+
+    # -- exact comparison ------------------------------------------------------------------
+    def __eq__(self, other):
+        if isinstance(other, AlgebraicNumber):
+            if other.root is not self.root:
+                raise ValueError("numbers of two different algebraic instants are not "
+                                 "compared here")
+            return self.c == other.c
+        o = _coerce(other)
+        return NotImplemented if o is None else False     # never a multiquadratic number
+
+    def __ne__(self, other):
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
+
+    def __hash__(self):
+        if self._hash is None:
+            self._hash = hash((id(self.root), self.c))
+        return self._hash
+
+    def _cmp(self, other):
+        d = self - other
+        return None if d is NotImplemented else d.sign()
+
+    def sign(self) -> int:
+        prec = 64
+        while prec <= 1 << 16:
+            v = self.enclosure(prec)
+            if v > 0:
+                return 1
+            if v < 0:
+                return -1
+            prec *= 2
+        raise ArithmeticError("sign undecided at maximal precision (a non-zero number)")
+
+    def enclosure(self, prec: int = 53) -> arb:
+        """An Arb ball around the value (filters and drawing only)."""
+        a = self.root.ball(prec + 16)
+        with ctx.workprec(prec + 32):
+            v = arb(0)
+            for x in reversed(self.c):
+                v = v * a + x.enclosure(prec + 32)
+        return v
+
+    def __float__(self):
+        return float(self.enclosure(53).mid())
+
+    def __bool__(self):
+        return True
+
+    def __abs__(self):
+        return -self if self.sign() < 0 else self
+
+    # -- the MQ methods the gathering code calls ----------------------------------------------
+    def is_zero(self) -> bool:
+        return False
+
+    def is_rational(self) -> bool:
+        return False
+
+    def to_fmpq(self):
+        raise ValueError(f"{self.text()} is not rational")
+
+    rational = to_fmpq
+
+    def text(self) -> str:
+        return f"[{_poly_text(self.c, 'a')}, a = {self.root.text()}]"
+
+    def __repr__(self):
+        return f"AlgebraicNumber({self.text()!r})"
+
+
+def is_algebraic(x) -> bool:
+    return isinstance(x, AlgebraicNumber)
+
+
+def mixes(world, pieces=()) -> bool:
+    """Would numbers of ``K(alpha)`` meet numbers of another kind (a run's tower of
+    nested radicals) in a fresh Look at an instant of ``pieces``: a robot standing, a
+    pending target or a planned path in such a field?  They do not mix (no common field
+    is built), so such an instant stays ``sided``."""
+    pts = [p for pc in pieces for p in (pc.start, pc.end)]
+    for r in world.robots:
+        pts.append(r.pos)
+        pts += [p for pc in (r.path or ()) for p in (pc.start, pc.end)]
+        if r.target is not None:
+            pts.append(r.target)
+    return any(not isinstance(c, MQ) for p in pts for c in p)
+
+
+def _minpoly(u: AlgebraicNumber) -> tuple:
+    """The monic minimal polynomial over K of ``u`` (not in K, so of degree d: alpha's
+    factor stays irreducible and K(alpha) has no field strictly between, for d prime or
+    a quartic of group S4 or A4; otherwise the linear system below is singular and
+    ValueError is raised): ``u^d`` in the basis ``1, u, ..., u^(d-1)`` by Gaussian
+    elimination over K."""
+    d = u.root.degree
+    powers, x = [], ONE
+    for _ in range(d + 1):
+        c = x.c if is_algebraic(x) else (x,)
+        powers.append([c[i] if i < len(c) else ZERO for i in range(d)])
+        x = u * x
+    # rows: coordinates i; unknowns: the coefficients of 1, u, ..., u^(d-1)
+    rows = [[powers[k][i] for k in range(d)] + [powers[d][i]] for i in range(d)]
+    for col in range(d):
+        piv = next((r for r in range(col, d) if not rows[r][col].is_zero()), None)
+        if piv is None:
+            raise ValueError("u does not generate K(alpha)")
+        rows[col], rows[piv] = rows[piv], rows[col]
+        inv = 1 / rows[col][col]
+        rows[col] = [v * inv for v in rows[col]]
+        for r in range(d):
+            if r != col and not rows[r][col].is_zero():
+                k = rows[r][col]
+                rows[r] = [a - k * b for a, b in zip(rows[r], rows[col])]
+    return tuple(-rows[i][d] for i in range(d)) + (ONE,)
+
+
+def _sqrt_in_k_alpha(u: AlgebraicNumber) -> tuple:
+    """``(s, decided)``: a square root ``s`` of ``u`` in ``K(alpha)``, or None; one lies
+    there iff the minimal polynomial P of ``u`` has ``P(y^2) = +- h(y) h(-y)`` over K, and
+    then ``h`` and ``y^2 - u`` share the root ``s``: ``h(y) = A + B y`` modulo ``y^2 - u``,
+    ``s = -A/B`` (checked: ``s^2 == u``).  ``decided`` is False when the factoring gave
+    up (a norm or a gcd too large)."""
+    try:
+        P = _minpoly(u)
+    except ValueError:
+        return None, False
+    even = []
+    for c in P:
+        even += [c, ZERO]
+    factors = factor_over_k(_trim(even))
+    if factors is None:
+        return None, False
+    for h in factors:
+        if len(h) - 1 != u.root.degree:
+            continue
+        A, B, power = ZERO, ZERO, ONE           # power = u^(k // 2)
+        for k, c in enumerate(h):
+            if k % 2:
+                B = B + c * power
+                power = power * u
+            else:
+                A = A + c * power
+        if not (is_algebraic(B) or not B.is_zero()):
+            continue
+        s = -A / B
+        if s * s == u:
+            return s, True
+    return None, True
+
+
+def algebraic_sqrt_decided(x) -> tuple:
+    """``(root, decided)``: the non-negative square root of ``x > 0`` in ``K'(alpha)``,
+    ``K'`` a multiquadratic field (then the representation of :class:`AlgebraicNumber`
+    holds it), or None; ``decided``: the search was complete -- for alpha of odd degree
+    d: ``x = q t^2`` with ``t`` in K(alpha) and ``sqrt q`` in ``K'`` (the quadratic
+    subextensions of ``K'(alpha)/K(alpha)`` come from ``K'/K``), and the norm gives ``q =
+    N(x)`` modulo squares of K: so ``sqrt N(x)`` in the multiquadratic closure
+    (:func:`~exactsym.exact.mq_closure.decided_sqrt`) times a root of ``x / N(x)`` in
+    K(alpha).  For a quartic alpha only roots in K(alpha) itself are searched (never
+    ``decided`` when none is found).  Each root is checked by squaring."""
+    if x.sign() <= 0:
+        return None, True
+    s, decided = _sqrt_in_k_alpha(x)
+    odd = x.root.degree % 2 == 1
+    if s is None and decided and odd:
+        from ..exact.mq_closure import decided_sqrt
+        norm = -_minpoly(x)[0]                     # N(x) = (-1)^d P(0), d odd
+        rn, decided = decided_sqrt(norm) if norm.sign() > 0 else (None, True)
+        if rn is not None:
+            t, decided = _sqrt_in_k_alpha(x / norm)
+            if t is not None:
+                s = rn * t
+    if s is None:
+        return None, decided and odd
+    s = s if s.sign() > 0 else -s
+    return (s, True) if s * s == x else (None, False)
+
+
+def algebraic_sqrt(x):
+    """:func:`algebraic_sqrt_decided`'s root (None: none in any ``K'(alpha)``, or not
+    decided)."""
+    return algebraic_sqrt_decided(x)[0]
