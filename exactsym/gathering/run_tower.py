@@ -86,7 +86,16 @@ def sqrt_exact(x, tower: RunTower | None = None):
     """The non-negative square root of the kernel number ``x >= 0`` (an MQ or a tower
     number): an MQ when it lies in the multiquadratic closure, else a tower number of
     ``x``'s tower, of ``tower`` (x an MQ), or of a new :class:`RunTower`.  ValueError
-    when ``x < 0`` or when the closure test cannot decide."""
+    when ``x < 0`` or when the closure test cannot decide.  A number of K(alpha) (an
+    instant at a root of a cubic or quartic factor, :mod:`.algebraic_instants`) has its
+    own tower over K(alpha) (:mod:`.algebraic_tower`), never the run's."""
+    from .algebraic_instants import AlgebraicNumber
+    from .algebraic_tower import is_algebraic_tower, sqrt_over_k_alpha
+    if isinstance(x, AlgebraicNumber) or is_algebraic_tower(x):
+        root = sqrt_over_k_alpha(x)
+        if root is None:
+            raise ValueError("a square root over K(alpha) that is not built")
+        return root
     if is_tower(x):
         try:
             root = tower_sqrt(x)
@@ -125,10 +134,14 @@ def _coordinates(obj):
 
 
 def towers_of(points) -> tuple:
-    """The distinct towers of the coordinates of ``points``, in order of appearance."""
+    """The distinct towers of the coordinates of ``points``, in order of appearance
+    (not the towers over K(alpha): those numbers come only from fresh Looks at an
+    instant, are compared there and never moved along, so they are not re-homed)."""
+    from .algebraic_tower import AlgebraicTower
     out: list = []
     for c in _coordinates(points):
-        if isinstance(c, TowerElement) and not any(c.tower is t for t in out):
+        if (isinstance(c, TowerElement) and not isinstance(c.tower, AlgebraicTower)
+                and not any(c.tower is t for t in out)):
             out.append(c.tower)
     return tuple(out)
 
