@@ -12,7 +12,8 @@ from __future__ import annotations
 from functools import cmp_to_key
 from math import atan2, gcd, pi
 
-from ..exact import FieldElement, exact_key, fmpq, normal_turn, number_text, sign
+from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
+from ..exact.cyclotomic_text import fast_number_text as number_text
 from .circle_polygon import CirclePolygon
 from .filtered import compare_directions, cross_sign, dot_sign, gap_classes_on_circle
 from .ratio_keys import ball_at, gap_ratio_key, ray_ratio_key
