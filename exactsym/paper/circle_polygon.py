@@ -184,7 +184,7 @@ class CirclePolygon:
     @cached_property
     def one_circle(self) -> bool:
         """Cartesian: every direction vector has the same length (a level polygon)."""
-        if self.polar or not self.directions:
+        if self.polar or len(self.directions) < 2:     # one vertex: one length
             return True
         dirs = self.directions
         if any(isinstance(c, FieldElement) for d in dirs for c in d):
