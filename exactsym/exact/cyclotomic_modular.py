@@ -107,6 +107,22 @@ def ratio_irrational(x, y) -> bool:
     if found is None:
         return False
     p, sides = found
+    return _differ(p, sides)
+
+
+def product_ratio_irrational(a, b) -> bool:
+    """:func:`ratio_irrational` of (x, y) = a b, the complex product of the vectors a and b
+    (x = a_x b_x - a_y b_y, y = a_x b_y + a_y b_x), computed in F_p only: the maps are
+    ring maps, so the image of the product is the product of the images."""
+    found = images((a[0], a[1], b[0], b[1]))
+    if found is None:
+        return False
+    p, sides = found
+    return _differ(p, [((ax * bx - ay * by) % p, (ax * by + ay * bx) % p)
+                       for ax, ay, bx, by in sides])
+
+
+def _differ(p: int, sides) -> bool:
     values = []
     for xj, yj in sides:
         length = (xj * xj + yj * yj) % p
@@ -116,4 +132,4 @@ def ratio_irrational(x, y) -> bool:
     return values[0] != values[1]
 
 
-__all__ = ["images", "ratio_irrational"]
+__all__ = ["images", "product_ratio_irrational", "ratio_irrational"]
