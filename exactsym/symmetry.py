@@ -52,7 +52,7 @@ import numpy as np
 from .configuration import Configuration, no_cycle_collection
 from .geometry import PseudoAngle, intern_by_value, sorted_by_value
 from .isometries import Isometry, Layout, identity, reflection, rotation
-from .exact import fmpq
+from .exact import FieldElement, fmpq
 from .algebraic_filtered import certified_c1
 from .levels import Levels, RationalLevels, levels_of
 from .sec import LazyCentre
@@ -252,16 +252,41 @@ def _directions(points, centre, integers: bool, homogeneous=None):
     else:
         cx, cy, cd = homogeneous if homogeneous is not None else (cx, cy, 1)
         for i in range(n):
-            x, y = points[i]
-            dx, dy = cd * x - cx, cd * y - cy       # D (p - centre), D > 0: no division
-            if dx == 0 and dy == 0:
+            found = _point_about(points[i], cx, cy, cd)
+            if found is None:
                 centre_index = i
                 continue
-            vectors[i] = (dx, dy)
-            r2s[i] = dx * dx + dy * dy
-            keys[i] = PseudoAngle(dx, dy)       # division-free: no field inverse
+            vectors[i], r2s[i], keys[i] = found
             idx.append(i)
     return centre_index, idx, vectors, r2s, keys
+
+
+_ABOUT: dict = {}      # id(point) -> (point, cx, cy, cd, result): see _point_about
+_ABOUT_LIMIT = 1 << 14
+
+
+def _point_about(point, cx, cy, cd):
+    """``(vector, squared length, pseudo-angle)`` of D (point - centre) for the centre
+    (cx, cy) / cd (D = cd > 0: no division), or None at the centre.  Remembered per point
+    *object* and centre objects (the entry holds them, so an id is never mistaken for
+    another object's): the audit asks for the groups of many unions of levels about one
+    centre, made of the very same point objects, and in a cyclotomic field of degree
+    thousands each vector costs products of milliseconds."""
+    hit = _ABOUT.get(id(point))
+    if hit is not None and hit[0] is point and hit[1] is cx and hit[2] is cy \
+            and hit[3] is cd:
+        return hit[4]
+    x, y = point
+    dx, dy = cd * x - cx, cd * y - cy       # D (p - centre), D > 0: no division
+    if dx == 0 and dy == 0:
+        found = None
+    else:
+        found = ((dx, dy), dx * dx + dy * dy, PseudoAngle(dx, dy))  # no field inverse
+    if isinstance(dx, FieldElement) or isinstance(dy, FieldElement):
+        if len(_ABOUT) >= _ABOUT_LIMIT:
+            _ABOUT.clear()
+        _ABOUT[id(point)] = (point, cx, cy, cd, found)
+    return found
 
 
 def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=None):

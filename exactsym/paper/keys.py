@@ -320,7 +320,40 @@ def lazy_line_canon(a, b, make):
         x, y = ax * bx - ay * by, ax * by + ay * bx
         sq = x * x
         return sq / (sq + y * y)
-    return ("line", sx, sy, RatioKey(parts, value_ball, _largest_field(numbers)))
+    return ("line", sx, sy, _DirectionKey(sx, sy, vector, parts, value_ball,
+                                          _largest_field(numbers)))
+
+
+class _DirectionKey(RatioKey):
+    """The :class:`RatioKey` of x^2 / (x^2 + y^2) for a vector (x, y) = ``vector()`` whose
+    coordinate signs ``sx``, ``sy`` (non-zero) are known: two such keys with equal signs
+    are equal iff the vectors have one direction, i.e. iff x y' - y x' == 0 (two products
+    of the vectors' coordinates, not two of their squares).  Against any other
+    RatioKey, the RatioKey comparison (which reads ``parts``)."""
+
+    __slots__ = ("signs", "vector")
+
+    def __init__(self, sx: int, sy: int, vector, parts, value_ball, home):
+        self.signs, self.vector = (sx, sy), vector
+        super().__init__(parts, value_ball, home)
+
+    def __eq__(self, other) -> bool:
+        if self is other:
+            return True
+        if not isinstance(other, _DirectionKey):
+            return super().__eq__(other)
+        if self._hash != other._hash or self.home is not other.home \
+                or self.signs != other.signs:
+            return False
+        (x, y), (x2, y2) = self.vector(), other.vector()
+        # equal signs: x^2/|v|^2 == x2^2/|v2|^2 iff the unit vectors are equal
+        return not (x * y2 - y * x2)
+
+    def __ne__(self, other) -> bool:
+        return not self.__eq__(other)
+
+    def __hash__(self) -> int:
+        return self._hash
 
 
 def line_value(polar: bool, d):
