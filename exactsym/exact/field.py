@@ -226,12 +226,12 @@ class PolyElement(FieldElement):
     Mixes with ``int`` and ``fmpq`` operands; two elements must share one field.
     """
 
-    __slots__ = ("field", "poly", "_hash")
+    __slots__ = ("field", "poly", "_hash", "_sign")
 
     def __init__(self, field: NumberField, poly: fmpq_poly):
         self.field = field
         self.poly = poly
-        self._hash = None
+        self._hash = self._sign = None
 
     # -- coercion -----------------------------------------------------------
     def _other(self, other):
@@ -334,7 +334,10 @@ class PolyElement(FieldElement):
         if self.poly.degree() == 0:
             c = self.poly.coeffs()[0]
             return (c > 0) - (c < 0)
-        return self.field.sign_of(self.poly)
+        s = self._sign           # remembered: in degree thousands a sign costs milliseconds
+        if s is None:
+            s = self._sign = self.field.sign_of(self.poly)
+        return s
 
     @_mixing
     def __eq__(self, other):
