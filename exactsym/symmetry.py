@@ -320,12 +320,39 @@ def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=No
             rays.append(tuple(ray))
             radii.append(tuple([r2s[i] for i in ray]))
     m = len(rays)
-    angle = _pseudo_angle_of_integers if integers else PseudoAngle
     gaps = []
-    for a in range(m):
-        (ux, uy), (vx, vy) = vectors[rays[a][0]], vectors[rays[(a + 1) % m][0]]
-        gaps.append(angle(ux * vx + uy * vy, ux * vy - uy * vx))
+    if integers:
+        for a in range(m):
+            (ux, uy), (vx, vy) = vectors[rays[a][0]], vectors[rays[(a + 1) % m][0]]
+            gaps.append(_pseudo_angle_of_integers(ux * vx + uy * vy, ux * vy - uy * vx))
+    else:
+        for a in range(m):
+            gaps.append(_gap(vectors[rays[a][0]], vectors[rays[(a + 1) % m][0]]))
     return centre_index, rays, radii, gaps
+
+
+_GAPS: dict = {}       # (id(u), id(v)) -> (u, v, gap): see _gap
+
+
+def _gap(u, v) -> PseudoAngle:
+    """The pseudo-angle of (u.v, u x v), the counter-clockwise angle from u to v, with
+    three products (Gauss: conj(u) v) instead of four, remembered per pair of vector
+    objects when they hold field elements (the vectors of :func:`_point_about` are
+    shared by the audit's unions of levels, whose consecutive rays often recur)."""
+    field = isinstance(u[0], FieldElement) or isinstance(u[1], FieldElement) or \
+        isinstance(v[0], FieldElement) or isinstance(v[1], FieldElement)
+    if field:
+        hit = _GAPS.get((id(u), id(v)))
+        if hit is not None and hit[0] is u and hit[1] is v:
+            return hit[2]
+    (ux, uy), (vx, vy) = u, v
+    k = vx * (ux - uy)
+    gap = PseudoAngle(k + uy * (vx + vy), k + ux * (vy - vx))
+    if field:
+        if len(_GAPS) >= _ABOUT_LIMIT:
+            _GAPS.clear()
+        _GAPS[(id(u), id(v))] = (u, v, gap)
+    return gap
 
 
 # ---------------------------------------------------------------- the group
