@@ -45,12 +45,13 @@ two orientations.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cmp_to_key
 from typing import Iterator, Sequence
 
 import numpy as np
 
 from .configuration import Configuration, no_cycle_collection
-from .geometry import PseudoAngle, intern_by_value, sorted_by_value
+from .geometry import PseudoAngle, intern_by_value
 from .isometries import Isometry, Layout, identity, reflection, rotation
 from .exact import FieldElement, fmpq
 from .algebraic_filtered import certified_c1
@@ -281,7 +282,7 @@ def _point_about(point, cx, cy, cd):
     if dx == 0 and dy == 0:
         found = None
     else:
-        found = ((dx, dy), dx * dx + dy * dy, PseudoAngle(dx, dy))  # no field inverse
+        found = ((dx, dy), dx * dx + dy * dy, _Angle(dx, dy))  # no field inverse
     if isinstance(dx, FieldElement) or isinstance(dy, FieldElement):
         if len(_ABOUT) >= _ABOUT_LIMIT:
             _ABOUT.clear()
@@ -300,7 +301,7 @@ def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=No
     if integers:
         sort_by_exact_keys(idx, keys)
     else:
-        idx = sorted_by_value(idx, keys)
+        idx = _sorted_by_value(idx, keys)
     groups: list[list[int]] = []
     last = None
     for i in idx:
@@ -331,6 +332,38 @@ def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=No
     return centre_index, rays, radii, gaps
 
 
+class _Angle(PseudoAngle):
+    """A :class:`PseudoAngle` that remembers its 64-bit Arb ball (the angles of
+    :func:`_point_about` and :func:`_gap` are shared by many groups; in a field of degree
+    thousands a ball costs milliseconds)."""
+
+    __slots__ = ("_ball64",)
+
+    def __init__(self, x, y):
+        super().__init__(x, y)
+        self._ball64 = None
+
+    def ball(self, prec: int = 64):
+        if prec != 64:
+            return super().ball(prec)
+        if self._ball64 is None:
+            self._ball64 = super().ball(64)
+        return self._ball64
+
+
+def _sorted_by_value(indices: list, keys) -> list:
+    """:func:`exactsym.geometry.sorted_by_value` (the same list), with each adjacent pair of
+    the proposal first checked by the balls: a ball entirely below the next one proves
+    the order, and only overlapping balls are compared exactly (products in the field)."""
+    balls = {i: keys[i].ball() for i in indices}
+    proposal = sorted(indices, key=lambda i: balls[i].mid())
+    for a, b in zip(proposal, proposal[1:]):
+        if balls[a] < balls[b] or keys[a] <= keys[b]:
+            continue
+        return sorted(indices, key=cmp_to_key(lambda a, b: keys[a]._cmp(keys[b])))
+    return proposal
+
+
 _GAPS: dict = {}       # (id(u), id(v)) -> (u, v, gap): see _gap
 
 
@@ -347,7 +380,7 @@ def _gap(u, v) -> PseudoAngle:
             return hit[2]
     (ux, uy), (vx, vy) = u, v
     k = vx * (ux - uy)
-    gap = PseudoAngle(k + uy * (vx + vy), k + ux * (vy - vx))
+    gap = _Angle(k + uy * (vx + vy), k + ux * (vy - vx))
     if field:
         if len(_GAPS) >= _ABOUT_LIMIT:
             _GAPS.clear()
