@@ -231,3 +231,11 @@ def test_point_vectors_follow_the_centre():
     assert second[3] == fresh[3] and second[2] == fresh[2]
     assert first[3] != second[3]
     assert sign(first[3][0] - 1) == 0
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.sampled_from([1, 4, 9, 12, 72, 125, 2520, 27720]), st.integers(-10 ** 6, 10 ** 6))
+def test_root_of_unity_is_the_reduced_power(m, k):
+    from exactsym.exact.cyclotomic import root_of_unity
+    field = cyclotomic_field(m)
+    assert root_of_unity(field, k).poly == fmpq_poly([0] * (k % m) + [1]) % field.minpoly
