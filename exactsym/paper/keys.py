@@ -454,13 +454,13 @@ def gap_ids(poly: CirclePolygon) -> list:
         # algebraic: the gap keys held undivided (equal iff equal), told apart by balls;
         # exact products only for gaps in one hash cell (a field inverse costs up to a
         # second at degree thousands, tower products a millisecond each)
-        return [ids.setdefault(_gap_equality_key(dirs[i], dirs[(i + 1) % n]), len(ids))
+        return [ids.setdefault(gap_equality_key(dirs[i], dirs[(i + 1) % n]), len(ids))
                 for i in range(n)]
     return [ids.setdefault(hashable_key(ccw_gap_key(poly.polar, dirs[i], dirs[(i + 1) % n])),
                            len(ids)) for i in range(n)]
 
 
-def _gap_equality_key(a, b):
+def gap_equality_key(a, b):
     """A hashable key of :func:`ccw_gap_key` (Cartesian), equal iff those keys are equal,
     with no inverse (:func:`exactsym.paper.ratio_keys.gap_ratio_key`)."""
     c, s = cross_sign(a, b), dot_sign(a, b)        # both ball-filtered
