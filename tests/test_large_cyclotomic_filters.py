@@ -239,3 +239,22 @@ def test_root_of_unity_is_the_reduced_power(m, k):
     from exactsym.exact.cyclotomic import root_of_unity
     field = cyclotomic_field(m)
     assert root_of_unity(field, k).poly == fmpq_poly([0] * (k % m) + [1]) % field.minpoly
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(0, 4), st.lists(st.booleans(), max_size=9))
+def test_failure_texts_made_only_when_listed(examples, insides):
+    """claims._Record.fail with functions for the detail and the witness lists the same
+    entries as with the values, and calls them only for the failures it lists."""
+    from exactsym.paper.family.claims import _Record
+    eager, lazy, calls = _Record([], examples), _Record([], examples), []
+    for k, inside in enumerate(insides):
+        witness = {"k": k, "within_hypotheses": inside}
+        eager.fail("s", ["G1"], f"failure {k}", witness)
+        lazy.fail("s", ["G1"], lambda k=k: calls.append(k) or f"failure {k}",
+                  lambda w=witness: w, within=inside)
+    eager.summaries()
+    lazy.summaries()
+    assert eager.out == lazy.out and eager.trace == lazy.trace
+    assert eager.within == lazy.within and eager.failures == lazy.failures
+    assert calls == list(range(min(examples, len(insides))))
