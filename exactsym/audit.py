@@ -461,7 +461,7 @@ def _leader_check(config, ring_data, paper, group, kw, options) -> tuple[list, l
         base = _actions(paper)
         for frame in FRAMES[1:]:
             res = F.paper_procedure(transformed(config, ring_data, frame), **kw, claims=False,
-                                    check_vl=False)
+                                    check_vl=False, describe_polygons=False)
             if not res.complete or _actions(res) == base:
                 continue
             entry, note = _frame_difference(config, paper, res, frame, kw)
@@ -491,7 +491,8 @@ def _leader_check(config, ring_data, paper, group, kw, options) -> tuple[list, l
 def _procedure(config: Configuration, frame: str, kw: dict, **changes) -> F.PaperResult:
     """The paper's procedure on ``config`` seen in ``frame`` (claims and lem-vl-move off)."""
     return F.paper_procedure(transformed(config, levels_of(config), frame),
-                             **dict(kw, **changes), claims=False, check_vl=False)
+                             **dict(kw, **changes), claims=False, check_vl=False,
+                             describe_polygons=False)
 
 
 def _frame_difference(config: Configuration, paper: F.PaperResult, res: F.PaperResult,

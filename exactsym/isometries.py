@@ -22,7 +22,8 @@ class Isometry:
     one: a rotation by ``turn`` full turns (counter-clockwise), or the reflection
     ``t -> 2*turn - t`` in the mirror line at angle ``turn`` (in ``[0, 1/2)``);
     ``matrix`` is then None.  On the Cartesian path ``matrix`` is the exact
-    orthogonal matrix ``((a, b), (c, d))`` and ``turn`` is None.
+    orthogonal matrix ``((a, b), (c, d))`` (a :class:`LazyMatrix`, read as that tuple,
+    when built from rays) and ``turn`` is None.
     ``permutation[i]`` is the index of the image of point ``i``.
     """
     kind: str
@@ -44,6 +45,44 @@ class Layout:
     n: int
     period: int                  # rotation by `period` rays is the rotation by 1/k turn
     mirror_offsets: tuple        # reflections map ray i to ray (j - i) mod m, j in this tuple
+
+
+class LazyMatrix:
+    """The exact orthogonal matrix ``((a, b), (c, d))`` of a Cartesian symmetry, computed
+    on first read (iteration, indexing, equality, hash) and then kept.  Deciding a group
+    needs only the permutations; the matrix costs a field inverse (seconds in a
+    cyclotomic field of degree thousands) and only the report and the certificate of the
+    whole configuration's group read it, not the audit's groups of sub-configurations."""
+
+    __slots__ = ("_make", "_rows")
+
+    def __init__(self, make):
+        self._make, self._rows = make, None
+
+    def rows(self) -> tuple:
+        if self._rows is None:
+            self._rows, self._make = self._make(), None
+        return self._rows
+
+    def __iter__(self):
+        return iter(self.rows())
+
+    def __getitem__(self, i):
+        return self.rows()[i]
+
+    def __len__(self) -> int:
+        return 2
+
+    def __eq__(self, other):
+        if isinstance(other, LazyMatrix):
+            other = other.rows()
+        return self.rows() == other
+
+    def __hash__(self):
+        return hash(self.rows())
+
+    def __repr__(self) -> str:
+        return repr(self.rows())
 
 
 def identity(polar: bool, centre) -> Isometry:
@@ -104,10 +143,13 @@ def rotation(layout: Layout, shift: int) -> Isometry:
     if shift == 0:
         one, zero = _one_zero(layout.centre)
         return Isometry("rotation", layout.centre, None, ((one, zero), (zero, one)), perm)
-    (ux, uy), (vx, vy) = _reference_image(layout, image_ray)
-    inverse = 1 / (ux * ux + uy * uy)      # one field inverse, not two
-    cos, sin = (ux * vx + uy * vy) * inverse, (ux * vy - uy * vx) * inverse
-    return Isometry("rotation", layout.centre, None, ((cos, -sin), (sin, cos)), perm)
+
+    def matrix():
+        (ux, uy), (vx, vy) = _reference_image(layout, image_ray)
+        inverse = 1 / (ux * ux + uy * uy)      # one field inverse, not two
+        cos, sin = (ux * vx + uy * vy) * inverse, (ux * vy - uy * vx) * inverse
+        return ((cos, -sin), (sin, cos))
+    return Isometry("rotation", layout.centre, None, LazyMatrix(matrix), perm)
 
 
 def reflection(layout: Layout, offset: int) -> Isometry:
@@ -124,7 +166,10 @@ def reflection(layout: Layout, offset: int) -> Isometry:
         if axis >= fmpq(1, 2):
             axis -= fmpq(1, 2)
         return Isometry("reflection", layout.centre, axis, None, perm)
-    (ux, uy), (vx, vy) = _reference_image(layout, image_ray)
-    inverse = 1 / (ux * ux + uy * uy)      # one field inverse, not two
-    c, s = (ux * vx - uy * vy) * inverse, (ux * vy + uy * vx) * inverse
-    return Isometry("reflection", layout.centre, None, ((c, s), (s, -c)), perm)
+
+    def matrix():
+        (ux, uy), (vx, vy) = _reference_image(layout, image_ray)
+        inverse = 1 / (ux * ux + uy * uy)      # one field inverse, not two
+        c, s = (ux * vx - uy * vy) * inverse, (ux * vy + uy * vx) * inverse
+        return ((c, s), (s, -c))
+    return Isometry("reflection", layout.centre, None, LazyMatrix(matrix), perm)

@@ -45,14 +45,15 @@ two orientations.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cmp_to_key
 from typing import Iterator, Sequence
 
 import numpy as np
 
 from .configuration import Configuration, no_cycle_collection
-from .geometry import PseudoAngle, intern_by_value, sorted_by_value
+from .geometry import PseudoAngle, intern_by_value
 from .isometries import Isometry, Layout, identity, reflection, rotation
-from .exact import fmpq
+from .exact import FieldElement, fmpq
 from .algebraic_filtered import certified_c1
 from .levels import Levels, RationalLevels, levels_of
 from .sec import LazyCentre
@@ -252,16 +253,41 @@ def _directions(points, centre, integers: bool, homogeneous=None):
     else:
         cx, cy, cd = homogeneous if homogeneous is not None else (cx, cy, 1)
         for i in range(n):
-            x, y = points[i]
-            dx, dy = cd * x - cx, cd * y - cy       # D (p - centre), D > 0: no division
-            if dx == 0 and dy == 0:
+            found = _point_about(points[i], cx, cy, cd)
+            if found is None:
                 centre_index = i
                 continue
-            vectors[i] = (dx, dy)
-            r2s[i] = dx * dx + dy * dy
-            keys[i] = PseudoAngle(dx, dy)       # division-free: no field inverse
+            vectors[i], r2s[i], keys[i] = found
             idx.append(i)
     return centre_index, idx, vectors, r2s, keys
+
+
+_ABOUT: dict = {}      # id(point) -> (point, cx, cy, cd, result): see _point_about
+_ABOUT_LIMIT = 1 << 14
+
+
+def _point_about(point, cx, cy, cd):
+    """``(vector, squared length, pseudo-angle)`` of D (point - centre) for the centre
+    (cx, cy) / cd (D = cd > 0: no division), or None at the centre.  Remembered per point
+    *object* and centre objects (the entry holds them, so an id is never mistaken for
+    another object's): the audit asks for the groups of many unions of levels about one
+    centre, made of the very same point objects, and in a cyclotomic field of degree
+    thousands each vector costs products of milliseconds."""
+    hit = _ABOUT.get(id(point))
+    if hit is not None and hit[0] is point and hit[1] is cx and hit[2] is cy \
+            and hit[3] is cd:
+        return hit[4]
+    x, y = point
+    dx, dy = cd * x - cx, cd * y - cy       # D (p - centre), D > 0: no division
+    if dx == 0 and dy == 0:
+        found = None
+    else:
+        found = ((dx, dy), dx * dx + dy * dy, _Angle(dx, dy))  # no field inverse
+    if isinstance(dx, FieldElement) or isinstance(dy, FieldElement):
+        if len(_ABOUT) >= _ABOUT_LIMIT:
+            _ABOUT.clear()
+        _ABOUT[id(point)] = (point, cx, cy, cd, found)
+    return found
 
 
 def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=None):
@@ -275,7 +301,7 @@ def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=No
     if integers:
         sort_by_exact_keys(idx, keys)
     else:
-        idx = sorted_by_value(idx, keys)
+        idx = _sorted_by_value(idx, keys)
     groups: list[list[int]] = []
     last = None
     for i in idx:
@@ -295,12 +321,71 @@ def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=No
             rays.append(tuple(ray))
             radii.append(tuple([r2s[i] for i in ray]))
     m = len(rays)
-    angle = _pseudo_angle_of_integers if integers else PseudoAngle
     gaps = []
-    for a in range(m):
-        (ux, uy), (vx, vy) = vectors[rays[a][0]], vectors[rays[(a + 1) % m][0]]
-        gaps.append(angle(ux * vx + uy * vy, ux * vy - uy * vx))
+    if integers:
+        for a in range(m):
+            (ux, uy), (vx, vy) = vectors[rays[a][0]], vectors[rays[(a + 1) % m][0]]
+            gaps.append(_pseudo_angle_of_integers(ux * vx + uy * vy, ux * vy - uy * vx))
+    else:
+        for a in range(m):
+            gaps.append(_gap(vectors[rays[a][0]], vectors[rays[(a + 1) % m][0]]))
     return centre_index, rays, radii, gaps
+
+
+class _Angle(PseudoAngle):
+    """A :class:`PseudoAngle` that remembers its 64-bit Arb ball (the angles of
+    :func:`_point_about` and :func:`_gap` are shared by many groups; in a field of degree
+    thousands a ball costs milliseconds)."""
+
+    __slots__ = ("_ball64",)
+
+    def __init__(self, x, y):
+        super().__init__(x, y)
+        self._ball64 = None
+
+    def ball(self, prec: int = 64):
+        if prec != 64:
+            return super().ball(prec)
+        if self._ball64 is None:
+            self._ball64 = super().ball(64)
+        return self._ball64
+
+
+def _sorted_by_value(indices: list, keys) -> list:
+    """:func:`exactsym.geometry.sorted_by_value` (the same list), with each adjacent pair of
+    the proposal first checked by the balls: a ball entirely below the next one proves
+    the order, and only overlapping balls are compared exactly (products in the field)."""
+    balls = {i: keys[i].ball() for i in indices}
+    proposal = sorted(indices, key=lambda i: balls[i].mid())
+    for a, b in zip(proposal, proposal[1:]):
+        if balls[a] < balls[b] or keys[a] <= keys[b]:
+            continue
+        return sorted(indices, key=cmp_to_key(lambda a, b: keys[a]._cmp(keys[b])))
+    return proposal
+
+
+_GAPS: dict = {}       # (id(u), id(v)) -> (u, v, gap): see _gap
+
+
+def _gap(u, v) -> PseudoAngle:
+    """The pseudo-angle of (u.v, u x v), the counter-clockwise angle from u to v, with
+    three products (Gauss: conj(u) v) instead of four, remembered per pair of vector
+    objects when they hold field elements (the vectors of :func:`_point_about` are
+    shared by the audit's unions of levels, whose consecutive rays often recur)."""
+    field = isinstance(u[0], FieldElement) or isinstance(u[1], FieldElement) or \
+        isinstance(v[0], FieldElement) or isinstance(v[1], FieldElement)
+    if field:
+        hit = _GAPS.get((id(u), id(v)))
+        if hit is not None and hit[0] is u and hit[1] is v:
+            return hit[2]
+    (ux, uy), (vx, vy) = u, v
+    k = vx * (ux - uy)
+    gap = _Angle(k + uy * (vx + vy), k + ux * (vy - vx))
+    if field:
+        if len(_GAPS) >= _ABOUT_LIMIT:
+            _GAPS.clear()
+        _GAPS[(id(u), id(v))] = (u, v, gap)
+    return gap
 
 
 # ---------------------------------------------------------------- the group

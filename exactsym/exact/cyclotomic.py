@@ -74,9 +74,40 @@ def cyclotomic_field(m: int) -> NumberField:
 
 
 def root_of_unity(field: NumberField, k: int) -> FieldElement:
-    """``zeta_M^k`` for the field's order M."""
+    """``zeta_M^k`` for the field's order M.
+
+    With r the product of the primes dividing M and s = M / r, Phi_M(x) = Phi_r(x^s) and
+    phi(M) = s phi(r): x^k = x^a (x^s)^b (k = b s + a, a < s) is reduced as y^b modulo
+    Phi_r(y), whose remainder (degree < phi(r)) becomes, at y = x^s and times x^a, a
+    polynomial of degree < phi(M): the canonical element, without dividing x^k by
+    Phi_M (a quadratic division: 6 ms per root in Q(zeta_27720))."""
     m = field.cyclotomic_order
-    return field.element(fmpq_poly([0] * (k % m) + [1]))
+    k %= m
+    n = field.degree
+    if k < n:
+        return field.element(fmpq_poly([0] * k + [1]))
+    r, phi_r = _radical_cyclotomic(m)
+    s = m // r
+    a, b = k % s, k // s
+    small = fmpz_poly([0] * b + [1]) % phi_r
+    coeffs = [0] * n
+    for i, c in enumerate(small.coeffs()):
+        coeffs[a + i * s] = c
+    return field.element(fmpq_poly(coeffs))
+
+
+_RADICAL: dict = {}
+
+
+def _radical_cyclotomic(m: int) -> tuple:
+    """``(r, Phi_r)`` for r the product of the primes dividing m."""
+    found = _RADICAL.get(m)
+    if found is None:
+        r = 1
+        for p in factorization(m):
+            r *= p
+        found = _RADICAL[m] = (r, fmpz_poly.cyclotomic(r))
+    return found
 
 
 def cos_turn(field: NumberField, turn: fmpq) -> FieldElement:

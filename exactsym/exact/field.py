@@ -226,11 +226,12 @@ class PolyElement(FieldElement):
     Mixes with ``int`` and ``fmpq`` operands; two elements must share one field.
     """
 
-    __slots__ = ("field", "poly")
+    __slots__ = ("field", "poly", "_hash", "_sign")
 
     def __init__(self, field: NumberField, poly: fmpq_poly):
         self.field = field
         self.poly = poly
+        self._hash = self._sign = None
 
     # -- coercion -----------------------------------------------------------
     def _other(self, other):
@@ -333,7 +334,10 @@ class PolyElement(FieldElement):
         if self.poly.degree() == 0:
             c = self.poly.coeffs()[0]
             return (c > 0) - (c < 0)
-        return self.field.sign_of(self.poly)
+        s = self._sign           # remembered: in degree thousands a sign costs milliseconds
+        if s is None:
+            s = self._sign = self.field.sign_of(self.poly)
+        return s
 
     @_mixing
     def __eq__(self, other):
@@ -356,9 +360,13 @@ class PolyElement(FieldElement):
         return PolyElement(self.field, diff).sign()
 
     def __hash__(self):
-        if self.poly.degree() <= 0:
-            return hash(self.rational())
-        return hash(tuple(self.poly.coeffs()))
+        # remembered: in degree thousands the coefficient tuple hashes in milliseconds
+        # (elements are never mutated: every operation makes a new one)
+        h = self._hash
+        if h is None:
+            h = self._hash = hash(self.rational()) if self.poly.degree() <= 0 else \
+                hash(tuple(self.poly.coeffs()))
+        return h
 
     def __bool__(self):
         return not self.poly.is_zero()

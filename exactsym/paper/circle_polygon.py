@@ -72,7 +72,7 @@ from dataclasses import dataclass
 from functools import cached_property, cmp_to_key
 
 from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
-from .filtered import compare_directions
+from .filtered import ball, compare_directions
 from .inverses import inverse_length, squared_length
 
 __all__ = ["CirclePolygon", "level_polygon", "polygon_from_directions", "angular_distance",
@@ -184,10 +184,18 @@ class CirclePolygon:
     @cached_property
     def one_circle(self) -> bool:
         """Cartesian: every direction vector has the same length (a level polygon)."""
-        if self.polar or not self.directions:
+        if self.polar or len(self.directions) < 2:     # one vertex: one length
             return True
-        first = squared_length(self.directions[0])
-        return all(squared_length(d) == first for d in self.directions)
+        dirs = self.directions
+        if any(isinstance(c, FieldElement) for d in dirs for c in d):
+            # Arb balls of the squared lengths first: disjoint balls prove two lengths
+            # differ (the usual answer for a union of levels), without the exact squares
+            # (products of degree thousands in a large cyclotomic field, issue 9)
+            first = _length_ball(dirs[0])
+            if any(not first.overlaps(_length_ball(d)) for d in dirs[1:]):
+                return False
+        first = squared_length(dirs[0])
+        return all(squared_length(d) == first for d in dirs)
 
     def chord_key(self, i: int, j: int):
         """An exact key, strictly increasing in the chord |v_i v_j|, for comparing the
@@ -324,3 +332,9 @@ def level_polygon(config, rings, level_index: int) -> CirclePolygon:
     poly = CirclePolygon(labels, tuple((pts[i][0] - cx, pts[i][1] - cy) for i in labels), False)
     poly.__dict__["one_circle"] = True      # a level: one exact distance to C, by definition
     return poly
+
+
+def _length_ball(d):
+    """An Arb ball containing ``d_x^2 + d_y^2`` (from the cached balls of the coordinates)."""
+    bx, by = ball(d[0]), ball(d[1])
+    return bx * bx + by * by

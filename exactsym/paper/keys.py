@@ -12,10 +12,13 @@ from __future__ import annotations
 from functools import cmp_to_key
 from math import atan2, gcd, pi
 
-from ..exact import FieldElement, exact_key, fmpq, normal_turn, number_text, sign
+from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
+from ..exact.cyclotomic_text import fast_number_text as number_text
 from .circle_polygon import CirclePolygon
-from .filtered import compare_directions, cross_sign, dot_sign, gap_classes_on_circle
-from .ratio_keys import ball_at, gap_ratio_key, ray_ratio_key
+from ..exact.cyclotomic_modular import product_ratio_irrational
+from .filtered import (ball, compare_directions, cross_sign, dot_sign, gap_classes_on_circle,
+                       _ball_sign)
+from .ratio_keys import RatioKey, _largest_field, ball_at, gap_ratio_key, ray_ratio_key
 from .inverses import inverse_length, squared_length
 
 
@@ -94,13 +97,22 @@ class LineKey:
     the lines are equal, with no division but by a squared length
     (:func:`line_key`, :func:`bisector_key`)."""
 
-    __slots__ = ("canon", "_value", "_vector", "_text")
+    __slots__ = ("canon", "_value", "_vector_", "_make", "_text")
 
-    def __init__(self, canon, value=None, vector=None):
+    def __init__(self, canon, value=None, vector=None, make=None):
         self.canon = canon
         self._value = value
-        self._vector = vector
+        self._vector_ = vector
+        self._make = make          # vector=None, make=f: the vector is f(), made when read
         self._text = None
+
+    @property
+    def _vector(self):
+        """The doubled direction (exact), made on first read when it was left lazy
+        (:func:`bisector_key`, :func:`line_key`: the key itself needs no product)."""
+        if self._vector_ is None and self._make is not None:
+            self._vector_, self._make = self._make(), None
+        return self._vector_
 
     @classmethod
     def of(cls, value) -> "LineKey":
@@ -249,17 +261,110 @@ def line_key(polar: bool, d) -> LineKey:
     """The :class:`LineKey` of the line through C with direction d (no division)."""
     if polar:
         return LineKey.of(line_value(True, d))
-    x, y = d
-    doubled = (x * x - y * y, 2 * x * y)
-    return LineKey(line_canon(doubled), None, doubled)
+    return _product_line(d, d)
 
 
 def bisector_key(polar: bool, a, b) -> LineKey:
     """The :class:`LineKey` of :func:`bisector_line` (no division)."""
     if polar:
         return LineKey.of(bisector_line(True, a, b))
-    prod = (a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0])
+    return _product_line(a, b)
+
+
+def _product_line(a, b) -> LineKey:
+    """The key of the line whose doubled angle has the direction of the complex product
+    a b = (a_x b_x - a_y b_y, a_x b_y + a_y b_x) (a == b: the line along a).  In a large
+    cyclotomic field the key is made without that product when filters settle it
+    (:func:`lazy_line_canon`); the product is then made only if the line's value, text or
+    an exact equality asks for it."""
+    def make():
+        return complex_product(a, b)
+    canon = lazy_line_canon(a, b, make)
+    if canon is not None:
+        return LineKey(canon, None, None, make)
+    prod = make()
     return LineKey(line_canon(prod), None, prod)
+
+
+def complex_product(a, b) -> tuple:
+    """(a_x b_x - a_y b_y, a_x b_y + a_y b_x), exact, with three products (Gauss; two
+    for a square: (x - y)(x + y), 2 x y): in a field of degree thousands a product costs
+    milliseconds, a sum microseconds."""
+    if a is b:
+        x, y = a
+        return ((x - y) * (x + y), 2 * (x * y))
+    k1 = b[0] * (a[0] + a[1])
+    return (k1 - a[1] * (b[0] + b[1]), k1 + a[0] * (b[1] - b[0]))
+
+
+def lazy_line_canon(a, b, make):
+    """:func:`line_canon` of the product ``make() == a b`` (complex product of two exact
+    vectors) without making it, or None.  Applies when a coordinate lies in a cyclotomic
+    field of degree >= :data:`QUOTIENT_DEGREE`: the signs of the product's coordinates come
+    from Arb balls built from the balls of a and b (they decide only when they exclude
+    zero), and x^2 / (x^2 + y^2) must be proved irrational by two embeddings into F_p
+    (:func:`exactsym.exact.cyclotomic_modular.product_ratio_irrational`); then the key is
+    the :class:`RatioKey` :func:`ray_key` would make (same value, same hash cell), whose
+    exact parts are made from ``make()`` only when an equality needs them."""
+    numbers = (a[0], a[1], b[0], b[1])
+    if not _quotient_field(*numbers):
+        return None
+    ax, ay, bx, by = (ball(v) for v in numbers)
+    sx = _ball_sign(ax * bx - ay * by)
+    sy = _ball_sign(ax * by + ay * bx)
+    if not sx or not sy or not product_ratio_irrational(a, b):
+        return None
+    made = []
+
+    def vector():
+        if not made:
+            made.append(make())
+        return made[0]
+
+    def parts():
+        x, y = vector()
+        xx = x * x
+        return xx, xx + y * y
+
+    def value_ball(prec):
+        ax, ay, bx, by = (ball_at(v, prec) for v in numbers)
+        x, y = ax * bx - ay * by, ax * by + ay * bx
+        sq = x * x
+        return sq / (sq + y * y)
+    return ("line", sx, sy, _DirectionKey(sx, sy, vector, parts, value_ball,
+                                          _largest_field(numbers)))
+
+
+class _DirectionKey(RatioKey):
+    """The :class:`RatioKey` of x^2 / (x^2 + y^2) for a vector (x, y) = ``vector()`` whose
+    coordinate signs ``sx``, ``sy`` (non-zero) are known: two such keys with equal signs
+    are equal iff the vectors have one direction, i.e. iff x y' - y x' == 0 (two products
+    of the vectors' coordinates, not two of their squares).  Against any other
+    RatioKey, the RatioKey comparison (which reads ``parts``)."""
+
+    __slots__ = ("signs", "vector")
+
+    def __init__(self, sx: int, sy: int, vector, parts, value_ball, home):
+        self.signs, self.vector = (sx, sy), vector
+        super().__init__(parts, value_ball, home)
+
+    def __eq__(self, other) -> bool:
+        if self is other:
+            return True
+        if not isinstance(other, _DirectionKey):
+            return super().__eq__(other)
+        if self._hash != other._hash or self.home is not other.home \
+                or self.signs != other.signs:
+            return False
+        (x, y), (x2, y2) = self.vector(), other.vector()
+        # equal signs: x^2/|v|^2 == x2^2/|v2|^2 iff the unit vectors are equal
+        return not (x * y2 - y * x2)
+
+    def __ne__(self, other) -> bool:
+        return not self.__eq__(other)
+
+    def __hash__(self) -> int:
+        return self._hash
 
 
 def line_value(polar: bool, d):
@@ -349,13 +454,13 @@ def gap_ids(poly: CirclePolygon) -> list:
         # algebraic: the gap keys held undivided (equal iff equal), told apart by balls;
         # exact products only for gaps in one hash cell (a field inverse costs up to a
         # second at degree thousands, tower products a millisecond each)
-        return [ids.setdefault(_gap_equality_key(dirs[i], dirs[(i + 1) % n]), len(ids))
+        return [ids.setdefault(gap_equality_key(dirs[i], dirs[(i + 1) % n]), len(ids))
                 for i in range(n)]
     return [ids.setdefault(hashable_key(ccw_gap_key(poly.polar, dirs[i], dirs[(i + 1) % n])),
                            len(ids)) for i in range(n)]
 
 
-def _gap_equality_key(a, b):
+def gap_equality_key(a, b):
     """A hashable key of :func:`ccw_gap_key` (Cartesian), equal iff those keys are equal,
     with no inverse (:func:`exactsym.paper.ratio_keys.gap_ratio_key`)."""
     c, s = cross_sign(a, b), dot_sign(a, b)        # both ball-filtered

@@ -45,12 +45,12 @@ import json
 
 from dataclasses import dataclass, field
 
-from ..exact import as_fmpq, exact_key, number_text, sign
+from ..exact import FieldElement, as_fmpq, exact_key, number_text, sign
 from ..configuration import no_cycle_collection
 from . import polygon as paper
 from .circle_polygon import level_polygon
 from .family.concentric import mirror_lines
-from .keys import ccw_gap_key
+from .keys import ccw_gap_key, gap_equality_key
 from .polygon_shape import MIN_VERTICES, combinatorial_key
 
 #: Largest polygon whose CW/ACW strings are written out (n^2 numbers).
@@ -160,6 +160,11 @@ def shape_key(polygon):
     depend only on its distances (the strings, Section 3) and on the storage order, so
     polygons with equal keys get equal verdicts, labels taken at the same positions."""
     n, dirs = polygon.n, polygon.directions
+    if not polygon.polar and any(isinstance(c, FieldElement) for d in dirs for c in d):
+        # algebraic: keys equal iff the gap keys are (no inverse of a squared length: in
+        # a field of degree thousands an inverse costs a second)
+        return (False, n, tuple(gap_equality_key(dirs[k], dirs[(k + 1) % n])
+                                for k in range(n)))
     return (polygon.polar, n, tuple(_hashable(ccw_gap_key(polygon.polar, dirs[k],
                                                           dirs[(k + 1) % n]))
                                     for k in range(n)))

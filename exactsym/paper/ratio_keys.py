@@ -16,6 +16,7 @@ from __future__ import annotations
 from flint import arb, ctx, fmpq, fmpq_poly
 
 from ..exact import FieldElement, exact_key, sign
+from ..exact.cyclotomic_modular import ratio_irrational
 from ..exact.field import PolyElement
 from .filtered import ball
 
@@ -116,10 +117,10 @@ def rational_ratio(num, den):
     n, d = _poly(num), _poly(den)
     if n.is_zero():
         return fmpq(0)
-    coeffs = d.coeffs()
-    i = next(k for k, c in enumerate(coeffs) if c != 0)
-    top = n.coeffs()
-    q = (top[i] if i < len(top) else fmpq(0)) / coeffs[i]
+    i = 0                   # the first non-zero coefficient of d, read by index: the
+    while d[i] == 0:        # coefficient lists of degree thousands cost milliseconds
+        i += 1
+    q = n[i] / d[i]
     return q if n == q * d else None
 
 
@@ -130,17 +131,29 @@ def ray_ratio_key(x, y):
     irrational one as a :class:`RatioKey`."""
     if not big_field(x, y):
         return None
+    if ratio_irrational(x, y):
+        # proved irrational by two embeddings into F_p (exact, microseconds): the squares,
+        # products of degree thousands, are made only if an equality needs them
+        def parts():
+            xx = x * x
+            return xx, xx + y * y
+        return RatioKey(parts, _ratio_ball(x, y), _largest_field((x, y)))
     xx = x * x
     length = xx + y * y
     q = rational_ratio(xx, length)
     if q is not None:
         return exact_key(q)
 
+    return RatioKey(lambda: (xx, length), _ratio_ball(x, y), length.field)
+
+
+def _ratio_ball(x, y):
+    """``prec -> `` an Arb ball of x^2 / (x^2 + y^2)."""
     def value_ball(prec):
         bx, by = ball_at(x, prec), ball_at(y, prec)
         sq = bx * bx
         return sq / (sq + by * by)
-    return RatioKey(lambda: (xx, length), value_ball, length.field)
+    return value_ball
 
 
 def _largest_field(numbers):

@@ -141,11 +141,24 @@ class _Record:
     def check(self, statement: str) -> None:
         self.checked[statement] = self.checked.get(statement, 0) + 1
 
-    def fail(self, statement, polygons, detail, witness=None) -> None:
+    def fail(self, statement, polygons, detail, witness=None, within: bool = True) -> None:
+        """Record a failure.  ``detail`` and ``witness`` may be functions returning them,
+        called only when this failure is listed (the texts of lines of symmetry are
+        megabytes in a field of degree thousands, and failures beyond ``examples`` are
+        only counted); ``within``: whether it lies within the statement's hypotheses when
+        the witness is given as a function (else read from the witness)."""
         self.failures[statement] = self.failures.get(statement, 0) + 1
-        inside = not (isinstance(witness, dict) and witness.get("within_hypotheses") is False)
+        if callable(witness):
+            inside = within
+        else:
+            inside = not (isinstance(witness, dict) and
+                          witness.get("within_hypotheses") is False)
         self.within[statement] = self.within.get(statement, False) or inside
         if self.examples is None or self.failures[statement] <= self.examples:
+            if callable(detail):
+                detail = detail()
+            if callable(witness):
+                witness = witness()
             self.out.append(_claim(self.trace, statement, False, polygons, detail, witness))
 
     def summaries(self) -> None:
@@ -187,9 +200,9 @@ def obs_merg_asym_pair(rec: _Record, a: Ring, b: Ring, common, proj, polar: bool
         rec.check("obs-merg-asym-pair")
         if is_symmetric_polygon(gij):
             rec.fail("obs-merg-asym-pair", [a.name, b.name, gij.name],
-                     f"<{a.name}, {b.name}> is an asymmetric pair but G_ij = {gij.name} has "
-                     f"{lines_text(gij, polar)}" + coincidence_note(proj),
-                     {"G_ij lines": lines_text(gij, polar)})
+                     lambda: f"<{a.name}, {b.name}> is an asymmetric pair but G_ij = "
+                     f"{gij.name} has {lines_text(gij, polar)}" + coincidence_note(proj),
+                     lambda: {"G_ij lines": lines_text(gij, polar)})
 
 
 def lem_los_gij(rec: _Record, a: Ring, b: Ring, common, proj, polar: bool) -> None:
@@ -197,20 +210,21 @@ def lem_los_gij(rec: _Record, a: Ring, b: Ring, common, proj, polar: bool) -> No
     <G_i, G_j>."""
     gij = proj.ring
     rec.check("lem-los-gij")
-    extra = _lines_not_in(gij.lines, common)
-    if extra:
+    if _some_line_not_in(gij.lines, common):
         # the text around lem-los-gij assumes n_i, n_j odd, neither dividing the other,
         # gcd > 1, a common line
         context = (is_odd(a) and is_odd(b) and gcd(a.n, b.n) > 1 and has_lines(common)
                    and a.n % b.n != 0 and b.n % a.n != 0)
         rec.fail("lem-los-gij", [a.name, b.name, gij.name],
-                 f"G_ij = {gij.name} has {lines_text(gij, polar)}, but "
+                 lambda: f"G_ij = {gij.name} has {lines_text(gij, polar)}, but "
                  f"<{a.name}, {b.name}> have {lines_text(common, polar)} in common"
                  + coincidence_note(proj)
                  + ("" if context else " (outside the hypotheses of the surrounding text: "
                     "n_i, n_j odd, neither dividing the other, gcd > 1, a common line)"),
-                 {"line": extra, "n_i": a.n, "n_j": b.n, "within_hypotheses": context,
-                  "coincident_vertices": len(proj.coincident)})
+                 lambda: {"line": _lines_not_in(gij.lines, common), "n_i": a.n, "n_j": b.n,
+                          "within_hypotheses": context,
+                          "coincident_vertices": len(proj.coincident)},
+                 within=bool(context))
 
 
 def obs_gcd(rec: _Record, a: Ring, b: Ring, common) -> None:
@@ -397,6 +411,13 @@ def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = No
                  triples_checked=triples_checked, triples=total_triples,
                  partial=sorted(rec.partial), failures=dict(sorted(rec.failures.items())))
     return rec.out
+
+
+def _some_line_not_in(lines, allowed) -> bool:
+    """Whether :func:`_lines_not_in` finds a line (without writing its text)."""
+    if allowed is ALL_LINES:
+        return False
+    return lines is ALL_LINES or any(k not in allowed for k in lines)
 
 
 def _lines_not_in(lines, allowed):

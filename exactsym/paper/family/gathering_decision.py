@@ -7,6 +7,7 @@ oblivious: each round recomputes from scratch), ElectLeader; ``cor-Pasym-Pord``,
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import partial
 
 from ...configuration import Configuration, Polar, no_cycle_collection
 from ...errors import InputError, MoveImpossible
@@ -61,22 +62,24 @@ def paper_procedure(config: Configuration, ring_data: Levels | None = None,
                     orientation: int = 1, reading: str = "literal", degree: str = "paper",
                     max_rounds: int = 3, claims: bool = True,
                     check_vl: bool = True, limits: Limits | None = None,
-                    level_polygons=None) -> PaperResult:
+                    level_polygons=None, describe_polygons: bool = True) -> PaperResult:
     """See :func:`_paper_procedure` (run with the cyclic garbage collector paused: the
     family layer builds many small acyclic objects, one polygon per level).
     ``level_polygons``: the polygon layer's polygons of ``ring_data``'s levels, when
     built (:class:`exactsym.paper.polygon_report.LevelSection`): their directions are
-    reused."""
+    reused.  ``describe_polygons=False``: ``G`` and ``Gprime`` are left empty (the audit's
+    runs in other frames only compare actions and traces; listing every polygon's lines
+    writes exact slopes, megabytes in a field of degree thousands)."""
     with no_cycle_collection():
         return _paper_procedure(config, ring_data, orientation, reading, degree, max_rounds,
-                                claims, check_vl, limits, level_polygons)
+                                claims, check_vl, limits, level_polygons, describe_polygons)
 
 
 def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
                      orientation: int = 1, reading: str = "literal", degree: str = "paper",
                      max_rounds: int = 3, claims: bool = True,
                      check_vl: bool = True, limits: Limits | None = None,
-                     level_polygons=None) -> PaperResult:
+                     level_polygons=None, describe_polygons: bool = True) -> PaperResult:
     """Run the paper on ``config``: GatheringPattern's decision (lines 1-5) and the leader
     election of Section 4.2 (Preprocess, MakeAsym when G_t is symmetric, ElectLeader).
 
@@ -92,6 +95,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
     was bounded."""
     limits = limits if limits is not None else DEFAULT_LIMITS
     ring_data = ring_data if ring_data is not None else levels_of(config)
+    finish = _finish if describe_polygons else partial(_finish, describe_polygons=False)
     trace: list = []
     bounded: dict = {}
     G = concentric_polygons(config, ring_data, level_polygons)
@@ -142,7 +146,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
         # a single robot: nothing to make asymmetric (MakeAsym's branches need a G_t
         # with a circle); ElectLeader elects it (it is at C)
         el = elect_leader(Gp, trace, orientation, reading, degree, 1)
-        return _finish(limits, bounded, config,
+        return finish(limits, bounded, config,
                        orderable, gathering, el.leader, [], True, trace, G, Gp,
                        None, el.branch, polar)
     rnd = 1
@@ -169,12 +173,12 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
             if rnd == 1:
                 orderable = False
             el = None
-            return _finish(limits, bounded, config,
+            return finish(limits, bounded, config,
                            orderable, gathering, None, moves, complete, trace, G, Gp,
                            ma_outcome, el, polar)
         if result.outcome == "undecided" or result.config is None:
             complete = False
-            return _finish(limits, bounded, config,
+            return finish(limits, bounded, config,
                            orderable, gathering, None, moves, complete, trace, G, Gp,
                            ma_outcome, None, polar)
         new = result.config
@@ -187,7 +191,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
                         "not)" + _sense_note(current, new, result, ring_data)
                         + "; the configuration after the moves is not analysed", holds=False,
                         round=rnd)
-            return _finish(limits, bounded, config,
+            return finish(limits, bounded, config,
                            orderable, gathering, None, moves, False, trace, G, Gp,
                            ma_outcome, None, polar)
         try:
@@ -196,7 +200,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
             trace_entry(trace, "MakeAsym", None, [gt.name], "MakeAsym",
                         f"exactsym cannot analyse the configuration after the moves ({err})",
                         round=rnd)
-            return _finish(limits, bounded, config,
+            return finish(limits, bounded, config,
                            orderable, gathering, None, moves, False, trace, G, Gp,
                            ma_outcome, None, polar)
         # MakeAsym's correctness paragraph ("|G_t| > 3 ... the SEC would not change"):
@@ -226,7 +230,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
     leader = el.leader
     complete = complete and el.computed
     final = _after_move(current, cur_rings, el.moved_to) if moves else None
-    return _finish(limits, bounded, config,
+    return finish(limits, bounded, config,
                    orderable, gathering, leader, moves, complete, trace, G, Gp,
                    ma_outcome, el.branch, polar, final, tuple(rounds))
 
@@ -247,7 +251,8 @@ def _after_move(current: Configuration, rings: Levels, moved_to: dict):
 
 
 def _finish(limits: Limits, bounded: dict, config, orderable, gathering, leader, moves,
-            complete, trace, G, Gp, ma, el, polar, final=None, rounds=()) -> PaperResult:
+            complete, trace, G, Gp, ma, el, polar, final=None, rounds=(),
+            describe_polygons: bool = True) -> PaperResult:
     if not bounded.get("preprocess_complete", True):
         complete, leader = False, None        # G' is not the one the paper computes
     first = moves[0]["robot"] if moves else leader
@@ -255,9 +260,10 @@ def _finish(limits: Limits, bounded: dict, config, orderable, gathering, leader,
     bounded["trace_entries_omitted"] = omitted
     if limits.described is not None and max(len(G), len(Gp)) > limits.described:
         bounded["polygons_described"] = limits.described
+    shown = describe if describe_polygons else (lambda rings, polar, limit: [])
     return PaperResult(orderable, gathering, leader, moves, first, complete, trace,
-                       describe(G, polar, limits.described),
-                       describe(Gp, polar, limits.described), ma, el, bounded, tuple(G), final,
+                       shown(G, polar, limits.described),
+                       shown(Gp, polar, limits.described), ma, el, bounded, tuple(G), final,
                        rounds)
 
 

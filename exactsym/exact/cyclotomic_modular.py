@@ -1,0 +1,135 @@
+"""Elements of Q(zeta_M) mapped into F_p by two embeddings: exact proofs of irrationality.
+
+For a prime p = 1 (mod M) the cyclotomic polynomial splits modulo p, and each primitive
+M-th root of unity w in F_p gives a ring map zeta -> w from the elements whose
+coefficients have denominators prime to p onto F_p (the reduction modulo one prime of
+Q(zeta_M) above p).  A rational number q (p-integral) has the one image q mod p under
+every such map; so two maps that send a number to two different residues prove it is
+not rational.  The maps used are zeta -> w and zeta -> w^j with j != +-1 (mod M): complex
+conjugation (j = -1) fixes every real number, so it would prove nothing here.
+
+This is exact arithmetic in F_p (no float, no ball): a test of a few microseconds per
+element instead of products of degree thousands (issue 9: the paper layer asks whether
+x^2 / (x^2 + y^2) is rational for every line it keys).  When the residues agree nothing
+is concluded and the caller computes exactly.
+"""
+
+from __future__ import annotations
+
+from math import gcd
+
+from flint import fmpq, fmpz, nmod_poly
+
+from .factor import factorization
+from .field import PolyElement
+
+_EMBEDDINGS: dict = {}     # M -> (p, (w1, w2)) or None
+
+
+def _embeddings(m: int):
+    """``(p, (w, w^j))``: a prime p = 1 (mod m) near 2^62 and two primitive m-th roots of
+    unity modulo p that are not conjugate (j != +-1 mod m); None when every unit modulo
+    m is +-1 (m in 1, 2, 3, 4, 6: Q(zeta_m) has degree <= 2 over Q and its real
+    elements are rational)."""
+    if m in _EMBEDDINGS:
+        return _EMBEDDINGS[m]
+    j = next((j for j in range(2, m - 1) if gcd(j, m) == 1), None)
+    found = None
+    if j is not None:
+        k = ((1 << 62) // m) + 1
+        while not fmpz(k * m + 1).is_prime():
+            k += 1
+        p = k * m + 1
+        primes = list(factorization(m))
+        g = 2
+        while True:
+            w = pow(g, (p - 1) // m, p)
+            if all(pow(w, m // q, p) != 1 for q in primes):
+                break
+            g += 1
+        found = (p, (w, pow(w, j, p)))
+    if len(_EMBEDDINGS) > 16:
+        _EMBEDDINGS.clear()
+    _EMBEDDINGS[m] = found
+    return found
+
+
+def _conductor(x) -> int | None:
+    """1 for a rational, the conductor of a cyclotomic element, else None."""
+    if isinstance(x, (int, fmpq, fmpz)):
+        return 1
+    if isinstance(x, PolyElement):
+        return x.field.conductor
+    return None
+
+
+def images(numbers) -> tuple | None:
+    """``(p, [images under the first map, images under the second])`` of ``numbers``
+    (rationals and elements of cyclotomic fields, embedded in Q(zeta_M) for M the lcm
+    of their conductors), or None when that does not apply (another kind of number; M
+    without two non-conjugate roots; a denominator divisible by p)."""
+    m = 1
+    for x in numbers:
+        c = _conductor(x)
+        if c is None:
+            return None
+        m = m // gcd(m, c) * c
+    emb = _embeddings(m)
+    if emb is None:
+        return None
+    p, roots = emb
+    out = ([], [])
+    for x in numbers:
+        if isinstance(x, PolyElement):
+            den = int(x.poly.denom())
+            if den % p == 0:
+                return None
+            inv = pow(den, -1, p)
+            poly = nmod_poly(x.poly.numer(), p)
+            step = m // x.field.conductor        # zeta_c = zeta_M^(M/c)
+            for side, w in zip(out, roots):
+                side.append(int(poly(pow(w, step, p))) * inv % p)
+        else:
+            q = fmpq(x) if not isinstance(x, fmpq) else x
+            if int(q.q) % p == 0:
+                return None
+            value = int(q.p) * pow(int(q.q), -1, p) % p
+            out[0].append(value)
+            out[1].append(value)
+    return p, out
+
+
+def ratio_irrational(x, y) -> bool:
+    """True only when ``x^2 / (x^2 + y^2)`` is proved irrational (module docstring):
+    its images under the two maps differ (both denominators non-zero modulo p).  False
+    means "not proved" (the caller decides exactly)."""
+    found = images((x, y))
+    if found is None:
+        return False
+    p, sides = found
+    return _differ(p, sides)
+
+
+def product_ratio_irrational(a, b) -> bool:
+    """:func:`ratio_irrational` of (x, y) = a b, the complex product of the vectors a and b
+    (x = a_x b_x - a_y b_y, y = a_x b_y + a_y b_x), computed in F_p only: the maps are
+    ring maps, so the image of the product is the product of the images."""
+    found = images((a[0], a[1], b[0], b[1]))
+    if found is None:
+        return False
+    p, sides = found
+    return _differ(p, [((ax * bx - ay * by) % p, (ax * by + ay * bx) % p)
+                       for ax, ay, bx, by in sides])
+
+
+def _differ(p: int, sides) -> bool:
+    values = []
+    for xj, yj in sides:
+        length = (xj * xj + yj * yj) % p
+        if length == 0:
+            return False
+        values.append(xj * xj * pow(length, -1, p) % p)
+    return values[0] != values[1]
+
+
+__all__ = ["images", "product_ratio_irrational", "ratio_irrational"]
