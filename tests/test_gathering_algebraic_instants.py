@@ -272,6 +272,8 @@ def test_I3_holds_over_the_step_when_nothing_happens_there():
     _cubic_instant(points)
     w.advance_together([(0, None, False), (1, None, False)])
     assert w.checker.counts["sided"] == 0 and w.checker.counts["instants"] >= len(points)
+    # the cubic collinearity and the quartic tie: Looks at points of K(alpha)
+    assert w.checker.counts["algebraic"] == sum(1 for jp in points if is_algebraic(jp.tau)) >= 2
 
 
 def test_a_quartic_distance_tie_is_exact_too():
@@ -296,8 +298,7 @@ def _similarity(p):
 
 def test_an_exact_similarity_changes_nothing():
     w, points, sided = _run(_collinear, _similarity)
-    jp = _cubic_instant(points)
-    assert sided == 0
+    assert _cubic_instant(points) is not None and sided == 0
     with pytest.raises(Violation) as err:
         w.advance_together([(0, None, False), (1, None, False)])
     assert err.value.invariant == "I3" and "on one line through C" in err.value.witness
@@ -357,10 +358,10 @@ def test_kernel_field_is_a_field_isomorphism(data):
         assert to_kernel(x / y) == kx / ky
 
 
-def test_the_paper_layer_reads_a_cubic_instant_through_the_kernel(monkeypatch):
-    """With ``paper_bridge.configuration_of`` reading K(alpha) snapshots through
-    :func:`kernel_configuration` (a wiring left to paper_bridge), the paper's decision
-    at the cubic instant is no longer the kernel's "undecided" but the paper layer's own:
+def test_the_paper_layer_reads_a_cubic_instant_through_the_kernel():
+    """``paper_bridge.configuration_of`` reads K(alpha) snapshots through
+    :func:`kernel_configuration`, so the paper's decision at the cubic instant is not
+    the kernel's "undecided" but the paper layer's own:
     MakeAsym's move of robot 0 to G_t's circle, whose end needs a square root outside
     K(alpha) (a level over it, :mod:`.algebraic_tower`); and the kernel configuration's
     squared distances are the simulator's."""
@@ -380,12 +381,7 @@ def test_the_paper_layer_reads_a_cubic_instant_through_the_kernel(monkeypatch):
     _, to_kernel = kernel_field(jp.tau.root, [c for p in snap for c in p])
     assert kd == [to_kernel(g.dist2(p, CENTRE)) for p in snap[:2]]
     w.robots[0].pos, w.robots[1].pos = snap[0], snap[1]
-    robot.decide.cache_clear()
-    d, _ = w.snapshot_decision(IDENTITY)
-    assert d.status == "undecided" and d.detail.startswith("kernel:")
-    original = paper_bridge.configuration_of
-    monkeypatch.setattr(paper_bridge, "configuration_of", lambda ps: kernel_configuration(ps)
-                        if any(is_algebraic(c) for p in ps for c in p) else original(ps))
+    assert paper_bridge.configuration_of(snap).points == config.points
     robot.decide.cache_clear()
     d, _ = w.snapshot_decision(IDENTITY)
     assert d.status == "move" and d.detail == "MakeAsym moves first"

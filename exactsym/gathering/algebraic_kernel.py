@@ -62,8 +62,7 @@ def kernel_field(root, numbers):
     :class:`AlgebraicNumber` of ``root``): the kernel field ``Q(gamma) = L`` and the map
     from them to its elements (exact).  The same root and square roots give the same
     field object (a Look's checks meet one instant several times)."""
-    f, d = root.f, root.degree
-    basis, _ = _group_basis(list(f) + [c for x in numbers
+    basis, _ = _group_basis(list(root.f) + [c for x in numbers
                                       for c in (x.c if is_algebraic(x) else (x,))])
     cache = root.__dict__.setdefault("_kernel_fields", {})
     if basis not in cache:
@@ -72,7 +71,7 @@ def kernel_field(root, numbers):
 
 
 def _kernel_field(root, basis):
-    f, d = root.f, root.degree
+    d = root.degree
     m = len(basis)
     size = d << m
     if size > MAX_DEGREE:

@@ -123,8 +123,9 @@ def _text(res, settings) -> str:
                                               if k.startswith("I")),
              f"fresh Looks at and between critical instants: {res.checks.get('instants', 0)}"
              f" ({res.checks.get('nested', 0)} at nested radicals, in a tower; "
-             f"{res.checks.get('sided', 0)} instants seen on both sides only: roots not "
-             f"expressible by square roots); Looks the kernel could not hold: "
+             f"{res.checks.get('algebraic', 0)} at roots of cubic or quartic factors; "
+             f"{res.checks.get('sided', 0)} instants seen on both sides only: no exact "
+             f"value held); Looks the kernel could not hold: "
              f"{res.checks.get('skipped', 0)}"]
     if res.violation:
         v = res.violation

@@ -40,6 +40,7 @@ from . import geometry as g
 from .instants import critical_roots, look_points
 from .joint_instants import joint_look_points
 from .pattern import definition_defects, recognise
+from .algebraic_instants import is_algebraic
 from .tower_numbers import is_tower
 
 #: How a violation names the statement it contradicts: the paper's ``\\label`` where
@@ -112,9 +113,10 @@ class Checker:
     enabled: frozenset = frozenset(ALL)
     # each invariant's checks; "instants": fresh Looks at critical instants of a motion
     # and just beside them; "nested": of those, instants at a nested radical (a point in
-    # a tower); "sided": instants seen only on both sides (not expressible by square roots)
+    # a tower); "algebraic": at a root of a cubic or quartic factor (a point of K(alpha));
+    # "sided": instants seen only on both sides (no exact value held)
     counts: dict = field(default_factory=lambda: {**{k: 0 for k in ALL}, "instants": 0,
-                                                  "nested": 0, "sided": 0})
+                                                  "nested": 0, "algebraic": 0, "sided": 0})
     in_pattern: set = field(default_factory=set)       # robots ever recognised in P
     undecided_fresh: int = 0      # I3 / I9 Looks skipped: the kernel could not hold them
     frames: tuple = ()                                  # extra frames for I9 (besides mirror)
@@ -219,6 +221,7 @@ class Checker:
                                             world.readings.A1 == "sec-r")
                 self.counts["sided"] += sided
                 self.counts["nested"] += sum(1 for lp in points if is_tower(lp.f))
+                self.counts["algebraic"] += sum(1 for lp in points if is_algebraic(lp.f))
                 for lp in points:
                     rob.pos = lp.point
                     self.counts["instants"] += 1
@@ -323,6 +326,7 @@ class Checker:
         points, sided = joint_look_points(pieces, world, world.readings.A1 == "sec-r")
         self.counts["sided"] += sided
         self.counts["nested"] += sum(1 for jp in points if is_tower(jp.tau))
+        self.counts["algebraic"] += sum(1 for jp in points if is_algebraic(jp.tau))
         try:
             for jp in points:
                 for i in movers:

@@ -10,6 +10,10 @@ the paper layer's rotation parameters: the same rational rotation about the SEC 
 
 When the kernel cannot hold the snapshot's numbers (a field over the size limit), the
 decision is ``complete=False``: the simulator then stops as undecided rather than guess.
+A snapshot at a root of a cubic or quartic factor (numbers of K(alpha),
+:mod:`.algebraic_instants`) is written in one kernel field Q(gamma)
+(:func:`.algebraic_kernel.kernel_configuration`); a square root the paper layer then
+asks for outside that field makes the decision incomplete in the same way.
 """
 
 from __future__ import annotations
@@ -53,8 +57,17 @@ class PaperDecision:
     detail: str = ""
 
 
+def _algebraic(points) -> bool:
+    from .algebraic_instants import is_algebraic
+    return any(is_algebraic(c) for p in points for c in p)
+
+
 def configuration_of(points) -> Configuration:
-    """A kernel configuration of MQ points (rational when they all are)."""
+    """A kernel configuration of MQ points (rational when they all are), of tower
+    numbers, or of K(alpha) numbers."""
+    if _algebraic(points):
+        from .algebraic_kernel import kernel_configuration
+        return kernel_configuration(points)
     if all(x.is_rational() and y.is_rational() for x, y in points):
         return Configuration.from_points([(x.to_fmpq(), y.to_fmpq()) for x, y in points])
     exprs = [parse_expression(c.text()) for p in points for c in p]
@@ -85,6 +98,15 @@ def paper_decision(points, orientation: int = 1, reading: str = "literal") -> Pa
         ring_data = compute_rings(config)
     except (InputError, ArithmeticError, NotImplementedError, ValueError) as err:
         return PaperDecision(False, False, (), None, False, f"kernel: {err}")
+    if not _algebraic(points):
+        return _decision(config, ring_data, orientation, reading)
+    try:        # Q(gamma) holds the snapshot, not every square root the layer may ask for
+        return _decision(config, ring_data, orientation, reading)
+    except (ArithmeticError, NotImplementedError, ValueError) as err:
+        return PaperDecision(False, False, (), None, False, f"kernel: {err}")
+
+
+def _decision(config, ring_data, orientation: int, reading: str) -> PaperDecision:
     G = concentric_polygons(config, ring_data)
     Gp = preprocess(G, [])
     if is_symmetric_family(Gp):
