@@ -226,3 +226,20 @@ def test_a_copied_world_keeps_its_own_tower():
     d = twin.look(6, IDENTITY)
     assert d.status == "move" and towers_of(twin.robots[6].path) == (twin.home.tower,)
     assert home_point(twin.robots[4].pos, world.home.tower) == world.robots[4].pos
+
+
+def test_a_path_the_runs_tower_cannot_hold_makes_the_decision_undecided(monkeypatch):
+    """Re-homing a planned path can need a square root that mq_closure cannot decide
+    (a rational of more than 160 bits to factor): the fresh decision is "undecided"
+    (counted as a skipped Look by the checker), not a crash (a sweep run crashed so)."""
+    from exactsym.gathering.world import IDENTITY, World
+
+    w = World([(20, 0), (-20, 0), (12, 16), (-12, 16), (3, 1)])
+    d, paths = w.snapshot_decision(IDENTITY)
+    assert d.status == "move" and paths
+
+    def refuse(_pieces):
+        raise ValueError("a square root would need a rational of more than 160 bits")
+    monkeypatch.setattr(w.home, "path", refuse)
+    d, paths = w.snapshot_decision(IDENTITY)
+    assert d.status == "undecided" and paths == {} and "160 bits" in d.detail

@@ -41,7 +41,7 @@ from flint import fmpq
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .corrected import decide_for
-from .robot import Readings
+from .robot import Decision, Readings
 from .run_tower import RunHome
 
 
@@ -161,8 +161,14 @@ class World:
         local = tuple(frame.to_local(p) for p in self.positions())
         d = self.decide(local, self.readings,
                         fmpq(frame.unit.numerator, frame.unit.denominator))
-        paths = {m.robot: self.home.path(frame.piece_to_world(pc) for pc in m.path)
-                 for m in d.moves}
+        try:
+            paths = {m.robot: self.home.path(frame.piece_to_world(pc) for pc in m.path)
+                     for m in d.moves}
+        except ValueError as err:
+            # a planned path the run's tower cannot hold (a radicand whose test needs a
+            # rational of more than 160 bits factored): undecided, as the kernel says
+            return Decision("undecided", (), d.centre, d.pattern, None,
+                            f"the run's tower: {err}"), {}
         return d, paths
 
     def look(self, i: int, frame: Frame):
