@@ -52,6 +52,8 @@ def sweep(ns, seeds: int, max_events: int = 3000, settings=SETTINGS):
                     tally["~together"] += bool(steps)
                     # the run's violation at an instant inside a step of several movers
                     tally["~inside"] += bool(res.violation) and res.violation["instant"] in steps
+                    for key in ("instants", "nested", "algebraic", "sided", "skipped"):
+                        tally["~" + key] += res.checks.get(key, 0)
                     if algorithm == "corrected" and res.outcome != "gathered":
                         failures.append({"n": n, "seed": seed, "scheduler": scheduler,
                                          "outcome": res.outcome, "label": res.label,
@@ -74,6 +76,13 @@ def table(rows) -> str:
                      f"{tally['gathered']} | {viol or '-'} | {tally['stalled']} | "
                      f"{tally['not-possible']} | {other} | {tally['~together']} | "
                      f"{tally['~inside']} |")
+    lines += ["", "Fresh Looks at and between critical instants (nested: at nested radicals; "
+              "algebraic: at roots of cubic or quartic factors; sided: instants seen on both "
+              "sides only; skipped: Looks the kernel could not hold):", ""]
+    for (title, scheduler), tally in rows.items():
+        lines.append(f"- {title}, {scheduler}: " + ", ".join(
+            f"{k} {tally['~' + k]}" for k in ("instants", "nested", "algebraic", "sided",
+                                              "skipped")))
     return "\n".join(lines)
 
 
