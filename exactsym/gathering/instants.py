@@ -526,6 +526,18 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
     return roots
 
 
+def _homed(f, pieces):
+    """An exact instant in the pieces' run tower (:func:`.run_tower.instant_in`); None
+    (seen on both sides only) when there is none or re-homing it cannot be decided."""
+    if f is None:
+        return None
+    from .run_tower import instant_in
+    try:
+        return instant_in(f, pieces)
+    except ValueError:
+        return None
+
+
 @dataclass(frozen=True)
 class LookPoint:
     f: object               # MQ, a tower number (nested radical), or K(alpha)'s number
@@ -540,8 +552,10 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
     -- one rational point in each open stretch between consecutive instants (the first
     before the first instant, the last after the last) and each instant itself when the
     kernel holds it (a nested radical: a point with tower coordinates; a root of a cubic
-    or quartic factor: a point of ``K(alpha)``) -- and the number of instants checked
-    only on both sides (the roots :mod:`.algebraic_instants` leaves without a value)."""
+    or quartic factor: a point of ``K(alpha)``; a nested root re-homed into the piece's
+    run tower first, :func:`.run_tower.instant_in`) -- and the number of instants
+    checked only on both sides (the roots :mod:`.algebraic_instants` leaves without a
+    value, or that the piece's tower cannot re-home)."""
     roots = critical_roots(piece, world, mover, centre, sec_r)
     if not roots:             # one stretch: the whole open piece
         half = MQ.rational(fmpq(1, 2))
@@ -556,8 +570,9 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
         if k == 0:
             lo = MQ.rational(r.lo)
             out.append(LookPoint(lo, piece.at(lo), f"just before: {what}", fams, False))
-        if r.exact is not None and not (apart and is_algebraic(r.exact)):
-            out.append(LookPoint(r.exact, piece.at(r.exact), what, fams, True))
+        f = _homed(r.exact, [piece]) if not (apart and is_algebraic(r.exact)) else None
+        if f is not None:
+            out.append(LookPoint(f, piece.at(f), what, fams, True))
         else:
             sided += 1
         # the stretch up to the next instant: its families change too at its end

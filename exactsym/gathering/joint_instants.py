@@ -61,7 +61,7 @@ from flint import fmpq
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .algebraic_instants import is_algebraic, mixes
-from .instants import _reach, hull_indices, may_leave, motion_of
+from .instants import _homed, _reach, hull_indices, may_leave, motion_of
 from .joint_relations import (const, contact_poly, incircle_poly, ray_poly, rel, right_poly,
                               sq, still, tie_poly)
 from .joint_symmetry import symmetry_polys
@@ -174,8 +174,10 @@ def joint_look_points(pieces: dict, world, sec_r: bool = False) -> tuple:
         what = "; ".join(sorted({t[1] for t in r.tags}))
         if k == 0:
             out.append(JointPoint(MQ.rational(r.lo), f"just before: {what}", fams, False))
-        if r.exact is not None and not (apart and is_algebraic(r.exact)):
-            out.append(JointPoint(r.exact, what, fams, True))
+        tau = _homed(r.exact, pieces.values()) if not (apart and is_algebraic(r.exact)) \
+            else None
+        if tau is not None:
+            out.append(JointPoint(tau, what, fams, True))
         else:
             sided += 1
         out.append(JointPoint(MQ.rational(r.hi), f"just after: {what}", fams, False))
