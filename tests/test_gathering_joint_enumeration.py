@@ -3,7 +3,7 @@ before: a symmetry appearing with fewer than two robots standing still (the hypo
 on images, ``joint_symmetry.image_polys``), a mover keeping a still robot's distance
 from both the SEC centre and the centroid all along (the same hypotheses from that
 swap), and the rays and ties about R's SEC centre while a mover of R supports that SEC
-(``joint_instants._about_moving_sec``).  Each: found at its exact instant, missed
+(``moving_centre.about_moving_sec``).  Each: found at its exact instant, missed
 without the new family, and a fresh Look there catches a (test) algorithm that stays
 exactly at that instant (I3); plus the superset property with 0 or 1 robots standing
 still, and the relations about moving points against their definitions."""
@@ -231,7 +231,7 @@ def test_rays_about_Rs_moving_sec_centre(monkeypatch):
     v = err.value
     assert (v.invariant, v.robots, _instant(v)) == ("I3", (4,), "-7/6 + sqrt(13)/3")
     # before: the rays about the still robots' SEC centre (10, 0) only
-    monkeypatch.setattr(joint_instants, "_about_moving_sec", lambda *a, **k: ([], []))
+    monkeypatch.setattr(joint_instants, "about_moving_sec", lambda *a, **k: ([], []))
     assert not [t for t in _tags_at(MOVING_PIECES, _world(MOVING, MOVING_PIECES, ORIGIN,
                                                           r_set=R_SET), half)
                 if t[0] == "ray"]

@@ -69,7 +69,8 @@ from flint import fmpq
 from ..exact.multiquadratic import MQ, sqrt_rational
 from . import geometry as g
 from .pattern import Pattern, capacity, recognise, slot
-from .robot import Decision, Move, Readings
+from .robot import Decision, Move, Readings, radial_point
+from .run_tower import common_tower, towers_of
 
 ALGORITHMS = ("paper", "corrected")
 
@@ -260,12 +261,14 @@ def _ray_direction(centre, p):
     return e
 
 
-def _layer_one_point(centre, p, unit):
+def _layer_one_point(centre, p, unit, tower=None):
     """The point of layer 1 on the mover's ray: by the ray's integer direction when it has
-    one (so a robot stopped on its way finds the same point), else by its radius."""
+    one (so a robot stopped on its way finds the same point), else by its radius (a
+    nested radical when ``|p - C|^2`` is irrational: a point of the snapshot's
+    ``tower``, :func:`.robot.radial_point`)."""
     e = _ray_direction(centre, p)
     if e is None:
-        return g.radial_point(centre, p, 2 * unit)
+        return radial_point(centre, p, 2 * unit, tower)
     k = sqrt_rational(fmpq(1, e[0] * e[0] + e[1] * e[1])) * (2 * unit)
     return (centre[0] + k * e[0], centre[1] + k * e[1])
 
@@ -332,7 +335,7 @@ def _to_slot_paths(p, centre, target, l, unit, limit2=None):
     yield [g.Segment(p, target)]
 
 
-def _target(p, centre, pat, pts, unit, stay):
+def _target(p, centre, pat, pts, unit, stay, tower=None):
     """``(target, layer, kind)``: C, a new layer's radial point, or a chain end's slot;
     target None on an exact tie.  The slot: while the pattern has at most 4 robots (its
     centre is not unique), the end slot farther from the robots that stay (so that C
@@ -344,7 +347,7 @@ def _target(p, centre, pat, pts, unit, stay):
     v = g.sub(p, centre)
     if pat.last_full():
         if l == 0:
-            return _layer_one_point(centre, p, unit), 1, "new-layer"
+            return _layer_one_point(centre, p, unit, tower), 1, "new-layer"
         # a lone robot starts layer l + 1 on the ray of the robot of layer l nearest in
         # angle (a point that does not depend on where the mover is on its way)
         ring = pat.layers[-1]
@@ -395,9 +398,22 @@ def _profile_less(a, b) -> int:
     return 0
 
 
-@lru_cache(maxsize=4096)
 def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> Decision:
-    """The corrected algorithm's decision on one snapshot (see the module docstring)."""
+    """The corrected algorithm's decision on one snapshot (see the module docstring).  As
+    :func:`.robot.decide`: a snapshot whose coordinates come from several towers of
+    nested radicals is first re-homed into one (:func:`.run_tower.common_tower`), a
+    radial target whose distance is a nested radical is built in that tower
+    (:func:`.robot.radial_point`), and decisions are cached per snapshot and per tower
+    (numbers of two towers are never compared, not even as cache keys)."""
+    snapshot, _tower = common_tower(tuple(snapshot))
+    return _decide_corrected((towers_of(snapshot), snapshot), readings, unit)
+
+
+@lru_cache(maxsize=4096)
+def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
+    # key = (towers, snapshot): the towers (compared by identity) come first
+    towers, snapshot = key
+    tower = towers[0] if towers else None
     pts = list(snapshot)
     approx = g.approx_points(pts)
     centre, pat, cands, detail = choose_centre(pts, readings, unit, approx)
@@ -410,7 +426,7 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
         return Decision("terminated", (), centre, pat, None, "R is empty")
     d = {i: g.dist2(pts[i], centre) for i in R}
     if pat.centre_robot is None:
-        clear = _clear_centre(pts, centre, R, d, unit, cands, pat, approx)
+        clear = _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower)
         if clear is not None:
             return clear
     near = min(d.values(), key=_Key)
@@ -419,7 +435,7 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
     try:
         for i in tied:
             stay = [j for j in R if j != i]
-            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay)
+            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower)
             if target is not None:
                 options.append((g.dist2(pts[i], target), i, target, l, kind))
     except ValueError as err:           # a radial point the field cannot hold
@@ -458,7 +474,7 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
     return Decision("move", (Move(i, path, "leader"),), centre, pat, i, detail)
 
 
-def _clear_centre(pts, centre, R, d, unit, cands, pat, approx):
+def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
     """Nobody is at C but two or more robots are within 2 of it: C cannot be taken.  The
     farthest of them from C moves radially out to distance 2 (then it is in layer 1
     once the nearest reaches C).  A tie for the farthest: stay."""
@@ -473,7 +489,7 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx):
                         f"corrected: robots {top} tie to clear C")
     j = top[0]
     try:
-        target = g.radial_point(centre, pts[j], 2 * unit)
+        target = radial_point(centre, pts[j], 2 * unit, tower)
     except ValueError as err:
         return Decision("undecided", (), centre, pat, None, str(err))
     path = [g.Segment(pts[j], target)]
@@ -526,3 +542,6 @@ def decide_for(algorithm: str):
         from .robot import decide
         return decide
     raise ValueError(f"unknown algorithm {algorithm!r} (choices: {', '.join(ALGORITHMS)})")
+
+
+decide_corrected.cache_clear = _decide_corrected.cache_clear   # the benchmarks time cold Looks

@@ -29,6 +29,14 @@ Families (each root carries a tag naming the family and the robots):
   mirror line of the remaining ones, or the centroid of all the robots meets the SEC's
   centre (necessary for a rotation; with the mover a support of the SEC as well).
 
+About R's own SEC centre (the paper layer orders R about it), when the pattern holds
+robots or A1 = sec-r: the ``ray`` and ``distance`` relations about the SEC centre of the
+rest of R; and when the mover (of R) can leave that SEC -- it is then a support and the
+centre moves with it -- on each stretch between two SEC-of-R instants (a fixed support)
+the rays and ties of every pair of R about the moving centre of that support, as for a
+joint step with one mover (:func:`.moving_centre.about_moving_sec`; the roots in that
+stretch).
+
 The list is a superset: a candidate where nothing happens costs a Look, a missed one
 would be a missed check.  :func:`look_points` returns every root's exact point when the
 kernel holds it, and one rational point in each open stretch between consecutive roots
@@ -43,8 +51,9 @@ irreducible factor of degree 3 or more is exact too, a number of ``K(alpha)``
 alpha's factor of odd degree or a quartic of group S4 or A4).  Only the other roots (a
 quartic of group D4, C4 or V4, other even degrees, a norm or gcd too large, a radicand
 whose square test meets a rational of more than 160 bits) are seen on both sides only
-(``sided``).  Not enumerated: relations that involve neither C, nor an SEC,
-a symmetry or a contact (the corrected variant's distance profiles, for example).
+(``sided``).  Not enumerated: relations that involve neither C, nor an SEC (R's SEC
+centre, moving or not, included), a symmetry or a contact (the corrected variant's
+distance profiles, for example).
 """
 
 from __future__ import annotations
@@ -253,6 +262,14 @@ def _sec_family(m: Motion, static: dict, tag: str, sec=None) -> list:
     return out
 
 
+def may_leave(m: Motion, c, r2) -> bool:
+    """Can the mover be strictly outside the circle (c, r2) at some time in [0, 1]?"""
+    e = dist2_poly(m, c, r2)
+    if not e:
+        return False
+    return sum(e, MQ()).sign() > 0 or e[0].sign() > 0 or bool(roots_in_unit(e))
+
+
 def _mover_may_support(m: Motion, static: dict, centre, sec) -> bool:
     """False when the mover stays inside the others' SEC or on its circle (it leaves it
     at no instant) and C is that SEC's centre: the SEC of all is then that circle, every
@@ -263,10 +280,7 @@ def _mover_may_support(m: Motion, static: dict, centre, sec) -> bool:
     c0, r20 = sec
     if centre is None or c0 != centre:
         return True
-    e0 = dist2_poly(m, c0, r20)
-    if not e0:
-        return False                       # on the others' SEC circle all along
-    return sum(e0, MQ()).sign() > 0 or e0[0].sign() > 0 or bool(roots_in_unit(e0))
+    return may_leave(m, c0, r20)           # False on the others' SEC circle all along
 
 
 def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True, sec=None):
@@ -462,15 +476,31 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
                               ("pattern", f"on the circle of layer {L}")))
     # the paper layer orders R about R's own SEC centre: when the pattern holds robots,
     # R's SEC (its support changes) and the lines and ties about its centre too
+    extra: list = []
     if sec_r or proper_r:
-        for poly, what in _sec_family(m, sub_r, "SEC of R"):
-            polys.append((poly, ("sec", what)))
+        sec_r_polys = [(poly, ("sec", what)) for poly, what in
+                       _sec_family(m, sub_r, "SEC of R")]
+        c_r = None
         if len(sub_r) >= 2:
-            c_r = g.smallest_enclosing_circle(list(sub_r.values()))[0]
+            c_r, r2_r = g.smallest_enclosing_circle(list(sub_r.values()))
             if centre is None or c_r != centre:
                 more, at = _about(piece, m, c_r, sub_r, "the centre of R's SEC", mover,
                                   [(sub_r, "R")])
                 polys, about_params = polys + more, about_params + at
+        if mover in rset and (c_r is None or may_leave(m, c_r, r2_r)):
+            # the mover can be a support of R's SEC: its centre moves with the mover, on
+            # each stretch between two SEC-of-R instants as a joint step's does
+            from .joint_relations import still as still_motion
+            from .moving_centre import about_moving_sec
+            sub = {k: still_motion(p) for k, p in sub_r.items()}
+            sub[mover] = m
+            sec_roots = roots_of((p, t) for p, t in sec_r_polys if p)
+            known = {centre, c_r} - {None}
+            more, found = about_moving_sec(sub, {mover}, sec_roots, known)
+            polys += more
+            extra += sec_roots + found
+        else:
+            polys += sec_r_polys
     for k, q in static.items():
         if _reach(piece, q)[0] <= 2:
             polys.append((dist2_poly(m, q, MQ.rational(4)),
@@ -488,12 +518,24 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
                                                      "of R through C")))
     from .polyroots import _bracket
     roots = roots_of(polys, [_bracket((), f, ("symmetry", what)) for f, what in sym_params]
-                     + [_bracket((), f, tag) for f, tag in about_params])
+                     + [_bracket((), f, tag) for f, tag in about_params] + extra)
     for r in roots:
         # a rotation or a reflection about that centre can swap the mover with a robot as
         # far from it: the ties are symmetry candidates too (as for a joint step)
         r.tags += [("symmetry", w) for f, w in list(r.tags) if f == "distance"]
     return roots
+
+
+def _homed(f, pieces):
+    """An exact instant in the pieces' run tower (:func:`.run_tower.instant_in`); None
+    (seen on both sides only) when there is none or re-homing it cannot be decided."""
+    if f is None:
+        return None
+    from .run_tower import instant_in
+    try:
+        return instant_in(f, pieces)
+    except ValueError:
+        return None
 
 
 @dataclass(frozen=True)
@@ -510,8 +552,10 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
     -- one rational point in each open stretch between consecutive instants (the first
     before the first instant, the last after the last) and each instant itself when the
     kernel holds it (a nested radical: a point with tower coordinates; a root of a cubic
-    or quartic factor: a point of ``K(alpha)``) -- and the number of instants checked
-    only on both sides (the roots :mod:`.algebraic_instants` leaves without a value)."""
+    or quartic factor: a point of ``K(alpha)``; a nested root re-homed into the piece's
+    run tower first, :func:`.run_tower.instant_in`) -- and the number of instants
+    checked only on both sides (the roots :mod:`.algebraic_instants` leaves without a
+    value, or that the piece's tower cannot re-home)."""
     roots = critical_roots(piece, world, mover, centre, sec_r)
     if not roots:             # one stretch: the whole open piece
         half = MQ.rational(fmpq(1, 2))
@@ -526,8 +570,9 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
         if k == 0:
             lo = MQ.rational(r.lo)
             out.append(LookPoint(lo, piece.at(lo), f"just before: {what}", fams, False))
-        if r.exact is not None and not (apart and is_algebraic(r.exact)):
-            out.append(LookPoint(r.exact, piece.at(r.exact), what, fams, True))
+        f = _homed(r.exact, [piece]) if not (apart and is_algebraic(r.exact)) else None
+        if f is not None:
+            out.append(LookPoint(f, piece.at(f), what, fams, True))
         else:
             sided += 1
         # the stretch up to the next instant: its families change too at its end

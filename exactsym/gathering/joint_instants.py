@@ -38,7 +38,8 @@ SEC centre of R's robots standing still, as :mod:`.instants` does for one mover;
 when a mover of R can leave that SEC (it is then a support, and the centre moves), on
 each stretch between two SEC-of-R instants (a fixed support there) the rays and ties of
 every pair of R about the moving centre of that support, a rational function of tau
-(:func:`_about_moving_sec`; the roots in that stretch).
+(:func:`.moving_centre.about_moving_sec`, shared with one mover; the roots in
+that stretch).
 
 A superset of the events above: a candidate where nothing happens costs a Look.
 :func:`joint_look_points` gives, as :func:`.instants.look_points` does, each instant
@@ -60,28 +61,15 @@ from flint import fmpq
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .algebraic_instants import is_algebraic, mixes
-from .instants import _reach, hull_indices, motion_of
-from .joint_relations import (circumcentre_motion, const, contact_poly, incircle_poly,
-                              midpoint_motion, ray_about, ray_poly, rel, right_poly,
-                              seen_from, sq, still, tie_about, tie_poly)
-from .joint_symmetry import _may_leave, symmetry_polys
-from .polyroots import peval, pmul, pscale, psub, roots_in_unit, roots_of
+from .instants import _homed, _reach, hull_indices, may_leave, motion_of
+from .joint_relations import (const, contact_poly, incircle_poly, ray_poly, rel, right_poly,
+                              sq, still, tie_poly)
+from .joint_symmetry import symmetry_polys
+from .moving_centre import about_moving_sec, pairs_about
+from .polyroots import pmul, pscale, psub, roots_of
 
 
 # -- the families --------------------------------------------------------------------------
-def _about(motions: dict, movers, c, name: str) -> list:
-    out = []
-    for x, i in enumerate(sorted(motions)):
-        for k in sorted(motions)[x + 1:]:
-            if i not in movers and k not in movers:
-                continue
-            out.append((ray_poly(motions[i], motions[k], c),
-                        ("ray", f"robots {i} and {k} on one line through {name}")))
-            out.append((tie_poly(motions[i], motions[k], c),
-                        ("distance", f"robots {i} and {k} as far from {name}")))
-    return out
-
-
 def _sec(motions: dict, movers, tag: str) -> list:
     """SEC support changes among the candidates (movers, hull of the still robots)."""
     still_pts = {k: const(m) for k, m in motions.items() if k not in movers}
@@ -101,78 +89,6 @@ def _sec(motions: dict, movers, tag: str) -> list:
     return out
 
 
-def _at(m, t):
-    return (peval(m.nx, t) / peval(m.d, t), peval(m.ny, t) / peval(m.d, t))
-
-
-def _about_moving_sec(sub: dict, movers: set, sec_roots: list, known: set) -> tuple:
-    """``(polys, roots)``: the ``ray`` and ``distance`` relations of R's robots about
-    R's SEC centre while a mover of R may support that SEC (the centre moves).  Between
-    two consecutive roots of the SEC of R family (``sec_roots``: its support changes
-    there) the support is fixed: read exactly at one rational instant of each stretch,
-    the centre there is the moving midpoint of two supports or the moving circumcentre
-    of three, a rational function of tau (:func:`.joint_relations.midpoint_motion`,
-    :func:`.joint_relations.circumcentre_motion`); every pair of R (two robots standing
-    still too: the centre moves) gets its ray and its tie about it, denominators cleared
-    (:func:`.joint_relations.tie_about`: the centre's denominator, of constant sign on
-    the stretch, divided out), and only their roots in that stretch are kept (``roots``; a root whose
-    interval still straddles the stretch's end after refining is kept: a superset).  A
-    support whose centre stays put (three robots standing still, a mover sliding on the
-    circle of the others) is a constant centre: the relations that involve a mover
-    about it (``polys``), unless ``known`` holds it already."""
-    if len(sub) < 3:
-        return [], []          # two robots: on one line through their midpoint, as far
-    half = MQ.rational(fmpq(1, 2))
-    samples = ([MQ.rational(sec_roots[0].lo)] + [MQ.rational(r.hi) for r in sec_roots]
-               if sec_roots else [half])
-    ends = [fmpq(0)] + [r.lo for r in sec_roots], [r.hi for r in sec_roots] + [fmpq(1)]
-    centres: dict = {}
-    polys: list = []
-    for k, t in enumerate(samples):
-        pts = {j: _at(m, t) for j, m in sub.items()}
-        c, r2 = g.smallest_enclosing_circle(list(pts.values()))
-        on = sorted((j for j in pts if g.dist2(pts[j], c) == r2),
-                    key=lambda j: (j in movers, j))
-        pair = next(((a, b) for a, b in combinations(on, 2)
-                     if g.scale(g.add(pts[a], pts[b]), half) == c), None)
-        sup = pair if pair is not None and len([j for j in on if j not in movers]) < 3 \
-            else tuple(on[:3])
-        m = midpoint_motion(*(sub[j] for j in sup)) if len(sup) == 2 else \
-            circumcentre_motion(*(sub[j] for j in sup))
-        if not (psub(m.nx, pscale(m.d, c[0])) or psub(m.ny, pscale(m.d, c[1]))):
-            if c not in known:                   # it stays put on this stretch
-                known.add(c)
-                polys += _about(sub, movers, c, "the centre of R's SEC")
-            continue
-        centres.setdefault(sup, (m, []))[1].append((ends[0][k], ends[1][k]))
-    roots: list = []
-    ks = sorted(sub)
-    for sup, (m, windows) in centres.items():
-        name = f"the centre of R's SEC (supports {', '.join(map(str, sup))})"
-        seen = {a: seen_from(sub[a], m) for a in ks}
-        for x, a in enumerate(ks):
-            for b in ks[x + 1:]:
-                pair = (seen[a], seen[b])
-                for poly, tag in ((ray_about(sub[a], sub[b], m, pair),
-                                   ("ray", f"robots {a} and {b} on one line through {name}")),
-                                  (tie_about(sub[a], sub[b], m, pair),
-                                   ("distance", f"robots {a} and {b} as far from {name}"))):
-                    roots += [r for r in roots_in_unit(poly, tag) if _in_windows(r, windows)]
-    return polys, roots
-
-
-def _in_windows(r, windows, rounds: int = 48) -> bool:
-    """Can root ``r`` lie in one of the closed ``windows`` (refined until its interval
-    is inside one or outside all; still straddling after ``rounds``: kept)."""
-    for _ in range(rounds):
-        if any(lo <= r.lo and r.hi <= hi for lo, hi in windows):
-            return True
-        if all(r.hi <= lo or r.lo >= hi for lo, hi in windows):
-            return False
-        r.refine()
-    return True
-
-
 def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
     """Every critical instant strictly inside the step's interval, as separated
     :class:`.polyroots.Root`\\ s (``pieces``: mover -> the piece it moves along)."""
@@ -184,7 +100,7 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
     n = len(world.robots)
     top = max(L for L in range(1, n + 1) if 1 + 3 * L * (L - 1) < n) if n > 1 else 0
     for c in sorted(centres, key=lambda p: (str(p[0]), str(p[1]))):
-        polys += _about(motions, movers, c, "C")
+        polys += pairs_about(motions, movers, c, "C")
         for i in movers:
             lo, hi = _reach(pieces[i], c)
             for L in range(1, top + 1):
@@ -215,13 +131,13 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
             if len(stills) >= 2 and movers & set(sub):
                 c_r, r2_r = g.smallest_enclosing_circle(stills)
                 if c_r not in centres:
-                    polys += _about(sub, movers, c_r, "the centre of R's SEC")
+                    polys += pairs_about(sub, movers, c_r, "the centre of R's SEC")
                 known.add(c_r)
             if movers & set(sub) and (c_r is None or any(
-                    _may_leave(sub[i], c_r, r2_r) for i in movers & set(sub))):
+                    may_leave(sub[i], c_r, r2_r) for i in movers & set(sub))):
                 # a mover of R can be a support of R's SEC: its centre moves
                 sec_roots = roots_of((p, t) for p, t in sec_r_polys if p)
-                more, found = _about_moving_sec(sub, movers & set(sub), sec_roots, known)
+                more, found = about_moving_sec(sub, movers & set(sub), sec_roots, known)
                 polys += more
                 extra += sec_roots + found
             else:
@@ -258,8 +174,10 @@ def joint_look_points(pieces: dict, world, sec_r: bool = False) -> tuple:
         what = "; ".join(sorted({t[1] for t in r.tags}))
         if k == 0:
             out.append(JointPoint(MQ.rational(r.lo), f"just before: {what}", fams, False))
-        if r.exact is not None and not (apart and is_algebraic(r.exact)):
-            out.append(JointPoint(r.exact, what, fams, True))
+        tau = _homed(r.exact, pieces.values()) if not (apart and is_algebraic(r.exact)) \
+            else None
+        if tau is not None:
+            out.append(JointPoint(tau, what, fams, True))
         else:
             sided += 1
         out.append(JointPoint(MQ.rational(r.hi), f"just after: {what}", fams, False))

@@ -56,10 +56,11 @@ from __future__ import annotations
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
-from .instants import Motion, _centroid, dist2_poly, mirror_lines, smallest_distance_group
+from .instants import (Motion, _centroid, dist2_poly, may_leave, mirror_lines,
+                       smallest_distance_group)
 from .joint_relations import (centroid_motion, collinear_poly, const, crossv, diff, dotv,
                               pair_tie, rel, tie_about, tie_poly)
-from .polyroots import padd, pgcd, pmul, pscale, psub, roots_in_unit
+from .polyroots import padd, pgcd, pmul, pscale, psub
 
 
 def mirror_pair_poly(a: Motion, b: Motion, z, u) -> tuple:
@@ -147,14 +148,6 @@ def rotation_pair_poly(a: Motion, b: Motion, z, rot) -> tuple:
     return pgcd(ex, ey)
 
 
-def _may_leave(m: Motion, c, r2) -> bool:
-    """Can the mover be strictly outside the circle (c, r2) at some time in [0, 1]?"""
-    e = dist2_poly(m, c, r2)
-    if not e:
-        return False
-    return (sum(e, MQ()).sign() > 0 or e[0].sign() > 0 or bool(roots_in_unit(e)))
-
-
 def symmetry_polys(motions: dict, movers: set, members, name: str,
                    known_centres=()) -> list:
     """``[(poly, ("symmetry", description))]``: the necessary conditions above for a
@@ -200,7 +193,7 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
         out += [(p, ("symmetry", w)) for p, w in first_usable(rels) if len(p) > 1]
     # B: a mover mapped to a robot standing still
     c_s, r2_s = g.smallest_enclosing_circle(S)
-    inside = not any(_may_leave(motions[i], c_s, r2_s) for i in M)
+    inside = not any(may_leave(motions[i], c_s, r2_s) for i in M)
     swaps: list = []
     for i in M:
         for q in still_pts:

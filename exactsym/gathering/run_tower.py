@@ -23,6 +23,8 @@ not comparable: :meth:`.tower_numbers.TowerNumber.__eq__` raises), so a run owns
   of another tower rewritten in a given one: level by level, ``a + b y_i`` with ``y_i``
   replaced by the root of the re-homed radicand in the target tower (an existing element
   when it denests there, else a new level);
+* :func:`instant_in` -- a critical instant (a root in its own tower) re-homed into the
+  tower of the pieces a Look at it evaluates;
 * :class:`RunHome` -- the world's holder of its tower (:mod:`.world`): every path a Look
   plans is re-homed into it before the robot moves along it.
 
@@ -48,7 +50,7 @@ from . import geometry as g
 from .tower_numbers import TowerNumber, is_tower, tower_sqrt
 
 __all__ = ["RunTower", "RunHome", "sqrt_exact", "common_tower", "run_tower_for", "home",
-           "home_point", "home_piece", "towers_of"]
+           "home_point", "home_piece", "towers_of", "instant_in"]
 
 
 class RunTower(Tower):
@@ -203,6 +205,25 @@ def common_tower(points):
     if towers == (target,):
         return tuple(points), target
     return tuple(home_point(p, target) for p in points), target
+
+
+def instant_in(f, pieces):
+    """The exact instant ``f`` (a root of a critical polynomial) as a number of the run's
+    tower that ``pieces`` (the movers' pieces) lie in, so that ``piece.at(f)`` mixes no
+    two towers: a nested root of a polynomial with multiquadratic coefficients is a
+    number of its own one-level tower (:mod:`.tower_numbers`) even when the pieces are
+    in the run's (a radial segment from a nested-radical point, ``x(f) = t (1 + f)``,
+    has ``x(f)^2 = t^2 (1 + f)^2`` with ``t^2`` multiquadratic).  ``f`` unchanged when
+    it is no number of a tower of nested radicals (K(alpha)'s towers are not re-homed,
+    :func:`towers_of`) or no piece lies in a :class:`RunTower`; ValueError when the
+    re-homing needs a square root the tower cannot decide."""
+    target = next((t for t in towers_of(list(pieces)) if isinstance(t, RunTower)), None)
+    if target is None or not is_tower(f) or towers_of([(f,)]) in ((), (target,)):
+        return f
+    try:
+        return home(f, target)
+    except FieldTooLargeError as err:        # more levels than the tower allows
+        raise ValueError(str(err)) from None
 
 
 class RunHome:
