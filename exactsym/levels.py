@@ -19,8 +19,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .configuration import Configuration, no_cycle_collection
-from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels
+from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels, sum_of_products
 from .exact import FieldElement, RationalSystem, exact_key, exact_sorted, fmpq
+from .exact.field import PolyElement
 from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
                        float_coordinates, float_differences, float_squared_norms,
                        sorted_by_value, squared_distance)
@@ -96,7 +97,8 @@ def _levels_of(config: Configuration) -> Levels:
         circle = smallest_enclosing_circle(points, (fx, fy), errors)
         enc = Enclosures(config.points, circle.homogeneous)
         flat, bounds = filtered_levels(enc, circle.support)
-        return Levels(circle, AlgebraicLevels(flat, bounds, enc), False, enclosures=enc)
+        return Levels(circle, AlgebraicLevels(flat, bounds, enc, circle), False,
+                      enclosures=enc)
     circle = smallest_enclosing_circle(points, floats)
     x, y, d = circle.homogeneous
     if isinstance(d, fmpq) and d == 1:
@@ -253,18 +255,27 @@ class AlgebraicLevels(RationalLevels):
     lazily as :class:`RationalLevels`: a level's exact squared radius
     ``D^2 |p - C|^2 / D^2`` is computed when the level is read (the truth reads none)."""
 
-    __slots__ = ("enclosures", "_d2")
+    __slots__ = ("enclosures", "_d2", "circle")
 
-    def __init__(self, flat: list, bounds: list, enclosures):
+    def __init__(self, flat: list, bounds: list, enclosures, circle: Circle | None = None):
         super().__init__(flat, bounds, {})
         self.enclosures = enclosures
         self._d2 = None
+        self.circle = circle
 
     def radius_squared(self, i: int):
         enc = self.enclosures
-        r = enc.scaled_r2(i)
         if enc.unit:
-            return r
+            return enc.scaled_r2(i)
+        if self.circle is not None and self._d2 is None and \
+                isinstance(enc.homogeneous[2], PolyElement):
+            # |p - C|^2 from the divided centre (one inverse, shared with every reader of
+            # the SEC centre): one reduction in a large field, not four and 1 / D^2
+            cx, cy = self.circle.centre
+            x, y = enc.points[i]
+            dx, dy = x - cx, y - cy
+            return sum_of_products([(dx, dx), (dy, dy)])
+        r = enc.scaled_r2(i)
         if self._d2 is None:               # 1 / D^2, one field inverse for all levels
             d = enc.homogeneous[2]
             self._d2 = 1 / (d * d)
@@ -389,6 +400,6 @@ def mapped_levels(levels: Levels, points, sim) -> Levels | None:
         flat.extend(members)
         known[k] = level.radius_squared * k2
     bounds.append(len(points))
-    mapped = AlgebraicLevels(flat, bounds, enc2)
+    mapped = AlgebraicLevels(flat, bounds, enc2, sec)
     mapped.known.update(known)
     return Levels(sec, mapped, False, enclosures=enc2)

@@ -61,3 +61,23 @@ def test_mapped_levels_equal_the_recomputed_ones(config):
         assert tuple(mapped.levels) == tuple(fresh.levels)
         assert mapped.polar == fresh.polar
         assert mapped.enclosures.centre_index == fresh.enclosures.centre_index
+
+
+@settings(max_examples=25, deadline=None)
+@given(configurations())
+def test_lazy_radii_and_centre_equal_the_exact_path(config):
+    """AlgebraicLevels reads |p - C|^2 from the divided SEC centre (one inverse of D, no
+    1/D^2): the levels equal those of the exact path (no Arb filters), and the centre is
+    (X/D, Y/D)."""
+    if config is None:
+        return
+    from exactsym import levels as L
+    filtered = levels_of(config)
+    L.ALGEBRAIC_FILTER = False
+    try:
+        exact = levels_of(config)
+    finally:
+        L.ALGEBRAIC_FILTER = True
+    assert tuple(filtered.levels) == tuple(exact.levels)
+    x, y, d = filtered.sec.homogeneous
+    assert tuple(filtered.sec.centre) == (x / d, y / d)
