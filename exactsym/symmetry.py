@@ -55,6 +55,7 @@ from .configuration import Configuration, no_cycle_collection
 from .geometry import PseudoAngle, intern_by_value
 from .isometries import Isometry, Layout, identity, reflection, rotation
 from .exact import FieldElement, fmpq
+from .exact.fused import complex_product, product_sum
 from .algebraic_filtered import certified_c1
 from .levels import Levels, RationalLevels, levels_of
 from .sec import LazyCentre
@@ -283,7 +284,7 @@ def _point_about(point, cx, cy, cd):
     if dx == 0 and dy == 0:
         found = None
     else:
-        found = ((dx, dy), dx * dx + dy * dy, _Angle(dx, dy))  # no field inverse
+        found = ((dx, dy), product_sum([(dx, dx), (dy, dy)]), _Angle(dx, dy))  # no inverse
     if isinstance(dx, FieldElement) or isinstance(dy, FieldElement):
         if len(_ABOUT) >= _ABOUT_LIMIT:
             _ABOUT.clear()
@@ -378,9 +379,9 @@ class _LazyGap(_Angle):
 
     def __getattr__(self, name):
         if name in ("quadrant", "num", "den"):
-            (ux, uy), (vx, vy) = self._u, self._v
-            k = vx * (ux - uy)                     # Gauss: three products, as in _gap
-            PseudoAngle.__init__(self, k + uy * (vx + vy), k + ux * (vy - vx))
+            (ux, uy), v = self._u, self._v
+            # conj(u) v = (u.v, u x v): three products (Gauss), two reductions
+            PseudoAngle.__init__(self, *complex_product((ux, -uy), v))
             return object.__getattribute__(self, name)
         raise AttributeError(name)
 

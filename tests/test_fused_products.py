@@ -1,0 +1,51 @@
+"""exactsym.exact.fused (sums of products reduced once in a large field) against the plain
+operators, in Q(zeta_240) (degree 64: fused) and Q(zeta_12) (degree 4: plain), with
+parallel vectors (a zero cross product) and vectors 10^-30 from parallel."""
+
+from __future__ import annotations
+
+from hypothesis import given, settings, strategies as st
+
+from flint import fmpq
+
+from exactsym.exact.cyclotomic import cos_turn, cyclotomic_field
+from exactsym.exact.fused import FUSE_DEGREE, complex_product, cross_is_zero, product_sum
+
+BIG, SMALL = cyclotomic_field(240), cyclotomic_field(12)
+assert BIG.degree >= FUSE_DEGREE > SMALL.degree
+TINY = fmpq(1, 10 ** 30)
+
+
+@st.composite
+def reals(draw, field):
+    m = field.conductor
+    out = field(draw(st.integers(-3, 3)))
+    for _ in range(draw(st.integers(1, 3))):
+        out = out + draw(st.integers(-4, 4)) * cos_turn(field, fmpq(draw(st.integers(0, m - 1)), m))
+    return out
+
+
+@st.composite
+def vector_pairs(draw):
+    field = draw(st.sampled_from([BIG, SMALL]))
+    u = (draw(reals(field)), draw(reals(field)))
+    kind = draw(st.sampled_from(["free", "parallel", "near"]))
+    if kind == "free":
+        v = (draw(reals(field)), draw(reals(field)))
+    else:
+        k = draw(reals(field))
+        v = (k * u[0], k * u[1])
+        if kind == "near":
+            v = (v[0] + TINY, v[1])
+    return u, v
+
+
+@settings(max_examples=120, deadline=None)
+@given(vector_pairs())
+def test_fused_products_equal_the_plain_ones(pair):
+    (ux, uy), (vx, vy) = u, v = pair
+    assert product_sum([(ux, vx), (uy, vy)]) == ux * vx + uy * vy
+    assert product_sum([(ux, ux)]) == ux * ux
+    assert complex_product(u, v) == (ux * vx - uy * vy, ux * vy + uy * vx)
+    assert complex_product((ux, -uy), v) == (ux * vx + uy * vy, ux * vy - uy * vx)
+    assert cross_is_zero(u, v) == (ux * vy - uy * vx == 0)
