@@ -414,6 +414,10 @@ def _ball64(x):
 def _gap_ball(u, v):
     """A ball around the pseudo-angle of (u.v, u x v) from the coordinates' balls, or None
     when a sign that picks the quadrant (PseudoAngle's cases) is not decided by them."""
+    if u is v:
+        # one ray (a union of levels on one ray): u x u is 0 exactly and u.u > 0 (u is
+        # not zero), so the pseudo-angle is exactly 0 (quadrant 0, num 0)
+        return arb(0)
     with ctx.workprec(80):
         ux, uy, vx, vy = _ball64(u[0]), _ball64(u[1]), _ball64(v[0]), _ball64(v[1])
         x, y = ux * vx + uy * vy, ux * vy - uy * vx

@@ -111,3 +111,16 @@ def test_lazy_gaps_on_axes_and_against_rationals(u, t):
     assert lazy._cmp(2) == exact._cmp(2)
     assert (lazy == 2) == (t == fmpq(1, 2))
     assert lazy._cmp(_LazyGap(v, u)) == _sign_exact(exact, _exact(v, u))
+
+
+@settings(max_examples=30, deadline=None)
+@given(vectors(), vectors())
+def test_a_ray_to_itself(u, v):
+    """One ray: the gap from u to the same vector object is exactly 0 (its ball is the
+    point 0, no product made), compares as the exact gap and reads back exact parts."""
+    lazy, exact = _LazyGap(u, u), _exact(u, u)
+    assert lazy.ball() == 0 and exact == 0
+    other = _LazyGap(u, v)
+    assert lazy._cmp(other) == _sign_exact(exact, _exact(u, v))
+    assert lazy._cmp(_LazyGap(v, v)) == 0
+    assert (lazy.quadrant, sign(lazy.num)) == (0, 0)
