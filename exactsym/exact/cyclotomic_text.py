@@ -91,9 +91,15 @@ def cyclotomic_text(x: PolyElement) -> str:
     return "".join(pieces) if pieces else "0"
 
 
+#: cyclotomic_text writes Python ints, whose decimal conversion stops at 4,300 digits
+#: (about 14,284 bits): larger coefficients are written by number_text (fmpz)
+_TEXT_BITS = 12_000
+
+
 def fast_number_text(x) -> str:
     """:func:`exactsym.exact.text.number_text`, by :func:`cyclotomic_text` where it applies."""
-    if isinstance(x, PolyElement) and x.field.conductor is not None and not x.is_rational():
+    if isinstance(x, PolyElement) and x.field.conductor is not None and not x.is_rational() \
+            and max(x.poly.numer().height_bits(), x.poly.denom().bit_length()) <= _TEXT_BITS:
         return cyclotomic_text(x)
     return number_text(x)
 
