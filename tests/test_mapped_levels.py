@@ -81,3 +81,25 @@ def test_lazy_radii_and_centre_equal_the_exact_path(config):
     assert tuple(filtered.levels) == tuple(exact.levels)
     x, y, d = filtered.sec.homogeneous
     assert tuple(filtered.sec.centre) == (x / d, y / d)
+
+
+@settings(max_examples=25, deadline=None)
+@given(configurations(), st.data())
+def test_groups_of_unions_of_levels_by_balls_equal_the_exact_ones(config, data):
+    """audit_groups.group_about_centre hands the union of levels the whole configuration's
+    coordinate balls (the truth may certify C1 by them): the same group, ordering and
+    leader as the exact path (levels without enclosures)."""
+    if config is None:
+        return
+    from exactsym.audit_groups import group_about_centre
+    from exactsym.levels import Levels
+    ring = built_levels(levels_of(config))
+    bare = Levels(ring.sec, ring.levels, ring.polar)
+    t = len(ring.levels)
+    chosen = sorted(set(data.draw(st.lists(st.integers(1, t), min_size=1, max_size=3))))
+    robots = [i for k in chosen for i in ring.levels[k - 1].points]
+    (g1, r1), (g2, r2) = (group_about_centre(config, ring, robots, chosen),
+                          group_about_centre(config, bare, robots, chosen))
+    assert r1 == r2
+    assert (g1.name, g1.orderable, g1.ordering, g1.leader) == \
+        (g2.name, g2.orderable, g2.ordering, g2.leader)
