@@ -49,3 +49,18 @@ def test_fused_products_equal_the_plain_ones(pair):
     assert complex_product(u, v) == (ux * vx - uy * vy, ux * vy + uy * vx)
     assert complex_product((ux, -uy), v) == (ux * vx + uy * vy, ux * vy - uy * vx)
     assert cross_is_zero(u, v) == (ux * vy - uy * vx == 0)
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.sampled_from([BIG, SMALL]).flatmap(lambda f: st.tuples(reals(f), reals(f))),
+       st.booleans())
+def test_point_keys_are_equal_iff_the_numbers_are(pair, same):
+    """paper.polygon.definitions._number_key (integer coefficients read at once) keys as
+    exact_key does: equal iff equal, rational field elements as their rationals."""
+    from exactsym.paper.polygon.definitions import _number_key
+    x, y = pair
+    if same:
+        y = x + 0
+    assert (_number_key(x) == _number_key(y)) == (x == y)
+    if x.is_rational():
+        assert _number_key(x) == _number_key(x.rational())
