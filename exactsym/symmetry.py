@@ -55,7 +55,9 @@ from .configuration import Configuration, no_cycle_collection
 from .geometry import PseudoAngle, intern_by_value
 from .isometries import Isometry, Layout, identity, reflection, rotation
 from .exact import FieldElement, fmpq
+from .exact.field import PolyElement
 from .exact.fused import complex_product, product_sum
+from .exact.ordering import value_key
 from .algebraic_filtered import certified_c1
 from .levels import Levels, RationalLevels, levels_of
 from .sec import LazyCentre
@@ -667,9 +669,15 @@ def _intern(values, tuples: bool) -> list[int]:
                     for v in values)
         else:
             keys = ((x.p, x.q) for x in values)
+    elif isinstance(first, PolyElement) and first.field.degree >= _KEY_DEGREE:
+        # a field of large degree: hashing an element's fmpq coefficients costs ms
+        keys = (tuple([value_key(x) for x in v]) if tuples else value_key(v) for v in values)
     else:
         keys = iter(values)
     return [ids.setdefault(key, len(ids)) for key in keys]
+
+
+_KEY_DEGREE = 512       # from this degree radii are interned by value_key, not hash
 
 
 def _rotation_less(a_ids, a_vals, a_start, b_ids, b_vals, b_start) -> bool:

@@ -5,8 +5,8 @@ Theorem 1 (``theorem1``: the string conditions for asymmetry).
 
 from __future__ import annotations
 
-from ...exact import FieldElement, exact_key, normal_turn
-from ...exact.field import PolyElement
+from ...exact import FieldElement, normal_turn
+from ...exact.ordering import value_key
 from ...exact.fused import complex_product
 from ..filtered import ball
 from ..circle_polygon import CirclePolygon
@@ -18,17 +18,7 @@ def _point_key(v) -> tuple:
     return (_number_key(v[0]), _number_key(v[1]))
 
 
-def _number_key(x):
-    """:func:`exact_key` (equal keys iff equal numbers), for an irrational element of a
-    number field read from its canonical polynomial's integer numerator and denominator
-    at once (a coefficient pair per term costs five times more in degree 5,760)."""
-    if isinstance(x, PolyElement) and not x.is_rational():
-        p = x.poly
-        return (_FIELD_COEFFS, x.field, int(p.denom()), tuple(map(int, p.numer().coeffs())))
-    return exact_key(x)
-
-
-_FIELD_COEFFS = "field-coefficients"     # a tag no key of exact_key starts with
+_number_key = value_key          # equal iff the numbers are equal
 
 
 def direction_set(polygon: CirclePolygon, scale=None):
