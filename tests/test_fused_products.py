@@ -82,7 +82,6 @@ def test_radii_interned_by_value_key_as_by_hash(values, data):
     order = data.draw(st.permutations(range(len(xs))))
     xs = [xs[i] for i in order]
     singles = _intern(xs, False)
-
     for i in range(len(xs)):
         for j in range(len(xs)):
             assert (singles[i] == singles[j]) == (xs[i] == xs[j])
