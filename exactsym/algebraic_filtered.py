@@ -190,19 +190,33 @@ def overlapping_pairs(xs: list, ys: list) -> list[tuple[int, int]]:
     return pairs
 
 
+_CENTRES: dict = {}    # id(homogeneous) -> (homogeneous, cx ball, cy ball): the audit's
+                       # unions of levels share the whole configuration's centre
+
+
 class Enclosures:
     """Balls of the points about the centre ``(X/D, Y/D)`` (``homogeneous``, ``D > 0``),
-    and their exact counterparts computed on demand."""
+    and their exact counterparts computed on demand.  ``balls``: ``(xs, ys)``, balls of
+    the points' coordinates when known (else :func:`coordinate_balls`); kept as
+    ``self.balls``."""
 
-    def __init__(self, points, homogeneous):
+    def __init__(self, points, homogeneous, balls=None):
         self.points = points
         self.homogeneous = homogeneous
         x, y, d = homogeneous
         self.unit = d == 1
         with ctx.workprec(PREC):
-            bd = _ball(d)
-            cx, cy = _ball(x) / bd, _ball(y) / bd
-            xs, ys = coordinate_balls(points)
+            hit = _CENTRES.get(id(homogeneous))
+            if hit is not None and hit[0] is homogeneous:
+                cx, cy = hit[1], hit[2]
+            else:
+                bd = _ball(d)
+                cx, cy = _ball(x) / bd, _ball(y) / bd
+                if len(_CENTRES) >= 8:
+                    _CENTRES.clear()
+                _CENTRES[id(homogeneous)] = (homogeneous, cx, cy)
+            xs, ys = balls if balls is not None else coordinate_balls(points)
+            self.balls = (xs, ys)
             self.vx = [b - cx for b in xs]
             self.vy = [b - cy for b in ys]
             self.r2 = [a * a + b * b for a, b in zip(self.vx, self.vy)]

@@ -50,7 +50,7 @@ from .audit_levels import level_findings
 from .configuration import Configuration, Similarity, no_cycle_collection
 from .exact import fmpq, number_text
 from .labels import ALGORITHMS, STATEMENTS
-from .levels import Levels, levels_of
+from .levels import Levels, levels_of, mapped_levels
 from .paper import family as F
 from .paper.polygon_report import level_section
 from .symmetry import SymmetryGroup, symmetry_group
@@ -174,6 +174,21 @@ def transformed(config: Configuration, ring_data: Levels, frame: str) -> Configu
         return config.transformed(POLAR_FRAMES[frame])
     cartesian = config.cartesian() if config.polar is not None else config
     return cartesian.transformed(CARTESIAN_FRAMES[frame])
+
+
+def _frame_levels(config: Configuration, ring_data: Levels, moved: Configuration,
+                  frame: str) -> Levels | None:
+    """The levels of ``moved`` (``config`` in ``frame``, from :func:`transformed`) mapped
+    from ``ring_data`` (the levels of ``config``) along the frame's similarity (the SEC,
+    the levels and their radii are ground truth, not the paper's:
+    :func:`exactsym.levels.mapped_levels`), or None (then the paper's procedure computes
+    them)."""
+    enc = ring_data.enclosures
+    if ring_data.polar or moved.polar is not None or enc is None \
+            or len(enc.points) != config.n \
+            or not all(a is b for a, b in zip(enc.points, config.points)):
+        return None
+    return mapped_levels(ring_data, moved.points, CARTESIAN_FRAMES[frame])
 
 
 FRAME_TEXT = {
@@ -460,8 +475,9 @@ def _leader_check(config, ring_data, paper, group, kw, options) -> tuple[list, l
             return out, notes
         base = _actions(paper)
         for frame in FRAMES[1:]:
-            res = F.paper_procedure(transformed(config, ring_data, frame), **kw, claims=False,
-                                    check_vl=False, describe_polygons=False)
+            moved = transformed(config, ring_data, frame)
+            res = F.paper_procedure(moved, _frame_levels(config, ring_data, moved, frame), **kw,
+                                    claims=False, check_vl=False, describe_polygons=False)
             if not res.complete or _actions(res) == base:
                 continue
             entry, note = _frame_difference(config, paper, res, frame, kw)

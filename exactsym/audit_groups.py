@@ -37,6 +37,7 @@ from __future__ import annotations
 
 from math import gcd
 
+from .algebraic_filtered import Enclosures
 from .configuration import Configuration
 from .levels import Level, Levels
 from .symmetry import SymmetryGroup, symmetry_group
@@ -63,7 +64,16 @@ def group_about_centre(config: Configuration, ring_data: Levels, robots,
         pts = tuple(where[i] for i in level.points if i in where)
         if pts:
             out.append(Level(level.radius_squared, pts))
-    return symmetry_group(sub, Levels(ring_data.sec, tuple(out), ring_data.polar)), robots
+    enc = ring_data.enclosures
+    sub_enc = None
+    if enc is not None and not ring_data.polar and getattr(enc, "balls", None) is not None:
+        # the sub-configuration's balls about C, read from the whole one's: the truth
+        # then certifies C1 by balls (symmetry._certified_c1) with no exact product
+        xs, ys = enc.balls
+        sub_enc = Enclosures(sub.points, enc.homogeneous,
+                             ([xs[i] for i in robots], [ys[i] for i in robots]))
+    return symmetry_group(sub, Levels(ring_data.sec, tuple(out), ring_data.polar,
+                                      enclosures=sub_enc)), robots
 
 
 class SubGroups:

@@ -19,8 +19,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .configuration import Configuration, no_cycle_collection
-from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels
+from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels, sum_of_products
 from .exact import FieldElement, RationalSystem, exact_key, exact_sorted, fmpq
+from .exact.field import PolyElement
 from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
                        float_coordinates, float_differences, float_squared_norms,
                        sorted_by_value, squared_distance)
@@ -96,7 +97,8 @@ def _levels_of(config: Configuration) -> Levels:
         circle = smallest_enclosing_circle(points, (fx, fy), errors)
         enc = Enclosures(config.points, circle.homogeneous)
         flat, bounds = filtered_levels(enc, circle.support)
-        return Levels(circle, AlgebraicLevels(flat, bounds, enc), False, enclosures=enc)
+        return Levels(circle, AlgebraicLevels(flat, bounds, enc, circle), False,
+                      enclosures=enc)
     circle = smallest_enclosing_circle(points, floats)
     x, y, d = circle.homogeneous
     if isinstance(d, fmpq) and d == 1:
@@ -253,18 +255,27 @@ class AlgebraicLevels(RationalLevels):
     lazily as :class:`RationalLevels`: a level's exact squared radius
     ``D^2 |p - C|^2 / D^2`` is computed when the level is read (the truth reads none)."""
 
-    __slots__ = ("enclosures", "_d2")
+    __slots__ = ("enclosures", "_d2", "circle")
 
-    def __init__(self, flat: list, bounds: list, enclosures):
+    def __init__(self, flat: list, bounds: list, enclosures, circle: Circle | None = None):
         super().__init__(flat, bounds, {})
         self.enclosures = enclosures
         self._d2 = None
+        self.circle = circle
 
     def radius_squared(self, i: int):
         enc = self.enclosures
-        r = enc.scaled_r2(i)
         if enc.unit:
-            return r
+            return enc.scaled_r2(i)
+        if self.circle is not None and self._d2 is None and \
+                isinstance(enc.homogeneous[2], PolyElement):
+            # |p - C|^2 from the divided centre (one inverse, shared with every reader of
+            # the SEC centre): one reduction in a large field, not four and 1 / D^2
+            cx, cy = self.circle.centre
+            x, y = enc.points[i]
+            dx, dy = x - cx, y - cy
+            return sum_of_products([(dx, dx), (dy, dy)])
+        r = enc.scaled_r2(i)
         if self._d2 is None:               # 1 / D^2, one field inverse for all levels
             d = enc.homogeneous[2]
             self._d2 = 1 / (d * d)
@@ -325,3 +336,70 @@ def _group_rational_levels(n: int, radii_squared, order_level, approx=None, radi
     bounds.append(n)
     levels.flat, levels.bounds = out_flat, bounds
     return levels
+
+
+def mapped_levels(levels: Levels, points, sim) -> Levels | None:
+    """The levels of the configuration whose points are ``points``, the images of the
+    points of ``levels`` under the exact similarity ``sim`` (a
+    :class:`exactsym.configuration.Similarity` without ``turn``; robot indices kept), read
+    from ``levels`` instead of recomputed (issue 9, design item 4: the audit's frames).
+
+    A similarity maps the SEC onto the SEC (same support), keeps which points are at
+    equal distance from the centre and the order of the distances, and multiplies each
+    squared radius by ``scale^2``; only the counter-clockwise order inside each level, from
+    the new frame's +x ray, is computed again (:meth:`Enclosures.sorted_by_direction`, as
+    :func:`filtered_levels` does).  The homogeneous centre (X, Y, D) keeps its D, so no
+    field product or inverse is made.  None unless ``levels`` came from the Arb-ball path
+    (irrational coordinates, levels built) and ``sim`` has no ``turn``."""
+    lv = levels.levels
+    enc = levels.enclosures
+    if levels.polar or enc is None or not isinstance(lv, tuple) or sim.turn is not None \
+            or len(points) != len(enc.points):
+        return None
+    circle = levels.sec
+    k2 = fmpq(sim.scale) ** 2
+
+    def linear(x, y):
+        if sim.reflect:
+            y = -y
+        if sim.rotation is not None:
+            c, s = sim.rotation
+            x, y = c * x - s * y, s * x + c * y
+        if sim.scale != 1:
+            x, y = sim.scale * x, sim.scale * y
+        return x, y
+
+    def image(p):
+        x, y = linear(*p)
+        if sim.shift is not None:
+            x, y = x + sim.shift[0], y + sim.shift[1]
+        return x, y
+
+    x, y, d = circle.homogeneous
+    x, y = linear(x, y)
+    if sim.shift is not None:
+        x, y = x + d * sim.shift[0], y + d * sim.shift[1]
+    through = None
+    if circle._through is not None:
+        found = [i for i, p in enumerate(enc.points) if p is circle._through]
+        if not found:
+            return None
+        through = points[found[0]]
+    centre = image(circle._centre) if circle._centre is not None else None
+    radius = circle._radius_squared * k2 if circle._radius_squared is not None else None
+    sec = Circle(centre, radius, circle.support, (x, y, d), through)
+    enc2 = Enclosures(points, sec.homogeneous)
+    flat: list[int] = []
+    bounds: list[int] = []
+    known = {}
+    for k, level in enumerate(lv):
+        members = list(level.points)
+        bounds.append(len(flat))
+        if len(members) > 1:
+            members = enc2.sorted_by_direction(members)[0]
+        flat.extend(members)
+        known[k] = level.radius_squared * k2
+    bounds.append(len(points))
+    mapped = AlgebraicLevels(flat, bounds, enc2, sec)
+    mapped.known.update(known)
+    return Levels(sec, mapped, False, enclosures=enc2)

@@ -16,7 +16,8 @@ from json.encoder import c_make_encoder, encode_basestring_ascii
 
 from .analysis import Analysis, Options, analyse
 from .configuration import Configuration, no_cycle_collection
-from .exact import evaluate, fmpq, number_system, number_text
+from .exact import evaluate, fmpq, number_system
+from .exact.cyclotomic_text import fast_number_text as number_text   # same strings, faster
 from .expr import parse_expression
 from .paper.family_report import paper_json
 from .paper.polygon_report import LabelledVerdict

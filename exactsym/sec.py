@@ -19,6 +19,7 @@ import numpy as np
 from flint import arb, ctx
 
 from .exact import fmpq, sign
+from .exact.field import PolyElement
 from .geometry import (Point, Turn, circumcentre_homogeneous, midpoint, orientation,
                        orientation_homogeneous, squared_distance)
 
@@ -49,7 +50,11 @@ class Circle:
     def centre(self) -> Point:
         if self._centre is None:
             x, y, d = self.homogeneous
-            self._centre = (x / d, y / d)
+            if isinstance(d, PolyElement) and not d.is_rational():
+                inverse = 1 / d                   # one field inverse, not two
+                self._centre = (x * inverse, y * inverse)
+            else:
+                self._centre = (x / d, y / d)
         return self._centre
 
     @property

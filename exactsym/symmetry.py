@@ -49,11 +49,15 @@ from functools import cmp_to_key
 from typing import Iterator, Sequence
 
 import numpy as np
+from flint import arb, ctx
 
 from .configuration import Configuration, no_cycle_collection
 from .geometry import PseudoAngle, intern_by_value
 from .isometries import Isometry, Layout, identity, reflection, rotation
 from .exact import FieldElement, fmpq
+from .exact.field import PolyElement
+from .exact.fused import complex_product, product_sum
+from .exact.ordering import value_key
 from .algebraic_filtered import certified_c1
 from .levels import Levels, RationalLevels, levels_of
 from .sec import LazyCentre
@@ -282,7 +286,7 @@ def _point_about(point, cx, cy, cd):
     if dx == 0 and dy == 0:
         found = None
     else:
-        found = ((dx, dy), dx * dx + dy * dy, _Angle(dx, dy))  # no field inverse
+        found = ((dx, dy), product_sum([(dx, dx), (dy, dy)]), _Angle(dx, dy))  # no inverse
     if isinstance(dx, FieldElement) or isinstance(dy, FieldElement):
         if len(_ABOUT) >= _ABOUT_LIMIT:
             _ABOUT.clear()
@@ -350,6 +354,88 @@ class _Angle(PseudoAngle):
             self._ball64 = super().ball(64)
         return self._ball64
 
+    def _cmp(self, other) -> int:
+        # a filter: disjoint remembered balls decide (each holds the exact value); only
+        # overlapping ones reach the exact products of PseudoAngle._cmp
+        if isinstance(other, _Angle):
+            a, b = self.ball(), other.ball()
+            if a < b:
+                return -1
+            if a > b:
+                return 1
+        return super()._cmp(other)
+
+
+class _LazyGap(_Angle):
+    """The pseudo-angle of (u.v, u x v) (:func:`_gap`) whose exact parts are made only
+    when read (``quadrant``, ``num``, ``den``: an unset slot falls to ``__getattr__``).
+    Its 64-bit ball is computed from the balls of u's and v's coordinates (Arb: it holds
+    the exact value); the audit's unions of levels in a field of degree thousands compare
+    most gaps by these balls alone, and each exact gap costs three products."""
+
+    __slots__ = ("_u", "_v")
+
+    def __init__(self, u, v):
+        self._u, self._v = u, v
+        self._ball64 = None
+
+    def __getattr__(self, name):
+        if name in ("quadrant", "num", "den"):
+            (ux, uy), v = self._u, self._v
+            # conj(u) v = (u.v, u x v): three products (Gauss), two reductions
+            PseudoAngle.__init__(self, *complex_product((ux, -uy), v))
+            return object.__getattribute__(self, name)
+        raise AttributeError(name)
+
+    def ball(self, prec: int = 64):
+        if prec != 64:
+            return PseudoAngle.ball(self, prec)
+        if self._ball64 is None:
+            self._ball64 = _gap_ball(self._u, self._v)
+            if self._ball64 is None:               # a sign the balls leave open
+                self._ball64 = PseudoAngle.ball(self, 64)
+        return self._ball64
+
+
+_BALLS: dict = {}      # id(number) -> (number, 64-bit ball): see _ball64
+
+
+def _ball64(x):
+    """The 64-bit Arb ball of a coordinate, remembered per object (a vector of
+    :func:`_point_about` is shared by many gaps)."""
+    hit = _BALLS.get(id(x))
+    if hit is not None and hit[0] is x:
+        return hit[1]
+    ball = x.enclosure(64) if isinstance(x, FieldElement) else arb(x)
+    if len(_BALLS) >= _ABOUT_LIMIT:
+        _BALLS.clear()
+    _BALLS[id(x)] = (x, ball)
+    return ball
+
+
+def _gap_ball(u, v):
+    """A ball around the pseudo-angle of (u.v, u x v) from the coordinates' balls, or None
+    when a sign that picks the quadrant (PseudoAngle's cases) is not decided by them."""
+    if u is v:
+        # one ray (a union of levels on one ray): u x u is 0 exactly and u.u > 0 (u is
+        # not zero), so the pseudo-angle is exactly 0 (quadrant 0, num 0)
+        return arb(0)
+    with ctx.workprec(80):
+        ux, uy, vx, vy = _ball64(u[0]), _ball64(u[1]), _ball64(v[0]), _ball64(v[1])
+        x, y = ux * vx + uy * vy, ux * vy - uy * vx
+        if y > 0:
+            if x > 0:
+                return y / (x + y)
+            if x < 0:
+                return 1 + (-x) / (y - x)
+            return None
+        if y < 0:
+            if x < 0:
+                return 2 + (-y) / (-(x + y))
+            if x > 0:
+                return 3 + x / (x - y)
+        return None
+
 
 def _sorted_by_value(indices: list, keys) -> list:
     """:func:`exactsym.geometry.sorted_by_value` (the same list), with each adjacent pair of
@@ -378,9 +464,12 @@ def _gap(u, v) -> PseudoAngle:
         hit = _GAPS.get((id(u), id(v)))
         if hit is not None and hit[0] is u and hit[1] is v:
             return hit[2]
-    (ux, uy), (vx, vy) = u, v
-    k = vx * (ux - uy)
-    gap = _Angle(k + uy * (vx + vy), k + ux * (vy - vx))
+    if field:
+        gap = _LazyGap(u, v)
+    else:
+        (ux, uy), (vx, vy) = u, v
+        k = vx * (ux - uy)
+        gap = _Angle(k + uy * (vx + vy), k + ux * (vy - vx))
     if field:
         if len(_GAPS) >= _ABOUT_LIMIT:
             _GAPS.clear()
@@ -580,9 +669,15 @@ def _intern(values, tuples: bool) -> list[int]:
                     for v in values)
         else:
             keys = ((x.p, x.q) for x in values)
+    elif isinstance(first, PolyElement) and first.field.degree >= _KEY_DEGREE:
+        # a field of large degree: hashing an element's fmpq coefficients costs ms
+        keys = (tuple([value_key(x) for x in v]) if tuples else value_key(v) for v in values)
     else:
         keys = iter(values)
     return [ids.setdefault(key, len(ids)) for key in keys]
+
+
+_KEY_DEGREE = 512       # from this degree radii are interned by value_key, not hash
 
 
 def _rotation_less(a_ids, a_vals, a_start, b_ids, b_vals, b_start) -> bool:

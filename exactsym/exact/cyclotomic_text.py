@@ -67,33 +67,55 @@ def cyclotomic_text(x: PolyElement) -> str:
     terms = _terms(m, field.degree)
     # the constant: c_0 plus the rational cosines' contributions, over den * 2
     const2 = 2 * coeffs[0]
-    out = []
-    for k in range(1, len(coeffs)):
-        c = coeffs[k]
-        if not c:
-            continue
-        term = terms[k]
-        if type(term) is tuple:
-            const2 += 2 * c * term[0] // term[1]
-            continue
-        g = gcd(c, den)
-        out.append((c < 0, _body(c // g, den // g, term)))
+    out = []                    # (negative, |term| text) in the order of the powers
+    append = out.append
+    if den == 1:                # integer coefficients: no gcd (the common case of slopes)
+        for k in range(1, len(coeffs)):
+            c = coeffs[k]
+            if not c:
+                continue
+            term = terms[k]
+            if type(term) is tuple:
+                const2 += 2 * c * term[0] // term[1]
+            elif c > 0:
+                append((False, term if c == 1 else f"{c}*{term}"))
+            else:
+                append((True, term if c == -1 else f"{-c}*{term}"))
+    else:
+        for k in range(1, len(coeffs)):
+            c = coeffs[k]
+            if not c:
+                continue
+            term = terms[k]
+            if type(term) is tuple:
+                const2 += 2 * c * term[0] // term[1]
+                continue
+            g = gcd(c, den)
+            append((c < 0, _body(c // g, den // g, term)))
     pieces = []
     if const2:
         g = gcd(const2, 2 * den)
         p, q = const2 // g, 2 * den // g
         pieces.append(("-" if p < 0 else "") + (str(abs(p)) if q == 1 else f"{abs(p)}/{q}"))
-    for neg, body in out:
-        if not pieces:
-            pieces.append(("-" if neg else "") + body)
-        else:
+    if out:
+        neg, body = out[0]
+        if pieces:
             pieces.append((" - " if neg else " + ") + body)
+        else:
+            pieces.append(("-" if neg else "") + body)
+        pieces.extend([(" - " if neg else " + ") + body for neg, body in out[1:]])
     return "".join(pieces) if pieces else "0"
+
+
+#: cyclotomic_text writes Python ints, whose decimal conversion stops at 4,300 digits
+#: (about 14,284 bits): larger coefficients are written by number_text (fmpz)
+_TEXT_BITS = 12_000
 
 
 def fast_number_text(x) -> str:
     """:func:`exactsym.exact.text.number_text`, by :func:`cyclotomic_text` where it applies."""
-    if isinstance(x, PolyElement) and x.field.conductor is not None and not x.is_rational():
+    if isinstance(x, PolyElement) and x.field.conductor is not None and not x.is_rational() \
+            and max(x.poly.numer().height_bits(), x.poly.denom().bit_length()) <= _TEXT_BITS:
         return cyclotomic_text(x)
     return number_text(x)
 

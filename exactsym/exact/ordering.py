@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from flint import fmpq
 
-from .field import FieldElement
+from .field import FieldElement, PolyElement
 from .multiquadratic import MQ
 from .tower import TowerElement, key as tower_key
 
@@ -52,6 +52,20 @@ def exact_key(x):
     if isinstance(x, int):
         return (x, 1)
     raise TypeError(f"not an exact number: {x!r}")
+
+
+def value_key(x):
+    """A hashable key equal iff the numbers are equal, as :func:`exact_key`, made faster
+    for an irrational element of a number field: its canonical polynomial's integer
+    numerator and denominator read at once (coefficient pairs cost five times more in
+    degree 5,760).  Keys of this function compare only with keys of this function."""
+    if isinstance(x, PolyElement) and not x.is_rational():
+        p = x.poly
+        return (_FIELD_COEFFS, x.field, int(p.denom()), tuple(map(int, p.numer().coeffs())))
+    return exact_key(x)
+
+
+_FIELD_COEFFS = "field-coefficients"     # a tag no key of exact_key starts with
 
 
 def exact_sorted(values: list, key=None) -> list:

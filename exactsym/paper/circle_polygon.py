@@ -303,7 +303,7 @@ def polygon_from_directions(labels, directions, polar: bool) -> CirclePolygon:
         same = lambda p, q: directions[p] == directions[q]   # noqa: E731
     else:
         for d in directions:
-            if sign(d[0]) == 0 and sign(d[1]) == 0:
+            if d[0] == 0 and d[1] == 0:      # exact zero tests (no certified sign)
                 raise ValueError("a vertex at the centre C has no direction")
         order = sorted(range(len(labels)),
                        key=cmp_to_key(lambda p, q: compare_directions(directions[p], directions[q])))

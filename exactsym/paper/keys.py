@@ -13,6 +13,7 @@ from functools import cmp_to_key
 from math import atan2, gcd, pi
 
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
+from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
@@ -293,8 +294,7 @@ def complex_product(a, b) -> tuple:
     if a is b:
         x, y = a
         return ((x - y) * (x + y), 2 * (x * y))
-    k1 = b[0] * (a[0] + a[1])
-    return (k1 - a[1] * (b[0] + b[1]), k1 + a[0] * (b[1] - b[0]))
+    return fused_complex_product(a, b)      # the shared product reduced in both sums
 
 
 def lazy_line_canon(a, b, make):
@@ -358,7 +358,7 @@ class _DirectionKey(RatioKey):
             return False
         (x, y), (x2, y2) = self.vector(), other.vector()
         # equal signs: x^2/|v|^2 == x2^2/|v2|^2 iff the unit vectors are equal
-        return not (x * y2 - y * x2)
+        return cross_is_zero((x, y), (x2, y2))
 
     def __ne__(self, other) -> bool:
         return not self.__eq__(other)

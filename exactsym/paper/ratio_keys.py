@@ -18,6 +18,7 @@ from flint import arb, ctx, fmpq, fmpq_poly
 from ..exact import FieldElement, exact_key, sign
 from ..exact.cyclotomic_modular import ratio_irrational
 from ..exact.field import PolyElement
+from ..exact.fused import complex_product, cross_is_zero
 from .filtered import ball
 
 #: polynomial fields from this degree get ratio keys: all of them, since an inverse is
@@ -184,7 +185,8 @@ class AngleKey(RatioKey):
     def dot_cross(self) -> tuple:
         if self._de is None:
             a, b = self.a, self.b
-            self._de = (a[0] * b[0] + a[1] * b[1], a[0] * b[1] - a[1] * b[0])
+            # conj(a) b: three products, two reductions in a large field
+            self._de = complex_product((a[0], -a[1]), (b[0], b[1]))
         return self._de
 
     def __eq__(self, other) -> bool:
@@ -196,7 +198,7 @@ class AngleKey(RatioKey):
                 or self.dot_sign != other.dot_sign:
             return False
         (d, e), (d2, e2) = self.dot_cross(), other.dot_cross()
-        return d * e2 == e * d2
+        return cross_is_zero((d, e), (d2, e2))
 
     def __hash__(self) -> int:
         return self._hash

@@ -5,7 +5,9 @@ Theorem 1 (``theorem1``: the string conditions for asymmetry).
 
 from __future__ import annotations
 
-from ...exact import FieldElement, exact_key, normal_turn
+from ...exact import FieldElement, normal_turn
+from ...exact.ordering import value_key
+from ...exact.fused import complex_product
 from ..filtered import ball
 from ..circle_polygon import CirclePolygon
 from ..keys import HALF, LineKey, line_canon, line_key, line_value, ray_key
@@ -13,7 +15,10 @@ from .strings import string_classes
 
 
 def _point_key(v) -> tuple:
-    return (exact_key(v[0]), exact_key(v[1]))
+    return (_number_key(v[0]), _number_key(v[1]))
+
+
+_number_key = value_key          # equal iff the numbers are equal
 
 
 def direction_set(polygon: CirclePolygon, scale=None):
@@ -88,8 +93,7 @@ def _definition_mirror_keys(polygon: CirclePolygon) -> list:
         else:
             if balls is not None and _certainly_not_onto(balls, d0, dj):
                 continue                    # the balls refute it: no exact product
-            a = d0[0] * dj[0] - d0[1] * dj[1]
-            b = d0[0] * dj[1] + d0[1] * dj[0]
+            a, b = complex_product(d0, dj)      # fused: two reductions in a large field
             image = (lambda a, b: lambda w: (a * w[0] + b * w[1], b * w[0] - a * w[1]))(a, b)
             if maps_onto_itself(polygon, image, scale):
                 found[LineKey(line_canon((a, b)), None, (a, b))] = True

@@ -13,6 +13,7 @@ strings are equal entry by entry, and each entry comparison is exact).
 from __future__ import annotations
 
 from ...exact import FieldElement
+from ...exact.fused import complex_product
 from ..circle_polygon import CirclePolygon
 from ..filtered import ball
 
@@ -94,13 +95,12 @@ def line_count_small(polygon: CirclePolygon, vertices, edges) -> int:
         x, y = d[i]
         bx, by = ball(x), ball(y)
         items.append((bx * bx - by * by, 2 * bx * by,
-                      lambda x=x, y=y: (x * x - y * y, 2 * x * y)))
+                      lambda x=x, y=y: ((x - y) * (x + y), 2 * (x * y))))
     for e in edges:
         (ax, ay), (cx, cy) = d[e], d[(e + 1) % n]
         bax, bay, bcx, bcy = ball(ax), ball(ay), ball(cx), ball(cy)
         items.append((bax * bcx - bay * bcy, bax * bcy + bay * bcx,
-                      lambda ax=ax, ay=ay, cx=cx, cy=cy: (ax * cx - ay * cy,
-                                                           ax * cy + ay * cx)))
+                      lambda ax=ax, ay=ay, cx=cx, cy=cy: complex_product((ax, ay), (cx, cy))))
     exact: dict = {}
 
     def value(k):
