@@ -20,7 +20,7 @@ from flint import arb, ctx
 
 from .exact import fmpq, sign
 from .exact.field import PolyElement
-from .geometry import (Point, Turn, circumcentre_homogeneous, midpoint, orientation,
+from .geometry import (Point, Turn, circumcentre_homogeneous, midpoint,
                        orientation_homogeneous, squared_distance)
 
 _SEED = 20100707

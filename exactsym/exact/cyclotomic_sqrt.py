@@ -29,7 +29,7 @@ Public names: :func:`field_sqrt`, :func:`split_primes`, :func:`root_of_unity_mod
 
 from __future__ import annotations
 
-from flint import fmpq, fmpq_poly, fmpz_mat, fmpz_poly, nmod_poly
+from flint import fmpq_poly, fmpz_mat, fmpz_poly, nmod_poly
 
 from .factor import factorization
 from .field import NumberField, PolyElement

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from ...exact import fmpq, normal_turn, sign
+from ...exact import fmpq, normal_turn
 from ...strings import cyclic_period, first_occurrence
 from ..circle_polygon import CirclePolygon
 from ..filtered import cross_sign
