@@ -146,6 +146,21 @@ class FieldElement:
 
     __slots__ = ()
 
+    def __pow__(self, k: int):
+        """Square and multiply; ``self._one()`` is the subclass's 1 (for ``k = 0``)."""
+        if not isinstance(k, int):
+            return NotImplemented
+        if k < 0:
+            return self.inverse() ** (-k)
+        out, base = None, self
+        while k:
+            if k & 1:
+                out = base if out is None else out * base
+            k >>= 1
+            if k:
+                base = base * base
+        return self._one() if out is None else out
+
     def __lt__(self, other):
         c = self._cmp(other)
         return NotImplemented if c is None else c < 0
@@ -307,16 +322,8 @@ class PolyElement(FieldElement):
         o = self._other(other)
         return NotImplemented if o is None else PolyElement(self.field, o) * self.inverse()
 
-    def __pow__(self, exponent: int):
-        if not isinstance(exponent, int):
-            return NotImplemented
-        base = self if exponent >= 0 else self.inverse()
-        result = PolyElement(self.field, fmpq_poly([1]))
-        for bit in bin(abs(exponent))[2:]:
-            result = result * result
-            if bit == "1":
-                result = result * base
-        return result
+    def _one(self):
+        return PolyElement(self.field, fmpq_poly([1]))
 
     # -- exact comparison -----------------------------------------------------
     def is_rational(self) -> bool:

@@ -241,18 +241,8 @@ class MQ(FieldElement):
     def __rtruediv__(self, other):
         return MQ.coerce(other) * self.inverse()
 
-    def __pow__(self, k: int):
-        if not isinstance(k, int):
-            return NotImplemented
-        if k < 0:
-            return self.inverse() ** (-k)
-        out, base = MQ.rational(1), self
-        while k:
-            if k & 1:
-                out = out * base
-            base = base * base
-            k >>= 1
-        return out
+    def _one(self):
+        return MQ.rational(1)
 
     # -- equality, hash, sign ----------------------------------------------
     def __eq__(self, other):

@@ -414,17 +414,8 @@ class AlgebraicNumber(FieldElement):
         o = _coerce(other)
         return NotImplemented if o is None else self.inverse() * o
 
-    def __pow__(self, k: int):
-        if not isinstance(k, int):
-            return NotImplemented
-        base = self if k >= 0 else self.inverse()
-        out, k = ONE, abs(k)
-        while k:
-            if k & 1:
-                out = base * out
-            base = base * base
-            k >>= 1
-        return out
+    def _one(self):
+        return ONE
 
     # -- exact comparison ------------------------------------------------------------------
     def __eq__(self, other):
