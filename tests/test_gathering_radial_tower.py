@@ -243,3 +243,38 @@ def test_a_path_the_runs_tower_cannot_hold_makes_the_decision_undecided(monkeypa
     monkeypatch.setattr(w.home, "path", refuse)
     d, paths = w.snapshot_decision(IDENTITY)
     assert d.status == "undecided" and paths == {} and "160 bits" in d.detail
+
+
+def test_hypothetical_levels_are_taken_back_and_no_cached_decision_keeps_them():
+    """The invariants' fresh Looks grow the run's tower only inside RunHome.scratch: the
+    levels they add are taken back, and a decision cached there (robot.decide) is never
+    served afterwards, when the same level index holds another radicand."""
+    home = RunHome()
+    home.tower = run = RunTower()
+    z = sqrt_exact(52 + 2 * S2, run)                 # level 1, about 7.35
+    snapshot = NESTED[:4] + ((z, Q(1)),) + NESTED[5:]
+    before = run.mark()
+    with home.scratch():
+        d = decide(snapshot, ALL_FIRST)
+        assert d.leader == 4 and run.levels == 2     # sqrt(53 + 2 sqrt 2): a new level
+        assert g.dist2(d.move_of(4).path[-1].final, ORIGIN) == 4
+    assert run.levels == 1 and run.mark() == before
+    w = sqrt_exact(5 + 3 * S2, run)                   # level 2 is now another radicand
+    assert run.levels == 2 and w * w == 5 + 3 * S2
+    d = decide(snapshot, ALL_FIRST)                   # recomputed, not the cached one
+    target = d.move_of(4).path[-1].final
+    assert run.levels == 3 and g.dist2(target, ORIGIN) == 4
+
+
+def test_a_violation_inside_scratch_keeps_its_levels():
+    home = RunHome()
+    home.tower = run = RunTower()
+    sqrt_exact(3 + S2, run)
+    try:
+        with home.scratch():
+            sqrt_exact(5 + S2, run)
+            raise RuntimeError("a Violation leaves the block")
+    except RuntimeError:
+        pass
+    assert run.levels == 2 and sqrt_exact(5 + S2, run) ** 2 == 5 + S2
+

@@ -243,7 +243,7 @@ class Checker:
     def _same_centre(self, world, i, t, where: str):
         from .world import IDENTITY
         rob = world.robots[i]
-        d, _ = world.snapshot_decision(IDENTITY)
+        d = world.fresh_decision(IDENTITY)      # only its centre is read
         if d.centre != rob.centre:
             raise Violation("I6", t, [i], f"C moved from {g.fmt_point(rob.centre)} to "
                             f"{g.fmt_point(d.centre)} while robot {i} moves ({rob.role} "

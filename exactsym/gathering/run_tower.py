@@ -41,6 +41,9 @@ tower at all.
 
 from __future__ import annotations
 
+import contextlib
+import itertools
+
 from ..errors import FieldTooLargeError
 from ..exact import tower as T
 from ..exact.mq_closure import decided_sqrt
@@ -50,7 +53,7 @@ from . import geometry as g
 from .tower_numbers import TowerNumber, is_tower, tower_sqrt
 
 __all__ = ["RunTower", "RunHome", "sqrt_exact", "common_tower", "run_tower_for", "home",
-           "home_point", "home_piece", "towers_of", "instant_in"]
+           "home_point", "home_piece", "towers_of", "epochs_of", "instant_in"]
 
 
 class RunTower(Tower):
@@ -82,6 +85,22 @@ class RunTower(Tower):
     def number(self, v):
         """A raw value as a kernel number of this tower (an MQ at level 0)."""
         return v if isinstance(v, MQ) else TowerNumber(self, v)
+
+    # -- hypothetical growth (the invariants' fresh Looks, RunHome.scratch) ---------------
+    epoch = 0          # part of every decision cache key: see :meth:`RunHome.scratch`
+
+    def mark(self) -> tuple:
+        return (self.epoch, len(self.radicands), len(self._roots), len(self._balls),
+                len(self._homed))
+
+    def rollback(self, mark: tuple) -> None:
+        """Forget the levels and table entries added since ``mark`` (the tables are only
+        ever added to, so insertion order tells what is newer)."""
+        self.epoch, levels, *sizes = mark
+        del self.radicands[levels:]
+        for table, size in zip((self._roots, self._balls, self._homed), sizes):
+            while len(table) > size:
+                table.popitem()
 
 
 def sqrt_exact(x, tower: RunTower | None = None):
@@ -146,6 +165,11 @@ def towers_of(points) -> tuple:
                 and not any(c.tower is t for t in out)):
             out.append(c.tower)
     return tuple(out)
+
+
+def epochs_of(towers) -> tuple:
+    """The towers' epochs (:meth:`RunHome.scratch`): with the towers, a decision cache key."""
+    return tuple(getattr(t, "epoch", 0) for t in towers)
 
 
 def home(x, tower: RunTower):
@@ -226,12 +250,36 @@ def instant_in(f, pieces):
         raise ValueError(str(err)) from None
 
 
+_EPOCHS = itertools.count(1)
+
+
 class RunHome:
     """The tower of one run (:class:`.world.World`): None until a nested radical
     appears; every planned path is re-homed into it (:meth:`path`)."""
 
     def __init__(self):
         self.tower: RunTower | None = None
+
+    @contextlib.contextmanager
+    def scratch(self):
+        """The invariants' fresh Looks are hypothetical: the levels they add to the run's
+        tower (a target no robot moves to, an instant re-homed) are taken back when the
+        block ends normally, so the tower grows only with the run's own moves (each level
+        multiplies the cost of a square-root test by up to three).  Numbers built inside
+        are dropped with it; the decision caches (:func:`.robot.decide`,
+        :func:`.corrected.decide_corrected`) key on the tower's epoch, which is a fresh
+        one inside and the old one again after, so no cached decision outlives the levels
+        it names.  A Violation leaves the block by an exception: nothing is taken back
+        (its witness may name those numbers, and the run stops)."""
+        tower = self.tower
+        mark = None if tower is None else tower.mark()
+        if tower is not None:
+            tower.epoch = next(_EPOCHS)
+        yield
+        if tower is None:
+            self.tower = None
+        else:
+            tower.rollback(mark)
 
     def path(self, pieces) -> list:
         pieces = list(pieces)

@@ -155,12 +155,19 @@ class World:
     def positions(self) -> tuple:
         return tuple(r.pos for r in self.robots)
 
+    def fresh_decision(self, frame: Frame):
+        """The decision (in ``frame``) every robot would reach on a fresh Look now in
+        ``frame``; its paths stay in the Look's own numbers (not re-homed into the run's
+        tower, which can cost a square-root test per level: a check that reads only the
+        decision's centre or status needs none of it)."""
+        local = tuple(frame.to_local(p) for p in self.positions())
+        return self.decide(local, self.readings,
+                           fmpq(frame.unit.numerator, frame.unit.denominator))
+
     def snapshot_decision(self, frame: Frame):
         """The decision every robot would reach on a fresh Look now in ``frame``, with
         its moves mapped to the world frame: ``(decision, {robot: world path})``."""
-        local = tuple(frame.to_local(p) for p in self.positions())
-        d = self.decide(local, self.readings,
-                        fmpq(frame.unit.numerator, frame.unit.denominator))
+        d = self.fresh_decision(frame)
         try:
             paths = {m.robot: self.home.path(frame.piece_to_world(pc) for pc in m.path)
                      for m in d.moves}
@@ -190,7 +197,8 @@ class World:
         self.log.append(Step(self.events, i, "look", tuple(paths.get(i) or ()),
                              frame.to_world(d.centre)))
         if self.checker is not None:
-            self.checker.after_look(self, i, frame, d, paths)
+            with self.home.scratch():   # fresh Looks: hypothetical
+                self.checker.after_look(self, i, frame, d, paths)
         return d
 
     def advance(self, i: int, stop: Fraction | None = None, end: bool = False):
@@ -216,10 +224,12 @@ class World:
             rob.path = []
         self.log.append(Step(self.events, i, "advance", (done,)))
         if self.checker is not None:
-            self.checker.after_advance(self, i, done)
+            with self.home.scratch():   # fresh Looks: hypothetical
+                self.checker.after_advance(self, i, done)
         if not rob.path:
             if self.checker is not None:
-                self.checker.after_arrival(self, i)
+                with self.home.scratch():   # fresh Looks: hypothetical
+                    self.checker.after_arrival(self, i)
             rob.role, rob.kind, rob.look_index, rob.target = None, "", None, None
 
     def advance_together(self, moves):
@@ -257,19 +267,22 @@ class World:
             rob.pos, rob.path = piece.final, rest
             self.log.append(Step(self.events, i, "advance", (piece,)))
         if self.checker is not None:
-            self.checker.after_step(self, {i: d for i, (d, _) in done.items()})
+            with self.home.scratch():   # fresh Looks: hypothetical
+                self.checker.after_step(self, {i: d for i, (d, _) in done.items()})
         if self.checker is not None:
             # the other invariants at the interval's end, a real instant: a zero-length
             # piece there (each mover's own piece would be checked against the others'
             # end positions, a configuration that never existed)
             for i in done:
                 pos = self.robots[i].pos
-                self.checker.after_advance(self, i, g.Segment(pos, pos))
+                with self.home.scratch():   # fresh Looks: hypothetical
+                    self.checker.after_advance(self, i, g.Segment(pos, pos))
         for i in done:
             rob = self.robots[i]
             if not rob.path:
                 if self.checker is not None:
-                    self.checker.after_arrival(self, i)
+                    with self.home.scratch():   # fresh Looks: hypothetical
+                        self.checker.after_arrival(self, i)
                 rob.role, rob.kind, rob.look_index, rob.target = None, "", None, None
 
     def busy(self) -> list:
