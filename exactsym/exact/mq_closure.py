@@ -14,18 +14,25 @@ and by MakeAsym's radial move (:mod:`exactsym.paper.family.make_asym`).
 
 from __future__ import annotations
 
-from math import isqrt
+from functools import lru_cache
+from math import gcd, isqrt
 
 from flint import fmpq, fmpz
 
 from .multiquadratic import MQ, _coprime_base, sqrt_rational
 from .tower import TowerElement
 
-__all__ = ["closure_sqrt", "decided_sqrt", "RATIONAL_BITS"]
+__all__ = ["closure_sqrt", "decided_sqrt", "bounded_squarefree_split", "RATIONAL_BITS",
+           "SMOOTH_BITS"]
 
-#: A rational that is not a square and has more bits than this is a miss (its square-free
-#: part needs a factorisation that can take minutes), unless ``big_ok``.
+#: A rational that is not a square and has more bits than this is not factored in full
+#: (that can take minutes), unless ``big_ok``: its square-free part is then sought by
+#: :func:`bounded_squarefree_split`, and a miss when that cannot tell.
 RATIONAL_BITS = 160
+
+#: The size of the prime factors that :func:`bounded_squarefree_split` looks for (ECM,
+#: ``fmpz.factor_smooth``): a bounded effort, whatever the integer.
+SMOOTH_BITS = 48
 
 
 def closure_sqrt(x, _depth: int = 0, big_ok: bool = False):
@@ -65,9 +72,10 @@ def closure_sqrt(x, _depth: int = 0, big_ok: bool = False):
 
 def decided_sqrt(x):
     """``(root, decided)``: the non-negative square root of ``x >= 0`` in the
-    multiquadratic closure, or None; ``decided`` is False only when a rational of more
-    than :data:`RATIONAL_BITS` bits would have to be factored (then None proves nothing).
-    Only a None with ``decided`` may start a tower level on ``x``.
+    multiquadratic closure, or None; ``decided`` is False only when ``x`` has a root,
+    ``sqrt(m) w``, and the integer m (more than :data:`RATIONAL_BITS` bits) has a
+    square-free part that :func:`bounded_squarefree_split` cannot tell (then None proves
+    nothing).  Only a None with ``decided`` may start a tower level on ``x``.
 
     Kummer theory makes the search finite: with K = Q(sqrt p : p in P), P the primes of
     ``x``'s radicands, every root of ``x`` in a larger multiquadratic field is
@@ -75,8 +83,11 @@ def decided_sqrt(x):
     K = K_(k-1)(sqrt p_k), ``x = a + b sqrt(p_k)``: for b != 0, ``a^2 - p_k b^2`` must be a
     square ``n^2`` *in* K_(k-1) (m drops out of the norm) and ``(a +- n)/2`` must be
     ``m c^2``; for b = 0, ``a`` or ``a / p_k`` must be.  At Q, ``m c^2`` is any positive
-    rational (its root is :func:`sqrt_rational`); a true square is a rational square.
-    Every answer is verified by squaring.
+    rational; a true square is a rational square.  The search carries m unfactored
+    (:func:`_kummer_root`), so deciding that ``x`` has no root factors nothing; only a
+    root found is written with m's square-free part (:func:`sqrt_rational` up to
+    :data:`RATIONAL_BITS` bits, :func:`bounded_squarefree_split` beyond).  Every answer
+    is verified by squaring.
 
     A number of a tower of nested radicals (:class:`~.tower.TowerElement`, level >= 1:
     a critical instant or a position of the gathering simulator) gets its root in its
@@ -98,29 +109,45 @@ def decided_sqrt(x):
     if x.sign() < 0:
         return None, True
     primes = sorted({int(p) for m in x.radicands() for p, _ in fmpz(m).factor()})
-    unsure: list = []
-    root = _kummer_root(x, primes, True, unsure)
-    if root is not None:
-        root = root if root.sign() >= 0 else -root
-        if root * root != x:                    # never: every step is verified
-            root = None
-    return root, root is not None or not unsure
+    found = _kummer_root(x, primes, True)
+    if found is None:
+        return None, True
+    m, w = found
+    if m == 1:
+        root = w
+    else:
+        hints = tuple(sorted({abs(int(v)) for c in x.terms.values() for v in (c.p, c.q)}
+                             - {0, 1}))
+        s = _sqrt_rational(fmpq(m), False, hints)
+        if s is None:                           # sqrt(m): m's square-free part unknown
+            return None, False
+        root = s * w
+    root = root if root.sign() >= 0 else -root
+    if root * root != x:                        # never: every step is verified
+        return None, False
+    return root, True
 
 
-def _kummer_root(y: MQ, primes, free: bool, unsure: list):
-    """A root of ``y`` in K(primes) (``free``: in K(primes)(sqrt m) for some square-free
-    m, i.e. ``sqrt(m) z``), or None."""
+def _kummer_root(y: MQ, primes, free: bool):
+    """A root of ``y`` in K(primes), or None; with ``free``, a root in K(primes)(sqrt m)
+    for some integer m, as ``(m, w)``: the root is ``sqrt(m) w`` with ``w`` in K(primes).
+    ``m`` is kept as an integer, unfactored (only its square class matters, and it is a
+    common factor of every candidate above it): the search decides whether a root exists
+    without factoring anything; :func:`decided_sqrt` needs m's square-free part only to
+    write a root it has found."""
     if y.is_zero():
-        return MQ()
+        return (1, MQ()) if free else MQ()
     if y.is_rational():
         q = y.to_fmpq()
         root = _rational_square_root(q)
-        if root is not None or q < 0 or not free:
+        if not free:
             return root
-        root = _sqrt_rational(q, False)
-        if root is None:
-            unsure.append(y)                 # a large rational, left unfactored
-        return root
+        if root is not None:
+            return 1, root
+        if q < 0:
+            return None
+        num, den = int(q.p), int(q.q)
+        return num * den, MQ.rational(fmpq(1, den))      # sqrt(num/den) = sqrt(num den)/den
     if not primes:
         return None
     p, below = primes[-1], primes[:-1]
@@ -129,21 +156,28 @@ def _kummer_root(y: MQ, primes, free: bool, unsure: list):
     sp = MQ({p: fmpq(1)})
     if b.is_zero():
         for t, mult in ((a, None), (a / p, sp)):
-            c = _kummer_root(t, below, free, unsure)
+            c = _kummer_root(t, below, free)
             if c is not None:
-                return c if mult is None else c * mult
+                if mult is None:
+                    return c
+                return (c[0], c[1] * mult) if free else c * mult
         return None
-    n = _kummer_root(a * a - b * b * p, below, False, unsure)
+    n = _kummer_root(a * a - b * b * p, below, False)
     if n is None:
         return None
     for t in ((a + n) / 2, (a - n) / 2):
         if t.sign() <= 0:
             continue
-        c = _kummer_root(t, below, free, unsure)
-        if c is not None and not c.is_zero():
-            cand = c + (b / (c * 2)) * sp
-            if cand * cand == y:
-                return cand
+        c = _kummer_root(t, below, free)
+        if c is None:
+            continue
+        m, w = c if free else (1, c)
+        if w.is_zero():
+            continue
+        # (sqrt(m) w + b / (2 sqrt(m) w) sqrt(p)) = sqrt(m) (w + b / (2 m w) sqrt(p))
+        cand = w + (b / (w * (2 * m))) * sp
+        if cand * cand * m == y:
+            return (m, cand) if free else cand
     return None
 
 
@@ -156,7 +190,7 @@ def _rational_square_root(q: fmpq):
     return MQ.rational(fmpq(r, den)) if r * r == num * den else None
 
 
-def _sqrt_rational(q: fmpq, big_ok: bool):
+def _sqrt_rational(q: fmpq, big_ok: bool, hints: tuple = ()):
     if q < 0:
         return None
     root = _rational_square_root(q)
@@ -164,5 +198,85 @@ def _sqrt_rational(q: fmpq, big_ok: bool):
         return root
     num, den = int(q.p), int(q.q)
     if not big_ok and (num * den).bit_length() > RATIONAL_BITS:
-        return None
+        split = bounded_squarefree_split(num * den, hints)
+        if split is None:
+            return None
+        s, m = split
+        return MQ({m: fmpq(s, den)})
     return sqrt_rational(q)
+
+
+@lru_cache(maxsize=4096)
+def bounded_squarefree_split(n: int, hints: tuple = ()):
+    """``(s, m)`` with ``n == s^2 m`` and ``m`` square-free, found with a bounded effort, or
+    None (a pure function of its arguments).  ``n`` is first cut by gcds with the
+    integers ``hints`` (the numerators and denominators of the number whose root is
+    sought: the integers the search builds share their primes), then each piece is split
+    by ``fmpz.factor_smooth`` (ECM for primes of up to 24 bits, then only what is left
+    unresolved again for 32, 40 and :data:`SMOOTH_BITS` bits: the larger searches cost
+    up to a second on 900-bit integers); a part of odd exponent is resolved when it is a
+    proved prime (``fmpz.is_prime`` proves) or a perfect square.  Any part left
+    unresolved (a composite whose square-free part would need its factors) makes the
+    answer None.  The split is checked (the parts multiply back to ``n`` and are pairwise
+    coprime), so ``m`` is the product of the prime parts of odd exponent.  The gathering
+    simulator meets such integers (160 to 1,900 bits, most of them a smooth part times
+    one large prime) when it writes the root of a critical instant's discriminant."""
+    if n < 1:
+        return None
+    parts: dict = {}                      # part -> [exponent, proved prime?]
+    open_ = _cut(n, hints)
+    for bits in (24, 32, 40, SMOOTH_BITS):
+        left = []
+        for b, e in open_:
+            for f, k in fmpz(b).factor_smooth(bits):
+                f, k = int(f), int(k) * e
+                if f in parts:
+                    parts[f][0] += k
+                    continue
+                prime = bool(fmpz(f).is_prime())
+                if k % 2 == 0 or prime or isqrt(f) ** 2 == f:
+                    parts[f] = [k, prime]
+                else:
+                    left.append((f, k))
+        open_ = left
+        if not open_:
+            break
+    if open_:
+        return None
+    check = 1
+    for b, (e, _) in parts.items():
+        check *= b ** e
+    keys = list(parts)
+    if check != n or any(gcd(a, b) != 1 for k, a in enumerate(keys) for b in keys[k + 1:]):
+        return None
+    s, m = 1, 1
+    for b, (e, prime) in parts.items():
+        if e % 2 == 0:
+            s *= b ** (e // 2)
+        elif prime:
+            s, m = s * b ** (e // 2), m * b
+        elif isqrt(b) ** 2 == b:
+            s *= isqrt(b) ** e
+        else:                   # a composite whose exponent became odd by merging
+            return None
+    return s, m
+
+
+def _cut(n: int, hints) -> list:
+    """``[(piece, exponent)]`` with product ``n``: ``n`` cut by its gcds with ``hints``."""
+    pieces = [n]
+    for h in hints:
+        out = []
+        for a in pieces:
+            g = gcd(a, h)
+            while 1 < g < a:
+                out.append(g)
+                a //= g
+                g = gcd(a, g)
+            out.append(a)
+        pieces = out
+    counts: dict = {}
+    for a in pieces:
+        if a > 1:
+            counts[a] = counts.get(a, 0) + 1
+    return list(counts.items())

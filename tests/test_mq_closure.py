@@ -1,0 +1,86 @@
+"""Square roots in the multiquadratic closure beyond RATIONAL_BITS
+(exactsym.exact.mq_closure): the Kummer search carries its free rational m unfactored,
+and a root is written with m's square-free part found by a bounded split."""
+
+from flint import fmpz
+from hypothesis import given, settings, strategies as st
+
+from exactsym.exact.mq_closure import RATIONAL_BITS, bounded_squarefree_split, decided_sqrt
+from exactsym.exact.multiquadratic import sqrt_rational
+
+S2 = sqrt_rational(2)
+def _prime_above(k: int) -> int:
+    n = fmpz(k) | 1
+    while not n.is_prime():
+        n += 2
+    return int(n)
+
+
+BIG1 = _prime_above(2 ** 200 + 12345)
+BIG2 = _prime_above(3 ** 130 + 777)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from([2, 3, 5, 7, 13, 65537, 2 ** 31 - 1, 1000003,
+                                           2 ** 61 - 1]), st.integers(1, 5)),
+                min_size=1, max_size=5),
+       st.sampled_from([1, BIG1, BIG1 ** 2, BIG1 ** 3]))
+def test_bounded_split_is_exact(parts, big):
+    """Never a wrong split; and always one when every other prime is below 2^17 (what
+    ECM may miss is a prime of more bits, then the answer is None)."""
+    n, odd = big, {}
+    for p, e in parts:
+        n *= p ** e
+        odd[p] = odd.get(p, 0) + e
+    expect_m = 1
+    for p, e in odd.items():
+        if e % 2:
+            expect_m *= p
+    if big in (BIG1, BIG1 ** 3):
+        expect_m *= BIG1
+    split = bounded_squarefree_split(n)
+    if split is None:
+        assert any(p > 2 ** 17 for p in odd)
+        return
+    s, m = split
+    assert s * s * m == n and m == expect_m
+
+
+def test_a_product_of_two_large_primes_is_left_undecided():
+    assert bounded_squarefree_split(BIG1 * BIG2 * 12) is None
+
+
+def test_a_root_with_a_large_prime_radicand_is_found():
+    # x = m w^2, m = 6 BIG1 (more than RATIONAL_BITS bits), w = 3 + sqrt 2: its root
+    # sqrt(6 BIG1) (3 + sqrt 2) lies in Q(sqrt 2, sqrt(3 BIG1)); before, "undecided"
+    m = 6 * BIG1
+    assert m.bit_length() > RATIONAL_BITS
+    w = 3 + S2
+    x = w * w * m
+    root, decided = decided_sqrt(x)
+    assert decided and root is not None and root * root == x and root.sign() > 0
+    assert (3 * BIG1) in root.radicands() or (6 * BIG1) in root.radicands()
+
+
+def test_a_root_whose_radicand_cannot_be_split_is_undecided():
+    x = (1 + S2) ** 2 * (BIG1 * BIG2)
+    root, decided = decided_sqrt(x)
+    assert root is None and not decided
+
+
+def test_no_root_is_decided_without_factoring():
+    # the norm of 1 + BIG1 sqrt 2 is 1 - 2 BIG1^2 < 0: no root anywhere, decided
+    x = 1 + S2 * BIG1
+    x = x * x + S2                     # positive; its norm is not a square
+    root, decided = decided_sqrt(x)
+    assert root is None and decided
+
+
+def test_hints_cut_what_ecm_would_not_find():
+    # two large primes: no bounded ECM splits their product, a hint that holds one does
+    n = BIG1 * BIG2 * BIG2 * 10
+    assert bounded_squarefree_split(n) is None
+    s, m = bounded_squarefree_split(n, (BIG2 * 7,))
+    assert (s, m) == (BIG2, 10 * BIG1)
+    # a wrong hint (not a divisor) changes nothing
+    assert bounded_squarefree_split(n, (BIG1 + 2,)) is None
