@@ -490,3 +490,19 @@ def test_the_new_instants_survive_an_exact_congruence(scene, frame):
                 frame.to_world(centre))
     assert moved == key(pts, pieces, centre)
     assert moved                                      # the scene has exact instants
+
+
+def test_image_polys_go_on_past_three_assumed_pairs():
+    """One robot standing still (0, 0) and six moving: (1, 1) and (1, -1), (-2, 2) and
+    (-2, -2) mirror images in the x axis all along, the centroid on it all along, and
+    (0, 3) -> (1, 3) with (1, -3) -> (0, -3) mirror images only at tau = 1/2: the
+    reflection appears there.  Its branch assumes (0, 0), (1, 2), (2, 1), (3, 4), (4, 3)
+    before robot 5's relations name the instant (three pairs were the old bound)."""
+    pts = [((0, 0), (0, 0)), ((1, 1), (2, 1)), ((1, -1), (2, -1)), ((-2, 2), (-2, 3)),
+           ((-2, -2), (-2, -3)), ((0, 3), (1, 3)), ((1, -3), (0, -3))]
+    ms = {k: motion_of(seg(a, b)) for k, (a, b) in enumerate(pts) if k}
+    ms[0] = motion_of(seg((0, 0), (0, 0)))
+    half = Q(F(1, 2))
+    found = [w_ for p, w_ in image_polys(ms, list(range(7)), set(range(1, 7)), [])
+             if peval(p, half).is_zero()]
+    assert "robots 5 and 6 as far from the centroid" in found

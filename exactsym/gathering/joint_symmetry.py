@@ -46,10 +46,8 @@ the **hypotheses on images** instead (:func:`image_polys`): a symmetry permutes 
 preserves distances, so with ``s(i) = q`` assumed (or, with no hypothesis, for X's first
 robot and each possible image), each other robot ``c`` goes to some ``d`` with
 ``|c - z| = |d - z|`` and ``|c - i| = |d - q|``: polynomials in tau; where all of them
-vanish for some ``d`` that pair is assumed too (up to :data:`DEPTH` pairs).  Not
-enumerated: a hypothesis still open after :data:`DEPTH` pairs, each relation of its next
-robot vanishing identically for some image (a step that keeps that many distance
-relations all along).
+vanish for some ``d`` that pair is assumed too, until every robot is mapped (then the
+map preserves every distance all along: a symmetry all along, appearing at no instant).
 """
 
 from __future__ import annotations
@@ -234,13 +232,7 @@ def _distinct(polys: list) -> list:
     return out
 
 
-#: how many pairs ``x -> s(x)`` :func:`image_polys` may assume before it gives up (a
-#: hypothesis whose every consequence holds all along: see its docstring)
-DEPTH = 3
-
-
-def image_polys(motions: dict, members, movers: set, hyp: list, depth: int = DEPTH,
-                _z=None) -> list:
+def image_polys(motions: dict, members, movers: set, hyp: list, _z=None) -> list:
     """``[(poly, description)]``: necessary conditions for a symmetry ``s`` (not the
     identity) of the robots ``members`` at time tau with ``s(x) = y`` for every pair of
     ``hyp``; needs no robot standing still.
@@ -252,13 +244,16 @@ def image_polys(motions: dict, members, movers: set, hyp: list, depth: int = DEP
     (not already an image) the first of these relations that does not vanish
     identically is listed (a nonzero constant: ``d`` is impossible); when all of them
     vanish for some ``d`` (``c -> d`` is consistent all along: ``d = c`` under the empty
-    hypothesis, a swap whose ties vanish) that ``d`` is assumed in turn, up to ``depth``
-    pairs.  Two fixed robots ``x, y`` make ``s`` the reflection in the line ``xy`` (not
-    the identity): then ``z`` is on it (one polynomial), and ``c`` fixed means ``c`` on
-    it.  A hypothesis that maps every robot, each relation vanishing identically, is a
-    symmetry all along, or no isometry: it appears at no instant.  Left out (a gap,
-    not a superset there): a branch still open after ``depth`` assumptions, each
-    relation of its next robot vanishing identically for some image."""
+    hypothesis, a swap whose ties vanish) that ``d`` is assumed in turn.  Two fixed
+    robots ``x, y`` make ``s`` the reflection in the line ``xy`` (not the identity): then
+    ``z`` is on it (one polynomial), and ``c`` fixed means ``c`` on it.  A hypothesis
+    that maps every robot, each relation vanishing identically, preserves every
+    distance all along (each robot's relations include its distance to every robot
+    mapped before it): a symmetry all along, or the identity; it appears at no instant.
+    So the list is a superset, with no depth bound, and the search stays small: once
+    three assumed robots are not collinear, a robot's distances to them fix its image
+    as a point, so a branch goes on with one image at most (two while they are
+    collinear)."""
     members = sorted(members, key=lambda k: (k in movers, k))
     if len(members) < 3:
         return []              # two points are always symmetric (a half turn swaps them)
@@ -297,8 +292,7 @@ def image_polys(motions: dict, members, movers: set, hyp: list, depth: int = DEP
         else:
             consistent.append(d)
     for d in consistent:
-        if depth > 0:
-            out += image_polys(motions, members, movers, hyp + [(c, d)], depth - 1, z)
+        out += image_polys(motions, members, movers, hyp + [(c, d)], z)
     return out
 
 
