@@ -21,6 +21,7 @@ from typing import Callable, Union
 
 from flint import acb_poly, arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz, fmpz_poly
 
+from .cyclotomic_reduce import cyclotomic_arithmetic
 from .inverse import inverse_mod, remainder_function
 
 Rational = fmpq
@@ -73,17 +74,52 @@ class NumberField:
         self.theta_text = theta_text
         self.conductor = conductor
         self._remainder = None       # x -> x mod minpoly over Z (Barrett), built when needed
+        self._cyclotomic = False     # Phi_M arithmetic (.cyclotomic_reduce), None if not
+
+    def arithmetic(self):
+        """The :class:`CyclotomicArithmetic` of a large cyclotomic field, else None."""
+        found = self._cyclotomic
+        if found is False:
+            found = None
+            if self.conductor is not None and self.degree >= _BARRETT_DEGREE and \
+                    self.minpoly.denom() == 1 and \
+                    fmpz_poly(self.minpoly.numer()) == fmpz_poly.cyclotomic(self.conductor):
+                found = cyclotomic_arithmetic(self.conductor)
+            self._cyclotomic = found
+        return found
 
     def reduce(self, poly: fmpq_poly) -> fmpq_poly:
         """``poly`` modulo the minimal polynomial (deg poly <= 2 degree - 2).  For a large
-        monic integer minimal polynomial (cyclotomic fields) the numerator is reduced over Z
-        by Barrett's method (two fast products; FLINT's division is quadratic), then
-        divided by the denominator: the same canonical polynomial."""
+        monic integer minimal polynomial the numerator is reduced over Z (through
+        Phi_r(x^s) for a cyclotomic field, see .cyclotomic_reduce; else by Barrett's
+        method: two fast products, where FLINT's division is quadratic), then divided by
+        the denominator: the same canonical polynomial."""
         if self.degree < _BARRETT_DEGREE or self.minpoly.denom() != 1:
             return poly % self.minpoly
+        arithmetic = self.arithmetic()
+        if arithmetic is not None:
+            return fmpq_poly(arithmetic.remainder(poly.numer())) / poly.denom()
         if self._remainder is None:
             self._remainder = remainder_function(fmpz_poly(self.minpoly.numer()))
         return fmpq_poly(self._remainder(fmpz_poly(poly.numer()))) / poly.denom()
+
+    def product_sum(self, terms) -> fmpq_poly:
+        """``sum(sign * a.poly * b.poly)`` reduced, for ``terms`` ``(a, b)`` or
+        ``(a, b, sign)`` of elements of this field (sign +-1): in a large cyclotomic field
+        the products of subfield elements are made on deflated polynomials, and all are
+        reduced once (.cyclotomic_reduce)."""
+        arithmetic = self.arithmetic()
+        if arithmetic is not None:
+            return arithmetic.product_sum([
+                (t[0]._prepared(arithmetic), t[1]._prepared(arithmetic)) + tuple(t[2:])
+                for t in terms])
+        total = None
+        for t in terms:
+            p = t[0].poly * t[1].poly
+            if len(t) > 2 and t[2] < 0:
+                p = -p
+            total = p if total is None else total + p
+        return self.reduce(total)
 
     def enclosure(self, prec: int):
         ball = self._enclosures.get(prec)
@@ -241,12 +277,20 @@ class PolyElement(FieldElement):
     Mixes with ``int`` and ``fmpq`` operands; two elements must share one field.
     """
 
-    __slots__ = ("field", "poly", "_hash", "_sign")
+    __slots__ = ("field", "poly", "_hash", "_sign", "_prep")
 
     def __init__(self, field: NumberField, poly: fmpq_poly):
         self.field = field
         self.poly = poly
-        self._hash = self._sign = None
+        self._hash = self._sign = self._prep = None
+
+    def _prepared(self, arithmetic):
+        """The operand form of .cyclotomic_reduce (numerator, denominator, deflation),
+        remembered: coordinates enter many products."""
+        prep = self._prep
+        if prep is None:
+            prep = self._prep = arithmetic.prepared(self.poly)
+        return prep
 
     # -- coercion -----------------------------------------------------------
     def _other(self, other):
@@ -291,6 +335,8 @@ class PolyElement(FieldElement):
             return NotImplemented
         if o.degree() <= 0 or self.poly.degree() <= 0:
             return PolyElement(self.field, self.poly * o)
+        if self.field.degree >= _BARRETT_DEGREE and isinstance(other, PolyElement):
+            return PolyElement(self.field, self.field.product_sum([(self, other)]))
         return PolyElement(self.field, self.field.reduce(self.poly * o))
 
     __rmul__ = __mul__
