@@ -149,16 +149,30 @@ class NumberField:
     def gen(self) -> "FieldElement":
         return self.element(fmpq_poly([0, 1]))
 
-    def sign_of(self, poly: fmpq_poly) -> int:
-        """Certified sign of the real number ``poly(theta)`` (``poly`` not zero in the field)."""
+    def real_ball(self, poly: fmpq_poly, prec: int, prepared=None):
+        """A ball around the real number ``poly(theta)``, at working precision ``prec + 16``.
+        ``prepared``: the element's .cyclotomic_reduce operand form (numerator n,
+        denominator, d, n deflated by d): for d > 1 the deflation is evaluated at
+        theta^d, a polynomial of degree / d (a subfield element costs half or less)."""
+        with ctx.workprec(prec + 16):
+            theta = self.enclosure(prec)
+            if isinstance(theta, arb):
+                return arb_poly(poly)(theta)
+            if prepared is not None and prepared[2] > 1:
+                _, den, d, q = prepared
+                power = self._enclosures.get((prec, d))
+                if power is None:
+                    power = self._enclosures[(prec, d)] = theta ** d
+                return acb_poly(q)(power).real / den
+            return acb_poly(poly)(theta).real
+
+    def sign_of(self, poly: fmpq_poly, prepared=None) -> int:
+        """Certified sign of the real number ``poly(theta)`` (``poly`` not zero in the field;
+        ``prepared`` as in :meth:`real_ball`)."""
         prec = _START_PRECISION
         while prec <= _MAX_PRECISION:
             with ctx.workprec(prec + 16):
-                theta = self.enclosure(prec)
-                if isinstance(theta, arb):
-                    value = arb_poly(poly)(theta)
-                else:
-                    value = acb_poly(poly)(theta).real
+                value = self.real_ball(poly, prec, prepared)
                 if value > 0:
                     return 1
                 if value < 0:
@@ -389,7 +403,7 @@ class PolyElement(FieldElement):
             return (c > 0) - (c < 0)
         s = self._sign           # remembered: in degree thousands a sign costs milliseconds
         if s is None:
-            s = self._sign = self.field.sign_of(self.poly)
+            s = self._sign = self.field.sign_of(self.poly, self._ball_form())
         return s
 
     @_mixing
@@ -426,11 +440,14 @@ class PolyElement(FieldElement):
 
     def enclosure(self, prec: int = 53):
         """An ``arb`` ball around the value (for drawing and float filters only)."""
-        with ctx.workprec(prec + 16):
-            theta = self.field.enclosure(prec)
-            if isinstance(theta, arb):
-                return arb_poly(self.poly)(theta)
-            return acb_poly(self.poly)(theta).real
+        return self.field.real_ball(self.poly, prec, self._ball_form())
+
+    def _ball_form(self):
+        """The deflated operand form where it pays (large cyclotomic fields), else None."""
+        if self.poly.degree() < _BARRETT_DEGREE:
+            return None
+        arithmetic = self.field.arithmetic()
+        return None if arithmetic is None else self._prepared(arithmetic)
 
     def __float__(self):  # display and float filters only: never decides anything
         return float(self.enclosure(53).mid())
