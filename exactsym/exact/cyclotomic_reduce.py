@@ -96,13 +96,15 @@ class CyclotomicArithmetic:
         return fmpz_poly() if out is None else out
 
     def prepared(self, a: fmpq_poly) -> tuple:
-        """``(numerator, denominator, d, numerator deflated by d)`` with d the gcd of
-        the exponents of ``a`` (0 for a constant: a polynomial in every x^g)."""
+        """``(denominator, d, numerator deflated by d)`` with d the gcd of the
+        exponents of ``a`` (0 for a constant: a polynomial in every x^g).  The
+        numerator is not kept (elements remember this form): it is the deflation
+        inflated by d."""
         an = a.numer()
         if a.degree() <= 0:
-            return an, int(a.denom()), 0, an
+            return int(a.denom()), 0, an
         q, d = an.deflation()
-        return an, int(a.denom()), d, q
+        return int(a.denom()), d, q
 
     def product_sum(self, terms) -> fmpq_poly:
         """``sum(sign * a * b) mod Phi_M`` over ``terms``, ``(a, b)`` or ``(a, b, sign)``
@@ -113,18 +115,18 @@ class CyclotomicArithmetic:
         common = 1
         for term in terms:
             a, b = term[0], term[1]
-            g = gcd(g, a[2], b[2])
-            d = a[1] * b[1]
+            g = gcd(g, a[1], b[1])
+            d = a[0] * b[0]
             common = common // gcd(common, d) * d
         g = g or 1
         total = None
         for term in terms:
-            (an, da, dega, qa), (bn, db, degb, qb) = term[0], term[1]
-            if an.is_zero() or bn.is_zero():
+            (da, dega, qa), (db, degb, qb) = term[0], term[1]
+            if qa.is_zero() or qb.is_zero():
                 continue
-            if g > 1:
-                an = qa if dega == g else an.deflate(g)
-                bn = qb if degb == g else bn.deflate(g)
+            # g divides every nonzero d: the operands deflated by g
+            an = qa if dega in (g, 0) else qa.inflate(dega // g)
+            bn = qb if degb in (g, 0) else qb.inflate(degb // g)
             p = an * bn
             factor = common // (da * db) * (term[2] if len(term) > 2 else 1)
             if factor != 1:

@@ -151,15 +151,15 @@ class NumberField:
 
     def real_ball(self, poly: fmpq_poly, prec: int, prepared=None):
         """A ball around the real number ``poly(theta)``, at working precision ``prec + 16``.
-        ``prepared``: the element's .cyclotomic_reduce operand form (numerator n,
-        denominator, d, n deflated by d): for d > 1 the deflation is evaluated at
+        ``prepared``: the element's .cyclotomic_reduce operand form (denominator, d,
+        the numerator deflated by d): for d > 1 the deflation is evaluated at
         theta^d, a polynomial of degree / d (a subfield element costs half or less)."""
         with ctx.workprec(prec + 16):
             theta = self.enclosure(prec)
             if isinstance(theta, arb):
                 return arb_poly(poly)(theta)
-            if prepared is not None and prepared[2] > 1:
-                _, den, d, q = prepared
+            if prepared is not None and prepared[1] > 1:
+                den, d, q = prepared
                 power = self._enclosures.get((prec, d))
                 if power is None:
                     power = self._enclosures[(prec, d)] = theta ** d

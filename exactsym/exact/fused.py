@@ -50,7 +50,7 @@ def complex_product(a, b) -> tuple:
         k = bx * (ax + ay)
         return (k - ay * (bx + by), k + ax * (by - bx))
     arithmetic = field.arithmetic()
-    if arithmetic is not None and gcd(arithmetic.s, *(v._prepared(arithmetic)[2]
+    if arithmetic is not None and gcd(arithmetic.s, *(v._prepared(arithmetic)[1]
                                                       for v in (ax, ay, bx, by))) > 1:
         # subfield elements: four products of deflated polynomials cost less than
         # Gauss's three of full degree
