@@ -31,6 +31,8 @@ _START_PRECISION = 64
 _MAX_PRECISION = 1 << 22   # a sign that needs more bits than this means a bug upstream
 #: degree from which products are reduced by Barrett's method over Z
 _BARRETT_DEGREE = 512
+#: products remembered per large cyclotomic field (NumberField.product_sum)
+_PRODUCTS_LIMIT = 32
 _XGCD_BITS = 20_000        # fmpq_poly.xgcd is faster below this degree x coefficient bits,
                            # and in degree <= 32 whatever the coefficients
 
@@ -75,6 +77,7 @@ class NumberField:
         self.conductor = conductor
         self._remainder = None       # x -> x mod minpoly over Z (Barrett), built when needed
         self._cyclotomic = False     # Phi_M arithmetic (.cyclotomic_reduce), None if not
+        self._products: dict = {}    # see product_sum
 
     def arithmetic(self):
         """The :class:`CyclotomicArithmetic` of a large cyclotomic field, else None."""
@@ -110,9 +113,21 @@ class NumberField:
         reduced once (.cyclotomic_reduce)."""
         arithmetic = self.arithmetic()
         if arithmetic is not None:
-            return arithmetic.product_sum([
+            # remembered by the operands' identities (the entry keeps them alive, so no
+            # id is reused while cached): the paper layer, the audit and the truth
+            # multiply the same coordinates again (a few percent of the products)
+            key = tuple((id(t[0]), id(t[1])) + tuple(t[2:]) for t in terms)
+            found = self._products.get(key)
+            if found is not None and all(t[0] is u[0] and t[1] is u[1]
+                                         for t, u in zip(terms, found[0])):
+                return found[1]
+            out = arithmetic.product_sum([
                 (t[0]._prepared(arithmetic), t[1]._prepared(arithmetic)) + tuple(t[2:])
                 for t in terms])
+            if len(self._products) >= _PRODUCTS_LIMIT:
+                self._products.clear()
+            self._products[key] = (tuple(terms), out)
+            return out
         total = None
         for t in terms:
             p = t[0].poly * t[1].poly
