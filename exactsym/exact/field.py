@@ -306,12 +306,12 @@ class PolyElement(FieldElement):
     Mixes with ``int`` and ``fmpq`` operands; two elements must share one field.
     """
 
-    __slots__ = ("field", "poly", "_hash", "_sign", "_prep")
+    __slots__ = ("field", "poly", "_hash", "_sign", "_prep", "_ball")
 
     def __init__(self, field: NumberField, poly: fmpq_poly):
         self.field = field
         self.poly = poly
-        self._hash = self._sign = self._prep = None
+        self._hash = self._sign = self._prep = self._ball = None
 
     def _prepared(self, arithmetic):
         """The operand form of .cyclotomic_reduce (numerator, denominator, deflation),
@@ -454,8 +454,17 @@ class PolyElement(FieldElement):
         return not self.poly.is_zero()
 
     def enclosure(self, prec: int = 53):
-        """An ``arb`` ball around the value (for drawing and float filters only)."""
-        return self.field.real_ball(self.poly, prec, self._ball_form())
+        """An ``arb`` ball around the value (for drawing and float filters only); in a
+        large field the last one is remembered (filters ask for one number's ball again)."""
+        form = self._ball_form()
+        if form is None:
+            return self.field.real_ball(self.poly, prec)
+        last = self._ball
+        if last is not None and last[0] == prec:
+            return last[1]
+        ball = self.field.real_ball(self.poly, prec, form)
+        self._ball = (prec, ball)
+        return ball
 
     def _ball_form(self):
         """The deflated operand form where it pays (large cyclotomic fields), else None."""
