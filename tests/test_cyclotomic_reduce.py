@@ -107,3 +107,26 @@ def test_field_products_in_the_large_field():
             assert (a * b).poly == (a.poly * b.poly) % minpoly
     square = values[0] * values[0]
     assert square == (1 + cos_turn(field, fmpq(2, 11))) / 2
+
+
+def test_fused_complex_product_in_the_large_field():
+    """fused.complex_product takes four deflated products in Q(zeta_27720) when every
+    coordinate lies in a subfield (polynomials in x^2), Gauss's three otherwise: both
+    give the plainly reduced coordinates."""
+    from flint import fmpq
+    from exactsym.exact.cyclotomic import cos_turn, sin_turn
+    from exactsym.exact.fused import complex_product
+    field = cyclotomic_field(27720)
+    minpoly = field.minpoly
+
+    def plain(a, b):
+        (ax, ay), (bx, by) = a, b
+        return ((ax.poly * bx.poly - ay.poly * by.poly) % minpoly,
+                (ax.poly * by.poly + ay.poly * bx.poly) % minpoly)
+
+    even = (cos_turn(field, fmpq(2, 77)) * 3, sin_turn(field, fmpq(5, 84)) + fmpq(1, 2))
+    odd = (cos_turn(field, fmpq(3, 8)), sin_turn(field, fmpq(1, 9)) / 5)
+    assert field.arithmetic().prepared(even[0].poly)[1] % 2 == 0
+    for a, b in ((even, even), (even, odd), (odd, even)):
+        x, y = complex_product(a, b)
+        assert (x.poly, y.poly) == plain(a, b)
