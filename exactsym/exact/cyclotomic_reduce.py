@@ -67,13 +67,14 @@ class CyclotomicArithmetic:
             if self.s > 1 else []
 
     def remainder(self, y: fmpz_poly, g: int = 1) -> fmpz_poly:
-        """``y(x^g) mod Phi_M`` as a polynomial in x^g, for g | s and deg y <= 2 deg Phi_M / g - 1."""
+        """``y(x^g) mod Phi_M`` as a polynomial in x^g, for g | s and
+        deg y <= 2 deg Phi_M / g - 1."""
         t = self.s // g
         if y.degree() < self.degree // g:
             return y
         if 2 * self.degree // g <= y.degree():      # beyond the split's bound
             return y % self.phi_r.inflate(t)
-        steps = [p for p in self._steps]
+        steps = list(self._steps)
         for p, e in factorization(g).items() if g > 1 else ():
             for _ in range(e):
                 steps.remove(p)
