@@ -2,7 +2,7 @@
 
 Each input is written to a temporary TOML file; for each, the ground truth (load, rings,
 symmetry_group) is timed in a child process, and so is the whole ``exactsym check --json``
-(a subprocess with a timeout).  Run: ``python bench/bench_small_algebraic.py``
+(a subprocess with a timeout; wall seconds and the child's CPU seconds, user + system).  Run: ``python bench/bench_small_algebraic.py``
 (``--timeout S`` per run, default 60; ``--only NAME`` for one input).
 
 ``--in-process``: only the truth, timed inside the child after its imports (load + levels
@@ -21,6 +21,7 @@ from __future__ import annotations
 import argparse
 from fractions import Fraction as fmpq_of
 import random
+import resource
 import subprocess
 import sys
 import tempfile
@@ -144,13 +145,25 @@ def input_files(only: str | None):
             yield name, path
 
 
+def _children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+#: CPU seconds (user + system) of the last finished :func:`run` child: on a shared
+#: machine the wall clock also measures the other processes
+LAST_CPU = [0.0]
+
+
 def run(args: list[str], timeout: float) -> tuple[float, str]:
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), _children_cpu()
     try:
         done = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
+        LAST_CPU[0] = float("nan")
         return time.perf_counter() - start, f"timeout {timeout:.0f} s"
     elapsed = time.perf_counter() - start
+    LAST_CPU[0] = _children_cpu() - cpu
     if done.returncode not in (0, 1):
         last = (done.stderr.strip().splitlines() or ["?"])[-1]
         return elapsed, f"exit {done.returncode}: {last[:70]}"
@@ -197,7 +210,7 @@ def main() -> None:
         in_process(opts)
         return
     exactsym = [sys.executable, "-m", "exactsym"]
-    print(f"{'input':28} {'truth s':>8} {'group':>8} {'check s':>8}  outcome")
+    print(f"{'input':28} {'truth s':>8} {'group':>8} {'check s':>8} {'cpu s':>7}  outcome")
     for name, path in input_files(opts.only):
         t_truth, group = run([sys.executable, "-c", TRUTH, str(path)], opts.timeout)
         if group.startswith("timeout"):
@@ -205,9 +218,11 @@ def main() -> None:
         elif group.startswith("exit"):
             group = "refused"
         t_check, outcome = run(exactsym + ["check", "--json", str(path)], opts.timeout)
+        c_check = LAST_CPU[0]
         if not outcome.startswith(("timeout", "exit")):
             outcome = "answered"
-        print(f"{name:28} {t_truth:8.2f} {group:>8} {t_check:8.2f}  {outcome}", flush=True)
+        print(f"{name:28} {t_truth:8.2f} {group:>8} {t_check:8.2f} {c_check:7.2f}  {outcome}",
+              flush=True)
 
 
 if __name__ == "__main__":

@@ -81,11 +81,7 @@ def sum_of_products(pairs):
     if isinstance(a0, PolyElement) and a0.field.degree >= 64 and all(
             isinstance(a, PolyElement) and isinstance(b, PolyElement) and
             a.field is a0.field and b.field is a0.field for a, b in pairs):
-        total = None
-        for a, b in pairs:
-            p = a.poly * b.poly
-            total = p if total is None else total + p
-        return PolyElement(a0.field, a0.field.reduce(total))
+        return PolyElement(a0.field, a0.field.product_sum(pairs))
     total = pairs[0][0] * pairs[0][1]
     for a, b in pairs[1:]:
         total = total + a * b

@@ -12,16 +12,13 @@ a command, write those two functions in its module and add one row here.
 from __future__ import annotations
 
 import argparse
+import importlib
 import io
 import os
 import sys
 import textwrap
 
-from . import __version__, audit_cli, cases_cli, certify_cli
-from .gathering import cli as gather_cli
-from .ledger import cli as ledger_cli
-from .pictures import cli as plot_cli
-from .sweep import cli as sweep_cli
+from . import __version__
 from .analysis import Options, analyse
 from .configuration import load, no_cycle_collection
 from .errors import EXIT_BUG, EXIT_FALSE, EXIT_INPUT, EXIT_OK, InputError
@@ -88,31 +85,53 @@ def _check_several(args) -> int:
     return worst
 
 
+def _deferred(module: str, name: str):
+    """``module.name``, imported when first called: ``exactsym check`` need not import the
+    other commands' modules (networkx, the gathering simulator, the ledger: a third of a
+    second of CPU per run before any work)."""
+    def call(*args):
+        return getattr(importlib.import_module(module), name)(*args)
+    call.__name__ = name
+    call.__qualname__ = f"{module}.{name}"
+    return call
+
+
 #: name -> (help, add the arguments to a subparser, run: args -> exit code)
 COMMANDS = {
     "check": ("analyse configuration files ('-' for standard input): a summary of each "
               "(one line per file when several; --verbose: the detail; --json: everything)",
               _check_arguments, _check),
     "audit": ("the paper's family algorithms against the ground truth (exit 1 when some "
-              "statement fails on the configuration)", audit_cli.add_arguments, audit_cli.run),
+              "statement fails on the configuration)",
+              _deferred("exactsym.audit_cli", "add_arguments"),
+              _deferred("exactsym.audit_cli", "run")),
     "certify": ("write a certificate of the symmetry verdict",
-                certify_cli.add_certify_arguments, certify_cli.run_certify),
+                _deferred("exactsym.certify_cli", "add_certify_arguments"),
+                _deferred("exactsym.certify_cli", "run_certify")),
     "verify": ("check a certificate with the independent checker",
-               certify_cli.add_verify_arguments, certify_cli.run_verify),
+               _deferred("exactsym.certify_cli", "add_verify_arguments"),
+               _deferred("exactsym.certify_cli", "run_verify")),
     "cases": ("run the case library (every file under DIR)",
-              cases_cli.add_arguments, cases_cli.run),
+              _deferred("exactsym.cases_cli", "add_arguments"),
+              _deferred("exactsym.cases_cli", "run")),
     "gather": ("simulate the paper's gathering algorithm under an adversarial scheduler "
-               "(exit 1 when an [expect] claim is false)", gather_cli.add_arguments,
-               gather_cli.run),
+               "(exit 1 when an [expect] claim is false)",
+               _deferred("exactsym.gathering.cli", "add_arguments"),
+               _deferred("exactsym.gathering.cli", "run")),
     "replay": ("re-run a gathering trace exactly, event for event",
-               gather_cli.add_replay_arguments, gather_cli.run_replay),
+               _deferred("exactsym.gathering.cli", "add_replay_arguments"),
+               _deferred("exactsym.gathering.cli", "run_replay")),
     "ledger": ("the statement ledger (proofs/): grades, dependencies, docs/audit.md; --check "
-               "re-runs the evidence", ledger_cli.add_arguments, ledger_cli.run),
+               "re-runs the evidence",
+               _deferred("exactsym.ledger.cli", "add_arguments"),
+               _deferred("exactsym.ledger.cli", "run")),
     "sweep": ("search a whole family of configurations for counterexamples, serially or "
               "on a Dask cluster (exit 1 when some statement fails)",
-              sweep_cli.add_arguments, sweep_cli.run),
+              _deferred("exactsym.sweep.cli", "add_arguments"),
+              _deferred("exactsym.sweep.cli", "run")),
     "plot": ("draw a configuration (needs the 'plot' extra: matplotlib)",
-             plot_cli.add_arguments, plot_cli.run),
+             _deferred("exactsym.pictures.cli", "add_arguments"),
+             _deferred("exactsym.pictures.cli", "run")),
 }
 
 
@@ -161,7 +180,9 @@ def _reject_options_that_do_not_apply(args) -> None:
         raise InputError("command line: --json takes one FILE (run once per file)")
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(only: str | None = None) -> argparse.ArgumentParser:
+    """The parser of every command; with ``only``, the other commands' subparsers get no
+    arguments (their modules are not imported: they will not run)."""
     parser = _Parser(prog="exactsym", description="Exact checker for the leader election and "
                      "gathering algorithms\nof Gan Chaudhuri and Mukhopadhyaya.",
                      epilog="example: exactsym check cases/examples/chiral-nine-gon.toml\n"
@@ -174,8 +195,10 @@ def build_parser() -> argparse.ArgumentParser:
         epilog = ("example" + ("s" if len(examples) > 1 else "") + ":\n" +
                   "\n".join("  " + e for e in examples)) if examples else None
         description = textwrap.fill(text[:1].upper() + text[1:] + ".", 88)
-        add_arguments(sub.add_parser(name, help=text, description=description, epilog=epilog,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter))
+        command = sub.add_parser(name, help=text, description=description, epilog=epilog,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+        if only is None or name == only:
+            add_arguments(command)
     return parser
 
 
@@ -238,7 +261,9 @@ def main(argv: list[str] | None = None) -> int:
 def _main(argv: list[str] | None) -> int:
     try:
         try:
-            args = build_parser().parse_args(argv)
+            words = sys.argv[1:] if argv is None else argv
+            only = words[0] if words and words[0] in COMMANDS else None
+            args = build_parser(only).parse_args(argv)
         except SystemExit as done:          # --help, --version
             return done.code if isinstance(done.code, int) else EXIT_OK
         _reject_options_that_do_not_apply(args)

@@ -81,14 +81,11 @@ def images(numbers) -> tuple | None:
     out = ([], [])
     for x in numbers:
         if isinstance(x, PolyElement):
-            den = int(x.poly.denom())
-            if den % p == 0:
+            pair = _element_images(x, m, p, roots)
+            if pair is None:
                 return None
-            inv = pow(den, -1, p)
-            poly = nmod_poly(x.poly.numer(), p)
-            step = m // x.field.conductor        # zeta_c = zeta_M^(M/c)
-            for side, w in zip(out, roots):
-                side.append(int(poly(pow(w, step, p))) * inv % p)
+            out[0].append(pair[0])
+            out[1].append(pair[1])
         else:
             q = fmpq(x) if not isinstance(x, fmpq) else x
             if int(q.q) % p == 0:
@@ -97,6 +94,32 @@ def images(numbers) -> tuple | None:
             out[0].append(value)
             out[1].append(value)
     return p, out
+
+
+_IMAGES: dict = {}         # (id(x), M) -> (x, images): a coordinate enters many tests
+_IMAGES_LIMIT = 256
+
+
+def _element_images(x: PolyElement, m: int, p: int, roots) -> tuple | None:
+    """The two images of the cyclotomic element ``x`` (embedded in Q(zeta_m)), or None
+    when p divides its denominator; remembered by identity (the entry keeps ``x``
+    alive, so its id is not reused while cached)."""
+    key = (id(x), m)
+    found = _IMAGES.get(key)
+    if found is not None and found[0] is x:
+        return found[1]
+    den = int(x.poly.denom())
+    if den % p == 0:
+        pair = None
+    else:
+        inv = pow(den, -1, p)
+        poly = nmod_poly(x.poly.numer(), p)
+        step = m // x.field.conductor        # zeta_c = zeta_M^(M/c)
+        pair = tuple(int(poly(pow(w, step, p))) * inv % p for w in roots)
+    if len(_IMAGES) >= _IMAGES_LIMIT:
+        _IMAGES.clear()
+    _IMAGES[key] = (x, pair)
+    return pair
 
 
 def ratio_irrational(x, y) -> bool:

@@ -46,18 +46,6 @@ def _terms(m: int, degree: int) -> list:
     return out
 
 
-def _body(p: int, q: int, term: str) -> str:
-    """``|p/q| * term`` as text.py's ``_sum_text`` writes it (p != 0, q > 0, coprime)."""
-    p = abs(p)
-    if p == 1 and q == 1:
-        return term
-    if q == 1:
-        return f"{p}*{term}"
-    if p == 1:
-        return f"{term}/{q}"
-    return f"{p}*{term}/{q}"
-
-
 def cyclotomic_text(x: PolyElement) -> str:
     """``number_text(x)`` for an irrational element of a cyclotomic field (conductor set)."""
     field = x.field
@@ -67,7 +55,7 @@ def cyclotomic_text(x: PolyElement) -> str:
     terms = _terms(m, field.degree)
     # the constant: c_0 plus the rational cosines' contributions, over den * 2
     const2 = 2 * coeffs[0]
-    out = []                    # (negative, |term| text) in the order of the powers
+    out = []                    # " + |term|" or " - |term|" in the order of the powers
     append = out.append
     if den == 1:                # integer coefficients: no gcd (the common case of slopes)
         for k in range(1, len(coeffs)):
@@ -78,11 +66,11 @@ def cyclotomic_text(x: PolyElement) -> str:
             if type(term) is tuple:
                 const2 += 2 * c * term[0] // term[1]
             elif c > 0:
-                append((False, term if c == 1 else f"{c}*{term}"))
+                append(f" + {term}" if c == 1 else f" + {c}*{term}")
             else:
-                append((True, term if c == -1 else f"{-c}*{term}"))
-    else:
-        for k in range(1, len(coeffs)):
+                append(f" - {term}" if c == -1 else f" - {-c}*{term}")
+    else:                       # |c/den| reduced, as text.py's _sum_text writes it (inline:
+        for k in range(1, len(coeffs)):     # the loop runs once per coefficient)
             c = coeffs[k]
             if not c:
                 continue
@@ -91,20 +79,28 @@ def cyclotomic_text(x: PolyElement) -> str:
                 const2 += 2 * c * term[0] // term[1]
                 continue
             g = gcd(c, den)
-            append((c < 0, _body(c // g, den // g, term)))
-    pieces = []
+            if c < 0:
+                p, sep = -c // g, " - "
+            else:
+                p, sep = c // g, " + "
+            q = den // g
+            if q == 1:
+                append(f"{sep}{term}" if p == 1 else f"{sep}{p}*{term}")
+            elif p == 1:
+                append(f"{sep}{term}/{q}")
+            else:
+                append(f"{sep}{p}*{term}/{q}")
+    head = ""
     if const2:
         g = gcd(const2, 2 * den)
         p, q = const2 // g, 2 * den // g
-        pieces.append(("-" if p < 0 else "") + (str(abs(p)) if q == 1 else f"{abs(p)}/{q}"))
-    if out:
-        neg, body = out[0]
-        if pieces:
-            pieces.append((" - " if neg else " + ") + body)
-        else:
-            pieces.append(("-" if neg else "") + body)
-        pieces.extend([(" - " if neg else " + ") + body for neg, body in out[1:]])
-    return "".join(pieces) if pieces else "0"
+        head = ("-" if p < 0 else "") + (str(abs(p)) if q == 1 else f"{abs(p)}/{q}")
+    elif out:                   # the first term carries its sign alone: "-t", "t"
+        first = out[0]
+        out[0] = ("-" if first[1] == "-" else "") + first[3:]
+    else:
+        return "0"
+    return head + "".join(out)
 
 
 #: cyclotomic_text writes Python ints, whose decimal conversion stops at 4,300 digits

@@ -21,6 +21,7 @@ from typing import Callable, Union
 
 from flint import acb_poly, arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz, fmpz_poly
 
+from .cyclotomic_reduce import cyclotomic_arithmetic
 from .inverse import inverse_mod, remainder_function
 
 Rational = fmpq
@@ -30,6 +31,8 @@ _START_PRECISION = 64
 _MAX_PRECISION = 1 << 22   # a sign that needs more bits than this means a bug upstream
 #: degree from which products are reduced by Barrett's method over Z
 _BARRETT_DEGREE = 512
+#: products remembered per large cyclotomic field (NumberField.product_sum)
+_PRODUCTS_LIMIT = 32
 _XGCD_BITS = 20_000        # fmpq_poly.xgcd is faster below this degree x coefficient bits,
                            # and in degree <= 32 whatever the coefficients
 
@@ -73,17 +76,65 @@ class NumberField:
         self.theta_text = theta_text
         self.conductor = conductor
         self._remainder = None       # x -> x mod minpoly over Z (Barrett), built when needed
+        self._cyclotomic = False     # Phi_M arithmetic (.cyclotomic_reduce), None if not
+        self._products: dict = {}    # see product_sum
+
+    def arithmetic(self):
+        """The :class:`CyclotomicArithmetic` of a large cyclotomic field, else None."""
+        found = self._cyclotomic
+        if found is False:
+            found = None
+            if self.conductor is not None and self.degree >= _BARRETT_DEGREE and \
+                    self.minpoly.denom() == 1 and \
+                    fmpz_poly(self.minpoly.numer()) == fmpz_poly.cyclotomic(self.conductor):
+                found = cyclotomic_arithmetic(self.conductor)
+            self._cyclotomic = found
+        return found
 
     def reduce(self, poly: fmpq_poly) -> fmpq_poly:
         """``poly`` modulo the minimal polynomial (deg poly <= 2 degree - 2).  For a large
-        monic integer minimal polynomial (cyclotomic fields) the numerator is reduced over Z
-        by Barrett's method (two fast products; FLINT's division is quadratic), then
-        divided by the denominator: the same canonical polynomial."""
+        monic integer minimal polynomial the numerator is reduced over Z (through
+        Phi_r(x^s) for a cyclotomic field, see .cyclotomic_reduce; else by Barrett's
+        method: two fast products, where FLINT's division is quadratic), then divided by
+        the denominator: the same canonical polynomial."""
         if self.degree < _BARRETT_DEGREE or self.minpoly.denom() != 1:
             return poly % self.minpoly
+        arithmetic = self.arithmetic()
+        if arithmetic is not None:
+            return fmpq_poly(arithmetic.remainder(poly.numer())) / poly.denom()
         if self._remainder is None:
             self._remainder = remainder_function(fmpz_poly(self.minpoly.numer()))
         return fmpq_poly(self._remainder(fmpz_poly(poly.numer()))) / poly.denom()
+
+    def product_sum(self, terms) -> fmpq_poly:
+        """``sum(sign * a.poly * b.poly)`` reduced, for ``terms`` ``(a, b)`` or
+        ``(a, b, sign)`` of elements of this field (sign +-1): in a large cyclotomic field
+        the products of subfield elements are made on deflated polynomials, and all are
+        reduced once (.cyclotomic_reduce)."""
+        arithmetic = self.arithmetic()
+        if arithmetic is not None:
+            # remembered by the operands' identities (the entry keeps them alive, so no
+            # id is reused while cached): the paper layer, the audit and the truth
+            # multiply the same coordinates again (a few percent of the products)
+            key = tuple((id(t[0]), id(t[1])) + tuple(t[2:]) for t in terms)
+            found = self._products.get(key)
+            if found is not None and all(t[0] is u[0] and t[1] is u[1]
+                                         for t, u in zip(terms, found[0])):
+                return found[1]
+            out = arithmetic.product_sum([
+                (t[0]._prepared(arithmetic), t[1]._prepared(arithmetic)) + tuple(t[2:])
+                for t in terms])
+            if len(self._products) >= _PRODUCTS_LIMIT:
+                self._products.clear()
+            self._products[key] = (tuple(terms), out)
+            return out
+        total = None
+        for t in terms:
+            p = t[0].poly * t[1].poly
+            if len(t) > 2 and t[2] < 0:
+                p = -p
+            total = p if total is None else total + p
+        return self.reduce(total)
 
     def enclosure(self, prec: int):
         ball = self._enclosures.get(prec)
@@ -113,16 +164,30 @@ class NumberField:
     def gen(self) -> "FieldElement":
         return self.element(fmpq_poly([0, 1]))
 
-    def sign_of(self, poly: fmpq_poly) -> int:
-        """Certified sign of the real number ``poly(theta)`` (``poly`` not zero in the field)."""
+    def real_ball(self, poly: fmpq_poly, prec: int, prepared=None):
+        """A ball around the real number ``poly(theta)``, at working precision ``prec + 16``.
+        ``prepared``: the element's .cyclotomic_reduce operand form (denominator, d,
+        the numerator deflated by d): for d > 1 the deflation is evaluated at
+        theta^d, a polynomial of degree / d (a subfield element costs half or less)."""
+        with ctx.workprec(prec + 16):
+            theta = self.enclosure(prec)
+            if isinstance(theta, arb):
+                return arb_poly(poly)(theta)
+            if prepared is not None and prepared[1] > 1:
+                den, d, q = prepared
+                power = self._enclosures.get((prec, d))
+                if power is None:
+                    power = self._enclosures[(prec, d)] = theta ** d
+                return acb_poly(q)(power).real / den
+            return acb_poly(poly)(theta).real
+
+    def sign_of(self, poly: fmpq_poly, prepared=None) -> int:
+        """Certified sign of the real number ``poly(theta)`` (``poly`` not zero in the field;
+        ``prepared`` as in :meth:`real_ball`)."""
         prec = _START_PRECISION
         while prec <= _MAX_PRECISION:
             with ctx.workprec(prec + 16):
-                theta = self.enclosure(prec)
-                if isinstance(theta, arb):
-                    value = arb_poly(poly)(theta)
-                else:
-                    value = acb_poly(poly)(theta).real
+                value = self.real_ball(poly, prec, prepared)
                 if value > 0:
                     return 1
                 if value < 0:
@@ -241,12 +306,20 @@ class PolyElement(FieldElement):
     Mixes with ``int`` and ``fmpq`` operands; two elements must share one field.
     """
 
-    __slots__ = ("field", "poly", "_hash", "_sign")
+    __slots__ = ("field", "poly", "_hash", "_sign", "_prep", "_ball")
 
     def __init__(self, field: NumberField, poly: fmpq_poly):
         self.field = field
         self.poly = poly
-        self._hash = self._sign = None
+        self._hash = self._sign = self._prep = self._ball = None
+
+    def _prepared(self, arithmetic):
+        """The operand form of .cyclotomic_reduce (numerator, denominator, deflation),
+        remembered: coordinates enter many products."""
+        prep = self._prep
+        if prep is None:
+            prep = self._prep = arithmetic.prepared(self.poly)
+        return prep
 
     # -- coercion -----------------------------------------------------------
     def _other(self, other):
@@ -291,6 +364,8 @@ class PolyElement(FieldElement):
             return NotImplemented
         if o.degree() <= 0 or self.poly.degree() <= 0:
             return PolyElement(self.field, self.poly * o)
+        if self.field.degree >= _BARRETT_DEGREE and isinstance(other, PolyElement):
+            return PolyElement(self.field, self.field.product_sum([(self, other)]))
         return PolyElement(self.field, self.field.reduce(self.poly * o))
 
     __rmul__ = __mul__
@@ -343,7 +418,7 @@ class PolyElement(FieldElement):
             return (c > 0) - (c < 0)
         s = self._sign           # remembered: in degree thousands a sign costs milliseconds
         if s is None:
-            s = self._sign = self.field.sign_of(self.poly)
+            s = self._sign = self.field.sign_of(self.poly, self._ball_form())
         return s
 
     @_mixing
@@ -379,12 +454,24 @@ class PolyElement(FieldElement):
         return not self.poly.is_zero()
 
     def enclosure(self, prec: int = 53):
-        """An ``arb`` ball around the value (for drawing and float filters only)."""
-        with ctx.workprec(prec + 16):
-            theta = self.field.enclosure(prec)
-            if isinstance(theta, arb):
-                return arb_poly(self.poly)(theta)
-            return acb_poly(self.poly)(theta).real
+        """An ``arb`` ball around the value (for drawing and float filters only); in a
+        large field the last one is remembered (filters ask for one number's ball again)."""
+        form = self._ball_form()
+        if form is None:
+            return self.field.real_ball(self.poly, prec)
+        last = self._ball
+        if last is not None and last[0] == prec:
+            return last[1]
+        ball = self.field.real_ball(self.poly, prec, form)
+        self._ball = (prec, ball)
+        return ball
+
+    def _ball_form(self):
+        """The deflated operand form where it pays (large cyclotomic fields), else None."""
+        if self.poly.degree() < _BARRETT_DEGREE:
+            return None
+        arithmetic = self.field.arithmetic()
+        return None if arithmetic is None else self._prepared(arithmetic)
 
     def __float__(self):  # display and float filters only: never decides anything
         return float(self.enclosure(53).mid())

@@ -6,6 +6,8 @@ fields, rationals, multiquadratic numbers) the plain operators are used."""
 
 from __future__ import annotations
 
+from math import gcd
+
 from .field import PolyElement
 
 #: from this degree the products are added before one reduction
@@ -36,11 +38,7 @@ def product_sum(pairs):
         for a, b in pairs[1:]:
             total = total + a * b
         return total
-    total = None
-    for a, b in pairs:
-        p = a.poly * b.poly
-        total = p if total is None else total + p
-    return PolyElement(field, field.reduce(total))
+    return PolyElement(field, field.product_sum(pairs))
 
 
 def complex_product(a, b) -> tuple:
@@ -51,6 +49,13 @@ def complex_product(a, b) -> tuple:
     if field is None:
         k = bx * (ax + ay)
         return (k - ay * (bx + by), k + ax * (by - bx))
+    arithmetic = field.arithmetic()
+    if arithmetic is not None and gcd(arithmetic.s, *(v._prepared(arithmetic)[1]
+                                                      for v in (ax, ay, bx, by))) > 1:
+        # subfield elements: four products of deflated polynomials cost less than
+        # Gauss's three of full degree
+        return (PolyElement(field, field.product_sum([(ax, bx), (ay, by, -1)])),
+                PolyElement(field, field.product_sum([(ax, by), (ay, bx)])))
     k = bx.poly * (ax.poly + ay.poly)
     x = k - ay.poly * (bx.poly + by.poly)
     y = k + ax.poly * (by.poly - bx.poly)

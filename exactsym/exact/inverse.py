@@ -121,11 +121,11 @@ _REMAINDERS: dict = {}
 
 
 def remainder_function(m: fmpz_poly):
-    """``x -> x mod m`` for a monic integer ``m`` of degree n and deg x <= 2n - 2, by
-    Barrett's method: with mu = floor(X^(2n-2) / m) (an integer polynomial, m being monic;
+    """``x -> x mod m`` for a monic integer ``m`` of degree n and deg x <= 2n - 1, by
+    Barrett's method: with mu = floor(X^(2n-1) / m) (an integer polynomial, m being monic;
     computed once per m from the power series 1 / rev(m) by Newton's iteration), the
-    quotient is floor(x / m) = ((x >> (n-1)) * mu) >> (n-1) (polynomial floor is linear,
-    and x mu / X^(2n-2) differs from x / m by a term of negative degree), and the
+    quotient is floor(x / m) = ((x >> (n-1)) * mu) >> n (polynomial floor is linear,
+    and x mu / X^(2n-1) differs from x / m by a term of negative degree), and the
     remainder x - q m needs only the low n coefficients of q m: two fast products in C
     instead of a schoolbook division, and no coefficient list in Python."""
     key = tuple(int(c) for c in m.coeffs())
@@ -140,19 +140,19 @@ def remainder_function(m: fmpz_poly):
     else:
         rev_m = fmpz_poly(list(reversed(m.coeffs())))
         inv, k = fmpz_poly([1]), 1               # 1 / rev(m) mod X^k
-        while k < shift:
-            k = min(2 * k, shift)
+        while k < n:
+            k = min(2 * k, n)
             inv = inv.mul_low(2 - rev_m.mul_low(inv, k), k)
         low = inv.coeffs()
-        mu = fmpz_poly(list(reversed(low + [0] * (shift - len(low)))))   # degree n - 2
+        mu = fmpz_poly(list(reversed(low + [0] * (n - len(low)))))   # degree n - 1
 
         def remainder(x: fmpz_poly) -> fmpz_poly:
             big = x.degree()
             if big < n:
                 return x
-            if big > 2 * n - 2:
+            if big > 2 * n - 1:
                 return x % m
-            q = (x.right_shift(shift) * mu).right_shift(shift)
+            q = (x.right_shift(shift) * mu).right_shift(n)
             return x.truncate(n) - q.mul_low(m, n)
 
     if len(_REMAINDERS) > 8:

@@ -1,0 +1,156 @@
+"""Products and remainders modulo Phi_M through Phi_r(x^s): the arithmetic of Q(zeta_M) at
+degree thousands (issue 9: Q(zeta_27720), degree 5,760, spent most of a full check reducing
+products modulo Phi_M by Barrett's method, two dense products of degree 5,760 each).
+
+With r the product of the primes dividing M and s = M / r, Phi_M(x) = Phi_r(x^s).  Writing
+P(x) = sum_j x^j P_j(x^s) (j < s, P_j takes the coefficients of the exponents j mod s),
+
+    P mod Phi_M = sum_j x^j (P_j mod Phi_r)(x^s),
+
+each term of degree < s deg Phi_r = deg Phi_M: the canonical remainder, by s Barrett
+reductions of degree deg Phi_r (480 for M = 27720) instead of one of degree 5,760.  The
+split is done one prime p of s at a time (P(x) = sum_{j<p} x^j Q_j(x^p), Q_j reduced
+modulo Phi_r(y^(s/p))), so a class that is empty (an element of a subfield: most products
+of a polar file's coordinates are polynomials in x^2) costs one test.  For the same reason
+a product of two polynomials in x^g (g | s) is computed as the product of their
+deflations, of half the degree or less, and reduced modulo Phi_r(y^(s/g)), y = x^g.
+
+FLINT's ``fmpz_poly.deflate(n)`` keeps the coefficients of the exponents divisible by n (it
+assumes the others are zero and does not look at them); :func:`_deflate_keeps_multiples`
+checks that once, and the split falls back to Python lists if it ever stops being so.
+Integer arithmetic only; a property test compares every result with ``x % Phi_M``.
+"""
+
+from __future__ import annotations
+
+from math import gcd
+
+from flint import fmpq_poly, fmpz_poly
+
+from .factor import factorization
+from .inverse import remainder_function
+
+
+def _deflate_keeps_multiples() -> bool:
+    try:
+        return fmpz_poly([1, 2, 3, 4, 5]).deflate(2) == fmpz_poly([1, 3, 5])
+    except Exception:           # a FLINT that refuses a polynomial not in x^n
+        return False
+
+
+_DEFLATE_SLICES = _deflate_keeps_multiples()
+
+
+def _class(y: fmpz_poly, j: int, p: int) -> fmpz_poly:
+    """Q_j with y = sum_{j<p} x^j Q_j(x^p)."""
+    if _DEFLATE_SLICES:
+        return (y.right_shift(j) if j else y).deflate(p)
+    return fmpz_poly(y.coeffs()[j::p])
+
+
+class CyclotomicArithmetic:
+    """Remainders and products modulo Phi_M for integer polynomials (numerators)."""
+
+    def __init__(self, order: int):
+        primes = factorization(order)
+        r = 1
+        for p in primes:
+            r *= p
+        self.order = order
+        self.s = order // r
+        self.phi_r = fmpz_poly.cyclotomic(r)
+        self.degree = self.phi_r.degree() * self.s
+        self._base = remainder_function(self.phi_r)       # degree <= 2 deg Phi_r - 1
+        # the primes of s with multiplicity, 2 first (the class test that most often
+        # finds half the coefficients zero)
+        self._steps = sorted(p for p, e in factorization(self.s).items() for _ in range(e)) \
+            if self.s > 1 else []
+
+    def remainder(self, y: fmpz_poly, g: int = 1) -> fmpz_poly:
+        """``y(x^g) mod Phi_M`` as a polynomial in x^g, for g | s and
+        deg y <= 2 deg Phi_M / g - 1."""
+        t = self.s // g
+        if y.degree() < self.degree // g:
+            return y
+        if 2 * self.degree // g <= y.degree():      # beyond the split's bound
+            return y % self.phi_r.inflate(t)
+        steps = list(self._steps)
+        for p, e in factorization(g).items() if g > 1 else ():
+            for _ in range(e):
+                steps.remove(p)
+        return self._split(y, t, steps)
+
+    def _split(self, y: fmpz_poly, t: int, steps: list) -> fmpz_poly:
+        """y mod Phi_r(x^t), t the product of ``steps``."""
+        if t == 1:
+            return self._base(y)
+        p, rest = steps[0], steps[1:]
+        out = None
+        for j in range(p):
+            piece = _class(y, j, p)
+            if piece.is_zero():
+                continue
+            part = self._split(piece, t // p, rest).inflate(p)
+            if j:
+                part = part.left_shift(j)
+            out = part if out is None else out + part
+        return fmpz_poly() if out is None else out
+
+    def prepared(self, a: fmpq_poly) -> tuple:
+        """``(denominator, d, numerator deflated by d)`` with d the gcd of the
+        exponents of ``a`` (0 for a constant: a polynomial in every x^g).  The
+        numerator is not kept (elements remember this form): it is the deflation
+        inflated by d."""
+        an = a.numer()
+        if a.degree() <= 0:
+            return int(a.denom()), 0, an
+        q, d = an.deflation()
+        return int(a.denom()), d, q
+
+    def product_sum(self, terms) -> fmpq_poly:
+        """``sum(sign * a * b) mod Phi_M`` over ``terms``, ``(a, b)`` or ``(a, b, sign)``
+        with sign +-1 and :meth:`prepared` operands of
+        degree < deg Phi_M: the products of the deflations by the largest g | s that all
+        operands admit, over one common denominator, reduced once."""
+        g = self.s
+        common = 1
+        for term in terms:
+            a, b = term[0], term[1]
+            g = gcd(g, a[1], b[1])
+            d = a[0] * b[0]
+            common = common // gcd(common, d) * d
+        g = g or 1
+        total = None
+        for term in terms:
+            (da, dega, qa), (db, degb, qb) = term[0], term[1]
+            if qa.is_zero() or qb.is_zero():
+                continue
+            # g divides every nonzero d: the operands deflated by g
+            an = qa if dega in (g, 0) else qa.inflate(dega // g)
+            bn = qb if degb in (g, 0) else qb.inflate(degb // g)
+            p = an * bn
+            factor = common // (da * db) * (term[2] if len(term) > 2 else 1)
+            if factor != 1:
+                p *= factor
+            total = p if total is None else total + p
+        if total is None:
+            return fmpq_poly()
+        out = self.remainder(total, g)
+        if g > 1:
+            out = out.inflate(g)
+        return fmpq_poly(out) / common if common != 1 else fmpq_poly(out)
+
+
+_ARITHMETIC: dict = {}
+
+
+def cyclotomic_arithmetic(order: int) -> CyclotomicArithmetic:
+    found = _ARITHMETIC.get(order)
+    if found is None:
+        if len(_ARITHMETIC) > 8:
+            _ARITHMETIC.clear()
+        found = _ARITHMETIC[order] = CyclotomicArithmetic(order)
+    return found
+
+
+__all__ = ["CyclotomicArithmetic", "cyclotomic_arithmetic"]
