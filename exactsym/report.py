@@ -70,6 +70,11 @@ _C_ITEM = c_make_encoder(None, json.JSONEncoder().default, encode_basestring_asc
                          False, True) if c_make_encoder is not None else None
 
 
+#: The encoded text of each dict key seen by :func:`_item`, with ``": "`` (a level entry
+#: has the same three or four keys: encoded once, not once per level).
+_KEY_TEXT: dict = {}
+
+
 def _item(value) -> str:
     """``_ITEM(value)`` for a dict or list of JSON values."""
     if _C_ITEM is None:
@@ -79,14 +84,21 @@ def _item(value) -> str:
         if type(paper) is LabelledVerdict and paper.json_parts is not None:
             # a level entry whose verdict carries its JSON text (one template per shape)
             out = []
+            keys = _KEY_TEXT
             for key, item in value.items():
+                head = keys.get(key)
+                if head is None:
+                    head = keys[key] = encode_basestring_ascii(key) + ": "
+                kind = type(item)
                 if item is paper:
                     text = paper.json_text()
-                elif type(item) is str:
+                elif kind is str:
                     text = encode_basestring_ascii(item)
+                elif kind is list and len(item) == 1 and type(item[0]) is int:
+                    text = f"[{item[0]!r}]"      # one robot: as the C encoder writes it
                 else:
                     text = "".join(_C_ITEM(item, 0))
-                out.append(encode_basestring_ascii(key) + ": " + text)
+                out.append(head + text)
             return "{" + ", ".join(out) + "}"
     return "".join(_C_ITEM(value, 0))
 
@@ -120,8 +132,10 @@ def _write(value, pad: str, out: list) -> None:
         if all(not isinstance(x, (dict, list)) for x in value):
             out.append(_item(value))
         else:
-            out.append("[\n" + inner + (",\n" + inner).join(map(_item, value)) + "\n" + pad
-                       + "]")
+            # three pieces: the items' text (tens of megabytes) is not copied once more
+            out.append("[\n" + inner)
+            out.append((",\n" + inner).join(map(_item, value)))
+            out.append("\n" + pad + "]")
     elif isinstance(value, list) and value:
         out.append("[")
         sep = "\n"
