@@ -55,6 +55,10 @@ class Levels:
     # irrational coordinates: the Arb balls about the centre (algebraic_filtered.py),
     # reused by the rays
     enclosures: object = field(default=None, repr=False, compare=False)
+    # (points, {i: (x - cx, y - cy)}): exact vectors from the SEC centre of points of the
+    # sequence ``points``, computed with their level's squared radius
+    # (:func:`exactsym.analysis.built_levels`) and taken by the family layer's polygons
+    vectors: tuple | None = field(default=None, repr=False, compare=False)
 
 
 def polar_sec(polar) -> Circle | None:

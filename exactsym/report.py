@@ -75,6 +75,9 @@ _C_ITEM = c_make_encoder(None, json.JSONEncoder().default, encode_basestring_asc
 _KEY_TEXT: dict = {}
 
 
+_ONE_ROBOT_LEVEL = ("radius_squared", "points", "paper")
+
+
 def _item(value) -> str:
     """``_ITEM(value)`` for a dict or list of JSON values."""
     if _C_ITEM is None:
@@ -82,6 +85,13 @@ def _item(value) -> str:
     if type(value) is dict:
         paper = value.get("paper")
         if type(paper) is LabelledVerdict and paper.json_parts is not None:
+            if len(value) == 3 and tuple(value) == _ONE_ROBOT_LEVEL:
+                # the level of one robot (every level of a random configuration)
+                r2, points = value["radius_squared"], value["points"]
+                if type(r2) is str and type(points) is list and len(points) == 1 \
+                        and type(points[0]) is int:
+                    return (f'{{"radius_squared": {encode_basestring_ascii(r2)}, '
+                            f'"points": [{points[0]!r}], "paper": {paper.json_text()}}}')
             # a level entry whose verdict carries its JSON text (one template per shape)
             out = []
             keys = _KEY_TEXT
