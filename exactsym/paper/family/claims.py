@@ -15,7 +15,8 @@ from typing import Iterable, Sequence
 from ..circle_polygon import CirclePolygon
 from .concentric import (ALL_LINES, Ring, common_lines, first_shown, has_lines,
                          intersect_lines, is_odd, is_symmetric_family, is_symmetric_pair,
-                         is_symmetric_polygon, lines_text, new_ring, polygon_name)
+                         is_symmetric_polygon, lines_text, new_ring, polygon_name,
+                         robot_count)
 from .find_asymmetry import find_asymmetry_pair
 from ..keys import sort_by_angle
 from .limits import DEFAULT_LIMITS, END_LEVELS, Limits, WorkBudgetExceeded
@@ -69,7 +70,7 @@ def select_pairs(G: Sequence[Ring], limits: Limits | None = None) -> tuple[list,
     t = len(G)
     total = t * (t - 1) // 2
     cap = limits.claim_pairs
-    budget = limits.vertex_budget(sum(len(g.robots) for g in G))
+    budget = limits.vertex_budget(robot_count(G))
     if cap is None or total <= cap:
         order = ((i, j) for i in range(t) for j in range(i + 1, t))
     else:
@@ -371,7 +372,7 @@ def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = No
     trace = trace if trace is not None else []
     stats = stats if stats is not None else {}
     rec = _Record(trace, limits.claim_examples)
-    n_robots = sum(len(g.robots) for g in G)
+    n_robots = robot_count(G)
     pairs, total_pairs = select_pairs(G, limits)
     if len(pairs) < total_pairs:
         rec.partial.update(("obs-pair-asym-ord", "obs-merg-asym-pair", "lem-los-gij",

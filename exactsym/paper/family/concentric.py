@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import cached_property
+from operator import attrgetter
 from typing import Iterable, Sequence
 
 from ...configuration import Configuration
@@ -79,6 +80,15 @@ class Ring:
             keys = ray_keys(self.polygon)
             object.__setattr__(self, "keys", keys)
         return keys
+
+
+def robot_count(rings: Iterable[Ring]) -> int:
+    """The number of robots in ``rings`` (iterated in C: one ring per robot on random
+    configurations, and the budgets of Preprocess and the claims read it)."""
+    return sum(map(len, map(_ROBOTS, rings)))
+
+
+_ROBOTS = attrgetter("robots")
 
 
 def polygon_name(levels: Sequence[int]) -> str:
