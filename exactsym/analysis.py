@@ -130,11 +130,11 @@ def built_levels(levels: Levels) -> Levels:
         cx, cy = centre
     new = object.__new__
     built = []
-    for k in range(len(bounds) - 1):
-        points = tuple(flat[bounds[k]:bounds[k + 1]])
+    for k, (start, stop) in enumerate(zip(bounds, bounds[1:])):
+        points = (flat[start],) if stop - start == 1 else tuple(flat[start:stop])
         r2 = known.get(k)
         if r2 is None:
-            if vectors is not None and len(points) == 1:
+            if vectors is not None and stop - start == 1:
                 i = points[0]
                 x, y = pts[i]
                 dx, dy = x - cx, y - cy
@@ -143,7 +143,9 @@ def built_levels(levels: Levels) -> Levels:
             else:
                 r2 = radius(points[0])
         level = new(Level)          # Level(r2, points) without the frozen __init__
-        level.__dict__.update(radius_squared=r2, points=points)
+        fields = level.__dict__
+        fields["radius_squared"] = r2
+        fields["points"] = points
         built.append(level)
     return replace(levels, levels=tuple(built),
                    vectors=(owner, vectors) if vectors else levels.vectors)
