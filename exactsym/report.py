@@ -127,6 +127,11 @@ def _item(value) -> str:
     return "".join(_C_ITEM(value, 0))
 
 
+#: Types of JSON values that are not containers (a long list of only these, the ordering
+#: of 100,000 robots, is recognised without a Python-level pass).
+_SCALARS = frozenset((int, float, str, bool, type(None)))
+
+
 def json_text(report: dict, compact: bool = False) -> str:
     """The text of ``exactsym check --json``: ``report`` (a JSON-ready dict) indented by
     two spaces as ``json.dumps(report, indent=2)`` writes it, except that a list of more
@@ -153,7 +158,8 @@ def _write(value, pad: str, out: list) -> None:
             sep = ",\n"
         out.append("\n" + pad + "}")
     elif isinstance(value, list) and len(value) > LONG_LIST:
-        if all(not isinstance(x, (dict, list)) for x in value):
+        if set(map(type, value)) <= _SCALARS or all(not isinstance(x, (dict, list))
+                                                     for x in value):
             out.append(_item(value))
         else:
             # three pieces: the items' text (tens of megabytes) is not copied once more
