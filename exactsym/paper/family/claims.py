@@ -279,9 +279,11 @@ def theorem_los_g1n(rec: _Record, G: Sequence[Ring], Gp: Sequence[Ring], polar: 
                      f"circle) has {lines_text(whole_lines, polar)}, but the polygons have "
                      f"{lines_text(common, polar)} in common",
                      {"line": extra, "within_hypotheses": False})
-    by_level = {g.levels[0]: g for g in G}
+    by_level = None         # built for the first merged polygon (none on random input)
     for g in Gp:
         if len(g.levels) > 1:
+            if by_level is None:
+                by_level = {g.levels[0]: g for g in G}
             parts = [by_level[k] for k in g.levels]
             common = common_lines(parts)
             rec.check("theorem-los-g1n")
