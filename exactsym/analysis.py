@@ -118,11 +118,11 @@ def built_levels(levels: Levels) -> Levels:
         return levels
     flat, bounds, known = lazy.flat, lazy.bounds, lazy.known
     radius = lazy.radius_squared
-    # a one-point level's squared radius is |p - C|^2 of that point, as
-    # RationalLevels.radius_squared writes it: the vector p - C is kept for the family
-    # layer's polygons (one per robot on random input, each recomputed it)
-    # (the configuration's own point sequence, kept by Levels.floats, names them: the
-    # levels' list is a copy of it)
+    # a one-point level's squared radius is |p - C|^2 of its point, as
+    # RationalLevels.radius_squared writes it; the vector p - C is kept (Levels.vectors)
+    # for the family layer's polygons, which computed it again (one per robot on random
+    # input).  The vectors are named by the configuration's own point sequence, which
+    # Levels.floats holds (the lazy levels hold a copy of it).
     pts, centre = lazy.points, lazy.centre
     owner = levels.floats[0] if levels.floats is not None else None
     vectors = {} if lazy.radii is None and pts is not None and owner is not None else None
