@@ -118,17 +118,37 @@ def built_levels(levels: Levels) -> Levels:
         return levels
     flat, bounds, known = lazy.flat, lazy.bounds, lazy.known
     radius = lazy.radius_squared
+    # a one-point level's squared radius is |p - C|^2 of its point, as
+    # RationalLevels.radius_squared writes it; the vector p - C is kept (Levels.vectors)
+    # for the family layer's polygons, which computed it again (one per robot on random
+    # input).  The vectors are named by the configuration's own point sequence, which
+    # Levels.floats holds (the lazy levels hold a copy of it).
+    pts, centre = lazy.points, lazy.centre
+    owner = levels.floats[0] if levels.floats is not None else None
+    vectors = {} if lazy.radii is None and pts is not None and owner is not None else None
+    if vectors is not None:
+        cx, cy = centre
     new = object.__new__
     built = []
-    for k in range(len(bounds) - 1):
-        points = tuple(flat[bounds[k]:bounds[k + 1]])
+    for k, (start, stop) in enumerate(zip(bounds, bounds[1:])):
+        points = (flat[start],) if stop - start == 1 else tuple(flat[start:stop])
         r2 = known.get(k)
         if r2 is None:
-            r2 = radius(points[0])
+            if vectors is not None and stop - start == 1:
+                i = points[0]
+                x, y = pts[i]
+                dx, dy = x - cx, y - cy
+                vectors[i] = (dx, dy)
+                r2 = dx * dx + dy * dy
+            else:
+                r2 = radius(points[0])
         level = new(Level)          # Level(r2, points) without the frozen __init__
-        level.__dict__.update(radius_squared=r2, points=points)
+        fields = level.__dict__
+        fields["radius_squared"] = r2
+        fields["points"] = points
         built.append(level)
-    return replace(levels, levels=tuple(built))
+    return replace(levels, levels=tuple(built),
+                   vectors=(owner, vectors) if vectors else levels.vectors)
 
 
 __all__ = ["Analysis", "Options", "analyse", "PARTS"]

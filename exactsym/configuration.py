@@ -85,7 +85,7 @@ class Configuration:
         self.polar_system = polar_system
         self.radii = tuple(radii) if radii is not None else None     # r, when polar
         if points is not None:
-            self.__dict__["points"] = tuple(tuple(p) for p in points)
+            self.__dict__["points"] = tuple(map(tuple, points))
             self.__dict__["system"] = system
         self.n = len(points) if points is not None else len(self.polar)
 
@@ -120,6 +120,13 @@ class Configuration:
         system, pts = self._cartesian()
         self.__dict__["system"] = system
         return tuple(pts)
+
+    @cached_property
+    def float_points(self):
+        """``geometry.float_coordinates(self.points)`` (the correctly rounded floats of
+        rational coordinates, or None), computed once: the check for coincident points
+        and the levels' filters both read them."""
+        return float_coordinates(self.points)
 
     def _cartesian(self):
         if self.specs or self.radii is None:
@@ -362,7 +369,7 @@ def load(path) -> Configuration:
 def _coincident(config: Configuration) -> tuple[int, int] | None:
     """The first two indices of coincident points, or None."""
     if config.polar is None and config.n >= 64 and isinstance(config.points[0][0], fmpq):
-        candidates = _equal_float_groups(config.points)
+        candidates = _equal_float_groups(config.points, config.float_points)
         if candidates is not None:
             return _first_coincident(config.points, candidates)
     if config.polar is None and config.n >= 3 and any(
@@ -397,11 +404,12 @@ def _coincident_irrational(config: Configuration) -> tuple[int, int] | None:
     return best
 
 
-def _equal_float_groups(points):
+def _equal_float_groups(points, floats=None):
     """Groups (lists of indices, at least two) of rational points whose correctly rounded
     float pairs are equal: equal points have equal floats, so coincident points are only
-    to be looked for inside these groups.  None if a float is not finite."""
-    floats = float_coordinates(points)
+    to be looked for inside these groups.  None if a float is not finite.  ``floats``:
+    ``float_coordinates(points)``, if known."""
+    floats = floats if floats is not None else float_coordinates(points)
     if floats is None:
         return None
     fx, fy = floats

@@ -23,7 +23,7 @@ from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels, s
 from .exact import FieldElement, RationalSystem, exact_key, exact_sorted, fmpq
 from .exact.field import PolyElement
 from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
-                       float_coordinates, float_differences, float_squared_norms,
+                       float_differences, float_squared_norms,
                        sorted_by_value, squared_distance)
 from .sec import Circle, floats_of_balls, smallest_enclosing_circle
 
@@ -55,6 +55,10 @@ class Levels:
     # irrational coordinates: the Arb balls about the centre (algebraic_filtered.py),
     # reused by the rays
     enclosures: object = field(default=None, repr=False, compare=False)
+    # (points, {i: (x - cx, y - cy)}): exact vectors from the SEC centre of points of the
+    # sequence ``points``, computed with their level's squared radius
+    # (:func:`exactsym.analysis.built_levels`) and taken by the family layer's polygons
+    vectors: tuple | None = field(default=None, repr=False, compare=False)
 
 
 def polar_sec(polar) -> Circle | None:
@@ -85,7 +89,7 @@ def _levels_of(config: Configuration) -> Levels:
     points = list(config.points)
     # many rational points: their floats, converted once, filter the SEC, the levels and
     # (through Levels.floats) the rays
-    floats = float_coordinates(points) if len(points) >= _FILTER_MIN \
+    floats = config.float_points if len(points) >= _FILTER_MIN \
         and isinstance(points[0][0], fmpq) and isinstance(config.system, RationalSystem) \
         else None
     if ALGEBRAIC_FILTER and len(points) >= 3 and floats is None and any(

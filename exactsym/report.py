@@ -36,26 +36,40 @@ def _report_json(analysis: Analysis) -> dict:
         "n": config.n,
         "sec": {"center": [number_text(c) for c in levels.sec.centre],
                 "radius_squared": number_text(levels.sec.radius_squared)},
-        "levels": [{"radius_squared": str(level.radius_squared)
-                    if type(level.radius_squared) is fmpq      # flint writes p/q as we do
-                    else number_text(level.radius_squared),
-                    "points": list(level.points)} for level in levels.levels],
+        "levels": _level_entries(levels.levels, analysis.level_verdicts,
+                                 analysis.level_strings),
         "number_field": getattr(config.polar_system if levels.polar else config.system,
                                 "name", "Q"),
     }
     if analysis.truth is not None:
         report.update(truth_json(analysis.truth))
-    if analysis.level_verdicts is not None:
-        strings = analysis.level_strings or (None,) * len(report["levels"])
-        for entry, verdict, text in zip(report["levels"], analysis.level_verdicts, strings):
-            entry["paper"] = verdict
-            if text is not None:
-                entry["strings"] = text
     if analysis.paper is not None:
         report["paper"] = paper_json(analysis.paper)
     if analysis.audit is not None:
         report["audit"] = analysis.audit
     return report
+
+
+def _level_entries(levels, verdicts, strings) -> list:
+    """One dict per level: ``radius_squared``, ``points`` and, when computed, the polygon
+    layer's ``paper`` verdict and its ``strings``."""
+    if verdicts is not None and strings is None and len(verdicts) == len(levels):
+        # one pass (100,000 levels on random input)
+        return [{"radius_squared": str(level.radius_squared)
+                 if type(level.radius_squared) is fmpq       # flint writes p/q as we do
+                 else number_text(level.radius_squared),
+                 "points": list(level.points), "paper": verdict}
+                for level, verdict in zip(levels, verdicts)]
+    out = [{"radius_squared": str(level.radius_squared)
+            if type(level.radius_squared) is fmpq else number_text(level.radius_squared),
+            "points": list(level.points)} for level in levels]
+    if verdicts is not None:
+        strings = strings or (None,) * len(out)
+        for entry, verdict, text in zip(out, verdicts, strings):
+            entry["paper"] = verdict
+            if text is not None:
+                entry["strings"] = text
+    return out
 
 
 #: A list longer than this is written one item per line (items on one line each, by
@@ -70,6 +84,14 @@ _C_ITEM = c_make_encoder(None, json.JSONEncoder().default, encode_basestring_asc
                          False, True) if c_make_encoder is not None else None
 
 
+#: The encoded text of each dict key seen by :func:`_item`, with ``": "`` (a level entry
+#: has the same three or four keys: encoded once, not once per level).
+_KEY_TEXT: dict = {}
+
+
+_ONE_ROBOT_LEVEL = ("radius_squared", "points", "paper")
+
+
 def _item(value) -> str:
     """``_ITEM(value)`` for a dict or list of JSON values."""
     if _C_ITEM is None:
@@ -77,18 +99,37 @@ def _item(value) -> str:
     if type(value) is dict:
         paper = value.get("paper")
         if type(paper) is LabelledVerdict and paper.json_parts is not None:
+            if len(value) == 3 and tuple(value) == _ONE_ROBOT_LEVEL:
+                # the level of one robot (every level of a random configuration)
+                r2, points = value["radius_squared"], value["points"]
+                if type(r2) is str and type(points) is list and len(points) == 1 \
+                        and type(points[0]) is int:
+                    return (f'{{"radius_squared": {encode_basestring_ascii(r2)}, '
+                            f'"points": [{points[0]!r}], "paper": {paper.json_text()}}}')
             # a level entry whose verdict carries its JSON text (one template per shape)
             out = []
+            keys = _KEY_TEXT
             for key, item in value.items():
+                head = keys.get(key)
+                if head is None:
+                    head = keys[key] = encode_basestring_ascii(key) + ": "
+                kind = type(item)
                 if item is paper:
                     text = paper.json_text()
-                elif type(item) is str:
+                elif kind is str:
                     text = encode_basestring_ascii(item)
+                elif kind is list and len(item) == 1 and type(item[0]) is int:
+                    text = f"[{item[0]!r}]"      # one robot: as the C encoder writes it
                 else:
                     text = "".join(_C_ITEM(item, 0))
-                out.append(encode_basestring_ascii(key) + ": " + text)
+                out.append(head + text)
             return "{" + ", ".join(out) + "}"
     return "".join(_C_ITEM(value, 0))
+
+
+#: Types of JSON values that are not containers (a long list of only these, the ordering
+#: of 100,000 robots, is recognised without a Python-level pass).
+_SCALARS = frozenset((int, float, str, bool, type(None)))
 
 
 def json_text(report: dict, compact: bool = False) -> str:
@@ -117,11 +158,14 @@ def _write(value, pad: str, out: list) -> None:
             sep = ",\n"
         out.append("\n" + pad + "}")
     elif isinstance(value, list) and len(value) > LONG_LIST:
-        if all(not isinstance(x, (dict, list)) for x in value):
+        if set(map(type, value)) <= _SCALARS or all(not isinstance(x, (dict, list))
+                                                     for x in value):
             out.append(_item(value))
         else:
-            out.append("[\n" + inner + (",\n" + inner).join(map(_item, value)) + "\n" + pad
-                       + "]")
+            # three pieces: the items' text (tens of megabytes) is not copied once more
+            out.append("[\n" + inner)
+            out.append((",\n" + inner).join(map(_item, value)))
+            out.append("\n" + pad + "]")
     elif isinstance(value, list) and value:
         out.append("[")
         sep = "\n"

@@ -15,7 +15,8 @@ from typing import Iterable, Sequence
 from ..circle_polygon import CirclePolygon
 from .concentric import (ALL_LINES, Ring, common_lines, first_shown, has_lines,
                          intersect_lines, is_odd, is_symmetric_family, is_symmetric_pair,
-                         is_symmetric_polygon, lines_text, new_ring, polygon_name)
+                         is_symmetric_polygon, lines_text, new_ring, polygon_name,
+                         robot_count)
 from .find_asymmetry import find_asymmetry_pair
 from ..keys import sort_by_angle
 from .limits import DEFAULT_LIMITS, END_LEVELS, Limits, WorkBudgetExceeded
@@ -69,7 +70,7 @@ def select_pairs(G: Sequence[Ring], limits: Limits | None = None) -> tuple[list,
     t = len(G)
     total = t * (t - 1) // 2
     cap = limits.claim_pairs
-    budget = limits.vertex_budget(sum(len(g.robots) for g in G))
+    budget = limits.vertex_budget(robot_count(G))
     if cap is None or total <= cap:
         order = ((i, j) for i in range(t) for j in range(i + 1, t))
     else:
@@ -278,9 +279,11 @@ def theorem_los_g1n(rec: _Record, G: Sequence[Ring], Gp: Sequence[Ring], polar: 
                      f"circle) has {lines_text(whole_lines, polar)}, but the polygons have "
                      f"{lines_text(common, polar)} in common",
                      {"line": extra, "within_hypotheses": False})
-    by_level = {g.levels[0]: g for g in G}
+    by_level = None         # built for the first merged polygon (none on random input)
     for g in Gp:
         if len(g.levels) > 1:
+            if by_level is None:
+                by_level = {g.levels[0]: g for g in G}
             parts = [by_level[k] for k in g.levels]
             common = common_lines(parts)
             rec.check("theorem-los-g1n")
@@ -371,7 +374,7 @@ def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = No
     trace = trace if trace is not None else []
     stats = stats if stats is not None else {}
     rec = _Record(trace, limits.claim_examples)
-    n_robots = sum(len(g.robots) for g in G)
+    n_robots = robot_count(G)
     pairs, total_pairs = select_pairs(G, limits)
     if len(pairs) < total_pairs:
         rec.partial.update(("obs-pair-asym-ord", "obs-merg-asym-pair", "lem-los-gij",

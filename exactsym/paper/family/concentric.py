@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import cached_property
+from operator import attrgetter
 from typing import Iterable, Sequence
 
 from ...configuration import Configuration
@@ -81,6 +82,15 @@ class Ring:
         return keys
 
 
+def robot_count(rings: Iterable[Ring]) -> int:
+    """The number of robots in ``rings`` (iterated in C: one ring per robot on random
+    configurations, and the budgets of Preprocess and the claims read it)."""
+    return sum(map(len, map(_ROBOTS, rings)))
+
+
+_ROBOTS = attrgetter("robots")
+
+
 def polygon_name(levels: Sequence[int]) -> str:
     levels = sorted(levels)
     if len(levels) == 1:
@@ -116,6 +126,10 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
     else:
         cx, cy = ring_data.sec.centre
         pts = config.points
+    # the levels' vectors p - C, when computed with their radii for these very points
+    known = getattr(ring_data, "vectors", None)
+    vectors = known[1] if not polar and known is not None and known[0] is config.points \
+        else None
     new_polygon = object.__new__
     for k, level in enumerate(ring_data.levels):
         robots = tuple(level.points)
@@ -129,8 +143,11 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
             if polar:
                 dirs = (turns[i][1],)
             else:
-                x, y = pts[i]
-                dirs = ((x - cx, y - cy),)
+                vector = vectors.get(i) if vectors is not None else None
+                if vector is None:
+                    x, y = pts[i]
+                    vector = (x - cx, y - cy)
+                dirs = (vector,)
         else:
             labels = tuple([(i,) for i in robots])
             built = level_polygons[k] if level_polygons is not None else None

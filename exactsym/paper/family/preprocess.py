@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Sequence
 
-from .concentric import Ring, is_odd
+from .concentric import Ring, is_odd, robot_count
 from .limits import DEFAULT_LIMITS, Limits, WorkBudgetExceeded
 from .projection import (coincidence_note, could_be_type4, is_type4, radial_projection,
                          radius_less)
@@ -209,7 +209,7 @@ def preprocess(G: Sequence[Ring], trace: list | None = None, limits: Limits | No
     trace = trace if trace is not None else []
     stats = stats if stats is not None else {}
     G = list(G)
-    n_robots = sum(len(g.robots) for g in G)
+    n_robots = robot_count(G)
     pairs = _Type4Pairs(limits.step_budget(n_robots))
     detail_left = [limits.preprocess_entries]
     omitted: dict = {}
@@ -468,7 +468,7 @@ def preprocess_literal(G: Sequence[Ring], max_steps: int | None = None,
     G = list(G)
     t = len(G)
     max_steps = max_steps if max_steps is not None else 20 * (t + 2) ** 2
-    pairs = _Type4Pairs(limits.step_budget(sum(len(g.robots) for g in G)))
+    pairs = _Type4Pairs(limits.step_budget(robot_count(G)))
     versions: dict = {}
 
     def version() -> int:
