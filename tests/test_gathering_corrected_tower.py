@@ -109,3 +109,30 @@ def test_a_corrected_run_goes_on_in_one_tower():
     # the pattern grew: robot 0 at C, robots 4, 6, 5 a chain of layer 1 (slots exact)
     assert set(decide_corrected(w.positions()).pattern.robots) == {0, 4, 5, 6}
     assert towers_of(w.positions()) == (w.home.tower,)
+
+
+def test_the_own_circle_path_at_a_nested_radius():
+    """corrected._to_slot_paths: the path along the mover's own circle, then radially in,
+    also when |p - C|^2 = 52 + 2 sqrt 2 is a square in no multiquadratic field (before,
+    that option needed a rational squared radius and was left out): every point of the
+    arc is at that distance from C, the arc ends on the target's ray, then the segment
+    to the target."""
+    from exactsym.gathering.corrected import _to_slot_paths
+    p, target = NESTED[4], (Q(2), Q(0))                  # a slot of layer 1 on the x axis
+    run = RunTower()
+    paths = list(_to_slot_paths(p, ORIGIN, target, 1, 1, None, run))
+    arcs = [path for path in paths if isinstance(path[0], g.Arc)]
+    assert len(arcs) == 1
+    *arc, last = arcs[0]
+    r2 = 52 + 2 * S2
+    for piece in arc:
+        assert piece.centre == ORIGIN
+        assert g.dist2(piece.start, ORIGIN) == r2 and g.dist2(piece.end, ORIGIN) == r2
+    b = arc[-1].end
+    assert b[1] == 0 and b[0].sign() > 0 and towers_of([b]) == (run,)
+    assert isinstance(last, g.Segment) and last.start == b and last.end == target
+    # a point of the arc finds the same path again (the radius is the same number)
+    q = arc[0].at(Q(F(1, 3)))
+    again = [path for path in _to_slot_paths(q, ORIGIN, target, 1, 1, None, run)
+             if isinstance(path[0], g.Arc)]
+    assert again and again[0][-1].start == b

@@ -14,8 +14,8 @@ complete square-root test (:mod:`.cyclotomic_sqrt`): a new level only for a non-
 
 Out of reach (None): a base Q(zeta_M) beyond the tower's a-priori bound
 (:data:`~.cyclotomic_tower.MAX_BASE_DEGREE`), a number field that is not cyclotomic, and a
-radicand whose square-freeness check would factor a rational of more than 160 bits
-(:func:`~.mq_closure.decided_sqrt`).
+root sqrt(m) w whose integer m (more than 160 bits) :func:`~.mq_closure.decided_sqrt`
+cannot split.
 """
 
 from __future__ import annotations

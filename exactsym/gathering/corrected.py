@@ -70,7 +70,7 @@ from ..exact.multiquadratic import MQ, sqrt_rational
 from . import geometry as g
 from .pattern import Pattern, capacity, recognise, slot
 from .robot import Decision, Move, Readings, radial_point
-from .run_tower import common_tower, epochs_of, towers_of
+from .run_tower import common_tower, epochs_of, sqrt_exact, towers_of
 
 ALGORITHMS = ("paper", "corrected")
 
@@ -291,14 +291,17 @@ def _ray_point(centre, p, h):
     return (centre[0] + k * e[0], centre[1] + k * e[1])
 
 
-def _to_slot_paths(p, centre, target, l, unit, limit2=None):
+def _to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None):
     """Paths to a point of layer l (``|target - C| = 2l unit``) that the mover finds
     again from any point of them (so a fresh Look on the way plans the same target):
 
     * on the target's ray: the segment;
     * along the mover's own circle about C, the shorter way, to the target's ray, then
-      radially in (needs a rational squared radius: every point of the arc has it, and
-      the radial part is on the target's ray);
+      radially in (every point of the arc has the mover's radius, and the radial part
+      is on the target's ray); the radius is a nested radical when ``|p - C|^2`` is a
+      square in no multiquadratic field (a number of ``tower``, the snapshot's, or of a
+      new run tower: :func:`.run_tower.sqrt_exact`); the path is left out only when
+      that root cannot be built (the kernel's limits);
     * for h = 2l + 2, 2l + 4, 2l + 6 with h^2 < ``limit2`` (the squared distance of R's
       next robot to C: the mover stays the nearest; the condition does not change on the
       way): radially in to the rational point of the mover's ray just beyond radius h
@@ -315,8 +318,8 @@ def _to_slot_paths(p, centre, target, l, unit, limit2=None):
         return
     r2 = g.dot(v, v)
     two_l = 2 * l * unit
-    if r2.is_rational():
-        rho = sqrt_rational(r2.to_fmpq())
+    rho = _radius(r2, tower)
+    if rho is not None:
         b = g.add(centre, g.scale(w, rho / two_l))
         sense = 1 if g.cross(v, w).sign() > 0 else -1
         yield g.arc_path(centre, p, b, sense) + [g.Segment(b, target)]
@@ -333,6 +336,17 @@ def _to_slot_paths(p, centre, target, l, unit, limit2=None):
         b = g.add(centre, g.scale(w, fmpq(h) / two_l))
         yield [g.Segment(p, b), g.Segment(b, target)]
     yield [g.Segment(p, target)]
+
+
+def _radius(r2, tower):
+    """The non-negative root of the squared radius ``r2``: rational, multiquadratic or
+    nested (``tower``'s); None when the kernel cannot build it."""
+    if r2.is_rational():
+        return sqrt_rational(r2.to_fmpq())
+    try:
+        return sqrt_exact(r2, tower)
+    except ValueError:
+        return None
 
 
 def _target(p, centre, pat, pts, unit, stay, tower=None):
@@ -450,7 +464,7 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
         k += len(group)
         found = [(o[1], p) for o in group
                  if (p := _first_path(o, pts, centre, cands, R, unit, pat,
-                                      len(tied) > 1, approx)) is not None]
+                                      len(tied) > 1, approx, tower)) is not None]
         if len(found) > 1:
             # the smallest profile of distances to the others; equal profiles: stay
             # ... preferring a mover after whose move the robots left in R still have
@@ -503,9 +517,10 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
                     f"corrected: robot {j} cannot clear C (robots {close} within 2 of it)")
 
 
-def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx):
+def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower=None):
     """The first free path of ``option`` = (dist, robot, target, layer, kind) that keeps
-    C, as a tuple of pieces; None."""
+    C, as a tuple of pieces; None.  ``tower``: the snapshot's tower of nested radicals
+    (the own-circle path's radius, :func:`_to_slot_paths`)."""
     _dist, i, target, l, kind = option
     unit2 = unit * unit
     if kind == "centre":
@@ -515,7 +530,7 @@ def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx):
     else:
         others = [g.dist2(pts[j], centre) for j in R if j != i]
         limit2 = min(others, key=_Key) if others else None
-        paths = _to_slot_paths(pts[i], centre, target, l, unit, limit2)
+        paths = _to_slot_paths(pts[i], centre, target, l, unit, limit2, tower)
     for path in paths:
         if not path or (tied_start and isinstance(path[0], g.Arc)):
             continue                    # tied at the Look: the first piece must go in (I4)

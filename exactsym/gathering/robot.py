@@ -288,8 +288,9 @@ def radial_point(centre, p, radius, tower=None):
     root is an MQ when it lies in the multiquadratic closure, else a number of the
     snapshot's ``tower`` of nested radicals (a new level when it has none there; a new
     tower when ``tower`` is None: :func:`.run_tower.sqrt_exact`).  ValueError (the
-    decision is then ``undecided``) when the closure test would factor a rational of
-    more than 160 bits, the tower would exceed its levels, or ``p = C``."""
+    decision is then ``undecided``) when the closure test cannot write a root (an
+    integer of more than 160 bits it cannot split), the tower would exceed its levels,
+    or ``p = C``."""
     v = g.sub(p, centre)
     r2 = g.dot(v, v)
     if r2.is_zero():

@@ -33,7 +33,8 @@ square-root test at level 0 is :func:`~exactsym.exact.mq_closure.decided_sqrt` (
 theory, any primes), so the tower's recursive test (:meth:`.Tower.root_in`) is complete
 at every level and a level is added only on a radicand that is a square in no field
 reached by square roots of rationals added later (layer slots, other radial targets).
-When that test would factor a rational of more than 160 bits, or a level beyond
+When that test cannot write a root it found (an integer of more than 160 bits that
+:func:`~exactsym.exact.mq_closure.bounded_squarefree_split` cannot split), or a level beyond
 :data:`~exactsym.exact.tower.MAX_LEVELS` would be needed, ValueError: the decision is
 then ``undecided``, never wrong.  Runs that never meet a nested radical build no
 tower at all.
@@ -68,8 +69,8 @@ class RunTower(Tower):
     def base_root(self, x):
         root, decided = decided_sqrt(x)
         if root is None and not decided:
-            raise ValueError("a square root would need a rational of more than 160 bits "
-                             "factored (mq_closure.decided_sqrt)")
+            raise ValueError("a square root whose radicand (more than 160 bits) the bounded "
+                             "split cannot tell (mq_closure.decided_sqrt)")
         return root
 
     def __deepcopy__(self, memo):
@@ -133,8 +134,8 @@ def sqrt_exact(x, tower: RunTower | None = None):
     if root is not None:
         return root
     if not decided:
-        raise ValueError("a square root would need a rational of more than 160 bits "
-                         "factored (mq_closure.decided_sqrt)")
+        raise ValueError("a square root whose radicand (more than 160 bits) the bounded "
+                         "split cannot tell (mq_closure.decided_sqrt)")
     tower = tower if tower is not None else RunTower()
     try:
         return tower.number(tower.sqrt(x))

@@ -16,8 +16,9 @@ simulator needs on top of it:
   ``a f^4 + b f^2 + c``) inside a rational interval, as a tower number;
 * :func:`tower_sqrt` -- the square root of a tower number.
 
-A rational of more than 160 bits met on the way that is not a perfect square is not
-factored (minutes, possibly): the root then stays without an exact value (``sided``).
+A root sqrt(m) w whose integer m (more than 160 bits) has a square-free part that
+:func:`~exactsym.exact.mq_closure.bounded_squarefree_split` cannot tell (a full
+factorisation could take minutes) stays without an exact value (``sided``).
 
 Soundness of the canonical form.  The tower's canonical form (``a + b y`` with ``y^2``
 not a square below) makes ``==`` exact only while the radicand of every level is a

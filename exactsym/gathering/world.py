@@ -173,7 +173,7 @@ class World:
                      for m in d.moves}
         except ValueError as err:
             # a planned path the run's tower cannot hold (a radicand whose test needs a
-            # rational of more than 160 bits factored): undecided, as the kernel says
+            # root sqrt(m) w whose m of more than 160 bits the bounded split cannot tell): undecided
             return Decision("undecided", (), d.centre, d.pattern, None,
                             f"the run's tower: {err}"), {}
         return d, paths
