@@ -225,6 +225,9 @@ def algebraic_root(p, lo, hi):
         from .tower_numbers import quadratic_root
         return quadratic_root(f[0], f[1], f[2], lo, hi)
     if not _stable(f):
+        if len(f) == 5:              # D4, C4 or V4: nested square roots (Ferrari over K)
+            from .quartic_instants import quartic_root
+            return quartic_root(f, lo, hi)
         return None
     root = AlgebraicRoot.of(f, fmpq(lo), fmpq(hi))
     return AlgebraicNumber(root, (ZERO, ONE))
