@@ -134,6 +134,23 @@ def _group_basis(p) -> tuple:
     return tuple(basis), coords
 
 
+def _complete_coords(p, basis, coords: dict) -> None:
+    """Add to ``coords`` every radicand of ``p`` it lacks (products of the basis that
+    ``p``'s own coefficients did not show, met after a shift by ``theta``): the set of
+    ``j`` with ``m * prod_j b_j`` a square."""
+    for m in {m for c in p for m in c.radicands()} - coords.keys():
+        for comb in range(1 << len(basis)):
+            prod = fmpz(m)
+            for j, b in enumerate(basis):
+                if comb >> j & 1:
+                    prod *= b
+            if prod.is_square():
+                coords[m] = comb
+                break
+        else:
+            raise ArithmeticError(f"sqrt({m}) is not in the field of the basis")
+
+
 def _conjugate(x: MQ, j: int, coords: dict) -> MQ:
     return MQ({m: (-c if m != 1 and coords[m] >> j & 1 else c) for m, c in x.terms.items()})
 
@@ -167,6 +184,7 @@ def factor_over_k(p: tuple):
         coords_s.update({b: 1 << j for j, b in enumerate(basis)})
         norm = ps
         for j in range(len(basis)):         # the product over the group, one flip at a time
+            _complete_coords(norm, basis, coords_s)
             norm = _mul(norm, tuple(_conjugate(c, j, coords_s) for c in norm))
         n = _rational_poly(norm)
         if n.gcd(n.derivative()).degree() > 0:
