@@ -78,47 +78,47 @@ def _in(x, lo, hi) -> bool:
 
 @lru_cache(maxsize=512)
 def _split(f: tuple):
-    """``(shift, s, c_+, c_-, tower)`` with ``f(y - shift) = (y^2 - s y + c_+)
-    (y^2 + s y + c_-)``, ``s > 0`` (an MQ or a tower number) and ``tower`` the RunTower
-    of the factor's levels; None when no ``K``-root of the resolvent gives ``t > 0``, or
-    a square root cannot be decided."""
+    """``(shift, z, t, q)``: ``f(y - shift)`` depressed, ``z`` a root in ``K`` of its
+    resolvent with ``t = z - p > 0``; None when there is none (or the factoring gave
+    up)."""
     from .algebraic_instants import factor_over_k
-    from .run_tower import RunTower, sqrt_exact
-    from .tower_numbers import is_tower
     p, q, r = depressed(f)
     factors = factor_over_k(trim(resolvent(p, q, r)))
-    if factors is None:
-        return None
-    for h in factors:
-        if len(h) != 2:
-            continue
-        z = -h[0]
-        t = z - p
-        if t.sign() <= 0:
-            continue
-        try:
-            s = sqrt_exact(t)
-        except ValueError:
-            return None
-        tower = s.tower if is_tower(s) else RunTower()
-        w = q / (s * 2)
-        return f[3] / 4, s, z / 2 + w, z / 2 - w, tower
+    for h in factors or ():
+        if len(h) == 2 and (-h[0] - p).sign() > 0:
+            return f[3] / 4, -h[0], -h[0] - p, q
     return None
 
 
 @lru_cache(maxsize=1024)
-def _quadratic_roots(f: tuple, sign: int):
-    """The two roots ``y`` of ``y^2 - sign s y + c`` (:func:`_split`'s factor), exact,
-    in the factor's tower; None when its discriminant is negative or its root cannot be
-    decided."""
+def _factor(f: tuple, sign: int):
+    """``(s, c)``: the quadratic factor ``y^2 - sign s y + c`` of ``f(y - shift)``
+    (module docstring), ``s = sqrt t`` an MQ or the first level of a RunTower of its own
+    (one per factor: the other factor's roots need not enlarge it); None when ``s``
+    cannot be decided."""
     from .run_tower import sqrt_exact
-    shift, s, cp, cm, tower = _split(f)
-    b, c = -s * sign, (cp if sign > 0 else cm)
+    _, z, t, q = _split(f)
+    try:
+        s = sqrt_exact(t)
+    except ValueError:
+        return None
+    return s, z / 2 + sign * q / (s * 2)
+
+
+@lru_cache(maxsize=1024)
+def _quadratic_roots(f: tuple, sign: int):
+    """The two roots ``y`` of :func:`_factor`'s ``y^2 - sign s y + c``, exact, in the
+    tower of ``s`` (a new RunTower when ``s`` is an MQ); None when its discriminant is
+    negative or its root cannot be decided."""
+    from .run_tower import RunTower, sqrt_exact
+    from .tower_numbers import is_tower
+    s, c = _factor(f, sign)
+    b = -s * sign
     disc = b * b - c * 4
     if disc.sign() < 0:
         return None
     try:
-        w = sqrt_exact(disc, tower)
+        w = sqrt_exact(disc, s.tower if is_tower(s) else RunTower())
     except ValueError:
         return None
     return ((-b - w) / 2, (-b + w) / 2)
@@ -160,9 +160,13 @@ def quartic_root(f, lo, hi):
         split = _split(tuple(f))
         if split is None:
             return None
-        shift, s, cp, cm, _ = split
+        shift = split[0]
         candidates = []
-        for sign, c in ((1, cp), (-1, cm)):
+        for sign in (1, -1):
+            factor = _factor(tuple(f), sign)
+            if factor is None:
+                return None
+            s, c = factor
             # the factor y^2 - sign s y + c that changes sign on the interval holds the root
             ends = [(y * y - s * sign * y + c).sign() for y in (lo_q + shift, hi_q + shift)]
             if ends[0] * ends[1] < 0:
