@@ -31,9 +31,11 @@ non-constant one is never a multiquadratic number, and ``g(alpha) = 0`` iff ``f 
   strictly between ``K`` and it (the stabiliser of a root, S3 or C3, is maximal), so
   ``sqrt q`` is not in ``K(alpha)`` and ``[K'(alpha):K'] = 4``; the group over ``K'`` is
   again S4 or A4 (index at most 2), so the argument repeats.
-* other even degrees, and quartics with a reducible resolvent (D4, C4, V4: their roots are
-  nested square roots that :mod:`.tower_numbers` does not build): no exact value
-  (``sided``, as before).
+* quartics with a reducible resolvent (D4, C4, V4): their roots are nested square roots,
+  not numbers of ``K(alpha)`` here; :func:`algebraic_root` hands the factor to
+  :mod:`.quartic_instants` (Ferrari over ``K``: an MQ or a number of a RunTower of at
+  most two levels, checked ``f(root) == 0``; None -- ``sided`` -- when it is not built).
+* other even degrees: no exact value (``sided``, as before).
 
 **Signs**: an Arb ball of ``alpha`` from its rational interval, refined by bisection (signs
 of ``f`` at rationals: an Arb evaluation, exact evaluation when the ball holds 0), and the
@@ -225,8 +227,10 @@ def algebraic_root(p, lo, hi):
     """The root of the square-free ``p`` in ``(lo, hi)`` (rationals, one root of ``p``
     inside, none at the ends), exact: an MQ (a linear factor over K), the factor's
     quadratic root (tower numbers, :func:`.tower_numbers.quadratic_root`), or an
-    :class:`AlgebraicNumber` (a factor of odd degree, or a quartic with an S4 or A4 group);
-    None otherwise (other even degrees, a quartic of group D4, C4 or V4, a norm too big,
+    :class:`AlgebraicNumber` (a factor of odd degree, or a quartic with an S4 or A4 group),
+    or for a quartic of group D4, C4 or V4 a nested radical (an MQ or a tower number,
+    :func:`.quartic_instants.quartic_root`); None otherwise (other even degrees, such a
+    quartic whose root :mod:`.quartic_instants` does not build, a norm too big,
     coefficients that are not multiquadratic: a run's tower numbers)."""
     if not all(isinstance(c, MQ) for c in p):
         return None
