@@ -42,21 +42,15 @@ from __future__ import annotations
 from functools import lru_cache
 
 from ..exact.multiquadratic import MQ
+from .algebraic_instants import _shift, factor_over_k
 from .polyroots import peval, trim
+from .run_tower import RunTower, sqrt_exact
+from .tower_numbers import is_tower, mq_sqrt_any
 
 __all__ = ["quartic_root", "depressed", "resolvent"]
 
 ZERO = MQ()
 ONE = MQ.rational(1)
-
-
-def _shift(p, c) -> tuple:
-    """``p(x + c)`` (Horner)."""
-    from .polyroots import padd, pmul
-    acc: tuple = ()
-    for a in reversed(p):
-        acc = padd(pmul(acc, (c, ONE)), (a,))
-    return acc
 
 
 def depressed(f) -> tuple:
@@ -81,7 +75,6 @@ def _split(f: tuple):
     """``(shift, z, t, q)``: ``f(y - shift)`` depressed, ``z`` a root in ``K`` of its
     resolvent with ``t = z - p > 0``; None when there is none (or the factoring gave
     up)."""
-    from .algebraic_instants import factor_over_k
     p, q, r = depressed(f)
     factors = factor_over_k(trim(resolvent(p, q, r)))
     for h in factors or ():
@@ -96,7 +89,6 @@ def _factor(f: tuple, sign: int):
     (module docstring), ``s = sqrt t`` an MQ or the first level of a RunTower of its own
     (one per factor: the other factor's roots need not enlarge it); None when ``s``
     cannot be decided."""
-    from .run_tower import sqrt_exact
     _, z, t, q = _split(f)
     try:
         s = sqrt_exact(t)
@@ -110,8 +102,6 @@ def _quadratic_roots(f: tuple, sign: int):
     """The two roots ``y`` of :func:`_factor`'s ``y^2 - sign s y + c``, exact, in the
     tower of ``s`` (a new RunTower when ``s`` is an MQ); None when its discriminant is
     negative or its root cannot be decided."""
-    from .run_tower import RunTower, sqrt_exact
-    from .tower_numbers import is_tower
     s, c = _factor(f, sign)
     b = -s * sign
     disc = b * b - c * 4
@@ -126,7 +116,6 @@ def _quadratic_roots(f: tuple, sign: int):
 
 def _biquadratic_candidates(f, lo, hi):
     """``q = 0``: the roots ``y = +-sqrt(u)``, ``u^2 + p u + r = 0``, as ``x``."""
-    from .tower_numbers import mq_sqrt_any
     p, _, r = depressed(f)
     shift = f[3] / 4
     disc = p * p - r * 4
