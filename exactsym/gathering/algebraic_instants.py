@@ -31,9 +31,11 @@ non-constant one is never a multiquadratic number, and ``g(alpha) = 0`` iff ``f 
   strictly between ``K`` and it (the stabiliser of a root, S3 or C3, is maximal), so
   ``sqrt q`` is not in ``K(alpha)`` and ``[K'(alpha):K'] = 4``; the group over ``K'`` is
   again S4 or A4 (index at most 2), so the argument repeats.
-* other even degrees, and quartics with a reducible resolvent (D4, C4, V4: their roots are
-  nested square roots that :mod:`.tower_numbers` does not build): no exact value
-  (``sided``, as before).
+* quartics with a reducible resolvent (D4, C4, V4): their roots are nested square roots,
+  not numbers of ``K(alpha)`` here; :func:`algebraic_root` hands the factor to
+  :mod:`.quartic_instants` (Ferrari over ``K``: an MQ or a number of a RunTower of at
+  most two levels, checked ``f(root) == 0``; None -- ``sided`` -- when it is not built).
+* other even degrees: no exact value (``sided``, as before).
 
 **Signs**: an Arb ball of ``alpha`` from its rational interval, refined by bisection (signs
 of ``f`` at rationals: an Arb evaluation, exact evaluation when the ball holds 0), and the
@@ -134,6 +136,23 @@ def _group_basis(p) -> tuple:
     return tuple(basis), coords
 
 
+def _complete_coords(p, basis, coords: dict) -> None:
+    """Add to ``coords`` every radicand of ``p`` it lacks (products of the basis that
+    ``p``'s own coefficients did not show, met after a shift by ``theta``): the set of
+    ``j`` with ``m * prod_j b_j`` a square."""
+    for m in {m for c in p for m in c.radicands()} - coords.keys():
+        for comb in range(1 << len(basis)):
+            prod = fmpz(m)
+            for j, b in enumerate(basis):
+                if comb >> j & 1:
+                    prod *= b
+            if prod.is_square():
+                coords[m] = comb
+                break
+        else:
+            raise ArithmeticError(f"sqrt({m}) is not in the field of the basis")
+
+
 def _conjugate(x: MQ, j: int, coords: dict) -> MQ:
     return MQ({m: (-c if m != 1 and coords[m] >> j & 1 else c) for m, c in x.terms.items()})
 
@@ -167,6 +186,7 @@ def factor_over_k(p: tuple):
         coords_s.update({b: 1 << j for j, b in enumerate(basis)})
         norm = ps
         for j in range(len(basis)):         # the product over the group, one flip at a time
+            _complete_coords(norm, basis, coords_s)
             norm = _mul(norm, tuple(_conjugate(c, j, coords_s) for c in norm))
         n = _rational_poly(norm)
         if n.gcd(n.derivative()).degree() > 0:
@@ -207,8 +227,10 @@ def algebraic_root(p, lo, hi):
     """The root of the square-free ``p`` in ``(lo, hi)`` (rationals, one root of ``p``
     inside, none at the ends), exact: an MQ (a linear factor over K), the factor's
     quadratic root (tower numbers, :func:`.tower_numbers.quadratic_root`), or an
-    :class:`AlgebraicNumber` (a factor of odd degree, or a quartic with an S4 or A4 group);
-    None otherwise (other even degrees, a quartic of group D4, C4 or V4, a norm too big,
+    :class:`AlgebraicNumber` (a factor of odd degree, or a quartic with an S4 or A4 group),
+    or for a quartic of group D4, C4 or V4 a nested radical (an MQ or a tower number,
+    :func:`.quartic_instants.quartic_root`); None otherwise (other even degrees, such a
+    quartic whose root :mod:`.quartic_instants` does not build, a norm too big,
     coefficients that are not multiquadratic: a run's tower numbers)."""
     if not all(isinstance(c, MQ) for c in p):
         return None
@@ -225,6 +247,9 @@ def algebraic_root(p, lo, hi):
         from .tower_numbers import quadratic_root
         return quadratic_root(f[0], f[1], f[2], lo, hi)
     if not _stable(f):
+        if len(f) == 5:              # D4, C4 or V4: nested square roots (Ferrari over K)
+            from .quartic_instants import quartic_root
+            return quartic_root(f, lo, hi)
         return None
     root = AlgebraicRoot.of(f, fmpq(lo), fmpq(hi))
     return AlgebraicNumber(root, (ZERO, ONE))

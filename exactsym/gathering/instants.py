@@ -48,11 +48,12 @@ of a tower of quadratic extensions (:func:`.polyroots.exact_root_hook`,
 fresh Look (geometry, pattern, the paper layer) runs unchanged.  A root of an
 irreducible factor of degree 3 or more is exact too, a number of ``K(alpha)``
 (:mod:`.algebraic_instants`: the polynomial factored over its coefficients' field K,
-alpha's factor of odd degree or a quartic of group S4 or A4).  Only the other roots (a
-quartic of group D4, C4 or V4, other even degrees, a norm or gcd too large, a radicand
-whose root needs an integer of more than 160 bits that the bounded split of
-:mod:`~exactsym.exact.mq_closure` cannot tell) are seen on both sides only
-(``sided``).  Not enumerated: relations that involve neither C, nor an SEC (R's SEC
+alpha's factor of odd degree or a quartic of group S4 or A4); a root of a quartic
+factor of group D4, C4 or V4 is a nested radical, a tower number again
+(:mod:`.quartic_instants`, Ferrari over K).  Only the other roots (other even degrees,
+a norm or gcd too large, a radicand whose root needs an integer of more than 160 bits
+that the bounded split of :mod:`~exactsym.exact.mq_closure` cannot tell) are seen on
+both sides only (``sided``).  Not enumerated: relations that involve neither C, nor an SEC (R's SEC
 centre, moving or not, included), a symmetry or a contact (the corrected variant's
 distance profiles, for example).
 """

@@ -15,9 +15,11 @@ tower of quadratic extensions over that field (:mod:`.tower_numbers`): a quadrat
 whose discriminant is a square in no multiquadratic field, or a biquadratic quartic
 ``a f^4 + b f^2 + c`` (:func:`exact_root_hook`); or -- a root of a factor of degree 3
 or more -- a number of ``K(alpha)`` (:mod:`.algebraic_instants`: the polynomial factored
-over its coefficients' field K, numbers reduced modulo alpha's factor).  The roots that
-module leaves without a value (a quartic factor of group D4, C4 or V4, other even
-degrees) stay isolated by rationals only (``sided`` instants).
+over its coefficients' field K, numbers reduced modulo alpha's factor); or -- a root of
+a quartic factor of group D4, C4 or V4 -- a nested radical again, an MQ or a number of a
+RunTower (:mod:`.quartic_instants`, Ferrari over K).  The roots those modules leave
+without a value (factors of other even degrees, a root whose square roots cannot be
+decided) stay isolated by rationals only (``sided`` instants).
 
 :func:`separate` refines a list of roots until their intervals are pairwise disjoint,
 merging roots that are equal (same exact value, or a common root of the two polynomials:
@@ -161,8 +163,9 @@ def exact_root_hook(poly, lo, hi):
     relation, for example), whose two factors are solved in turn.  Any other polynomial
     of degree 3 or more is factored over its coefficients' field
     (:func:`.algebraic_instants.algebraic_root`): a root of a factor of degree 3, 5, ...
-    or of a quartic factor of group S4 or A4 is a number of ``K(alpha)``; None for the
-    rest, whose instants are only seen on both sides (``sided``)."""
+    or of a quartic factor of group S4 or A4 is a number of ``K(alpha)``, one of a
+    quartic factor of group D4, C4 or V4 a nested radical (:mod:`.quartic_instants`);
+    None for the rest, whose instants are only seen on both sides (``sided``)."""
     if len(poly) == 2:
         r = _linear_root(poly)
         return r if (r - lo).sign() > 0 and (r - hi).sign() < 0 else None
