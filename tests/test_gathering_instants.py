@@ -424,3 +424,22 @@ def test_joint_look_points_cover_each_stretch_and_each_exact_instant():
     w.robots[1].centre = P(0, 0)
     pts, _ = joint_look_points(far, w)
     assert [p.tau for p in pts] == [Q(F(1, 2))]
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.tuples(st.integers(-40, 40), st.integers(-40, 40), st.integers(-40, 40)),
+       st.integers(1, 9), st.booleans())
+def test_a_quadratic_with_no_root_inside_is_skipped_before_its_square_root(cs, den, rad):
+    """polyroots._none_inside (Sturm's count, exact) says "none" exactly when the
+    isolation finds no root of the quadratic in (0, 1): the early exit changes no list."""
+    from exactsym.gathering.polyroots import _isolate, _none_inside
+    c, b, a = (Q(F(k, den)) for k in cs)
+    if rad:
+        b = b + S2
+    if a.is_zero():
+        return
+    p = (c, b, a)
+    if c.is_zero() or (a + b + c).is_zero():
+        assert not _none_inside(p)
+        return
+    assert _none_inside(p) == (not _isolate(p, fmpq(0), fmpq(1), None))

@@ -116,9 +116,7 @@ def decided_sqrt(x):
     if m == 1:
         root = w
     else:
-        hints = tuple(sorted({abs(int(v)) for c in x.terms.values() for v in (c.p, c.q)}
-                             - {0, 1}))
-        s = _sqrt_rational(fmpq(m), False, hints)
+        s = _sqrt_rational(fmpq(m), False, x)
         if s is None:                           # sqrt(m): m's square-free part unknown
             return None, False
         root = s * w
@@ -190,7 +188,10 @@ def _rational_square_root(q: fmpq):
     return MQ.rational(fmpq(r, den)) if r * r == num * den else None
 
 
-def _sqrt_rational(q: fmpq, big_ok: bool, hints: tuple = ()):
+def _sqrt_rational(q: fmpq, big_ok: bool, source: MQ | None = None):
+    """The root of the rational ``q >= 0`` in the multiquadratic closure, or None when
+    its square-free part is out of reach (more than :data:`RATIONAL_BITS` bits, not
+    ``big_ok``, and the bounded split, cut by the integers of ``source``, cannot tell)."""
     if q < 0:
         return None
     root = _rational_square_root(q)
@@ -198,6 +199,8 @@ def _sqrt_rational(q: fmpq, big_ok: bool, hints: tuple = ()):
         return root
     num, den = int(q.p), int(q.q)
     if not big_ok and (num * den).bit_length() > RATIONAL_BITS:
+        hints = () if source is None else tuple(sorted(
+            {abs(int(v)) for c in source.terms.values() for v in (c.p, c.q)} - {0, 1}))
         split = bounded_squarefree_split(num * den, hints)
         if split is None:
             return None

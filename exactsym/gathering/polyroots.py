@@ -255,7 +255,7 @@ def roots_in_unit(poly, tag=None) -> list:
     if len(p) == 3:
         c, b, a = p
         disc = b * b - a * c * 4
-        if disc.sign() < 0:
+        if disc.sign() < 0 or _none_inside(p):
             return []
         root = _disc_root(disc)
         if root is not None:
@@ -265,6 +265,16 @@ def roots_in_unit(poly, tag=None) -> list:
             return out
     # otherwise: Sturm isolation; a rational root met on the way is divided out
     return _isolate(p, fmpq(0), fmpq(1), tag)
+
+
+def _none_inside(p) -> bool:
+    """Does ``p`` (not zero at 0 nor at 1) have no root in (0, 1)?  Sturm's count, exact:
+    it spares the square root of a discriminant (a bounded factorisation beyond 160
+    bits) for the many relations whose roots lie outside the piece."""
+    if peval(p, fmpq(0)).is_zero() or peval(p, fmpq(1)).is_zero():
+        return False
+    chain = sturm_chain(p)
+    return _variations(chain, fmpq(0)) == _variations(chain, fmpq(1))
 
 
 def _bracket(p, r: MQ, tag) -> Root:
