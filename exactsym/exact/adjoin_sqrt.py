@@ -14,8 +14,9 @@ complete square-root test (:mod:`.cyclotomic_sqrt`): a new level only for a non-
 
 Out of reach (None): a base Q(zeta_M) beyond the tower's a-priori bound
 (:data:`~.cyclotomic_tower.MAX_BASE_DEGREE`), a number field that is not cyclotomic, and a
-root sqrt(m) w whose integer m (more than 160 bits) :func:`~.mq_closure.decided_sqrt`
-cannot split.
+root sqrt(m) w whose integer m has more than 160 bits (:func:`~.mq_closure.decided_sqrt`
+without its bounded split: a root found that way would make the check analyse a moved
+copy of the whole configuration in a larger field, at a cost out of proportion).
 """
 
 from __future__ import annotations
@@ -64,7 +65,7 @@ def adjoin_sqrt(system, numbers, x):
     if isinstance(system, TowerSystem):
         raw = x.v if isinstance(x, TowerElement) else system.coerce(x)
         if isinstance(raw, MQ):
-            root, decided = decided_sqrt(raw)
+            root, decided = decided_sqrt(raw, bounded=False)
             if root is not None:
                 return system, root
             if not decided:
@@ -78,7 +79,7 @@ def adjoin_sqrt(system, numbers, x):
     values = [_as_mq(v) for v in numbers if type(v) is not fmpq]
     if mx is None or any(v is None for v in values):
         return None
-    root, decided = decided_sqrt(mx)
+    root, decided = decided_sqrt(mx, bounded=False)
     if root is not None:
         have = set(getattr(system, "radicands", ()))
         need = _radicands([root]) - {1}

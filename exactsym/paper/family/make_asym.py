@@ -224,8 +224,8 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
     cyclotomic configuration; the configuration after the moves is then written in that
     field).  Out of reach, the move is "not exact" (outcome "undecided", the paper
     layer's ``complete: false``): a base Q(zeta_M) beyond the tower's bound (phi(M) <=
-    192), or a root sqrt(m) w whose integer m (more than 160 bits) has a square-free part
-    that ``mq_closure.bounded_squarefree_split`` cannot tell.
+    192), or a root sqrt(m) w whose integer m has more than 160 bits
+    (``mq_closure.decided_sqrt`` without its bounded split, :mod:`exactsym.exact.adjoin_sqrt`).
     "Move v, epsilon distance" for a single-vertex polygon: along its circle (the robot at
     C moves to a quarter of the smallest radius, towards the first vertex of G_t
     counter-clockwise from the observer's x axis: no invariant direction exists there)."""
