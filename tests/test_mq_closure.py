@@ -84,3 +84,12 @@ def test_hints_cut_what_ecm_would_not_find():
     assert (s, m) == (BIG2, 10 * BIG1)
     # a wrong hint (not a divisor) changes nothing
     assert bounded_squarefree_split(n, (BIG1 + 2,)) is None
+
+
+def test_without_the_split_a_large_root_is_undecided():
+    # the paper layer's MakeAsym move (adjoin_sqrt) asks without the bounded split
+    m = 6 * BIG1
+    x = (3 + S2) ** 2 * m
+    assert decided_sqrt(x, bounded=False) == (None, False)
+    root, decided = decided_sqrt(x)
+    assert decided and root * root == x
