@@ -207,10 +207,10 @@ def _sqrt_rational(q: fmpq, big_ok: bool, source: MQ | None = None, split: bool 
             return None
         hints = () if source is None else tuple(sorted(
             {abs(int(v)) for c in source.terms.values() for v in (c.p, c.q)} - {0, 1}))
-        split = bounded_squarefree_split(num * den, hints)
-        if split is None:
+        found = bounded_squarefree_split(num * den, hints)
+        if found is None:
             return None
-        s, m = split
+        s, m = found
         return MQ({m: fmpq(s, den)})
     return sqrt_rational(q)
 
