@@ -348,6 +348,19 @@ class Tower:
         self._roots[key] = root
         return root
 
+    def adjoin(self, x):
+        """The generator of a new level for ``x > 0`` (raw value) that the caller has
+        proved a square in no field this tower can reach
+        (:func:`~.mq_closure.decided_sqrt`, over the whole multiquadratic closure): the
+        test of :meth:`sqrt` is not repeated (over many primes it branches 3^k times)."""
+        root = self._roots.get(x)
+        if root is not None:
+            return root
+        self._check_new_level()
+        self.radicands.append(x)
+        root = self._roots[x] = (self.levels, self.zero, self.one)
+        return root
+
     def _rational_sqrt(self, x):
         """The root of a rational x in K_0 without the general test, or None."""
         if isinstance(x, MQ) and x.is_rational():

@@ -116,7 +116,7 @@ def tower_of(radicand: MQ) -> Tower:
     radicand's square roots; the same object for the same radicand.  The caller has
     checked that ``radicand > 0`` has no square root in any multiquadratic field."""
     tower = Tower(_primes_of([radicand]))
-    tower.sqrt(radicand)
+    tower.adjoin(radicand)           # proved a non-square by the caller: no second test
     return tower
 
 
