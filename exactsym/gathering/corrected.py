@@ -70,7 +70,7 @@ from ..exact.multiquadratic import MQ, sqrt_rational
 from . import geometry as g
 from .pattern import Pattern, capacity, recognise, slot
 from .robot import Decision, Move, Readings, radial_point
-from .run_tower import common_tower, epochs_of, sqrt_exact, towers_of
+from .run_tower import snapshot_key, sqrt_exact
 
 ALGORITHMS = ("paper", "corrected")
 
@@ -419,15 +419,12 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
     radial target whose distance is a nested radical is built in that tower
     (:func:`.robot.radial_point`), and decisions are cached per snapshot and per tower
     (numbers of two towers are never compared, not even as cache keys)."""
-    snapshot, _tower = common_tower(tuple(snapshot))
-    towers = towers_of(snapshot)
-    return _decide_corrected((towers, epochs_of(towers), snapshot), readings, unit)
+    return _decide_corrected(snapshot_key(snapshot), readings, unit)
 
 
 @lru_cache(maxsize=4096)
 def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
-    # key = (towers, their epochs, snapshot): the towers (compared by identity) and their
-    # epochs (run_tower.RunHome.scratch) come first
+    # key: run_tower.snapshot_key (towers and epochs first)
     towers, _epochs, snapshot = key
     tower = towers[0] if towers else None
     pts = list(snapshot)

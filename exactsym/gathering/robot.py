@@ -45,7 +45,7 @@ from flint import fmpq
 from . import geometry as g
 from .paper_bridge import paper_decision
 from .pattern import Pattern, recognise, slot
-from .run_tower import common_tower, epochs_of, sqrt_exact, towers_of
+from .run_tower import snapshot_key, sqrt_exact
 
 READINGS = {
     "A1": ("sec-all", "sec-r"),
@@ -128,16 +128,12 @@ def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> De
     into one (:func:`.run_tower.common_tower`); a nested-radical target is built in
     that tower.  Cached per snapshot and per tower: numbers of two towers are never
     compared, not even as cache keys."""
-    snapshot, _tower = common_tower(tuple(snapshot))
-    towers = towers_of(snapshot)
-    return _decide((towers, epochs_of(towers), snapshot), readings, unit)
+    return _decide(snapshot_key(snapshot), readings, unit)
 
 
 @lru_cache(maxsize=4096)
 def _decide(key: tuple, readings: Readings, unit) -> Decision:
-    # key = (towers, their epochs, snapshot): a tuple compares its towers (by identity)
-    # and epochs (run_tower.RunHome.scratch) first, so two
-    # snapshots of different towers are never compared coordinate by coordinate
+    # key: run_tower.snapshot_key (towers and epochs first)
     towers, _epochs, snapshot = key
     tower = towers[0] if towers else None
     pts = list(snapshot)

@@ -54,7 +54,7 @@ from . import geometry as g
 from .tower_numbers import TowerNumber, is_tower, tower_sqrt
 
 __all__ = ["RunTower", "RunHome", "sqrt_exact", "common_tower", "run_tower_for", "home",
-           "home_point", "home_piece", "towers_of", "epochs_of", "instant_in"]
+           "home_point", "home_piece", "towers_of", "snapshot_key", "instant_in"]
 
 
 class RunTower(Tower):
@@ -168,9 +168,14 @@ def towers_of(points) -> tuple:
     return tuple(out)
 
 
-def epochs_of(towers) -> tuple:
-    """The towers' epochs (:meth:`RunHome.scratch`): with the towers, a decision cache key."""
-    return tuple(getattr(t, "epoch", 0) for t in towers)
+def snapshot_key(snapshot) -> tuple:
+    """A decision cache key for ``snapshot``: ``(towers, their epochs, points)``, the
+    points re-homed into one tower first (:func:`common_tower`).  A tuple compares its
+    towers (by identity) and their epochs (:meth:`RunHome.scratch`) first, so points of
+    two towers, or of a tower before and after a scratch, are never compared."""
+    points, _tower = common_tower(tuple(snapshot))
+    towers = towers_of(points)
+    return towers, tuple(getattr(t, "epoch", 0) for t in towers), points
 
 
 def home(x, tower: RunTower):
