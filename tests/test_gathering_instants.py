@@ -430,8 +430,9 @@ def test_joint_look_points_cover_each_stretch_and_each_exact_instant():
 @given(st.tuples(st.integers(-40, 40), st.integers(-40, 40), st.integers(-40, 40)),
        st.integers(1, 9), st.booleans())
 def test_a_quadratic_with_no_root_inside_is_skipped_before_its_square_root(cs, den, rad):
-    """polyroots._none_inside (Sturm's count, exact) says "none" exactly when the
-    isolation finds no root of the quadratic in (0, 1): the early exit changes no list."""
+    """polyroots._none_inside (signs of the ends, the vertex and the discriminant) says
+    "none" exactly when Sturm's isolation finds no root of the quadratic in (0, 1): the
+    early exit changes no list."""
     from exactsym.gathering.polyroots import _isolate, _none_inside
     c, b, a = (Q(F(k, den)) for k in cs)
     if rad:
@@ -439,6 +440,24 @@ def test_a_quadratic_with_no_root_inside_is_skipped_before_its_square_root(cs, d
     if a.is_zero():
         return
     p = (c, b, a)
+    if c.is_zero() or (a + b + c).is_zero():
+        assert not _none_inside(p)
+        return
+    assert _none_inside(p) == (not _isolate(p, fmpq(0), fmpq(1), None))
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.sampled_from([F(-1), F(0), F(1, 3), F(1, 2), F(1), F(3, 2)]),
+       st.sampled_from([F(-1, 2), F(0), F(1, 4), F(1, 2), F(1), F(2)]),
+       st.integers(-3, 3).filter(bool), st.booleans())
+def test_the_quadratic_count_on_ties_at_the_ends_and_double_roots(r1, r2, lead, shift):
+    """Roots placed on the ends, equal to each other, or moved by sqrt 2 / 10: the sign
+    count agrees with Sturm's isolation (double roots included)."""
+    from exactsym.gathering.polyroots import _isolate, _none_inside
+    a = Q(F(lead))
+    s = Q(F(r1 + r2)) + (S2 / 10 if shift else Q(F(0)))
+    p = (a * Q(F(r1 * r2)), -(a * s), a)
+    c, b, _ = p
     if c.is_zero() or (a + b + c).is_zero():
         assert not _none_inside(p)
         return

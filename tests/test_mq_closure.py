@@ -93,3 +93,68 @@ def test_without_the_split_a_large_root_is_undecided():
     assert decided_sqrt(x, bounded=False) == (None, False)
     root, decided = decided_sqrt(x)
     assert decided and root * root == x
+
+
+_PRIMES = (2, 3, 5, 7, 11)
+
+
+def _mq(draw_terms):
+    from exactsym.exact.multiquadratic import MQ
+    from flint import fmpq
+    out = MQ()
+    for (mask, num, den) in draw_terms:
+        m = 1
+        for k, p in enumerate(_PRIMES):
+            if mask >> k & 1:
+                m *= p
+        out = out + MQ({m: fmpq(num, den)})
+    return out
+
+
+_terms = st.lists(st.tuples(st.integers(0, 31), st.integers(-9, 9).filter(bool),
+                            st.integers(1, 6)), min_size=1, max_size=6)
+
+
+@settings(max_examples=120, deadline=None)
+@given(_terms, st.sampled_from([1, 2, 6, 13, 15, 77, 2 * 3 * 5 * 7 * 11 * 13]))
+def test_the_modular_filter_never_refutes_a_root(terms, m):
+    """mq_closure._refuted_modulo on m w^2: a root sqrt(m) w exists, so the filter must
+    not refute it (free), nor w^2 when m = 1 (a root in K itself)."""
+    from exactsym.exact.mq_closure import _refuted_modulo
+    w = _mq(terms)
+    if w.is_zero():
+        return
+    y = w * w * m
+    assert not _refuted_modulo(y, _PRIMES, True)
+    if m == 1:
+        assert not _refuted_modulo(y, _PRIMES, False)
+
+
+@settings(max_examples=80, deadline=None)
+@given(_terms, _terms)
+def test_the_modular_filter_changes_no_answer(t1, t2):
+    """decided_sqrt with and without the filter: the same root, or the same None."""
+    import exactsym.exact.mq_closure as closure
+    y = _mq(t1) * _mq(t1) + _mq(t2)
+    if y.sign() <= 0:
+        return
+    with_filter = decided_sqrt(y)
+    saved = closure._refuted_modulo
+    closure._refuted_modulo = lambda *a: False
+    try:
+        assert decided_sqrt(y) == with_filter
+    finally:
+        closure._refuted_modulo = saved
+
+
+def test_the_modular_filter_refutes_a_non_square():
+    """1 + sqrt 2 + sqrt 3 is no m w^2 (its conjugates have both signs); 3 + 2 sqrt 2 =
+    (1 + sqrt 2)^2 is a square, 3 (3 + 2 sqrt 2) is 3 w^2, a free root."""
+    from exactsym.exact.mq_closure import _refuted_modulo
+    from exactsym.exact.multiquadratic import MQ
+    from flint import fmpq
+    y = MQ({1: fmpq(1), 2: fmpq(1), 3: fmpq(1)})
+    assert _refuted_modulo(y, (2, 3), True)
+    sq = MQ({1: fmpq(3), 2: fmpq(2)})
+    assert not _refuted_modulo(sq, (2,), False)
+    assert not _refuted_modulo(sq * 3, (2,), True)

@@ -268,13 +268,26 @@ def roots_in_unit(poly, tag=None) -> list:
 
 
 def _none_inside(p) -> bool:
-    """Does ``p`` (not zero at 0 nor at 1) have no root in (0, 1)?  Sturm's count, exact:
-    it spares the square root of a discriminant (a bounded factorisation beyond 160
-    bits) for the many relations whose roots lie outside the piece."""
-    if peval(p, fmpq(0)).is_zero() or peval(p, fmpq(1)).is_zero():
+    """Does the quadratic ``p`` have no root in (0, 1)?
+    Decided from signs alone, exactly, with no division: an inverse of a coefficient
+    with a dozen primes in its radicands costs thousands of products (it went through a
+    Sturm chain before), and the check spares the square root of the discriminant (a
+    bounded factorisation beyond 160 bits) for the many relations whose roots lie
+    outside the piece.  With ``p = a t^2 + b t + c``: ends of opposite signs hold one
+    root between them; ends of the sign opposite to ``a`` lie between the two roots;
+    ends of ``a``'s sign hold both roots or none, both exactly when the vertex
+    ``-b / 2a`` lies inside and the discriminant is not negative (a double root there
+    counts as inside)."""
+    c, b, a = p
+    s0, s1 = c.sign(), (a + b + c).sign()
+    if s0 == 0 or s1 == 0 or s0 != s1:
         return False
-    chain = sturm_chain(p)
-    return _variations(chain, fmpq(0)) == _variations(chain, fmpq(1))
+    sa = a.sign()
+    if s0 != sa:
+        return True
+    if (-b).sign() == sa and (a * 2 + b).sign() == sa:
+        return (b * b - a * c * 4).sign() < 0
+    return True
 
 
 def _bracket(p, r: MQ, tag) -> Root:
