@@ -462,3 +462,71 @@ def test_the_quadratic_count_on_ties_at_the_ends_and_double_roots(r1, r2, lead, 
         assert not _none_inside(p)
         return
     assert _none_inside(p) == (not _isolate(p, fmpq(0), fmpq(1), None))
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.tuples(st.integers(-6, 6), st.integers(-6, 6).filter(bool)),
+       st.lists(st.integers(-6, 6), min_size=1, max_size=4), st.booleans(), st.booleans())
+def test_gcd_with_a_linear_factor_is_division_free_and_exact(line, cofactor, divisible, rad):
+    """polyroots.pgcd with a linear argument (the homogeneous evaluation at its root)
+    finds the common factor exactly when Euclid's remainder vanishes."""
+    from exactsym.gathering.polyroots import pdivmod, pgcd, pmul, trim
+    lin = (Q(F(line[0])) + (S2 if rad else Q(F(0))), Q(F(line[1])))
+    other = trim(tuple(Q(F(k)) for k in cofactor))
+    if divisible:
+        other = pmul(lin, other) if other else ()
+    else:
+        other = trim(tuple(c + Q(F(1)) if k == 0 else c for k, c in enumerate(other or (Q(F(0)),))))
+    if len(other) <= 1:
+        return
+    divides = not pdivmod(other, lin)[1]
+    for a, b in ((lin, other), (other, lin)):
+        g = pgcd(a, b)
+        assert (len(g) > 1) == divides
+        if divides:                             # lin up to a non-zero factor
+            assert len(g) == 2 and g[0] * lin[1] == g[1] * lin[0]
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.integers(-5, 5), min_size=1, max_size=3),
+       st.lists(st.integers(-5, 5), min_size=2, max_size=3),
+       st.lists(st.integers(-5, 5), min_size=2, max_size=3), st.booleans())
+def test_the_pseudo_remainder_gcd_finds_a_planted_common_factor(common, u, v, rad):
+    """pgcd(c u, c v) is c up to a factor when u and v are coprime (checked by their
+    resultant-free test: their gcd is a constant), and has c's degree."""
+    from exactsym.gathering.polyroots import pgcd, pmul, trim
+    def poly(ks, shift=False):
+        return trim(tuple(Q(F(k)) + (S2 if shift and i == 0 else Q(F(0)))
+                          for i, k in enumerate(ks)))
+    c, a, b = poly(common, rad), poly(u), poly(v)
+    if not c or len(a) < 2 or len(b) < 2 or len(pgcd(a, b)) > 1:
+        return
+    g = pgcd(pmul(c, a), pmul(c, b))
+    assert len(g) == len(c)
+    # g = lambda c: every cross product of coefficients vanishes
+    assert all((g[i] * c[j] - g[j] * c[i]).is_zero()
+               for i in range(len(c)) for j in range(len(c)))
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.integers(-4, 4), min_size=2, max_size=3),
+       st.lists(st.integers(-4, 4), min_size=2, max_size=3), st.booleans(), st.booleans())
+def test_the_squarefree_filter_never_passes_a_square_factor(u, v, square, rad):
+    """polyroots._surely_squarefree proves square-freeness only: never True for u^2 v,
+    and squarefree() keeps the same distinct roots whether the filter answers or not."""
+    from exactsym.gathering.polyroots import _surely_squarefree, pgcd, pderiv, pmul, trim
+    def poly(ks, shift=False):
+        return trim(tuple(Q(F(k)) + (S2 if shift and i == 0 else Q(F(0)))
+                          for i, k in enumerate(ks)))
+    a, b = poly(u, rad), poly(v)
+    if len(a) < 2 or len(b) < 1:
+        return
+    p = pmul(pmul(a, a), b) if square else pmul(a, b)
+    if len(p) < 3:
+        return
+    if _surely_squarefree(p):
+        assert len(pgcd(p, pderiv(p))) <= 1
+    if square:
+        assert not _surely_squarefree(p)
+    elif len(pgcd(p, pderiv(p))) <= 1:          # small integers: 128 bits decide it
+        assert _surely_squarefree(p)

@@ -387,14 +387,16 @@ def test_I4_fires_inside_a_joint_step_and_holds():
 # -- I3 compares a fresh Look with the plan of the mover's own Look ----------------------
 def test_I3_under_A3_all_asks_for_the_mover_and_its_target():
     from exactsym.gathering.invariants import _names_the_mover
+    from exactsym.gathering.run_tower import RunHome
+    home = RunHome()                                # compares the targets
     a, b, c = P(3, -4), P(1, 1), P(5, 5)
     looked = {0: ("MakeAsym", a), 3: ("leader", b)}                # A3 = all: two movers
-    assert _names_the_mover({0: ("MakeAsym", a), 3: ("leader", b)}, looked, 0)
-    assert _names_the_mover({0: ("MakeAsym", a)}, looked, 0)            # robot 3 arrived
-    assert _names_the_mover({0: ("MakeAsym", a), 2: ("leader", c)}, looked, 0)
-    assert not _names_the_mover({3: ("leader", b)}, looked, 0)          # 0 not named
-    assert not _names_the_mover({0: ("MakeAsym", a), 3: ("leader", c)}, looked, 0)
-    assert not _names_the_mover({5: ("leader", c)}, {5: ("leader", a)}, 5)
+    assert _names_the_mover({0: ("MakeAsym", a), 3: ("leader", b)}, looked, 0, home)
+    assert _names_the_mover({0: ("MakeAsym", a)}, looked, 0, home)            # robot 3 arrived
+    assert _names_the_mover({0: ("MakeAsym", a), 2: ("leader", c)}, looked, 0, home)
+    assert not _names_the_mover({3: ("leader", b)}, looked, 0, home)          # 0 not named
+    assert not _names_the_mover({0: ("MakeAsym", a), 3: ("leader", c)}, looked, 0, home)
+    assert not _names_the_mover({5: ("leader", c)}, {5: ("leader", a)}, 5, home)
 
 
 def test_a_joint_step_of_the_two_movers_one_look_named_is_no_I3_violation():

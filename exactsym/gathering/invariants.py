@@ -164,12 +164,12 @@ class Checker:
         for other in (IDENTITY, MIRROR) + tuple(self.frames):
             if other == frame:
                 continue
-            d2, paths2 = world.snapshot_decision(other)
-            if d2.status == "undecided":
+            d2, theirs = world.fresh_plan(other)
+            agree = None if d2.status == "undecided" else _same_plan(mine, theirs, world)
+            if agree is None:
                 self.undecided_fresh += 1
                 continue
-            theirs = _plan(paths2, d2)
-            if not _same_plan(mine, theirs):
+            if not agree:
                 raise Violation("I9", t, sorted(set(mine) | set(theirs)),
                                 f"a Look in frame {frame.as_list()} plans {_plan_text(mine)}, "
                                 f"one in frame {other.as_list()} plans {_plan_text(theirs)}")
@@ -253,14 +253,15 @@ class Checker:
     def _fresh_look(self, world, i, t, where: str):
         from .world import IDENTITY
         rob = world.robots[i]
-        d, paths = world.snapshot_decision(IDENTITY)
-        if d.status == "undecided":
+        d, plan = world.fresh_plan(IDENTITY)
+        own = {i: (rob.role, rob.target)}
+        agree = None if d.status == "undecided" else (
+            _names_the_mover(plan, self.look_plans.get(i) or own, i, world)
+            if world.readings.A3 == "all" else _same_plan(plan, own, world))
+        if agree is None:
             self.undecided_fresh += 1
             return
-        plan = _plan(paths, d)
-        own = {i: (rob.role, rob.target)}
-        if not (_names_the_mover(plan, self.look_plans.get(i) or own, i)
-                if world.readings.A3 == "all" else _same_plan(plan, own)):
+        if not agree:
             raise Violation("I3", t, sorted(set(plan) | {i}),
                             f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
                             f"Look with robot {i} at {g.fmt_point(rob.pos)}{where} plans "
@@ -356,18 +357,17 @@ class Checker:
         frame, the reflected one (and the extra frames) plan the same movers and leader
         targets (the fresh plans are compared, not the pending moves: that is I3's)."""
         from .world import IDENTITY, MIRROR
-        d0, paths0 = world.snapshot_decision(IDENTITY)
+        d0, mine = world.fresh_plan(IDENTITY)
         if d0.status == "undecided":
             self.undecided_fresh += 1
             return
-        mine = _plan(paths0, d0)
         for other in (MIRROR,) + tuple(self.frames):
-            d, paths = world.snapshot_decision(other)
-            if d.status == "undecided":
+            d, theirs = world.fresh_plan(other)
+            agree = None if d.status == "undecided" else _same_plan(mine, theirs, world)
+            if agree is None:
                 self.undecided_fresh += 1
                 continue
-            theirs = _plan(paths, d)
-            if not _same_plan(mine, theirs):
+            if not agree:
                 at = ", ".join(f"robot {i} at {g.fmt_point(world.robots[i].pos)}"
                                for i in movers)
                 moving = (f"robot {movers[0]} moves" if len(movers) == 1 else
@@ -442,20 +442,26 @@ def _plan(paths, decision) -> dict:
     return out
 
 
-def _same_plan(a: dict, b: dict) -> bool:
+def _same_plan(a: dict, b: dict, world) -> bool | None:
     """Same movers, and the same final target for each, except where either plan starts
     with an epsilon move (MakeAsym, Make_SymToAsym): its sense is the mover's own choice
-    (reading A8) and a fresh Look during it asks for a further epsilon."""
+    (reading A8) and a fresh Look during it asks for a further epsilon.  Targets of two
+    towers are compared in the run's (``world.same_point``); None when that cannot be
+    decided (the Look counts as undecided)."""
     if set(a) != set(b):
         return False
     for r in a:
         (role_a, ta), (role_b, tb) = a[r], b[r]
-        if role_a == role_b == "leader" and ta != tb:
-            return False
+        if role_a == role_b == "leader":
+            try:
+                if not world.same_point(ta, tb):
+                    return False
+            except ValueError:
+                return None
     return True
 
 
-def _names_the_mover(fresh: dict, looked: dict, i: int) -> bool:
+def _names_the_mover(fresh: dict, looked: dict, i: int, world) -> bool | None:
     """I3 for mover ``i`` under A3 = all, where a Look names several movers, each making
     its own move: the fresh plan names ``i`` with the same target, and each robot that
     both plans name the same way (as :func:`_same_plan` compares them).  A further mover
@@ -466,7 +472,7 @@ def _names_the_mover(fresh: dict, looked: dict, i: int) -> bool:
     if i not in fresh:
         return False
     common = set(fresh) & set(looked)
-    return _same_plan({r: fresh[r] for r in common}, {r: looked[r] for r in common})
+    return _same_plan({r: fresh[r] for r in common}, {r: looked[r] for r in common}, world)
 
 
 def _plan_text(plan: dict) -> str:

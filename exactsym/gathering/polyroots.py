@@ -32,7 +32,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from flint import fmpq
+from flint import arb, arb_mat, ctx, fmpq
 
 from ..exact.mq_closure import RATIONAL_BITS, closure_sqrt, decided_sqrt  # noqa: F401
 from ..exact.multiquadratic import MQ
@@ -102,16 +102,78 @@ def pdivmod(p, q) -> tuple:
 
 
 def pgcd(p, q) -> tuple:
+    """A greatest common divisor (up to a non-zero factor; a constant when coprime), by
+    pseudo-remainders and without a division: an inverse of a coefficient with a dozen
+    primes in its radicands costs thousands of products (the corrected variant's n = 30
+    run spent 30 s of one event there).  Once a remainder is linear, the other
+    polynomial vanishes at its root or the two are coprime."""
     p, q = trim(p), trim(q)
+    if len(p) < len(q):
+        p, q = q, p
     while q:
-        p, q = q, pdivmod(p, q)[1]
+        if len(q) == 2 and len(p) > 1:
+            return q if _vanishes_at_root(p, q) else (MQ.rational(1),)
+        p, q = q, _pseudo_remainder(p, q)
     return p
 
 
+def _pseudo_remainder(p, q) -> tuple:
+    """``lc(q)^k p`` modulo ``q`` (``len(p) >= len(q)``), with products only."""
+    r, lead = list(p), q[-1]
+    while len(r) >= len(q) and r:
+        k, top = len(r) - len(q), r[-1]
+        r = [c * lead for c in r]
+        for i, b in enumerate(q):
+            r[i + k] = r[i + k] - top * b
+        r = list(trim(r))
+    return tuple(r)
+
+
+def _vanishes_at_root(p, line) -> bool:
+    """Is ``p`` zero at the root ``-b / a`` of ``line = (b, a)``?  Homogeneously:
+    ``sum_k p_k (-b)^k a^(n-k) == 0`` (n the degree of ``p``, ``a`` non-zero)."""
+    b, a = line
+    n = len(p) - 1
+    acc, pb, pa = ZERO, MQ.rational(1), [MQ.rational(1)]
+    for _ in range(n):
+        pa.append(pa[-1] * a)
+    for k, c in enumerate(p):
+        if not c.is_zero():
+            acc = acc + c * pb * pa[n - k]
+        pb = pb * -b
+    return acc.is_zero()
+
+
 def squarefree(p) -> tuple:
-    """``p`` divided by ``gcd(p, p')``: the same roots, each simple."""
+    """``p`` divided by ``gcd(p, p')``: the same roots, each simple.  Filtered: when an
+    Arb enclosure of the discriminant (the Sylvester determinant of ``p`` and ``p'``)
+    excludes 0, ``p`` is square-free already and no gcd is computed."""
+    if _surely_squarefree(p):
+        return p
     g = pgcd(p, pderiv(p))
     return p if len(g) <= 1 else pdivmod(p, g)[0]
+
+
+def _surely_squarefree(p, prec: int = 128) -> bool:
+    """Does a rigorous enclosure of resultant(p, p') exclude 0?  (Balls of the
+    coefficients, :meth:`to_arb`, and ``arb_mat.det``: a proof when True; False says
+    nothing.)"""
+    n = len(p) - 1
+    if n < 2:
+        return True
+    old = ctx.prec
+    ctx.prec = prec
+    try:
+        top = [c.to_arb(prec) for c in reversed(p)]           # highest degree first
+        dtop = [top[k] * (n - k) for k in range(n)]
+        size = 2 * n - 1
+        rows = [[arb(0)] * k + top + [arb(0)] * (size - k - n - 1) for k in range(n - 1)]
+        rows += [[arb(0)] * k + dtop + [arb(0)] * (size - k - n) for k in range(n)]
+        return not arb_mat(rows).det().contains(0)
+    except (AttributeError, TypeError, ValueError):   # coefficients without balls
+        return False
+    finally:
+        ctx.prec = old
 
 
 def sturm_chain(p) -> list:

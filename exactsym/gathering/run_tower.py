@@ -296,6 +296,16 @@ class RunHome:
             self.tower = RunTower()
         return [home_piece(pc, self.tower) for pc in pieces]
 
+    def same_point(self, a, b) -> bool:
+        """Are the points ``a`` and ``b`` equal?  Compared as they are when their
+        coordinates share a tower (or are MQs); else both are re-homed into the run's
+        tower first (ValueError when that cannot be decided, as in :meth:`path`)."""
+        if len(towers_of((a, b))) <= 1:
+            return a == b
+        if self.tower is None:
+            self.tower = RunTower()
+        return home_point(a, self.tower) == home_point(b, self.tower)
+
     @property
     def levels(self) -> int:
         return 0 if self.tower is None else self.tower.levels

@@ -110,8 +110,7 @@ class _MaxEvents(Exception):
 
 def _status(world: World):
     """``(status, detail)`` of a fresh Look in the world frame when nobody is busy."""
-    d, _ = world.snapshot_decision(IDENTITY)
-    return d
+    return world.fresh_decision(IDENTITY)
 
 
 def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Readings(),
