@@ -1,0 +1,635 @@
+"""Sparse elements of Q(zeta_N) for conductors far beyond a dense field (issue 9).
+
+Why: a polar file with turns 1/999983 and 3/999979 needs Q(zeta_N) with N near 2.6 * 10^14,
+of degree phi(N) near 10^14: no polynomial of that degree can be built.  But each coordinate
+``r cos(2 pi k/N)`` is two roots of unity, and the predicates of the pipeline are short sums
+of products of coordinates.  So an element here is a finite sum ``sum c_e zeta_N^e`` kept as a
+dictionary ``{e mod N: fmpq}``: products convolve supports, conjugation maps e to -e.
+
+This form is *not* canonical (``1 + zeta_p + ... + zeta_p^(p-1) = 0``), and no canonical basis
+is sparse: the Zumbroich basis writes ``zeta_p^0`` as minus p - 1 other roots, a million terms
+for p = 999983.  So equality is decided by an exact zero test (:func:`is_zero_sum`) over the
+prime factorisation of N, and hashing by an l-adic residue that is a ring homomorphism, so
+equal numbers hash alike whatever their representation (:meth:`SparseContext.residue`).
+
+Zero test (the heart; never a float).  Write N = p^a m, gcd(p, m) = 1, and
+E = the idempotent lift of 1 (E = 1 mod p^a, E = 0 mod m), so that w = zeta_N^E is a
+primitive p^a-th root of unity.  An exponent e splits as e = i E + p f with i = e mod p:
+zeta_N^e = w^i * zeta_(N/p)^f, f = (e - i E)/p mod N/p.  Hence
+``x = sum_(i < p) w^i beta_i`` with beta_i in Q(zeta_(N/p)).
+
+* a >= 2: w has minimal polynomial X^p - w^p over Q(zeta_(N/p)) (degree phi(N)/phi(N/p) = p),
+  so 1, w, ..., w^(p-1) are independent: x = 0 iff every beta_i = 0.
+* a = 1: N/p = m and w = zeta_p has minimal polynomial Phi_p over Q(zeta_m) (gcd(p, m) = 1),
+  whose only relation is 1 + w + ... + w^(p-1) = 0: x = 0 iff all p of the beta_i are equal;
+  when fewer than p residues i occur, the missing beta_i are 0, so every beta_i must be 0.
+
+The recursion ends at N = 1, a rational.  Cost: each level partitions the terms; only a = 1
+with all p residues present (small p) subtracts groups.
+
+Sign of a real element: the value is ``sum c_e cos(2 pi e/N)`` (the real part of a real
+number is itself); Arb's ``cos_pi_fmpq`` encloses each cosine of a rational multiple of pi
+with a proven radius, so the sum is a proven ball.  Precision doubles until the ball excludes
+0; after two balls that contain 0 the exact zero test is run once, and a non-zero element
+keeps doubling (its value is not zero, so this ends).
+
+Division: the inverse of a sparse sum is dense in general.  Elements are fractions
+``num / den`` of sparse sums with ``den`` real and non-zero, or ``den`` None for 1; a rational
+divisor is folded into the numerator.  The pipeline divides rarely on the Cartesian path
+(homogeneous SEC centre, pseudo-angles): fractions keep that rare case exact.
+
+Public names: :class:`SparseContext`, :func:`sparse_context`, :class:`SparseCyclotomic`,
+:func:`is_zero_sum`, :data:`MAX_GAUSS_TERMS`.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from functools import lru_cache
+from math import gcd
+
+from flint import arb, ctx, fmpq, fmpz
+
+from .factor import factorization
+from .field import FieldElement, PolyElement, as_fmpq
+from .multiquadratic import MQ
+
+_START_PRECISION = 64
+_MAX_PRECISION = 1 << 20
+#: largest number of roots of unity in the Gauss sum of one square root of a rational
+MAX_GAUSS_TERMS = 2048
+_COS_CACHE_LIMIT = 1 << 16
+
+
+# ---------------------------------------------------------------- the exact zero test
+@lru_cache(maxsize=4096)
+def _peel_order(n: int) -> tuple:
+    """``((p, a), ...)``: the order in which primes are peeled off ``n``: squares first (no
+    group subtraction there), then single primes from the largest (fewer residues occur)."""
+    f = factorization(n) if n > 1 else {}
+    return tuple(sorted(f.items(), key=lambda pa: (pa[1] == 1, -pa[0])))
+
+
+@lru_cache(maxsize=4096)
+def _idempotent(n: int, p: int, a: int) -> int:
+    """E with E = 1 mod p^a and E = 0 mod n / p^a."""
+    q = p ** a
+    m = n // q
+    return (m * pow(m, -1, q)) % n if m > 1 else 1 % n
+
+
+def _split(terms: dict, n: int, p: int, a: int) -> dict:
+    """``{i: {f: c}}``: x = sum_i w^i beta_i with beta_i = sum c zeta_(n/p)^f (zeros dropped)."""
+    e1 = _idempotent(n, p, a)
+    groups: dict = {}
+    for e, c in terms.items():
+        i = e % p
+        f = ((e - i * e1) % n) // p
+        g = groups.get(i)
+        if g is None:
+            groups[i] = {f: c}
+        else:
+            v = g.get(f)
+            if v is None:
+                g[f] = c
+            else:
+                v = v + c
+                if v == 0:
+                    del g[f]
+                else:
+                    g[f] = v
+    return groups
+
+
+def is_zero_sum(terms: dict, n: int) -> bool:
+    """Whether ``sum c * zeta_n^e`` over ``terms = {e: c}`` (e mod n, c rational) is zero."""
+    terms = {e: c for e, c in terms.items() if c != 0}
+    return _zero(terms, n)
+
+
+def _zero(terms: dict, n: int) -> bool:
+    if not terms:
+        return True
+    if len(terms) == 1:
+        return False          # c zeta^e with c != 0
+    if n == 1:
+        return sum(terms.values()) == 0
+    p, a = _peel_order(n)[0]
+    groups = _split(terms, n, p, a)
+    m = n // p
+    if a >= 2 or len(groups) < p:
+        return all(_zero(g, m) for g in groups.values())
+    base = groups[0]
+    for i in range(1, p):
+        diff = dict(groups[i])
+        for f, c in base.items():
+            v = diff.get(f, 0) - c
+            if v == 0:
+                diff.pop(f, None)
+            else:
+                diff[f] = v
+        if not _zero(diff, m):
+            return False
+    return True
+
+
+# ---------------------------------------------------------------- the conductor's context
+def _is_prime(n: int) -> bool:
+    return bool(fmpz(n).is_prime())
+
+
+class SparseContext:
+    """What every element of Q(zeta_N) shares: N, its factorisation, the cosines met so far,
+    and the l-adic embedding used for hashing.
+
+    Hashing: l is the least prime 1 mod N above 2^61, and t_K a primitive N-th root of unity
+    modulo l^K (the Teichmueller lift of g mod l).  zeta_N -> t_K is a ring homomorphism
+    Z_(l)[zeta_N] -> Z/l^K, one embedding Q(zeta_N) -> Q_l read to K digits, so the residue
+    of x in Q_l (or "a pole" when x is not l-integral) does not depend on how x is written:
+    equal numbers hash alike."""
+
+    def __init__(self, n: int):
+        self.n = n
+        self.factors = factorization(n) if n > 1 else {}
+        self.phi = 1
+        for p, a in self.factors.items():
+            self.phi *= (p - 1) * p ** (a - 1)
+        k = (1 << 61) // n + 1
+        while not _is_prime(k * n + 1):
+            k += 1
+        self.ell = ell = k * n + 1
+        h = 2
+        while True:
+            g = pow(h, (ell - 1) // n, ell)
+            if all(pow(g, n // p, ell) != 1 for p in self.factors):
+                break
+            h += 1
+        self.g = g
+        self._lifts: dict = {1: g}
+        self._cos: dict = {}
+
+    # -- l-adic residue (hashing) --------------------------------------------
+    def _lift(self, k: int) -> int:
+        t = self._lifts.get(k)
+        if t is None:
+            mod = self.ell ** k
+            t = self._lifts[k] = pow(self.g, self.ell ** (k - 1), mod)
+        return t
+
+    def _image(self, terms: dict, k: int) -> tuple[int, int]:
+        """``(A(t_k) mod l^k, d)`` with ``terms = A / d``, A integral, d a positive integer."""
+        d = 1
+        for c in terms.values():
+            d = d * int(c.q) // gcd(d, int(c.q))
+        mod = self.ell ** k
+        t = self._lift(k)
+        total = 0
+        for e, c in terms.items():
+            total += int(c.p) * (d // int(c.q)) * pow(t, e, mod)
+        return total % mod, d
+
+    def _valuation(self, v: int, k: int) -> int:
+        """The l-adic valuation of an integer known modulo l^k, capped at k."""
+        if v == 0:
+            return k
+        out = 0
+        while out < k and v % self.ell == 0:
+            v //= self.ell
+            out += 1
+        return out
+
+    def residue(self, num: dict, den: dict | None) -> int:
+        """The residue in F_l of num/den under the embedding, or -1 when it has a pole."""
+        ell = self.ell
+        k = 1
+        while True:
+            mod = ell ** k
+            a, da = self._image(num, k)
+            b, db = self._image(den, k) if den is not None else (1, 1)
+            u, w = a * db % mod, b * da % mod        # x = u / w
+            vw = self._valuation(w, k)
+            if vw < k:
+                vu = self._valuation(u, k)
+                if vu > vw:
+                    return 0
+                if vu < vw:
+                    return -1
+                scale = ell ** vu
+                return (u // scale) * pow(w // scale, -1, ell) % ell
+            k *= 2
+
+    # -- numerics -------------------------------------------------------------
+    def cos_ball(self, e: int, prec: int) -> arb:
+        """A proven ball around cos(2 pi e / N) (working precision ``prec`` set by the caller)."""
+        key = (min(e, self.n - e), prec)
+        ball = self._cos.get(key)
+        if ball is None:
+            if len(self._cos) >= _COS_CACHE_LIMIT:
+                self._cos.clear()
+            ball = self._cos[key] = arb.cos_pi_fmpq(fmpq(2 * key[0], self.n))
+        return ball
+
+    def ball(self, terms: dict, prec: int) -> arb:
+        """A proven ball around the real part of ``sum c zeta^e``."""
+        with ctx.workprec(prec + 16):
+            total = arb(0)
+            for e, c in terms.items():
+                total += self.cos_ball(e, prec) * arb(c)
+            return total
+
+    # -- traces ---------------------------------------------------------------
+    def mean_trace(self, terms: dict) -> fmpq:
+        """Tr(x) / phi(N): for a rational x, x itself.  Tr zeta_N^e = mu(d) phi(N) / phi(d)
+        with d = N / gcd(e, N) the order of zeta_N^e."""
+        total = fmpq(0)
+        for e, c in terms.items():
+            d = self.n // gcd(e, self.n)
+            mu, ph = _mu_phi(d)
+            if mu:
+                total += c * fmpq(mu, ph)
+        return total
+
+    def __repr__(self):
+        return f"SparseContext(N={self.n})"
+
+
+@lru_cache(maxsize=65536)
+def _mu_phi(d: int) -> tuple[int, int]:
+    mu, ph = 1, 1
+    for p, a in (factorization(d).items() if d > 1 else ()):
+        mu = 0 if a > 1 else -mu
+        ph *= (p - 1) * p ** (a - 1)
+    return mu, ph
+
+
+_CONTEXTS: dict = {}
+
+
+def sparse_context(n: int) -> SparseContext:
+    """The one context of conductor n (elements of one context mix by identity)."""
+    found = _CONTEXTS.get(n)
+    if found is None:
+        if len(_CONTEXTS) > 64:
+            _CONTEXTS.clear()
+        found = _CONTEXTS[n] = SparseContext(n)
+    return found
+
+
+# ---------------------------------------------------------------- sparse dictionaries
+def _add(a: dict, b: dict, sign: int = 1) -> dict:
+    out = dict(a)
+    for e, c in b.items():
+        v = out.get(e)
+        if v is None:
+            out[e] = c if sign > 0 else -c
+        else:
+            v = v + c if sign > 0 else v - c
+            if v == 0:
+                del out[e]
+            else:
+                out[e] = v
+    return out
+
+
+def _mul(a: dict, b: dict, n: int) -> dict:
+    if len(a) < len(b):
+        a, b = b, a
+    out: dict = {}
+    for e2, c2 in b.items():
+        for e1, c1 in a.items():
+            e = e1 + e2
+            if e >= n:
+                e -= n
+            v = out.get(e)
+            out[e] = c1 * c2 if v is None else v + c1 * c2
+    return {e: c for e, c in out.items() if c != 0}
+
+
+def _scale(a: dict, q: fmpq) -> dict:
+    return {e: c * q for e, c in a.items()} if q != 0 else {}
+
+
+def _rational_terms(q: fmpq) -> dict:
+    return {0: q} if q != 0 else {}
+
+
+# ---------------------------------------------------------------- the element
+class SparseCyclotomic(FieldElement):
+    """A real number ``num / den`` of Q(zeta_N), num and den sparse sums (den None for 1).
+
+    Immutable by convention; zero test, sign, rationality and hash are computed once."""
+
+    __slots__ = ("ctx", "num", "den", "_zero", "_sign", "_rat", "_hash")
+
+    def __init__(self, context: SparseContext, num: dict, den: dict | None = None):
+        self.ctx = context
+        self.num = num
+        self.den = den
+        self._zero = self._sign = self._rat = self._hash = None
+
+    # -- coercion -------------------------------------------------------------
+    def _coerce(self, other):
+        """``other`` as an element of this context, or None for a foreign type."""
+        if isinstance(other, SparseCyclotomic):
+            if other.ctx is not self.ctx:
+                if other.ctx.n == self.ctx.n:
+                    return SparseCyclotomic(self.ctx, other.num, other.den)
+                raise TypeError("elements of two different number fields do not mix")
+            return other
+        if isinstance(other, (int, fmpz, fmpq, Fraction)):
+            return SparseCyclotomic(self.ctx, _rational_terms(as_fmpq(other)))
+        if isinstance(other, PolyElement):
+            return from_poly_element(self.ctx, other)
+        if isinstance(other, MQ):
+            return from_multiquadratic(self.ctx, other)
+        return None
+
+    # -- arithmetic -----------------------------------------------------------
+    def _new(self, num, den=None):
+        return SparseCyclotomic(self.ctx, num, den)
+
+    def __add__(self, other):
+        o = self._coerce(other)
+        if o is None:
+            return NotImplemented
+        return self._combine(o, 1)
+
+    __radd__ = __add__
+
+    def __sub__(self, other):
+        o = self._coerce(other)
+        if o is None:
+            return NotImplemented
+        return self._combine(o, -1)
+
+    def __rsub__(self, other):
+        o = self._coerce(other)
+        if o is None:
+            return NotImplemented
+        return o._combine(self, -1)
+
+    def _combine(self, o, sign):
+        if self.den is None and o.den is None:
+            return self._new(_add(self.num, o.num, sign))
+        if self.den is o.den:
+            return self._new(_add(self.num, o.num, sign), self.den)
+        n = self.ctx.n
+        a = _mul(self.num, o.den, n) if o.den is not None else self.num
+        b = _mul(o.num, self.den, n) if self.den is not None else o.num
+        den = (_mul(self.den, o.den, n) if self.den is not None and o.den is not None
+               else self.den if self.den is not None else o.den)
+        return self._new(_add(a, b, sign), den)
+
+    def __neg__(self):
+        return self._new({e: -c for e, c in self.num.items()}, self.den)
+
+    def __pos__(self):
+        return self
+
+    def __mul__(self, other):
+        if isinstance(other, (int, fmpq, fmpz)):
+            return self._new(_scale(self.num, as_fmpq(other)), self.den if other else None)
+        o = self._coerce(other)
+        if o is None:
+            return NotImplemented
+        n = self.ctx.n
+        num = _mul(self.num, o.num, n)
+        den = (_mul(self.den, o.den, n) if self.den is not None and o.den is not None
+               else self.den if self.den is not None else o.den)
+        return self._new(num, den if num else None)
+
+    __rmul__ = __mul__
+
+    def inverse(self):
+        if self.is_zero():
+            raise ZeroDivisionError("division by zero")
+        if self.is_rational():
+            return self._new(_rational_terms(1 / self.rational()))
+        den = self.num
+        if len(den) == 1 and 0 in den:                       # a rational numerator
+            return self._new(_scale(self.den or {0: fmpq(1)}, 1 / den[0]))
+        return self._new(dict(self.den) if self.den is not None else {0: fmpq(1)}, den)
+
+    def __truediv__(self, other):
+        if isinstance(other, (int, fmpq, fmpz)):
+            if other == 0:
+                raise ZeroDivisionError("division by zero")
+            return self._new(_scale(self.num, 1 / as_fmpq(other)), self.den)
+        o = self._coerce(other)
+        if o is None:
+            return NotImplemented
+        if o.is_rational():
+            return self / o.rational()
+        return self * o.inverse()
+
+    def __rtruediv__(self, other):
+        o = self._coerce(other)
+        return NotImplemented if o is None else o * self.inverse()
+
+    def _one(self):
+        return self._new({0: fmpq(1)})
+
+    # -- exact tests ----------------------------------------------------------
+    def is_zero(self) -> bool:
+        z = self._zero
+        if z is None:
+            z = self._zero = _zero(self.num, self.ctx.n)
+        return z
+
+    def is_rational(self) -> bool:
+        return self._rational_value() is not None
+
+    def _rational_value(self):
+        r = self._rat
+        if r is None:
+            r = self._rat = self._find_rational()
+        return r if r is not False else None
+
+    def _find_rational(self):
+        """The rational value or False.  For den None, q = Tr(x)/phi(N); for a fraction,
+        x = q forces num = q den, and q = Tr(num den)/Tr(den^2) with Tr(den^2) > 0 (den is
+        real and Q(zeta_N) a CM field, so every conjugate of den is real and non-zero)."""
+        num, den, context = self.num, self.den, self.ctx
+        if not num:
+            return fmpq(0)
+        if den is None:
+            if len(num) == 1:
+                return num.get(0, False)
+            q = context.mean_trace(num)
+            return q if _zero(_add(num, _rational_terms(q), -1), context.n) else False
+        q = context.mean_trace(_mul(num, den, context.n)) / \
+            context.mean_trace(_mul(den, den, context.n))
+        return q if _zero(_add(num, _scale(den, q), -1), context.n) else False
+
+    def rational(self) -> fmpq:
+        r = self._rational_value()
+        if r is None:
+            raise ValueError("not a rational number")
+        return r
+
+    def sign(self) -> int:
+        s = self._sign
+        if s is None:
+            if self.den is None:
+                s = _sign_of(self.ctx, self.num)
+            else:
+                s = _sign_of(self.ctx, self.num)
+                s = s and s * _sign_of(self.ctx, self.den)
+            self._sign = s
+        return s
+
+    def _cmp(self, other):
+        o = self._coerce(other)
+        return None if o is None else (self - o).sign()
+
+    def __eq__(self, other):
+        o = self._coerce(other) if not isinstance(other, SparseCyclotomic) or \
+            other.ctx is not self.ctx else other
+        if o is None:
+            return NotImplemented
+        return (self - o).is_zero()
+
+    def __ne__(self, other):
+        eq = self.__eq__(other)
+        return eq if eq is NotImplemented else not eq
+
+    def __bool__(self):
+        return not self.is_zero()
+
+    def __hash__(self):
+        h = self._hash
+        if h is None:
+            q = self._rational_value()
+            h = self._hash = hash(q) if q is not None else \
+                hash(("sparse-cyclotomic", self.ctx.n, self.residue()))
+        return h
+
+    def residue(self) -> int:
+        """The l-adic residue of :meth:`SparseContext.residue` (equal numbers, equal residue)."""
+        return self.ctx.residue(self.num, self.den)
+
+    def __abs__(self):
+        return -self if self.sign() < 0 else self
+
+    # -- numerics -------------------------------------------------------------
+    def enclosure(self, prec: int = 53) -> arb:
+        """A proven ball around the value (filters and drawing only)."""
+        ball = self.ctx.ball(self.num, prec)
+        if self.den is not None:
+            with ctx.workprec(prec + 16):
+                ball = ball / self.ctx.ball(self.den, prec)
+        return ball
+
+    def __float__(self):
+        return float(self.enclosure(53).mid())
+
+    def text(self) -> str:
+        from .sparse_text import sparse_text
+        return sparse_text(self)
+
+    def __repr__(self):
+        return f"SparseCyclotomic({self.text()} in Q(zeta_{self.ctx.n}))"
+
+
+def _sign_of(context: SparseContext, terms: dict) -> int:
+    """Certified sign of the real number sum c zeta^e (see the module docstring)."""
+    if not terms:
+        return 0
+    if len(terms) == 1 and 0 in terms:
+        c = terms[0]
+        return (c > 0) - (c < 0)
+    prec, straddles = _START_PRECISION, 0
+    while prec <= _MAX_PRECISION:
+        ball = context.ball(terms, prec)
+        if ball > 0:
+            return 1
+        if ball < 0:
+            return -1
+        straddles += 1
+        if straddles == 2 and _zero(terms, context.n):
+            return 0
+        prec *= 2
+    raise ArithmeticError("sign undecided at the precision limit: a non-zero sparse sum "
+                          "evaluated as zero (bug in the enclosure)")
+
+
+# ---------------------------------------------------------------- construction
+def root_of_unity(context: SparseContext, e: int) -> SparseCyclotomic:
+    return SparseCyclotomic(context, {e % context.n: fmpq(1)})
+
+
+def cos_turn(context: SparseContext, turn: fmpq) -> SparseCyclotomic:
+    """cos(2 pi turn) = (zeta^k + zeta^-k)/2, k = turn N (the turn's denominator divides N)."""
+    k = turn * context.n
+    if k.q != 1:
+        raise ValueError(f"turn {turn} is not in Q(zeta_{context.n})")
+    k = int(k.p) % context.n
+    half = fmpq(1, 2)
+    if k == (-k) % context.n:                  # cos 0 = 1, cos pi = -1: zeta^k itself
+        return SparseCyclotomic(context, {k: fmpq(1)})
+    return SparseCyclotomic(context, {k: half, (-k) % context.n: half})
+
+
+def _legendre(a: int, p: int) -> int:
+    r = pow(a, (p - 1) // 2, p)
+    return -1 if r == p - 1 else r
+
+
+def gauss_terms(s: int) -> int:
+    """How many roots of unity the Gauss sum of sqrt(s) has (s squarefree)."""
+    out = 1
+    for p in factorization(s) if s > 1 else ():
+        out *= 2 if p == 2 else p - 1
+    return out
+
+
+def sqrt_rational(context: SparseContext, q: fmpq) -> SparseCyclotomic:
+    """The non-negative square root of the rational q >= 0 as a product of Gauss sums
+    (:func:`.cyclotomic.sqrt_element`, written sparsely); its square is checked exactly."""
+    from .cyclotomic import sqrt_conductor, squarefree_decomposition
+    c, s = squarefree_decomposition(q)
+    if c == 0:
+        return SparseCyclotomic(context, {})
+    n = context.n
+    if n % sqrt_conductor(s):
+        raise ValueError(f"sqrt({s}) is not in Q(zeta_{n})")
+    root = {0: fmpq(1)}
+    for p in (factorization(s) if s > 1 else ()):
+        if p == 2:
+            factor = {n // 8: fmpq(1), (-(n // 8)) % n: fmpq(1)}
+        else:
+            step = n // p
+            factor = {a * step % n: fmpq(_legendre(a, p)) for a in range(1, p)}
+            if p % 4 == 3:
+                factor = _mul(factor, {(-(n // 4)) % n: fmpq(1)}, n)
+        root = _mul(root, factor, n)
+    x = SparseCyclotomic(context, root)
+    if not _zero(_add(_mul(root, root, n), {0: fmpq(s)}, -1), n):
+        raise ArithmeticError(f"Gauss sum for sqrt({s}) is wrong")   # cannot happen
+    if x.sign() < 0:
+        x = -x
+    return x * c
+
+
+def from_poly_element(context: SparseContext, x: PolyElement) -> SparseCyclotomic:
+    """An element of a dense Q(zeta_M), M | N, written sparsely (zeta_M = zeta_N^(N/M))."""
+    m = x.field.conductor
+    if m is None or context.n % m:
+        raise TypeError("elements of two different number fields do not mix")
+    step = context.n // m
+    return SparseCyclotomic(context, {k * step: c for k, c in enumerate(x.poly.coeffs())
+                                      if c != 0})
+
+
+def from_multiquadratic(context: SparseContext, x) -> SparseCyclotomic:
+    """A multiquadratic element (``MQ``) whose square roots Q(zeta_N) holds."""
+    total = SparseCyclotomic(context, {})
+    for m, c in x.terms.items():
+        total = total + (sqrt_rational(context, fmpq(m)) * c if m != 1 else
+                         SparseCyclotomic(context, {0: c}))
+    return total
+
+
+__all__ = ["SparseContext", "sparse_context", "SparseCyclotomic", "is_zero_sum",
+           "cos_turn", "sqrt_rational", "root_of_unity", "gauss_terms", "from_poly_element",
+           "from_multiquadratic", "MAX_GAUSS_TERMS"]
