@@ -511,6 +511,12 @@ class SparseCyclotomic(FieldElement):
     def __abs__(self):
         return -self if self.sign() < 0 else self
 
+    def exact_key(self) -> tuple:
+        """The key of an irrational element for :func:`.ordering.exact_key`: no sparse form
+        is canonical, so the key holds the element behind a wrapper whose equality is the
+        exact zero test and whose hash is the l-adic residue (equal numbers, equal hash)."""
+        return (_SPARSE_TAG, self.ctx.n, self.residue(), _KeyedElement(self))
+
     # -- numerics -------------------------------------------------------------
     def enclosure(self, prec: int = 53) -> arb:
         """A proven ball around the value (filters and drawing only)."""
@@ -529,6 +535,28 @@ class SparseCyclotomic(FieldElement):
 
     def __repr__(self):
         return f"SparseCyclotomic({self.text()} in Q(zeta_{self.ctx.n}))"
+
+
+_SPARSE_TAG = "sparse-cyclotomic"     # no other key of ordering.exact_key starts with it
+
+
+class _KeyedElement:
+    """An element inside a key: equal iff the numbers are equal (exact zero test)."""
+
+    __slots__ = ("x",)
+
+    def __init__(self, x: SparseCyclotomic):
+        self.x = x
+
+    def __eq__(self, other):
+        return isinstance(other, _KeyedElement) and self.x.ctx.n == other.x.ctx.n and \
+            (self.x - other.x).is_zero()
+
+    def __hash__(self):
+        return self.x.residue()
+
+    def __repr__(self):
+        return f"<{self.x.text()}>"
 
 
 def _sign_of(context: SparseContext, terms: dict) -> int:

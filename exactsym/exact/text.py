@@ -107,7 +107,7 @@ def number_text(x) -> str:
     """The configuration-syntax text of an exact number."""
     if not isinstance(x, FieldElement):
         return rational_text(x)
-    if isinstance(x, (MQ, TowerElement)):
+    if isinstance(x, (MQ, TowerElement)) or hasattr(x, "num"):    # or SparseCyclotomic
         return x.text()
     if x.is_rational():
         return rational_text(x.rational())
