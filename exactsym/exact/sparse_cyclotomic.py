@@ -457,6 +457,8 @@ class SparseCyclotomic(FieldElement):
                 return num.get(0, False)
             q = context.mean_trace(num)
             return q if _zero(_add(num, _rational_terms(q), -1), context.n) else False
+        if _moved_by_galois(context, num, den):
+            return False
         q = context.mean_trace(_mul(num, den, context.n)) / \
             context.mean_trace(_mul(den, den, context.n))
         return q if _zero(_add(num, _scale(den, q), -1), context.n) else False
@@ -535,6 +537,33 @@ class SparseCyclotomic(FieldElement):
 
     def __repr__(self):
         return f"SparseCyclotomic({self.text()} in Q(zeta_{self.ctx.n}))"
+
+
+def _conjugate_ball(context: SparseContext, terms: dict, k: int, prec: int) -> arb:
+    """A ball around sigma_k(x) for x = sum c zeta^e: sum c cos(2 pi k e / N)."""
+    n = context.n
+    return context.ball({k * e % n: c for e, c in terms.items()}, prec)
+
+
+def _moved_by_galois(context: SparseContext, num: dict, den: dict) -> bool:
+    """True when some automorphism zeta -> zeta^k provably moves num/den (disjoint balls),
+    so the number is not rational; False decides nothing.  A rational is fixed by every
+    automorphism, and an irrational x of degree d is fixed by a subgroup of index d >= 2,
+    so a few k usually find one (the exact test decides otherwise)."""
+    n, tried, k = context.n, 0, 3
+    x = None
+    while tried < 3 and k < 200:
+        if gcd(k, n) == 1 and k % n not in (1, n - 1):
+            tried += 1
+            if x is None:
+                with ctx.workprec(80):
+                    x = context.ball(num, 64) / context.ball(den, 64)
+            with ctx.workprec(80):
+                y = _conjugate_ball(context, num, k, 64) / _conjugate_ball(context, den, k, 64)
+                if not x.overlaps(y):
+                    return True
+        k += 2
+    return False
 
 
 _SPARSE_TAG = "sparse-cyclotomic"     # no other key of ordering.exact_key starts with it
