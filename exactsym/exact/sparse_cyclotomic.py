@@ -453,8 +453,9 @@ class SparseCyclotomic(FieldElement):
         if not num:
             return fmpq(0)
         if den is None:
-            if len(num) == 1:
-                return num.get(0, False)
+            if len(num) == 1:         # c zeta^e: rational iff zeta^e = +-1
+                (e, c), = num.items()
+                return c if e == 0 else -c if 2 * e == context.n else False
             q = context.mean_trace(num)
             return q if _zero(_add(num, _rational_terms(q), -1), context.n) else False
         if _moved_by_galois(context, num, den):
