@@ -35,6 +35,8 @@ from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 from . import cyclotomic
 from .field import FieldElement, NumberField, PolyElement, as_fmpq
 from .multiquadratic import MQ, sqrt_rational, squarefree_split
+from . import sparse_cyclotomic
+from .sparse_cyclotomic import SparseCyclotomic
 
 
 class RationalSystem:
@@ -177,35 +179,31 @@ class SparseCyclotomicSystem:
     atoms: dict = {}
 
     def __init__(self, conductor: int):
-        from .sparse_cyclotomic import sparse_context
-        self.context = sparse_context(conductor)
+        self.context = sparse_cyclotomic.sparse_context(conductor)
         self.conductor = conductor
         self.name = f"Q(zeta_{conductor})"
         self.degree = self.context.phi
 
     def coerce(self, value):
-        from .sparse_cyclotomic import SparseCyclotomic
         if isinstance(value, SparseCyclotomic):
             return value
         one = SparseCyclotomic(self.context, {0: fmpq(1)})
         return one * value if isinstance(value, FieldElement) else one * as_fmpq(value)
 
     def cos_turn(self, turn: fmpq):
-        from .sparse_cyclotomic import cos_turn
         value = rational_cos_turn(turn)
         if value is not None:
             return self.coerce(value)
-        return cos_turn(self.context, turn)
+        return sparse_cyclotomic.cos_turn(self.context, turn)
 
     def sin_turn(self, turn: fmpq):
         return self.cos_turn(fmpq(1, 4) - turn)
 
     def sqrt(self, q: fmpq):
-        from .sparse_cyclotomic import sqrt_rational
         root = rational_sqrt(q)
         if root is not None:
             return self.coerce(root)
-        return sqrt_rational(self.context, q)
+        return sparse_cyclotomic.sqrt_rational(self.context, q)
 
 
 class FieldSystem:
@@ -309,8 +307,9 @@ MAX_POWER_BITS = 1_000_000
 
 def _height_bits(x) -> int:
     """Bits of the largest numerator or denominator in ``x`` (a rational or field element)."""
-    if isinstance(x, MQ) or hasattr(x, "num"):        # MQ or SparseCyclotomic
-        coeffs = list(x.terms.values() if isinstance(x, MQ) else x.num.values()) or [fmpq(0)]
+    if isinstance(x, (MQ, SparseCyclotomic)):
+        coeffs = list(x.terms.values() if isinstance(x, MQ) else
+                      list(x.num.values()) + list((x.den or {}).values())) or [fmpq(0)]
         return max(int(c.p).bit_length() + int(c.q).bit_length() for c in coeffs)
     if hasattr(x, "tower"):
         from .tower import height_bits
@@ -432,15 +431,16 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
 def _sparse_system(atoms, conductor: int, degree: int):
     """The sparse Q(zeta_N) for cos/sin beyond the dense limit, or FieldTooLargeError (one
     line, before any work) when a square root's Gauss sum would be too long."""
-    from .sparse_cyclotomic import MAX_GAUSS_TERMS, gauss_terms
     for atom in atoms:
         if atom[0] == "sqrt":
             s = cyclotomic.squarefree_decomposition(atom[1])[1]
-            if gauss_terms(s) > MAX_GAUSS_TERMS:
+            terms = sparse_cyclotomic.gauss_terms(s)
+            if terms > sparse_cyclotomic.MAX_GAUSS_TERMS:
                 raise FieldTooLargeError(
                     f"these numbers need the cyclotomic field Q(zeta_{conductor}) of degree "
                     f"{degree}, above the limit {cyclotomic.MAX_DEGREE}, where sqrt({s}) would "
-                    f"be a sum of {gauss_terms(s)} roots of unity (limit {MAX_GAUSS_TERMS})")
+                    f"be a sum of {terms} roots of unity (limit "
+                    f"{sparse_cyclotomic.MAX_GAUSS_TERMS})")
     return SparseCyclotomicSystem(conductor)
 
 
