@@ -6,6 +6,12 @@ of degree phi(N) near 10^14: no polynomial of that degree can be built.  But eac
 of products of coordinates.  So an element here is a finite sum ``sum c_e zeta_N^e`` kept as a
 dictionary ``{e mod N: fmpq}``: products convolve supports, conjugation maps e to -e.
 
+A real element (every coordinate, every number the pipeline makes) is stored as its real part,
+``sum c_e cos(2 pi e/N)`` over representatives 0 <= e <= N/2 (``cos e cos f =
+(cos(e+f) + cos(e-f))/2``): a product of sums of s and t cosines costs s t coefficient
+products, a quarter of the same product written with roots of unity (each cosine is two).
+The zero test reads the cosines back as roots of unity.
+
 This form is *not* canonical (``1 + zeta_p + ... + zeta_p^(p-1) = 0``), and no canonical basis
 is sparse: the Zumbroich basis writes ``zeta_p^0`` as minus p - 1 other roots, a million terms
 for p = 999983.  So equality is decided by an exact zero test (:func:`is_zero_sum`) over the
@@ -133,6 +139,39 @@ def _zero(terms: dict, n: int) -> bool:
     return True
 
 
+def _to_roots(terms: dict, n: int) -> dict:
+    """The cosine form {e: c} = sum c cos(2 pi e/n) as roots of unity: c/2 (z^e + z^-e)."""
+    out: dict = {}
+    for e, c in terms.items():
+        if e == 0 or 2 * e == n:
+            out[e] = out.get(e, 0) + c
+        else:
+            h = c / 2
+            out[e] = out.get(e, 0) + h
+            out[n - e] = out.get(n - e, 0) + h
+    return {e: c for e, c in out.items() if c != 0}
+
+
+def _real_part(terms: dict, n: int) -> dict:
+    """The cosine form of the real part of sum c z^e: the number itself when it is real."""
+    out: dict = {}
+    for e, c in terms.items():
+        e %= n
+        k = min(e, n - e)
+        out[k] = out.get(k, 0) + c
+    return {e: c for e, c in out.items() if c != 0}
+
+
+def _cos_zero(terms: dict, n: int) -> bool:
+    """Whether the cosine form {e: c} is zero."""
+    if not terms:
+        return True
+    if len(terms) == 1:           # c cos(2 pi e/n), 0 <= e <= n/2: zero iff e/n = 1/4
+        (e,) = terms
+        return 4 * e == n
+    return _zero(_to_roots(terms, n), n)
+
+
 # ---------------------------------------------------------------- the conductor's context
 def _is_prime(n: int) -> bool:
     return bool(fmpz(n).is_prime())
@@ -177,16 +216,18 @@ class SparseContext:
         return t
 
     def _image(self, terms: dict, k: int) -> tuple[int, int]:
-        """``(A(t_k) mod l^k, d)`` with ``terms = A / d``, A integral, d a positive integer."""
+        """``(A(t_k) mod l^k, d)`` with ``terms = A / d`` (cosine form: cos(2 pi e/N) maps to
+        (t^e + t^-e)/2, 2 a unit as l is odd), A integral, d a positive integer."""
         d = 1
         for c in terms.values():
             d = d * int(c.q) // gcd(d, int(c.q))
         mod = self.ell ** k
         t = self._lift(k)
+        n = self.n
         total = 0
         for e, c in terms.items():
-            total += int(c.p) * (d // int(c.q)) * pow(t, e, mod)
-        return total % mod, d
+            total += int(c.p) * (d // int(c.q)) * (pow(t, e, mod) + pow(t, n - e, mod))
+        return total * pow(2, -1, mod) % mod, d
 
     def _valuation(self, v: int, k: int) -> int:
         """The l-adic valuation of an integer known modulo l^k, capped at k."""
@@ -230,7 +271,7 @@ class SparseContext:
         return ball
 
     def ball(self, terms: dict, prec: int) -> arb:
-        """A proven ball around the real part of ``sum c zeta^e``."""
+        """A proven ball around ``sum c cos(2 pi e/N)``."""
         with ctx.workprec(prec + 16):
             total = arb(0)
             for e, c in terms.items():
@@ -239,8 +280,9 @@ class SparseContext:
 
     # -- traces ---------------------------------------------------------------
     def mean_trace(self, terms: dict) -> fmpq:
-        """Tr(x) / phi(N): for a rational x, x itself.  Tr zeta_N^e = mu(d) phi(N) / phi(d)
-        with d = N / gcd(e, N) the order of zeta_N^e."""
+        """Tr(x) / phi(N) for x in cosine form (or roots of unity): for a rational x, x
+        itself.  Tr zeta_N^e = mu(d) phi(N) / phi(d) with d = N / gcd(e, N) the order of
+        zeta_N^e, and Tr cos(2 pi e/N) = Tr zeta_N^e (zeta^-e has the same order)."""
         total = fmpq(0)
         for e, c in terms.items():
             d = self.n // gcd(e, self.n)
@@ -292,6 +334,36 @@ def _add(a: dict, b: dict, sign: int = 1) -> dict:
 
 
 def _mul(a: dict, b: dict, n: int) -> dict:
+    """The product of two cosine forms: cos e cos f = (cos(e + f) + cos(e - f))/2, with
+    0 <= e, f <= n/2, so e + f <= n (its representative min(e + f, n - e - f)) and
+    |e - f| <= n/2."""
+    if len(a) < len(b):
+        a, b = b, a
+    out: dict = {}
+    get = out.get
+    half = fmpq(1, 2)
+    for f, d in b.items():
+        if f == 0:
+            for e, c in a.items():
+                v = get(e)
+                out[e] = c * d if v is None else v + c * d
+            continue
+        dh = d * half
+        for e, c in a.items():
+            v = c * dh
+            t = e + f
+            if t + t > n:
+                t = n - t
+            w = get(t)
+            out[t] = v if w is None else w + v
+            t = e - f if e >= f else f - e
+            w = get(t)
+            out[t] = v if w is None else w + v
+    return {e: c for e, c in out.items() if c != 0}
+
+
+def _mul_roots(a: dict, b: dict, n: int) -> dict:
+    """The product of two sums of roots of unity (exponents mod n)."""
     if len(a) < len(b):
         a, b = b, a
     out: dict = {}
@@ -315,7 +387,8 @@ def _rational_terms(q: fmpq) -> dict:
 
 # ---------------------------------------------------------------- the element
 class SparseCyclotomic(FieldElement):
-    """A real number ``num / den`` of Q(zeta_N), num and den sparse sums (den None for 1).
+    """A real number ``num / den`` of Q(zeta_N), num and den sums of cosines
+    ``{e: c}`` = sum c cos(2 pi e/N), 0 <= e <= N/2 (den None for 1).
 
     Immutable by convention; zero test, sign, rationality and hash are computed once."""
 
@@ -433,7 +506,7 @@ class SparseCyclotomic(FieldElement):
     def is_zero(self) -> bool:
         z = self._zero
         if z is None:
-            z = self._zero = _zero(self.num, self.ctx.n)
+            z = self._zero = _cos_zero(self.num, self.ctx.n)
         return z
 
     def is_rational(self) -> bool:
@@ -453,16 +526,15 @@ class SparseCyclotomic(FieldElement):
         if not num:
             return fmpq(0)
         if den is None:
-            if len(num) == 1:         # c zeta^e: rational iff zeta^e = +-1
-                (e, c), = num.items()
-                return c if e == 0 else -c if 2 * e == context.n else False
+            if len(num) == 1 and 0 in num:
+                return num[0]
             q = context.mean_trace(num)
-            return q if _zero(_add(num, _rational_terms(q), -1), context.n) else False
+            return q if _cos_zero(_add(num, _rational_terms(q), -1), context.n) else False
         if _moved_by_galois(context, num, den):
             return False
         q = context.mean_trace(_mul(num, den, context.n)) / \
             context.mean_trace(_mul(den, den, context.n))
-        return q if _zero(_add(num, _scale(den, q), -1), context.n) else False
+        return q if _cos_zero(_add(num, _scale(den, q), -1), context.n) else False
 
     def rational(self) -> fmpq:
         r = self._rational_value()
@@ -541,7 +613,7 @@ class SparseCyclotomic(FieldElement):
 
 
 def _conjugate_ball(context: SparseContext, terms: dict, k: int, prec: int) -> arb:
-    """A ball around sigma_k(x) for x = sum c zeta^e: sum c cos(2 pi k e / N)."""
+    """A ball around sigma_k(x) for x = sum c cos(2 pi e/N): sum c cos(2 pi k e / N)."""
     n = context.n
     return context.ball({k * e % n: c for e, c in terms.items()}, prec)
 
@@ -604,7 +676,7 @@ def _sign_of(context: SparseContext, terms: dict) -> int:
         if ball < 0:
             return -1
         straddles += 1
-        if straddles == 2 and _zero(terms, context.n):
+        if straddles == 2 and _cos_zero(terms, context.n):
             return 0
         prec *= 2
     raise ArithmeticError("sign undecided at the precision limit: a non-zero sparse sum "
@@ -612,20 +684,12 @@ def _sign_of(context: SparseContext, terms: dict) -> int:
 
 
 # ---------------------------------------------------------------- construction
-def root_of_unity(context: SparseContext, e: int) -> SparseCyclotomic:
-    return SparseCyclotomic(context, {e % context.n: fmpq(1)})
-
-
 def cos_turn(context: SparseContext, turn: fmpq) -> SparseCyclotomic:
-    """cos(2 pi turn) = (zeta^k + zeta^-k)/2, k = turn N (the turn's denominator divides N)."""
+    """cos(2 pi turn) = cos(2 pi k/N), k = turn N (the turn's denominator divides N)."""
     k = turn * context.n
     if k.q != 1:
         raise ValueError(f"turn {turn} is not in Q(zeta_{context.n})")
-    k = int(k.p) % context.n
-    half = fmpq(1, 2)
-    if k == (-k) % context.n:                  # cos 0 = 1, cos pi = -1: zeta^k itself
-        return SparseCyclotomic(context, {k: fmpq(1)})
-    return SparseCyclotomic(context, {k: half, (-k) % context.n: half})
+    return SparseCyclotomic(context, _real_part({int(k.p): fmpq(1)}, context.n))
 
 
 def _legendre(a: int, p: int) -> int:
@@ -659,11 +723,11 @@ def sqrt_rational(context: SparseContext, q: fmpq) -> SparseCyclotomic:
             step = n // p
             factor = {a * step % n: fmpq(_legendre(a, p)) for a in range(1, p)}
             if p % 4 == 3:
-                factor = _mul(factor, {(-(n // 4)) % n: fmpq(1)}, n)
-        root = _mul(root, factor, n)
-    x = SparseCyclotomic(context, root)
-    if not _zero(_add(_mul(root, root, n), {0: fmpq(s)}, -1), n):
+                factor = _mul_roots(factor, {(-(n // 4)) % n: fmpq(1)}, n)
+        root = _mul_roots(root, factor, n)
+    if not _zero(_add(_mul_roots(root, root, n), {0: fmpq(s)}, -1), n):
         raise ArithmeticError(f"Gauss sum for sqrt({s}) is wrong")   # cannot happen
+    x = SparseCyclotomic(context, _real_part(root, n))     # real: its real part
     if x.sign() < 0:
         x = -x
     return x * c
@@ -675,8 +739,9 @@ def from_poly_element(context: SparseContext, x: PolyElement) -> SparseCyclotomi
     if m is None or context.n % m:
         raise TypeError("elements of two different number fields do not mix")
     step = context.n // m
-    return SparseCyclotomic(context, {k * step: c for k, c in enumerate(x.poly.coeffs())
-                                      if c != 0})
+    return SparseCyclotomic(context, _real_part({k * step: c for k, c in
+                                                 enumerate(x.poly.coeffs()) if c != 0},
+                                                context.n))
 
 
 def from_multiquadratic(context: SparseContext, x) -> SparseCyclotomic:
@@ -689,5 +754,5 @@ def from_multiquadratic(context: SparseContext, x) -> SparseCyclotomic:
 
 
 __all__ = ["SparseContext", "sparse_context", "SparseCyclotomic", "is_zero_sum",
-           "cos_turn", "sqrt_rational", "root_of_unity", "gauss_terms", "from_poly_element",
+           "cos_turn", "sqrt_rational", "gauss_terms", "from_poly_element",
            "from_multiquadratic", "MAX_GAUSS_TERMS"]
