@@ -4,9 +4,10 @@ Standard library only; shares no code with the solver (exactsym/exact/sparse_cyc
 
 The field is Q(zeta_N) for a conductor N too large for a minimal polynomial (turns 1/999983
 and 3/999979: N near 2.6 * 10^14).  A number is written ``{"e": c, ...}``, meaning
-``sum c cos(2 pi e / N)``: real by construction.  Here it is kept as the sum
-``sum c/2 (zeta^e + zeta^-e)`` of roots of unity, integer coefficients over one denominator.
-The form is not canonical, so:
+``sum c cos(2 pi e / N)``: real by construction.  Here it is kept in that form (0 <= e <= N/2,
+integer coefficients over one denominator; cos e cos f = (cos(e + f) + cos(e - f))/2), and
+read as the roots of unity ``sum c/2 (zeta^e + zeta^-e)`` by the zero test.  The form is not
+canonical, so:
 
 * **Equality** is an exact zero test over the prime factorisation of N (checked: the
   product is N and each factor is prime, by a deterministic Miller-Rabin test).  With
@@ -19,7 +20,9 @@ The form is not canonical, so:
 * **Hash** (sets of points): the residue modulo a prime l = 1 mod N under zeta_N -> g, g of
   order exactly N modulo l (checked), a ring homomorphism Z_(l)[zeta_N] -> F_l; every
   denominator of the certificate's numbers must be prime to l (checked), so products and sums
-  of them are too, and equal numbers have equal residues.
+  of them are too, and equal numbers have equal residues.  The residue of a number read from
+  the certificate is computed from its terms, that of a sum or product from its operands'
+  (the map is a ring homomorphism: the same value, without a power per term).
 * **Sign**: integer interval arithmetic.  pi is enclosed by Machin's formula with each
   truncated term's error counted; cos of an angle in [0, pi] by its Taylor series on the
   interval's ends (every term is increasing in the angle), the alternating tail bounded by
@@ -100,22 +103,39 @@ class SparseField:
         if isinstance(value, dict):
             terms: dict = {}
             for e, c in value.items():
-                e, q = integer(e) % self.n, frac(c)
-                for k in (e, -e % self.n):
-                    terms[k] = terms.get(k, 0) + q / 2
+                e = integer(e) % self.n
+                e = min(e, self.n - e)          # cos(2 pi e/N) = cos(2 pi (N - e)/N)
+                terms[e] = terms.get(e, 0) + frac(c)
             return self.make(terms)
         need(not isinstance(value, list), "a sparse-cyclotomic number is a rational or a map")
         q = frac(value)
         return self.make({0: q})
 
     def make(self, terms: dict) -> "SNum":
+        """From the cosine form with rational coefficients (0 <= e <= N/2)."""
         den = lcm(*(Fraction(c).denominator for c in terms.values())) if terms else 1
         need(den % self.ell != 0, "sparse-cyclotomic: a denominator is divisible by the prime")
-        return SNum(self, {e: int(c * den) for e, c in terms.items() if c}, den)
+        ints = {e: int(c * den) for e, c in terms.items() if c}
+        return SNum(self, ints, den, self.residue(ints, den))
+
+    def residue(self, terms: dict, den: int) -> int:
+        """(sum c (g^e + g^-e)/2) / den modulo l."""
+        ell, g, n = self.ell, self.g, self.n
+        total = 0
+        for e, c in terms.items():
+            total += c * (pow(g, e, ell) + pow(g, n - e, ell))
+        return total * pow(2 * den, -1, ell) % ell
 
     # -- the zero test -----------------------------------------------------------
     def is_zero(self, terms: dict) -> bool:
-        return _zero({e: c for e, c in terms.items() if c}, self.n, self.factors)
+        """Whether sum c cos(2 pi e/N) is 0: as roots of unity, 2 times it is
+        sum c (zeta^e + zeta^-e)."""
+        n, roots = self.n, {}
+        for e, c in terms.items():
+            if c:
+                roots[e] = roots.get(e, 0) + c
+                roots[-e % n] = roots.get(-e % n, 0) + c
+        return _zero({e: c for e, c in roots.items() if c}, n, self.factors)
 
     # -- signs --------------------------------------------------------------------
     def _pi_bounds(self, bits: int) -> tuple[int, int]:
@@ -231,24 +251,27 @@ def _zero(terms: dict, n: int, factors: list) -> bool:
 
 
 class SNum:
-    """(sum c_e zeta_N^e) / den: integer c_e, den > 0 prime to the field's l.  ``==`` is the
-    exact zero test, ``hash`` the residue modulo l (equal numbers, equal residues)."""
-    __slots__ = ("f", "t", "den", "_h")
+    """(sum c_e cos(2 pi e/N)) / den: integer c_e, 0 <= e <= N/2, den > 0 prime to the field's
+    l.  ``==`` is the exact zero test, ``hash`` the residue modulo l (equal numbers, equal
+    residues), carried along sums and products."""
+    __slots__ = ("f", "t", "den", "h")
 
-    def __init__(self, f: SparseField, terms: dict, den: int = 1):
+    def __init__(self, f: SparseField, terms: dict, den: int, h: int):
         g = gcd(den, *terms.values())
         if g != 1:
             terms, den = {e: c // g for e, c in terms.items()}, den // g
-        self.f, self.t, self.den, self._h = f, terms, den, None
+        self.f, self.t, self.den, self.h = f, terms, den, h
 
     def _of(self, o) -> "SNum":
         if isinstance(o, SNum):
             need(o.f is self.f, "numbers of two fields mix")
             return o
         o = Fraction(o)
-        need(o.denominator % self.f.ell != 0,
-             "sparse-cyclotomic: a denominator is divisible by the prime")
-        return SNum(self.f, {0: o.numerator} if o else {}, o.denominator)
+        ell = self.f.ell
+        need(o.denominator % ell != 0, "sparse-cyclotomic: a denominator is divisible by "
+             "the prime")
+        return SNum(self.f, {0: o.numerator} if o else {}, o.denominator,
+                    o.numerator * pow(o.denominator, -1, ell) % ell)
 
     def __add__(self, o):
         o = self._of(o)
@@ -260,21 +283,28 @@ class SNum:
                 out[e] = v
             else:
                 out.pop(e, None)
-        return SNum(self.f, out, a * b)
+        return SNum(self.f, out, a * b, (self.h + o.h) % self.f.ell)
 
     def __mul__(self, o):
+        """cos e cos f = (cos(e + f) + cos(e - f))/2: twice the product has integer terms."""
         o = self._of(o)
         n = self.f.n
         out: dict = {}
         get = out.get
         for e, c in self.t.items():
             for k, d in o.t.items():
-                key = (e + k) % n
-                out[key] = get(key, 0) + c * d
-        return SNum(self.f, {e: c for e, c in out.items() if c}, self.den * o.den)
+                v = c * d
+                t = e + k
+                if t + t > n:
+                    t = n - t
+                out[t] = get(t, 0) + v
+                t = e - k if e >= k else k - e
+                out[t] = get(t, 0) + v
+        return SNum(self.f, {e: c for e, c in out.items() if c}, 2 * self.den * o.den,
+                    self.h * o.h % self.f.ell)
 
     def __neg__(self):
-        return SNum(self.f, {e: -c for e, c in self.t.items()}, self.den)
+        return SNum(self.f, {e: -c for e, c in self.t.items()}, self.den, -self.h % self.f.ell)
 
     def __sub__(self, o):
         return self + (-self._of(o))
@@ -287,16 +317,13 @@ class SNum:
     def __eq__(self, o):
         if not isinstance(o, (SNum, int, Fraction)):
             return False
+        o = self._of(o)
+        if o.h != self.h:                       # different residues: different numbers
+            return False
         return self.f.is_zero((self - o).t)
 
     def __hash__(self):
-        h = self._h
-        if h is None:
-            ell, g, total = self.f.ell, self.f.g, 0
-            for e, c in self.t.items():
-                total += c * pow(g, e, ell)
-            h = self._h = total * pow(self.den, -1, ell) % ell
-        return h
+        return self.h
 
     def sign(self) -> int:
         return self.f.sign(self)

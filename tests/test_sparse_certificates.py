@@ -142,3 +142,26 @@ def test_miller_rabin():
         89, 97]
     assert is_prime(999983) and is_prime(999979) and not is_prime(999983 * 999979)
     assert not is_prime(3215031751)             # a strong pseudoprime to bases 2, 3, 5, 7
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.data(), st.sampled_from([20, 36, 60, 84, 180, 420]))
+def test_checker_numbers_agree_with_the_solver(data, m):
+    """The checker's cosine-form sums and products (its own code) against the solver's:
+    equal numbers, equal residues (hash), the same sign."""
+    from exactsym.certificate import Encoder
+    from exactsym.exact.evaluate import SparseCyclotomicSystem
+    system = SparseCyclotomicSystem(m)
+    field = SparseField({"conductor": str(m),
+                         "factors": [[str(p), a] for p, a in system.context.factors.items()],
+                         "prime": str(system.context.ell), "root": str(system.context.g)})
+    turns = [fmpq(data.draw(st.integers(0, m - 1)), m) for _ in range(3)]
+    xs = [system.cos_turn(t) * data.draw(st.integers(-3, 3)) + fmpq(1, 3) for t in turns]
+    value = xs[0] * xs[1] - xs[2] * xs[2] * 2
+    enc = Encoder(system, xs + [value])
+    a, b, c = (field.num(enc.text(x)) for x in xs)
+    mine = a * b - c * c * 2
+    theirs = field.num(enc.text(value))
+    assert mine == theirs and hash(mine) == hash(theirs)
+    assert mine.sign() == value.sign()
+    assert (mine - 1 == theirs) is False

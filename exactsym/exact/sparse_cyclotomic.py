@@ -239,6 +239,17 @@ class SparseContext:
             out += 1
         return out
 
+    def rho(self, terms: dict) -> int:
+        """The image of the cosine form modulo l, or -1 when a denominator is divisible by l."""
+        ell, g, n = self.ell, self.g, self.n
+        total = 0
+        for e, c in terms.items():
+            q = int(c.q)
+            if q % ell == 0:
+                return -1
+            total += int(c.p) * pow(q, -1, ell) * (pow(g, e, ell) + pow(g, n - e, ell))
+        return total * pow(2, -1, ell) % ell
+
     def residue(self, num: dict, den: dict | None) -> int:
         """The residue in F_l of num/den under the embedding, or -1 when it has a pole."""
         ell = self.ell
@@ -392,13 +403,26 @@ class SparseCyclotomic(FieldElement):
 
     Immutable by convention; zero test, sign, rationality and hash are computed once."""
 
-    __slots__ = ("ctx", "num", "den", "_zero", "_sign", "_rat", "_hash")
+    __slots__ = ("ctx", "num", "den", "_zero", "_sign", "_rat", "_hash", "_rho")
 
-    def __init__(self, context: SparseContext, num: dict, den: dict | None = None):
+    def __init__(self, context: SparseContext, num: dict, den: dict | None = None,
+                 rho: tuple | None = None):
         self.ctx = context
         self.num = num
         self.den = den
         self._zero = self._sign = self._rat = self._hash = None
+        self._rho = rho
+
+    def rho(self) -> tuple[int, int]:
+        """(image of num, image of den) modulo l under zeta_N -> g, -1 where a coefficient's
+        denominator is divisible by l.  Carried along sums and products (a ring
+        homomorphism), so hashing a product of large sums costs no power per term."""
+        r = self._rho
+        if r is None:
+            context = self.ctx
+            r = self._rho = (context.rho(self.num),
+                             1 if self.den is None else context.rho(self.den))
+        return r
 
     # -- coercion -------------------------------------------------------------
     def _coerce(self, other):
@@ -418,8 +442,8 @@ class SparseCyclotomic(FieldElement):
         return None
 
     # -- arithmetic -----------------------------------------------------------
-    def _new(self, num, den=None):
-        return SparseCyclotomic(self.ctx, num, den)
+    def _new(self, num, den=None, rho=None):
+        return SparseCyclotomic(self.ctx, num, den, rho)
 
     def __add__(self, other):
         o = self._coerce(other)
@@ -442,34 +466,51 @@ class SparseCyclotomic(FieldElement):
         return o._combine(self, -1)
 
     def _combine(self, o, sign):
-        if self.den is None and o.den is None:
-            return self._new(_add(self.num, o.num, sign))
-        if self.den is o.den:
-            return self._new(_add(self.num, o.num, sign), self.den)
+        (an, ad), (bn, bd) = self.rho(), o.rho()
+        ell = self.ctx.ell
+        if self.den is o.den:                   # both None, or one denominator
+            rho = (-1 if an < 0 or bn < 0 else (an + sign * bn) % ell, ad)
+            return self._new(_add(self.num, o.num, sign), self.den, rho)
+        rho = (-1 if min(an, ad, bn, bd) < 0 else (an * bd + sign * bn * ad) % ell,
+               -1 if ad < 0 or bd < 0 else ad * bd % ell)
         n = self.ctx.n
         a = _mul(self.num, o.den, n) if o.den is not None else self.num
         b = _mul(o.num, self.den, n) if self.den is not None else o.num
         den = (_mul(self.den, o.den, n) if self.den is not None and o.den is not None
                else self.den if self.den is not None else o.den)
-        return self._new(_add(a, b, sign), den)
+        return self._new(_add(a, b, sign), den, rho)
 
     def __neg__(self):
-        return self._new({e: -c for e, c in self.num.items()}, self.den)
+        rn, rd = self.rho()
+        return self._new({e: -c for e, c in self.num.items()}, self.den,
+                         (-1 if rn < 0 else -rn % self.ctx.ell, rd))
 
     def __pos__(self):
         return self
 
     def __mul__(self, other):
         if isinstance(other, (int, fmpq, fmpz)):
-            return self._new(_scale(self.num, as_fmpq(other)), self.den if other else None)
+            if not other:
+                return self._new({})
+            q = as_fmpq(other)
+            rn, rd = self.rho()
+            rq = self.ctx.rho({0: q})
+            return self._new(_scale(self.num, q), self.den,
+                             (-1 if rn < 0 or rq < 0 else rn * rq % self.ctx.ell, rd))
         o = self._coerce(other)
         if o is None:
             return NotImplemented
         n = self.ctx.n
         num = _mul(self.num, o.num, n)
+        if not num:
+            return self._new({})
         den = (_mul(self.den, o.den, n) if self.den is not None and o.den is not None
                else self.den if self.den is not None else o.den)
-        return self._new(num, den if num else None)
+        (an, ad), (bn, bd) = self.rho(), o.rho()
+        ell = self.ctx.ell
+        rho = (-1 if an < 0 or bn < 0 else an * bn % ell,
+               -1 if ad < 0 or bd < 0 else ad * bd % ell)
+        return self._new(num, den, rho)
 
     __rmul__ = __mul__
 
@@ -487,7 +528,7 @@ class SparseCyclotomic(FieldElement):
         if isinstance(other, (int, fmpq, fmpz)):
             if other == 0:
                 raise ZeroDivisionError("division by zero")
-            return self._new(_scale(self.num, 1 / as_fmpq(other)), self.den)
+            return self * (1 / as_fmpq(other))
         o = self._coerce(other)
         if o is None:
             return NotImplemented
@@ -580,7 +621,12 @@ class SparseCyclotomic(FieldElement):
         return h
 
     def residue(self) -> int:
-        """The l-adic residue of :meth:`SparseContext.residue` (equal numbers, equal residue)."""
+        """The l-adic residue of :meth:`SparseContext.residue` (equal numbers, equal
+        residue): from the carried images when both are l-integral and the denominator's is
+        a unit (then they are the same value), else from the terms."""
+        rn, rd = self.rho()
+        if rn >= 0 and rd > 0:
+            return rn * pow(rd, -1, self.ctx.ell) % self.ctx.ell
         return self.ctx.residue(self.num, self.den)
 
     def __abs__(self):
