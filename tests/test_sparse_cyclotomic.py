@@ -294,3 +294,30 @@ def test_big_turns_metamorphic(tmp_path, shuffle, turn, reflect):
     assert isinstance(config.system, SparseCyclotomicSystem)
     group = symmetry_group(config)
     assert group.name == "C5" and not group.orderable and group.leader is None
+
+
+ASYMMETRIC = [(1, fmpq(0)), (1, fmpq(1, 999983)), (2, fmpq(2, 5)), (3, fmpq(3, 999979)),
+              (1, fmpq(5, 13))]
+
+
+@pytest.mark.parametrize("shuffle, turn, reflect", [(0, fmpq(0), False), (2, fmpq(0), False),
+                                                    (0, fmpq(7, 999983), False),
+                                                    (3, fmpq(1, 999979), True)])
+def test_big_turns_ordering_maps_along(tmp_path, shuffle, turn, reflect):
+    """The issue's asymmetric example (off the origin, so Cartesian in the sparse field) moved
+    by a rotation of a turn near 10^-6, a reflection and a shuffle: C1, and the ordering and
+    the leader are the same robots."""
+    from exactsym.symmetry import symmetry_group
+    order = list(range(len(ASYMMETRIC)))
+    order = order[shuffle:] + order[:shuffle]
+    rows = []
+    for i in order:
+        r, t = ASYMMETRIC[i]
+        t = (-t if reflect else t) + turn
+        rows.append(f'{{ r = "{r}", turn = "{t.p}/{t.q}" }}')
+    config = load(_write(tmp_path, "m.toml", rows))
+    assert isinstance(config.system, SparseCyclotomicSystem)
+    group = symmetry_group(config)
+    assert group.name == "C1" and group.orderable
+    robots = [order[j] for j in group.ordering]     # file indices -> the original robots
+    assert robots == [1, 0, 4, 2, 3] and order[group.leader] == 1
