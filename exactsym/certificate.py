@@ -45,6 +45,8 @@ from .exact.tower import TowerElement
 from .exact.tower_proof import cyclotomic_nonsquare_witness, nonsquare_witness
 
 FORMAT = "exactsym-certificate"
+#: the checker's deterministic Miller-Rabin test (checker_sparse.is_prime) decides below this
+SPARSE_PRIME_LIMIT = 3317044064679887385961981
 VERSION = 1
 
 
@@ -122,6 +124,9 @@ class Encoder:
         context = system.context
         self.field = None
         self.sparse = context
+        if max([context.ell, *context.factors]) >= SPARSE_PRIME_LIMIT:
+            raise CertificateError(f"the checker proves primes below {SPARSE_PRIME_LIMIT} "
+                                   f"only; Q(zeta_{context.n}) needs larger ones")
         for v in values:
             if isinstance(v, SparseCyclotomic):
                 coeffs = list(v.num.values()) + list((v.den or {}).values())

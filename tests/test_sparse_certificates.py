@@ -165,3 +165,20 @@ def test_checker_numbers_agree_with_the_solver(data, m):
     assert mine == theirs and hash(mine) == hash(theirs)
     assert mine.sign() == value.sign()
     assert (mine - 1 == theirs) is False
+
+
+def test_conductors_beyond_the_checker_are_refused_in_one_line(tmp_path):
+    """A turn whose denominator has a prime factor above the checker's Miller-Rabin range:
+    check answers, certify refuses with exit 2 and one line."""
+    from exactsym.cli import main
+    p = 10 ** 25 + 13                     # a prime above 3.3 * 10^24
+    assert checker_is_prime_range(p)
+    path = _file(tmp_path, ['{ r = "1", turn = "0" }', f'{{ r = "2", turn = "1/{p}" }}',
+                            '{ r = "3", turn = "1/3" }'])
+    assert main(["check", path]) == 0
+    assert main(["certify", path, "-o", str(tmp_path / "c.json")]) == 2
+
+
+def checker_is_prime_range(p: int) -> bool:
+    from flint import fmpz
+    return bool(fmpz(p).is_prime()) and p > 3317044064679887385961981
