@@ -48,10 +48,10 @@ Public names: :class:`SparseContext`, :func:`sparse_context`, :class:`SparseCycl
 :func:`is_zero_sum`, :data:`MAX_GAUSS_TERMS`.
 """
 
+
 from __future__ import annotations
 
 from fractions import Fraction
-from functools import lru_cache
 from math import gcd
 
 from flint import arb, ctx, fmpq, fmpz
@@ -59,341 +59,14 @@ from flint import arb, ctx, fmpq, fmpz
 from .factor import factorization
 from .field import FieldElement, PolyElement, as_fmpq
 from .multiquadratic import MQ
+from .sparse_context import SparseContext, sparse_context
+from .sparse_terms import (add_terms, cosines_zero, is_zero_sum, mul_cosines, mul_roots,
+                           rational_terms, real_part, roots_zero, scale_terms)
 
 _START_PRECISION = 64
 _MAX_PRECISION = 1 << 20
 #: largest number of roots of unity in the Gauss sum of one square root of a rational
 MAX_GAUSS_TERMS = 2048
-_COS_CACHE_LIMIT = 1 << 16
-
-
-# ---------------------------------------------------------------- the exact zero test
-@lru_cache(maxsize=4096)
-def _peel_order(n: int) -> tuple:
-    """``((p, a), ...)``: the order in which primes are peeled off ``n``: squares first (no
-    group subtraction there), then single primes from the largest (fewer residues occur)."""
-    f = factorization(n) if n > 1 else {}
-    return tuple(sorted(f.items(), key=lambda pa: (pa[1] == 1, -pa[0])))
-
-
-@lru_cache(maxsize=4096)
-def _idempotent(n: int, p: int, a: int) -> int:
-    """E with E = 1 mod p^a and E = 0 mod n / p^a."""
-    q = p ** a
-    m = n // q
-    return (m * pow(m, -1, q)) % n if m > 1 else 1 % n
-
-
-def _split(terms: dict, n: int, p: int, a: int) -> dict:
-    """``{i: {f: c}}``: x = sum_i w^i beta_i with beta_i = sum c zeta_(n/p)^f (zeros dropped)."""
-    e1 = _idempotent(n, p, a)
-    groups: dict = {}
-    for e, c in terms.items():
-        i = e % p
-        f = ((e - i * e1) % n) // p
-        g = groups.get(i)
-        if g is None:
-            groups[i] = {f: c}
-        else:
-            v = g.get(f)
-            if v is None:
-                g[f] = c
-            else:
-                v = v + c
-                if v == 0:
-                    del g[f]
-                else:
-                    g[f] = v
-    return groups
-
-
-def is_zero_sum(terms: dict, n: int) -> bool:
-    """Whether ``sum c * zeta_n^e`` over ``terms = {e: c}`` (e mod n, c rational) is zero."""
-    terms = {e: c for e, c in terms.items() if c != 0}
-    return _zero(terms, n)
-
-
-def _zero(terms: dict, n: int) -> bool:
-    if not terms:
-        return True
-    if len(terms) == 1:
-        return False          # c zeta^e with c != 0
-    if n == 1:
-        return sum(terms.values()) == 0
-    p, a = _peel_order(n)[0]
-    groups = _split(terms, n, p, a)
-    m = n // p
-    if a >= 2 or len(groups) < p:
-        return all(_zero(g, m) for g in groups.values())
-    base = groups[0]
-    for i in range(1, p):
-        diff = dict(groups[i])
-        for f, c in base.items():
-            v = diff.get(f, 0) - c
-            if v == 0:
-                diff.pop(f, None)
-            else:
-                diff[f] = v
-        if not _zero(diff, m):
-            return False
-    return True
-
-
-def _to_roots(terms: dict, n: int) -> dict:
-    """The cosine form {e: c} = sum c cos(2 pi e/n) as roots of unity: c/2 (z^e + z^-e)."""
-    out: dict = {}
-    for e, c in terms.items():
-        if e == 0 or 2 * e == n:
-            out[e] = out.get(e, 0) + c
-        else:
-            h = c / 2
-            out[e] = out.get(e, 0) + h
-            out[n - e] = out.get(n - e, 0) + h
-    return {e: c for e, c in out.items() if c != 0}
-
-
-def _real_part(terms: dict, n: int) -> dict:
-    """The cosine form of the real part of sum c z^e: the number itself when it is real."""
-    out: dict = {}
-    for e, c in terms.items():
-        e %= n
-        k = min(e, n - e)
-        out[k] = out.get(k, 0) + c
-    return {e: c for e, c in out.items() if c != 0}
-
-
-def _cos_zero(terms: dict, n: int) -> bool:
-    """Whether the cosine form {e: c} is zero."""
-    if not terms:
-        return True
-    if len(terms) == 1:           # c cos(2 pi e/n), 0 <= e <= n/2: zero iff e/n = 1/4
-        (e,) = terms
-        return 4 * e == n
-    return _zero(_to_roots(terms, n), n)
-
-
-# ---------------------------------------------------------------- the conductor's context
-def _is_prime(n: int) -> bool:
-    return bool(fmpz(n).is_prime())
-
-
-class SparseContext:
-    """What every element of Q(zeta_N) shares: N, its factorisation, the cosines met so far,
-    and the l-adic embedding used for hashing.
-
-    Hashing: l is the least prime 1 mod N above 2^61, and t_K a primitive N-th root of unity
-    modulo l^K (the Teichmueller lift of g mod l).  zeta_N -> t_K is a ring homomorphism
-    Z_(l)[zeta_N] -> Z/l^K, one embedding Q(zeta_N) -> Q_l read to K digits, so the residue
-    of x in Q_l (or "a pole" when x is not l-integral) does not depend on how x is written:
-    equal numbers hash alike."""
-
-    def __init__(self, n: int):
-        self.n = n
-        self.factors = factorization(n) if n > 1 else {}
-        self.phi = 1
-        for p, a in self.factors.items():
-            self.phi *= (p - 1) * p ** (a - 1)
-        k = (1 << 61) // n + 1
-        while not _is_prime(k * n + 1):
-            k += 1
-        self.ell = ell = k * n + 1
-        h = 2
-        while True:
-            g = pow(h, (ell - 1) // n, ell)
-            if all(pow(g, n // p, ell) != 1 for p in self.factors):
-                break
-            h += 1
-        self.g = g
-        self._lifts: dict = {1: g}
-        self._cos: dict = {}
-
-    # -- l-adic residue (hashing) --------------------------------------------
-    def _lift(self, k: int) -> int:
-        t = self._lifts.get(k)
-        if t is None:
-            mod = self.ell ** k
-            t = self._lifts[k] = pow(self.g, self.ell ** (k - 1), mod)
-        return t
-
-    def _image(self, terms: dict, k: int) -> tuple[int, int]:
-        """``(A(t_k) mod l^k, d)`` with ``terms = A / d`` (cosine form: cos(2 pi e/N) maps to
-        (t^e + t^-e)/2, 2 a unit as l is odd), A integral, d a positive integer."""
-        d = 1
-        for c in terms.values():
-            d = d * int(c.q) // gcd(d, int(c.q))
-        mod = self.ell ** k
-        t = self._lift(k)
-        n = self.n
-        total = 0
-        for e, c in terms.items():
-            total += int(c.p) * (d // int(c.q)) * (pow(t, e, mod) + pow(t, n - e, mod))
-        return total * pow(2, -1, mod) % mod, d
-
-    def _valuation(self, v: int, k: int) -> int:
-        """The l-adic valuation of an integer known modulo l^k, capped at k."""
-        if v == 0:
-            return k
-        out = 0
-        while out < k and v % self.ell == 0:
-            v //= self.ell
-            out += 1
-        return out
-
-    def rho(self, terms: dict) -> int:
-        """The image of the cosine form modulo l, or -1 when a denominator is divisible by l."""
-        ell, g, n = self.ell, self.g, self.n
-        total = 0
-        for e, c in terms.items():
-            q = int(c.q)
-            if q % ell == 0:
-                return -1
-            total += int(c.p) * pow(q, -1, ell) * (pow(g, e, ell) + pow(g, n - e, ell))
-        return total * pow(2, -1, ell) % ell
-
-    def residue(self, num: dict, den: dict | None) -> int:
-        """The residue in F_l of num/den under the embedding, or -1 when it has a pole."""
-        ell = self.ell
-        k = 1
-        while True:
-            mod = ell ** k
-            a, da = self._image(num, k)
-            b, db = self._image(den, k) if den is not None else (1, 1)
-            u, w = a * db % mod, b * da % mod        # x = u / w
-            vw = self._valuation(w, k)
-            if vw < k:
-                vu = self._valuation(u, k)
-                if vu > vw:
-                    return 0
-                if vu < vw:
-                    return -1
-                scale = ell ** vu
-                return (u // scale) * pow(w // scale, -1, ell) % ell
-            k *= 2
-
-    # -- numerics -------------------------------------------------------------
-    def cos_ball(self, e: int, prec: int) -> arb:
-        """A proven ball around cos(2 pi e / N) (working precision ``prec`` set by the caller)."""
-        key = (min(e, self.n - e), prec)
-        ball = self._cos.get(key)
-        if ball is None:
-            if len(self._cos) >= _COS_CACHE_LIMIT:
-                self._cos.clear()
-            ball = self._cos[key] = arb.cos_pi_fmpq(fmpq(2 * key[0], self.n))
-        return ball
-
-    def ball(self, terms: dict, prec: int) -> arb:
-        """A proven ball around ``sum c cos(2 pi e/N)``."""
-        with ctx.workprec(prec + 16):
-            total = arb(0)
-            for e, c in terms.items():
-                total += self.cos_ball(e, prec) * arb(c)
-            return total
-
-    # -- traces ---------------------------------------------------------------
-    def mean_trace(self, terms: dict) -> fmpq:
-        """Tr(x) / phi(N) for x in cosine form (or roots of unity): for a rational x, x
-        itself.  Tr zeta_N^e = mu(d) phi(N) / phi(d) with d = N / gcd(e, N) the order of
-        zeta_N^e, and Tr cos(2 pi e/N) = Tr zeta_N^e (zeta^-e has the same order)."""
-        total = fmpq(0)
-        for e, c in terms.items():
-            d = self.n // gcd(e, self.n)
-            mu, ph = _mu_phi(d)
-            if mu:
-                total += c * fmpq(mu, ph)
-        return total
-
-    def __repr__(self):
-        return f"SparseContext(N={self.n})"
-
-
-@lru_cache(maxsize=65536)
-def _mu_phi(d: int) -> tuple[int, int]:
-    mu, ph = 1, 1
-    for p, a in (factorization(d).items() if d > 1 else ()):
-        mu = 0 if a > 1 else -mu
-        ph *= (p - 1) * p ** (a - 1)
-    return mu, ph
-
-
-_CONTEXTS: dict = {}
-
-
-def sparse_context(n: int) -> SparseContext:
-    """The one context of conductor n (elements of one context mix by identity)."""
-    found = _CONTEXTS.get(n)
-    if found is None:
-        if len(_CONTEXTS) > 64:
-            _CONTEXTS.clear()
-        found = _CONTEXTS[n] = SparseContext(n)
-    return found
-
-
-# ---------------------------------------------------------------- sparse dictionaries
-def _add(a: dict, b: dict, sign: int = 1) -> dict:
-    out = dict(a)
-    for e, c in b.items():
-        v = out.get(e)
-        if v is None:
-            out[e] = c if sign > 0 else -c
-        else:
-            v = v + c if sign > 0 else v - c
-            if v == 0:
-                del out[e]
-            else:
-                out[e] = v
-    return out
-
-
-def _mul(a: dict, b: dict, n: int) -> dict:
-    """The product of two cosine forms: cos e cos f = (cos(e + f) + cos(e - f))/2, with
-    0 <= e, f <= n/2, so e + f <= n (its representative min(e + f, n - e - f)) and
-    |e - f| <= n/2."""
-    if len(a) < len(b):
-        a, b = b, a
-    out: dict = {}
-    get = out.get
-    half = fmpq(1, 2)
-    for f, d in b.items():
-        if f == 0:
-            for e, c in a.items():
-                v = get(e)
-                out[e] = c * d if v is None else v + c * d
-            continue
-        dh = d * half
-        for e, c in a.items():
-            v = c * dh
-            t = e + f
-            if t + t > n:
-                t = n - t
-            w = get(t)
-            out[t] = v if w is None else w + v
-            t = e - f if e >= f else f - e
-            w = get(t)
-            out[t] = v if w is None else w + v
-    return {e: c for e, c in out.items() if c != 0}
-
-
-def _mul_roots(a: dict, b: dict, n: int) -> dict:
-    """The product of two sums of roots of unity (exponents mod n)."""
-    if len(a) < len(b):
-        a, b = b, a
-    out: dict = {}
-    for e2, c2 in b.items():
-        for e1, c1 in a.items():
-            e = e1 + e2
-            if e >= n:
-                e -= n
-            v = out.get(e)
-            out[e] = c1 * c2 if v is None else v + c1 * c2
-    return {e: c for e, c in out.items() if c != 0}
-
-
-def _scale(a: dict, q: fmpq) -> dict:
-    return {e: c * q for e, c in a.items()} if q != 0 else {}
-
-
-def _rational_terms(q: fmpq) -> dict:
-    return {0: q} if q != 0 else {}
 
 
 # ---------------------------------------------------------------- the element
@@ -434,7 +107,7 @@ class SparseCyclotomic(FieldElement):
                 raise TypeError("elements of two different number fields do not mix")
             return other
         if isinstance(other, (int, fmpz, fmpq, Fraction)):
-            return SparseCyclotomic(self.ctx, _rational_terms(as_fmpq(other)))
+            return SparseCyclotomic(self.ctx, rational_terms(as_fmpq(other)))
         if isinstance(other, PolyElement):
             return from_poly_element(self.ctx, other)
         if isinstance(other, MQ):
@@ -470,15 +143,15 @@ class SparseCyclotomic(FieldElement):
         ell = self.ctx.ell
         if self.den is o.den:                   # both None, or one denominator
             rho = (-1 if an < 0 or bn < 0 else (an + sign * bn) % ell, ad)
-            return self._new(_add(self.num, o.num, sign), self.den, rho)
+            return self._new(add_terms(self.num, o.num, sign), self.den, rho)
         rho = (-1 if min(an, ad, bn, bd) < 0 else (an * bd + sign * bn * ad) % ell,
                -1 if ad < 0 or bd < 0 else ad * bd % ell)
         n = self.ctx.n
-        a = _mul(self.num, o.den, n) if o.den is not None else self.num
-        b = _mul(o.num, self.den, n) if self.den is not None else o.num
-        den = (_mul(self.den, o.den, n) if self.den is not None and o.den is not None
+        a = mul_cosines(self.num, o.den, n) if o.den is not None else self.num
+        b = mul_cosines(o.num, self.den, n) if self.den is not None else o.num
+        den = (mul_cosines(self.den, o.den, n) if self.den is not None and o.den is not None
                else self.den if self.den is not None else o.den)
-        return self._new(_add(a, b, sign), den, rho)
+        return self._new(add_terms(a, b, sign), den, rho)
 
     def __neg__(self):
         rn, rd = self.rho()
@@ -495,16 +168,16 @@ class SparseCyclotomic(FieldElement):
             q = as_fmpq(other)
             rn, rd = self.rho()
             rq = self.ctx.rho({0: q})
-            return self._new(_scale(self.num, q), self.den,
+            return self._new(scale_terms(self.num, q), self.den,
                              (-1 if rn < 0 or rq < 0 else rn * rq % self.ctx.ell, rd))
         o = self._coerce(other)
         if o is None:
             return NotImplemented
         n = self.ctx.n
-        num = _mul(self.num, o.num, n)
+        num = mul_cosines(self.num, o.num, n)
         if not num:
             return self._new({})
-        den = (_mul(self.den, o.den, n) if self.den is not None and o.den is not None
+        den = (mul_cosines(self.den, o.den, n) if self.den is not None and o.den is not None
                else self.den if self.den is not None else o.den)
         (an, ad), (bn, bd) = self.rho(), o.rho()
         ell = self.ctx.ell
@@ -518,10 +191,10 @@ class SparseCyclotomic(FieldElement):
         if self.is_zero():
             raise ZeroDivisionError("division by zero")
         if self.is_rational():
-            return self._new(_rational_terms(1 / self.rational()))
+            return self._new(rational_terms(1 / self.rational()))
         den = self.num
         if len(den) == 1 and 0 in den:                       # a rational numerator
-            return self._new(_scale(self.den or {0: fmpq(1)}, 1 / den[0]))
+            return self._new(scale_terms(self.den or {0: fmpq(1)}, 1 / den[0]))
         return self._new(dict(self.den) if self.den is not None else {0: fmpq(1)}, den)
 
     def __truediv__(self, other):
@@ -547,7 +220,7 @@ class SparseCyclotomic(FieldElement):
     def is_zero(self) -> bool:
         z = self._zero
         if z is None:
-            z = self._zero = _cos_zero(self.num, self.ctx.n)
+            z = self._zero = cosines_zero(self.num, self.ctx.n)
         return z
 
     def is_rational(self) -> bool:
@@ -570,12 +243,12 @@ class SparseCyclotomic(FieldElement):
             if len(num) == 1 and 0 in num:
                 return num[0]
             q = context.mean_trace(num)
-            return q if _cos_zero(_add(num, _rational_terms(q), -1), context.n) else False
+            return q if cosines_zero(add_terms(num, rational_terms(q), -1), context.n) else False
         if _moved_by_galois(context, num, den):
             return False
-        q = context.mean_trace(_mul(num, den, context.n)) / \
-            context.mean_trace(_mul(den, den, context.n))
-        return q if _cos_zero(_add(num, _scale(den, q), -1), context.n) else False
+        q = context.mean_trace(mul_cosines(num, den, context.n)) / \
+            context.mean_trace(mul_cosines(den, den, context.n))
+        return q if cosines_zero(add_terms(num, scale_terms(den, q), -1), context.n) else False
 
     def rational(self) -> fmpq:
         r = self._rational_value()
@@ -722,7 +395,7 @@ def _sign_of(context: SparseContext, terms: dict) -> int:
         if ball < 0:
             return -1
         straddles += 1
-        if straddles == 2 and _cos_zero(terms, context.n):
+        if straddles == 2 and cosines_zero(terms, context.n):
             return 0
         prec *= 2
     raise ArithmeticError("sign undecided at the precision limit: a non-zero sparse sum "
@@ -735,7 +408,7 @@ def cos_turn(context: SparseContext, turn: fmpq) -> SparseCyclotomic:
     k = turn * context.n
     if k.q != 1:
         raise ValueError(f"turn {turn} is not in Q(zeta_{context.n})")
-    return SparseCyclotomic(context, _real_part({int(k.p): fmpq(1)}, context.n))
+    return SparseCyclotomic(context, real_part({int(k.p): fmpq(1)}, context.n))
 
 
 def _legendre(a: int, p: int) -> int:
@@ -769,11 +442,11 @@ def sqrt_rational(context: SparseContext, q: fmpq) -> SparseCyclotomic:
             step = n // p
             factor = {a * step % n: fmpq(_legendre(a, p)) for a in range(1, p)}
             if p % 4 == 3:
-                factor = _mul_roots(factor, {(-(n // 4)) % n: fmpq(1)}, n)
-        root = _mul_roots(root, factor, n)
-    if not _zero(_add(_mul_roots(root, root, n), {0: fmpq(s)}, -1), n):
+                factor = mul_roots(factor, {(-(n // 4)) % n: fmpq(1)}, n)
+        root = mul_roots(root, factor, n)
+    if not roots_zero(add_terms(mul_roots(root, root, n), {0: fmpq(s)}, -1), n):
         raise ArithmeticError(f"Gauss sum for sqrt({s}) is wrong")   # cannot happen
-    x = SparseCyclotomic(context, _real_part(root, n))     # real: its real part
+    x = SparseCyclotomic(context, real_part(root, n))     # real: its real part
     if x.sign() < 0:
         x = -x
     return x * c
@@ -785,7 +458,7 @@ def from_poly_element(context: SparseContext, x: PolyElement) -> SparseCyclotomi
     if m is None or context.n % m:
         raise TypeError("elements of two different number fields do not mix")
     step = context.n // m
-    return SparseCyclotomic(context, _real_part({k * step: c for k, c in
+    return SparseCyclotomic(context, real_part({k * step: c for k, c in
                                                  enumerate(x.poly.coeffs()) if c != 0},
                                                 context.n))
 
