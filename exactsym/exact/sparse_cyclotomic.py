@@ -3,20 +3,20 @@
 Why: a polar file with turns 1/999983 and 3/999979 needs Q(zeta_N) with N near 2.6 * 10^14,
 of degree phi(N) near 10^14: no polynomial of that degree can be built.  But each coordinate
 ``r cos(2 pi k/N)`` is two roots of unity, and the predicates of the pipeline are short sums
-of products of coordinates.  So an element here is a finite sum ``sum c_e zeta_N^e`` kept as a
-dictionary ``{e mod N: fmpq}``: products convolve supports, conjugation maps e to -e.
-
-A real element (every coordinate, every number the pipeline makes) is stored as its real part,
-``sum c_e cos(2 pi e/N)`` over representatives 0 <= e <= N/2 (``cos e cos f =
-(cos(e+f) + cos(e-f))/2``): a product of sums of s and t cosines costs s t coefficient
-products, a quarter of the same product written with roots of unity (each cosine is two).
-The zero test reads the cosines back as roots of unity.
+of products of coordinates.  So an element here is a finite sum of roots of unity, and since
+every number the pipeline makes is real, it is kept as its real part, a dictionary
+``{e: fmpq}`` = ``sum c_e cos(2 pi e/N)`` over representatives 0 <= e <= N/2
+(:mod:`.sparse_terms`; ``cos e cos f = (cos(e+f) + cos(e-f))/2``): a product of sums of s and
+t cosines costs s t coefficient products, a quarter of the same product written with roots of
+unity (each cosine is two).  The zero test reads the cosines back as roots of unity.
+Factorisation, balls, traces and hashing live in the conductor's :mod:`.sparse_context`.
 
 This form is *not* canonical (``1 + zeta_p + ... + zeta_p^(p-1) = 0``), and no canonical basis
 is sparse: the Zumbroich basis writes ``zeta_p^0`` as minus p - 1 other roots, a million terms
 for p = 999983.  So equality is decided by an exact zero test (:func:`is_zero_sum`) over the
 prime factorisation of N, and hashing by an l-adic residue that is a ring homomorphism, so
-equal numbers hash alike whatever their representation (:meth:`SparseContext.residue`).
+equal numbers hash alike whatever their representation (:meth:`SparseContext.residue`; the
+images modulo l are carried along sums and products, :meth:`SparseCyclotomic.rho`).
 
 Zero test (the heart; never a float).  Write N = p^a m, gcd(p, m) = 1, and
 E = the idempotent lift of 1 (E = 1 mod p^a, E = 0 mod m), so that w = zeta_N^E is a
