@@ -39,10 +39,14 @@ from .configuration import Configuration
 from .exact import FieldElement
 from .exact.multiquadratic import MQ
 from .exact.cyclotomic_tower import CyclotomicTower
+from .exact.evaluate import SparseCyclotomicSystem
+from .exact.sparse_cyclotomic import SparseCyclotomic
 from .exact.tower import TowerElement
 from .exact.tower_proof import cyclotomic_nonsquare_witness, nonsquare_witness
 
 FORMAT = "exactsym-certificate"
+#: the checker's deterministic Miller-Rabin test (checker_sparse.is_prime) decides below this
+SPARSE_PRIME_LIMIT = 3317044064679887385961981
 VERSION = 1
 
 
@@ -93,9 +97,12 @@ class Encoder:
 
     def __init__(self, system, values):
         field = getattr(system, "field", None)
-        self.spec = self.radicands = self.tower = None
+        self.spec = self.radicands = self.tower = self.sparse = None
         if all(not isinstance(v, FieldElement) or v.is_rational() for v in values):
             self.field = None                   # everything is rational: no field at all
+            return
+        if isinstance(system, SparseCyclotomicSystem):
+            self._sparse(system, values)        # Q(zeta_N) beyond a minimal polynomial
             return
         if any(isinstance(v, TowerElement) for v in values):
             self._tower(system.tower, values)   # nested radicals: a tower of quadratic fields
@@ -109,6 +116,73 @@ class Encoder:
             self._cyclotomic(field)
         else:
             self._general(field)
+
+    def _sparse(self, system, values):
+        """``{"sparse-cyclotomic": {conductor, factors, prime, root}}`` (checker_sparse): the
+        checker proves the factors prime, the prime l = 1 mod N and the root of order N mod l
+        (its hash), and every denominator prime to l; numbers are {e: c} = sum c cos(2 pi e/N)."""
+        context = system.context
+        self.field = None
+        self.sparse = context
+        if max([context.ell, *context.factors]) >= SPARSE_PRIME_LIMIT:
+            raise CertificateError(f"the checker proves primes below {SPARSE_PRIME_LIMIT} "
+                                   f"only; Q(zeta_{context.n}) needs larger ones")
+        for v in values:
+            if isinstance(v, SparseCyclotomic):
+                coeffs = list(v.num.values()) + list((v.den or {}).values())
+                if any(int(c.q) % context.ell == 0 for c in coeffs):
+                    raise CertificateError("a denominator is divisible by the hashing prime")
+            elif int(fmpq(v).q if not isinstance(v, FieldElement) else v.rational().q) \
+                    % context.ell == 0:
+                raise CertificateError("a denominator is divisible by the hashing prime")
+        self.spec = {"sparse-cyclotomic": {
+            "conductor": str(context.n),
+            "factors": [[str(p), a] for p, a in sorted(context.factors.items())],
+            "prime": str(context.ell), "root": str(context.g)}}
+
+    def _sparse_text(self, x):
+        """A real sparse number as {e: c} = sum c cos(2 pi e/N) (e and N - e merged)."""
+        if not isinstance(x, SparseCyclotomic):
+            return rational_text(x.rational() if isinstance(x, FieldElement) else fmpq(x))
+        if x.den is not None:
+            raise CertificateError("a quotient of sparse cyclotomic numbers cannot be written")
+        n = self.sparse.n
+        out: dict = {}
+        for e, c in x.num.items():
+            k = min(e, n - e) if e else 0
+            out[k] = out.get(k, fmpq(0)) + c
+        out = {k: c for k, c in out.items() if c != 0}
+        if not out:
+            return "0"
+        if list(out) == [0]:
+            return rational_text(out[0])
+        return {str(k): rational_text(c) for k, c in sorted(out.items())}
+
+    def sparse_matrix(self, matrix) -> dict:
+        """``{"matrix": ..., "scale": k}``: a sparse isometry matrix times a common denominator
+        k (the entries are quotients num/den of one den, or rationals)."""
+        entries, scale = self.sparse_homogeneous([e for row in matrix for e in row])
+        return {"matrix": [entries[:2], entries[2:]], "scale": scale}
+
+    def sparse_homogeneous(self, values) -> tuple[list, object]:
+        """(texts of k v for v in values, text of k): k a common denominator of the values
+        (quotients num/den of one den, or plain sums), checked exactly."""
+        one = SparseCyclotomic(self.sparse, {0: fmpq(1)})
+        entries = [one * e for e in values]
+        den = next((e.den for e in entries if e.den is not None), None)
+        scale = SparseCyclotomic(self.sparse, den) if den is not None else one
+        scaled = []
+        for e in entries:
+            if e.den is None:
+                s = e * scale
+            elif e.den == den or SparseCyclotomic(self.sparse, e.den) == scale:
+                s = SparseCyclotomic(self.sparse, e.num)
+            else:
+                s = None
+            if s is None or s != e * scale:     # e = s / scale, exactly
+                raise CertificateError("numbers of a witness have no common denominator")
+            scaled.append(s)
+        return [self._sparse_text(v) for v in scaled], self._sparse_text(scale)
 
     def _square_roots(self, values):
         """The field Q(sqrt p) over the primes p of the radicands (pairwise coprime, none a
@@ -243,6 +317,8 @@ class Encoder:
         return result
 
     def text(self, x):
+        if self.sparse is not None:
+            return self._sparse_text(x)
         if isinstance(self.tower, CyclotomicTower):
             return self._tower_text(x.v if isinstance(x, TowerElement) else
                                     x.rational() if isinstance(x, FieldElement) else fmpq(x))
@@ -366,6 +442,9 @@ def _cartesian_witness(config, group, enc):
     def isometry(iso):
         if iso is None:
             return None
+        if enc.sparse is not None:
+            return {"centre": [enc.text(cx), enc.text(cy)], **enc.sparse_matrix(iso.matrix),
+                    "permutation": list(iso.permutation)}
         return {"centre": [enc.text(cx), enc.text(cy)],
                 "matrix": [[enc.text(e) for e in row] for row in iso.matrix],
                 "permutation": list(iso.permutation)}
@@ -476,8 +555,13 @@ def make_certificate(config: Configuration, group=None, rings=None) -> dict:
         witness = _polar_witness(config, group)
     else:
         witness = _cartesian_witness(config, group, enc)
-        witness["sec"] = {"centre": [enc.text(v) for v in group.centre],
-                          "support": list(rings.sec.support)}
+        if enc.sparse is not None:           # the centre as (X, Y) / k: no sparse quotient
+            centre, scale = enc.sparse_homogeneous(list(group.centre))
+            witness["sec"] = {"centre": centre, "scale": scale,
+                              "support": list(rings.sec.support)}
+        else:
+            witness["sec"] = {"centre": [enc.text(v) for v in group.centre],
+                              "support": list(rings.sec.support)}
     canonical = _canonical(config, group, polar) if config.n > 1 else None
     if canonical is not None:
         witness["canonical"] = canonical

@@ -112,11 +112,16 @@ def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, boo
         need(cx * (n * scale) == sx and cy * (n * scale) == sy,
              f"{name}: the centre is not the centroid of the points")
         (a, b), (c, d) = [[num(v) for v in row] for row in spec["matrix"]]
-        need(a * a + c * c == 1 and b * b + d * d == 1 and a * b + c * d == 0,
+        # "scale": k != 0 when the matrix is [[a, b], [c, d]] / k (a sparse cyclotomic field
+        # has no short quotients): every identity below is multiplied through by k or k^2
+        k = num(spec["scale"]) if field and "scale" in spec else 1
+        need(k != 0, f"{name}: the scale is zero")
+        k2 = k * k
+        need(a * a + c * c == k2 and b * b + d * d == k2 and a * b + c * d == 0,
              f"{name}: the matrix is not orthogonal")
-        need(a * d - b * c == det, f"{name}: the matrix does not have determinant {det}")
-        m = 1 if field else lcm(a.denominator, b.denominator, c.denominator, d.denominator)
-        a, b, c, d = (e * m if field else int(e * m) for e in (a, b, c, d))
+        need(a * d - b * c == det * k2, f"{name}: the matrix does not have determinant {det}")
+        m = k if field else lcm(a.denominator, b.denominator, c.denominator, d.denominator)
+        a, b, c, d = (e if field else int(e * m) for e in (a, b, c, d))
         perm = permutation(spec, n, name)
         for i, (x, y) in enumerate(w):          # m g(p_i) = m p_perm[i], in the w frame
             need((m * w[perm[i]][0], m * w[perm[i]][1]) == (a * x + b * y, c * x + d * y),

@@ -594,6 +594,12 @@ def number_field(spec: dict):
     """The field of a certificate: square roots natively, or Q(theta)."""
     if "tower" in spec:
         return tower_field(spec["tower"])
+    if "sparse-cyclotomic" in spec:             # Q(zeta_N) beyond a minimal polynomial
+        try:
+            from .checker_sparse import SparseField
+        except ImportError:     # run as a lone script: a sibling file
+            from checker_sparse import SparseField
+        return SparseField(spec["sparse-cyclotomic"])
     return SquareRoots(spec) if "radicands" in spec else Field(spec)
 
 

@@ -254,6 +254,10 @@ def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
     sec = witness["sec"]
     xy, scale, num = read                       # the group check's points, times scale
     cx, cy = (num(v) * scale for v in sec["centre"])
+    if field is not None and "scale" in sec:    # c = (X, Y) / k: scale the plane by k != 0
+        k = num(sec["scale"])                   # (k < 0 adds a half turn: a rotation, so
+        need(k != 0, "sec: the scale is zero")  # orders, orientations and distances agree)
+        xy = [(k * x, k * y) for x, y in xy]
     if field is None:                           # all times k more: c has integer coordinates
         k = lcm(cx.denominator, cy.denominator)
         if k > 1:

@@ -10,8 +10,12 @@ configuration once and picks the smallest machinery that holds them all:
 3. nested radicals of square roots: a tower of quadratic extensions over the
    multiquadratic field of the square roots, built lazily (:mod:`.tower`);
 4. nested radicals mixed with cos/sin: the same tower over the real subfield of Q(zeta_M)
-   (:mod:`.cyclotomic_tower`).  (sympy's primitive element, :mod:`.general`, is no longer
-   chosen here; it stays for callers that build Q(theta) from atoms.)
+   (:mod:`.cyclotomic_tower`).
+5. **sparse Q(zeta_N)** when case 2 would need a dense field above
+   :data:`.cyclotomic.MAX_DEGREE` (turns of denominators near 10^6): sums of roots of unity
+   with an exact zero test over N's factorisation (:mod:`.sparse_cyclotomic`).
+(sympy's primitive element, :mod:`.general`, is no longer chosen here; it stays for callers
+that build Q(theta) from atoms.)
 
 Every evaluation error a user can cause (division by zero, the root of a
 negative number, a field too large) is an :class:`ExpressionError` carrying the
@@ -31,6 +35,8 @@ from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 from . import cyclotomic
 from .field import FieldElement, NumberField, PolyElement, as_fmpq
 from .multiquadratic import MQ, sqrt_rational, squarefree_split
+from . import sparse_cyclotomic
+from .sparse_cyclotomic import SparseCyclotomic
 
 
 class RationalSystem:
@@ -163,6 +169,43 @@ class CyclotomicTowerSystem(TowerSystem):
         return super().coerce(value)
 
 
+class SparseCyclotomicSystem:
+    """Q(zeta_N) for a conductor whose dense field is too large (issue 9: turns 1/999983 and
+    3/999979 need N near 2.6 * 10^14): numbers are
+    :class:`~.sparse_cyclotomic.SparseCyclotomic` sums of roots of unity; only cosines, sines
+    and square roots of rationals with small Gauss sums (:data:`MAX_GAUSS_TERMS`) are held."""
+
+    field = None
+    atoms: dict = {}
+
+    def __init__(self, conductor: int):
+        self.context = sparse_cyclotomic.sparse_context(conductor)
+        self.conductor = conductor
+        self.name = f"Q(zeta_{conductor})"
+        self.degree = self.context.phi
+
+    def coerce(self, value):
+        if isinstance(value, SparseCyclotomic):
+            return value
+        one = SparseCyclotomic(self.context, {0: fmpq(1)})
+        return one * value if isinstance(value, FieldElement) else one * as_fmpq(value)
+
+    def cos_turn(self, turn: fmpq):
+        value = rational_cos_turn(turn)
+        if value is not None:
+            return self.coerce(value)
+        return sparse_cyclotomic.cos_turn(self.context, turn)
+
+    def sin_turn(self, turn: fmpq):
+        return self.cos_turn(fmpq(1, 4) - turn)
+
+    def sqrt(self, q: fmpq):
+        root = rational_sqrt(q)
+        if root is not None:
+            return self.coerce(root)
+        return sparse_cyclotomic.sqrt_rational(self.context, q)
+
+
 class FieldSystem:
     """A number field ``field`` with the atoms (square roots, trig values) it holds."""
 
@@ -264,8 +307,9 @@ MAX_POWER_BITS = 1_000_000
 
 def _height_bits(x) -> int:
     """Bits of the largest numerator or denominator in ``x`` (a rational or field element)."""
-    if isinstance(x, MQ):
-        coeffs = list(x.terms.values()) or [fmpq(0)]
+    if isinstance(x, (MQ, SparseCyclotomic)):
+        coeffs = list(x.terms.values() if isinstance(x, MQ) else
+                      list(x.num.values()) + list((x.den or {}).values())) or [fmpq(0)]
         return max(int(c.p).bit_length() + int(c.q).bit_length() for c in coeffs)
     if hasattr(x, "tower"):
         from .tower import height_bits
@@ -373,9 +417,7 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
         if degree <= cyclotomic.MAX_DEGREE:
             return FieldSystem(cyclotomic.cyclotomic_field(conductor))
         if any(atom[0] == "cos" for atom in atoms):
-            raise FieldTooLargeError(
-                f"these numbers need the cyclotomic field Q(zeta_{conductor}) of degree {degree}, "
-                f"above the limit {cyclotomic.MAX_DEGREE}")
+            return _sparse_system(atoms, conductor, degree)
     if all(kind != "cos" for kind, *_ in atoms):   # nested radicals of square roots only
         primes: set = set()
         for atom in atoms:
@@ -384,6 +426,22 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
                 primes.update(int(p) for p, _ in fmpz(m).factor())
         return TowerSystem(primes)
     return _mixed_system(atoms)
+
+
+def _sparse_system(atoms, conductor: int, degree: int):
+    """The sparse Q(zeta_N) for cos/sin beyond the dense limit, or FieldTooLargeError (one
+    line, before any work) when a square root's Gauss sum would be too long."""
+    for atom in atoms:
+        if atom[0] == "sqrt":
+            s = cyclotomic.squarefree_decomposition(atom[1])[1]
+            terms = sparse_cyclotomic.gauss_terms(s)
+            if terms > sparse_cyclotomic.MAX_GAUSS_TERMS:
+                raise FieldTooLargeError(
+                    f"these numbers need the cyclotomic field Q(zeta_{conductor}) of degree "
+                    f"{degree}, above the limit {cyclotomic.MAX_DEGREE}, where sqrt({s}) would "
+                    f"be a sum of {terms} roots of unity (limit "
+                    f"{sparse_cyclotomic.MAX_GAUSS_TERMS})")
+    return SparseCyclotomicSystem(conductor)
 
 
 def _mixed_system(atoms):
@@ -419,5 +477,6 @@ def evaluate_all(exprs: Sequence[Node], turns: Sequence[fmpq] = ()):
 
 
 __all__ = ["RationalSystem", "MultiquadraticSystem", "TowerSystem", "CyclotomicTowerSystem",
+           "SparseCyclotomicSystem",
            "FieldSystem", "number_system", "evaluate", "evaluate_all",
            "rational_cos_turn", "rational_sqrt", "normal_turn", "Fraction"]

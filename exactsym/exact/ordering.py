@@ -14,6 +14,7 @@ from flint import fmpq
 
 from .field import FieldElement, PolyElement
 from .multiquadratic import MQ
+from .sparse_cyclotomic import SparseCyclotomic
 from .tower import TowerElement, key as tower_key
 
 
@@ -31,7 +32,10 @@ def exact_key(x):
     field's power basis, behind a string tag and the field object itself (compared by
     identity), so it can equal neither a rational's pair nor a tuple of other keys nor
     an element of another field.  A tower element (level >= 1, :mod:`.tower`) keys as
-    ``("tower", tower, "level", i, key(a), key(b))``, its canonical form.  (Keying coefficients bare made ``a + b*theta`` equal
+    ``("tower", tower, "level", i, key(a), key(b))``, its canonical form.  A sparse
+    cyclotomic element has no sparse canonical form: it keys as ``("sparse-cyclotomic", N,
+    residue, wrapper)``, the wrapper comparing by the exact zero test
+    (:meth:`~.sparse_cyclotomic.SparseCyclotomic.exact_key`).  (Keying coefficients bare made ``a + b*theta`` equal
     to the rational ``a/b``: ``(fmpq(a), fmpq(b)) == (a, b)`` in Python.)
     """
     if isinstance(x, fmpq):
@@ -42,6 +46,11 @@ def exact_key(x):
             return (int(q.p), int(q.q))
         return (_MULTIQUADRATIC,) + tuple(sorted((m, int(c.p), int(c.q))
                                                  for m, c in x.terms.items()))
+    if isinstance(x, SparseCyclotomic):
+        q = x._rational_value()
+        if q is not None:
+            return (int(q.p), int(q.q))
+        return x.exact_key()
     if isinstance(x, TowerElement):          # level >= 1: never rational, never an MQ
         return (_TOWER, x.tower) + tower_key(x.v)
     if isinstance(x, FieldElement):

@@ -11,6 +11,7 @@ from flint import fmpq
 from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 from .field import FieldElement, as_fmpq
 from .multiquadratic import MQ
+from .sparse_cyclotomic import SparseCyclotomic
 from .tower import TowerElement
 
 
@@ -107,7 +108,7 @@ def number_text(x) -> str:
     """The configuration-syntax text of an exact number."""
     if not isinstance(x, FieldElement):
         return rational_text(x)
-    if isinstance(x, (MQ, TowerElement)):
+    if isinstance(x, (MQ, TowerElement, SparseCyclotomic)):
         return x.text()
     if x.is_rational():
         return rational_text(x.rational())

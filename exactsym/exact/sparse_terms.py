@@ -1,0 +1,196 @@
+"""Sums of roots of unity and of cosines as dictionaries: the exact zero test and arithmetic
+of :mod:`.sparse_cyclotomic` (its docstring gives the reasons).
+
+A sum of roots of unity is ``{e mod n: c}`` = sum c zeta_n^e; a cosine form is ``{e: c}`` =
+sum c cos(2 pi e/n) with 0 <= e <= n/2 (the real numbers of Q(zeta_n)).  Coefficients are
+rationals (``fmpq``), zeros dropped.
+
+Public names: :func:`is_zero_sum`, :func:`roots_zero`, :func:`cosines_zero`, :func:`to_roots`,
+:func:`real_part`, :func:`add_terms`, :func:`mul_cosines`, :func:`mul_roots`,
+:func:`scale_terms`, :func:`rational_terms`.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from flint import fmpq
+
+from .factor import factorization
+
+
+# ---------------------------------------------------------------- the exact zero test
+@lru_cache(maxsize=4096)
+def _peel_order(n: int) -> tuple:
+    """``((p, a), ...)``: the order in which primes are peeled off ``n``: squares first (no
+    group subtraction there), then single primes from the largest (fewer residues occur)."""
+    f = factorization(n) if n > 1 else {}
+    return tuple(sorted(f.items(), key=lambda pa: (pa[1] == 1, -pa[0])))
+
+
+@lru_cache(maxsize=4096)
+def _idempotent(n: int, p: int, a: int) -> int:
+    """E with E = 1 mod p^a and E = 0 mod n / p^a."""
+    q = p ** a
+    m = n // q
+    return (m * pow(m, -1, q)) % n if m > 1 else 1 % n
+
+
+def _split(terms: dict, n: int, p: int, a: int) -> dict:
+    """``{i: {f: c}}``: x = sum_i w^i beta_i with beta_i = sum c zeta_(n/p)^f (zeros dropped)."""
+    e1 = _idempotent(n, p, a)
+    groups: dict = {}
+    for e, c in terms.items():
+        i = e % p
+        f = ((e - i * e1) % n) // p
+        g = groups.get(i)
+        if g is None:
+            groups[i] = {f: c}
+        else:
+            v = g.get(f)
+            if v is None:
+                g[f] = c
+            else:
+                v = v + c
+                if v == 0:
+                    del g[f]
+                else:
+                    g[f] = v
+    return groups
+
+
+def is_zero_sum(terms: dict, n: int) -> bool:
+    """Whether ``sum c * zeta_n^e`` over ``terms = {e: c}`` (e mod n, c rational) is zero."""
+    terms = {e: c for e, c in terms.items() if c != 0}
+    return roots_zero(terms, n)
+
+
+def roots_zero(terms: dict, n: int) -> bool:
+    if not terms:
+        return True
+    if len(terms) == 1:
+        return False          # c zeta^e with c != 0
+    if n == 1:
+        return sum(terms.values()) == 0
+    p, a = _peel_order(n)[0]
+    groups = _split(terms, n, p, a)
+    m = n // p
+    if a >= 2 or len(groups) < p:
+        return all(roots_zero(g, m) for g in groups.values())
+    base = groups[0]
+    for i in range(1, p):
+        diff = dict(groups[i])
+        for f, c in base.items():
+            v = diff.get(f, 0) - c
+            if v == 0:
+                diff.pop(f, None)
+            else:
+                diff[f] = v
+        if not roots_zero(diff, m):
+            return False
+    return True
+
+
+def to_roots(terms: dict, n: int) -> dict:
+    """The cosine form {e: c} = sum c cos(2 pi e/n) as roots of unity: c/2 (z^e + z^-e)."""
+    out: dict = {}
+    for e, c in terms.items():
+        if e == 0 or 2 * e == n:
+            out[e] = out.get(e, 0) + c
+        else:
+            h = c / 2
+            out[e] = out.get(e, 0) + h
+            out[n - e] = out.get(n - e, 0) + h
+    return {e: c for e, c in out.items() if c != 0}
+
+
+def real_part(terms: dict, n: int) -> dict:
+    """The cosine form of the real part of sum c z^e: the number itself when it is real."""
+    out: dict = {}
+    for e, c in terms.items():
+        e %= n
+        k = min(e, n - e)
+        out[k] = out.get(k, 0) + c
+    return {e: c for e, c in out.items() if c != 0}
+
+
+def cosines_zero(terms: dict, n: int) -> bool:
+    """Whether the cosine form {e: c} is zero."""
+    if not terms:
+        return True
+    if len(terms) == 1:           # c cos(2 pi e/n), 0 <= e <= n/2: zero iff e/n = 1/4
+        (e,) = terms
+        return 4 * e == n
+    return roots_zero(to_roots(terms, n), n)
+
+
+# ---------------------------------------------------------------- sparse dictionaries
+def add_terms(a: dict, b: dict, sign: int = 1) -> dict:
+    out = dict(a)
+    for e, c in b.items():
+        v = out.get(e)
+        if v is None:
+            out[e] = c if sign > 0 else -c
+        else:
+            v = v + c if sign > 0 else v - c
+            if v == 0:
+                del out[e]
+            else:
+                out[e] = v
+    return out
+
+
+def mul_cosines(a: dict, b: dict, n: int) -> dict:
+    """The product of two cosine forms: cos e cos f = (cos(e + f) + cos(e - f))/2, with
+    0 <= e, f <= n/2, so e + f <= n (its representative min(e + f, n - e - f)) and
+    |e - f| <= n/2."""
+    if len(a) < len(b):
+        a, b = b, a
+    out: dict = {}
+    get = out.get
+    half = fmpq(1, 2)
+    for f, d in b.items():
+        if f == 0:
+            for e, c in a.items():
+                v = get(e)
+                out[e] = c * d if v is None else v + c * d
+            continue
+        dh = d * half
+        for e, c in a.items():
+            v = c * dh
+            t = e + f
+            if t + t > n:
+                t = n - t
+            w = get(t)
+            out[t] = v if w is None else w + v
+            t = e - f if e >= f else f - e
+            w = get(t)
+            out[t] = v if w is None else w + v
+    return {e: c for e, c in out.items() if c != 0}
+
+
+def mul_roots(a: dict, b: dict, n: int) -> dict:
+    """The product of two sums of roots of unity (exponents mod n)."""
+    if len(a) < len(b):
+        a, b = b, a
+    out: dict = {}
+    for e2, c2 in b.items():
+        for e1, c1 in a.items():
+            e = e1 + e2
+            if e >= n:
+                e -= n
+            v = out.get(e)
+            out[e] = c1 * c2 if v is None else v + c1 * c2
+    return {e: c for e, c in out.items() if c != 0}
+
+
+def scale_terms(a: dict, q: fmpq) -> dict:
+    return {e: c * q for e, c in a.items()} if q != 0 else {}
+
+
+def rational_terms(q: fmpq) -> dict:
+    return {0: q} if q != 0 else {}
+
+
+__all__ = ["is_zero_sum", "roots_zero", "cosines_zero", "to_roots", "real_part",
+           "add_terms", "mul_cosines", "mul_roots", "scale_terms", "rational_terms"]
