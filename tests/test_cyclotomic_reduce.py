@@ -130,3 +130,26 @@ def test_fused_complex_product_in_the_large_field():
     for a, b in ((even, even), (even, odd), (odd, even)):
         x, y = complex_product(a, b)
         assert (x.poly, y.poly) == plain(a, b)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.fractions(min_value=-50, max_value=50, max_denominator=30),
+                min_size=1, max_size=12),
+       st.fractions(min_value=-5, max_value=5, max_denominator=7).filter(bool))
+def test_equal_field_elements_hash_alike(coeffs, shift):
+    """FieldElement.__hash__ (numerator's integers and denominator): an element reached
+    two ways hashes alike, and a rational hashes as the fmpq it equals."""
+    from flint import fmpq
+    field = cyclotomic_field(28)
+    x = field(fmpq(0))
+    c = field(fmpq(1))
+    from exactsym.exact.cyclotomic import cos_turn
+    cosine = cos_turn(field, fmpq(1, 28))
+    for q in coeffs:
+        x = x + c * fmpq(q.numerator, q.denominator)
+        c = c * cosine
+    s = fmpq(shift.numerator, shift.denominator)
+    y = (x * s + s) / s - 1
+    assert x == y and hash(x) == hash(y)
+    r = field(fmpq(3, 7))
+    assert hash(r) == hash(fmpq(3, 7))
