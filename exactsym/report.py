@@ -24,27 +24,30 @@ from .paper.polygon_report import LabelledVerdict
 from .truth_report import truth_json
 
 
-def report_json(analysis: Analysis) -> dict:
-    """The JSON object of ``exactsym check --json`` (``docs/cli.md``)."""
+def report_json(analysis: Analysis, brief: bool = False) -> dict:
+    """The JSON object of ``exactsym check --json`` (``docs/cli.md``).  ``brief``: without
+    ``levels`` and the paper's ``G`` and ``G_prime`` (their exact texts: seconds in a
+    cyclotomic field of degree thousands), for summaries that do not print them."""
     with no_cycle_collection():        # one small dict per level: nothing cyclic
-        return _report_json(analysis)
+        return _report_json(analysis, brief)
 
 
-def _report_json(analysis: Analysis) -> dict:
+def _report_json(analysis: Analysis, brief: bool = False) -> dict:
     config, levels = analysis.config, analysis.levels
     report = {
         "n": config.n,
         "sec": {"center": [number_text(c) for c in levels.sec.centre],
                 "radius_squared": number_text(levels.sec.radius_squared)},
-        "levels": _level_entries(levels.levels, analysis.level_verdicts,
-                                 analysis.level_strings),
         "number_field": getattr(config.polar_system if levels.polar else config.system,
                                 "name", "Q"),
     }
+    if not brief:
+        report["levels"] = _level_entries(levels.levels, analysis.level_verdicts,
+                                          analysis.level_strings)
     if analysis.truth is not None:
         report.update(truth_json(analysis.truth))
     if analysis.paper is not None:
-        report["paper"] = paper_json(analysis.paper)
+        report["paper"] = paper_json(analysis.paper, described=not brief)
     if analysis.audit is not None:
         report["audit"] = analysis.audit
     return report

@@ -117,7 +117,7 @@ def summary_text(analysis: Analysis, verbose: bool = False, hint: bool = True) -
     """The report ``exactsym check`` prints (``--verbose``: with the per-level detail,
     the paper's trace and every discrepancy; ``hint``: look for a near symmetry)."""
     from .report import report_json
-    report = report_json(analysis)
+    report = report_json(analysis, brief=not (verbose or analysis.options.strings))
     lines = _head(analysis, report)
     if analysis.truth is not None:
         lines += _truth_rows(analysis)
@@ -484,7 +484,7 @@ def one_line(analysis: Analysis, failures: int = 0) -> str:
         parts.append("orderable" if truth.orderable else "not orderable")
         parts.append(f"leader {truth.leader}" if truth.leader is not None else "no leader")
     from .report import report_json
-    report = report_json(analysis)
+    report = report_json(analysis, brief=True)
     text = ", ".join(parts)
     if "paper" in report:
         text += "; paper: " + ("orderable" if report["paper"].get("orderable")

@@ -137,8 +137,8 @@ def test_fields_added_later_are_shown_in_words(monkeypatch):
 
     original = report.report_json
 
-    def with_more(analysis):
-        out = original(analysis)
+    def with_more(analysis, brief=False):
+        out = original(analysis, brief=brief)
         out["levels"][0]["paper"]["lines_by_strings"] = {"count": 3, "turns": ["0", "1/6"]}
         out["paper"]["new_flag"] = True
         out["audit"]["covered"] = ["Pasym-Pord", "lem-asym-ord"]
@@ -227,8 +227,8 @@ def test_the_audit_line_counts_the_statements_checked_when_told(monkeypatch):
     import exactsym.report as report
     original = report.report_json
 
-    def covered(analysis):
-        out = original(analysis)
+    def covered(analysis, brief=False):
+        out = original(analysis, brief=brief)
         out["audit"]["covered"] = ["Pasym-Pord", "lem-asym-ord", "Psym-Gsym"]
         return out
 
@@ -237,3 +237,22 @@ def test_the_audit_line_counts_the_statements_checked_when_told(monkeypatch):
     text = text_of("cases/family/equilateral-g1-leader.toml")
     assert "audit      agrees: none of the 3 statements of the paper checked here is false" \
         in text.splitlines()
+
+
+def test_the_summary_builds_no_exact_texts_it_does_not_print(monkeypatch):
+    """report_json(brief=True) (the summary's) leaves out the levels and the paper's G
+    and G': their descriptions are not even computed; the full report has both."""
+    from exactsym.analysis import analyse
+    from exactsym.configuration import load
+    from exactsym.report import report_json
+    monkeypatch.chdir(ROOT)
+    analysis = analyse(load("cases/family/equilateral-g1-leader.toml"))
+    brief = report_json(analysis, brief=True)
+    assert "levels" not in brief and "G" not in brief["paper"]
+    assert analysis.paper.described.cache_info().currsize == 0
+    full = report_json(analysis)
+    assert full["levels"] and full["paper"]["G"] and "G_prime" in full["paper"]
+    assert analysis.paper.described.cache_info().currsize == 1
+    assert {k: v for k, v in full.items() if k != "levels"} == \
+        {**brief, "paper": {**brief["paper"], "G": full["paper"]["G"],
+                            "G_prime": full["paper"]["G_prime"]}}

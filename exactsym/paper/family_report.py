@@ -10,13 +10,17 @@ from __future__ import annotations
 from .family import PaperResult
 
 
-def paper_json(res: PaperResult) -> dict:
-    """``report["paper"]`` of a :class:`~exactsym.paper.family.PaperResult`."""
-    return {"orderable": res.orderable, "leader": res.leader,
-            "gathering_possible": res.gathering_possible, "moves": res.moves,
-            "first_actor": res.first_actor, "complete": res.complete,
-            "make_asym": res.make_asym, "elect_leader": res.elect_leader,
-            "G": res.G, "G_prime": res.Gprime, "bounded": res.bounded, "trace": res.trace}
+def paper_json(res: PaperResult, described: bool = True) -> dict:
+    """``report["paper"]`` of a :class:`~exactsym.paper.family.PaperResult` (without ``G``
+    and ``G_prime`` unless ``described``)."""
+    out = {"orderable": res.orderable, "leader": res.leader,
+           "gathering_possible": res.gathering_possible, "moves": res.moves,
+           "first_actor": res.first_actor, "complete": res.complete,
+           "make_asym": res.make_asym, "elect_leader": res.elect_leader}
+    if described:
+        out.update({"G": res.G, "G_prime": res.Gprime})
+    out.update({"bounded": res.bounded, "trace": res.trace})
+    return out
 
 
 def paper_lines(res: PaperResult) -> list[str]:

@@ -7,7 +7,8 @@ oblivious: each round recomputes from scratch), ElectLeader; ``cor-Pasym-Pord``,
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import partial
+from functools import lru_cache, partial
+from typing import Callable
 
 from ...configuration import Configuration, Polar, no_cycle_collection
 from ...errors import InputError, MoveImpossible
@@ -48,14 +49,24 @@ class PaperResult:
     first_actor: int | None
     complete: bool
     trace: list
-    G: list
-    Gprime: list
+    described: Callable = field(repr=False, compare=False)   # () -> (G, Gprime) dicts
     make_asym: str | None
     elect_leader: str | None
     bounded: dict = field(default_factory=dict)
     G_rings: tuple = field(default=(), repr=False, compare=False)   # G, as Rings (family.Ring)
     final_config: Configuration | None = field(default=None, repr=False, compare=False)
     round_configs: tuple = field(default=(), repr=False, compare=False)
+
+    # G and G' described (names, robots, levels and the exact texts of their lines of
+    # symmetry) only when a report reads them: the texts of lines in Q(zeta_M) of degree
+    # thousands cost tens of ms each, and the audit's runs in other frames never read them
+    @property
+    def G(self) -> list:
+        return self.described()[0]
+
+    @property
+    def Gprime(self) -> list:
+        return self.described()[1]
 
 
 def paper_procedure(config: Configuration, ring_data: Levels | None = None,
@@ -261,10 +272,11 @@ def _finish(limits: Limits, bounded: dict, config, orderable, gathering, leader,
     if limits.described is not None and max(len(G), len(Gp)) > limits.described:
         bounded["polygons_described"] = limits.described
     shown = describe if describe_polygons else (lambda rings, polar, limit: [])
+    G, Gp = tuple(G), tuple(Gp)
+    described = lru_cache(maxsize=1)(lambda: (shown(G, polar, limits.described),
+                                              shown(Gp, polar, limits.described)))
     return PaperResult(orderable, gathering, leader, moves, first, complete, trace,
-                       shown(G, polar, limits.described),
-                       shown(Gp, polar, limits.described), ma, el, bounded, tuple(G), final,
-                       rounds)
+                       described, ma, el, bounded, G, final, rounds)
 
 
 def _sense_note(before: Configuration, after: Configuration, result: MakeAsymResult,
