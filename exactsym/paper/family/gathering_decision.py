@@ -7,8 +7,7 @@ oblivious: each round recomputes from scratch), ElectLeader; ``cor-Pasym-Pord``,
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import lru_cache, partial
-from typing import Callable
+from functools import partial
 
 from ...configuration import Configuration, Polar, no_cycle_collection
 from ...errors import InputError, MoveImpossible
@@ -49,7 +48,7 @@ class PaperResult:
     first_actor: int | None
     complete: bool
     trace: list
-    described: Callable = field(repr=False, compare=False)   # () -> (G, Gprime) dicts
+    described: "Described" = field(repr=False, compare=False)   # () -> (G, G') dicts
     make_asym: str | None
     elect_leader: str | None
     bounded: dict = field(default_factory=dict)
@@ -67,6 +66,24 @@ class PaperResult:
     @property
     def Gprime(self) -> list:
         return self.described()[1]
+
+
+class Described:
+    """``() -> (G, G')`` described by :func:`.trace.describe`, computed on the first call
+    and kept (a plain object: a result can be pickled, as Dask does)."""
+
+    __slots__ = ("G", "Gp", "polar", "limit", "shown", "value")
+
+    def __init__(self, G: tuple, Gp: tuple, polar: bool, limit, shown: bool = True):
+        self.G, self.Gp, self.polar, self.limit, self.shown = G, Gp, polar, limit, shown
+        self.value = None
+
+    def __call__(self) -> tuple:
+        if self.value is None:
+            self.value = ((describe(self.G, self.polar, self.limit),
+                           describe(self.Gp, self.polar, self.limit))
+                          if self.shown else ([], []))
+        return self.value
 
 
 def paper_procedure(config: Configuration, ring_data: Levels | None = None,
@@ -271,10 +288,8 @@ def _finish(limits: Limits, bounded: dict, config, orderable, gathering, leader,
     bounded["trace_entries_omitted"] = omitted
     if limits.described is not None and max(len(G), len(Gp)) > limits.described:
         bounded["polygons_described"] = limits.described
-    shown = describe if describe_polygons else (lambda rings, polar, limit: [])
     G, Gp = tuple(G), tuple(Gp)
-    described = lru_cache(maxsize=1)(lambda: (shown(G, polar, limits.described),
-                                              shown(Gp, polar, limits.described)))
+    described = Described(G, Gp, polar, limits.described, describe_polygons)
     return PaperResult(orderable, gathering, leader, moves, first, complete, trace,
                        described, ma, el, bounded, G, final, rounds)
 
