@@ -501,7 +501,25 @@ class SquareRoots:
         return Root.of({1: q} if q else {})
 
 
-class Root:
+class RingOps:
+    """Subtraction and the reflected + and * of a checker number class, from its +, * and
+    unary - and its ``_of`` (an int or Fraction as a number of the same kind)."""
+    __slots__ = ()
+
+    def __sub__(self, o):
+        return self + (-self._of(o))
+
+    def __rsub__(self, o):
+        return -self + o
+
+    def __radd__(self, o):
+        return self + o
+
+    def __rmul__(self, o):
+        return self * o
+
+
+class Root(RingOps):
     """(sum c_m sqrt(m)) / den with integer c_m, canonical (see SquareRoots): no zero c_m,
     den > 0 and gcd(den, every c_m) = 1, so == and hash are exact; mixes with numbers.
     Integer coefficients over one denominator: a product of two elements of t terms costs
@@ -553,14 +571,6 @@ class Root:
 
     def __neg__(self):
         return Root({m: -c for m, c in self.t.items()}, self.den)
-
-    def __sub__(self, o):
-        return self + (-self._of(o))
-
-    def __rsub__(self, o):
-        return -self + o
-
-    __radd__, __rmul__ = __add__, __mul__
 
     def __eq__(self, o):
         if not isinstance(o, (Root, int, Fraction)):

@@ -36,9 +36,9 @@ from fractions import Fraction
 from math import gcd, lcm
 
 try:
-    from .checker_numbers import Invalid, frac, integer, need
+    from .checker_numbers import Invalid, RingOps, frac, integer, need
 except ImportError:     # run as a lone script: a sibling file
-    from checker_numbers import Invalid, frac, integer, need
+    from checker_numbers import Invalid, RingOps, frac, integer, need
 
 _MR_BASES = (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41)
 _MR_LIMIT = 3317044064679887385961981      # the bases above decide primality below this
@@ -250,7 +250,7 @@ def _zero(terms: dict, n: int, factors: list) -> bool:
     return True
 
 
-class SNum:
+class SNum(RingOps):
     """(sum c_e cos(2 pi e/N)) / den: integer c_e, 0 <= e <= N/2, den > 0 prime to the field's
     l.  ``==`` is the exact zero test, ``hash`` the residue modulo l (equal numbers, equal
     residues), carried along sums and products."""
@@ -305,14 +305,6 @@ class SNum:
 
     def __neg__(self):
         return SNum(self.f, {e: -c for e, c in self.t.items()}, self.den, -self.h % self.f.ell)
-
-    def __sub__(self, o):
-        return self + (-self._of(o))
-
-    def __rsub__(self, o):
-        return -self + o
-
-    __radd__, __rmul__ = __add__, __mul__
 
     def __eq__(self, o):
         if not isinstance(o, (SNum, int, Fraction)):

@@ -16,12 +16,13 @@ from __future__ import annotations
 
 import random
 from functools import lru_cache
-from math import gcd, isqrt, lcm
+from math import gcd, isqrt
 
 from flint import fmpq, fmpz
 
 from .multiquadratic import MQ, _coprime_base, sqrt_rational
-from .tower import TowerElement
+from .tower import TowerElement, _denominator
+from .tower_proof import image, sqrt_mod
 
 __all__ = ["closure_sqrt", "decided_sqrt", "bounded_squarefree_split", "RATIONAL_BITS",
            "SMOOTH_BITS"]
@@ -195,7 +196,7 @@ def _refuted_modulo(y: MQ, primes, free: bool) -> bool:
     """True only when ``y`` provably has no root of the kind :func:`_kummer_root` seeks
     in K = Q(sqrt p : p in ``primes``): a root in K, or with ``free`` a root
     ``sqrt(m) w`` (m a square-free integer, w in K).  A filter, exact and
-    deterministic: the search it spares multiplies numbers of thousands of terms along
+    deterministic: the search it spares multiplies numbers of up to 2^k terms along
     2^k branches (the corrected simulator's n = 30 run spent 200 s there).
 
     Why it is sound: q is an odd prime at which every p is a non-zero square, so q is
@@ -208,23 +209,15 @@ def _refuted_modulo(y: MQ, primes, free: bool) -> bool:
     closed), and phi(y) = m phi(w)^2: the Legendre symbol of phi(y) is that of m,
     the same for every phi (1 for a root in K itself, m = 1).  Two maps with different
     symbols, or one symbol -1 without ``free``, refute."""
-    denominator = _denominator_lcm(y)
+    denominator = _denominator(y)
     choices = _sign_choices(len(primes))
     for q, roots in _split_primes(tuple(primes)):
         if denominator % q == 0:
             continue
-        residues = [int(c.p) * pow(int(c.q), -1, q) for c in y.terms.values()]
         seen = set()
         for signs in choices:
-            chosen = [root if s else q - root for root, s in zip(roots, signs)]
-            value = 0
-            for m, c in zip(y.terms, residues):
-                r = c
-                for p, root in zip(primes, chosen):
-                    if m % p == 0:
-                        r = r * root % q
-                value += r
-            value %= q
+            base = {p: (r if s else q - r) for p, r, s in zip(primes, roots, signs)}
+            value = image(y, q, base, [])
             if value == 0:
                 continue
             seen.add(pow(value, (q - 1) // 2, q))
@@ -233,47 +226,18 @@ def _refuted_modulo(y: MQ, primes, free: bool) -> bool:
     return False
 
 
-def _denominator_lcm(y: MQ) -> int:
-    out = 1
-    for c in y.terms.values():
-        out = lcm(out, int(c.q))
-    return out
-
-
 @lru_cache(maxsize=256)
 def _split_primes(primes: tuple) -> tuple:
     """Three primes q > 2^31 at which every one of ``primes`` is a non-zero square, with
-    a square root of each mod q (Tonelli-Shanks by :func:`_sqrt_mod`).  A prime splits
+    a square root of each mod q (:func:`.tower_proof.sqrt_mod`).  A prime splits
     with probability 2^-k, so this tries a few thousand candidates for k = 12."""
     out = []
     q = (1 << 31) + 1
     while len(out) < 3:
         q += 2
         if fmpz(q).is_prime() and all(pow(p, (q - 1) // 2, q) == 1 for p in primes):
-            out.append((q, tuple(_sqrt_mod(p, q) for p in primes)))
+            out.append((q, tuple(sqrt_mod(p, q) for p in primes)))
     return tuple(out)
-
-
-def _sqrt_mod(a: int, q: int) -> int:
-    """A square root of the quadratic residue ``a`` modulo the odd prime ``q``."""
-    a %= q
-    if q % 4 == 3:
-        return pow(a, (q + 1) // 4, q)
-    s, e = q - 1, 0
-    while s % 2 == 0:
-        s, e = s // 2, e + 1
-    z = 2
-    while pow(z, (q - 1) // 2, q) != q - 1:
-        z += 1
-    x, b, g, r = pow(a, (s + 1) // 2, q), pow(a, s, q), pow(z, s, q), e
-    while b != 1:
-        t, k = b, 0
-        while t != 1:
-            t, k = t * t % q, k + 1
-        gs = pow(g, 1 << (r - k - 1), q)
-        x, g, r = x * gs % q, gs * gs % q, k
-        b = b * g % q
-    return x
 
 
 def _sign_choices(k: int) -> list:

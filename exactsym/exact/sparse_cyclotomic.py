@@ -320,7 +320,7 @@ class SparseCyclotomic(FieldElement):
                 ball = ball / self.ctx.ball(self.den, prec)
         return ball
 
-    def __float__(self):
+    def __float__(self):  # display and float filters only: never decides anything
         return float(self.enclosure(53).mid())
 
     def text(self) -> str:

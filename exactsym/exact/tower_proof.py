@@ -56,7 +56,7 @@ def image(x, p: int, base: dict, roots: list) -> int:
     return (image(a, p, base, roots) + image(b, p, base, roots) * roots[lev - 1]) % p
 
 
-def _sqrt_mod(a: int, p: int):
+def sqrt_mod(a: int, p: int):
     """A square root of a modulo the odd prime p, or None (Tonelli-Shanks)."""
     a %= p
     if a == 0:
@@ -104,7 +104,7 @@ def nonsquare_witness(tower: Tower, lev: int, limit: int = 200_000):
     for p in _odd_primes(limit):
         if bad % p == 0:
             continue
-        base_roots = [_sqrt_mod(q, p) for q in tower.primes]
+        base_roots = [sqrt_mod(q, p) for q in tower.primes]
         if any(s is None for s in base_roots):
             continue
         found = _search(tower, p, radicands, base_roots)
@@ -134,7 +134,7 @@ def _search(tower: Tower, p: int, radicands: list, base_roots: list, budget: int
             if pow(value, (p - 1) // 2, p) == p - 1:
                 return signs, roots
             continue
-        t = _sqrt_mod(value, p)
+        t = sqrt_mod(value, p)
         if t is not None:
             stack += [(signs, roots + [t]), (signs, roots + [p - t])]
     return None
@@ -221,7 +221,7 @@ def _cyclotomic_search(p: int, w: int, radicands: list, budget: int = 64):
             if pow(value, (p - 1) // 2, p) == p - 1:
                 return roots
             continue
-        t = _sqrt_mod(value, p)
+        t = sqrt_mod(value, p)
         if t is not None:
             stack += [roots + [t], roots + [(p - t) % p]]
     return None

@@ -165,7 +165,7 @@ class Checker:
             if other == frame:
                 continue
             d2, theirs = world.fresh_plan(other)
-            agree = None if d2.status == "undecided" else _same_plan(mine, theirs, world)
+            agree = None if d2.status == "undecided" else _same_plan(mine, theirs, world.home)
             if agree is None:
                 self.undecided_fresh += 1
                 continue
@@ -256,8 +256,8 @@ class Checker:
         d, plan = world.fresh_plan(IDENTITY)
         own = {i: (rob.role, rob.target)}
         agree = None if d.status == "undecided" else (
-            _names_the_mover(plan, self.look_plans.get(i) or own, i, world)
-            if world.readings.A3 == "all" else _same_plan(plan, own, world))
+            _names_the_mover(plan, self.look_plans.get(i) or own, i, world.home)
+            if world.readings.A3 == "all" else _same_plan(plan, own, world.home))
         if agree is None:
             self.undecided_fresh += 1
             return
@@ -363,7 +363,7 @@ class Checker:
             return
         for other in (MIRROR,) + tuple(self.frames):
             d, theirs = world.fresh_plan(other)
-            agree = None if d.status == "undecided" else _same_plan(mine, theirs, world)
+            agree = None if d.status == "undecided" else _same_plan(mine, theirs, world.home)
             if agree is None:
                 self.undecided_fresh += 1
                 continue
@@ -442,26 +442,26 @@ def _plan(paths, decision) -> dict:
     return out
 
 
-def _same_plan(a: dict, b: dict, world) -> bool | None:
+def _same_plan(a: dict, b: dict, home) -> bool | None:
     """Same movers, and the same final target for each, except where either plan starts
     with an epsilon move (MakeAsym, Make_SymToAsym): its sense is the mover's own choice
     (reading A8) and a fresh Look during it asks for a further epsilon.  Targets of two
-    towers are compared in the run's (``world.same_point``); None when that cannot be
-    decided (the Look counts as undecided)."""
+    towers are compared in the run's (``home``: the world's :class:`.run_tower.RunHome`);
+    None when that cannot be decided (the Look counts as undecided)."""
     if set(a) != set(b):
         return False
     for r in a:
         (role_a, ta), (role_b, tb) = a[r], b[r]
         if role_a == role_b == "leader":
             try:
-                if not world.same_point(ta, tb):
+                if not home.same_point(ta, tb):
                     return False
             except ValueError:
                 return None
     return True
 
 
-def _names_the_mover(fresh: dict, looked: dict, i: int, world) -> bool | None:
+def _names_the_mover(fresh: dict, looked: dict, i: int, home) -> bool | None:
     """I3 for mover ``i`` under A3 = all, where a Look names several movers, each making
     its own move: the fresh plan names ``i`` with the same target, and each robot that
     both plans name the same way (as :func:`_same_plan` compares them).  A further mover
@@ -472,7 +472,7 @@ def _names_the_mover(fresh: dict, looked: dict, i: int, world) -> bool | None:
     if i not in fresh:
         return False
     common = set(fresh) & set(looked)
-    return _same_plan({r: fresh[r] for r in common}, {r: looked[r] for r in common}, world)
+    return _same_plan({r: fresh[r] for r in common}, {r: looked[r] for r in common}, home)
 
 
 def _plan_text(plan: dict) -> str:

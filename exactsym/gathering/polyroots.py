@@ -103,9 +103,9 @@ def pdivmod(p, q) -> tuple:
 
 def pgcd(p, q) -> tuple:
     """A greatest common divisor (up to a non-zero factor; a constant when coprime), by
-    pseudo-remainders and without a division: an inverse of a coefficient with a dozen
-    primes in its radicands costs thousands of products (the corrected variant's n = 30
-    run spent 30 s of one event there).  Once a remainder is linear, the other
+    pseudo-remainders and without a division: an inverse of a coefficient with k primes
+    in its radicands is k products of numbers of up to 2^k terms (the corrected variant's
+    n = 30 run spent 30 s of one event there).  Once a remainder is linear, the other
     polynomial vanishes at its root or the two are coprime."""
     p, q = trim(p), trim(q)
     if len(p) < len(q):
@@ -332,8 +332,8 @@ def roots_in_unit(poly, tag=None) -> list:
 def _none_inside(p) -> bool:
     """Does the quadratic ``p`` have no root in (0, 1)?
     Decided from signs alone, exactly, with no division: an inverse of a coefficient
-    with a dozen primes in its radicands costs thousands of products (it went through a
-    Sturm chain before), and the check spares the square root of the discriminant (a
+    with k primes in its radicands is k products of numbers of up to 2^k terms (it went
+    through a Sturm chain before), and the check spares the square root of the discriminant (a
     bounded factorisation beyond 160 bits) for the many relations whose roots lie
     outside the piece.  With ``p = a t^2 + b t + c``: ends of opposite signs hold one
     root between them; ends of the sign opposite to ``a`` lie between the two roots;

@@ -181,16 +181,12 @@ class World:
     def fresh_plan(self, frame: Frame):
         """``(decision, {robot: (role, target)})`` of a fresh Look now in ``frame``, each
         mover's final target mapped to the world frame but left in the Look's own numbers:
-        the invariants compare targets only (:meth:`same_point`), and re-homing whole
+        the invariants compare targets only (:meth:`.RunHome.same_point`), and re-homing whole
         paths into the run's tower cost a square-root test per level and piece (the
         corrected variant's n = 30 run spent 200 s of 240 there)."""
         d = self.fresh_decision(frame)
         return d, {m.robot: (m.role, frame.to_world(m.path[-1].final))
                    for m in d.moves if m.path}
-
-    def same_point(self, a, b) -> bool:
-        """Exact equality of two world points of any towers (ValueError: undecided)."""
-        return self.home.same_point(a, b)
 
     def look(self, i: int, frame: Frame):
         """Robot ``i`` Looks in ``frame``; returns the decision (in ``frame``)."""
