@@ -259,12 +259,12 @@ class AlgebraicLevels(RationalLevels):
     lazily as :class:`RationalLevels`: a level's exact squared radius
     ``D^2 |p - C|^2 / D^2`` is computed when the level is read (the truth reads none)."""
 
-    __slots__ = ("enclosures", "_d2", "circle")
+    __slots__ = ("enclosures", "_d2", "circle", "_cc")
 
     def __init__(self, flat: list, bounds: list, enclosures, circle: Circle | None = None):
         super().__init__(flat, bounds, {})
         self.enclosures = enclosures
-        self._d2 = None
+        self._d2 = self._cc = None
         self.circle = circle
 
     def radius_squared(self, i: int):
@@ -274,11 +274,14 @@ class AlgebraicLevels(RationalLevels):
         if self.circle is not None and self._d2 is None and \
                 isinstance(enc.homogeneous[2], PolyElement):
             # |p - C|^2 from the divided centre (one inverse, shared with every reader of
-            # the SEC centre): one reduction in a large field, not four and 1 / D^2
+            # the SEC centre), as |p|^2 - 2 p.C + |C|^2 with |C|^2 once: C's coefficients
+            # have thousands of bits and p's a few, so p.C costs a third of (p - C)^2
             cx, cy = self.circle.centre
             x, y = enc.points[i]
-            dx, dy = x - cx, y - cy
-            return sum_of_products([(dx, dx), (dy, dy)])
+            if self._cc is None:
+                self._cc = sum_of_products([(cx, cx), (cy, cy)])
+            return sum_of_products([(x, x), (y, y)]) - 2 * sum_of_products(
+                [(x, cx), (y, cy)]) + self._cc
         r = enc.scaled_r2(i)
         if self._d2 is None:               # 1 / D^2, one field inverse for all levels
             d = enc.homogeneous[2]

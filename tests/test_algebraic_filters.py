@@ -310,3 +310,25 @@ def test_expression_balls_enclose_the_exact_values(rows):
             exact = value.enclosure(200) if hasattr(value, "enclosure") else arb(value)
             assert ball.is_finite() and ball.overlaps(exact)
             assert ball.rad() < 1e-30
+
+
+@pytest.mark.parametrize("den", [13, 38, 997])
+def test_radii_from_the_divided_centre_are_the_squared_distances(den):
+    """AlgebraicLevels writes |p - C|^2 as |p|^2 - 2 p.C + |C|^2 (|C|^2 once): each level's
+    squared radius equals (x - cx)^2 + (y - cy)^2 of its points, exactly, for polar files
+    about a centre off the origin (Q(zeta_4 den): the radicals p and 2p fold too)."""
+    from exactsym.fileformat import parse_config_text as parse
+    # the SEC through three robots of radii 5, 6, 7 a third of a turn apart: C = (X/D, Y/D)
+    # with D irrational
+    turns = [(5, 0), (6, den // 3), (7, 2 * den // 3), (1, 1), (2, 2), (3, den // 2)]
+    text = "format = 1\npoints = [\n" + "".join(
+        f'  {{ r = "{r}", turn = "{t}/{den}" }},\n' for r, t in turns) + "]\n"
+    config = from_file(parse(text, "<test>.toml", "toml"))
+    ring = levels_of(config)
+    assert isinstance(ring.levels, AlgebraicLevels)
+    cx, cy = ring.sec.centre
+    assert len(ring.sec.support) == 3 and not ring.levels.enclosures.unit
+    for level in ring.levels:
+        for i in level.points:
+            x, y = config.points[i]
+            assert level.radius_squared == (x - cx) * (x - cx) + (y - cy) * (y - cy)

@@ -2,7 +2,7 @@
 deflated operands) and inverse.remainder_function (Barrett) against the plain
 ``poly % Phi_M``: random polynomials, polynomials in x^g (subfield elements, the deflated
 path), rational coefficients and signs, for M with s > 1 (27720, 72, 360, 8, 9) and
-squarefree M (2310, 30: s = 1)."""
+squarefree M (2310, 30: s = 1); radicals p and 2p (124, 279, 97, 3988: the binomial fold)."""
 
 from __future__ import annotations
 
@@ -11,10 +11,10 @@ from hypothesis import given, settings, strategies as st
 from flint import fmpq_poly, fmpz_poly
 
 from exactsym.exact.cyclotomic import cyclotomic_field
-from exactsym.exact.cyclotomic_reduce import cyclotomic_arithmetic
+from exactsym.exact.cyclotomic_reduce import binomial_remainder, cyclotomic_arithmetic
 from exactsym.exact.inverse import remainder_function
 
-ORDERS = [27720, 72, 360, 2310, 30, 8, 9]
+ORDERS = [27720, 72, 360, 2310, 30, 8, 9, 124, 279, 97, 3988]
 PHI = {m: fmpz_poly.cyclotomic(m) for m in ORDERS}
 
 
@@ -35,7 +35,7 @@ def remainder_cases(draw):
     step = draw(st.sampled_from([1, 1, 2, 3, 4, 6, 12]))
     length = draw(st.integers(0, 2 * n - 1))      # degree <= 2n - 2
     bits = draw(st.sampled_from([2, 64, 200]))
-    if m == 27720:           # keep the big case light: a random dense tail
+    if m in (27720, 3988):   # keep the big cases light: a random dense tail
         import random
         rnd = random.Random(draw(st.integers(0, 10 ** 6)))
         coeffs = [rnd.randrange(-(1 << bits), 1 << bits) if k % step == 0 else 0
@@ -66,7 +66,7 @@ def test_barrett_takes_degree_2n_minus_1(m, seed):
 
 @st.composite
 def product_cases(draw):
-    m = draw(st.sampled_from([m for m in ORDERS if m != 27720]))
+    m = draw(st.sampled_from([m for m in ORDERS if m not in (27720, 3988)]))
     n = PHI[m].degree()
     terms = []
     for _ in range(draw(st.integers(1, 3))):
@@ -153,3 +153,22 @@ def test_equal_field_elements_hash_alike(coeffs, shift):
     assert x == y and hash(x) == hash(y)
     r = field(fmpq(3, 7))
     assert hash(r) == hash(fmpq(3, 7))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from([3, 5, 6, 7, 10, 14, 62, 997, 1994]), st.integers(0, 10 ** 6),
+       st.integers(0, 3))
+def test_binomial_remainder_is_the_plain_remainder(r, seed, extra):
+    """The fold for radicals p and 2p, on degrees up to (2 + extra) deg Phi_r (beyond the
+    split's bound too: the fold repeats)."""
+    import random
+    rnd = random.Random(seed)
+    phi = fmpz_poly.cyclotomic(r)
+    x = fmpz_poly([rnd.randrange(-10 ** 40, 10 ** 40)
+                   for _ in range(rnd.randint(0, (2 + extra) * phi.degree()))])
+    assert binomial_remainder(r)(x) == x % phi
+
+
+def test_binomial_remainder_only_for_p_and_2p():
+    assert [r for r in range(2, 40) if binomial_remainder(r) is not None] == \
+        [3, 5, 6, 7, 10, 11, 13, 14, 17, 19, 22, 23, 26, 29, 31, 34, 37, 38]

@@ -258,3 +258,31 @@ def test_failure_texts_made_only_when_listed(examples, insides):
     assert eager.out == lazy.out and eager.trace == lazy.trace
     assert eager.within == lazy.within and eager.failures == lazy.failures
     assert calls == list(range(min(examples, len(insides))))
+
+
+def test_cyclotomic_text_of_coefficients_beyond_python_digit_limit():
+    """Coefficients of 20,000 bits (beyond Python's 4,300-digit conversion): written by
+    FLINT, the same string as number_text."""
+    x = BIG.element(fmpq_poly([3 ** 12_700 + 1, 0, -(5 ** 8_700), 7], 2 ** 20_000 + 1))
+    assert not x.is_rational()
+    assert cyclotomic_text(x) == fast_number_text(x) == number_text(x)
+
+
+@settings(max_examples=30, deadline=None)
+@given(vectors(), vectors())
+def test_line_keys_of_the_same_factors_are_equal_without_a_product(a, b):
+    """Two keys made from the same direction objects (a 1-gon's mirror and the line through
+    its vertex) are equal with no complex product made; keys of different factors still
+    compare as their exact doubled directions."""
+    import exactsym.paper.keys as keys
+    pairs = [(bisector_key(False, a, b), bisector_key(False, b, a)),
+             (line_key(False, a), line_key(False, a))]
+    lazy = [(k, h) for k, h in pairs if isinstance(k.canon[3], keys._DirectionKey)]
+    made = keys.complex_product
+    keys.complex_product = None         # any product made now raises TypeError
+    try:
+        assert all(k == h for k, h in lazy)
+    finally:
+        keys.complex_product = made
+    assert (bisector_key(False, a, b) == line_key(False, a)) == \
+        (line_canon(complex_product(a, b)) == line_canon(complex_product(a, a)))

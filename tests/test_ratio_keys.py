@@ -130,6 +130,9 @@ def test_rational_ratio_is_the_quotient_when_rational(x, y, q):
     if y == 0:
         return
     assert rational_ratio(q * y, y) == fmpq(q)
+    # a multiple except in one coefficient (the constant, or the leading one): not one
+    moved = (q * y + 1) / y
+    assert rational_ratio(q * y + 1, y) == (moved.rational() if moved.is_rational() else None)
     quotient = x / y
     expected = quotient.rational() if quotient.is_rational() else None
     assert rational_ratio(x, y) == expected

@@ -18,7 +18,11 @@ deflations, of half the degree or less, and reduced modulo Phi_r(y^(s/g)), y = x
 FLINT's ``fmpz_poly.deflate(n)`` keeps the coefficients of the exponents divisible by n (it
 assumes the others are zero and does not look at them); :func:`_deflate_keeps_multiples`
 checks that once, and the split falls back to Python lists if it ever stops being so.
-Integer arithmetic only; a property test compares every result with ``x % Phi_M``.
+When r is an odd prime p or 2p (turns j/997 give M = 4 * 997), Phi_r divides the binomial
+y^p - 1 or y^p + 1 with a linear cofactor, so the base remainder is a fold and one
+subtraction (:func:`binomial_remainder`), linear in the degree, instead of Barrett's two
+products.  Integer arithmetic only; a property test compares every result with
+``x % Phi_M``.
 """
 
 from __future__ import annotations
@@ -49,6 +53,30 @@ def _class(y: fmpz_poly, j: int, p: int) -> fmpz_poly:
     return fmpz_poly(y.coeffs()[j::p])
 
 
+def binomial_remainder(r: int):
+    """``y -> y mod Phi_r`` for deg y <= 2 deg Phi_r - 1 when r is an odd prime p or 2p,
+    else None.  Phi_p = (y^p - 1) / (y - 1) = 1 + y + ... + y^(p-1) and Phi_2p(y) =
+    Phi_p(-y) = (y^p + 1) / (y + 1): y^p = eps (mod Phi_r), eps = 1 or -1, so the
+    coefficients of y^(p+k) fold onto y^k (times eps) until the degree is at most p - 1;
+    then the monic Phi_r (degree p - 1, leading coefficient 1)
+    times the coefficient c of y^(p-1) is subtracted: the canonical remainder."""
+    factors = factorization(r)
+    odd = [q for q in factors if q != 2]
+    if len(odd) != 1 or any(e > 1 for e in factors.values()) or r not in (odd[0], 2 * odd[0]):
+        return None
+    p = odd[0]
+    eps = 1 if r == p else -1
+    phi = fmpz_poly.cyclotomic(r)
+
+    def remainder(y: fmpz_poly) -> fmpz_poly:
+        while y.degree() >= p:
+            high = y.right_shift(p)
+            y = y.truncate(p) + high if eps == 1 else y.truncate(p) - high
+        c = y[p - 1]
+        return y - c * phi if c else y
+    return remainder
+
+
 class CyclotomicArithmetic:
     """Remainders and products modulo Phi_M for integer polynomials (numerators)."""
 
@@ -61,7 +89,8 @@ class CyclotomicArithmetic:
         self.s = order // r
         self.phi_r = fmpz_poly.cyclotomic(r)
         self.degree = self.phi_r.degree() * self.s
-        self._base = remainder_function(self.phi_r)       # degree <= 2 deg Phi_r - 1
+        # degree <= 2 deg Phi_r - 1
+        self._base = binomial_remainder(r) or remainder_function(self.phi_r)
         # the primes of s with multiplicity, 2 first (the class test that most often
         # finds half the coefficients zero)
         self._steps = sorted(p for p, e in factorization(self.s).items() for _ in range(e)) \

@@ -332,7 +332,7 @@ def lazy_line_canon(a, b, make):
         sq = x * x
         return sq / (sq + y * y)
     return ("line", sx, sy, _DirectionKey(sx, sy, vector, parts, value_ball,
-                                          _largest_field(numbers)))
+                                          _largest_field(numbers), (a, b)))
 
 
 class _DirectionKey(RatioKey):
@@ -340,12 +340,15 @@ class _DirectionKey(RatioKey):
     coordinate signs ``sx``, ``sy`` (non-zero) are known: two such keys with equal signs
     are equal iff the vectors have one direction, i.e. iff x y' - y x' == 0 (two products
     of the vectors' coordinates, not two of their squares).  Against any other
-    RatioKey, the RatioKey comparison (which reads ``parts``)."""
+    RatioKey, the RatioKey comparison (which reads ``parts``).  ``factors``: the two
+    vectors (a, b) whose complex product ``vector()`` is: keys of the same factors (the
+    same objects, in either order) are equal without a product (a 1-gon's mirror and
+    the line through its vertex are both made from its direction)."""
 
-    __slots__ = ("signs", "vector")
+    __slots__ = ("signs", "vector", "factors")
 
-    def __init__(self, sx: int, sy: int, vector, parts, value_ball, home):
-        self.signs, self.vector = (sx, sy), vector
+    def __init__(self, sx: int, sy: int, vector, parts, value_ball, home, factors=None):
+        self.signs, self.vector, self.factors = (sx, sy), vector, factors
         super().__init__(parts, value_ball, home)
 
     def __eq__(self, other) -> bool:
@@ -356,6 +359,8 @@ class _DirectionKey(RatioKey):
         if self._hash != other._hash or self.home is not other.home \
                 or self.signs != other.signs:
             return False
+        if _same_factors(self.factors, other.factors):
+            return True
         (x, y), (x2, y2) = self.vector(), other.vector()
         # equal signs: x^2/|v|^2 == x2^2/|v2|^2 iff the unit vectors are equal
         return cross_is_zero((x, y), (x2, y2))
@@ -365,6 +370,21 @@ class _DirectionKey(RatioKey):
 
     def __hash__(self) -> int:
         return self._hash
+
+
+def _same_factors(f, g) -> bool:
+    """Whether the factor pairs (a, b), (a', b') of two complex products hold the same
+    vectors, in either order (a product commutes): vectors are the same when they are one
+    object or their coordinates are (numbers are immutable)."""
+    if f is None or g is None:
+        return False
+    (a, b), (c, d) = f, g
+    return (_same_vector(a, c) and _same_vector(b, d)) or \
+        (_same_vector(a, d) and _same_vector(b, c))
+
+
+def _same_vector(u, v) -> bool:
+    return u is v or (u[0] is v[0] and u[1] is v[1])
 
 
 def line_value(polar: bool, d):

@@ -118,10 +118,15 @@ def rational_ratio(num, den):
     n, d = _poly(num), _poly(den)
     if n.is_zero():
         return fmpq(0)
+    top = d.degree()
+    if n.degree() != top:   # num = q den with q != 0 has den's degree
+        return None
     i = 0                   # the first non-zero coefficient of d, read by index: the
     while d[i] == 0:        # coefficient lists of degree thousands cost milliseconds
         i += 1
     q = n[i] / d[i]
+    if n[top] != q * d[top]:    # two coefficients refute it before a product of all
+        return None
     return q if n == q * d else None
 
 
