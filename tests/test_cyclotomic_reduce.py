@@ -73,7 +73,14 @@ def product_cases(draw):
         pair = []
         for _ in range(2):
             step = draw(st.sampled_from([1, 2, 3, 4, 6, n + 1]))   # n + 1: a constant
-            coeffs = _poly(draw, draw(st.integers(0, n)), step, draw(st.sampled_from([3, 80])))
+            if draw(st.integers(0, 3)) == 0:    # a few terms at high exponents (sparse path)
+                coeffs = [0] * n
+                for _ in range(draw(st.integers(1, 9))):
+                    e = draw(st.integers(0, (n - 1) // step)) * step
+                    coeffs[e] = draw(st.integers(-(1 << 80), 1 << 80))
+            else:
+                coeffs = _poly(draw, draw(st.integers(0, n)), step,
+                               draw(st.sampled_from([3, 80])))
             pair.append(fmpq_poly(coeffs, draw(st.integers(1, 10 ** 6))))
         terms.append((pair[0], pair[1], draw(st.sampled_from([1, -1]))))
     return m, terms

@@ -77,6 +77,41 @@ def binomial_remainder(r: int):
     return remainder
 
 
+#: at most this many nonzero coefficients (and degree at least _SPARSE_DEGREE): a factor is
+#: multiplied term by term.  FLINT packs a product into one long integer product (Kronecker
+#: substitution) whatever the zeros: a two-term cosine of degree 1,600 times a dense
+#: number of 8,000-bit coefficients took 28 ms, its two scaled shifts 3 ms.
+_SPARSE_TERMS = 8
+_SPARSE_DEGREE = 64
+
+
+def sparse_terms(a: fmpz_poly):
+    """``[(exponent, coefficient)]`` of ``a`` when it has at most :data:`_SPARSE_TERMS`
+    nonzero coefficients and degree at least :data:`_SPARSE_DEGREE`, else None."""
+    if a.degree() < _SPARSE_DEGREE:
+        return None
+    cs = a.coeffs()
+    if len(cs) - cs.count(0) > _SPARSE_TERMS:
+        return None
+    return [(e, c) for e, c in enumerate(cs) if c]
+
+
+def _product(a: fmpz_poly, b: fmpz_poly, ta, tb, ka: int, kb: int) -> fmpz_poly:
+    """``a * b``; ``ta``/``tb``: the terms of a/b deflated by ka/kb (a(x) = A(x^ka)),
+    or None.  A factor with few terms is multiplied as a sum of the other factor's scaled
+    shifts (the same polynomial, exactly)."""
+    for terms, k, other in ((ta, ka, b), (tb, kb, a)):
+        if terms is not None:
+            out = None
+            for e, c in terms:
+                part = other * c
+                if e:
+                    part = part.left_shift(e * k)
+                out = part if out is None else out + part
+            return out
+    return a * b
+
+
 class CyclotomicArithmetic:
     """Remainders and products modulo Phi_M for integer polynomials (numerators)."""
 
@@ -127,15 +162,15 @@ class CyclotomicArithmetic:
         return fmpz_poly() if out is None else out
 
     def prepared(self, a: fmpq_poly) -> tuple:
-        """``(denominator, d, numerator deflated by d)`` with d the gcd of the
-        exponents of ``a`` (0 for a constant: a polynomial in every x^g).  The
-        numerator is not kept (elements remember this form): it is the deflation
+        """``(denominator, d, numerator deflated by d, its sparse terms or None)`` with d
+        the gcd of the exponents of ``a`` (0 for a constant: a polynomial in every x^g).
+        The numerator is not kept (elements remember this form): it is the deflation
         inflated by d."""
         an = a.numer()
         if a.degree() <= 0:
-            return int(a.denom()), 0, an
+            return int(a.denom()), 0, an, None
         q, d = an.deflation()
-        return int(a.denom()), d, q
+        return int(a.denom()), d, q, sparse_terms(q)
 
     def product_sum(self, terms) -> fmpq_poly:
         """``sum(sign * a * b) mod Phi_M`` over ``terms``, ``(a, b)`` or ``(a, b, sign)``
@@ -152,13 +187,15 @@ class CyclotomicArithmetic:
         g = g or 1
         total = None
         for term in terms:
-            (da, dega, qa), (db, degb, qb) = term[0], term[1]
+            (da, dega, qa, ta), (db, degb, qb, tb) = term[0], term[1]
             if qa.is_zero() or qb.is_zero():
                 continue
             # g divides every nonzero d: the operands deflated by g
-            an = qa if dega in (g, 0) else qa.inflate(dega // g)
-            bn = qb if degb in (g, 0) else qb.inflate(degb // g)
-            p = an * bn
+            ka = 1 if dega in (g, 0) else dega // g
+            kb = 1 if degb in (g, 0) else degb // g
+            an = qa if ka == 1 else qa.inflate(ka)
+            bn = qb if kb == 1 else qb.inflate(kb)
+            p = _product(an, bn, ta, tb, ka, kb)
             factor = common // (da * db) * (term[2] if len(term) > 2 else 1)
             if factor != 1:
                 p *= factor

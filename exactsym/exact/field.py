@@ -174,7 +174,7 @@ class NumberField:
             if isinstance(theta, arb):
                 return arb_poly(poly)(theta)
             if prepared is not None and prepared[1] > 1:
-                den, d, q = prepared
+                den, d, q = prepared[:3]
                 power = self._enclosures.get((prec, d))
                 if power is None:
                     power = self._enclosures[(prec, d)] = theta ** d
