@@ -18,7 +18,7 @@ from dataclasses import dataclass, replace
 from .audit import audit as run_audit
 from .configuration import Configuration, no_cycle_collection
 from .levels import Level, Levels, RationalLevels, levels_of
-from .paper.family import PaperResult, paper_procedure
+from .paper.family import DEFAULT_LIMITS, PaperResult, paper_procedure
 from .paper.polygon_report import level_section
 from .symmetry import SymmetryGroup, symmetry_group
 
@@ -34,11 +34,16 @@ class Options:
 
     ``strings``: the CW/ACW strings of each level; ``reading``/``degree``: the readings
     of Elect_Leader_Asym / Elect_Leader_Sym (:mod:`exactsym.paper.polygon`);
-    ``invariance``: the audit recomputes the paper in other frames."""
+    ``invariance``: the audit recomputes the paper in other frames; ``listed``: how many
+    failures of a statement checked on many levels or pairs are listed with their
+    witnesses before the rest are only counted (None: the family layer's default,
+    :class:`exactsym.paper.family.Limits`; the text summary, which shows the first, asks
+    for 1: in a field of degree thousands each witness is megabytes of exact text)."""
     strings: bool = False
     reading: str = "literal"
     degree: str = "paper"
     invariance: bool = True
+    listed: int | None = None
 
 
 @dataclass(frozen=True)
@@ -96,12 +101,15 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
             section = level_section(config, levels, options.strings)
             verdicts, strings, types = section.verdicts, section.strings, section.types
             polygons = section.polygons
+        limits = DEFAULT_LIMITS if options.listed is None else \
+            replace(DEFAULT_LIMITS, claim_examples=options.listed)
         paper = paper_procedure(config, levels, reading=options.reading,
-                                degree=options.degree, level_polygons=polygons
-                                ) if "family" in wanted else None
+                                degree=options.degree, level_polygons=polygons,
+                                limits=limits) if "family" in wanted else None
         audited = run_audit(config, levels, paper, {"reading": options.reading,
                                                     "degree": options.degree,
-                                                    "invariance": options.invariance},
+                                                    "invariance": options.invariance,
+                                                    "limits": limits},
                             group=truth, level_verdicts=verdicts,
                             level_types=types) if "audit" in wanted else None
     return Analysis(config, options, levels, truth, verdicts, strings, paper, audited)

@@ -49,7 +49,10 @@ def _check(args) -> int:
     # bulk construction costs a full collection over every object built so far
     with no_cycle_collection():
         config = load(args.files[0])
-        analysis = analyse(config, options=Options(strings=args.strings))
+        # the summary shows each false statement's first witness: list one per statement
+        summary = not (args.json or args.verbose or config.expect)
+        analysis = analyse(config, options=Options(strings=args.strings,
+                                                   listed=1 if summary else None))
         # the JSON report (every exact text) only when printed or read by [expect]
         report = report_json(analysis) if args.json or config.expect else None
         if args.json:
@@ -70,7 +73,9 @@ def _check_several(args) -> int:
     for k, path in enumerate(args.files):
         try:
             config = load(path)
-            analysis = analyse(config, options=Options(strings=args.strings))
+            summary = not (args.verbose or config.expect)      # one line: no witness shown
+            analysis = analyse(config, options=Options(strings=args.strings,
+                                                       listed=1 if summary else None))
             failures = (failed_expectations(config, report_json(analysis))
                         if config.expect else [])
         except InputError as err:

@@ -244,6 +244,21 @@ def _by_statement(discrepancies: list) -> list[tuple[str, list]]:
     return list(groups.items())
 
 
+def _instances(items: list) -> int:
+    """How many instances a statement's entries stand for: one per listed failure, and
+    the unlisted rest of an entry that counts them (``{"failures": k, "listed": m}``:
+    a statement failing more often than its failures are listed)."""
+    total = 0
+    for d in items:
+        w = d.get("witness")
+        if isinstance(w, dict) and isinstance(w.get("failures"), int) and \
+                isinstance(w.get("listed"), int):
+            total += max(w["failures"] - w["listed"], 0)
+        else:
+            total += 1
+    return total
+
+
 _PYTHON_WORDS = re.compile(r"\b(None|True|False)\b")
 
 
@@ -272,11 +287,13 @@ def _audit_rows(audit: dict, verbose: bool, source: str) -> list[str]:
         return [_row("audit", f"agrees: {checked} is false")]
     groups = _by_statement(disc)
     width = max(len(label) for label, _ in groups)
+    total = sum(_instances(items) for _, items in groups)
     rows = [_row("audit", f"{len(groups)} statement{'s' if len(groups) != 1 else ''} of the "
-                          f"paper false here ({len(disc)} instance"
-                          f"{'s' if len(disc) != 1 else ''}; the witnesses: exactsym audit {source if not source.startswith('<') else 'FILE'}):")]
+                          f"paper false here ({total:,} instance"
+                          f"{'s' if total != 1 else ''}; the witnesses: exactsym audit {source if not source.startswith('<') else 'FILE'}):")]
     for label, items in groups:
-        count = f"({len(items)}x)" if len(items) > 1 else ""
+        many = _instances(items)
+        count = f"({many:,}x)" if many > 1 else ""
         line = f"  {label:<{width}} {count:>5}  {_discrepancy_text(items[0])}"
         if not verbose and len(line) > AUDIT_LINE:
             line = _cut(line, AUDIT_LINE)

@@ -258,3 +258,27 @@ def test_the_summary_builds_no_exact_texts_it_does_not_print(monkeypatch):
     assert {k: v for k, v in full.items() if k != "levels"} == \
         {**brief, "paper": {**brief["paper"], "G": full["paper"]["G"],
                             "G_prime": full["paper"]["G_prime"]}}
+
+
+def test_the_audit_line_counts_every_instance_and_lists_one_witness():
+    """20 robots at distinct distances from C: obs-merg-asym-pair fails on most pairs of
+    levels (two robots on a circle always have a mirror).  The summary counts every
+    failure (listed or only counted), and listing one witness (``Options(listed=1)``,
+    what ``exactsym check`` asks for) leaves the summary unchanged."""
+    rng = random.Random(3)
+    points = set()
+    while len(points) < 20:
+        points.add((F(rng.randint(-300, 300), 7), F(rng.randint(-300, 300), 11)))
+    config = Configuration.from_points(sorted(points))
+    full = analyse(config)
+    one = analyse(config, options=Options(listed=1))
+    disc = [d for d in full.audit["discrepancies"] if d["statement"] == "obs-merg-asym-pair"]
+    counted = [d["witness"] for d in disc if "failures" in (d["witness"] or {})]
+    assert len(counted) == 1 and counted[0]["failures"] > counted[0]["listed"] == 8
+    failures = counted[0]["failures"]
+    assert len([d for d in one.audit["discrepancies"]
+                if d["statement"] == "obs-merg-asym-pair"]) == 2    # one listed, one count
+    text = summary_text(full)
+    assert summary_text(one) == text
+    row = next(line for line in text.splitlines() if "obs-merg-asym-pair" in line)
+    assert f"({failures:,}x)" in row

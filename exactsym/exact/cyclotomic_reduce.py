@@ -88,7 +88,11 @@ _SPARSE_DEGREE = 64
 def sparse_terms(a: fmpz_poly):
     """``[(exponent, coefficient)]`` of ``a`` when it has at most :data:`_SPARSE_TERMS`
     nonzero coefficients and degree at least :data:`_SPARSE_DEGREE`, else None."""
-    if a.degree() < _SPARSE_DEGREE:
+    n = a.degree()
+    if n < _SPARSE_DEGREE:
+        return None
+    # more than _SPARSE_TERMS nonzero among 17 probes: dense, without listing n coefficients
+    if sum(1 for k in range(17) if a[k * n // 16]) > _SPARSE_TERMS:
         return None
     cs = a.coeffs()
     if len(cs) - cs.count(0) > _SPARSE_TERMS:
