@@ -186,3 +186,56 @@ def test_conductors_beyond_the_checker_are_refused_in_one_line(tmp_path):
 def checker_is_prime_range(p: int) -> bool:
     from flint import fmpz
     return bool(fmpz(p).is_prime()) and p > 3317044064679887385961981
+
+
+def _moderate(tmp_path, den=127):
+    """Six robots off the origin at turns j/den: a dense Q(zeta_4 den) of degree
+    2 (den - 1) for check."""
+    rows = [f'{{ r = "{r}", turn = "{t}/{den}" }}' for r, t in
+            [(5, 0), (6, den // 3), (7, 2 * den // 3), (1, 1), (2, 2), (3, den // 2)]]
+    return _file(tmp_path, rows)
+
+
+def test_certify_writes_moderate_cyclotomic_fields_sparse(tmp_path, capsys):
+    """exactsym certify reads cos/sin beyond a dense degree of 64 in the sparse field (the
+    checker multiplies dense numbers term by term): the certificate's field is sparse, it
+    verifies, and it claims the group check reports; degree 24 stays dense."""
+    from exactsym.analysis import analyse
+    from exactsym.cli import main
+    for den, kind in ((127, "sparse-cyclotomic"), (13, None)):
+        path = _moderate(tmp_path, den)
+        out = tmp_path / f"c{den}.json"
+        assert main(["certify", path, "-o", str(out)]) == 0
+        cert = json.loads(out.read_text())
+        ok, message = checker.verify_certificate(cert)
+        assert ok, message
+        field = cert["configuration"]["field"]
+        assert (kind in field) if kind else "sparse-cyclotomic" not in json.dumps(field)
+        truth = analyse(load(path), sections=["truth"]).truth
+        assert cert["claim"]["group"] == truth.name
+        assert cert["claim"]["ordering"] == list(truth.ordering)
+
+
+def test_certify_falls_back_to_the_dense_field(tmp_path, monkeypatch):
+    """When the sparse field cannot write a certificate, certify writes it in the dense
+    field check uses (one that verifies)."""
+    import exactsym.certificate as certificate
+    from exactsym.certificate import CertificateError
+    from exactsym.certify_cli import _certificate
+    from exactsym.exact.evaluate import SparseCyclotomicSystem
+    from exactsym.fileformat import read_config
+    made = certificate.make_certificate
+    seen = []
+
+    def dense_only(config):
+        sparse = isinstance(config.system, SparseCyclotomicSystem)
+        seen.append(sparse)
+        if sparse:
+            raise CertificateError("refused for the test")
+        return made(config)
+    monkeypatch.setattr(certificate, "make_certificate", dense_only)
+    config, cert = _certificate(read_config(_moderate(tmp_path)), None)
+    assert seen == [True, False]
+    assert "sparse-cyclotomic" not in json.dumps(cert["configuration"]["field"])
+    ok, message = checker.verify_certificate(json.loads(json.dumps(cert)))
+    assert ok, message

@@ -24,6 +24,8 @@ offending node's offset.
 
 from __future__ import annotations
 
+from contextlib import contextmanager
+
 import sys
 from fractions import Fraction
 from typing import Iterable, Sequence
@@ -383,6 +385,23 @@ def _evaluate(node: Node, system):
     raise ExpressionError(f"unknown expression node {type(node).__name__}", offset=node.offset)
 
 
+#: a lower limit on the dense Q(zeta_M)'s degree while :func:`dense_degree_limit` is active
+_DENSE_LIMITS: list = []
+
+
+@contextmanager
+def dense_degree_limit(degree: int):
+    """Within the block, cos/sin beyond a dense Q(zeta_M) of ``degree`` are read in the
+    sparse Q(zeta_N) (as beyond :data:`.cyclotomic.MAX_DEGREE`): ``exactsym certify`` asks
+    for it, because the standard-library checker multiplies dense numbers of degree
+    thousands term by term, while the sparse certificate's numbers keep a few terms."""
+    _DENSE_LIMITS.append(degree)
+    try:
+        yield
+    finally:
+        _DENSE_LIMITS.pop()
+
+
 def number_system(exprs: Iterable[Node], turns: Iterable[fmpq] = ()):
     """The smallest number system holding every expression and cos/sin of every turn.
 
@@ -414,7 +433,8 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
         # sines are cosines of 1/4 - t, already in the list; i needs 4 | M for them
         conductor = cyclotomic.lcm(_conductor(atoms), 4)
         degree = cyclotomic.euler_phi(conductor)
-        if degree <= cyclotomic.MAX_DEGREE:
+        limit = min([cyclotomic.MAX_DEGREE] + _DENSE_LIMITS[-1:])
+        if degree <= limit:
             return FieldSystem(cyclotomic.cyclotomic_field(conductor))
         if any(atom[0] == "cos" for atom in atoms):
             return _sparse_system(atoms, conductor, degree)
