@@ -2,7 +2,9 @@
 
 Each input is written to a temporary TOML file; for each, the ground truth (load, rings,
 symmetry_group) is timed in a child process, and so is the whole ``exactsym check --json``
-(a subprocess with a timeout; wall seconds and the child's CPU seconds, user + system).  Run: ``python bench/bench_small_algebraic.py``
+(a subprocess with a timeout; wall seconds and the child's CPU seconds, user + system), and
+the CPU seconds of the text summary (``exactsym check``, which writes no exact text it
+does not print).  Run: ``python bench/bench_small_algebraic.py``
 (``--timeout S`` per run, default 60; ``--only NAME`` for one input).
 
 ``--in-process``: only the truth, timed inside the child after its imports (load + levels
@@ -89,6 +91,20 @@ def inputs() -> dict[str, str]:
                                             ("3/2", "1/4"), ("3/2", "3/4")])
     out.update(nested_inputs())
     out.update(mixed_inputs())
+    out.update(level_inputs())
+    return out
+
+
+def level_inputs() -> dict[str, str]:
+    """Many levels in Q(zeta_3988) (degree 1,992): robots at turns j/997 and distinct
+    radii, the SEC off the origin, so every robot is on a level of its own and the
+    paper layer compares hundreds of pairs of levels."""
+    out = {}
+    for n in (31, 100):
+        draw = random.Random(n)
+        turns = draw.sample(range(997), n)
+        out[f"{n} levels, turns j/997"] = _polar(
+            [(str(draw.randrange(1, 400)), f"{t}/997") for t in turns])
     return out
 
 
@@ -155,10 +171,13 @@ def _children_cpu() -> float:
 LAST_CPU = [0.0]
 
 
-def run(args: list[str], timeout: float) -> tuple[float, str]:
+def run(args: list[str], timeout: float, discard: bool = False) -> tuple[float, str]:
+    """``(wall seconds, the last word of the output or the failure)``; ``discard``: the
+    output is thrown away (a JSON report in a field of degree thousands is gigabytes)."""
     start, cpu = time.perf_counter(), _children_cpu()
     try:
-        done = subprocess.run(args, capture_output=True, text=True, timeout=timeout)
+        done = subprocess.run(args, stdout=subprocess.DEVNULL if discard else subprocess.PIPE,
+                              stderr=subprocess.PIPE, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
         LAST_CPU[0] = float("nan")
         return time.perf_counter() - start, f"timeout {timeout:.0f} s"
@@ -167,6 +186,8 @@ def run(args: list[str], timeout: float) -> tuple[float, str]:
     if done.returncode not in (0, 1):
         last = (done.stderr.strip().splitlines() or ["?"])[-1]
         return elapsed, f"exit {done.returncode}: {last[:70]}"
+    if discard:
+        return elapsed, "answered"
     return elapsed, done.stdout.split()[-1] if done.stdout.split() else "?"
 
 
@@ -210,19 +231,23 @@ def main() -> None:
         in_process(opts)
         return
     exactsym = [sys.executable, "-m", "exactsym"]
-    print(f"{'input':28} {'truth s':>8} {'group':>8} {'check s':>8} {'cpu s':>7}  outcome")
+    print(f"{'input':28} {'truth s':>8} {'group':>8} {'check s':>8} {'cpu s':>7}  "
+          f"{'summary cpu s':>13}  outcome")
     for name, path in input_files(opts.only):
         t_truth, group = run([sys.executable, "-c", TRUTH, str(path)], opts.timeout)
         if group.startswith("timeout"):
             group = "timeout"
         elif group.startswith("exit"):
             group = "refused"
-        t_check, outcome = run(exactsym + ["check", "--json", str(path)], opts.timeout)
+        t_check, outcome = run(exactsym + ["check", "--json", str(path)], opts.timeout,
+                               discard=True)
         c_check = LAST_CPU[0]
+        run(exactsym + ["check", str(path)], opts.timeout, discard=True)    # the summary
+        c_summary = LAST_CPU[0]
         if not outcome.startswith(("timeout", "exit")):
             outcome = "answered"
-        print(f"{name:28} {t_truth:8.2f} {group:>8} {t_check:8.2f} {c_check:7.2f}  {outcome}",
-              flush=True)
+        print(f"{name:28} {t_truth:8.2f} {group:>8} {t_check:8.2f} {c_check:7.2f}  "
+              f"{c_summary:13.2f}  {outcome}", flush=True)
 
 
 if __name__ == "__main__":

@@ -26,21 +26,20 @@ from .truth_report import truth_json
 
 def report_json(analysis: Analysis, brief: bool = False) -> dict:
     """The JSON object of ``exactsym check --json`` (``docs/cli.md``).  ``brief``: without
-    ``levels`` and the paper's ``G`` and ``G_prime`` (their exact texts: seconds in a
-    cyclotomic field of degree thousands), for summaries that do not print them."""
+    ``sec``, ``levels`` and the paper's ``G`` and ``G_prime`` (their exact texts: seconds
+    in a cyclotomic field of degree thousands), for summaries that do not print them."""
     with no_cycle_collection():        # one small dict per level: nothing cyclic
         return _report_json(analysis, brief)
 
 
 def _report_json(analysis: Analysis, brief: bool = False) -> dict:
     config, levels = analysis.config, analysis.levels
-    report = {
-        "n": config.n,
-        "sec": {"center": [number_text(c) for c in levels.sec.centre],
-                "radius_squared": number_text(levels.sec.radius_squared)},
-        "number_field": getattr(config.polar_system if levels.polar else config.system,
-                                "name", "Q"),
-    }
+    report = {"n": config.n}
+    if not brief:
+        report["sec"] = {"center": [number_text(c) for c in levels.sec.centre],
+                         "radius_squared": number_text(levels.sec.radius_squared)}
+    report["number_field"] = getattr(config.polar_system if levels.polar else config.system,
+                                     "name", "Q")
     if not brief:
         report["levels"] = _level_entries(levels.levels, analysis.level_verdicts,
                                           analysis.level_strings)

@@ -81,6 +81,9 @@ def number(x) -> str:
     >>> number(evaluate(node, number_system([node]))).endswith(" ≈ 1.41421")
     True
     """
+    size = _huge_text(x)
+    if size is not None:
+        return f"≈ {approx(x)} (exact: about {size} characters, in --json)"
     text = number_text(x)
     if len(text) > LONG:
         return _long(text, approx(x))
@@ -89,6 +92,29 @@ def number(x) -> str:
 
 def _long(text: str, decimal: str) -> str:
     return f"≈ {decimal} (exact: {len(text)} characters, in --json)"
+
+
+#: an exact text estimated longer than this is not written to be measured (a summary
+#: shows a decimal; in a field of degree thousands a coordinate's text is megabytes)
+HUGE = 100_000
+
+
+def _huge_text(x) -> str | None:
+    """The estimated length of ``number_text(x)`` in words ("4.8 million") when it is
+    above :data:`HUGE`, else None: a polynomial element's digits are counted from its
+    coefficients' bit lengths (log10 2 digits per bit, plus a dozen characters per term
+    for its power), without writing the text."""
+    poly = getattr(x, "poly", None)
+    if poly is None or not hasattr(poly, "numer") or poly.degree() < 64:
+        return None
+    num = poly.numer()
+    if (poly.degree() + 1) * (num.height_bits() * 0.30103 + 12) < HUGE:
+        return None                     # cannot be that long: measure the text
+    den_digits = poly.denom().bit_length() * 0.30103
+    size = sum(c.bit_length() * 0.30103 + den_digits + 12 for c in num.coeffs() if c)
+    if size < HUGE:
+        return None
+    return f"{size / 1e6:.1f} million" if size >= 1e6 else f"{size / 1e3:.0f} thousand"
 
 
 def square_root(x) -> str:
@@ -102,6 +128,9 @@ def square_root(x) -> str:
     if isinstance(x, FieldElement) and x.is_rational():
         x = x.rational()
     if isinstance(x, FieldElement):
+        size = _huge_text(x)
+        if size is not None:
+            return f"≈ {approx(x, sqrt=True)} (exact: sqrt of about {size} characters, in --json)"
         text = f"sqrt({number_text(x)})"
     else:
         q = fmpq(x)

@@ -248,14 +248,14 @@ def test_the_summary_builds_no_exact_texts_it_does_not_print(monkeypatch):
     monkeypatch.chdir(ROOT)
     analysis = analyse(load("cases/family/equilateral-g1-leader.toml"))
     brief = report_json(analysis, brief=True)
-    assert "levels" not in brief and "G" not in brief["paper"]
+    assert "levels" not in brief and "sec" not in brief and "G" not in brief["paper"]
     assert analysis.paper.described.value is None
     full = report_json(analysis)
     assert full["levels"] and full["paper"]["G"] and "G_prime" in full["paper"]
     assert analysis.paper.described.value is not None
     import pickle
     assert pickle.loads(pickle.dumps(analysis.paper)).G == full["paper"]["G"]
-    assert {k: v for k, v in full.items() if k != "levels"} == \
+    assert {k: v for k, v in full.items() if k not in ("levels", "sec")} == \
         {**brief, "paper": {**brief["paper"], "G": full["paper"]["G"],
                             "G_prime": full["paper"]["G_prime"]}}
 
@@ -282,3 +282,28 @@ def test_the_audit_line_counts_every_instance_and_lists_one_witness():
     assert summary_text(one) == text
     row = next(line for line in text.splitlines() if "obs-merg-asym-pair" in line)
     assert f"({failures:,}x)" in row
+
+
+def test_a_huge_exact_number_is_sized_without_being_written():
+    """A number whose exact text is estimated above text_numbers.HUGE characters is shown
+    by its decimal and the estimated size (within 5 % of the text's length); a shorter
+    one by the length of its text, as before."""
+    from flint import fmpq_poly
+    from exactsym.exact.cyclotomic import cyclotomic_field
+    from exactsym.exact.text import number_text
+    from exactsym.text_numbers import HUGE, _huge_text, approx, number
+    field = cyclotomic_field(2520)                     # degree 576
+    rng = random.Random(5)
+    big = field.element(fmpq_poly([rng.getrandbits(2000) - (1 << 1999)
+                                   for _ in range(576)], 7))
+    length = len(number_text(big))
+    assert length > HUGE
+    shown = number(big)
+    estimate = float(shown.split("about ")[1].split(" million")[0]) * 1e6 \
+        if "million" in shown else float(shown.split("about ")[1].split(" thousand")[0]) * 1e3
+    assert abs(estimate - length) < 0.05 * length
+    assert shown.startswith(f"≈ {approx(big)} (exact: about ")
+    small = field.element(fmpq_poly([rng.getrandbits(60) for _ in range(576)], 7))
+    assert _huge_text(small) is None
+    assert number(small) == f"≈ {approx(small)} (exact: {len(number_text(small))} characters, " \
+        "in --json)"
