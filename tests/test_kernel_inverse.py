@@ -40,6 +40,30 @@ def test_inverse_of_large_element_in_large_field():
     assert inv == (b * inverse_mod(a, phi)) % phi
 
 
+@settings(max_examples=15, deadline=None)
+@given(st.sampled_from([28, 44, 124, 508]), st.integers(0, 10 ** 6))
+def test_inverse_with_the_cyclotomic_remainder(m, seed):
+    """The lift reduced by the field's remainder (the binomial fold for radicals p and
+    2p, .cyclotomic_reduce) gives the inverse (unique: a u = 1 proves it)."""
+    from exactsym.exact.cyclotomic_reduce import cyclotomic_arithmetic
+    phi = fmpq_poly(fmpz_poly.cyclotomic(m))
+    n = phi.degree()
+    draw = random.Random(seed)
+    a = fmpq_poly([draw.randint(-10 ** 6, 10 ** 6) for _ in range(draw.randint(2, n))],
+                  draw.randint(1, 1000))
+    if a.degree() <= 0:
+        return
+    calls = []
+
+    def remainder(y):
+        calls.append(y.degree())
+        return cyclotomic_arithmetic(m).remainder(y)
+    from exactsym.exact import inverse
+    inverse._INVERSES.clear()                   # answers are remembered by value
+    u = inverse_mod(a, phi, remainder)
+    assert calls and (a * u) % phi == 1
+
+
 # -- the dense (Karatsuba) product of multiquadratic elements equals the term-by-term one --
 
 from exactsym.exact import multiquadratic as mqm  # noqa: E402

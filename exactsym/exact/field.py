@@ -381,7 +381,10 @@ class PolyElement(FieldElement):
             g, s, _ = self.poly.xgcd(self.field.minpoly)
             return PolyElement(self.field, s / g.coeffs()[0])
         # large degree or coefficients: fmpq_poly.xgcd explodes (minutes); see .inverse
-        return PolyElement(self.field, inverse_mod(self.poly, self.field.minpoly))
+        arithmetic = self.field.arithmetic()
+        return PolyElement(self.field, inverse_mod(
+            self.poly, self.field.minpoly,
+            arithmetic.remainder if arithmetic is not None else None))
 
     @_mixing
     def __truediv__(self, other):

@@ -51,12 +51,14 @@ def _rational_reconstruction(a: int, m: int):
     return (r1, s1) if s1 > 0 else (-r1, -s1)
 
 
-def inverse_mod(poly: fmpq_poly, minpoly: fmpq_poly) -> fmpq_poly:
+def inverse_mod(poly: fmpq_poly, minpoly: fmpq_poly, remainder=None) -> fmpq_poly:
     """``u`` of degree < deg(minpoly) with ``poly * u == 1`` modulo the irreducible ``minpoly``.
 
     The inverse modulo one 31-bit prime p (``nmod_poly.xgcd``, the costly step at degree
     thousands) is lifted by Newton's iteration u <- u (2 - a u) modulo p^2, p^4, ...
-    (products over Z reduced by :func:`remainder_function`, coefficients reduced modulo
+    (products over Z reduced by ``remainder`` when given -- a cyclotomic field's, linear
+    in the degree for Phi_p and Phi_2p radicals -- else :func:`remainder_function`,
+    coefficients reduced modulo
     p^(2^k) in C), which doubles the precision per step with two products instead of one
     xgcd per further prime.  Rational reconstruction proposes, the exact test decides;
     the work is bounded by the size of the answer: the lift stops at the first modulus
@@ -73,7 +75,7 @@ def inverse_mod(poly: fmpq_poly, minpoly: fmpq_poly) -> fmpq_poly:
     hit = _INVERSES.get(key)
     if hit is not None and hit[0] == m:
         return hit[1]
-    u = _lifted_inverse(a, den, m)
+    u = _lifted_inverse(a, den, m, remainder)
     if len(_INVERSES) >= _INVERSES_LIMIT:
         _INVERSES.clear()
     _INVERSES[key] = (m, u)
@@ -84,8 +86,10 @@ _INVERSES: dict = {}
 _INVERSES_LIMIT = 64
 
 
-def _lifted_inverse(a: fmpz_poly, den: fmpz, m: fmpz_poly) -> fmpq_poly:
-    """:func:`inverse_mod` of ``a / den`` modulo the monic integer ``m`` (no cache)."""
+def _lifted_inverse(a: fmpz_poly, den: fmpz, m: fmpz_poly, remainder=None) -> fmpq_poly:
+    """:func:`inverse_mod` of ``a / den`` modulo the monic integer ``m`` (no cache);
+    ``remainder``: ``x -> x mod m`` for deg x <= 2 deg m - 2 when the caller has a faster
+    one than Barrett's (a cyclotomic field's, .cyclotomic_reduce), else Barrett's."""
     i = 0
     while True:
         p = _small_prime(i)
@@ -95,7 +99,7 @@ def _lifted_inverse(a: fmpz_poly, den: fmpz, m: fmpz_poly) -> fmpq_poly:
             break
     s = s * pow(int(g.coeffs()[0]), -1, p)
     u = fmpz_poly([int(c) for c in s.coeffs()])
-    rem = remainder_function(m)
+    rem = remainder or remainder_function(m)
     modulus = fmpz(p)
     while True:
         old, modulus = modulus, modulus * modulus
