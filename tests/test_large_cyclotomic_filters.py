@@ -286,3 +286,17 @@ def test_line_keys_of_the_same_factors_are_equal_without_a_product(a, b):
         keys.complex_product = made
     assert (bisector_key(False, a, b) == line_key(False, a)) == \
         (line_canon(complex_product(a, b)) == line_canon(complex_product(a, a)))
+
+
+@settings(max_examples=60, deadline=None)
+@given(reals(), reals(), st.integers(-5, 5).filter(bool))
+def test_quotient_proved_irrational_only_when_irrational(x, y, q):
+    """quotient_irrational never calls a rational quotient irrational (x = q y, x/x, 0/y),
+    and when it proves one irrational the exact quotient is not rational."""
+    from exactsym.exact.cyclotomic_modular import quotient_irrational
+    if y == 0:
+        return
+    assert not quotient_irrational(q * y, y) and not quotient_irrational(y, y)
+    assert not quotient_irrational(0 * y, y)
+    if quotient_irrational(x, y):
+        assert not (x / y).is_rational()

@@ -133,6 +133,19 @@ def ratio_irrational(x, y) -> bool:
     return _differ(p, sides)
 
 
+def quotient_irrational(x, y) -> bool:
+    """True only when ``x / y`` is proved irrational: the images of the quotient under the
+    two maps differ (y's images non-zero).  False means "not proved"."""
+    found = images((x, y))
+    if found is None:
+        return False
+    p, sides = found
+    (x1, y1), (x2, y2) = sides
+    if y1 == 0 or y2 == 0:
+        return False
+    return x1 * y2 % p != x2 * y1 % p
+
+
 def product_ratio_irrational(a, b) -> bool:
     """:func:`ratio_irrational` of (x, y) = a b, the complex product of the vectors a and b
     (x = a_x b_x - a_y b_y, y = a_x b_y + a_y b_x), computed in F_p only: the maps are
@@ -155,4 +168,4 @@ def _differ(p: int, sides) -> bool:
     return values[0] != values[1]
 
 
-__all__ = ["images", "product_ratio_irrational", "ratio_irrational"]
+__all__ = ["images", "product_ratio_irrational", "quotient_irrational", "ratio_irrational"]
