@@ -102,19 +102,22 @@ HUGE = 100_000
 def _huge_text(x) -> str | None:
     """The estimated length of ``number_text(x)`` in words ("4.8 million") when it is
     above :data:`HUGE`, else None: a polynomial element's digits are counted from its
-    coefficients' bit lengths (log10 2 digits per bit, plus a dozen characters per term
-    for its power), without writing the text."""
+    coefficients' bit lengths (0.30103 digits per bit, in integers, plus a dozen
+    characters per term for its power), without writing the text."""
     poly = getattr(x, "poly", None)
     if poly is None or not hasattr(poly, "numer") or poly.degree() < 64:
         return None
     num = poly.numer()
-    if (poly.degree() + 1) * (num.height_bits() * 0.30103 + 12) < HUGE:
+    if (poly.degree() + 1) * (num.height_bits() * 30103 // 100_000 + 13) < HUGE:
         return None                     # cannot be that long: measure the text
-    den_digits = poly.denom().bit_length() * 0.30103
-    size = sum(c.bit_length() * 0.30103 + den_digits + 12 for c in num.coeffs() if c)
+    den_digits = poly.denom().bit_length() * 30103 // 100_000
+    size = sum(c.bit_length() * 30103 // 100_000 + den_digits + 12 for c in num.coeffs() if c)
     if size < HUGE:
         return None
-    return f"{size / 1e6:.1f} million" if size >= 1e6 else f"{size / 1e3:.0f} thousand"
+    if size >= 10 ** 6:
+        tenths = (size + 50_000) // 100_000
+        return f"{tenths // 10}.{tenths % 10} million"
+    return f"{(size + 500) // 1000} thousand"
 
 
 def square_root(x) -> str:

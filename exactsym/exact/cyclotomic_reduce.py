@@ -58,8 +58,8 @@ def binomial_remainder(r: int):
     else None.  Phi_p = (y^p - 1) / (y - 1) = 1 + y + ... + y^(p-1) and Phi_2p(y) =
     Phi_p(-y) = (y^p + 1) / (y + 1): y^p = eps (mod Phi_r), eps = 1 or -1, so the
     coefficients of y^(p+k) fold onto y^k (times eps) until the degree is at most p - 1;
-    then the monic Phi_r (degree p - 1, leading coefficient 1)
-    times the coefficient c of y^(p-1) is subtracted: the canonical remainder."""
+    then Phi_r (monic, degree p - 1) times the coefficient c of y^(p-1) is subtracted: the
+    canonical remainder."""
     factors = factorization(r)
     odd = [q for q in factors if q != 2]
     if len(odd) != 1 or any(e > 1 for e in factors.values()) or r not in (odd[0], 2 * odd[0]):
