@@ -22,7 +22,7 @@ from . import __version__
 from .analysis import Options, analyse
 from .configuration import load, no_cycle_collection
 from .errors import EXIT_BUG, EXIT_FALSE, EXIT_INPUT, EXIT_OK, InputError
-from .report import failed_expectations, json_text, report_json, report_text
+from .report import failed_expectations, report_json, report_text, write_json
 
 
 class _Parser(argparse.ArgumentParser):
@@ -56,7 +56,7 @@ def _check(args) -> int:
         # the JSON report (every exact text) only when printed or read by [expect]
         report = report_json(analysis) if args.json or config.expect else None
         if args.json:
-            print(json_text(report, compact=args.compact))
+            write_json(report, sys.stdout, compact=args.compact)
         else:
             print(report_text(analysis, verbose=args.verbose))
     failures = failed_expectations(config, report) if config.expect else []

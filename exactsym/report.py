@@ -147,6 +147,39 @@ def json_text(report: dict, compact: bool = False) -> str:
     return "".join(out)
 
 
+def write_json(report: dict, stream, compact: bool = False) -> None:
+    """:func:`json_text` of ``report`` and a newline, written to ``stream`` as it is made:
+    in a cyclotomic field of degree thousands the text is gigabytes, and joining it, then
+    encoding it for printing, held two more copies of it."""
+    if compact:
+        stream.write(json.dumps(report) + "\n")
+        return
+    sink = _Sink(stream)
+    with no_cycle_collection():
+        _write(report, "", sink)
+    sink.append("\n")
+    sink.flush()
+
+
+class _Sink:
+    """A list-like ``append`` that writes to a stream by pieces of about 4 MB (few writes
+    for many small pieces; no copy of the whole text for huge ones)."""
+
+    def __init__(self, stream):
+        self.stream, self.pieces, self.size = stream, [], 0
+
+    def append(self, text: str) -> None:
+        self.pieces.append(text)
+        self.size += len(text)
+        if self.size > 1 << 22:
+            self.flush()
+
+    def flush(self) -> None:
+        if self.pieces:
+            self.stream.write("".join(self.pieces))
+        self.pieces, self.size = [], 0
+
+
 def _write(value, pad: str, out: list) -> None:
     """``value`` indented as by ``json.dumps(indent=2)`` at the indentation ``pad``
     (the long lists of :func:`json_text` excepted)."""
@@ -295,5 +328,5 @@ def failed_expectations(config: Configuration, report: dict) -> list[str]:
     return failures
 
 
-__all__ = ["report_json", "report_text", "json_text", "check_report", "failed_expectations",
-           "EXPECTATIONS", "GATHER_PREFIX"]
+__all__ = ["report_json", "report_text", "json_text", "write_json", "check_report",
+           "failed_expectations", "EXPECTATIONS", "GATHER_PREFIX"]
