@@ -393,7 +393,8 @@ def mapped_levels(levels: Levels, points, sim) -> Levels | None:
             return None
         through = points[found[0]]
     centre = image(circle._centre) if circle._centre is not None else None
-    radius = circle._radius_squared * k2 if circle._radius_squared is not None else None
+    radius = circle._radius_squared * k2 if circle._radius_squared is not None and k2 != 1 \
+        else circle._radius_squared
     sec = Circle(centre, radius, circle.support, (x, y, d), through)
     enc2 = Enclosures(points, sec.homogeneous)
     flat: list[int] = []
@@ -405,7 +406,8 @@ def mapped_levels(levels: Levels, points, sim) -> Levels | None:
         if len(members) > 1:
             members = enc2.sorted_by_direction(members)[0]
         flat.extend(members)
-        known[k] = level.radius_squared * k2
+        # (a product by 1 still rewrites a megabyte number in canonical form)
+        known[k] = level.radius_squared * k2 if k2 != 1 else level.radius_squared
     bounds.append(len(points))
     mapped = AlgebraicLevels(flat, bounds, enc2, sec)
     mapped.known.update(known)
