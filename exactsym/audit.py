@@ -177,7 +177,7 @@ def transformed(config: Configuration, ring_data: Levels, frame: str) -> Configu
 
 
 def _frame_levels(config: Configuration, ring_data: Levels, moved: Configuration,
-                  frame: str) -> Levels | None:
+                  frame: str, rings=()) -> Levels | None:
     """The levels of ``moved`` (``config`` in ``frame``, from :func:`transformed`) mapped
     from ``ring_data`` (the levels of ``config``) along the frame's similarity (the SEC,
     the levels and their radii are ground truth, not the paper's:
@@ -188,7 +188,11 @@ def _frame_levels(config: Configuration, ring_data: Levels, moved: Configuration
             or len(enc.points) != config.n \
             or not all(a is b for a, b in zip(enc.points, config.points)):
         return None
-    return mapped_levels(ring_data, moved.points, CARTESIAN_FRAMES[frame])
+    # the vectors p - C of the paper's own polygons (``rings``: G as Rings), mapped
+    vectors = {label[0]: d for ring in rings if ring.polygon is not None
+               and not ring.polygon.polar and len(ring.robots) == 1
+               for label, d in zip(ring.polygon.labels, ring.polygon.directions)}
+    return mapped_levels(ring_data, moved.points, CARTESIAN_FRAMES[frame], vectors)
 
 
 FRAME_TEXT = {
@@ -476,7 +480,8 @@ def _leader_check(config, ring_data, paper, group, kw, options) -> tuple[list, l
         base = _actions(paper)
         for frame in FRAMES[1:]:
             moved = transformed(config, ring_data, frame)
-            res = F.paper_procedure(moved, _frame_levels(config, ring_data, moved, frame), **kw,
+            res = F.paper_procedure(moved, _frame_levels(config, ring_data, moved, frame,
+                                                         paper.G_rings), **kw,
                                     claims=False, check_vl=False, describe_polygons=False)
             if not res.complete or _actions(res) == base:
                 continue

@@ -345,7 +345,7 @@ def _group_rational_levels(n: int, radii_squared, order_level, approx=None, radi
     return levels
 
 
-def mapped_levels(levels: Levels, points, sim) -> Levels | None:
+def mapped_levels(levels: Levels, points, sim, vectors: dict | None = None) -> Levels | None:
     """The levels of the configuration whose points are ``points``, the images of the
     points of ``levels`` under the exact similarity ``sim`` (a
     :class:`exactsym.configuration.Similarity` without ``turn``; robot indices kept), read
@@ -357,7 +357,11 @@ def mapped_levels(levels: Levels, points, sim) -> Levels | None:
     the new frame's +x ray, is computed again (:meth:`Enclosures.sorted_by_direction`, as
     :func:`filtered_levels` does).  The homogeneous centre (X, Y, D) keeps its D, so no
     field product or inverse is made.  None unless ``levels`` came from the Arb-ball path
-    (irrational coordinates, levels built) and ``sim`` has no ``turn``."""
+    (irrational coordinates, levels built) and ``sim`` has no ``turn``.  ``vectors``:
+    ``{i: p_i - C}`` in the first frame, mapped by the similarity's linear part into
+    ``Levels.vectors`` when that part is a reflection (a sign: where p - C in the new
+    frame costs a subtraction of megabyte numbers; a rotation or a scale would cost as
+    much as the subtraction)."""
     lv = levels.levels
     enc = levels.enclosures
     if levels.polar or enc is None or not isinstance(lv, tuple) or sim.turn is not None \
@@ -411,4 +415,7 @@ def mapped_levels(levels: Levels, points, sim) -> Levels | None:
     bounds.append(len(points))
     mapped = AlgebraicLevels(flat, bounds, enc2, sec)
     mapped.known.update(known)
-    return Levels(sec, mapped, False, enclosures=enc2)
+    moved_vectors = None
+    if vectors and sim.rotation is None and sim.scale == 1:
+        moved_vectors = (points, {i: linear(*v) for i, v in vectors.items()})
+    return Levels(sec, mapped, False, enclosures=enc2, vectors=moved_vectors)

@@ -103,3 +103,35 @@ def test_groups_of_unions_of_levels_by_balls_equal_the_exact_ones(config, data):
     assert r1 == r2
     assert (g1.name, g1.orderable, g1.ordering, g1.leader) == \
         (g2.name, g2.orderable, g2.ordering, g2.leader)
+
+
+@settings(max_examples=25, deadline=None)
+@given(configurations())
+def test_mapped_vectors_are_the_moved_points_minus_the_centre(config):
+    """A reflected frame takes the paper's vectors p - C with one sign changed: each is
+    the moved point minus the moved centre, exactly; a frame that rotates or scales maps
+    none (it would cost what the subtraction costs); the paper's actions are the same
+    with the mapped vectors as without them."""
+    if config is None:
+        return
+    from exactsym.paper.family import paper_procedure
+    ring = built_levels(levels_of(config))
+    paper = paper_procedure(config, ring)
+    for frame in FRAMES[1:]:
+        moved = transformed(config, ring, frame)
+        mapped = _frame_levels(config, ring, moved, frame, paper.G_rings)
+        if mapped is None:
+            continue
+        if frame != "reflection":
+            assert mapped.vectors is None
+            continue
+        owner, vectors = mapped.vectors
+        assert owner is moved.points and vectors
+        cx, cy = mapped.sec.centre
+        for i, (vx, vy) in vectors.items():
+            x, y = moved.points[i]
+            assert vx == x - cx and vy == y - cy
+        plain = paper_procedure(moved, _frame_levels(config, ring, moved, frame))
+        with_vectors = paper_procedure(moved, mapped)
+        assert [m["robot"] for m in with_vectors.moves] == [m["robot"] for m in plain.moves]
+        assert with_vectors.leader == plain.leader
