@@ -338,8 +338,11 @@ def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True, 
             px, py = pscale(m.nx, MQ.rational(n)), pscale(m.ny, MQ.rational(n))
             e2 = psub(padd(pmul(psub(mx, ax), psub(mx, ax)), pmul(psub(my, ay), psub(my, ay))),
                       padd(pmul(psub(mx, px), psub(mx, px)), pmul(psub(my, py), psub(my, py))))
-            from .polyroots import pgcd
-            common = pgcd(e1, e2) if e1 and e2 else ()
+            from .polyroots import pgcd, surely_no_root_in_unit
+            # the gcd's roots are roots of e1 and of e2: none inside the piece when a
+            # ball proves one of them has none there (its roots are all that is read)
+            common = pgcd(e1, e2) if e1 and e2 and not (
+                surely_no_root_in_unit(e1) or surely_no_root_in_unit(e2)) else ()
             if len(common) > 1:
                 polys.append((common, f"symmetry: the centroid meets the SEC centre (SEC "
                               f"through the mover, {a_i} and {b_i})"))

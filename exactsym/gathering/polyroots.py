@@ -176,6 +176,61 @@ def _surely_squarefree(p, prec: int = 128) -> bool:
         ctx.prec = old
 
 
+def surely_no_root_in_unit(p, prec: int = 128, depth: int = 6) -> bool:
+    """Does a rigorous Arb enclosure prove that ``p`` has no root in the open (0, 1)?
+    A filter (True is a proof, False says nothing).  An exact root at 0 or 1 (``p_0``
+    zero, or the coefficients' sum zero: additions only) is divided out first (by
+    ``f``, by ``f - 1`` synthetically), which keeps the roots inside.  Then each
+    coefficient's ball
+    (``enclosure``, rigorous for every kernel number), then on each of up to 2^depth
+    dyadic pieces X = [a, b] of [0, 1] the ball of p(X) by Horner's rule and by the
+    mean value form p(m) + p'(X)(X - m); a piece is cleared when either excludes 0.
+    Interval arithmetic encloses every value p(x), x in X, so no piece holds a root.
+    The exact isolation (squarefree part, Sturm chain, inverses of coefficients of up
+    to 256 terms) is then not needed: most relations of a motion have no root inside
+    its piece."""
+    p = list(trim(p))
+    while len(p) > 1 and p[0].is_zero():
+        p.pop(0)
+    while len(p) > 1 and sum(p[1:], p[0]).is_zero():
+        q = [p[-1]]                         # p = (f - 1) q: q_k = p_(k+1) + q_(k+1)
+        for c in reversed(p[1:-1]):
+            q.append(c + q[-1])
+        p = q[::-1]
+    if len(p) < 2:
+        return bool(p)
+    old = ctx.prec
+    ctx.prec = prec
+    try:
+        cs = [c.enclosure(prec) for c in p]
+        ds = [cs[k] * k for k in range(1, len(cs))]
+        if not all(c.is_finite() for c in cs):
+            return False
+
+        def horner(coeffs, x):
+            v = arb(0)
+            for c in reversed(coeffs):
+                v = v * x + c
+            return v
+        stack = [(fmpq(0), fmpq(1), 0)]
+        while stack:
+            a, b, d = stack.pop()
+            m = (a + b) / 2
+            x = arb(a).union(arb(b))
+            if not horner(cs, x).contains(0):
+                continue
+            if not (horner(cs, arb(m)) + horner(ds, x) * (x - arb(m))).contains(0):
+                continue
+            if d >= depth:
+                return False
+            stack += [(a, m, d + 1), (m, b, d + 1)]
+        return True
+    except (AttributeError, TypeError, ValueError):   # coefficients without balls
+        return False
+    finally:
+        ctx.prec = old
+
+
 def sturm_chain(p) -> list:
     chain = [trim(p), pderiv(p)]
     while len(chain[-1]) > 1:
@@ -303,7 +358,7 @@ def roots_in_unit(poly, tag=None) -> list:
     A polynomial that is identically zero has no isolated roots (the relation holds
     along the whole piece): ``[]``."""
     p = trim(poly)
-    if len(p) <= 1:
+    if len(p) <= 1 or surely_no_root_in_unit(p):
         return []
     out: list = []
     if len(p) > 3:
