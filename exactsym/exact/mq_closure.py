@@ -110,6 +110,15 @@ def decided_sqrt(x, bounded: bool = True):
         return (-root if root.sign() < 0 else root), True
     if not isinstance(x, MQ):
         x = MQ.rational(x)
+    return _decided_sqrt_mq(x, bounded)
+
+
+@lru_cache(maxsize=4096)
+def _decided_sqrt_mq(x: MQ, bounded: bool):
+    """:func:`decided_sqrt` of an MQ, remembered: a function of the value alone (the
+    search and its modular filter are deterministic, and the answer is the non-negative
+    root or None), and a critical instant's discriminant is tested two or three times
+    (the quadratic's, again in the isolation, then the monic one's)."""
     if x.is_zero():
         return MQ(), True
     if x.sign() < 0:

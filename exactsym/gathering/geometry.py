@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..exact.multiquadratic import MQ, mq, sqrt_rational
+from ..exact.multiquadratic import MQ, mq, sqrt_rational, sum_of_products
 from ..exact.tower import neg as tuple_neg
 from .polyroots import padd, peval, pmul, pscale, trim
 
@@ -48,10 +48,16 @@ def scale(p, s):
 
 
 def dot(u, v):
+    # MQ coordinates: both products summed over integers, made canonical once
+    # (multiquadratic.sum_of_products: the same element, fewer gcds)
+    if type(u[0]) is MQ and type(u[1]) is MQ and type(v[0]) is MQ and type(v[1]) is MQ:
+        return sum_of_products(((1, u[0], v[0]), (1, u[1], v[1])))
     return u[0] * v[0] + u[1] * v[1]
 
 
 def cross(u, v):
+    if type(u[0]) is MQ and type(u[1]) is MQ and type(v[0]) is MQ and type(v[1]) is MQ:
+        return sum_of_products(((1, u[0], v[1]), (-1, u[1], v[0])))
     return u[0] * v[1] - u[1] * v[0]
 
 

@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 from flint import arb, arb_mat, ctx, fmpq
 
 from ..exact.mq_closure import RATIONAL_BITS, closure_sqrt, decided_sqrt  # noqa: F401
-from ..exact.multiquadratic import MQ
+from ..exact.multiquadratic import MQ, sum_of_products
 from .tower_numbers import biquadratic_root, is_tower, quadratic_root, tower_sqrt
 
 ZERO = MQ()
@@ -62,6 +62,11 @@ def psub(p, q) -> tuple:
 def pmul(p, q) -> tuple:
     if not p or not q:
         return ()
+    if all(type(c) is MQ for c in p) and all(type(c) is MQ for c in q):
+        # each coefficient a sum of products made canonical once (sum_of_products)
+        return trim(sum_of_products((1, p[i], q[k - i])
+                                    for i in range(max(0, k - len(q) + 1), min(k, len(p) - 1) + 1))
+                    for k in range(len(p) + len(q) - 1))
     out = [ZERO] * (len(p) + len(q) - 1)
     for i, a in enumerate(p):
         if a.is_zero():
