@@ -205,9 +205,16 @@ class MQ(FieldElement):
 
     def inverse(self) -> "MQ":
         """``1 / self`` by conjugation: each step multiplies by the conjugate that flips one
-        element of a coprime base of the radicands, which removes that element."""
+        element of a coprime base of the radicands, which removes that element.  An
+        element of many terms has its inverse remembered by value (k products of up to
+        2^k terms; a leading coefficient is inverted again at each division by it)."""
         if not self.terms:
             raise ZeroDivisionError("inverse of zero")
+        if len(self.terms) >= _REMEMBERED_INVERSE:
+            return _inverse_of(self)
+        return self._inverse()
+
+    def _inverse(self) -> "MQ":
         num = MQ.rational(1)
         x = self
         while not x.is_rational():
@@ -337,6 +344,16 @@ class MQ(FieldElement):
 
     def __repr__(self):
         return f"MQ({self.text()!r})"
+
+
+#: terms from which an inverse is remembered (:func:`_inverse_of`)
+_REMEMBERED_INVERSE = 8
+
+
+@lru_cache(maxsize=1024)
+def _inverse_of(x: MQ) -> MQ:
+    """``x.inverse()`` by value: the inverse is a function of the (canonical) value."""
+    return x._inverse()
 
 
 def mq(x) -> MQ:

@@ -62,8 +62,27 @@ def cross(u, v):
 
 
 def dist2(p, q):
+    if type(p[0]) is MQ and type(p[1]) is MQ and type(q[0]) is MQ and type(q[1]) is MQ:
+        key = (id(p), id(q))
+        hit = _DIST2.get(key)
+        if hit is not None and hit[0] is p and hit[1] is q:
+            return hit[2]
+        d = sub(p, q)
+        out = dot(d, d)
+        if len(_DIST2) >= _DIST2_MAX:
+            _DIST2.clear()
+        _DIST2[key] = (p, q, out)
+        return out
     d = sub(p, q)
     return dot(d, d)
+
+
+#: dist2 of the same two point objects (a decision measures a robot's distance to the
+#: centre in the recogniser, in R's distances and in the centre rule): remembered by
+#: identity, each entry holding its points (so no id is reused while it is kept); only
+#: for MQ coordinates, which never change (a point is an immutable tuple)
+_DIST2: dict = {}
+_DIST2_MAX = 1 << 14
 
 
 def rotate(u, c, s):

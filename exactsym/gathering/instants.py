@@ -67,8 +67,8 @@ from flint import fmpq
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .algebraic_instants import is_algebraic, mixes
-from .polyroots import (Root, padd, pmul, pscale, psub, roots_in_unit,
-                        roots_of, trim)
+from .polyroots import (Root, padd, pgcd, pmul, pscale, psub, roots_in_unit,
+                        roots_of, surely_no_root_in_unit, trim)
 
 ONE = MQ.rational(1)
 
@@ -324,25 +324,26 @@ def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True, 
         if f is not None:
             params.append((f, f"symmetry: the centroid meets the SEC centre ({what})"))
     # SEC through the mover and hull robots a, b: the centroid equidistant from a, b, p
+    # n D m = total D + N;  |m-a|^2 - |m-b|^2 = 2 m.(b-a) + |a|^2 - |b|^2
+    mx = padd(pscale(m.d, total[0]), m.nx)
+    my = padd(pscale(m.d, total[1]), m.ny)
     for x, a_i in enumerate(hull):
         for b_i in hull[x + 1:]:
             a, b = static[a_i], static[b_i]
-            # n D m = total D + N;  |m-a|^2 - |m-b|^2 = 2 m.(b-a) + |a|^2 - |b|^2
-            mx = padd(pscale(m.d, total[0]), m.nx)
-            my = padd(pscale(m.d, total[1]), m.ny)
             ba = g.sub(b, a)
             e1 = padd(pscale(padd(pscale(mx, ba[0]), pscale(my, ba[1])), 2),
                       pscale(m.d, (g.dot(a, a) - g.dot(b, b)) * n))
+            # the gcd's roots are roots of e1 and of e2: none inside the piece when e1 is
+            # zero or a ball proves it has none there (its roots are all that is read),
+            # so e2 is not built then
+            if not e1 or surely_no_root_in_unit(e1):
+                continue
             # |m-a|^2 - |m-p|^2 with nD m, nD a, n N: (nDm - nDa)^2 - (nDm - nN)^2
             ax, ay = pscale(m.d, a[0] * n), pscale(m.d, a[1] * n)
             px, py = pscale(m.nx, MQ.rational(n)), pscale(m.ny, MQ.rational(n))
             e2 = psub(padd(pmul(psub(mx, ax), psub(mx, ax)), pmul(psub(my, ay), psub(my, ay))),
                       padd(pmul(psub(mx, px), psub(mx, px)), pmul(psub(my, py), psub(my, py))))
-            from .polyroots import pgcd, surely_no_root_in_unit
-            # the gcd's roots are roots of e1 and of e2: none inside the piece when a
-            # ball proves one of them has none there (its roots are all that is read)
-            common = pgcd(e1, e2) if e1 and e2 and not (
-                surely_no_root_in_unit(e1) or surely_no_root_in_unit(e2)) else ()
+            common = pgcd(e1, e2) if e2 and not surely_no_root_in_unit(e2) else ()
             if len(common) > 1:
                 polys.append((common, f"symmetry: the centroid meets the SEC centre (SEC "
                               f"through the mover, {a_i} and {b_i})"))

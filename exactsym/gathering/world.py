@@ -147,6 +147,7 @@ class World:
         # the run's tower of nested radicals (none until a radial target needs one): every
         # planned path is re-homed into it, so all positions compare in one tower
         self.home = RunHome()
+        self._local = None        # (frame, positions, snapshot) of the last fresh decision
 
     @property
     def n(self) -> int:
@@ -160,7 +161,14 @@ class World:
         ``frame``; its paths stay in the Look's own numbers (not re-homed into the run's
         tower, which can cost a square-root test per level: a check that reads only the
         decision's centre or status needs none of it)."""
-        local = tuple(frame.to_local(p) for p in self.positions())
+        pos = self.positions()
+        memo = self._local
+        if memo is not None and memo[0] == frame and len(memo[1]) == len(pos) and \
+                all(a is b for a, b in zip(memo[1], pos)):
+            local = memo[2]         # the same point objects in the same frame: the same
+        else:                       # snapshot, whose numbers' hashes are kept on them
+            local = tuple(frame.to_local(p) for p in pos)
+            self._local = (frame, pos, local)
         return self.decide(local, self.readings,
                            fmpq(frame.unit.numerator, frame.unit.denominator))
 
