@@ -94,3 +94,111 @@ def test_filter_examples():
     # a double root inside (no sign change): never cleared
     assert not pr.surely_no_root_in_unit(_from_roots([sqrt_rational(fmpq(1, 2))] * 2,
                                                      f(1)))
+
+
+# -- sum_of_products, squares, remembered inverses ------------------------------------
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from([1, -1, 2]), terms, terms), max_size=4))
+def test_sum_of_products_equals_the_plain_sum(items):
+    items = [(s, MQ(a), MQ(b)) for s, a, b in items]
+    want = MQ()
+    for s, a, b in items:
+        want = want + MQ(mqm._rational_product(a.terms, b.terms)) * s
+    assert mqm.sum_of_products(items) == want
+
+
+@settings(max_examples=200, deadline=None)
+@given(terms)
+def test_square_equals_the_product_of_two_copies(a):
+    x, y = MQ(a), MQ(dict(a))
+    assert (x * x).terms == mqm._rational_product(a, dict(a)) == (x * y).terms
+
+
+small_terms = st.dictionaries(st.sampled_from([1, 2, 3, 5, 6, 10, 15, 30, 7, 21]),
+                              st.integers(-9, 9).filter(bool).map(fmpq),
+                              min_size=mqm._REMEMBERED_INVERSE, max_size=10)
+
+
+@settings(max_examples=30, deadline=None)
+@given(small_terms)
+def test_remembered_inverse_is_the_inverse(a):
+    x = MQ(a)
+    assert x.inverse() == x._inverse() and (x * x.inverse()) == 1
+    assert MQ(dict(a)).inverse() == x._inverse()        # an equal value, another object
+
+
+def test_dist2_reuse_is_by_identity():
+    from exactsym.gathering import geometry as g
+    p = (MQ.rational(1), sqrt_rational(2))
+    q = (MQ.rational(4), MQ.rational(0))
+    assert g.dist2(p, q) == MQ.rational(11)
+    assert g.dist2(p, q) == MQ.rational(11)            # remembered: the same value
+    p2 = (MQ.rational(1), sqrt_rational(3))           # another tuple: computed afresh
+    assert g.dist2(p2, q) == MQ.rational(12)
+
+
+# -- the bounded split with primality asked lazily --------------------------------------
+def _eager_split(n, hints=()):
+    """The bounded split as it was: every part's primality proved as it is found."""
+    from math import gcd, isqrt
+    from flint import fmpz
+    from exactsym.exact.mq_closure import SMOOTH_BITS, _cut
+    parts = {}
+    open_ = _cut(n, hints)
+    for bits in (24, 32, 40, SMOOTH_BITS):
+        left = []
+        for b, e in open_:
+            for f, k in fmpz(b).factor_smooth(bits):
+                f, k = int(f), int(k) * e
+                if f in parts:
+                    parts[f][0] += k
+                    continue
+                prime = bool(fmpz(f).is_prime())
+                if k % 2 == 0 or prime or isqrt(f) ** 2 == f:
+                    parts[f] = [k, prime]
+                else:
+                    left.append((f, k))
+        open_ = left
+        if not open_:
+            break
+    if open_:
+        return None
+    check = 1
+    for b, (e, _) in parts.items():
+        check *= b ** e
+    keys = list(parts)
+    if check != n or any(gcd(a, b) != 1 for k, a in enumerate(keys) for b in keys[k + 1:]):
+        return None
+    s, m = 1, 1
+    for b, (e, prime) in parts.items():
+        if e % 2 == 0:
+            s *= b ** (e // 2)
+        elif prime:
+            s, m = s * b ** (e // 2), m * b
+        elif isqrt(b) ** 2 == b:
+            s *= isqrt(b) ** e
+        else:
+            return None
+    return s, m
+
+
+BIG_PRIMES = [2 ** 61 - 1, 2 ** 89 - 1, 2 ** 107 - 1, 2 ** 127 - 1, 1000000007]
+COMPOSITE = (2 ** 61 - 1) * (2 ** 89 - 1)          # no small factor: ECM at 48 bits misses
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.sampled_from(BIG_PRIMES + [2, 3, 5, 7, 3301]),
+                          st.integers(1, 4)), min_size=1, max_size=4),
+       st.booleans(), st.lists(st.sampled_from(BIG_PRIMES + [6, 35, 3301]), max_size=3))
+def test_bounded_split_with_lazy_primality_equals_the_eager_one(factors, hard, hints):
+    from exactsym.exact.mq_closure import bounded_squarefree_split
+    n = 1
+    for p, e in factors:
+        n *= p ** e
+    if hard:
+        n *= COMPOSITE
+    got = bounded_squarefree_split.__wrapped__(n, tuple(hints))
+    assert got == _eager_split(n, tuple(hints))
+    if got is not None:
+        s, m = got
+        assert s * s * m == n

@@ -320,8 +320,13 @@ def bounded_squarefree_split(n: int, hints: tuple = ()):
                 if f in parts:
                     parts[f][0] += k
                     continue
+                if k % 2 == 0:
+                    # primality is read only if a merge makes the exponent odd (below):
+                    # a proof for a large prime squared costs up to a second
+                    parts[f] = [k, None]
+                    continue
                 prime = bool(fmpz(f).is_prime())
-                if k % 2 == 0 or prime or isqrt(f) ** 2 == f:
+                if prime or isqrt(f) ** 2 == f:
                     parts[f] = [k, prime]
                 else:
                     left.append((f, k))
@@ -340,7 +345,7 @@ def bounded_squarefree_split(n: int, hints: tuple = ()):
     for b, (e, prime) in parts.items():
         if e % 2 == 0:
             s *= b ** (e // 2)
-        elif prime:
+        elif prime or (prime is None and fmpz(b).is_prime()):
             s, m = s * b ** (e // 2), m * b
         elif isqrt(b) ** 2 == b:
             s *= isqrt(b) ** e
