@@ -20,6 +20,7 @@ Predicates (CGAL style: they return bools or small ints and are exact):
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 from ..exact.multiquadratic import MQ, mq, sqrt_rational, sum_of_products
 from ..exact.tower import neg as tuple_neg
@@ -169,13 +170,20 @@ class Arc:
     def at(self, f):
         """The point of the arc reached by the rational rotation whose half-angle tangent is
         ``f`` times that of the whole arc (``0 <= f <= 1``, stays in the same field)."""
+        a = sub(self.start, self.centre)
+        t = self._tan_half * f
+        t2 = t * t
+        inv = 1 / (1 + t2)          # one inverse for both (the same values as dividing)
+        return add(self.centre, rotate(a, (1 - t2) * inv, (2 * t) * inv))
+
+    @cached_property
+    def _tan_half(self):
+        """tan of half the whole arc's angle (the arc is at most a quarter turn); kept on
+        the arc, whose points never change: a motion's instants are all on one arc."""
         a, b = sub(self.start, self.centre), sub(self.end, self.centre)
         r2 = dot(a, a)
-        cos_t, sin_t = dot(a, b) / r2, cross(a, b) / r2      # of the whole arc
-        tan_half = sin_t / (1 + cos_t)                         # arc <= quarter turn
-        t = tan_half * f
-        den = 1 + t * t
-        return add(self.centre, rotate(a, (1 - t * t) / den, (2 * t) / den))
+        cos_t, sin_t = dot(a, b) / r2, cross(a, b) / r2
+        return sin_t / (1 + cos_t)
 
     def split(self, f):
         mid = self.at(f)

@@ -207,10 +207,26 @@ def surely_no_root_in_unit(p, prec: int = 128, depth: int = 6) -> bool:
     old = ctx.prec
     ctx.prec = prec
     try:
-        cs = [c.enclosure(prec) for c in p]
+        return balls_clear_unit([c.enclosure(prec) for c in p], prec, depth)
+    except (AttributeError, TypeError, ValueError):   # coefficients without balls
+        return False
+    finally:
+        ctx.prec = old
+
+
+def balls_clear_unit(cs, prec: int = 128, depth: int = 6) -> bool:
+    """Do the balls ``cs`` (coefficients, lowest degree first) prove that every
+    polynomial with coefficients in them has no root in the closed [0, 1]?  (The test
+    of :func:`surely_no_root_in_unit`, on balls: a caller may build them without the
+    exact polynomial.)"""
+    if len(cs) < 2:
+        return bool(cs) and not cs[0].contains(0)
+    if not all(c.is_finite() for c in cs):
+        return False
+    old = ctx.prec
+    ctx.prec = prec
+    try:
         ds = [cs[k] * k for k in range(1, len(cs))]
-        if not all(c.is_finite() for c in cs):
-            return False
 
         def horner(coeffs, x):
             v = arb(0)
@@ -230,8 +246,6 @@ def surely_no_root_in_unit(p, prec: int = 128, depth: int = 6) -> bool:
                 return False
             stack += [(a, m, d + 1), (m, b, d + 1)]
         return True
-    except (AttributeError, TypeError, ValueError):   # coefficients without balls
-        return False
     finally:
         ctx.prec = old
 
