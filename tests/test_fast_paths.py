@@ -202,3 +202,46 @@ def test_bounded_split_with_lazy_primality_equals_the_eager_one(factors, hard, h
     if got is not None:
         s, m = got
         assert s * s * m == n
+
+
+# -- the SEC family's ball filters against the exact family ------------------------------
+def _roots_key(roots):
+    return [(r.lo, r.hi, None if r.exact is None else r.exact.text(), sorted(r.tags))
+            for r in roots]
+
+
+coord = st.integers(-12, 12)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(coord, coord), min_size=4, max_size=7, unique=True),
+       st.tuples(coord, coord), st.booleans(), st.booleans())
+def test_sec_family_balls_leave_the_instants_unchanged(others, end, arc, radical):
+    from exactsym.gathering import instants
+    from exactsym.gathering.invariants import Checker
+    from exactsym.gathering.robot import Readings
+    from exactsym.gathering.world import World
+    from exactsym.gathering import geometry as g
+    start = (MQ.rational(fmpq(1, 3)), sqrt_rational(2) if radical else MQ.rational(1))
+    pts = [start] + [(MQ.rational(x * 3), MQ.rational(y * 3)) for x, y in others]
+    w = World(pts, Readings(), checker=Checker())
+    stop = (MQ.rational(end[0] * 4), MQ.rational(end[1] * 4 + 1))
+    if arc:
+        c = g.point(0, 0)
+        r2 = g.dist2(start, c)
+        piece = g.Arc(c, start, g.rotate(start, MQ.rational(fmpq(3, 5)),
+                                          MQ.rational(fmpq(4, 5))), 1)
+        assert g.dist2(piece.end, c) == r2
+    else:
+        piece = g.Segment(start, stop)
+    with_balls = instants.critical_roots(piece, w, 0, g.point(0, 0))
+    saved = instants.MotionBall
+
+    def no_balls(m):
+        raise TypeError("balls off")
+    instants.MotionBall = no_balls
+    try:
+        exact = instants.critical_roots(piece, w, 0, g.point(0, 0))
+    finally:
+        instants.MotionBall = saved
+    assert _roots_key(with_balls) == _roots_key(exact)
