@@ -245,3 +245,20 @@ def test_sec_family_balls_leave_the_instants_unchanged(others, end, arc, radical
     finally:
         instants.MotionBall = saved
     assert _roots_key(with_balls) == _roots_key(exact)
+
+
+def test_fresh_snapshot_reuses_local_points_of_unmoved_robots():
+    from fractions import Fraction
+    from exactsym.gathering.robot import Readings
+    from exactsym.gathering.world import IDENTITY, MIRROR, Frame, World
+    w = World([(0, 0), (5, 1), (-3, 7), (9, -4), (2, 11)], Readings())
+    frame = Frame(Fraction(3, 5), Fraction(4, 5), True, Fraction(1, 3), Fraction(-2, 7))
+    for fr in (IDENTITY, MIRROR, frame):
+        first = w._snapshot(fr)
+        assert first == tuple(fr.to_local(p) for p in w.positions())
+    old = w.robots[2].pos
+    w.robots[2].pos = (sqrt_rational(2), MQ.rational(7))
+    again = w._snapshot(frame)
+    assert again == tuple(frame.to_local(p) for p in w.positions())
+    assert again[0] is w._snapshot(frame)[0]          # an unmoved robot: the same object
+    assert again[2] != frame.to_local(old)
