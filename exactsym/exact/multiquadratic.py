@@ -194,7 +194,18 @@ class MQ(FieldElement):
             return MQ({m: c * q for m, c in b.items()})
         if la * lb >= _INTEGER_PRODUCT:
             return MQ(_integer_product(self, other))
-        return MQ(_rational_product(a, b))
+        out: dict = {}                  # few terms: _rational_product, inline
+        pairs = _PAIRS
+        for m1, c1 in a.items():
+            for m2, c2 in b.items():
+                mg = pairs.get((m1, m2))
+                if mg is None:
+                    mg = _radicand_product(m1, m2)
+                m, g = mg
+                c = c1 * c2 if g == 1 else c1 * c2 * g
+                v = out.get(m)
+                out[m] = c if v is None else v + c
+        return MQ({m: c for m, c in out.items() if c != 0})
 
     __rmul__ = __mul__
 
@@ -539,14 +550,14 @@ def sum_of_products(items) -> MQ:
     element; small factors go the ordinary way."""
     items = list(items)
     if max((len(a.terms) * len(b.terms) for _, a, b in items), default=0) < _INTEGER_PRODUCT:
-        return sum((a * b * s for s, a, b in items), MQ())
+        return _plain_sum(items)
     parts = []
     for s, a, b in items:
         if not a.terms or not b.terms:
             continue
         r = _product_integers(a, b)
         if r is None:
-            return sum((a * b * s for s, a, b in items), MQ())
+            return _plain_sum(items)
         parts.append((s, r[0], r[1]))
     if not parts:
         return MQ()
@@ -558,6 +569,14 @@ def sum_of_products(items) -> MQ:
             w = out.get(m)
             out[m] = v * k if w is None else w + v * k
     return MQ(_canonical(out, den))
+
+
+def _plain_sum(items) -> MQ:
+    out = MQ()
+    for s, a, b in items:
+        t = a * b
+        out = out + t if s == 1 else out - t if s == -1 else out + t * s
+    return out
 
 
 def _radicand_product(m1: int, m2: int) -> tuple[int, int]:

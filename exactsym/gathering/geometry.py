@@ -48,22 +48,34 @@ def scale(p, s):
     return (p[0] * s, p[1] * s)
 
 
+def _fused(a, b, c, d) -> bool:
+    """Are ``a b`` and ``c d`` MQ products big enough to sum over integers first
+    (:func:`~exactsym.exact.multiquadratic.sum_of_products`: the same element, one gcd
+    per term of the sum instead of one per term of each product and of the sum)?"""
+    ta = getattr(a, "terms", None)         # MQ's dictionary (a tower number has none)
+    if ta is None or len(ta) < 2 and len(c.terms if type(c) is MQ else ()) < 2:
+        return False
+    return (type(a) is MQ and type(b) is MQ and type(c) is MQ and type(d) is MQ
+            and len(ta) * len(b.terms) + len(c.terms) * len(d.terms) >= _FUSED)
+
+
+_FUSED = 16
+
+
 def dot(u, v):
-    # MQ coordinates: both products summed over integers, made canonical once
-    # (multiquadratic.sum_of_products: the same element, fewer gcds)
-    if type(u[0]) is MQ and type(u[1]) is MQ and type(v[0]) is MQ and type(v[1]) is MQ:
+    if _fused(u[0], v[0], u[1], v[1]):
         return sum_of_products(((1, u[0], v[0]), (1, u[1], v[1])))
     return u[0] * v[0] + u[1] * v[1]
 
 
 def cross(u, v):
-    if type(u[0]) is MQ and type(u[1]) is MQ and type(v[0]) is MQ and type(v[1]) is MQ:
+    if _fused(u[0], v[1], u[1], v[0]):
         return sum_of_products(((1, u[0], v[1]), (-1, u[1], v[0])))
     return u[0] * v[1] - u[1] * v[0]
 
 
 def dist2(p, q):
-    if type(p[0]) is MQ and type(p[1]) is MQ and type(q[0]) is MQ and type(q[1]) is MQ:
+    if _fused(p[0], q[0], p[1], q[1]):
         key = (id(p), id(q))
         hit = _DIST2.get(key)
         if hit is not None and hit[0] is p and hit[1] is q:
@@ -81,7 +93,8 @@ def dist2(p, q):
 #: dist2 of the same two point objects (a decision measures a robot's distance to the
 #: centre in the recogniser, in R's distances and in the centre rule): remembered by
 #: identity, each entry holding its points (so no id is reused while it is kept); only
-#: for MQ coordinates, which never change (a point is an immutable tuple)
+#: for MQ coordinates with several terms (a point is an immutable tuple of numbers that
+#: never change; small ones cost less than the look-up)
 _DIST2: dict = {}
 _DIST2_MAX = 1 << 14
 

@@ -62,7 +62,8 @@ def psub(p, q) -> tuple:
 def pmul(p, q) -> tuple:
     if not p or not q:
         return ()
-    if all(type(c) is MQ for c in p) and all(type(c) is MQ for c in q):
+    if all(type(c) is MQ for c in p) and all(type(c) is MQ for c in q) and \
+            max(len(c.terms) for c in p) * max(len(c.terms) for c in q) >= 16:
         # each coefficient a sum of products made canonical once (sum_of_products)
         return trim(sum_of_products((1, p[i], q[k - i])
                                     for i in range(max(0, k - len(q) + 1), min(k, len(p) - 1) + 1))
@@ -181,6 +182,13 @@ def _surely_squarefree(p, prec: int = 128) -> bool:
         ctx.prec = old
 
 
+def _costly(p) -> bool:
+    """Is the exact isolation of ``p`` worth a ball test first: coefficients of several
+    terms (a linear or quadratic polynomial with rational coefficients costs less than
+    the test), or numbers of a tower or of K(alpha)?"""
+    return len(p) > 3 or any(type(c) is not MQ or len(c.terms) > 1 for c in p)
+
+
 def surely_no_root_in_unit(p, prec: int = 128, depth: int = 6) -> bool:
     """Does a rigorous Arb enclosure prove that ``p`` has no root in the open (0, 1)?
     A filter (True is a proof, False says nothing).  An exact root at 0 or 1 (``p_0``
@@ -233,6 +241,9 @@ def balls_clear_unit(cs, prec: int = 128, depth: int = 6) -> bool:
             for c in reversed(coeffs):
                 v = v * x + c
             return v
+        at0, at1 = cs[0], horner(cs, arb(1))
+        if (at0 > 0 and at1 < 0) or (at0 < 0 and at1 > 0):
+            return False                    # a sign change: a root inside, surely
         stack = [(fmpq(0), fmpq(1), 0)]
         while stack:
             a, b, d = stack.pop()
@@ -377,7 +388,7 @@ def roots_in_unit(poly, tag=None) -> list:
     A polynomial that is identically zero has no isolated roots (the relation holds
     along the whole piece): ``[]``."""
     p = trim(poly)
-    if len(p) <= 1 or surely_no_root_in_unit(p):
+    if len(p) <= 1 or (_costly(p) and surely_no_root_in_unit(p)):
         return []
     out: list = []
     if len(p) > 3:
