@@ -113,7 +113,7 @@ def decided_sqrt(x, bounded: bool = True):
     return _decided_sqrt_mq(x, bounded)
 
 
-@lru_cache(maxsize=4096)
+@lru_cache(maxsize=256)       # keys of up to 256 terms of thousands of bits
 def _decided_sqrt_mq(x: MQ, bounded: bool):
     """:func:`decided_sqrt` of an MQ, remembered: a function of the value alone (the
     search and its modular filter are deterministic, and the answer is the non-negative

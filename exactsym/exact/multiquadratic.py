@@ -361,7 +361,7 @@ class MQ(FieldElement):
 _REMEMBERED_INVERSE = 8
 
 
-@lru_cache(maxsize=1024)
+@lru_cache(maxsize=256)
 def _inverse_of(x: MQ) -> MQ:
     """``x.inverse()`` by value: the inverse is a function of the (canonical) value."""
     return x._inverse()

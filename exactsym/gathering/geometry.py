@@ -96,7 +96,7 @@ def dist2(p, q):
 #: for MQ coordinates with several terms (a point is an immutable tuple of numbers that
 #: never change; small ones cost less than the look-up)
 _DIST2: dict = {}
-_DIST2_MAX = 1 << 14
+_DIST2_MAX = 1 << 12
 
 
 def rotate(u, c, s):
