@@ -110,6 +110,15 @@ def decided_sqrt(x, bounded: bool = True):
         return (-root if root.sign() < 0 else root), True
     if not isinstance(x, MQ):
         x = MQ.rational(x)
+    return _decided_sqrt_mq(x, bounded)
+
+
+@lru_cache(maxsize=256)       # keys of up to 256 terms of thousands of bits
+def _decided_sqrt_mq(x: MQ, bounded: bool):
+    """:func:`decided_sqrt` of an MQ, remembered: a function of the value alone (the
+    search and its modular filter are deterministic, and the answer is the non-negative
+    root or None), and a critical instant's discriminant is tested two or three times
+    (the quadratic's, again in the isolation, then the monic one's)."""
     if x.is_zero():
         return MQ(), True
     if x.sign() < 0:
@@ -311,8 +320,13 @@ def bounded_squarefree_split(n: int, hints: tuple = ()):
                 if f in parts:
                     parts[f][0] += k
                     continue
+                if k % 2 == 0:
+                    # primality is read only if a merge makes the exponent odd (below):
+                    # a proof for a large prime squared costs up to a second
+                    parts[f] = [k, None]
+                    continue
                 prime = bool(fmpz(f).is_prime())
-                if k % 2 == 0 or prime or isqrt(f) ** 2 == f:
+                if prime or isqrt(f) ** 2 == f:
                     parts[f] = [k, prime]
                 else:
                     left.append((f, k))
@@ -331,7 +345,7 @@ def bounded_squarefree_split(n: int, hints: tuple = ()):
     for b, (e, prime) in parts.items():
         if e % 2 == 0:
             s *= b ** (e // 2)
-        elif prime:
+        elif prime or (prime is None and fmpz(b).is_prime()):
             s, m = s * b ** (e // 2), m * b
         elif isqrt(b) ** 2 == b:
             s *= isqrt(b) ** e

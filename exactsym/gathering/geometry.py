@@ -20,8 +20,9 @@ Predicates (CGAL style: they return bools or small ints and are exact):
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
-from ..exact.multiquadratic import MQ, mq, sqrt_rational
+from ..exact.multiquadratic import MQ, mq, sqrt_rational, sum_of_products
 from ..exact.tower import neg as tuple_neg
 from .polyroots import padd, peval, pmul, pscale, trim
 
@@ -47,17 +48,55 @@ def scale(p, s):
     return (p[0] * s, p[1] * s)
 
 
+def _fused(a, b, c, d) -> bool:
+    """Are ``a b`` and ``c d`` MQ products big enough to sum over integers first
+    (:func:`~exactsym.exact.multiquadratic.sum_of_products`: the same element, one gcd
+    per term of the sum instead of one per term of each product and of the sum)?"""
+    ta = getattr(a, "terms", None)         # MQ's dictionary (a tower number has none)
+    if ta is None or len(ta) < 2 and len(c.terms if type(c) is MQ else ()) < 2:
+        return False
+    return (type(a) is MQ and type(b) is MQ and type(c) is MQ and type(d) is MQ
+            and len(ta) * len(b.terms) + len(c.terms) * len(d.terms) >= _FUSED)
+
+
+_FUSED = 16
+
+
 def dot(u, v):
+    if _fused(u[0], v[0], u[1], v[1]):
+        return sum_of_products(((1, u[0], v[0]), (1, u[1], v[1])))
     return u[0] * v[0] + u[1] * v[1]
 
 
 def cross(u, v):
+    if _fused(u[0], v[1], u[1], v[0]):
+        return sum_of_products(((1, u[0], v[1]), (-1, u[1], v[0])))
     return u[0] * v[1] - u[1] * v[0]
 
 
 def dist2(p, q):
+    if _fused(p[0], q[0], p[1], q[1]):
+        key = (id(p), id(q))
+        hit = _DIST2.get(key)
+        if hit is not None and hit[0] is p and hit[1] is q:
+            return hit[2]
+        d = sub(p, q)
+        out = dot(d, d)
+        if len(_DIST2) >= _DIST2_MAX:
+            _DIST2.clear()
+        _DIST2[key] = (p, q, out)
+        return out
     d = sub(p, q)
     return dot(d, d)
+
+
+#: dist2 of the same two point objects (a decision measures a robot's distance to the
+#: centre in the recogniser, in R's distances and in the centre rule): remembered by
+#: identity, each entry holding its points (so no id is reused while it is kept); only
+#: for MQ coordinates with several terms (a point is an immutable tuple of numbers that
+#: never change; small ones cost less than the look-up)
+_DIST2: dict = {}
+_DIST2_MAX = 1 << 12
 
 
 def rotate(u, c, s):
@@ -144,13 +183,20 @@ class Arc:
     def at(self, f):
         """The point of the arc reached by the rational rotation whose half-angle tangent is
         ``f`` times that of the whole arc (``0 <= f <= 1``, stays in the same field)."""
+        a = sub(self.start, self.centre)
+        t = self._tan_half * f
+        t2 = t * t
+        inv = 1 / (1 + t2)          # one inverse for both (the same values as dividing)
+        return add(self.centre, rotate(a, (1 - t2) * inv, (2 * t) * inv))
+
+    @cached_property
+    def _tan_half(self):
+        """tan of half the whole arc's angle (the arc is at most a quarter turn); kept on
+        the arc, whose points never change: a motion's instants are all on one arc."""
         a, b = sub(self.start, self.centre), sub(self.end, self.centre)
         r2 = dot(a, a)
-        cos_t, sin_t = dot(a, b) / r2, cross(a, b) / r2      # of the whole arc
-        tan_half = sin_t / (1 + cos_t)                         # arc <= quarter turn
-        t = tan_half * f
-        den = 1 + t * t
-        return add(self.centre, rotate(a, (1 - t * t) / den, (2 * t) / den))
+        cos_t, sin_t = dot(a, b) / r2, cross(a, b) / r2
+        return sin_t / (1 + cos_t)
 
     def split(self, f):
         mid = self.at(f)

@@ -62,13 +62,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from flint import fmpq
+from flint import ctx, fmpq
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
+from . import instant_balls as B
 from .algebraic_instants import is_algebraic, mixes
-from .polyroots import (Root, padd, pmul, pscale, psub, roots_in_unit,
-                        roots_of, trim)
+from .instant_balls import MotionBall
+from .polyroots import (Root, padd, pgcd, pmul, pscale, psub, roots_in_unit,
+                        roots_of, surely_no_root_in_unit, trim)
 
 ONE = MQ.rational(1)
 
@@ -234,31 +236,63 @@ def _sec_family(m: Motion, static: dict, tag: str, sec=None) -> list:
         return out
     hull = hull_indices(static)
     H = [(k, static[k]) for k in hull]
+    # balls first (:mod:`.instant_balls`): a relation they prove rootless inside the
+    # piece, or a circle they prove not enclosing, is left out as the exact test would
+    try:
+        mb = MotionBall(m)
+        HB = [B.point_ball(p) for _, p in H]
+    except (AttributeError, TypeError, ValueError):     # numbers without balls
+        mb = HB = None
 
     def encloses(c, r2):
         return all((g.dist2(c, p) - r2).sign() <= 0 for _, p in H)
 
+    def rootless(kind, x, y) -> bool:
+        if mb is None:
+            return False
+        try:
+            xb = B.point_ball(x)
+            if kind == "dot":
+                return mb.dot_clear(xb, B.point_ball(y))
+            return mb.dist2_clear(xb, y.enclosure(B.PREC))
+        except (AttributeError, TypeError, ValueError):
+            return False
+
     for ia, (a_i, a) in enumerate(H):
         for q_i, q in H:
             if q_i != a_i:
-                out.append((dot_poly(m, q, g.sub(q, a)),
-                            f"{tag}: robot {q_i} on the circle on the diameter mover-{a_i}"))
-                out.append((dot_poly(m, a, g.sub(q, a)),
-                            f"{tag}: right angle at robot {a_i} (mover, {a_i}, {q_i})"))
-        for b_i, b in H[ia + 1:]:
+                qa = g.sub(q, a)
+                if not rootless("dot", q, qa):
+                    out.append((dot_poly(m, q, qa), f"{tag}: robot {q_i} on the circle on "
+                                f"the diameter mover-{a_i}"))
+                if not rootless("dot", a, qa):
+                    out.append((dot_poly(m, a, qa), f"{tag}: right angle at robot {a_i} "
+                                f"(mover, {a_i}, {q_i})"))
+        for ib, (b_i, b) in enumerate(H[ia + 1:], ia + 1):
+            if HB is not None:
+                with ctx.workprec(B.PREC):
+                    ab, bb = HB[ia], HB[ib]
+                    mid_b = ((ab[0] + bb[0]) / 2, (ab[1] + bb[1]) / 2)
+                    r2_b = B.dist2_ball(ab, bb) / 4
+                if B.surely_outside(mid_b, r2_b, HB):
+                    continue
             mid = g.scale(g.add(a, b), MQ.rational(fmpq(1, 2)))
             r2 = g.dist2(a, b) / 4
-            if encloses(mid, r2):
+            if encloses(mid, r2) and not rootless("dist2", mid, r2):
                 out.append((dist2_poly(m, mid, r2),
                             f"{tag}: right angle at the mover (diameter {a_i}-{b_i})"))
     for x in range(len(H)):
         for y in range(x + 1, len(H)):
             for z in range(y + 1, len(H)):
+                if HB is not None:
+                    circle = B.circle3_ball(HB[x], HB[y], HB[z])
+                    if circle is not None and B.surely_outside(*circle, HB):
+                        continue        # not collinear (exactly), and not enclosing
                 a, b, c = H[x][1], H[y][1], H[z][1]
                 if g.cross(g.sub(b, a), g.sub(c, a)).is_zero():
                     continue
                 cc, r2 = g._circle3(a, b, c)
-                if encloses(cc, r2):
+                if encloses(cc, r2) and not rootless("dist2", cc, r2):
                     out.append((dist2_poly(m, cc, r2), f"{tag}: the mover on the circle "
                                 f"through robots {H[x][0]}, {H[y][0]}, {H[z][0]}"))
     return out
@@ -324,22 +358,26 @@ def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True, 
         if f is not None:
             params.append((f, f"symmetry: the centroid meets the SEC centre ({what})"))
     # SEC through the mover and hull robots a, b: the centroid equidistant from a, b, p
+    # n D m = total D + N;  |m-a|^2 - |m-b|^2 = 2 m.(b-a) + |a|^2 - |b|^2
+    mx = padd(pscale(m.d, total[0]), m.nx)
+    my = padd(pscale(m.d, total[1]), m.ny)
     for x, a_i in enumerate(hull):
         for b_i in hull[x + 1:]:
             a, b = static[a_i], static[b_i]
-            # n D m = total D + N;  |m-a|^2 - |m-b|^2 = 2 m.(b-a) + |a|^2 - |b|^2
-            mx = padd(pscale(m.d, total[0]), m.nx)
-            my = padd(pscale(m.d, total[1]), m.ny)
             ba = g.sub(b, a)
             e1 = padd(pscale(padd(pscale(mx, ba[0]), pscale(my, ba[1])), 2),
                       pscale(m.d, (g.dot(a, a) - g.dot(b, b)) * n))
+            # the gcd's roots are roots of e1 and of e2: none inside the piece when e1 is
+            # zero or a ball proves it has none there (its roots are all that is read),
+            # so e2 is not built then
+            if not e1 or surely_no_root_in_unit(e1):
+                continue
             # |m-a|^2 - |m-p|^2 with nD m, nD a, n N: (nDm - nDa)^2 - (nDm - nN)^2
             ax, ay = pscale(m.d, a[0] * n), pscale(m.d, a[1] * n)
             px, py = pscale(m.nx, MQ.rational(n)), pscale(m.ny, MQ.rational(n))
             e2 = psub(padd(pmul(psub(mx, ax), psub(mx, ax)), pmul(psub(my, ay), psub(my, ay))),
                       padd(pmul(psub(mx, px), psub(mx, px)), pmul(psub(my, py), psub(my, py))))
-            from .polyroots import pgcd
-            common = pgcd(e1, e2) if e1 and e2 else ()
+            common = pgcd(e1, e2) if e2 and not surely_no_root_in_unit(e2) else ()
             if len(common) > 1:
                 polys.append((common, f"symmetry: the centroid meets the SEC centre (SEC "
                               f"through the mover, {a_i} and {b_i})"))

@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 from flint import arb, arb_mat, ctx, fmpq
 
 from ..exact.mq_closure import RATIONAL_BITS, closure_sqrt, decided_sqrt  # noqa: F401
-from ..exact.multiquadratic import MQ
+from ..exact.multiquadratic import MQ, sum_of_products
 from .tower_numbers import biquadratic_root, is_tower, quadratic_root, tower_sqrt
 
 ZERO = MQ()
@@ -62,6 +62,12 @@ def psub(p, q) -> tuple:
 def pmul(p, q) -> tuple:
     if not p or not q:
         return ()
+    if all(type(c) is MQ for c in p) and all(type(c) is MQ for c in q) and \
+            max(len(c.terms) for c in p) * max(len(c.terms) for c in q) >= 16:
+        # each coefficient a sum of products made canonical once (sum_of_products)
+        return trim(sum_of_products((1, p[i], q[k - i])
+                                    for i in range(max(0, k - len(q) + 1), min(k, len(p) - 1) + 1))
+                    for k in range(len(p) + len(q) - 1))
     out = [ZERO] * (len(p) + len(q) - 1)
     for i, a in enumerate(p):
         if a.is_zero():
@@ -172,6 +178,85 @@ def _surely_squarefree(p, prec: int = 128) -> bool:
         return not arb_mat(rows).det().contains(0)
     except (AttributeError, TypeError, ValueError):   # coefficients without balls
         return False
+    finally:
+        ctx.prec = old
+
+
+def _costly(p) -> bool:
+    """Is the exact isolation of ``p`` worth a ball test first: coefficients of several
+    terms (a linear or quadratic polynomial with rational coefficients costs less than
+    the test), or numbers of a tower or of K(alpha)?"""
+    return len(p) > 3 or any(type(c) is not MQ or len(c.terms) > 1 for c in p)
+
+
+def surely_no_root_in_unit(p, prec: int = 128, depth: int = 6) -> bool:
+    """Does a rigorous Arb enclosure prove that ``p`` has no root in the open (0, 1)?
+    A filter (True is a proof, False says nothing).  An exact root at 0 or 1 (``p_0``
+    zero, or the coefficients' sum zero: additions only) is divided out first (by
+    ``f``, by ``f - 1`` synthetically), which keeps the roots inside.  Then each
+    coefficient's ball
+    (``enclosure``, rigorous for every kernel number), then on each of up to 2^depth
+    dyadic pieces X = [a, b] of [0, 1] the ball of p(X) by Horner's rule and by the
+    mean value form p(m) + p'(X)(X - m); a piece is cleared when either excludes 0.
+    Interval arithmetic encloses every value p(x), x in X, so no piece holds a root.
+    The exact isolation (squarefree part, Sturm chain, inverses of coefficients of up
+    to 256 terms) is then not needed: most relations of a motion have no root inside
+    its piece."""
+    p = list(trim(p))
+    while len(p) > 1 and p[0].is_zero():
+        p.pop(0)
+    while len(p) > 1 and sum(p[1:], p[0]).is_zero():
+        q = [p[-1]]                         # p = (f - 1) q: q_k = p_(k+1) + q_(k+1)
+        for c in reversed(p[1:-1]):
+            q.append(c + q[-1])
+        p = q[::-1]
+    if len(p) < 2:
+        return bool(p)
+    old = ctx.prec
+    ctx.prec = prec
+    try:
+        return balls_clear_unit([c.enclosure(prec) for c in p], prec, depth)
+    except (AttributeError, TypeError, ValueError):   # coefficients without balls
+        return False
+    finally:
+        ctx.prec = old
+
+
+def balls_clear_unit(cs, prec: int = 128, depth: int = 6) -> bool:
+    """Do the balls ``cs`` (coefficients, lowest degree first) prove that every
+    polynomial with coefficients in them has no root in the closed [0, 1]?  (The test
+    of :func:`surely_no_root_in_unit`, on balls: a caller may build them without the
+    exact polynomial.)"""
+    if len(cs) < 2:
+        return bool(cs) and not cs[0].contains(0)
+    if not all(c.is_finite() for c in cs):
+        return False
+    old = ctx.prec
+    ctx.prec = prec
+    try:
+        ds = [cs[k] * k for k in range(1, len(cs))]
+
+        def horner(coeffs, x):
+            v = arb(0)
+            for c in reversed(coeffs):
+                v = v * x + c
+            return v
+        at0, at1 = cs[0], horner(cs, arb(1))
+        if (at0 > 0 and at1 < 0) or (at0 < 0 and at1 > 0):
+            return False                    # a sign change: a root inside, surely
+        stack = [(fmpq(0), fmpq(1), 0)]
+        while stack:
+            a, b, d = stack.pop()
+            m = (a + b) / 2
+            x = arb(a).union(arb(b))
+            if not horner(cs, x).contains(0):
+                continue
+            if not (horner(cs, arb(m)) + horner(ds, x) * (x - arb(m))).contains(0):
+                continue
+            if d >= depth:
+                return False
+            stack += [(a, m, d + 1), (m, b, d + 1)]
+        return True
     finally:
         ctx.prec = old
 
@@ -303,7 +388,7 @@ def roots_in_unit(poly, tag=None) -> list:
     A polynomial that is identically zero has no isolated roots (the relation holds
     along the whole piece): ``[]``."""
     p = trim(poly)
-    if len(p) <= 1:
+    if len(p) <= 1 or (_costly(p) and surely_no_root_in_unit(p)):
         return []
     out: list = []
     if len(p) > 3:

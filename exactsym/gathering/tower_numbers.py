@@ -177,7 +177,8 @@ def _monic_roots(c, b, a):
     """The real roots of ``a u^2 + b u + c`` (MQ coefficients, a != 0), exact (MQ or tower
     numbers; the discriminant of the monic polynomial: one radicand per root); ``()``
     when there are none, None when the square root cannot be decided."""
-    bm, cm = b / a, c / a
+    inv = 1 / a                     # one inverse for both (the same values as b / a, c / a)
+    bm, cm = b * inv, c * inv
     disc = bm * bm - cm * 4
     if disc.sign() < 0:
         return ()

@@ -147,6 +147,7 @@ class World:
         # the run's tower of nested radicals (none until a radial target needs one): every
         # planned path is re-homed into it, so all positions compare in one tower
         self.home = RunHome()
+        self._local = None        # {frame: {id(point): (point, local point)}}
 
     @property
     def n(self) -> int:
@@ -160,9 +161,27 @@ class World:
         ``frame``; its paths stay in the Look's own numbers (not re-homed into the run's
         tower, which can cost a square-root test per level: a check that reads only the
         decision's centre or status needs none of it)."""
-        local = tuple(frame.to_local(p) for p in self.positions())
-        return self.decide(local, self.readings,
+        return self.decide(self._snapshot(frame), self.readings,
                            fmpq(frame.unit.numerator, frame.unit.denominator))
+
+    def _snapshot(self, frame: Frame) -> tuple:
+        """Every position in ``frame``; a point object already mapped in that frame gives
+        the same local point object again (a point never changes; the map holds it, so
+        its id is not reused).  The robots that stand still during a check's fresh Looks
+        then keep their local points, and with them the numbers' hashes, integer forms
+        and remembered distances (``geometry.dist2``)."""
+        if self._local is None or len(self._local) > 4:
+            self._local = {}
+        seen = self._local.get(frame)
+        if seen is None or len(seen) > 8 * self.n + 64:
+            seen = self._local[frame] = {}
+        out = []
+        for p in self.positions():
+            hit = seen.get(id(p))
+            if hit is None or hit[0] is not p:
+                hit = seen[id(p)] = (p, frame.to_local(p))
+            out.append(hit[1])
+        return tuple(out)
 
     def snapshot_decision(self, frame: Frame):
         """The decision every robot would reach on a fresh Look now in ``frame``, with
