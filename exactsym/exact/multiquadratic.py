@@ -194,18 +194,7 @@ class MQ(FieldElement):
             return MQ({m: c * q for m, c in b.items()})
         if la * lb >= _INTEGER_PRODUCT:
             return MQ(_integer_product(self, other))
-        out: dict = {}                  # few terms: _rational_product, inline
-        pairs = _PAIRS
-        for m1, c1 in a.items():
-            for m2, c2 in b.items():
-                mg = pairs.get((m1, m2))
-                if mg is None:
-                    mg = _radicand_product(m1, m2)
-                m, g = mg
-                c = c1 * c2 if g == 1 else c1 * c2 * g
-                v = out.get(m)
-                out[m] = c if v is None else v + c
-        return MQ({m: c for m, c in out.items() if c != 0})
+        return MQ(_rational_product(a, b))     # few terms
 
     __rmul__ = __mul__
 
@@ -431,9 +420,9 @@ _INTEGER_PRODUCT = 16
 
 
 def _rational_product(a: dict, b: dict) -> dict:
-    """The product term by term in ``fmpq``: each product and sum is made canonical (two
-    gcds), cheap for small rationals only.  The reference the other products are tested
-    against."""
+    """The product term by term: in ``fmpq`` each product and sum is made canonical (two
+    gcds), cheap for small rationals only (the reference the other products are tested
+    against); in ``fmpz`` (:func:`_product_integers`) the sums stay integers."""
     out: dict = {}
     pairs = _PAIRS
     for m1, c1 in a.items():
@@ -516,16 +505,7 @@ def _product_integers(x: "MQ", y: "MQ"):
                 v = out.get(m)
                 out[m] = c if v is None else v + c
         return out, da * da
-    for m1, c1 in A.items():
-        for m2, c2 in B.items():
-            mg = pairs.get((m1, m2))
-            if mg is None:
-                mg = _radicand_product(m1, m2)
-            m, g = mg
-            c = c1 * c2 if g == 1 else c1 * c2 * g
-            v = out.get(m)
-            out[m] = c if v is None else v + c
-    return out, da * db
+    return _rational_product(A, B), da * db
 
 
 def _canonical(out: dict, den: int) -> dict:
