@@ -38,12 +38,16 @@ class Options:
     failures of a statement checked on many levels or pairs are listed with their
     witnesses before the rest are only counted (None: the family layer's default,
     :class:`exactsym.paper.family.Limits`; the text summary, which shows the first, asks
-    for 1: in a field of degree thousands each witness is megabytes of exact text)."""
+    for 1: in a field of degree thousands each witness is megabytes of exact text);
+    ``screen``: the witnesses are read on the screen only (the text summary), so a
+    number whose exact text would be megabytes is written by its decimal
+    (:class:`exactsym.paper.family.Limits` ``screen_texts``)."""
     strings: bool = False
     reading: str = "literal"
     degree: str = "paper"
     invariance: bool = True
     listed: int | None = None
+    screen: bool = False
 
 
 @dataclass(frozen=True)
@@ -101,8 +105,8 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
             section = level_section(config, levels, options.strings)
             verdicts, strings, types = section.verdicts, section.strings, section.types
             polygons = section.polygons
-        limits = DEFAULT_LIMITS if options.listed is None else \
-            replace(DEFAULT_LIMITS, claim_examples=options.listed)
+        limits = replace(DEFAULT_LIMITS, screen_texts=options.screen) if options.listed is None \
+            else replace(DEFAULT_LIMITS, claim_examples=options.listed, screen_texts=options.screen)
         paper = paper_procedure(config, levels, reading=options.reading,
                                 degree=options.degree, level_polygons=polygons,
                                 limits=limits) if "family" in wanted else None

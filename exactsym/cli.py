@@ -52,7 +52,8 @@ def _check(args) -> int:
         # the summary shows each false statement's first witness: list one per statement
         summary = not (args.json or args.verbose or config.expect)
         analysis = analyse(config, options=Options(strings=args.strings,
-                                                   listed=1 if summary else None))
+                                                   listed=1 if summary else None,
+                                                   screen=summary))
         # the JSON report (every exact text) only when printed or read by [expect]
         report = report_json(analysis) if args.json or config.expect else None
         if args.json:
@@ -75,7 +76,8 @@ def _check_several(args) -> int:
             config = load(path)
             summary = not (args.verbose or config.expect)      # one line: no witness shown
             analysis = analyse(config, options=Options(strings=args.strings,
-                                                       listed=1 if summary else None))
+                                                       listed=1 if summary else None,
+                                                       screen=summary))
             failures = (failed_expectations(config, report_json(analysis))
                         if config.expect else [])
         except InputError as err:

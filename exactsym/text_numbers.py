@@ -101,9 +101,16 @@ HUGE = 100_000
 
 def _huge_text(x) -> str | None:
     """The estimated length of ``number_text(x)`` in words ("4.8 million") when it is
-    above :data:`HUGE`, else None: a polynomial element's digits are counted from its
-    coefficients' bit lengths (0.30103 digits per bit, in integers, plus a dozen
-    characters per term for its power), without writing the text."""
+    above :data:`HUGE`, else None (:func:`estimated_length`)."""
+    size = estimated_length(x)
+    return None if size is None else size_words(size)
+
+
+def estimated_length(x) -> int | None:
+    """The estimated length of ``number_text(x)`` when it is above :data:`HUGE`, else
+    None: a polynomial element's digits are counted from its coefficients' bit lengths
+    (0.30103 digits per bit, in integers, plus a dozen characters per term for its
+    power), without writing the text."""
     poly = getattr(x, "poly", None)
     if poly is None or not hasattr(poly, "numer") or poly.degree() < 64:
         return None
@@ -112,12 +119,30 @@ def _huge_text(x) -> str | None:
         return None                     # cannot be that long: measure the text
     den_digits = poly.denom().bit_length() * 30103 // 100_000
     size = sum(c.bit_length() * 30103 // 100_000 + den_digits + 12 for c in num.coeffs() if c)
-    if size < HUGE:
-        return None
+    return size if size >= HUGE else None
+
+
+def size_words(size: int) -> str:
+    """A length of at least :data:`HUGE` characters in words: "4.8 million", "120 thousand"."""
     if size >= 10 ** 6:
         tenths = (size + 50_000) // 100_000
         return f"{tenths // 10}.{tenths % 10} million"
     return f"{(size + 500) // 1000} thousand"
+
+
+def huge_quotient(y, x) -> str | None:
+    """``y/x`` (``x`` non-zero) for the screen when the exact text ``(y)/(x)`` is
+    estimated above :data:`HUGE` characters: its decimal, from the balls of ``y`` and
+    ``x`` (no division in the field: in a field of degree thousands one costs seconds),
+    and the estimated length; None when the text is shorter (write it)."""
+    sizes = [estimated_length(y), estimated_length(x)]
+    if sizes == [None, None]:
+        return None
+    size = sum(s if s is not None else len(number_text(v)) for s, v in zip(sizes, (y, x))) + 5
+    with ctx.workprec(128):
+        ball = _ball(y) / _ball(x)        # each to DIGITS + 2 digits: the quotient to DIGITS
+    decimal = "0" if ball.is_zero() else ball.str(DIGITS, radius=False)
+    return f"≈ {decimal} (exact: about {size_words(size)} characters, in --json)"
 
 
 def square_root(x) -> str:

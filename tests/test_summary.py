@@ -307,3 +307,66 @@ def test_a_huge_exact_number_is_sized_without_being_written():
     assert _huge_text(small) is None
     assert number(small) == f"≈ {approx(small)} (exact: {len(number_text(small))} characters, " \
         "in --json)"
+
+
+def test_a_huge_line_is_written_by_its_decimal_for_the_screen_only():
+    """In a field of degree >= QUOTIENT_DEGREE a line's slope is written as the quotient
+    (Y)/(X) of its doubled direction; when that text would be huge, the summary's texts
+    (SCREEN_ONLY, set by a claim record of the text summary) show the slope's decimal and
+    the estimated length instead, without writing it; every other reader gets the exact
+    text."""
+    from flint import arb, ctx, fmpq_poly
+    from exactsym.exact.cyclotomic import cyclotomic_field
+    from exactsym.exact.text import number_text
+    from exactsym.paper.family.concentric import SCREEN_ONLY, line_text, lines_text
+    from exactsym.paper.keys import line_key
+    from exactsym.text_numbers import HUGE
+    field = cyclotomic_field(2520)                     # degree 576
+    rng = random.Random(11)
+    x, y = (field.element(fmpq_poly([rng.getrandbits(1200) - (1 << 1199)
+                                     for _ in range(576)], 5)) for _ in range(2))
+    key = line_key(False, (x, y))
+    X, Y = key._vector
+    exact = key.text
+    assert exact == f"({X.sign()}, ({number_text(Y)})/({number_text(X)}))"
+    assert len(exact) > HUGE
+    shown = key.screen_text()
+    head = f"({X.sign()}, ≈ "
+    assert shown.startswith(head) and shown.endswith(" thousand characters, in --json))")
+    decimal, rest = shown[len(head):].split(" (exact: about ")
+    estimate = int(rest.split(" ")[0]) * 1000
+    assert abs(estimate - len(exact)) < 0.05 * len(exact)
+    with ctx.workprec(200):
+        slope = Y.enclosure(200) / X.enclosure(200)
+        assert abs(arb(decimal) / slope - 1) < arb("1e-5")
+    assert line_text(key) == exact and lines_text([key], False) == \
+        f"1 line (doubled-angle rays {exact})"
+    mark = SCREEN_ONLY.set(True)
+    try:
+        assert line_text(key) == shown
+        assert lines_text([key], False) == f"1 line (doubled-angle rays {shown})"
+    finally:
+        SCREEN_ONLY.reset(mark)
+    small = line_key(False, (field.element(fmpq_poly([0, 3], 1)), field.element(fmpq_poly([2]))))
+    assert small.screen_text() == small.text
+
+
+def test_a_claim_record_of_the_text_summary_writes_its_texts_for_the_screen():
+    """The text summary (Options.screen, from `exactsym check` without --json,
+    --verbose or [expect]) reaches the family claims' record, which writes the listed
+    failures' texts with SCREEN_ONLY set, and only those; JSON reports do not."""
+    from exactsym.paper.family.claims import _Record
+    from exactsym.paper.family.concentric import SCREEN_ONLY
+    from exactsym.paper.family.limits import DEFAULT_LIMITS
+    for screen in (False, True):
+        rec = _Record([], 1, screen)
+        rec.fail("obs-gcd", [], lambda: f"screen {SCREEN_ONLY.get()}",
+                 lambda: {"screen": SCREEN_ONLY.get()})
+        assert rec.out[0]["witness"] == {"screen": screen}
+        assert str(screen) in str(rec.out[0])
+        assert SCREEN_ONLY.get() is False
+    assert DEFAULT_LIMITS.screen_texts is False
+    config = Configuration.from_points([(0, 0), (F(1), F(0)), (F(0), F(2)), (F(3), F(1)),
+                                        (F(-2), F(5))])
+    assert analyse(config, options=Options(screen=True, listed=1)).audit == \
+        analyse(config, options=Options(listed=1)).audit

@@ -15,6 +15,7 @@ from math import atan2, gcd, pi
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
+from ..text_numbers import HUGE, huge_quotient
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
 from .filtered import (ball, compare_directions, cross_sign, dot_sign, gap_classes_on_circle,
@@ -177,6 +178,21 @@ class LineKey:
                 known[1] = line_value_text(value)
             self._text = known[1]
         return self._text
+
+    def screen_text(self) -> str:
+        """:attr:`text`, except a slope written as a quotient whose exact text would be
+        megabytes: then its decimal and the estimated length
+        (:func:`exactsym.text_numbers.huge_quotient`), what the text summary shows,
+        without writing the text."""
+        if self._text is not None and len(self._text) <= HUGE:
+            return self._text
+        if self._value is None and self._vector is not None and _quotient_field(*self._vector):
+            x, y = self._vector
+            s = sign(x)
+            shown = huge_quotient(y, x) if s else None
+            if shown is not None:
+                return f"({s}, {shown})"
+        return self.text
 
     @property
     def h(self):

@@ -13,9 +13,9 @@ from math import gcd
 from typing import Iterable, Sequence
 
 from ..circle_polygon import CirclePolygon
-from .concentric import (ALL_LINES, Ring, common_lines, first_shown, has_lines,
+from .concentric import (ALL_LINES, SCREEN_ONLY, Ring, common_lines, first_shown, has_lines,
                          intersect_lines, is_odd, is_symmetric_family, is_symmetric_pair,
-                         is_symmetric_polygon, lines_text, new_ring, polygon_name,
+                         is_symmetric_polygon, line_text, lines_text, new_ring, polygon_name,
                          robot_count)
 from .find_asymmetry import find_asymmetry_pair
 from ..keys import sort_by_angle
@@ -131,8 +131,8 @@ class _Record:
     statement, then a count), the instances checked per statement (in first-checked
     order: the order of the summaries), the statements checked on a part only."""
 
-    def __init__(self, trace: list, examples: int | None):
-        self.trace, self.examples = trace, examples
+    def __init__(self, trace: list, examples: int | None, screen: bool = False):
+        self.trace, self.examples, self.screen = trace, examples, screen
         self.out: list[dict] = []
         self.failures: dict = {}
         self.within: dict = {}        # statement -> a failure within its hypotheses seen
@@ -156,10 +156,14 @@ class _Record:
                           witness.get("within_hypotheses") is False)
         self.within[statement] = self.within.get(statement, False) or inside
         if self.examples is None or self.failures[statement] <= self.examples:
-            if callable(detail):
-                detail = detail()
-            if callable(witness):
-                witness = witness()
+            mark = SCREEN_ONLY.set(self.screen)
+            try:
+                if callable(detail):
+                    detail = detail()
+                if callable(witness):
+                    witness = witness()
+            finally:
+                SCREEN_ONLY.reset(mark)
             self.out.append(_claim(self.trace, statement, False, polygons, detail, witness))
 
     def summaries(self) -> None:
@@ -373,7 +377,7 @@ def family_claims(G: Sequence[Ring], Gp: Sequence[Ring], trace: list | None = No
     limits = limits if limits is not None else DEFAULT_LIMITS
     trace = trace if trace is not None else []
     stats = stats if stats is not None else {}
-    rec = _Record(trace, limits.claim_examples)
+    rec = _Record(trace, limits.claim_examples, limits.screen_texts)
     n_robots = robot_count(G)
     pairs, total_pairs = select_pairs(G, limits)
     if len(pairs) < total_pairs:
@@ -432,4 +436,4 @@ def _lines_not_in(lines, allowed):
     extra = [k for k in lines if k not in allowed]
     if not extra:
         return None
-    return first_shown(extra).text
+    return line_text(first_shown(extra))

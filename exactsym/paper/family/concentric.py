@@ -15,6 +15,7 @@ several merged by Preprocess); its vertex labels are tuples of configuration ind
 
 from __future__ import annotations
 
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from functools import cached_property
 from operator import attrgetter
@@ -273,6 +274,18 @@ def line_text(polar: bool, key) -> str:
         if s else f"the line whose doubled angle is vertical ({'+' if v > 0 else '-'})"
 
 
+#: True while a failure's text is written for the screen only (:class:`.claims._Record`
+#: of a text summary): :func:`lines_text` then writes a slope whose exact text would be
+#: megabytes by its decimal, as the summary shows it, instead of writing it to be cut.
+SCREEN_ONLY: ContextVar[bool] = ContextVar("screen_only", default=False)
+
+
+def line_text(key) -> str:
+    """The text of a line key (:attr:`LineKey.text`; for the screen while
+    :data:`SCREEN_ONLY` is set)."""
+    return key.screen_text() if SCREEN_ONLY.get() else key.text
+
+
 def lines_text(ring_or_lines, polar: bool) -> str:
     lines = ring_or_lines.lines if isinstance(ring_or_lines, Ring) else ring_or_lines
     if lines is ALL_LINES:
@@ -280,7 +293,7 @@ def lines_text(ring_or_lines, polar: bool) -> str:
     if not lines:
         return "no line"
     keys = sorted(lines, key=lambda k: k.display_key())
-    shown = ", ".join(k.text for k in keys[:8])
+    shown = ", ".join(line_text(k) for k in keys[:8])
     more = f", ... ({len(keys)} in all)" if len(keys) > 8 else ""
     unit = "turns" if polar else "doubled-angle rays"
     return f"{len(keys)} line{'s' if len(keys) != 1 else ''} ({unit} {shown}{more})"

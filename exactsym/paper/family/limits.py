@@ -46,7 +46,9 @@ class Limits:
     * ``claim_levels``: the audit's ``lem-asym-ord`` on at most this many asymmetric
       levels (the first and the last);
     * ``claim_examples``: a statement failing more often records this many failures and
-      one entry with the count;
+      one entry with the count; ``screen_texts``: their texts are for the screen only
+      (the text summary): a line's slope whose exact text would be megabytes is written
+      by its decimal (:data:`.concentric.SCREEN_ONLY`), not written out to be cut;
     * ``search_steps`` + ``search_steps_per_robot`` * n: work steps of
       ``Find_Asymmetry_Pair`` and of Preprocess's pair scan and printed loop (index steps;
       a G_ij built costs :data:`BUILD_COST` steps a vertex): exact below the budget,
@@ -61,6 +63,7 @@ class Limits:
     claim_triples: int | None = MAX_TRIPLES
     claim_levels: int | None = 200
     claim_examples: int | None = 8
+    screen_texts: bool = False
     union_vertices: int | None = 50_000
     search_steps: int | None = 5_000_000
     search_steps_per_robot: int = 50
