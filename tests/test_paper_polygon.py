@@ -360,6 +360,34 @@ def test_make_sym_to_asym_cartesian_exact_on_circle():
     assert isinstance(moved.parameter, type(Q(1)))
 
 
+def _rotation_loop(polygon, orientation, max_halvings):
+    """Make_SymToAsym's Cartesian loop for a single vertex, run in full (the reference
+    for the shortcut of make_sym_to_asym: a one-vertex polygon is never asymmetric)."""
+    tau, u, moved = Q(-orientation, 4), polygon.directions[0], polygon
+    for _ in range(max_halvings):
+        c, s = (1 - tau * tau) / (1 + tau * tau), 2 * tau / (1 + tau * tau)
+        moved = polygon_from_directions(polygon.labels,
+                                        [(u[0] * c - u[1] * s, u[0] * s + u[1] * c)], False)
+        assert not P.theorem1_asymmetric(moved)
+        tau /= 2
+    return moved, tau
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(-50, 50), st.integers(-50, 50), st.sampled_from([1, -1]),
+       st.integers(1, 12))
+def test_make_sym_to_asym_one_vertex_is_the_full_loop(x, y, orientation, halvings):
+    """A single vertex (Cartesian): the result made from the last rotation only is the
+    loop's, polygon and parameter, for every budget of halvings."""
+    if x == 0 and y == 0:
+        return
+    polygon = polygon_from_directions([7], [(Q(x, 3), Q(y, 5))], False)
+    moved = P.make_sym_to_asym(polygon, orientation, degree="lines", max_halvings=halvings)
+    expected, tau = _rotation_loop(polygon, orientation, halvings)
+    assert moved.leader == 0 and not moved.asymmetric
+    assert moved.polygon.directions == expected.directions and moved.parameter == tau
+
+
 @settings(max_examples=80, deadline=None)
 @given(polar_polygons(min_n=4, max_n=9))
 def test_elect_leader_asym_reflection_law(polygon):

@@ -136,7 +136,15 @@ def make_sym_to_asym(polygon: CirclePolygon, orientation: int = 1, degree: str =
     tau = fmpq(-orientation, 4)
     u = polygon.directions[l]
     moved = polygon
-    for _ in range(max_halvings):
+    halvings = max_halvings
+    if n == 1 and max_halvings > 0 and not theorem1_asymmetric(polygon):
+        # one vertex: its strings do not depend on where it stands (one gap, a full
+        # turn), so no rotation makes it asymmetric and the loop below would run to its
+        # end: only its last rotation is made (in a field of degree thousands each
+        # rotation of the exact vector costs milliseconds)
+        tau /= 2 ** (max_halvings - 1)
+        halvings = 1
+    for _ in range(halvings):
         c, s = (1 - tau * tau) / (1 + tau * tau), 2 * tau / (1 + tau * tau)
         new = (u[0] * c - u[1] * s, u[0] * s + u[1] * c)
         if n < 2 or _strictly_between(polygon, prev, new, nxt):
