@@ -98,13 +98,19 @@ def inputs() -> dict[str, str]:
 def level_inputs() -> dict[str, str]:
     """Many levels in Q(zeta_3988) (degree 1,992): robots at turns j/997 and distinct
     radii, the SEC off the origin, so every robot is on a level of its own and the
-    paper layer compares hundreds of pairs of levels."""
+    paper layer compares hundreds of pairs of levels; and 100 such levels at turns
+    j/999983 (the sparse Q(zeta_N))."""
     out = {}
     for n in (31, 100):
         draw = random.Random(n)
         turns = draw.sample(range(997), n)
         out[f"{n} levels, turns j/997"] = _polar(
             [(str(draw.randrange(1, 400)), f"{t}/997") for t in turns])
+    # the same in the sparse Q(zeta_N), N = 4 * 999983 (degree far beyond any dense field)
+    draw = random.Random(100)
+    turns = draw.sample(range(999983), 100)
+    out["100 levels, turns j/999983"] = _polar(
+        [(str(draw.randrange(1, 400)), f"{t}/999983") for t in turns])
     return out
 
 

@@ -123,6 +123,63 @@ def test_keys_injective_and_fractions(data, m):
 
 @settings(max_examples=60, deadline=None)
 @given(st.data(), st.sampled_from(CONDUCTORS))
+def test_images_in_f_p_agree_with_the_dense_field(data, m):
+    """The two ring maps into F_p (cyclotomic_modular.images) send a sparse quotient
+    num/den and the dense element it equals to the same residues; so the proofs of
+    irrationality hold for it, and a rational ratio is found, never refuted."""
+    from exactsym.exact.cyclotomic_modular import images, quotient_irrational
+    from exactsym.paper.ratio_keys import rational_ratio
+    context = sparse_context(m)
+    a, b = (_real(_random_terms(data, m), m) for _ in range(2))
+    x, y = SparseCyclotomic(context, a), SparseCyclotomic(context, b)
+    dx, dy = _dense_cos(m, a), _dense_cos(m, b)
+    if dy == 0:
+        return
+    q = x / y                                       # held as num / den
+    found, dense = images((q, x, fmpq(2, 3))), images((dx / dy, dx, fmpq(2, 3)))
+    assert (found is None) == (dense is None)
+    if found is not None:
+        assert found == dense
+    assert quotient_irrational(x, y) == quotient_irrational(dx, dy)
+    assert quotient_irrational(x, y) <= (not (dx / dy).is_rational())
+    k = fmpq(data.draw(st.integers(-9, 9)), 7)
+    assert rational_ratio(k * y, y) == k
+    ratio = rational_ratio(x, y)
+    assert ratio == ((dx / dy).rational() if (dx / dy).is_rational() else None)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.data(), st.sampled_from(CONDUCTORS))
+def test_sparse_line_keys_equal_the_dense_ones(data, m):
+    """Lines through C keyed in a sparse field (lazily: signs from balls, irrationality
+    from F_p, exact products only for an equality) are equal exactly when the same
+    lines keyed in the dense field are."""
+    from exactsym.paper.keys import bisector_key, line_key
+    context = sparse_context(m)
+    vectors = []
+    for _ in range(3):
+        x, y = (_real(_random_terms(data, m), m) for _ in range(2))
+        if _dense_cos(m, x) == 0 and _dense_cos(m, y) == 0:
+            return
+        vectors.append(((SparseCyclotomic(context, x), SparseCyclotomic(context, y)),
+                        (_dense_cos(m, x), _dense_cos(m, y))))
+    # a vector and its multiple by a rational (one line), and the rest
+    k = fmpq(data.draw(st.integers(1, 9)), 4)
+    (sx, sy), (dx, dy) = vectors[0]
+    vectors.append(((k * sx, k * sy), (k * dx, k * dy)))
+    sparse = [line_key(False, v) for v, _ in vectors] + \
+        [bisector_key(False, vectors[0][0], v) for v, _ in vectors[1:]]
+    dense = [line_key(False, d) for _, d in vectors] + \
+        [bisector_key(False, vectors[0][1], d) for _, d in vectors[1:]]
+    for i in range(len(sparse)):
+        for j in range(len(sparse)):
+            assert (sparse[i] == sparse[j]) == (dense[i] == dense[j])
+            if sparse[i] == sparse[j]:
+                assert hash(sparse[i]) == hash(sparse[j])
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.data(), st.sampled_from(CONDUCTORS))
 def test_cosine_products_agree_with_the_dense_field(data, m):
     """Products and sums of cosine forms against the dense field, zero included (e = m/4)."""
     context = sparse_context(m)

@@ -22,6 +22,7 @@ from flint import fmpq, fmpz, nmod_poly
 
 from .factor import factorization
 from .field import PolyElement
+from .sparse_cyclotomic import SparseCyclotomic
 
 _EMBEDDINGS: dict = {}     # M -> (p, (w1, w2)) or None
 
@@ -55,11 +56,14 @@ def _embeddings(m: int):
 
 
 def _conductor(x) -> int | None:
-    """1 for a rational, the conductor of a cyclotomic element, else None."""
+    """1 for a rational, the conductor of a cyclotomic element (dense or sparse), else
+    None."""
     if isinstance(x, (int, fmpq, fmpz)):
         return 1
     if isinstance(x, PolyElement):
         return x.field.conductor
+    if isinstance(x, SparseCyclotomic):
+        return x.ctx.n
     return None
 
 
@@ -80,7 +84,7 @@ def images(numbers) -> tuple | None:
     p, roots = emb
     out = ([], [])
     for x in numbers:
-        if isinstance(x, PolyElement):
+        if isinstance(x, (PolyElement, SparseCyclotomic)):
             pair = _element_images(x, m, p, roots)
             if pair is None:
                 return None
@@ -108,11 +112,12 @@ def _element_images(x: PolyElement, m: int, p: int, roots) -> tuple | None:
     found = _IMAGES.get(key)
     if found is not None and found[0] is x:
         return found[1]
-    den = int(x.poly.denom())
-    if den % p == 0:
+    if isinstance(x, SparseCyclotomic):
+        pair = _sparse_images(x, m, p, roots)
+    elif int(x.poly.denom()) % p == 0:
         pair = None
     else:
-        inv = pow(den, -1, p)
+        inv = pow(int(x.poly.denom()), -1, p)
         poly = nmod_poly(x.poly.numer(), p)
         step = m // x.field.conductor        # zeta_c = zeta_M^(M/c)
         pair = tuple(int(poly(pow(w, step, p))) * inv % p for w in roots)
@@ -120,6 +125,34 @@ def _element_images(x: PolyElement, m: int, p: int, roots) -> tuple | None:
         _IMAGES.clear()
     _IMAGES[key] = (x, pair)
     return pair
+
+
+def _sparse_images(x: SparseCyclotomic, m: int, p: int, roots) -> tuple | None:
+    """The two images of ``num / den``, each a sum ``sum c cos(2 pi e/N)`` (cosine form,
+    :mod:`.sparse_cyclotomic`): cos(2 pi e/N) maps to (u^e + u^-e)/2 with u = w^(M/N);
+    None when p divides a coefficient's denominator or the denominator maps to 0."""
+    step = m // x.ctx.n
+    half = pow(2, -1, p)
+    pair = []
+    for w in roots:
+        u = pow(w, step, p)
+        u_inv = pow(u, -1, p)
+        values = []
+        for terms in (x.num, x.den):
+            if terms is None:
+                values.append(1)
+                continue
+            total = 0
+            for e, c in terms.items():
+                q = int(c.q)
+                if q % p == 0:
+                    return None
+                total += int(c.p) * pow(q, -1, p) * (pow(u, e, p) + pow(u_inv, e, p))
+            values.append(total * half % p)
+        if values[1] == 0:
+            return None
+        pair.append(values[0] * pow(values[1], -1, p) % p)
+    return tuple(pair)
 
 
 def ratio_irrational(x, y) -> bool:

@@ -18,6 +18,7 @@ from ..exact.cyclotomic_text import fast_number_text as number_text
 from ..text_numbers import HUGE, huge_quotient
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
+from ..exact.sparse_cyclotomic import SparseCyclotomic
 from .filtered import (ball, compare_directions, cross_sign, dot_sign, gap_classes_on_circle,
                        _ball_sign)
 from .ratio_keys import RatioKey, _largest_field, ball_at, gap_ratio_key, ray_ratio_key
@@ -323,7 +324,7 @@ def lazy_line_canon(a, b, make):
     the :class:`RatioKey` :func:`ray_key` would make (same value, same hash cell), whose
     exact parts are made from ``make()`` only when an equality needs them."""
     numbers = (a[0], a[1], b[0], b[1])
-    if not _quotient_field(*numbers):
+    if not (_quotient_field(*numbers) or any(isinstance(v, SparseCyclotomic) for v in numbers)):
         return None
     ax, ay, bx, by = (ball(v) for v in numbers)
     sx = _ball_sign(ax * bx - ay * by)

@@ -18,6 +18,7 @@ from flint import arb, ctx, fmpq, fmpq_poly
 from ..exact import FieldElement, exact_key, sign
 from ..exact.cyclotomic_modular import quotient_irrational, ratio_irrational
 from ..exact.field import PolyElement
+from ..exact.sparse_cyclotomic import SparseCyclotomic
 from ..exact.fused import complex_product, cross_is_zero
 from .filtered import ball
 
@@ -30,8 +31,11 @@ _PREC = 64
 
 
 def big_field(*numbers) -> bool:
-    """Whether one of ``numbers`` lies in a polynomial field of degree >= RATIO_KEY_DEGREE."""
-    return any(isinstance(x, PolyElement) and x.field.degree >= RATIO_KEY_DEGREE
+    """Whether one of ``numbers`` lies in a polynomial field of degree >= RATIO_KEY_DEGREE
+    or in a sparse Q(zeta_N) (degree beyond 16,384, where products convolve sums of
+    hundreds of cosines: an exact square costs milliseconds to seconds)."""
+    return any(isinstance(x, SparseCyclotomic) or
+               isinstance(x, PolyElement) and x.field.degree >= RATIO_KEY_DEGREE
                for x in numbers)
 
 
@@ -114,7 +118,14 @@ def _poly(x) -> fmpq_poly:
 def rational_ratio(num, den):
     """``num / den`` as an ``fmpq`` when it is rational, else None, without a division
     in the field: num must be a rational multiple q of den, read off one coefficient
-    and checked on all (``den`` a non-zero element of a polynomial field, or rational)."""
+    and checked on all (``den`` a non-zero element of a polynomial field, or rational).
+    In a sparse Q(zeta_N) (no coefficients to read) the quotient num/den is held
+    undivided and its rationality decided exactly, after the same F_p refutation."""
+    if isinstance(num, SparseCyclotomic) or isinstance(den, SparseCyclotomic):
+        if quotient_irrational(num, den):
+            return None
+        q = num / den
+        return q.rational() if q.is_rational() else None
     n, d = _poly(num), _poly(den)
     if n.is_zero():
         return fmpq(0)
@@ -152,7 +163,7 @@ def ray_ratio_key(x, y):
     if q is not None:
         return exact_key(q)
 
-    return RatioKey(lambda: (xx, length), _ratio_ball(x, y), length.field)
+    return RatioKey(lambda: (xx, length), _ratio_ball(x, y), _largest_field((x, y)))
 
 
 def _ratio_ball(x, y):
@@ -166,9 +177,12 @@ def _ratio_ball(x, y):
 
 def _largest_field(numbers):
     """The field a product of ``numbers`` lands in: the largest of their polynomial fields
-    (the smaller ones embed into it, :func:`exactsym.exact.field._common`)."""
+    (the smaller ones embed into it, :func:`exactsym.exact.field._common`); a sparse
+    Q(zeta_N) is larger than any (its context: one per N)."""
     best = None
     for x in numbers:
+        if isinstance(x, SparseCyclotomic):
+            return x.ctx
         if isinstance(x, PolyElement) and (best is None or x.field.degree > best.degree):
             best = x.field
     return best
