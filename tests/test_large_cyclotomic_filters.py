@@ -300,3 +300,37 @@ def test_quotient_proved_irrational_only_when_irrational(x, y, q):
     assert not quotient_irrational(0 * y, y)
     if quotient_irrational(x, y):
         assert not (x / y).is_rational()
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(turns, min_size=3, max_size=6, unique=True), st.integers(1, 3),
+       st.booleans(), st.sampled_from([1, -1]))
+def test_ordered_chord_keys_compare_as_the_exact_ones(ts, scale, near, orientation):
+    """The strings of a polygon on one circle in a huge field hold ordered chord keys
+    (balls, exact only for touching balls): equal, ordered and hashed as the exact keys
+    -u.v, so Theorem 1 and Elect_Leader_Asym decide as with the exact strings (vertices
+    at turns of 1/M, sometimes two of them 10^-30 apart in angle: a near tie)."""
+    from exactsym.paper import polygon as P
+    from exactsym.paper.circle_polygon import polygon_from_directions
+    from exactsym.paper.polygon import strings as S
+    dirs = [tuple(scale * c for c in _unit(t)) for t in ts]
+    if near:          # a Pythagorean turn of 10^-30-ish: the same circle, a near tie
+        a, b = fmpq(1 - 10 ** 60, 1 + 10 ** 60), fmpq(2 * 10 ** 30, 1 + 10 ** 60)
+        x, y = dirs[0]
+        dirs.append((a * x - b * y, b * x + a * y))
+    poly = polygon_from_directions(list(range(len(dirs))), dirs, False)
+    assert poly.one_circle and S._ordered_chords(poly)
+    n = poly.n
+    lazy = [k for m in range(n) for k in S.cw_string(poly, m, orientation)]
+    exact = [poly.chord_key(m, (m - orientation * s) % n) for m in range(n) for s in range(1, n)]
+    for a, ea in zip(lazy, exact):
+        for b, eb in zip(lazy, exact):
+            assert (a == b) == (ea == eb) and (a < b) == (ea < eb) and (a >= b) == (ea >= eb)
+            if a == b:
+                assert hash(a) == hash(b)
+    plain = polygon_from_directions(list(range(len(dirs))), dirs, False)
+    plain.__dict__["_ordered_chords"] = False        # the exact strings
+    assert P.theorem1_asymmetric(poly, orientation) == P.theorem1_asymmetric(plain, orientation)
+    for reading in ("literal", "unordered"):
+        assert P.elect_leader_asym(poly, orientation, reading) == \
+            P.elect_leader_asym(plain, orientation, reading)

@@ -220,6 +220,13 @@ def _quotient_field(*numbers) -> bool:
                for x in numbers)
 
 
+def huge_field(*numbers) -> bool:
+    """Whether a number lies in a cyclotomic field of degree >= :data:`QUOTIENT_DEGREE` or
+    in a sparse Q(zeta_N): there the keys of lines and chords are read from balls and
+    F_p images, and exact products (of megabyte numbers) are made only for equalities."""
+    return _quotient_field(*numbers) or any(isinstance(v, SparseCyclotomic) for v in numbers)
+
+
 class _Slope:
     """The slope y/x (x != 0) of a line's doubled direction, ordered without dividing:
     Arb balls at rising precision (distinct lines have distinct slopes), and if they
@@ -324,7 +331,7 @@ def lazy_line_canon(a, b, make):
     the :class:`RatioKey` :func:`ray_key` would make (same value, same hash cell), whose
     exact parts are made from ``make()`` only when an equality needs them."""
     numbers = (a[0], a[1], b[0], b[1])
-    if not (_quotient_field(*numbers) or any(isinstance(v, SparseCyclotomic) for v in numbers)):
+    if not huge_field(*numbers):
         return None
     ax, ay, bx, by = (ball(v) for v in numbers)
     sx = _ball_sign(ax * bx - ay * by)

@@ -111,6 +111,60 @@ class RatioKey:
         return f"RatioKey({num!r} / {den!r})"
 
 
+class OrderedKey(RatioKey):
+    """A :class:`RatioKey` of an exact number ``value()`` (denominator 1) that is also
+    ordered: Arb balls at rising precision decide ``<`` when they are apart, the exact
+    sign of the difference when they never are.  For a polygon's chords in a field of
+    degree thousands (:func:`chord_key`): the strings compare and hash them, and an
+    exact chord is two products of megabyte numbers."""
+
+    __slots__ = ("_ball_at",)
+
+    def __init__(self, value, value_ball, home):
+        self._ball_at = value_ball
+        super().__init__(lambda: (value(), 1), value_ball, home)
+
+    def _cmp(self, other) -> int:
+        if self == other:
+            return 0
+        prec = _PREC
+        while prec <= 1024:
+            a, b = self._ball_at(prec), other._ball_at(prec)
+            if a < b:
+                return -1
+            if a > b:
+                return 1
+            prec *= 4
+        return sign(self.exact()[0] - other.exact()[0])
+
+    def __lt__(self, other) -> bool:
+        return self._cmp(other) < 0
+
+    def __le__(self, other) -> bool:
+        return self._cmp(other) <= 0
+
+    def __gt__(self, other) -> bool:
+        return self._cmp(other) > 0
+
+    def __ge__(self, other) -> bool:
+        return self._cmp(other) >= 0
+
+    __hash__ = RatioKey.__hash__
+
+
+def chord_key(polygon, i: int, j: int) -> OrderedKey:
+    """:meth:`~exactsym.paper.circle_polygon.CirclePolygon.chord_key` of a polygon on one
+    circle (``-u.v``) as an :class:`OrderedKey`: equal, ordered and hashed as that exact
+    key, read from balls of the vectors (the product only for equal or touching balls)."""
+    n = polygon.n
+    u, v = polygon.directions[i % n], polygon.directions[j % n]
+
+    def value_ball(prec):
+        ux, uy, vx, vy = (ball_at(c, prec) for c in (u[0], u[1], v[0], v[1]))
+        return -(ux * vx + uy * vy)
+    return OrderedKey(lambda: polygon.chord_key(i, j), value_ball, _largest_field(u + v))
+
+
 def _poly(x) -> fmpq_poly:
     return x.poly if isinstance(x, PolyElement) else fmpq_poly([x])
 
@@ -247,5 +301,6 @@ def gap_ratio_key(a, b, c: int, dot_sign: int):
                                         _largest_field(a + b)))
 
 
-__all__ = ["RATIO_KEY_DEGREE", "AngleKey", "RatioKey", "big_field", "gap_ratio_key",
+__all__ = ["RATIO_KEY_DEGREE", "AngleKey", "OrderedKey", "RatioKey", "big_field", "chord_key",
+           "gap_ratio_key",
            "rational_ratio", "ray_ratio_key"]

@@ -14,7 +14,8 @@ from ...strings import cyclic_period, first_occurrence
 from ..circle_polygon import CirclePolygon
 from ..filtered import cross_sign
 from . import small
-from ..keys import HALF, ccw_gap_key
+from ..keys import HALF, ccw_gap_key, huge_field
+from ..ratio_keys import chord_key as ordered_chord_key
 
 
 def below_half(polygon: CirclePolygon, a, b, ccw: bool) -> int:
@@ -54,7 +55,22 @@ def cw_string(polygon: CirclePolygon, m: int, orientation: int = 1) -> tuple:
     equal and ordered as the distances, comparable between strings of one polygon."""
     check_orientation(orientation)
     k = polygon.n
+    if _ordered_chords(polygon):
+        # the same keys held unmultiplied: balls order them
+        return tuple(ordered_chord_key(polygon, m, (m - orientation * s) % k)
+                     for s in range(1, k))
     return tuple(polygon.chord_key(m, (m - orientation * s) % k) for s in range(1, k))
+
+
+def _ordered_chords(polygon: CirclePolygon) -> bool:
+    """Whether the strings of ``polygon`` hold :func:`~exactsym.paper.ratio_keys.chord_key`
+    keys: a Cartesian polygon on one circle in a huge field (:func:`.keys.huge_field`);
+    decided once per polygon, so that every string of it holds one kind of key."""
+    found = polygon.__dict__.get("_ordered_chords")
+    if found is None:
+        found = polygon.__dict__["_ordered_chords"] = not polygon.polar and \
+            polygon.one_circle and any(huge_field(*d) for d in polygon.directions)
+    return found
 
 
 def acw_string(polygon: CirclePolygon, m: int, orientation: int = 1) -> tuple:
