@@ -378,3 +378,24 @@ def test_big_turns_ordering_maps_along(tmp_path, shuffle, turn, reflect):
     assert group.name == "C1" and group.orderable
     robots = [order[j] for j in group.ordering]     # file indices -> the original robots
     assert robots == [1, 0, 4, 2, 3] and order[group.leader] == 1
+
+
+def test_a_long_sparse_line_is_shown_by_its_decimal_on_the_screen():
+    """The text summary shows a line of a sparse Q(zeta_N) whose slope is a long sum of
+    cosines by the slope's decimal and the length of its exact text (which --json
+    prints); short ones as they are."""
+    from exactsym.paper.keys import line_key
+    from exactsym.text_numbers import LONG, approx
+    context = sparse_context(4 * 999983)
+    x = sum((SparseCyclotomic(context, {e: fmpq(e, 7)}) for e in (3, 10, 77, 1234)),
+            SparseCyclotomic(context, {0: fmpq(1, 3)}))
+    y = SparseCyclotomic(context, {5: fmpq(2)}) - SparseCyclotomic(context, {999: fmpq(1, 5)})
+    key = line_key(False, (x, y))
+    s, slope = key.value
+    assert len(key.text) > LONG
+    assert key.screen_text() == \
+        f"({s}, ≈ {approx(slope)} (exact: {len(number_text(slope))} characters, in --json))"
+    assert key.text == f"({s}, {number_text(slope)})"
+    short = line_key(False, (SparseCyclotomic(context, {0: fmpq(1)}),
+                             SparseCyclotomic(context, {0: fmpq(0)})))
+    assert short.screen_text() == short.text

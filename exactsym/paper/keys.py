@@ -15,7 +15,7 @@ from math import atan2, gcd, pi
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
-from ..text_numbers import HUGE, huge_quotient
+from ..text_numbers import HUGE, LONG, huge_quotient, number
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
 from ..exact.sparse_cyclotomic import SparseCyclotomic
@@ -184,16 +184,22 @@ class LineKey:
         """:attr:`text`, except a slope written as a quotient whose exact text would be
         megabytes: then its decimal and the estimated length
         (:func:`exactsym.text_numbers.huge_quotient`), what the text summary shows,
-        without writing the text."""
-        if self._text is not None and len(self._text) <= HUGE:
-            return self._text
-        if self._value is None and self._vector is not None and _quotient_field(*self._vector):
+        without writing the text; and a long slope of a sparse Q(zeta_N), by its decimal
+        and length (:func:`exactsym.text_numbers.number`)."""
+        if (self._text is None or len(self._text) > HUGE) and self._value is None and \
+                self._vector is not None and _quotient_field(*self._vector):
             x, y = self._vector
             s = sign(x)
             shown = huge_quotient(y, x) if s else None
             if shown is not None:
                 return f"({s}, {shown})"
-        return self.text
+        text = self.text
+        if len(text) > LONG and isinstance(self.value, tuple) and \
+                isinstance(self.value[1], SparseCyclotomic):
+            value = self.value
+            # a sum of hundreds of cosines, which the summary would not read back
+            return f"({value[0]}, {number(value[1])})"
+        return text
 
     @property
     def h(self):
