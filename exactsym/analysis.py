@@ -129,7 +129,6 @@ def built_levels(levels: Levels) -> Levels:
     if not isinstance(lazy, RationalLevels):
         return levels
     flat, bounds, known = lazy.flat, lazy.bounds, lazy.known
-    radius = lazy.radius_squared
     # a one-point level's squared radius is |p - C|^2 of its point, as
     # RationalLevels.radius_squared writes it; the vector p - C is kept (Levels.vectors)
     # for the family layer's polygons, which computed it again (one per robot on random
@@ -153,7 +152,7 @@ def built_levels(levels: Levels) -> Levels:
                 vectors[i] = (dx, dy)
                 r2 = dx * dx + dy * dy
             else:
-                r2 = radius(points[0])
+                r2 = lazy.level_radius(k, points[0])
         level = new(Level)          # Level(r2, points) without the frozen __init__
         fields = level.__dict__
         fields["radius_squared"] = r2

@@ -22,6 +22,7 @@ from .configuration import Configuration, no_cycle_collection
 from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels, sum_of_products
 from .exact import FieldElement, RationalSystem, exact_key, exact_sorted, fmpq
 from .exact.field import PolyElement
+from .level_radius import LevelRadius
 from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
                        float_differences, float_squared_norms,
                        sorted_by_value, squared_distance)
@@ -200,6 +201,10 @@ class RationalLevels(Sequence):
         self.flat, self.bounds, self.known = flat, bounds, known
         self.radii, self.points, self.centre = radii, points, centre
 
+    def level_radius(self, k: int, i: int):
+        """The squared radius of level ``k``, whose point is ``i``."""
+        return self.radius_squared(i)
+
     def radius_squared(self, i: int):
         """The exact squared distance of point i from the centre."""
         if self.radii is not None:
@@ -222,7 +227,7 @@ class RationalLevels(Sequence):
         points = tuple(self.flat[self.bounds[k]:self.bounds[k + 1]])
         r2 = self.known.get(k)
         if r2 is None:
-            r2 = self.known[k] = self.radius_squared(points[0])
+            r2 = self.known[k] = self.level_radius(k, points[0])
         return Level(r2, points)
 
     def __iter__(self):
@@ -254,6 +259,10 @@ class RationalLevels(Sequence):
         return None if (rank < 0).any() else rank.tolist()
 
 
+#: fields from this degree hold a level's squared radius lazily (:mod:`.level_radius`)
+LAZY_RADIUS_DEGREE = 512
+
+
 class AlgebraicLevels(RationalLevels):
     """The levels of points with irrational coordinates (:mod:`exactsym.algebraic_filtered`),
     lazily as :class:`RationalLevels`: a level's exact squared radius
@@ -266,6 +275,18 @@ class AlgebraicLevels(RationalLevels):
         self.enclosures = enclosures
         self._d2 = self._cc = None
         self.circle = circle
+
+    def level_radius(self, k: int, i: int):
+        """The squared radius of level ``k`` (point ``i``): in a large cyclotomic field a
+        :class:`~exactsym.level_radius.LevelRadius`, computed when first read exactly
+        (most readers compare radii: balls, level indices, images in F_p)."""
+        enc = self.enclosures
+        if not enc.unit and self.circle is not None and self._d2 is None and \
+                isinstance(enc.homogeneous[2], PolyElement) and \
+                enc.homogeneous[2].field.degree >= LAZY_RADIUS_DEGREE:
+            return LevelRadius(enc.homogeneous[2].field, lambda: self.radius_squared(i),
+                               enc.points[i], self.circle.centre, 1, self, k)
+        return self.radius_squared(i)
 
     def radius_squared(self, i: int):
         enc = self.enclosures
@@ -403,18 +424,19 @@ def mapped_levels(levels: Levels, points, sim, vectors: dict | None = None) -> L
     enc2 = Enclosures(points, sec.homogeneous)
     flat: list[int] = []
     bounds: list[int] = []
-    known = {}
+    mapped = AlgebraicLevels(flat, bounds, enc2, sec)
     for k, level in enumerate(lv):
         members = list(level.points)
         bounds.append(len(flat))
         if len(members) > 1:
             members = enc2.sorted_by_direction(members)[0]
         flat.extend(members)
-        # (a product by 1 still rewrites a megabyte number in canonical form)
-        known[k] = level.radius_squared * k2 if k2 != 1 else level.radius_squared
+        # (a product by 1 still rewrites a megabyte number in canonical form; a level's
+        # radius not computed yet stays so)
+        r2 = level.radius_squared
+        mapped.known[k] = r2 if k2 == 1 else r2.scaled(k2, mapped, k) \
+            if isinstance(r2, LevelRadius) else r2 * k2
     bounds.append(len(points))
-    mapped = AlgebraicLevels(flat, bounds, enc2, sec)
-    mapped.known.update(known)
     moved_vectors = None
     if vectors and sim.rotation is None and sim.scale == 1:
         moved_vectors = (points, {i: linear(*v) for i, v in vectors.items()})

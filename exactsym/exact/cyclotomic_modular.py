@@ -114,6 +114,10 @@ def _element_images(x: PolyElement, m: int, p: int, roots) -> tuple | None:
         return found[1]
     if isinstance(x, SparseCyclotomic):
         pair = _sparse_images(x, m, p, roots)
+    elif getattr(x, "made", True) is False:
+        # a level's squared radius not computed yet (exactsym.level_radius): its images
+        # from those of its point and centre
+        pair = x.modular_images(m, p, roots, lambda v: _value_images(v, m, p, roots))
     elif int(x.poly.denom()) % p == 0:
         pair = None
     else:
@@ -125,6 +129,17 @@ def _element_images(x: PolyElement, m: int, p: int, roots) -> tuple | None:
         _IMAGES.clear()
     _IMAGES[key] = (x, pair)
     return pair
+
+
+def _value_images(x, m: int, p: int, roots) -> tuple | None:
+    """The two images of a rational or a cyclotomic element, or None (a pole)."""
+    if isinstance(x, (PolyElement, SparseCyclotomic)):
+        return _element_images(x, m, p, roots)
+    q = fmpq(x)
+    if int(q.q) % p == 0:
+        return None
+    value = int(q.p) * pow(int(q.q), -1, p) % p
+    return value, value
 
 
 def _sparse_images(x: SparseCyclotomic, m: int, p: int, roots) -> tuple | None:

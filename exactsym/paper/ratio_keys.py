@@ -180,11 +180,11 @@ def rational_ratio(num, den):
             return None
         q = num / den
         return q.rational() if q.is_rational() else None
-    n, d = _poly(num), _poly(den)
-    if n.is_zero():
-        return fmpq(0)
     if quotient_irrational(num, den):   # two maps into F_p disagree: microseconds, where
         return None                     # a coefficient of 16,000 bits costs 0.1 ms to read
+    n, d = _poly(num), _poly(den)       # (and a level's radius may not be computed yet)
+    if n.is_zero():
+        return fmpq(0)
     top = d.degree()
     if n.degree() != top:   # num = q den with q != 0 has den's degree
         return None

@@ -1,0 +1,146 @@
+"""The squared radius of a level in a cyclotomic field of degree thousands, exact on demand.
+
+A level's squared radius |p - C|^2 about the SEC centre C = (X/D, Y/D) is a number of
+megabytes there (C's coefficients have thousands of digits): |p|^2 - 2 p.C + |C|^2 costs
+about 20 ms per level, and 100 robots on levels of their own spent 1.9 s of a 4.5 s check
+on them (issue 9).  Most readers only compare radii, or ask whether their ratio is
+rational.  :class:`LevelRadius` is that exact number, a :class:`PolyElement` whose
+polynomial is computed when first read; before that it answers
+
+* balls (:meth:`enclosure`) from the balls of p and C: ``(p_x - c_x)^2 + (p_y - c_y)^2``,
+  a sum of squares, so no cancellation;
+* its images in F_p (:meth:`modular_images`, for
+  :mod:`exactsym.exact.cyclotomic_modular`'s proofs of irrationality) from the images of
+  p and C: the maps are ring homomorphisms;
+* ``==`` with the squared radius of another level of the same levels: distinct levels
+  have distinct radii (the levels group the points by exactly equal distance), so two
+  level indices decide it; ``<`` and ``sign`` from balls, exact only when balls touch;
+* a product by a rational (the audit's scaled frame) stays lazy.
+
+Anything else (arithmetic, hashing, text, ``==`` with another number) reads the exact
+polynomial, which is then computed once, so a reader never sees anything but the exact
+number.
+"""
+
+from __future__ import annotations
+
+from flint import arb, ctx, fmpq
+
+from .exact.field import PolyElement
+
+__all__ = ["LevelRadius"]
+
+
+class LevelRadius(PolyElement):
+    """``scale * |p - C|^2`` (``p``, ``centre`` exact points of one cyclotomic field,
+    ``make()`` the exact |p - C|^2) for level ``index`` of the levels ``owner``."""
+
+    __slots__ = ("_make", "_exact", "_p", "_c", "scale", "owner", "index")
+
+    def __init__(self, field, make, p, centre, scale, owner, index: int):
+        # PolyElement's state, without its polynomial (read through ``poly``)
+        self.field = field
+        self._hash = self._sign = self._prep = self._ball = None
+        self._make, self._exact = make, None
+        self._p, self._c, self.scale = p, centre, fmpq(scale)
+        self.owner, self.index = owner, index
+
+    @property
+    def poly(self):
+        if self._exact is None:
+            value = self._make()
+            self._exact = value.poly if self.scale == 1 else (value * self.scale).poly
+            self._make = None
+        return self._exact
+
+    @property
+    def made(self) -> bool:
+        """Whether the exact polynomial has been computed."""
+        return self._exact is not None
+
+    def scaled(self, k, owner, index: int) -> "LevelRadius":
+        """``k`` times this squared radius (``k`` rational), as level ``index`` of
+        ``owner``, lazily."""
+        if self._exact is not None:
+            return LevelRadius(self.field, lambda: PolyElement(self.field, self._exact),
+                               self._p, self._c, fmpq(k), owner, index)
+        make = self._make
+        return LevelRadius(self.field, make, self._p, self._c, self.scale * fmpq(k),
+                           owner, index)
+
+    # -- what is read without the polynomial -------------------------------------
+    def enclosure(self, prec: int = 53):
+        if self._exact is not None:
+            return PolyElement.enclosure(self, prec)
+        with ctx.workprec(prec + 16):
+            (x, y), (cx, cy) = self._p, self._c
+            dx = _ball(x, prec) - _ball(cx, prec)
+            dy = _ball(y, prec) - _ball(cy, prec)
+            return (dx * dx + dy * dy) * arb(self.scale)
+
+    def modular_images(self, m: int, p: int, roots, images_of):
+        """The two images in F_p (``images_of(x)`` the pair of a coordinate's images,
+        None when one has a pole), or None."""
+        (x, y), (cx, cy) = self._p, self._c
+        parts = [images_of(v) for v in (x, y, cx, cy)]
+        if any(part is None for part in parts):
+            return None
+        q = int(self.scale.p) * pow(int(self.scale.q), -1, p) % p \
+            if int(self.scale.q) % p else None
+        if q is None:
+            return None
+        return tuple((((ix - icx) ** 2 + (iy - icy) ** 2) * q) % p
+                     for ix, iy, icx, icy in zip(*parts))
+
+    def sign(self) -> int:
+        if self._exact is None:
+            prec = 64
+            while prec <= 1024:
+                if self.enclosure(prec) > 0:
+                    return 1
+                prec *= 4
+        return PolyElement.sign(self)
+
+    def _same_levels(self, other) -> bool:
+        return isinstance(other, LevelRadius) and other.owner is self.owner
+
+    def __eq__(self, other):
+        if self is other:
+            return True
+        if self._same_levels(other):
+            return self.index == other.index        # distinct levels, distinct radii
+        if isinstance(other, (int, fmpq)) and other == 0:
+            return self.sign() == 0
+        return PolyElement.__eq__(self, other)
+
+    def __ne__(self, other):
+        result = self.__eq__(other)
+        return result if result is NotImplemented else not result
+
+    __hash__ = PolyElement.__hash__
+
+    def _cmp(self, other):
+        if self is other:
+            return 0
+        if self._same_levels(other) and self.index == other.index:
+            return 0
+        if isinstance(other, (PolyElement, int, fmpq)):
+            prec = 64
+            while prec <= 1024:
+                a = self.enclosure(prec)
+                b = other.enclosure(prec) if isinstance(other, PolyElement) else \
+                    arb(fmpq(other))
+                if a < b:
+                    return -1
+                if a > b:
+                    return 1
+                prec *= 4
+        return PolyElement._cmp(self, other)
+
+    def __repr__(self):
+        state = "made" if self._exact is not None else "not made"
+        return f"LevelRadius(level {self.index}, {state})"
+
+
+def _ball(x, prec: int):
+    return x.enclosure(prec) if isinstance(x, PolyElement) else arb(fmpq(x))

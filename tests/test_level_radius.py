@@ -1,0 +1,66 @@
+"""A level's squared radius held lazily in a large cyclotomic field (exactsym.level_radius):
+every answer it gives before its polynomial is computed is the exact number's."""
+
+from __future__ import annotations
+
+import random
+
+from flint import ctx, fmpq
+from hypothesis import assume, given, settings, strategies as st
+
+from exactsym import load
+from exactsym.exact.cyclotomic_modular import _element_images, _embeddings
+from exactsym.exact.field import PolyElement
+from exactsym.level_radius import LevelRadius
+from exactsym.levels import levels_of
+
+
+def _config(tmp_path, seed: int, n: int = 6):
+    """n robots at turns j/331 (Q(zeta_1324), degree 660) and small radii, off centre:
+    every robot on a level of its own, most of them."""
+    draw = random.Random(seed)
+    rows = "".join(f'  {{ r = "{draw.randrange(1, 9)}", turn = "{t}/331" }},\n'
+                   for t in draw.sample(range(331), n))
+    path = tmp_path / f"c{seed}.toml"
+    path.write_text("format = 1\npoints = [\n" + rows + "]\n")
+    return load(path)
+
+
+def _fresh(level: LevelRadius) -> LevelRadius:
+    """The same lazy radius, not computed yet (the tests read each one exactly)."""
+    return LevelRadius(level.field, level._make, level._p, level._c, level.scale,
+                       level.owner, level.index) if not level.made else level
+
+
+@settings(max_examples=8, deadline=None)
+@given(st.integers(0, 10 ** 6))
+def test_lazy_radii_answer_as_the_exact_ones(tmp_path_factory, seed):
+    config = _config(tmp_path_factory.mktemp("r"), seed)
+    levels = levels_of(config)
+    radii = [r for r in (level.radius_squared for level in levels.levels)
+             if isinstance(r, LevelRadius)]
+    assume(len(radii) >= 2)             # (the SEC's own level may be known already)
+    assert not any(r.made for r in radii)
+    lazy = [_fresh(r) for r in radii]
+    exact = [PolyElement(r.field, r.poly) for r in radii]           # computes them
+    m = exact[0].field.conductor
+    p, roots = _embeddings(m)
+    for k, (a, ea) in enumerate(zip(lazy, exact)):
+        # balls contain the exact value; images in F_p are the exact number's
+        with ctx.workprec(80):
+            assert a.enclosure(64).contains(ea.enclosure(200))
+        assert a.modular_images(m, p, roots, lambda v: _element_images(v, m, p, roots)) \
+            == _element_images(ea, m, p, roots)
+        assert a.sign() == ea.sign() == 1
+        for b, eb in zip(lazy, exact):
+            assert (a == b) == (ea == eb) and (a != b) == (ea != eb)
+            assert (a < b) == (ea < eb) and (a >= b) == (ea >= eb)
+        assert not a.made                  # none of the above computed it
+        k2 = fmpq(4, 9)
+        scaled = a.scaled(k2, object(), k)
+        es = ea * k2
+        with ctx.workprec(80):
+            assert scaled.enclosure(64).contains(es.enclosure(200))
+        assert scaled.modular_images(m, p, roots, lambda v: _element_images(v, m, p, roots)) \
+            == _element_images(es, m, p, roots)
+        assert scaled.poly == es.poly and a.poly == ea.poly
