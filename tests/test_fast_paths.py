@@ -191,13 +191,19 @@ COMPOSITE = (2 ** 61 - 1) * (2 ** 89 - 1)          # no small factor: ECM at 48 
                           st.integers(1, 4)), min_size=1, max_size=4),
        st.booleans(), st.lists(st.sampled_from(BIG_PRIMES + [6, 35, 3301]), max_size=3))
 def test_bounded_split_with_lazy_primality_equals_the_eager_one(factors, hard, hints):
-    from exactsym.exact.mq_closure import bounded_squarefree_split
+    """(With the full factoring of small composites off, FULL_FACTOR_BITS = 0: the
+    reference has none; it is tested in test_mq_closure.)"""
+    from exactsym.exact import mq_closure
     n = 1
     for p, e in factors:
         n *= p ** e
     if hard:
         n *= COMPOSITE
-    got = bounded_squarefree_split.__wrapped__(n, tuple(hints))
+    saved, mq_closure.FULL_FACTOR_BITS = mq_closure.FULL_FACTOR_BITS, 0
+    try:
+        got = mq_closure.bounded_squarefree_split.__wrapped__(n, tuple(hints))
+    finally:
+        mq_closure.FULL_FACTOR_BITS = saved
     assert got == _eager_split(n, tuple(hints))
     if got is not None:
         s, m = got

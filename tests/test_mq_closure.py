@@ -50,6 +50,21 @@ def test_a_product_of_two_large_primes_is_left_undecided():
     assert bounded_squarefree_split(BIG1 * BIG2 * 12) is None
 
 
+def test_a_composite_that_ecm_leaves_is_factored_when_small_enough(monkeypatch):
+    """Two primes of 64 and 72 bits (ECM looks for 48 and misses both: without the full
+    factoring the split is None): their product, times smooth parts and a square, is
+    split in full (up to FULL_FACTOR_BITS bits)."""
+    from exactsym.exact import mq_closure
+    p, q = _prime_above(2 ** 64 + 99), _prime_above(2 ** 72 + 5)
+    n = p * q * 12 * 49
+    s, m = bounded_squarefree_split.__wrapped__(n)
+    assert s * s * m == n and m == 3 * p * q
+    monkeypatch.setattr(mq_closure, "FULL_FACTOR_BITS", 0)
+    assert bounded_squarefree_split.__wrapped__(n) is None
+    # beyond the bound: test_a_product_of_two_large_primes_is_left_undecided (406 bits)
+    assert (BIG1 * BIG2).bit_length() > 216
+
+
 def test_a_root_with_a_large_prime_radicand_is_found():
     # x = m w^2, m = 6 BIG1 (more than RATIONAL_BITS bits), w = 3 + sqrt 2: its root
     # sqrt(6 BIG1) (3 + sqrt 2) lies in Q(sqrt 2, sqrt(3 BIG1)); before, "undecided"
