@@ -35,15 +35,16 @@ class LevelRadius(PolyElement):
     """``scale * |p - C|^2`` (``p``, ``centre`` exact points of one cyclotomic field,
     ``make()`` the exact |p - C|^2) for level ``index`` of the levels ``owner``."""
 
-    __slots__ = ("_make", "_exact", "_p", "_c", "scale", "owner", "index")
+    __slots__ = ("_make", "_exact", "_p", "_c", "scale", "owner", "index", "homogeneous")
 
-    def __init__(self, field, make, p, centre, scale, owner, index: int):
+    def __init__(self, field, make, p, centre, scale, owner, index: int, homogeneous=None):
         # PolyElement's state, without its polynomial (read through ``poly``)
         self.field = field
         self._hash = self._sign = self._prep = self._ball = None
         self._make, self._exact = make, None
         self._p, self._c, self.scale = p, centre, fmpq(scale)
         self.owner, self.index = owner, index
+        self.homogeneous = homogeneous      # (X, Y, D) of the centre: its short text
 
     @property
     def poly(self):
@@ -61,12 +62,14 @@ class LevelRadius(PolyElement):
     def scaled(self, k, owner, index: int) -> "LevelRadius":
         """``k`` times this squared radius (``k`` rational), as level ``index`` of
         ``owner``, lazily."""
-        if self._exact is not None:
-            return LevelRadius(self.field, lambda: PolyElement(self.field, self._exact),
-                               self._p, self._c, fmpq(k), owner, index)
         make = self._make
+        if make is None:                  # made: |p - C|^2 is the value over the scale
+            exact, field, scale = self._exact, self.field, self.scale
+
+            def make():
+                return PolyElement(field, exact) * (1 / scale)
         return LevelRadius(self.field, make, self._p, self._c, self.scale * fmpq(k),
-                           owner, index)
+                           owner, index, self.homogeneous)
 
     # -- what is read without the polynomial -------------------------------------
     def enclosure(self, prec: int = 53):

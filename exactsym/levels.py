@@ -285,7 +285,8 @@ class AlgebraicLevels(RationalLevels):
                 isinstance(enc.homogeneous[2], PolyElement) and \
                 enc.homogeneous[2].field.degree >= LAZY_RADIUS_DEGREE:
             return LevelRadius(enc.homogeneous[2].field, lambda: self.radius_squared(i),
-                               enc.points[i], self.circle.centre, 1, self, k)
+                               enc.points[i], self.circle.centre, 1, self, k,
+                               self.circle.homogeneous)
         return self.radius_squared(i)
 
     def radius_squared(self, i: int):

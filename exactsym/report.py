@@ -20,6 +20,7 @@ from .exact import evaluate, fmpq, number_system
 from .exact.cyclotomic_text import fast_number_text as number_text   # same strings, faster
 from .expr import parse_expression
 from .paper.family_report import paper_json
+from .paper.homogeneous import centre_texts, radius_text, sec_radius_text
 from .paper.polygon_report import LabelledVerdict
 from .truth_report import truth_json
 
@@ -36,8 +37,13 @@ def _report_json(analysis: Analysis, brief: bool = False) -> dict:
     config, levels = analysis.config, analysis.levels
     report = {"n": config.n}
     if not brief:
-        report["sec"] = {"center": [number_text(c) for c in levels.sec.centre],
-                         "radius_squared": number_text(levels.sec.radius_squared)}
+        # in a field of degree thousands, as quotients of numbers with small
+        # coefficients (paper/homogeneous.py): the divided ones are megabytes each
+        sec = levels.sec
+        centre = centre_texts(sec) or [number_text(c) for c in sec.centre]
+        radius = sec_radius_text(sec, config.points) if not levels.polar else None
+        report["sec"] = {"center": centre,
+                         "radius_squared": radius or number_text(sec.radius_squared)}
     report["number_field"] = getattr(config.polar_system if levels.polar else config.system,
                                      "name", "Q")
     if not brief:
@@ -52,6 +58,10 @@ def _report_json(analysis: Analysis, brief: bool = False) -> dict:
     return report
 
 
+def _radius_text(r2) -> str:
+    return radius_text(r2) or number_text(r2)
+
+
 def _level_entries(levels, verdicts, strings) -> list:
     """One dict per level: ``radius_squared``, ``points`` and, when computed, the polygon
     layer's ``paper`` verdict and its ``strings``."""
@@ -59,11 +69,11 @@ def _level_entries(levels, verdicts, strings) -> list:
         # one pass (100,000 levels on random input)
         return [{"radius_squared": str(level.radius_squared)
                  if type(level.radius_squared) is fmpq       # flint writes p/q as we do
-                 else number_text(level.radius_squared),
+                 else _radius_text(level.radius_squared),
                  "points": list(level.points), "paper": verdict}
                 for level, verdict in zip(levels, verdicts)]
     out = [{"radius_squared": str(level.radius_squared)
-            if type(level.radius_squared) is fmpq else number_text(level.radius_squared),
+            if type(level.radius_squared) is fmpq else _radius_text(level.radius_squared),
             "points": list(level.points)} for level in levels]
     if verdicts is not None:
         strings = strings or (None,) * len(out)

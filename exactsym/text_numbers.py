@@ -139,10 +139,14 @@ def huge_quotient(y, x) -> str | None:
     if sizes == [None, None]:
         return None
     size = sum(s if s is not None else len(number_text(v)) for s, v in zip(sizes, (y, x))) + 5
+    return f"≈ {quotient_decimal(y, x)} (exact: about {size_words(size)} characters, in --json)"
+
+
+def quotient_decimal(y, x) -> str:
+    """The decimal of ``y/x`` (``x`` non-zero) from their balls, without dividing."""
     with ctx.workprec(128):
         ball = _ball(y) / _ball(x)        # each to DIGITS + 2 digits: the quotient to DIGITS
-    decimal = "0" if ball.is_zero() else ball.str(DIGITS, radius=False)
-    return f"≈ {decimal} (exact: about {size_words(size)} characters, in --json)"
+    return "0" if ball.is_zero() else ball.str(DIGITS, radius=False)
 
 
 def square_root(x) -> str:

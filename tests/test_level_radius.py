@@ -29,7 +29,7 @@ def _config(tmp_path, seed: int, n: int = 6):
 def _fresh(level: LevelRadius) -> LevelRadius:
     """The same lazy radius, not computed yet (the tests read each one exactly)."""
     return LevelRadius(level.field, level._make, level._p, level._c, level.scale,
-                       level.owner, level.index) if not level.made else level
+                       level.owner, level.index, level.homogeneous) if not level.made else level
 
 
 @settings(max_examples=8, deadline=None)
@@ -64,3 +64,8 @@ def test_lazy_radii_answer_as_the_exact_ones(tmp_path_factory, seed):
         assert scaled.modular_images(m, p, roots, lambda v: _element_images(v, m, p, roots)) \
             == _element_images(es, m, p, roots)
         assert scaled.poly == es.poly and a.poly == ea.poly
+        # scaled again once made: the value and its balls still agree
+        twice = scaled.scaled(fmpq(3), object(), k)
+        with ctx.workprec(80):
+            assert twice.enclosure(64).contains((es * 3).enclosure(200))
+        assert twice.poly == (es * 3).poly

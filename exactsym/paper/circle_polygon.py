@@ -73,6 +73,7 @@ from functools import cached_property, cmp_to_key
 
 from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
 from .filtered import ball, compare_directions
+from .homogeneous import register
 from .inverses import inverse_length, squared_length
 
 __all__ = ["CirclePolygon", "level_polygon", "polygon_from_directions", "angular_distance",
@@ -330,6 +331,8 @@ def level_polygon(config, rings, level_index: int) -> CirclePolygon:
     cx, cy = rings.sec.centre
     pts = config.points
     poly = CirclePolygon(labels, tuple((pts[i][0] - cx, pts[i][1] - cy) for i in labels), False)
+    for i, d in zip(labels, poly.directions):
+        register(d, pts[i], rings.sec.homogeneous)        # its short text (.homogeneous)
     poly.__dict__["one_circle"] = True      # a level: one exact distance to C, by definition
     return poly
 

@@ -15,7 +15,8 @@ from math import atan2, gcd, pi
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
-from ..text_numbers import HUGE, LONG, huge_quotient, number
+from ..text_numbers import HUGE, LONG, huge_quotient, number, quotient_decimal
+from .homogeneous import line_direction, quotient_text
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
 from ..exact.sparse_cyclotomic import SparseCyclotomic
@@ -150,7 +151,14 @@ class LineKey:
         """The order in which lines are shown: by the value (a turn; or ``(sign, slope)``,
         the vertical doubled direction as ``(0, 0)``), compared without dividing for a
         Cartesian line (:class:`_Slope`): in a field of degree thousands one slope costs
-        seconds to divide."""
+        seconds to divide.  A line whose doubled direction is not made yet is ordered by
+        the positive multiple of it its short text is written from (:meth:`_short_parts`:
+        the same sign and slope, numbers of a few bits per coefficient)."""
+        if self._vector_ is None:
+            parts = self._short_parts()
+            if parts is not None:
+                s, x, y = parts
+                return (s, _Slope(x, y))
         if self._vector is None:
             return self.value
         x, y = self._vector
@@ -164,6 +172,10 @@ class LineKey:
         slope is a megabyte and the claims print each line several times.  In a field of
         degree >= :data:`QUOTIENT_DEGREE` the slope is written as the quotient ``(Y)/(X)``
         of the doubled direction, undivided (exact; it reads back as the same number)."""
+        if self._text is None and self._value is None:
+            short = self._short_text()
+            if short is not None:
+                self._text = short
         if self._text is None and self._value is None and self._vector is not None and \
                 _quotient_field(*self._vector):
             x, y = self._vector
@@ -180,12 +192,36 @@ class LineKey:
             self._text = known[1]
         return self._text
 
+    def _short_parts(self):
+        """``(sign, X', Y')``: a positive multiple of this line's doubled direction made
+        from the homogeneous forms of the two directions it is the product of
+        (:mod:`.homogeneous`: the same slope, numbers of a few bits per coefficient where
+        the product's have thousands of digits), or None."""
+        key = self.canon[3] if isinstance(self.canon, tuple) and len(self.canon) == 4 \
+            else None
+        if not isinstance(key, _DirectionKey):
+            return None
+        found = line_direction(key.factors)
+        return None if found is None else (key.signs[0],) + found
+
+    def _short_text(self):
+        parts = self._short_parts()
+        return None if parts is None else f"({parts[0]}, {quotient_text(parts[2], parts[1])})"
+
     def screen_text(self) -> str:
         """:attr:`text`, except a slope written as a quotient whose exact text would be
         megabytes: then its decimal and the estimated length
         (:func:`exactsym.text_numbers.huge_quotient`), what the text summary shows,
         without writing the text; and a long slope of a sparse Q(zeta_N), by its decimal
         and length (:func:`exactsym.text_numbers.number`)."""
+        parts = self._short_parts() if self._value is None else None
+        if parts is not None:
+            text = self.text                        # the short exact text
+            if len(text) <= LONG:
+                return text
+            s, x, y = parts
+            return f"({s}, ≈ {quotient_decimal(y, x)} (exact: {len(text)} characters, " \
+                "in --json))"
         if (self._text is None or len(self._text) > HUGE) and self._value is None and \
                 self._vector is not None and _quotient_field(*self._vector):
             x, y = self._vector

@@ -26,6 +26,7 @@ from ...exact import number_text, sign
 from ...levels import Levels, levels_of
 from ...strings import find_all
 from ..circle_polygon import CirclePolygon
+from ..homogeneous import register
 from ..keys import bisector_key, gap_ids, line_key, ray_keys
 
 
@@ -127,6 +128,7 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
     else:
         cx, cy = ring_data.sec.centre
         pts = config.points
+        homogeneous = ring_data.sec.homogeneous
     # the levels' vectors p - C, when computed with their radii for these very points
     known = getattr(ring_data, "vectors", None)
     vectors = known[1] if not polar and known is not None and known[0] is config.points \
@@ -148,6 +150,7 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
                 if vector is None:
                     x, y = pts[i]
                     vector = (x - cx, y - cy)
+                    register(vector, pts[i], homogeneous)    # its short text
                 dirs = (vector,)
         else:
             labels = tuple([(i,) for i in robots])
@@ -165,6 +168,8 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
                 dirs = tuple([turns[i][1] for i in robots])
             else:
                 dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in robots])
+                for i, d in zip(robots, dirs):
+                    register(d, pts[i], homogeneous)
         poly = new_polygon(CirclePolygon)       # CirclePolygon(labels, dirs, polar), faster
         poly.__dict__.update(labels=labels, directions=dirs,
                              polar=polar, one_circle=True)    # a level: one radius

@@ -19,6 +19,7 @@ from .. import polygon as P
 from ...exact import FieldElement, fmpq, rational_sqrt
 from ..circle_polygon import CirclePolygon, polygon_from_directions
 from ..inverses import inverse_length
+from ..homogeneous import scaled as scaled_form
 from ..ratio_keys import big_field, rational_ratio
 from .concentric import Ring, mirror_lines, polygon_name
 
@@ -71,7 +72,8 @@ def radial_projection(source: Ring, target: Ring, name: str | None = None) -> Pr
                 merged[key][0] = tuple(dict.fromkeys(both))      # innermost robot first
             continue
         if scale is not None:
-            d = (d[0] * scale, d[1] * scale)
+            d, source_d = (d[0] * scale, d[1] * scale), d
+            scaled_form(d, source_d, scale)          # its short text (..homogeneous)
         merged[key] = [lab, d]
         order.append(key)
     if polar:
