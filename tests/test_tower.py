@@ -118,6 +118,50 @@ def test_five_deep_is_fast_and_depth_bound_is_refused_fast(tmp_path):
     assert time.perf_counter() - start < 5
 
 
+PRIMES = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41]
+
+
+def test_thirteen_independent_radicands_are_refused_before_the_tower_is_built():
+    """sqrt(1 + sqrt(p)) for 13 primes: the radicands are independent modulo squares of
+    the base (F_p characters), so 13 levels are needed: number_system refuses before any
+    level is built (it took a minute of square-root tests before); 12 are not refused
+    there."""
+    import importlib
+    E = importlib.import_module("exactsym.exact.evaluate")
+    nodes = [P(f"sqrt(1+sqrt({p}))") for p in PRIMES]
+    with pytest.raises(FieldTooLargeError, match="more than 12 quadratic"):
+        E.number_system(nodes)
+    assert isinstance(E.number_system(nodes[:12]), E.TowerSystem)    # levels made later
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.lists(st.booleans(), min_size=5, max_size=5), min_size=1, max_size=7),
+       st.lists(st.integers(1, 5), min_size=7, max_size=7))
+def test_square_class_rank_is_a_lower_bound_and_exact_here(exponents, squares):
+    """Products of subsets of five independent classes (1 + sqrt p) times squares: the
+    proved rank never exceeds the true rank (the F_2 rank of the exponent vectors), and
+    here reaches it."""
+    from exactsym.exact.multiquadratic import sqrt_rational
+    from exactsym.exact.tower_proof import square_class_rank
+    gens = [1 + sqrt_rational(p) for p in PRIMES[:5]]
+    values = []
+    for row, k in zip(exponents, squares):
+        v = MQ.rational(fmpq(1))
+        for g, e in zip(gens, row):
+            if e:
+                v = v * g
+        values.append(v * (k + sqrt_rational(3)) ** 2)
+    basis = []
+    for row in exponents:
+        mask = sum(1 << i for i, e in enumerate(row) if e)
+        for b in basis:
+            mask = min(mask, mask ^ b)
+        if mask:
+            basis.append(mask)
+            basis.sort(reverse=True)
+    assert square_class_rank(PRIMES[:5], values) == len(basis)
+
+
 # ------------------------------------------------------------------ certificates
 def _cert(tmp_path, rows: list[str]) -> dict:
     path = tmp_path / "c.toml"

@@ -444,8 +444,36 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
             if atom[0] == "sqrt":
                 m = squarefree_split(int(atom[1].p) * int(atom[1].q))[1]
                 primes.update(int(p) for p, _ in fmpz(m).factor())
+        _check_tower_levels(atoms, primes)
         return TowerSystem(primes)
     return _mixed_system(atoms)
+
+
+def _check_tower_levels(atoms, primes) -> None:
+    """FieldTooLargeError before anything is built when the radicands of depth 2 (square
+    roots of sums of square roots of rationals) are proved to need more than
+    ``tower.MAX_LEVELS`` quadratic levels: that many of them independent modulo squares
+    of the multiquadratic base (:func:`.tower_proof.square_class_rank`, F_p characters).
+    (Else the tower refuses the level beyond the bound when it would build it, after the
+    square-root tests of the levels below: a minute for twelve.)"""
+    from .tower import MAX_LEVELS
+    from .tower_proof import square_class_rank
+    base = MultiquadraticSystem(primes)
+    values: list = []
+    for atom in atoms:
+        if atom[0] != "nested":
+            continue
+        inner: list = []
+        _collect(atom[1].arg, inner)
+        if any(kind != "sqrt" for kind, *_ in inner):
+            continue                       # deeper: decided by the tower itself
+        value = evaluate(atom[1].arg, base)
+        if isinstance(value, MQ) and value.sign() > 0 and value not in values:
+            values.append(value)
+    if len(values) > MAX_LEVELS and \
+            square_class_rank(sorted(primes), values) > MAX_LEVELS:
+        raise FieldTooLargeError(f"these nested radicals need more than {MAX_LEVELS} "
+                                 "quadratic extensions above the square roots")
 
 
 def _sparse_system(atoms, conductor: int, degree: int):

@@ -337,6 +337,13 @@ class Tower:
         if root is not None:
             return root
         root = self._rational_sqrt(x)
+        if root is None and self.levels >= MAX_LEVELS and isinstance(x, MQ) and \
+                all(isinstance(r, MQ) for r in self.radicands):
+            # a new level would be beyond the bound: refuse now when x is proved no square
+            # (independent of the radicands modulo squares) instead of after the test
+            from .tower_proof import independent_square_classes
+            if independent_square_classes(self.primes, self.radicands + [x]):
+                self._check_new_level()
         if root is None:
             root = self.root_in(x, self.levels)
         if root is None:

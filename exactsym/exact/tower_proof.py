@@ -16,7 +16,7 @@ Public names: :func:`nonsquare_witness`, :func:`cyclotomic_nonsquare_witness`, :
 
 from __future__ import annotations
 
-from flint import fmpq
+from flint import fmpq, fmpz
 
 from .cyclotomic_sqrt import image_mod, root_of_unity_mod, split_primes
 from .multiquadratic import MQ
@@ -75,6 +75,71 @@ def sqrt_mod(a: int, p: int):
         b = pow(c, 1 << (m - i - 1), p)
         m, c, t, r = i, b * b % p, t * b * b % p, r * b % p
     return r
+
+
+def independent_square_classes(primes, values, **bounds) -> bool:
+    """True only when the elements ``values`` of K_0 are proved independent in
+    K_0*/K_0*^2 (:func:`square_class_rank` is their number)."""
+    return square_class_rank(primes, values, **bounds) == len(values)
+
+
+def _split_primes(primes):
+    """Primes p = 1 + k M, M = 8 times the odd base primes: p = 1 mod 8 makes 2 a square
+    mod p, and p = 1 mod q with p = 1 mod 4 makes q one (quadratic reciprocity)."""
+    m = 8
+    for q in primes:
+        if q != 2:
+            m *= q
+    k = 0
+    while True:
+        k += 1
+        if fmpz(k * m + 1).is_prime():
+            yield k * m + 1
+
+
+def square_class_rank(primes, values, tries: int = 32, signs: int = 8) -> int:
+    """A proved lower bound on the rank of the classes of the non-zero elements ``values``
+    of K_0 = Q(sqrt q : q in ``primes``) (``MQ``) in K_0*/K_0*^2: at least that many of
+    them are independent (no product of a non-empty subset of those is a square in K_0),
+    so K_0(sqrt v : v in values) has degree at least 2^rank over K_0.  Each ring map
+    phi: K_0 -> F_p (p odd, every base prime a square mod p, no denominator divisible by
+    p: the roots' signs choose the map) composed with the Legendre symbol is a character
+    of K_0*/K_0*^2 where phi is a unit (the image of a square is a square); the rank over
+    F_2 of a matrix of such characters is a lower bound of the rank.  The primes are
+    :func:`_split_primes` (``tries`` of them, ``signs`` maps each).  Milliseconds: the
+    tower refuses a level beyond its bound with it before any square-root test in a base
+    of 2^k terms."""
+    need = len(values)
+    if need == 0:
+        return 0
+    dens = 1
+    for v in values:
+        for c in v.terms.values():
+            dens *= int(c.q)
+    basis: list = []                        # row-reduced bit masks over F_2
+    candidates = _split_primes(primes)
+    for _ in range(tries):
+        p = next(candidates)
+        if dens % p == 0:
+            continue
+        roots = [sqrt_mod(q, p) for q in primes]
+        if any(r is None for r in roots):
+            continue
+        for choice in range(signs):
+            base = {q: (r if (choice >> k) & 1 == 0 else p - r)
+                    for k, (q, r) in enumerate(zip(primes, roots))}
+            images = [image(v, p, base, []) for v in values]
+            if any(a == 0 for a in images):
+                continue
+            row = sum(1 << i for i, a in enumerate(images) if pow(a, (p - 1) // 2, p) != 1)
+            for b in basis:
+                row = min(row, row ^ b)
+            if row:
+                basis.append(row)
+                basis.sort(reverse=True)
+                if len(basis) == need:
+                    return need
+    return len(basis)
 
 
 def _odd_primes(limit: int):
