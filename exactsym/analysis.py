@@ -19,6 +19,7 @@ from .audit import audit as run_audit
 from .configuration import Configuration, no_cycle_collection
 from .levels import Level, Levels, RationalLevels, levels_of
 from .paper.family import DEFAULT_LIMITS, PaperResult, paper_procedure
+from .paper.homogeneous import forget as forget_directions
 from .paper.polygon_report import level_section
 from .symmetry import SymmetryGroup, symmetry_group
 
@@ -88,6 +89,7 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
     True
     """
     options = options if options is not None else Options()
+    forget_directions()         # the last configuration's short texts (megabyte vectors)
     wanted = set(sections)
     unknown = wanted - set(PARTS)
     if unknown:

@@ -19,6 +19,9 @@ so these texts are exact; they are only *written* this way, every computation us
 numbers as they are.  :func:`register` records the homogeneous form of a direction
 vector when the paper layer makes it (:func:`homogeneous_of` finds it by the vector
 object: an entry keeps the vector alive, so an id is never mistaken for another's).
+The vectors are megabytes each, so the record holds one configuration's:
+:func:`exactsym.analysis.analyse` calls :func:`forget` first (the report, written after
+the analysis, still reads them).
 """
 
 from __future__ import annotations
@@ -26,14 +29,19 @@ from __future__ import annotations
 from ..exact import number_text
 from ..exact.field import PolyElement
 
-__all__ = ["SHORT_DEGREE", "register", "homogeneous_of", "scaled", "quotient_text",
+__all__ = ["SHORT_DEGREE", "forget", "register", "homogeneous_of", "scaled", "quotient_text",
            "centre_texts", "radius_text", "sec_radius_text", "line_direction"]
 
 #: fields from this degree get the short texts
 SHORT_DEGREE = 512
 
 _FORMS: dict = {}          # id(vector) -> (vector, homogeneous vector)
-_LIMIT = 1 << 16
+_LIMIT = 1 << 14
+
+
+def forget() -> None:
+    """Drop every recorded form (a new configuration is analysed)."""
+    _FORMS.clear()
 
 
 def _huge(d) -> bool:
