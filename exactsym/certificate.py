@@ -43,10 +43,10 @@ from .exact.evaluate import SparseCyclotomicSystem
 from .exact.sparse_cyclotomic import SparseCyclotomic
 from .exact.tower import TowerElement
 from .exact.tower_proof import cyclotomic_nonsquare_witness, nonsquare_witness
+from .prime_certificates import (MR_LIMIT, PrimalityError, hashing_prime_factors,
+                                 primality_proofs)
 
 FORMAT = "exactsym-certificate"
-#: the checker's deterministic Miller-Rabin test (checker_sparse.is_prime) decides below this
-SPARSE_PRIME_LIMIT = 3317044064679887385961981
 VERSION = 1
 
 
@@ -118,15 +118,21 @@ class Encoder:
             self._general(field)
 
     def _sparse(self, system, values):
-        """``{"sparse-cyclotomic": {conductor, factors, prime, root}}`` (checker_sparse): the
-        checker proves the factors prime, the prime l = 1 mod N and the root of order N mod l
-        (its hash), and every denominator prime to l; numbers are {e: c} = sum c cos(2 pi e/N)."""
+        """``{"sparse-cyclotomic": {conductor, factors, prime, root[, primality]}}``
+        (checker_sparse): the checker proves the factors prime (Miller-Rabin, or above its
+        range the ``primality`` proofs of prime_certificates), the prime l = 1 mod N and the
+        root of order N mod l (its hash), and every denominator prime to l; numbers are
+        {e: c} = sum c cos(2 pi e/N)."""
         context = system.context
         self.field = None
         self.sparse = context
-        if max([context.ell, *context.factors]) >= SPARSE_PRIME_LIMIT:
-            raise CertificateError(f"the checker proves primes below {SPARSE_PRIME_LIMIT} "
-                                   f"only; Q(zeta_{context.n}) needs larger ones")
+        ell = context.ell                       # l - 1 = k N: factored from N's factors
+        known = {ell: hashing_prime_factors(ell, context.n, context.factors)} \
+            if ell >= MR_LIMIT else {}
+        try:
+            proofs = primality_proofs([*context.factors, ell], known)
+        except PrimalityError as err:
+            raise CertificateError(f"Q(zeta_{context.n}): {err}") from None
         for v in values:
             if isinstance(v, SparseCyclotomic):
                 coeffs = list(v.num.values()) + list((v.den or {}).values())
@@ -139,6 +145,8 @@ class Encoder:
             "conductor": str(context.n),
             "factors": [[str(p), a] for p, a in sorted(context.factors.items())],
             "prime": str(context.ell), "root": str(context.g)}}
+        if proofs:
+            self.spec["sparse-cyclotomic"]["primality"] = proofs
 
     def _sparse_text(self, x):
         """A real sparse number as {e: c} = sum c cos(2 pi e/N) (e and N - e merged)."""

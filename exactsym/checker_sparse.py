@@ -10,7 +10,8 @@ read as the roots of unity ``sum c/2 (zeta^e + zeta^-e)`` by the zero test.  The
 canonical, so:
 
 * **Equality** is an exact zero test over the prime factorisation of N (checked: the
-  product is N and each factor is prime, by a deterministic Miller-Rabin test).  With
+  product is N and each factor is prime, by a deterministic Miller-Rabin test below
+  3.3 * 10^24 and above by the certificate's ``"primality"`` proofs, :func:`proved_primes`).  With
   N = p^a m, gcd(p, m) = 1 and E = 1 mod p^a, E = 0 mod m, w = zeta_N^E is a primitive p^a-th
   root of unity and zeta_N^e = w^i zeta_(N/p)^f with i = e mod p, f = (e - i E)/p.  If a >= 2,
   1, w, ..., w^(p-1) are a basis of Q(zeta_N) over Q(zeta_(N/p)) (w^p lies there and the
@@ -33,7 +34,7 @@ canonical, so:
 from __future__ import annotations
 
 from fractions import Fraction
-from math import gcd, lcm
+from math import gcd, isqrt, lcm
 
 try:
     from .checker_numbers import Invalid, RingOps, frac, integer, need
@@ -44,9 +45,13 @@ _MR_BASES = (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41)
 _MR_LIMIT = 3317044064679887385961981      # the bases above decide primality below this
 
 
-def is_prime(n: int) -> bool:
-    """Deterministic Miller-Rabin below _MR_LIMIT (larger numbers are refused)."""
-    need(n < _MR_LIMIT, f"cannot prove {n} prime (above the deterministic test's range)")
+def is_prime(n: int, proved: frozenset = frozenset()) -> bool:
+    """Deterministic Miller-Rabin below _MR_LIMIT; a larger n must be among the primes
+    ``proved`` by the certificate's primality proofs (:func:`proved_primes`)."""
+    if n >= _MR_LIMIT:
+        need(n in proved, f"cannot prove {n} prime (above the deterministic test's range, "
+             "and the certificate has no primality proof of it)")
+        return True
     if n < 2:
         return False
     for p in _MR_BASES:
@@ -68,6 +73,53 @@ def is_prime(n: int) -> bool:
     return True
 
 
+def proved_primes(proofs) -> frozenset:
+    """The primes proved by ``[{"prime": p, "witness": a, "factors": [[q, e], ...]}, ...]``
+    (:func:`_pocklington`), taken in increasing order: a factor q of p - 1 is below p, so a
+    q at or above _MR_LIMIT has been proved before it is used."""
+    need(isinstance(proofs, list), "sparse-cyclotomic: primality is a list of proofs")
+    entries = []
+    for item in proofs:
+        need(isinstance(item, dict) and all(isinstance(f, list) and len(f) == 2
+                                            for f in item["factors"]),
+             "sparse-cyclotomic: a primality proof is {prime, witness, factors: [[q, e], ...]}")
+        entries.append((integer(str(item["prime"])), integer(str(item["witness"])),
+                        [(integer(str(q)), integer(str(e))) for q, e in item["factors"]]))
+    proved: set = set()
+    for p, a, factors in sorted(entries):
+        _pocklington(p, a, factors, proved)
+        proved.add(p)
+    return frozenset(proved)
+
+
+def _pocklington(p: int, a: int, factors: list, proved: set) -> None:
+    """Raises Invalid unless p is prime.  F = prod q^e divides p - 1, a^(p-1) = 1 and
+    gcd(a^((p-1)/q) - 1, p) = 1 for each q: then for every prime r | p the order of a mod r
+    divides p - 1 but no (p - 1)/q, so F | r - 1 (Pocklington).  Hence p is prime when
+    F > sqrt(p) (Pratt when F = p - 1), or when F^3 >= p and, with p = c2 F^2 + c1 F + 1
+    (0 <= c1 < F), c1^2 - 4 c2 is not a square: a composite p would be (uF + 1)(vF + 1)
+    (three factors exceed F^3), c1 = u + v, c2 = uv, c1^2 - 4 c2 = (u - v)^2
+    (Brillhart, Lehmer, Selfridge 1975; Crandall-Pomerance, Theorem 4.1.5)."""
+    why = f"sparse-cyclotomic: the primality proof of {p}"
+    need(p > 2, f"{why}: p must exceed 2")
+    f = 1
+    for q, e in factors:
+        need(e >= 1 and is_prime(q, proved), f"{why}: the factor {q} of p - 1 is not a "
+             "proved prime")
+        f *= q ** e
+    need((p - 1) % f == 0, f"{why}: the listed factors do not divide p - 1")
+    need(pow(a, p - 1, p) == 1, f"{why}: the witness {a} has a^(p-1) != 1 mod p")
+    for q, _ in factors:
+        need(gcd(pow(a, (p - 1) // q, p) - 1, p) == 1,
+             f"{why}: the witness {a} fails for the factor {q} (a^((p-1)/q) - 1 not prime to p)")
+    if f > isqrt(p):                            # f >= isqrt(p) + 1 > sqrt(p)
+        return
+    need(f ** 3 >= p, f"{why}: the factored part of p - 1 is below p^(1/3)")
+    c2, c1 = divmod((p - 1) // f, f)
+    d = c1 * c1 - 4 * c2
+    need(d < 0 or isqrt(d) ** 2 != d, f"{why}: c1^2 - 4 c2 is a square (p may be composite)")
+
+
 class SparseField:
     """The field ``{"sparse-cyclotomic": {"conductor": N, "factors": [[p, a], ...],
     "prime": l, "root": g}}``: checks the data, then makes numbers."""
@@ -76,13 +128,14 @@ class SparseField:
         need(isinstance(spec, dict), "sparse-cyclotomic: an object")
         self.n = n = integer(str(spec["conductor"]))
         need(n >= 1, "sparse-cyclotomic: the conductor must be positive")
+        proved = proved_primes(spec.get("primality", []))
         factors = []
         product = 1
         for item in spec["factors"]:
             need(isinstance(item, list) and len(item) == 2, "sparse-cyclotomic: factors are "
                  "[prime, exponent] pairs")
             p, a = integer(str(item[0])), integer(str(item[1]))
-            need(a >= 1 and is_prime(p), f"sparse-cyclotomic: {p} is not a prime")
+            need(a >= 1 and is_prime(p, proved), f"sparse-cyclotomic: {p} is not a prime")
             factors.append((p, a))
             product *= p ** a
         need(product == n and len({p for p, _ in factors}) == len(factors),
@@ -92,7 +145,7 @@ class SparseField:
         self.factors = sorted(factors, key=lambda pa: (pa[1] == 1, -pa[0]))
         self.ell = ell = integer(str(spec["prime"]))
         self.g = g = integer(str(spec["root"])) % ell
-        need(is_prime(ell) and ell % n == 1, "sparse-cyclotomic: the prime is not 1 mod N")
+        need(is_prime(ell, proved) and ell % n == 1, "sparse-cyclotomic: the prime is not 1 mod N")
         need(pow(g, n, ell) == 1 and all(pow(g, n // p, ell) != 1 for p, _ in factors),
              "sparse-cyclotomic: the root does not have order N modulo the prime")
         self._cos: dict = {}
@@ -321,4 +374,4 @@ class SNum(RingOps):
         return self.f.sign(self)
 
 
-__all__ = ["SparseField", "SNum", "is_prime"]
+__all__ = ["SparseField", "SNum", "is_prime", "proved_primes"]
