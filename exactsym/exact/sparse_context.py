@@ -7,7 +7,6 @@ Public names: :class:`SparseContext`, :func:`sparse_context`.
 
 from __future__ import annotations
 
-from functools import lru_cache
 from math import gcd
 
 from flint import arb, ctx, fmpq, fmpz
@@ -142,7 +141,7 @@ class SparseContext:
         total = fmpq(0)
         for e, c in terms.items():
             d = self.n // gcd(e, self.n)
-            mu, ph = _mu_phi(d)
+            mu, ph = _mu_phi(d, self.factors)
             if mu:
                 total += c * fmpq(mu, ph)
         return total
@@ -151,10 +150,17 @@ class SparseContext:
         return f"SparseContext(N={self.n})"
 
 
-@lru_cache(maxsize=65536)
-def _mu_phi(d: int) -> tuple[int, int]:
+def _mu_phi(d: int, primes) -> tuple[int, int]:
+    """Moebius mu(d) and Euler phi(d) for a divisor d of N, from the primes of N (a divisor
+    of N with two primes of 25 digits took 0.3 s to factor again, per trace)."""
     mu, ph = 1, 1
-    for p, a in (factorization(d).items() if d > 1 else ()):
+    for p in primes:
+        if d % p:
+            continue
+        a = 0
+        while d % p == 0:
+            d //= p
+            a += 1
         mu = 0 if a > 1 else -mu
         ph *= (p - 1) * p ** (a - 1)
     return mu, ph
