@@ -118,6 +118,77 @@ def test_five_deep_is_fast_and_depth_bound_is_refused_fast(tmp_path):
     assert time.perf_counter() - start < 5
 
 
+@settings(max_examples=15, deadline=None)
+@given(st.data(), st.lists(st.sampled_from(GENERATORS), min_size=1, max_size=3, unique=True),
+       st.integers(-5, 5))
+def test_rational_ratio_in_a_tower_needs_no_inverse(data, gens, k):
+    """The paper layer's rationality test of num/den in a tower (read off one coordinate
+    of the canonical form, checked by one product) agrees with dividing, on rational
+    multiples and on random pairs."""
+    from exactsym.paper.ratio_keys import rational_ratio
+    system, values = _values(*gens, "sqrt(3)")
+    x, y = (_random_element(system, values, data) for _ in range(2))
+    if y == 0:
+        return
+    q = fmpq(k, 7)
+    assert rational_ratio(x * 0 + y * q, y) == q
+    quotient = x / y
+    expected = quotient.rational() if quotient.is_rational() else None
+    assert rational_ratio(x, y) == expected
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.data(), st.lists(st.sampled_from(GENERATORS), min_size=1, max_size=3, unique=True))
+def test_tower_maps_into_f_p_are_ring_maps(data, gens):
+    """The two maps of a tower into F_p (tower_proof.tower_maps) respect sums and
+    products and send a rational to one residue: their disagreement proves a number
+    irrational (the paper layer's line keys in a tower lean on it)."""
+    import importlib
+    tp = importlib.import_module("exactsym.exact.tower_proof")
+    from exactsym.exact.cyclotomic_modular import images
+    system, values = _values(*gens, "sqrt(3)")
+    tower = system.tower
+    if tower.levels == 0:
+        return
+    x, y = (_random_element(system, values, data) for _ in range(2))
+    q = fmpq(data.draw(st.integers(-9, 9)), 5)
+    found = images((x, y, x * y, x + y, q, x * 0 + q))
+    if found is None:                     # no prime among the tries: nothing claimed
+        return
+    p, (one, two) = found
+    for im in (one, two):
+        assert im[2] == im[0] * im[1] % p and im[3] == (im[0] + im[1]) % p
+        assert im[4] == im[5] == q.p * pow(q.q, -1, p) % p
+    assert tp.tower_maps(tower) is not None
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.data(), st.lists(st.sampled_from(GENERATORS), min_size=1, max_size=2, unique=True))
+def test_tower_line_keys_are_equal_exactly_when_the_lines_are(data, gens):
+    """Lines through C keyed lazily in a tower (signs from balls, irrationality from the
+    two maps) are equal exactly when their doubled directions are parallel with the same
+    signs, as the exact keys say; a vector and its rational multiple give one line."""
+    from exactsym.paper.keys import bisector_key, complex_product, line_key
+    system, values = _values(*gens, "sqrt(3)")
+    vs = []
+    for _ in range(3):
+        v = (_random_element(system, values, data), _random_element(system, values, data))
+        if v[0] == 0 and v[1] == 0:
+            return
+        vs.append(v)
+    k = fmpq(data.draw(st.integers(1, 9)), 4)
+    vs.append((k * vs[0][0], k * vs[0][1]))
+    keys = [line_key(False, v) for v in vs] + [bisector_key(False, vs[0], v) for v in vs[1:]]
+    dirs = [complex_product(v, v) for v in vs] + [complex_product(vs[0], v) for v in vs[1:]]
+    for a, da in zip(keys, dirs):
+        for b, db in zip(keys, dirs):
+            same = da[0] * db[1] == da[1] * db[0] and \
+                (da[0].sign(), da[1].sign()) == (db[0].sign(), db[1].sign())
+            assert (a == b) == same
+            if same:
+                assert hash(a) == hash(b)
+
+
 PRIMES = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41]
 
 

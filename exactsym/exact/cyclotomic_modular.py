@@ -23,6 +23,7 @@ from flint import fmpq, fmpz, nmod_poly
 from .factor import factorization
 from .field import PolyElement
 from .sparse_cyclotomic import SparseCyclotomic
+from .tower import TowerElement, _raw as tower_raw
 
 _EMBEDDINGS: dict = {}     # M -> (p, (w1, w2)) or None
 
@@ -72,6 +73,19 @@ def images(numbers) -> tuple | None:
     (rationals and elements of cyclotomic fields, embedded in Q(zeta_M) for M the lcm
     of their conductors), or None when that does not apply (another kind of number; M
     without two non-conjugate roots; a denominator divisible by p)."""
+    towers = {id(x.tower): x.tower for x in numbers if type(x) is TowerElement}
+    if towers:
+        # a tower of nested radicals over a multiquadratic base: its own pair of maps
+        if len(towers) > 1 or any(isinstance(x, (PolyElement, SparseCyclotomic))
+                                  for x in numbers):
+            return None
+        tower = next(iter(towers.values()))
+        from .tower_proof import tower_images
+        try:
+            raws = [tower_raw(tower, x) for x in numbers]
+        except TypeError:
+            return None
+        return tower_images(tower, raws)
     m = 1
     for x in numbers:
         c = _conductor(x)

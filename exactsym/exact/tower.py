@@ -421,6 +421,25 @@ def text(tower: Tower, v) -> str:
 
 
 # ------------------------------------------------------------------ the kernel's number type
+def leaf_ratio(num, den):
+    """The rational q that ``num == q den`` would need (raw values of one tower), read off
+    one coordinate of the canonical form (a + b y at each level, an MQ below): the first
+    non-zero one of ``den`` along a + b y, its first term; None when ``num`` is above that
+    level (then num/den is not rational); NotImplemented when the coordinate is not an
+    MQ (a cyclotomic base: the caller divides).  The caller checks num == q den exactly:
+    no inverse is made."""
+    while type(den) is tuple:
+        lev, a, b = den
+        na, nb = _split(num, lev)
+        den, num = (a, na) if not _is_zero(a) else (b, nb)
+    if type(num) is tuple:
+        return None
+    if not isinstance(den, MQ) or not isinstance(num, MQ) or not den:
+        return NotImplemented
+    m, c = next(iter(den.terms.items()))
+    return num.terms.get(m, fmpq(0)) / c
+
+
 def _raw(tower: Tower, other):
     """``other`` as a raw value of ``tower`` (None for a foreign type)."""
     if isinstance(other, TowerElement):

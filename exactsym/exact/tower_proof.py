@@ -142,6 +142,72 @@ def square_class_rank(primes, values, tries: int = 32, signs: int = 8) -> int:
     return len(basis)
 
 
+_MAPS: dict = {}           # id(tower) -> (tower, number of radicands, maps or None)
+
+
+def tower_maps(tower: Tower, tries: int = 128, budget: int = 256):
+    """``(p, (base, roots), (base2, roots2))``: two ring maps of the tower's numbers into
+    F_p (a sign for each base prime's root, then for each level a root of its radicand's
+    image, depth first: at most ``budget`` steps a prime), or None when no prime among
+    ``tries`` of :func:`_split_primes` gives two (a radicand's image a non-residue or 0,
+    a denominator divisible by p).  A rational number has one image under every map, so
+    two maps that disagree on a number prove it irrational (:func:`tower_images`).
+    Remembered per tower and number of levels."""
+    hit = _MAPS.get(id(tower))
+    if hit is not None and hit[0] is tower and hit[1] == len(tower.radicands):
+        return hit[2]
+    found = None
+    primes = _split_primes(tower.primes)
+    k, levels = len(tower.primes), len(tower.radicands)
+    for _ in range(tries):
+        p = next(primes)
+        base_roots = [sqrt_mod(q, p) for q in tower.primes]
+        maps: list = []
+        stack = [([], [])]
+        steps = 0
+        try:
+            while stack and len(maps) < 2 and steps < budget:
+                steps += 1
+                signs, roots = stack.pop()
+                if len(signs) < k:
+                    s = base_roots[len(signs)]
+                    stack += [(signs + [s], roots), (signs + [p - s], roots)]
+                    continue
+                base = dict(zip(tower.primes, signs))
+                if len(roots) == levels:
+                    maps.append((base, roots))
+                    continue
+                t = sqrt_mod(image(tower.radicands[len(roots)], p, base, roots), p)
+                if t:
+                    stack += [(signs, roots + [t]), (signs, roots + [p - t])]
+        except (ValueError, AttributeError, TypeError):   # p | a denominator; not an MQ base
+            continue
+        if len(maps) == 2:
+            found = (p, maps[0], maps[1])
+            break
+    if len(_MAPS) > 64:
+        _MAPS.clear()
+    _MAPS[id(tower)] = (tower, len(tower.radicands), found)
+    return found
+
+
+def tower_images(tower: Tower, raws) -> tuple | None:
+    """``(p, [images under the first map], [under the second])`` of raw values of
+    ``tower`` (:func:`tower_maps`), or None."""
+    maps = tower_maps(tower)
+    if maps is None:
+        return None
+    p, first, second = maps
+    out = ([], [])
+    try:
+        for v in raws:
+            out[0].append(image(v, p, *first))
+            out[1].append(image(v, p, *second))
+    except (ValueError, AttributeError, TypeError):   # a pole at p; not an MQ base
+        return None
+    return p, out
+
+
 def _odd_primes(limit: int):
     sieve = bytearray([1]) * limit
     for p in range(2, limit):

@@ -20,6 +20,7 @@ from .homogeneous import line_direction, quotient_text
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
 from ..exact.sparse_cyclotomic import SparseCyclotomic
+from ..exact.tower import TowerElement
 from .filtered import (ball, compare_directions, cross_sign, dot_sign, gap_classes_on_circle,
                        _ball_sign)
 from .ratio_keys import RatioKey, _largest_field, ball_at, gap_ratio_key, ray_ratio_key
@@ -263,10 +264,13 @@ def _quotient_field(*numbers) -> bool:
 
 
 def huge_field(*numbers) -> bool:
-    """Whether a number lies in a cyclotomic field of degree >= :data:`QUOTIENT_DEGREE` or
-    in a sparse Q(zeta_N): there the keys of lines and chords are read from balls and
-    F_p images, and exact products (of megabyte numbers) are made only for equalities."""
-    return _quotient_field(*numbers) or any(isinstance(v, SparseCyclotomic) for v in numbers)
+    """Whether a number lies in a cyclotomic field of degree >= :data:`QUOTIENT_DEGREE`,
+    in a sparse Q(zeta_N) or in a tower of nested radicals (not the gathering
+    simulator's subclass): there the keys of lines and chords are read from balls and
+    F_p images, and exact products (of megabyte numbers, or of tower numbers of
+    thousands of terms) are made only for equalities."""
+    return _quotient_field(*numbers) or any(isinstance(v, SparseCyclotomic) or
+                                            type(v) is TowerElement for v in numbers)
 
 
 class _Slope:

@@ -19,6 +19,7 @@ from ..exact import FieldElement, exact_key, sign
 from ..exact.cyclotomic_modular import quotient_irrational, ratio_irrational
 from ..exact.field import PolyElement
 from ..exact.sparse_cyclotomic import SparseCyclotomic
+from ..exact.tower import TowerElement, _raw as tower_raw, leaf_ratio
 from ..exact.fused import complex_product, cross_is_zero
 from .filtered import ball
 
@@ -31,10 +32,13 @@ _PREC = 64
 
 
 def big_field(*numbers) -> bool:
-    """Whether one of ``numbers`` lies in a polynomial field of degree >= RATIO_KEY_DEGREE
-    or in a sparse Q(zeta_N) (degree beyond 16,384, where products convolve sums of
-    hundreds of cosines: an exact square costs milliseconds to seconds)."""
-    return any(isinstance(x, SparseCyclotomic) or
+    """Whether one of ``numbers`` lies in a polynomial field of degree >= RATIO_KEY_DEGREE,
+    in a sparse Q(zeta_N) (degree beyond 16,384, where products convolve sums of
+    hundreds of cosines: an exact square costs milliseconds to seconds) or in a tower of
+    nested radicals (an inverse there is a chain of conjugate products down the levels).
+    (Not the gathering simulator's tower numbers, a subclass: its decisions keep their
+    keys.)"""
+    return any(isinstance(x, SparseCyclotomic) or type(x) is TowerElement or
                isinstance(x, PolyElement) and x.field.degree >= RATIO_KEY_DEGREE
                for x in numbers)
 
@@ -180,6 +184,17 @@ def rational_ratio(num, den):
             return None
         q = num / den
         return q.rational() if q.is_rational() else None
+    if isinstance(num, TowerElement) or isinstance(den, TowerElement):
+        tower = num.tower if isinstance(num, TowerElement) else den.tower
+        q = leaf_ratio(tower_raw(tower, num), tower_raw(tower, den))
+        if q is not NotImplemented:
+            return q if q is not None and num == den * q else None
+        q = num / den                       # a cyclotomic base: divide
+        return q.rational() if q.is_rational() else None
+    if not isinstance(num, PolyElement) and not isinstance(den, PolyElement):
+        q = num / den                       # multiquadratic numbers (a tower's level 0)
+        return (q.rational() if q.is_rational() else None) if isinstance(q, FieldElement) \
+            else fmpq(q)
     if quotient_irrational(num, den):   # two maps into F_p disagree: microseconds, where
         return None                     # a coefficient of 16,000 bits costs 0.1 ms to read
     n, d = _poly(num), _poly(den)       # (and a level's radius may not be computed yet)
@@ -237,6 +252,8 @@ def _largest_field(numbers):
     for x in numbers:
         if isinstance(x, SparseCyclotomic):
             return x.ctx
+        if isinstance(x, TowerElement):
+            return x.tower
         if isinstance(x, PolyElement) and (best is None or x.field.degree > best.degree):
             best = x.field
     return best
