@@ -404,9 +404,12 @@ def _orbits(ref: int, rot, mir) -> tuple[set, set]:
     return set(orbit), ({mir[i] for i in orbit} if mir else set())
 
 
-def _refutations(n, ref, level, rot, mir, image) -> dict:
+def _refutations(n, ref, level, rot, mir, image, surely_out=None) -> dict:
     """For each candidate outside the group, one point whose image is not a point of P.
-    ``image(kind, b)`` returns a function mapping a point index to "is its image in P"."""
+    ``image(kind, b)`` returns a function mapping a point index to "is its image in P";
+    ``surely_out(kind, b)``, when given, one telling from balls that an image is no point
+    of P (certified enclosures apart from every point's: the witness is found without
+    exact products; the checker re-checks it exactly), else None (then ``image`` says)."""
     in_rot, in_ref = _orbits(ref, rot, mir)
     out = {"rotation": [], "reflection": []}
     for kind, inside in (("rotation", in_rot), ("reflection", in_ref)):
@@ -414,8 +417,9 @@ def _refutations(n, ref, level, rot, mir, image) -> dict:
             if b in inside:
                 continue
             maps_in = image(kind, b)
+            apart = surely_out(kind, b) if surely_out is not None else None
             for w in itertools.chain(level, range(n)):
-                if not maps_in(w):
+                if (apart is not None and apart(w)) or not maps_in(w):
                     out[kind].append([b, w])
                     break
             else:
@@ -457,11 +461,47 @@ def _cartesian_witness(config, group, enc):
                 "matrix": [[enc.text(e) for e in row] for row in iso.matrix],
                 "permutation": list(iso.permutation)}
 
+    # balls of the points and of the vectors from the centroid: a candidate's image of a
+    # point is shown to be no point of P without exact products (in a sparse Q(zeta_N)
+    # the centroid is a sum of hundreds of cosines, and an exact image costs seconds)
+    with ctx.workprec(_REFUTE_PREC):
+        point_balls = [(_ball(x), _ball(y)) for x, y in pts]
+        rel_balls = [(_ball(x), _ball(y)) for x, y in rel]
+        centre_ball = (_ball(cx), _ball(cy))
+
+    def surely_out(kind, b):
+        with ctx.workprec(_REFUTE_PREC):
+            (ax, ay), (bx, by) = rel_balls[ref], rel_balls[b]
+            norm = ax * ax + ay * ay
+            if kind == "rotation":
+                dot, cross = (ax * bx + ay * by) / norm, (ax * by - ay * bx) / norm
+                m = ((dot, -cross), (cross, dot))
+            else:
+                c, s2 = (ax * bx - ay * by) / norm, (ax * by + ay * bx) / norm
+                m = ((c, s2), (s2, -c))
+
+        def apart(w):
+            with ctx.workprec(_REFUTE_PREC):
+                wx, wy = rel_balls[w]
+                ix = centre_ball[0] + m[0][0] * wx + m[0][1] * wy
+                iy = centre_ball[1] + m[1][0] * wx + m[1][1] * wy
+                return ix.is_finite() and iy.is_finite() and \
+                    not any(ix.overlaps(px) and iy.overlaps(py) for px, py in point_balls)
+        return apart
+
     rot = group.rotation_generator.permutation if group.rotation_generator else None
     mir = group.mirror.permutation if group.mirror else None
     return {"reference": ref, "rotation": isometry(group.rotation_generator),
             "mirror": isometry(group.mirror),
-            "refutations": _refutations(n, ref, level, rot, mir, image)}
+            "refutations": _refutations(n, ref, level, rot, mir, image, surely_out)}
+
+
+#: precision of the balls that find a refuting point (only a filter: see _refutations)
+_REFUTE_PREC = 128
+
+
+def _ball(x):
+    return x.enclosure(_REFUTE_PREC) if isinstance(x, FieldElement) else arb(fmpq(x))
 
 
 def _polar_witness(config, group):
