@@ -36,6 +36,7 @@ from flint import arb, arb_poly, ctx, fmpq, fmpq_poly, fmpz, fmpz_poly, nmod_pol
 from . import checker
 from .certificate_fields import square_root_proof
 from .configuration import Configuration
+from .geometry import enclosure_of
 from .exact import FieldElement
 from .exact.multiquadratic import MQ
 from .exact.cyclotomic_tower import CyclotomicTower
@@ -501,7 +502,7 @@ _REFUTE_PREC = 128
 
 
 def _ball(x):
-    return x.enclosure(_REFUTE_PREC) if isinstance(x, FieldElement) else arb(fmpq(x))
+    return enclosure_of(x, _REFUTE_PREC)
 
 
 def _polar_witness(config, group):

@@ -163,10 +163,12 @@ class PseudoAngle:
     def ball(self, prec: int = 64):
         from flint import ctx
         with ctx.workprec(prec):
-            return self.quadrant + _ball(self.num, prec) / _ball(self.den, prec)
+            return self.quadrant + enclosure_of(self.num, prec) / enclosure_of(self.den, prec)
 
 
-def _ball(x, prec: int):
+def enclosure_of(x, prec: int):
+    """An Arb ball around the exact number ``x`` (a kernel number at ``prec`` bits, or a
+    rational, exactly)."""
     from flint import arb
     if hasattr(x, "enclosure"):
         return x.enclosure(prec)

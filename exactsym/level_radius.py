@@ -27,6 +27,7 @@ from __future__ import annotations
 from flint import arb, ctx, fmpq
 
 from .exact.field import PolyElement
+from .geometry import enclosure_of
 
 __all__ = ["LevelRadius"]
 
@@ -77,8 +78,8 @@ class LevelRadius(PolyElement):
             return PolyElement.enclosure(self, prec)
         with ctx.workprec(prec + 16):
             (x, y), (cx, cy) = self._p, self._c
-            dx = _ball(x, prec) - _ball(cx, prec)
-            dy = _ball(y, prec) - _ball(cy, prec)
+            dx = enclosure_of(x, prec) - enclosure_of(cx, prec)
+            dy = enclosure_of(y, prec) - enclosure_of(cy, prec)
             return (dx * dx + dy * dy) * arb(self.scale)
 
     def modular_images(self, m: int, p: int, roots, images_of):
@@ -144,6 +145,3 @@ class LevelRadius(PolyElement):
         state = "made" if self._exact is not None else "not made"
         return f"LevelRadius(level {self.index}, {state})"
 
-
-def _ball(x, prec: int):
-    return x.enclosure(prec) if isinstance(x, PolyElement) else arb(fmpq(x))

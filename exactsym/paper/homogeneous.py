@@ -35,7 +35,9 @@ __all__ = ["SHORT_DEGREE", "forget", "register", "homogeneous_of", "scaled", "qu
 #: fields from this degree get the short texts
 SHORT_DEGREE = 512
 
-_FORMS: dict = {}          # id(vector) -> (vector, homogeneous vector)
+# id(vector) -> [vector, homogeneous vector or None, function making it]: made when a text
+# first asks (the summary writes few lines: no product per robot on the hot path)
+_FORMS: dict = {}
 _LIMIT = 1 << 14
 
 
@@ -51,26 +53,34 @@ def _huge(d) -> bool:
 def register(vector, point, homogeneous) -> None:
     """Record ``D p - (X, Y)`` as the homogeneous form of ``vector == p - C``."""
     x, y, d = homogeneous
-    if not _huge(d):
-        return
-    if len(_FORMS) >= _LIMIT:
-        _FORMS.clear()
-    _FORMS[id(vector)] = (vector, (d * point[0] - x, d * point[1] - y))
+    if _huge(d):
+        _record(vector, lambda: (d * point[0] - x, d * point[1] - y))
 
 
 def scaled(vector, source, k) -> None:
     """``vector == k * source`` for a positive rational k: record its homogeneous form."""
-    found = homogeneous_of(source)
-    if found is not None:
-        if len(_FORMS) >= _LIMIT:
-            _FORMS.clear()
-        _FORMS[id(vector)] = (vector, (found[0] * k, found[1] * k))
+    hit = _FORMS.get(id(source))
+    if hit is not None and hit[0] is source:
+        def make():
+            found = homogeneous_of(source)
+            return None if found is None else (found[0] * k, found[1] * k)
+        _record(vector, make)
+
+
+def _record(vector, make) -> None:
+    if len(_FORMS) >= _LIMIT:
+        _FORMS.clear()
+    _FORMS[id(vector)] = [vector, None, make]
 
 
 def homogeneous_of(vector):
     """The homogeneous form of ``vector`` (a positive multiple of it), or None."""
     hit = _FORMS.get(id(vector))
-    return hit[1] if hit is not None and hit[0] is vector else None
+    if hit is None or hit[0] is not vector:
+        return None
+    if hit[1] is None and hit[2] is not None:
+        hit[1], hit[2] = hit[2](), None
+    return hit[1]
 
 
 def quotient_text(num, den) -> str:
