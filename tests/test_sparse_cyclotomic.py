@@ -24,8 +24,15 @@ CONDUCTORS = [12, 20, 27, 36, 45, 60, 63, 84, 90, 105, 120, 135, 180, 210, 225, 
 BIG = 4 * 5 * 13 * 999983 * 999979          # the example
 
 
+_FIELDS: dict = {}
+
+
 def _dense(m: int, terms: dict):
-    field = cyclotomic.cyclotomic_field(m)
+    # one field object per conductor, as one configuration's numbers share theirs (the
+    # paper layer's ratio keys of two field objects are unequal by design, ratio_keys)
+    field = _FIELDS.get(m)
+    if field is None:
+        field = _FIELDS[m] = cyclotomic.cyclotomic_field(m)
     total = field(0)
     for e, c in terms.items():
         total = total + c * cyclotomic.root_of_unity(field, e)
