@@ -43,7 +43,8 @@ from .exact.cyclotomic_tower import CyclotomicTower
 from .exact.evaluate import SparseCyclotomicSystem
 from .exact.sparse_cyclotomic import SparseCyclotomic
 from .exact.tower import TowerElement
-from .exact.tower_proof import cyclotomic_nonsquare_witness, nonsquare_witness
+from .exact.tower_proof import (cyclotomic_nonsquare_witness, kummer_witness,
+                                nonsquare_witness)
 from .prime_certificates import (MR_LIMIT, PrimalityError, hashing_prime_factors,
                                  primality_proofs)
 
@@ -228,6 +229,21 @@ class Encoder:
         self.tower = tower
         if not tower.radicands:         # every radical denested: the real-cyclotomic field
             return
+        if tower.classes is not None:   # square roots of rationals only: one joint proof
+            if tower.field.degree > KUMMER_BASE_DEGREE:
+                raise CertificateError(
+                    f"square roots over Q(zeta_{tower.conductor}) (degree "
+                    f"{tower.field.degree}): the checker would multiply numbers of degree "
+                    f"{tower.field.degree // 2} term by term (limit {KUMMER_BASE_DEGREE})")
+            primes = kummer_witness(tower)
+            if primes is None:
+                raise CertificateError(f"no primes below 2^40 prove the square roots of "
+                                       f"{tower.name} independent; cannot certify")
+            levels = [{"radicand": self._tower_text(r), "kummer": True}
+                      for r in tower.radicands]
+            self.spec = {"tower": {"base": base, "levels": levels, "kummer": [
+                {"prime": p, "theta": [str(h) for h in thetas]} for p, thetas in primes]}}
+            return
         levels = _level_proofs(tower, cyclotomic_nonsquare_witness,
                                lambda r, p, thetas, roots: {
                                    "radicand": self._tower_text(r), "prime": p,
@@ -346,6 +362,12 @@ class Encoder:
         if value.degree() <= 0:
             return rational_text(value.coeffs()[0] if value.degree() == 0 else 0)
         return [rational_text(c) for c in value.coeffs()]
+
+
+#: largest phi(M) of the base of a tower of square roots of rationals that certify writes
+#: (the checker multiplies base numbers term by term: at degree 996 a two-robot certificate
+#: took minutes)
+KUMMER_BASE_DEGREE = 256
 
 
 def _level_proofs(tower, witness, entry) -> list:

@@ -40,12 +40,23 @@ class CyclotomicTower(Tower):
              "tower base: the minimal polynomial of theta must have integer coefficients")
         self.f = [int(c) for c in self.base.p]           # monic: checked by Field
         self.r: list = []
+        rationals: list = []            # the radicands of the "kummer" levels
         for i, lev in enumerate(spec["levels"], start=1):
             need(isinstance(lev, dict), f"tower level {i}: not an object")
             r = self._read(lev.get("radicand"), i - 1)
-            self._prove(i, r, lev)
+            if lev.get("kummer") is True:
+                need(len(rationals) == i - 1, f"tower level {i}: a kummer level above "
+                     "a level that is not")
+                q = _rational(r)
+                need(q is not None and q > 0, f"tower level {i}: a kummer radicand must be "
+                     "a positive rational")
+                rationals.append(q)
+            else:
+                self._prove(i, r, lev)
             self.r.append(r)
             need(self._sign(r) > 0, f"tower level {i}: the radicand is not positive")
+        if rationals:
+            self._prove_kummer(rationals, spec.get("kummer"))
 
     def base_num(self, value):
         if isinstance(value, dict):
@@ -72,30 +83,21 @@ class CyclotomicTower(Tower):
 
     # -- the proof that r_i is not a square in K_(i-1) ---------------------------------
     def _prove(self, i: int, r, lev: dict) -> None:
-        """f is monic integral with d distinct roots h_1..h_d modulo the odd prime p, so
-        f = prod (X - h_k) mod p, disc(f) is a p-unit and R_0 = Z_(p)[theta] is integrally
-        closed; theta -> h_1 is a ring map R_0 -> F_p.  N_(K_0/Q)(n) = Res(f, n) is, modulo
-        p, prod n(h_k).  With every r_j (j < i) p-integral and N(r_j) a p-unit (the norm
+        """f is monic integral with d distinct roots h_1..h_d modulo the odd prime p
+        (:meth:`_split_roots`): theta -> h_1 is a ring map R_0 -> F_p.  N_(K_0/Q)(n) =
+        Res(f, n) is, modulo p, prod n(h_k).  With every r_j (j < i) p-integral and N(r_j) a p-unit (the norm
         taken down the tower, a^2 - r b^2 per level, then over K_0), R = R_0[y_1..y_(i-1)]
         has a discriminant over Z_(p) that is a p-unit, so it is integrally closed, and
         y_j -> roots_j (roots_j^2 = phi(r_j) mod p, checked) extends the map to R.  If
         r_i = z^2 in K_(i-1) with r_i in R, z is integral over R, so z is in R and
         phi(r_i) = phi(z)^2 would be a square mod p; it is checked to be a non-residue."""
-        p, thetas, roots = lev.get("prime"), lev.get("theta"), lev.get("roots")
-        need(isinstance(p, int) and not isinstance(p, bool) and 2 < p < 1 << 40
-             and _is_prime(p), f"tower level {i}: {p!r} is not an odd prime below 2^40")
-        d = self.base.d
-        need(isinstance(thetas, list) and len(thetas) == d and isinstance(roots, list)
-             and len(roots) == i - 1, f"tower level {i}: {d} roots of the minimal polynomial "
-             "modulo p and one root per level below")
-        thetas = [integer(h) if isinstance(h, str) else h for h in thetas]
+        p, roots = lev.get("prime"), lev.get("roots")
+        thetas = self._split_roots(f"tower level {i}", p, lev.get("theta"))
+        need(isinstance(roots, list) and len(roots) == i - 1,
+             f"tower level {i}: one root per level below")
         roots = [integer(t) if isinstance(t, str) else t for t in roots]
         need(all(isinstance(v, int) and not isinstance(v, bool) and 0 <= v < p
-                 for v in thetas + roots), f"tower level {i}: roots must be integers in [0, p)")
-        need(len(set(thetas)) == d, f"tower level {i}: the roots modulo {p} are not distinct")
-        for h in thetas:
-            need(_eval_mod(self.f, h, p) == 0,
-                 f"tower level {i}: {h} is not a root of the minimal polynomial modulo {p}")
+                 for v in roots), f"tower level {i}: roots must be integers in [0, p)")
         h = thetas[0]
         for j, rj in enumerate(self.r):
             need(_integral(rj, p), f"tower level {i}: p divides a denominator of radicand {j + 1}")
@@ -111,12 +113,67 @@ class CyclotomicTower(Tower):
         need(pow(value, (p - 1) // 2, p) == p - 1,
              f"tower level {i}: the radicand's image {value} is a square modulo {p}")
 
+    def _split_roots(self, where: str, p, thetas) -> list:
+        """The d = deg f distinct roots of f modulo the odd prime p (checked): then
+        f = prod (X - h_k) mod p, disc(f) is a p-unit, R_0 = Z_(p)[theta] is integrally
+        closed and theta -> h_1 is a ring map R_0 -> F_p."""
+        need(isinstance(p, int) and not isinstance(p, bool) and 2 < p < 1 << 40
+             and _is_prime(p), f"{where}: {p!r} is not an odd prime below 2^40")
+        d = self.base.d
+        need(isinstance(thetas, list) and len(thetas) == d,
+             f"{where}: {d} roots of the minimal polynomial modulo p")
+        thetas = [integer(h) if isinstance(h, str) else h for h in thetas]
+        need(all(isinstance(v, int) and not isinstance(v, bool) and 0 <= v < p
+                 for v in thetas), f"{where}: roots must be integers in [0, p)")
+        need(len(set(thetas)) == d, f"{where}: the roots modulo {p} are not distinct")
+        for h in thetas:
+            need(_eval_mod(self.f, h, p) == 0,
+                 f"{where}: {h} is not a root of the minimal polynomial modulo {p}")
+        return thetas
+
+    def _prove_kummer(self, rationals: list, primes) -> None:
+        """Levels 1..L are the square roots of positive rationals r_1..r_L.  By Kummer theory
+        (K_0 has characteristic 0 and holds -1), r_i is a square in
+        K_(i-1) = K_0(sqrt r_1, ..., sqrt r_(i-1)) iff r_i prod_(j<i) r_j^(e_j) = s^2 for
+        some s in K_0 and e_j in {0, 1}.  For each listed prime p (f splits into distinct
+        factors modulo p: see _split_roots), chi_p(x) = (phi(x) | p) is a character on the
+        elements of K_0 that are p-units, and on a rational p-unit it is the Legendre
+        symbol.  Such an s has s^2 a rational p-unit, so s is integral over Z_(p), hence in
+        R_0, with phi(s) != 0, and chi_p(r_i prod r_j^(e_j)) = 1 for every p.  The matrix
+        of the symbols (r_i | p) has rank L over F_2 (checked), so no non-trivial product
+        of the r_i has all symbols 1: no r_i is a square in K_(i-1)."""
+        need(isinstance(primes, list), "tower: kummer levels need a \"kummer\" list of primes")
+        values = [q.numerator * q.denominator for q in rationals]
+        rows: dict = {}
+        for k, entry in enumerate(primes):
+            need(isinstance(entry, dict), f"tower kummer prime {k + 1}: not an object")
+            p = entry.get("prime")
+            self._split_roots(f"tower kummer prime {k + 1}", p, entry.get("theta"))
+            need(all(v % p for v in values), f"tower kummer prime {p} divides a radicand")
+            vector = 0
+            for i, v in enumerate(values):
+                if pow(v, (p - 1) // 2, p) == p - 1:
+                    vector |= 1 << i
+            while vector and vector.bit_length() - 1 in rows:
+                vector ^= rows[vector.bit_length() - 1]
+            if vector:
+                rows[vector.bit_length() - 1] = vector
+        need(len(rows) == len(values), f"tower: the Legendre symbols of the kummer levels "
+             f"have rank {len(rows)} over F_2, not {len(values)}")
+
     def _base_norm(self, x):
         """N_(K_L/K_0)(x): an element of Q(theta)."""
         for lev in range(_level(x), 0, -1):
             a, b = _split(x, lev)
             x = _add(self.mul(a, a), _neg(self.mul(self.r[lev - 1], self.mul(b, b))))
         return x
+
+
+def _rational(x):
+    """The rational value of a base element of degree 0, else None."""
+    if isinstance(x, tuple) or any(x.c[1:]):
+        return None
+    return Fraction(x.c[0] if x.c else 0, x.den)
 
 
 def _eval_mod(c: list, h: int, p: int) -> int:

@@ -72,6 +72,30 @@ class Circle:
             return dx * dx + dy * dy - (tx * tx + ty * ty)
         return dx * dx + dy * dy - d * d * self.radius_squared
 
+    def scaled_radius_squared(self):
+        """``D^2 radius^2``, without a division (from the point on the circle when the
+        radius is lazy)."""
+        x, y, d = self.homogeneous
+        if self._through is not None and self._radius_squared is None:
+            tx, ty = d * self._through[0] - x, d * self._through[1] - y
+            return tx * tx + ty * ty
+        return d * d * self.radius_squared
+
+    def same_circle(self, other: "Circle", coerce=None) -> bool:
+        """Whether the two circles have the same centre and radius, by cross-multiplying
+        their homogeneous forms (no field inverse: in Q(zeta_3988) one cost seconds);
+        ``coerce`` writes this circle's numbers in the other's number system first."""
+        c = coerce or (lambda v: v)
+        x, y, d = (c(v) for v in self.homogeneous)
+        ox, oy, od = other.homogeneous
+        same = x * od == ox * d and y * od == oy * d and \
+            c(self.scaled_radius_squared()) * (od * od) == other.scaled_radius_squared() * (d * d)
+        if same and self._centre is not None and other._centre is None:
+            # the same exact numbers: the other circle need not divide again (MakeAsym's
+            # moved configurations keep the SEC; one division in Q(zeta_3988) cost 2-5 s)
+            other._centre = (c(self._centre[0]), c(self._centre[1]))
+        return same
+
     def contains(self, p: Point) -> bool:
         return sign(self.scaled_power(p)) <= 0
 

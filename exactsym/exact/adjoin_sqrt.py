@@ -61,7 +61,10 @@ def adjoin_sqrt(system, numbers, x):
             return None
     if isinstance(system, CyclotomicTowerSystem):
         # its numbers are Q(zeta_M) elements and MQ rationals only: never an irrational MQ
-        return system, system.sqrt(system.coerce(x))
+        try:
+            return system, system.sqrt(system.coerce(x))
+        except FieldTooLargeError:      # a nested radical over a large base: out of reach
+            return None
     if isinstance(system, TowerSystem):
         raw = x.v if isinstance(x, TowerElement) else system.coerce(x)
         if isinstance(raw, MQ):

@@ -29,6 +29,7 @@ from ..errors import FieldTooLargeError
 from . import cyclotomic
 from .cyclotomic_sqrt import field_sqrt
 from .field import NumberField, PolyElement
+from .kummer import SquareClasses
 from .multiquadratic import MQ
 from .text import number_text
 from .tower import MAX_LEVELS, Tower, TowerElement
@@ -39,6 +40,9 @@ from .tower import MAX_LEVELS, Tower, TowerElement
 MAX_BASE_DEGREE = 192
 #: largest phi(M) * 2^L (L quadratic levels above the base)
 MAX_DEGREE = 4096
+#: most levels that are square roots of rationals (:mod:`.kummer`: no recursive test, so
+#: neither bound above applies to them)
+MAX_RATIONAL_LEVELS = 256
 
 
 def check_base(conductor: int) -> None:
@@ -59,6 +63,9 @@ class CyclotomicTower(Tower):
         self.conductor = field.conductor
         self.zero = field(0)
         self.one = field(1)
+        # while every level is the root of a rational, squares of rationals are decided by
+        # Kummer theory (:mod:`.kummer`), without the recursive test
+        self.classes = SquareClasses(self.conductor) if self.conductor % 4 == 0 else None
 
     @property
     def degree(self) -> int:
@@ -107,7 +114,46 @@ class CyclotomicTower(Tower):
     def sqrt(self, x):
         if type(x) is not tuple:
             x = self.coerce_base(x)
+            if self.classes is not None and x.is_rational():
+                return self._kummer_sqrt(x)
+        if self.levels > MAX_LEVELS or self.field.degree > MAX_BASE_DEGREE:
+            # the complete test branches 2^levels times and factors norms of degree 2 phi(M)
+            raise FieldTooLargeError(
+                f"a nested radical over Q(zeta_{self.conductor}) (phi = {self.field.degree})"
+                f" with {self.levels} quadratic levels is beyond the limits (base degree "
+                f"{MAX_BASE_DEGREE}, {MAX_LEVELS} levels)")
+        self.classes = None           # a level from here on may hold new roots of rationals
         return super().sqrt(x)
+
+    def _kummer_sqrt(self, x):
+        """The root of a rational x >= 0 in the top field, or the generator of a new level:
+        decided by :class:`.kummer.SquareClasses` while every level is a rational's root."""
+        root = self._roots.get(x)
+        if root is not None:
+            return root
+        q = x.rational()
+        if q <= 0:
+            if q < 0:
+                raise ValueError("the square root of a negative number")
+            return self.zero
+        levels = self.classes.express(q)
+        if levels is None:
+            if self.levels >= MAX_RATIONAL_LEVELS:
+                raise FieldTooLargeError(
+                    f"these square roots need more than {MAX_RATIONAL_LEVELS} quadratic "
+                    f"extensions of Q(zeta_{self.conductor})")
+            self.classes.add(q)
+            self.radicands.append(x)
+            root = (self.levels, self.zero, self.one)
+        else:
+            rest = q
+            for i in levels:
+                rest /= self.radicands[i].rational()
+            root = cyclotomic.sqrt_element(self.field, rest)      # every factor positive
+            for i in levels:
+                root = self.mul(root, (i + 1, self.zero, self.one))
+        self._roots[x] = root
+        return root
 
     def _rational_sqrt(self, x):
         if type(x) is tuple or not x.is_rational():

@@ -149,9 +149,10 @@ class CyclotomicTowerSystem(TowerSystem):
     the real subfield of Q(zeta_M).  Numbers are ``MQ`` (rationals) or
     :class:`~.tower.TowerElement` (irrational base elements and the levels above)."""
 
-    def __init__(self, conductor: int):
+    def __init__(self, conductor: int, base_checked: bool = True):
         from .cyclotomic_tower import CyclotomicTower, check_base
-        check_base(conductor)                      # a-priori bound, before anything is built
+        if base_checked:
+            check_base(conductor)                  # a-priori bound, before anything is built
         self.tower = CyclotomicTower(cyclotomic.cyclotomic_field(conductor))
 
     def cos_turn(self, turn: fmpq):
@@ -437,6 +438,16 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
         if degree <= limit:
             return FieldSystem(cyclotomic.cyclotomic_field(conductor))
         if any(atom[0] == "cos" for atom in atoms):
+            if degree > cyclotomic.MAX_DEGREE:
+                kummer = _kummer_system(atoms, limit)
+                if kummer is not None:
+                    return kummer
+                if limit < cyclotomic.MAX_DEGREE and \
+                        _kummer_system(atoms, cyclotomic.MAX_DEGREE) is not None:
+                    # certify's lower limit: these square roots would be Gauss sums of
+                    # hundreds of terms in the sparse field; the caller falls back to the
+                    # limit check uses (the tower over the dense field)
+                    raise FieldTooLargeError("square roots beyond the sparse field's reach")
             return _sparse_system(atoms, conductor, degree)
     if all(kind != "cos" for kind, *_ in atoms):   # nested radicals of square roots only
         primes: set = set()
@@ -490,6 +501,20 @@ def _sparse_system(atoms, conductor: int, degree: int):
                     f"be a sum of {terms} roots of unity (limit "
                     f"{sparse_cyclotomic.MAX_GAUSS_TERMS})")
     return SparseCyclotomicSystem(conductor)
+
+
+def _kummer_system(atoms, limit: int):
+    """Square roots of rationals whose Gauss sums would take the field beyond the dense limit
+    (``sqrt(145)`` with turns j/997: Q(zeta_578260)) while the cosines alone fit: a tower over
+    Q(zeta_M) of the cosines whose levels are the square roots (:mod:`.kummer` decides which
+    are new), or None when the cosines alone need the sparse field."""
+    conductor = 4
+    for atom in atoms:
+        if atom[0] == "cos":
+            conductor = cyclotomic.lcm(conductor, cyclotomic.turn_conductor(atom[1], "cos"))
+    if cyclotomic.euler_phi(conductor) > limit:
+        return None
+    return CyclotomicTowerSystem(conductor, base_checked=False)
 
 
 def _mixed_system(atoms):

@@ -424,20 +424,26 @@ def text(tower: Tower, v) -> str:
 def leaf_ratio(num, den):
     """The rational q that ``num == q den`` would need (raw values of one tower), read off
     one coordinate of the canonical form (a + b y at each level, an MQ below): the first
-    non-zero one of ``den`` along a + b y, its first term; None when ``num`` is above that
-    level (then num/den is not rational); NotImplemented when the coordinate is not an
-    MQ (a cyclotomic base: the caller divides).  The caller checks num == q den exactly:
-    no inverse is made."""
+    non-zero one of ``den`` along a + b y, its first term (or first coefficient over a
+    cyclotomic base); None when ``num`` is above that level (then num/den is not rational);
+    NotImplemented for other coordinates (the caller divides).  The caller checks
+    num == q den exactly: no inverse is made."""
     while type(den) is tuple:
         lev, a, b = den
         na, nb = _split(num, lev)
         den, num = (a, na) if not _is_zero(a) else (b, nb)
     if type(num) is tuple:
         return None
-    if not isinstance(den, MQ) or not isinstance(num, MQ) or not den:
+    if isinstance(den, MQ) and isinstance(num, MQ) and den:
+        m, c = next(iter(den.terms.items()))
+        return num.terms.get(m, fmpq(0)) / c
+    dp, np_ = getattr(den, "poly", None), getattr(num, "poly", None)
+    if dp is None or np_ is None or not den:
         return NotImplemented
-    m, c = next(iter(den.terms.items()))
-    return num.terms.get(m, fmpq(0)) / c
+    i = 0                      # a cyclotomic base: den's first non-zero coefficient
+    while dp[i] == 0:
+        i += 1
+    return np_[i] / dp[i]
 
 
 def _raw(tower: Tower, other):

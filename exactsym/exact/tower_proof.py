@@ -10,8 +10,11 @@ Over a cyclotomic base (:mod:`.cyclotomic_tower`) the map sends zeta to a root w
 modulo a prime p = 1 mod M (:func:`cyclotomic_nonsquare_witness`); the checker re-checks it in
 ``exactsym.checker_tower``.
 
-Public names: :func:`nonsquare_witness`, :func:`cyclotomic_nonsquare_witness`, :func:`norm`,
-:func:`image`.
+Levels that are all square roots of rationals over a cyclotomic base (:mod:`.kummer`) are
+proved together by :func:`kummer_witness`: Legendre symbols of full rank over F_2.
+
+Public names: :func:`nonsquare_witness`, :func:`cyclotomic_nonsquare_witness`,
+:func:`kummer_witness`, :func:`norm`, :func:`image`.
 """
 
 from __future__ import annotations
@@ -355,4 +358,41 @@ def _cyclotomic_search(p: int, w: int, radicands: list, budget: int = 64):
         t = sqrt_mod(value, p)
         if t is not None:
             stack += [roots + [t], roots + [(p - t) % p]]
+    return None
+
+
+# ------------------------------------------------- square roots of rationals (Kummer levels)
+def kummer_witness(tower, limit: int = 1 << 40):
+    """``[(p, thetas), ...]`` proving the rational radicands r_1, ..., r_L of a
+    :class:`~.cyclotomic_tower.CyclotomicTower` whose levels are all square roots of
+    rationals independent modulo squares of K_0: primes p = 1 mod M (Psi_M splits: thetas
+    its roots modulo p, as in :func:`cyclotomic_nonsquare_witness`), none dividing a
+    radicand, whose vectors of Legendre symbols ((r_1|p), ..., (r_L|p)) have rank L over F_2
+    (docs/certificates.md, "Square roots of rationals over Q(zeta_M)").  One prime per
+    level, never a chain of roots: L levels would need a prime where L - 1 radicands are
+    residues.  None if the primes up to ``limit`` do not reach rank L."""
+    from math import gcd
+    m = tower.conductor
+    values = [int(r.rational().p) * int(r.rational().q) for r in tower.radicands]
+    half = [k for k in range(1, m // 2 + 1) if gcd(k, m) == 1] if m > 2 else [1]
+    rows: dict = {}
+    out = []
+    for p in split_primes(m, start=3):
+        if p >= limit:
+            return None
+        if any(v % p == 0 for v in values):
+            continue
+        vector = 0
+        for i, v in enumerate(values):
+            if pow(v, (p - 1) // 2, p) == p - 1:
+                vector |= 1 << i
+        while vector and vector.bit_length() - 1 in rows:
+            vector ^= rows[vector.bit_length() - 1]
+        if not vector:
+            continue                                   # no new rank from this prime
+        rows[vector.bit_length() - 1] = vector
+        w = root_of_unity_mod(m, p)
+        out.append((p, [(pow(w, j, p) + pow(w, -j, p)) % p for j in half]))
+        if len(rows) == len(values):
+            return out
     return None

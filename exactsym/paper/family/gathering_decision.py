@@ -333,9 +333,7 @@ def _same_sec(a: Levels, b: Levels, system=None) -> bool:
     """``system``: the number system of ``b`` when a radial move adjoined a square root
     (``a``'s numbers are written in it first: a cyclotomic number and one of a tower over
     that field do not compare directly)."""
-    c = system.coerce if system is not None else (lambda x: x)
-    return c(a.sec.centre[0]) == b.sec.centre[0] and c(a.sec.centre[1]) == b.sec.centre[1] \
-        and c(a.sec.radius_squared) == b.sec.radius_squared
+    return a.sec.same_circle(b.sec, system.coerce if system is not None else None)
 
 
 def _check_vl_move(trace, before: Configuration, after: Configuration, result: MakeAsymResult,

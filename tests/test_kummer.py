@@ -1,0 +1,190 @@
+"""Square roots of rationals over Q(zeta_M) as tower levels decided by Kummer theory
+(exact/kummer.py; issue 9: square-root radii at turns j/997 were Gauss sums of hundreds of
+terms in the sparse Q(zeta_N), and two robots ran past a minute)."""
+
+from __future__ import annotations
+
+import copy
+import json
+from itertools import combinations
+
+import pytest
+from flint import fmpq
+from hypothesis import given, settings, strategies as st
+
+from exactsym import checker
+from exactsym.certificate import CertificateError, make_certificate
+from exactsym.configuration import load
+from exactsym.errors import FieldTooLargeError
+from exactsym.exact import evaluate_all
+from exactsym.exact.evaluate import CyclotomicTowerSystem
+from exactsym.exact.factor import factorization
+from exactsym.exact.kummer import SquareClasses
+from exactsym.exact.tower import TowerElement
+from exactsym.expr import parse_expression
+from exactsym.symmetry import symmetry_group
+
+
+def _free_primes(q: fmpq, base) -> frozenset:
+    """The primes of q's squarefree part outside ``base``."""
+    return frozenset(p for p, e in factorization(int(q.p) * int(q.q)).items()
+                     if e % 2 and p not in base)
+
+
+def _in_span(target: frozenset, vectors: list) -> list | None:
+    """Brute force: a subset of ``vectors`` whose symmetric difference is ``target``."""
+    for k in range(len(vectors) + 1):
+        for subset in combinations(range(len(vectors)), k):
+            acc: frozenset = frozenset()
+            for i in subset:
+                acc = acc ^ vectors[i]
+            if acc == target:
+                return list(subset)
+    return None
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from([4, 12, 28, 60, 3988]),
+       st.lists(st.integers(2, 60), min_size=1, max_size=7),
+       st.lists(st.integers(1, 400), min_size=1, max_size=5),
+       st.integers(1, 9))
+def test_square_classes_agree_with_brute_force(m, radicands, queries, den):
+    """express(q) is not None exactly when q's class lies in the span of the radicands'
+    classes modulo the base primes (odd primes of M, 2 when 8 | M); its levels then leave
+    a quotient made of base primes and squares only."""
+    classes = SquareClasses(m)
+    base = {p for p in factorization(m) if p != 2 or m % 8 == 0}
+    added: list = []
+    for r in radicands:
+        q = fmpq(r, den)
+        if classes.express(q) is None:
+            assert _in_span(_free_primes(q, base), [_free_primes(a, base) for a in added]) \
+                is None
+            classes.add(q)
+            added.append(q)
+        else:
+            assert _in_span(_free_primes(q, base), [_free_primes(a, base) for a in added]) \
+                is not None
+    vectors = [_free_primes(a, base) for a in added]
+    for n in queries:
+        q = fmpq(n, den)
+        levels = classes.express(q)
+        assert (levels is None) == (_in_span(_free_primes(q, base), vectors) is None)
+        if levels is not None:
+            rest = q
+            for i in levels:
+                rest /= added[i]
+            assert not _free_primes(rest, base)
+
+
+def test_square_classes_refuse_a_repeated_class():
+    classes = SquareClasses(28)
+    classes.add(fmpq(5))
+    with pytest.raises(ValueError):
+        classes.add(fmpq(20))                 # 20 = 4 * 5
+    assert classes.express(fmpq(35)) == [0]   # 35 = 7 * 5, sqrt(7) in Q(zeta_28)
+    assert classes.express(fmpq(3)) is None   # sqrt(3) needs 12 | M
+
+
+def _system(points: list[str]):
+    return evaluate_all([parse_expression(p) for p in points])
+
+
+def test_square_roots_beyond_the_dense_field_become_levels():
+    """cos(2 pi/7) with sqrt(1499), sqrt(1511): Q(zeta_(4*7*1499*1511)) is far beyond the
+    dense limit and the Gauss sums have 1,499 terms; the cosines' Q(zeta_28) holds the base
+    and each new square-root class is one level."""
+    system, (c, a, b, ab, a4, s7) = _system(
+        ["cos(2*pi/7)", "sqrt(1499)", "sqrt(1511)", "sqrt(1499*1511)", "sqrt(4*1499)",
+         "sqrt(7)"])
+    assert isinstance(system, CyclotomicTowerSystem) and system.tower.conductor == 28
+    assert system.tower.levels == 2 and system.tower.classes is not None
+    assert isinstance(a, TowerElement) and isinstance(b, TowerElement)
+    assert a * a == 1499 and b * b == 1511
+    assert ab == a * b and a4 == 2 * a              # found in the field: no new level
+    assert s7 * s7 == 7 and type(s7.v) is not tuple     # in the base Q(zeta_28)
+    assert a != b and (a - b).sign() < 0 and c.sign() > 0
+
+
+def test_a_nested_radical_over_a_large_base_is_refused_at_once():
+    """The complete square-root test over Q(zeta_3988) would factor norms of degree 3984:
+    refused (one line, exit 2) instead of running for minutes."""
+    system, (a,) = _system(["sqrt(145)*cos(2*pi/997)"])
+    with pytest.raises(FieldTooLargeError, match="beyond the limits"):
+        system.sqrt(a + 5)
+
+
+def _toml(points) -> str:
+    return "format = 1\npoints = [\n" + "".join(
+        f'  {{ r = "{r}", turn = "{t}" }},\n' for r, t in points) + "]\n"
+
+
+def test_two_robots_with_square_root_radii_at_turns_j_997(tmp_path):
+    """The survey's input (two robots, radii sqrt(145) and sqrt(374)): the SEC is the circle
+    on their segment, so the group is D2 whatever the turns; rotating both by k/997 keeps
+    it (metamorphic)."""
+    for shift in (0, 5, 400):
+        path = tmp_path / f"two{shift}.toml"
+        path.write_text(_toml([("sqrt(145)", f"{1 + shift}/997"),
+                               ("sqrt(374)", f"{300 + shift}/997")]))
+        config = load(str(path))
+        assert symmetry_group(config).name == "D2"
+
+
+def _k7(tmp_path):
+    path = tmp_path / "k7.toml"
+    path.write_text(_toml([("sqrt(1499)", "1/7"), ("sqrt(1511)", "3/7"), ("2", "6/7")]))
+    cert = json.loads(json.dumps(make_certificate(load(str(path)))))
+    ok, message = checker.verify_certificate(cert)
+    assert ok, message
+    return cert
+
+
+def _rejected(cert: dict, fragment: str) -> None:
+    cert["configuration_sha256"] = checker.digest(cert["configuration"])
+    ok, message = checker.verify_certificate(cert)
+    assert not ok and fragment in message, message
+
+
+def test_kummer_levels_certify_and_tampering_is_caught(tmp_path):
+    cert = _k7(tmp_path)
+    tower = cert["configuration"]["field"]["tower"]
+    assert [lev["radicand"] for lev in tower["levels"]] == ["1499", "1511"]
+    assert all(lev["kummer"] is True for lev in tower["levels"])
+    assert 2 <= len(tower["kummer"]) and all(k["prime"] % 28 == 1 for k in tower["kummer"])
+
+    bad = copy.deepcopy(cert)                       # one prime: rank 1 < 2
+    primes = bad["configuration"]["field"]["tower"]["kummer"]
+    bad["configuration"]["field"]["tower"]["kummer"] = primes[:1]
+    _rejected(bad, "rank 1 over F_2, not 2")
+
+    bad = copy.deepcopy(cert)                       # a prime repeated adds no rank
+    first = bad["configuration"]["field"]["tower"]["kummer"][0]
+    bad["configuration"]["field"]["tower"]["kummer"] = [first, copy.deepcopy(first)]
+    _rejected(bad, "rank 1 over F_2, not 2")
+
+    bad = copy.deepcopy(cert)                       # the second radicand a square class
+    bad["configuration"]["field"]["tower"]["levels"][1]["radicand"] = str(1499 * 4)
+    _rejected(bad, "over F_2")
+
+    bad = copy.deepcopy(cert)                       # a composite "prime"
+    entry = bad["configuration"]["field"]["tower"]["kummer"][0]
+    entry["prime"] = entry["prime"] * 3
+    _rejected(bad, "is not an odd prime")
+
+    bad = copy.deepcopy(cert)                       # a wrong root of Psi_28
+    entry = bad["configuration"]["field"]["tower"]["kummer"][0]
+    entry["theta"][0] = str((int(entry["theta"][0]) + 1) % entry["prime"])
+    _rejected(bad, "modulo")
+
+    bad = copy.deepcopy(cert)                       # a non-rational radicand
+    bad["configuration"]["field"]["tower"]["levels"][0]["radicand"] = {"theta": ["1", "1"]}
+    _rejected(bad, "positive rational")
+
+
+def test_certify_refuses_kummer_levels_over_a_large_base(tmp_path):
+    """Over Q(zeta_3988) the checker would multiply numbers of degree 996 term by term."""
+    path = tmp_path / "two.toml"
+    path.write_text(_toml([("sqrt(145)", "1/997"), ("sqrt(374)", "300/997")]))
+    with pytest.raises(CertificateError, match="term by term"):
+        make_certificate(load(str(path)))
