@@ -43,6 +43,7 @@ from .exact.cyclotomic_tower import CyclotomicTower
 from .exact.evaluate import SparseCyclotomicSystem
 from .exact.sparse_cyclotomic import SparseCyclotomic
 from .exact.tower import TowerElement
+from .exact.sparse_tower import SparseKummerTower
 from .exact.tower_proof import (cyclotomic_nonsquare_witness, kummer_witness,
                                 nonsquare_witness)
 from .prime_certificates import (MR_LIMIT, PrimalityError, hashing_prime_factors,
@@ -209,6 +210,9 @@ class Encoder:
     def _tower(self, tower, values):
         """K_0 = Q(sqrt p) over the tower's base primes, then each level's radicand with a
         homomorphism to F_p proving it a non-square in the field below (checker_tower)."""
+        if isinstance(tower, SparseKummerTower):
+            raise CertificateError(f"square roots as levels over the sparse Q(zeta_"
+                                   f"{tower.conductor}): no certificate format yet")
         if isinstance(tower, CyclotomicTower):
             self._cyclotomic_tower(tower)
             return

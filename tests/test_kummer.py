@@ -188,3 +188,75 @@ def test_certify_refuses_kummer_levels_over_a_large_base(tmp_path):
     path.write_text(_toml([("sqrt(145)", "1/997"), ("sqrt(374)", "300/997")]))
     with pytest.raises(CertificateError, match="term by term"):
         make_certificate(load(str(path)))
+
+
+# ------------------------------------------------------------------ over the sparse Q(zeta_N)
+def test_square_roots_over_the_sparse_field_are_levels(tmp_path):
+    """Turns j/999983 put the cosines in the sparse Q(zeta_3999932); sqrt(145), sqrt(374)
+    are levels above it (Gauss sums of 112 and 640 terms before): exact arithmetic, the
+    group of two robots D2 for every rotation of the turns (metamorphic)."""
+    from exactsym.exact.evaluate import SparseKummerSystem
+    system, (a, b, ab, c) = evaluate_all(
+        [parse_expression(e) for e in ("sqrt(145)", "sqrt(374)", "sqrt(145*374)",
+                                       "cos(2*pi/999983)")])
+    assert isinstance(system, SparseKummerSystem) and system.tower.levels == 2
+    assert a * a == 145 and b * b == 374 and ab == a * b and ab != 145
+    assert (a * c) * (a * c) == 145 * c * c and (a * c - b * c).sign() < 0
+    for shift in (0, 7, 500000):
+        path = tmp_path / f"s{shift}.toml"
+        path.write_text(_toml([("sqrt(145)", f"{1 + shift}/999983"),
+                               ("sqrt(374)", f"{300000 + shift}/999983")]))
+        assert symmetry_group(load(str(path))).name == "D2"
+
+
+def test_certify_refuses_levels_over_the_sparse_field(tmp_path):
+    path = tmp_path / "s.toml"
+    path.write_text(_toml([("sqrt(145)", "1/999983"), ("sqrt(374)", "3/999983")]))
+    with pytest.raises(CertificateError, match="no certificate format"):
+        make_certificate(load(str(path)))
+
+
+def test_a_nested_radical_over_the_sparse_field_is_refused():
+    system, (a,) = evaluate_all([parse_expression("sqrt(145)*cos(2*pi/999983)")])
+    with pytest.raises(FieldTooLargeError, match="sparse"):
+        system.sqrt(a + 20)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.integers(-6, 6), min_size=4, max_size=4),
+       st.lists(st.integers(-6, 6), min_size=4, max_size=4),
+       st.integers(1, 9), st.integers(1, 9), st.sampled_from(["997", "999983"]))
+def test_kummer_maps_never_refute_a_rational_ratio(xs, ys, p, q, den):
+    """Two ring maps of a Kummer tower into F_p (tower_proof._kummer_maps) prove ratios
+    irrational; a rational multiple is never 'proved' irrational, and rational_ratio finds
+    the multiple exactly (dense Q(zeta_3988) and sparse Q(zeta_3999932) bases)."""
+    from exactsym.exact.cyclotomic_modular import quotient_irrational
+    from exactsym.paper.ratio_keys import rational_ratio
+    atoms = ["1", f"cos(2*pi/{den})", "sqrt(145)", f"sqrt(145)*cos(6*pi/{den})"]
+    _, values = evaluate_all([parse_expression(e) for e in atoms])
+    x = sum((k * v for k, v in zip(xs, values)), fmpq(0))
+    y = sum((k * v for k, v in zip(ys, values)), fmpq(0))
+    if not y:
+        return
+    k = fmpq(p, q)
+    assert not quotient_irrational(k * y, y)
+    assert rational_ratio(k * y, y) == k
+    ratio = rational_ratio(x, y)
+    if ratio is not None:
+        assert x == ratio * y
+    if quotient_irrational(x, y):
+        assert ratio is None
+
+
+def test_sums_over_one_denominator_keep_it():
+    """x/N + y/N with N built twice (equal dictionaries, two objects): the sum keeps the
+    denominator N instead of N^2 (a tower's products made such pairs at every sum)."""
+    from exactsym.exact.sparse_context import sparse_context
+    from exactsym.exact.sparse_cyclotomic import SparseCyclotomic
+    ctx = sparse_context(3999932)
+    den = {0: fmpq(3), 5: fmpq(1)}
+    u = SparseCyclotomic(ctx, {1: fmpq(1)}, dict(den))
+    v = SparseCyclotomic(ctx, {2: fmpq(2)}, dict(den))
+    total = u + v
+    assert total.den == den and total == SparseCyclotomic(ctx, {1: fmpq(1), 2: fmpq(2)}, den)
+    assert total - v == u

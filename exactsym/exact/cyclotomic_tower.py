@@ -149,11 +149,16 @@ class CyclotomicTower(Tower):
             rest = q
             for i in levels:
                 rest /= self.radicands[i].rational()
-            root = cyclotomic.sqrt_element(self.field, rest)      # every factor positive
+            root = self._base_sqrt(rest)                          # every factor positive
             for i in levels:
                 root = self.mul(root, (i + 1, self.zero, self.one))
         self._roots[x] = root
         return root
+
+    def _base_sqrt(self, q: fmpq):
+        """The root in the base of a positive rational whose class holds only base
+        primes (a Gauss sum)."""
+        return cyclotomic.sqrt_element(self.field, q)
 
     def _rational_sqrt(self, x):
         if type(x) is tuple or not x.is_rational():

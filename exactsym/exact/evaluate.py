@@ -209,6 +209,28 @@ class SparseCyclotomicSystem:
         return sparse_cyclotomic.sqrt_rational(self.context, q)
 
 
+class SparseKummerSystem(TowerSystem):
+    """Cosines in the sparse Q(zeta_N) with square roots of rationals as tower levels above
+    them (:class:`~.sparse_tower.SparseKummerTower`), instead of Gauss sums of hundreds of
+    roots of unity.  Numbers are ``MQ`` (rationals) or :class:`~.tower.TowerElement`."""
+
+    def __init__(self, conductor: int):
+        from .sparse_tower import SparseKummerTower
+        self.context = sparse_cyclotomic.sparse_context(conductor)
+        self.tower = SparseKummerTower(self.context)
+
+    def cos_turn(self, turn: fmpq):
+        value = rational_cos_turn(turn)
+        if value is not None:
+            return MQ.rational(value)
+        return self.tower.wrap(sparse_cyclotomic.cos_turn(self.context, turn))
+
+    def coerce(self, value):
+        if isinstance(value, SparseCyclotomic):
+            return self.tower.wrap(value)
+        return super().coerce(value)
+
+
 class FieldSystem:
     """A number field ``field`` with the atoms (square roots, trig values) it holds."""
 
@@ -487,9 +509,24 @@ def _check_tower_levels(atoms, primes) -> None:
                                  "quadratic extensions above the square roots")
 
 
+#: a square root whose Gauss sum has more terms is a tower level over the sparse Q(zeta_N)
+#: (:class:`SparseKummerSystem`); smaller ones (sqrt(2): 2 terms, sqrt(3): 2) stay Gauss sums
+SPARSE_GAUSS_LEVEL = 32
+
+
 def _sparse_system(atoms, conductor: int, degree: int):
-    """The sparse Q(zeta_N) for cos/sin beyond the dense limit, or FieldTooLargeError (one
-    line, before any work) when a square root's Gauss sum would be too long."""
+    """The sparse Q(zeta_N) for cos/sin beyond the dense limit; with square roots of long
+    Gauss sums, the tower of square roots over the cosines' sparse field instead; or
+    FieldTooLargeError (one line, before any work) when a square root's Gauss sum would be
+    too long and the tower does not apply."""
+    long_sums = [atom for atom in atoms if atom[0] == "sqrt" and sparse_cyclotomic.gauss_terms(
+        cyclotomic.squarefree_decomposition(atom[1])[1]) > SPARSE_GAUSS_LEVEL]
+    if long_sums:
+        cosines = 4
+        for atom in atoms:
+            if atom[0] == "cos":
+                cosines = cyclotomic.lcm(cosines, cyclotomic.turn_conductor(atom[1], "cos"))
+        return SparseKummerSystem(cosines)
     for atom in atoms:
         if atom[0] == "sqrt":
             s = cyclotomic.squarefree_decomposition(atom[1])[1]
@@ -550,6 +587,6 @@ def evaluate_all(exprs: Sequence[Node], turns: Sequence[fmpq] = ()):
 
 
 __all__ = ["RationalSystem", "MultiquadraticSystem", "TowerSystem", "CyclotomicTowerSystem",
-           "SparseCyclotomicSystem",
+           "SparseCyclotomicSystem", "SparseKummerSystem",
            "FieldSystem", "number_system", "evaluate", "evaluate_all",
            "rational_cos_turn", "rational_sqrt", "normal_turn", "Fraction"]

@@ -141,7 +141,11 @@ class SparseCyclotomic(FieldElement):
     def _combine(self, o, sign):
         (an, ad), (bn, bd) = self.rho(), o.rho()
         ell = self.ctx.ell
-        if self.den is o.den:                   # both None, or one denominator
+        if self.den is o.den or (self.den is not None and o.den is not None and
+                                 self.den == o.den):
+            # both None, or one denominator (equal dictionaries: a tower's products make
+            # the same denominator N M as separate objects; cross-multiplying them squared
+            # it at every sum, issue 9)
             rho = (-1 if an < 0 or bn < 0 else (an + sign * bn) % ell, ad)
             return self._new(add_terms(self.num, o.num, sign), self.den, rho)
         rho = (-1 if min(an, ad, bn, bd) < 0 else (an * bd + sign * bn * ad) % ell,

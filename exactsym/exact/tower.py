@@ -425,7 +425,8 @@ def leaf_ratio(num, den):
     """The rational q that ``num == q den`` would need (raw values of one tower), read off
     one coordinate of the canonical form (a + b y at each level, an MQ below): the first
     non-zero one of ``den`` along a + b y, its first term (or first coefficient over a
-    cyclotomic base); None when ``num`` is above that level (then num/den is not rational);
+    cyclotomic base, or the quotient of the two over a sparse one); None when ``num`` is
+    above that level or that quotient is irrational (then num/den is not rational);
     NotImplemented for other coordinates (the caller divides).  The caller checks
     num == q den exactly: no inverse is made."""
     while type(den) is tuple:
@@ -439,6 +440,11 @@ def leaf_ratio(num, den):
         return num.terms.get(m, fmpq(0)) / c
     dp, np_ = getattr(den, "poly", None), getattr(num, "poly", None)
     if dp is None or np_ is None or not den:
+        from .sparse_cyclotomic import SparseCyclotomic
+        if isinstance(den, SparseCyclotomic) and den and \
+                isinstance(num, (SparseCyclotomic, MQ)):
+            q = num / den          # a sparse base: a quotient, no inverse; exact test
+            return q.rational() if q.is_rational() else None
         return NotImplemented
     i = 0                      # a cyclotomic base: den's first non-zero coefficient
     while dp[i] == 0:
@@ -578,6 +584,9 @@ def key(v):
     """An injective hashable key of a raw value (tags keep levels and MQ parts apart)."""
     if isinstance(v, MQ):
         return ("sqrt",) + tuple(sorted((m, int(c.p), int(c.q)) for m, c in v.terms.items()))
-    if type(v) is not tuple:                # a PolyElement of a cyclotomic base: canonical
-        return ("cyclotomic",) + tuple((int(c.p), int(c.q)) for c in v.poly.coeffs())
+    if type(v) is not tuple:
+        poly = getattr(v, "poly", None)     # a PolyElement of a cyclotomic base: canonical
+        if poly is None:                    # a sparse base: equality by the zero test
+            return ("sparse",) + v.exact_key()
+        return ("cyclotomic",) + tuple((int(c.p), int(c.q)) for c in poly.coeffs())
     return ("level", v[0], key(v[1]), key(v[2]))

@@ -159,6 +159,10 @@ def tower_maps(tower: Tower, tries: int = 128, budget: int = 256):
     hit = _MAPS.get(id(tower))
     if hit is not None and hit[0] is tower and hit[1] == len(tower.radicands):
         return hit[2]
+    if getattr(tower, "classes", None) is not None:
+        found = _kummer_maps(tower)
+        _MAPS[id(tower)] = (tower, len(tower.radicands), found)
+        return found
     found = None
     primes = _split_primes(tower.primes)
     k, levels = len(tower.primes), len(tower.radicands)
@@ -202,6 +206,14 @@ def tower_images(tower: Tower, raws) -> tuple | None:
         return None
     p, first, second = maps
     out = ([], [])
+    if getattr(tower, "classes", None) is not None:
+        for v in raws:
+            a, b = _kummer_image(v, p, *first), _kummer_image(v, p, *second)
+            if a is None or b is None:
+                return None
+            out[0].append(a)
+            out[1].append(b)
+        return p, out
     try:
         for v in raws:
             out[0].append(image(v, p, *first))
@@ -396,3 +408,75 @@ def kummer_witness(tower, limit: int = 1 << 40):
         if len(rows) == len(values):
             return out
     return None
+
+
+# ------------------------------------- ring maps of a tower of Kummer levels into F_p (keys)
+def _kummer_maps(tower):
+    """``(p, (w, roots), (w', roots'))`` for a tower over Q(zeta_N) (dense or sparse) whose
+    levels are all square roots of rationals: p = 1 mod lcm(N, 8, the radicands' odd
+    primes), so zeta_N has images (w and w' = w^j, j != +-1 mod N: two embeddings) and
+    every radicand is a residue ((l | p) = (p | l) = 1 by reciprocity, p = 1 mod 4, and
+    (2 | p) = 1 as p = 1 mod 8): y_i -> roots[i] and its negative.  None when N has no
+    second embedding (N <= 6)."""
+    from math import gcd, lcm
+    from .factor import factorization
+    n = tower.conductor
+    j = next((j for j in range(2, n - 1) if gcd(j, n) == 1), None)
+    if j is None:
+        return None
+    values = [int(r.rational().p) * int(r.rational().q) for r in tower.radicands]
+    modulus = lcm(n, 8)
+    for v in values:
+        for q in factorization(v) if v > 1 else ():
+            modulus = lcm(modulus, q)
+    k = (1 << 62) // modulus + 1
+    while not fmpz(k * modulus + 1).is_prime():
+        k += 1
+    p = k * modulus + 1
+    w = root_of_unity_mod(n, p)
+    roots = [sqrt_mod(v % p, p) for v in values]
+    if any(t is None for t in roots):          # cannot happen (reciprocity)
+        return None
+    return p, (w, roots), (pow(w, j, p), [(p - t) % p for t in roots])
+
+
+def _kummer_image(x, p: int, w: int, roots: list):
+    """The image of a raw value: zeta_N -> w, y_i -> roots[i - 1]; None at a pole."""
+    if type(x) is tuple:
+        a, b = _kummer_image(x[1], p, w, roots), _kummer_image(x[2], p, w, roots)
+        return None if a is None or b is None else (a + b * roots[x[0] - 1]) % p
+    if isinstance(x, MQ):
+        q = x.rational()
+        return None if int(q.q) % p == 0 else int(q.p) * pow(int(q.q), -1, p) % p
+    poly = getattr(x, "poly", None)
+    if poly is not None:                     # dense: a polynomial in zeta_N
+        if p < 1 << 63:
+            return image_mod(poly, w, p)
+        den = int(poly.denom())
+        if den % p == 0:
+            return None
+        value = 0
+        for c in reversed(poly.numer().coeffs()):
+            value = (value * w + int(c)) % p
+        return value * pow(den, -1, p) % p
+    return _sparse_image(x, p, w)
+
+
+def _sparse_image(x, p: int, w: int):
+    """num/den in cosine form: cos(2 pi e / N) -> (w^e + w^-e) / 2; None at a pole."""
+    w_inv = pow(w, -1, p)
+    values = []
+    for terms in (x.num, x.den):
+        if terms is None:
+            values.append(2)
+            continue
+        total = 0
+        for e, c in terms.items():
+            q = int(c.q)
+            if q % p == 0:
+                return None
+            total += int(c.p) * pow(q, -1, p) * (pow(w, e, p) + pow(w_inv, e, p))
+        values.append(total % p)
+    if values[1] % p == 0:
+        return None
+    return values[0] * pow(values[1], -1, p) % p

@@ -231,6 +231,12 @@ class LineKey:
             if shown is not None:
                 return f"({s}, {shown})"
         text = self.text
+        if len(text) > LONG and self._value is None and self._vector is not None and \
+                _quotient_field(*self._vector) and sign(self._vector[0]):
+            # the undivided quotient's decimal (a division costs seconds there)
+            x, y = self._vector
+            return f"({sign(x)}, ≈ {quotient_decimal(y, x)} (exact: {len(text)} " \
+                "characters, in --json))"
         if len(text) > LONG and isinstance(self.value, tuple) and \
                 isinstance(self.value[1], SparseCyclotomic):
             value = self.value
@@ -259,8 +265,16 @@ QUOTIENT_DEGREE = 512
 
 
 def _quotient_field(*numbers) -> bool:
-    return any(getattr(getattr(x, "field", None), "degree", 0) >= QUOTIENT_DEGREE
-               for x in numbers)
+    """A cyclotomic field of degree >= QUOTIENT_DEGREE, or a tower of square roots of
+    rationals over such a field or over a sparse one (exact/kummer.py): where a slope's
+    division costs seconds or grows its quotient's sums without bound."""
+    return any(getattr(getattr(x, "field", None), "degree", 0) >= QUOTIENT_DEGREE or
+               type(x) is TowerElement and _kummer_tower(x.tower) for x in numbers)
+
+
+def _kummer_tower(tower) -> bool:
+    return getattr(tower, "classes", None) is not None and tower.levels > 0 and \
+        tower.degree >= QUOTIENT_DEGREE
 
 
 def huge_field(*numbers) -> bool:

@@ -22,7 +22,8 @@ from .concentric import (Ring, has_lines, intersect_lines, is_symmetric_pair,
                          is_symmetric_polygon, lines_text, new_ring)
 from .elect_leader import elect_leader_asym_on, first_of_ring_in_ordering
 from .find_asymmetry import find_asymmetry, find_asymmetry_pair
-from ..keys import HALF, ccw_gap_key, cross, dot
+from ...geometry import PseudoAngle
+from ..keys import HALF, cross, dot
 from .limits import DEFAULT_LIMITS, Limits, MAX_QUADRATIC_N, WorkBudgetExceeded
 from .projection import radial_projection, robot_in, scale_to
 from .trace import few_names, trace_entry
@@ -174,10 +175,21 @@ def _epsilon_rotation(place: _Placement, robot: int, orientation: int, accept,
     return f"rotation with tau = {number_text(first)}", False
 
 
+_FULL_TURN = (1, 0)
+
+
 def _turn_key(u, v, orientation):
     """Exact key increasing with the angle from u to v in the moving sense (clockwise for
-    orientation +1)."""
-    return ccw_gap_key(False, v, u) if orientation == 1 else ccw_gap_key(False, u, v)
+    orientation +1), in (0, 1] turns as :func:`ccw_gap_key` (v on u's ray: a full turn):
+    the pseudo-angle of (u.v, +-u x v), which is v in u's frame, compared by
+    cross-multiplying; no squared length is inverted (over the sparse Q(zeta_N) with
+    square-root levels, sums of those inverses grew without bound: issue 9)."""
+    x, y = dot(u, v), cross(u, v)
+    if orientation == 1:
+        y = -y
+    if sign(y) == 0 and sign(x) > 0:
+        return _FULL_TURN
+    return (0, PseudoAngle(x, y))
 
 
 def _nearest_turn(u, others, orientation):
@@ -194,7 +206,7 @@ def _inside_gap(u, far, nearest, orientation) -> bool:
     before any direction of the others (which may share u's ray): before ``nearest``,
     the smallest turn to one of them (:func:`_nearest_turn`)."""
     reach = _turn_key(u, far, orientation)
-    if reach == ccw_gap_key(False, u, u):
+    if reach == _FULL_TURN:
         return False
     return nearest is None or reach < nearest
 

@@ -1,0 +1,89 @@
+"""Square roots of rationals over the sparse Q(zeta_N): Kummer levels above sparse numbers.
+
+Turns of denominators near 10^6 put the cosines in the sparse Q(zeta_N)
+(:mod:`.sparse_cyclotomic`); a radius sqrt(145) there was a Gauss sum of 112 cosines, and
+products of such sums grew until two robots ran past 100 s (issue 9).  As over a dense base
+(:mod:`.cyclotomic_tower`), the square roots are instead levels of a tower whose base is the
+real subfield of Q(zeta_N), decided new by Kummer theory (:mod:`.kummer`), with the tower's
+canonical form a + b y per level.  The base numbers are :class:`~.sparse_cyclotomic.
+SparseCyclotomic`, whose form is not canonical but whose equality, hash and zero test are
+exact, which is all the tower's structural equality and hash ask of its base values.
+
+Only square roots of rationals are held: a nested radical would need a square-root test in
+the sparse base, which does not exist, so it is refused (FieldTooLargeError, exit 2; a
+MakeAsym radial move is then "incomplete").  A rational whose class needs a Gauss sum of
+more than :data:`.sparse_cyclotomic.MAX_GAUSS_TERMS` terms (a prime of N near 10^6) is
+refused too.  ``certify`` has no format for this tower yet and refuses it.
+
+Public names: :class:`SparseKummerTower`.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from flint import fmpq, fmpz
+
+from ..errors import FieldTooLargeError
+from . import sparse_cyclotomic
+from .cyclotomic import squarefree_decomposition
+from .cyclotomic_tower import CyclotomicTower
+from .kummer import SquareClasses
+from .multiquadratic import MQ
+from .sparse_cyclotomic import SparseCyclotomic
+from .tower import Tower
+
+
+class SparseKummerTower(CyclotomicTower):
+    """A tower of square roots of rationals over the real subfield of a sparse Q(zeta_N)."""
+
+    def __init__(self, context):
+        Tower.__init__(self, ())
+        self.context = context
+        self.conductor = context.n
+        self.zero = SparseCyclotomic(context, {})
+        self.one = SparseCyclotomic(context, {0: fmpq(1)})
+        self.classes = SquareClasses(self.conductor)
+
+    @property
+    def degree(self) -> int:
+        return max(self.context.phi // 2, 1) << self.levels
+
+    def const(self, q):
+        return SparseCyclotomic(self.context, {0: fmpq(q)} if q else {})
+
+    def coerce_base(self, other):
+        if isinstance(other, SparseCyclotomic):
+            return other
+        if isinstance(other, MQ) and other.is_rational():
+            return self.const(other.rational())
+        if isinstance(other, (int, fmpz, fmpq)):
+            return self.const(other)
+        if isinstance(other, Fraction):
+            return self.const(fmpq(other.numerator, other.denominator))
+        return None
+
+    def base_root(self, x):
+        raise FieldTooLargeError(f"a nested radical over the sparse Q(zeta_{self.conductor}) "
+                                 "(no square-root test there)")
+
+    def base_text(self, v) -> str:
+        return v.text()
+
+    def _base_sqrt(self, q: fmpq):
+        terms = sparse_cyclotomic.gauss_terms(squarefree_decomposition(q)[1])
+        if terms > sparse_cyclotomic.MAX_GAUSS_TERMS:
+            raise FieldTooLargeError(
+                f"sqrt({q}) would be a sum of {terms} roots of unity in Q(zeta_"
+                f"{self.conductor}) (limit {sparse_cyclotomic.MAX_GAUSS_TERMS})")
+        return sparse_cyclotomic.sqrt_rational(self.context, q)
+
+    def sqrt(self, x):
+        if type(x) is not tuple:
+            x = self.coerce_base(x)
+            if x is not None and x.is_rational():
+                return self._kummer_sqrt(x)
+        return self.base_root(x)
+
+
+__all__ = ["SparseKummerTower"]
