@@ -440,8 +440,25 @@ def _kummer_maps(tower):
     return p, (w, roots), (pow(w, j, p), [(p - t) % p for t in roots])
 
 
+_KUMMER_IMAGES: dict = {}  # (id(x), p, w) -> (x, image): coordinates enter many keys
+
+
 def _kummer_image(x, p: int, w: int, roots: list):
-    """The image of a raw value: zeta_N -> w, y_i -> roots[i - 1]; None at a pole."""
+    """The image of a raw value: zeta_N -> w, y_i -> roots[i - 1]; None at a pole.
+    Remembered by identity (the entry keeps x alive, so its id is not reused): a sparse
+    base number of hundreds of terms costs as many modular powers."""
+    key = (id(x), p, w)
+    hit = _KUMMER_IMAGES.get(key)
+    if hit is not None and hit[0] is x:
+        return hit[1]
+    value = _kummer_image_of(x, p, w, roots)
+    if len(_KUMMER_IMAGES) >= 1 << 14:
+        _KUMMER_IMAGES.clear()
+    _KUMMER_IMAGES[key] = (x, value)
+    return value
+
+
+def _kummer_image_of(x, p: int, w: int, roots: list):
     if type(x) is tuple:
         a, b = _kummer_image(x[1], p, w, roots), _kummer_image(x[2], p, w, roots)
         return None if a is None or b is None else (a + b * roots[x[0] - 1]) % p

@@ -232,8 +232,10 @@ class LineKey:
                 return f"({s}, {shown})"
         text = self.text
         if len(text) > LONG and self._value is None and self._vector is not None and \
-                _quotient_field(*self._vector) and sign(self._vector[0]):
-            # the undivided quotient's decimal (a division costs seconds there)
+                any(type(c) is TowerElement and _kummer_tower(c.tower)
+                    for c in self._vector) and sign(self._vector[0]):
+            # a tower of square roots over a large or sparse cyclotomic field: the undivided
+            # quotient's decimal (the division costs seconds there)
             x, y = self._vector
             return f"({sign(x)}, ≈ {quotient_decimal(y, x)} (exact: {len(text)} " \
                 "characters, in --json))"
