@@ -111,6 +111,12 @@ def level_inputs() -> dict[str, str]:
     turns = draw.sample(range(999983), 100)
     out["100 levels, turns j/999983"] = _polar(
         [(str(draw.randrange(1, 400)), f"{t}/999983") for t in turns])
+    # radii sqrt(k): square roots as Kummer levels over the cosines' field (exact/kummer.py)
+    for n, den in ((2, 997), (10, 999983), (31, 999983)):
+        draw = random.Random(7000 + n)
+        turns = draw.sample(range(1, den), n)
+        out[f"{n} sqrt radii, turns j/{den}"] = _polar(
+            [(f"sqrt({draw.randrange(2, 400)})", f"{t}/{den}") for t in turns])
     return out
 
 

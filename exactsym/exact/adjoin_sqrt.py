@@ -73,7 +73,10 @@ def adjoin_sqrt(system, numbers, x):
                 return system, root
             if not decided:
                 return None
-        return system, system.sqrt(x)
+        try:
+            return system, system.sqrt(x)
+        except FieldTooLargeError:      # a tower beyond its bounds, or a sparse base
+            return None
     if not isinstance(system, (RationalSystem, MultiquadraticSystem)):
         return None
     mx = _as_mq(x)

@@ -553,7 +553,16 @@ class TowerElement(FieldElement):
 
     def _cmp(self, other):
         o = _raw(self.tower, other)
-        return None if o is None else self.tower.sign(sub(self.v, o))
+        if o is None:
+            return None
+        # disjoint balls decide: the exact difference of two numbers whose sparse base
+        # quotients have other denominators cross-multiplies them (issue 9)
+        a, b = self.tower.ball(self.v, 64), self.tower.ball(o, 64)
+        if a < b:
+            return -1
+        if a > b:
+            return 1
+        return self.tower.sign(sub(self.v, o))
 
     def __hash__(self):
         if self._hash is None:
