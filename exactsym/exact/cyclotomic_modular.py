@@ -161,27 +161,35 @@ def _sparse_images(x: SparseCyclotomic, m: int, p: int, roots) -> tuple | None:
     :mod:`.sparse_cyclotomic`): cos(2 pi e/N) maps to (u^e + u^-e)/2 with u = w^(M/N);
     None when p divides a coefficient's denominator or the denominator maps to 0."""
     step = m // x.ctx.n
-    half = pow(2, -1, p)
     pair = []
     for w in roots:
-        u = pow(w, step, p)
-        u_inv = pow(u, -1, p)
-        values = []
-        for terms in (x.num, x.den):
-            if terms is None:
-                values.append(1)
-                continue
-            total = 0
-            for e, c in terms.items():
-                q = int(c.q)
-                if q % p == 0:
-                    return None
-                total += int(c.p) * pow(q, -1, p) * (pow(u, e, p) + pow(u_inv, e, p))
-            values.append(total * half % p)
-        if values[1] == 0:
+        value = sparse_image(x, p, pow(w, step, p))
+        if value is None:
             return None
-        pair.append(values[0] * pow(values[1], -1, p) % p)
+        pair.append(value)
     return tuple(pair)
+
+
+def sparse_image(x: SparseCyclotomic, p: int, u: int) -> int | None:
+    """The image of ``num / den`` (cosine form) under zeta_N -> u, a primitive N-th root of
+    unity modulo p: cos(2 pi e/N) -> (u^e + u^-e)/2; None when p divides a coefficient's
+    denominator or the denominator maps to 0."""
+    u_inv = pow(u, -1, p)
+    values = []
+    for terms in (x.num, x.den):
+        if terms is None:
+            values.append(2)                # the halves of num and den cancel
+            continue
+        total = 0
+        for e, c in terms.items():
+            q = int(c.q)
+            if q % p == 0:
+                return None
+            total += int(c.p) * pow(q, -1, p) * (pow(u, e, p) + pow(u_inv, e, p))
+        values.append(total % p)
+    if values[1] == 0:
+        return None
+    return values[0] * pow(values[1], -1, p) % p
 
 
 def ratio_irrational(x, y) -> bool:

@@ -519,14 +519,10 @@ def _sparse_system(atoms, conductor: int, degree: int):
     Gauss sums, the tower of square roots over the cosines' sparse field instead; or
     FieldTooLargeError (one line, before any work) when a square root's Gauss sum would be
     too long and the tower does not apply."""
-    long_sums = [atom for atom in atoms if atom[0] == "sqrt" and sparse_cyclotomic.gauss_terms(
-        cyclotomic.squarefree_decomposition(atom[1])[1]) > SPARSE_GAUSS_LEVEL]
-    if long_sums:
-        cosines = 4
-        for atom in atoms:
-            if atom[0] == "cos":
-                cosines = cyclotomic.lcm(cosines, cyclotomic.turn_conductor(atom[1], "cos"))
-        return SparseKummerSystem(cosines)
+    if any(atom[0] == "sqrt" and sparse_cyclotomic.gauss_terms(
+            cyclotomic.squarefree_decomposition(atom[1])[1]) > SPARSE_GAUSS_LEVEL
+           for atom in atoms):
+        return SparseKummerSystem(_cosine_conductor(atoms))
     for atom in atoms:
         if atom[0] == "sqrt":
             s = cyclotomic.squarefree_decomposition(atom[1])[1]
@@ -545,13 +541,19 @@ def _kummer_system(atoms, limit: int):
     (``sqrt(145)`` with turns j/997: Q(zeta_578260)) while the cosines alone fit: a tower over
     Q(zeta_M) of the cosines whose levels are the square roots (:mod:`.kummer` decides which
     are new), or None when the cosines alone need the sparse field."""
+    conductor = _cosine_conductor(atoms)
+    if cyclotomic.euler_phi(conductor) > limit:
+        return None
+    return CyclotomicTowerSystem(conductor, base_checked=False)
+
+
+def _cosine_conductor(atoms) -> int:
+    """The least M divisible by 4 with Q(zeta_M) holding the cosines among the atoms."""
     conductor = 4
     for atom in atoms:
         if atom[0] == "cos":
             conductor = cyclotomic.lcm(conductor, cyclotomic.turn_conductor(atom[1], "cos"))
-    if cyclotomic.euler_phi(conductor) > limit:
-        return None
-    return CyclotomicTowerSystem(conductor, base_checked=False)
+    return conductor
 
 
 def _mixed_system(atoms):

@@ -476,24 +476,5 @@ def _kummer_image_of(x, p: int, w: int, roots: list):
         for c in reversed(poly.numer().coeffs()):
             value = (value * w + int(c)) % p
         return value * pow(den, -1, p) % p
-    return _sparse_image(x, p, w)
-
-
-def _sparse_image(x, p: int, w: int):
-    """num/den in cosine form: cos(2 pi e / N) -> (w^e + w^-e) / 2; None at a pole."""
-    w_inv = pow(w, -1, p)
-    values = []
-    for terms in (x.num, x.den):
-        if terms is None:
-            values.append(2)
-            continue
-        total = 0
-        for e, c in terms.items():
-            q = int(c.q)
-            if q % p == 0:
-                return None
-            total += int(c.p) * pow(q, -1, p) * (pow(w, e, p) + pow(w_inv, e, p))
-        values.append(total % p)
-    if values[1] % p == 0:
-        return None
-    return values[0] * pow(values[1], -1, p) % p
+    from .cyclotomic_modular import sparse_image
+    return sparse_image(x, p, w)
