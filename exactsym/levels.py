@@ -22,6 +22,7 @@ from .configuration import Configuration, no_cycle_collection
 from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels, sum_of_products
 from .exact import FieldElement, RationalSystem, exact_key, exact_sorted, fmpq
 from .exact.field import PolyElement
+from .exact.tower import TowerElement
 from .level_radius import LevelRadius
 from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
                        float_differences, float_squared_norms,
@@ -294,7 +295,7 @@ class AlgebraicLevels(RationalLevels):
         if enc.unit:
             return enc.scaled_r2(i)
         if self.circle is not None and self._d2 is None and \
-                isinstance(enc.homogeneous[2], PolyElement):
+                isinstance(enc.homogeneous[2], (PolyElement, TowerElement)):
             # |p - C|^2 from the divided centre (one inverse, shared with every reader of
             # the SEC centre), as |p|^2 - 2 p.C + |C|^2 with |C|^2 once: C's coefficients
             # have thousands of bits and p's a few, so p.C costs a third of (p - C)^2

@@ -20,6 +20,7 @@ from flint import arb, ctx
 
 from .exact import fmpq, sign
 from .exact.field import PolyElement
+from .exact.tower import TowerElement
 from .geometry import (Point, Turn, circumcentre_homogeneous, midpoint,
                        orientation_homogeneous, squared_distance)
 
@@ -50,8 +51,11 @@ class Circle:
     def centre(self) -> Point:
         if self._centre is None:
             x, y, d = self.homogeneous
-            if isinstance(d, PolyElement) and not d.is_rational():
-                inverse = 1 / d                   # one field inverse, not two
+            if isinstance(d, (PolyElement, TowerElement)) and not d.is_rational():
+                # one field inverse, not two; over a sparse base both coordinates then
+                # share its denominator (sums of the directions p - C do not
+                # cross-multiply two equal ones)
+                inverse = 1 / d
                 self._centre = (x * inverse, y * inverse)
             else:
                 self._centre = (x / d, y / d)

@@ -260,3 +260,22 @@ def test_sums_over_one_denominator_keep_it():
     total = u + v
     assert total.den == den and total == SparseCyclotomic(ctx, {1: fmpq(1), 2: fmpq(2)}, den)
     assert total - v == u
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.integers(-4, 4), min_size=8, max_size=8), st.integers(1, 9),
+       st.sampled_from(["997", "999983"]))
+def test_angle_keys_refuted_in_f_p_only_when_not_parallel(cs, k, den):
+    """The F_p filter of AngleKey equality (ratio_keys._cross_nonzero_mod_p) says "not
+    parallel" only for vectors whose exact cross product is non-zero, and never for a
+    positive multiple."""
+    from exactsym.exact.fused import cross_is_zero
+    from exactsym.paper.ratio_keys import _cross_nonzero_mod_p
+    atoms = ["1", f"cos(2*pi/{den})", "sqrt(145)", f"sqrt(374)*cos(6*pi/{den})"]
+    _, values = evaluate_all([parse_expression(e) for e in atoms])
+    d = sum((c * v for c, v in zip(cs[:4], values)), fmpq(0))
+    e = sum((c * v for c, v in zip(cs[4:], values)), fmpq(0))
+    d2, e2 = d * fmpq(k, 3), e * fmpq(k, 3)
+    assert not _cross_nonzero_mod_p(d, e, d2, e2)
+    if _cross_nonzero_mod_p(d, e, e + 1, d):
+        assert not cross_is_zero((d, e), (e + 1, d))

@@ -16,7 +16,7 @@ from __future__ import annotations
 from flint import arb, ctx, fmpq, fmpq_poly
 
 from ..exact import FieldElement, exact_key, sign
-from ..exact.cyclotomic_modular import quotient_irrational, ratio_irrational
+from ..exact.cyclotomic_modular import images, quotient_irrational, ratio_irrational
 from ..exact.field import PolyElement
 from ..exact.sparse_cyclotomic import SparseCyclotomic
 from ..exact.tower import TowerElement, _raw as tower_raw, leaf_ratio
@@ -290,10 +290,24 @@ class AngleKey(RatioKey):
                 or self.dot_sign != other.dot_sign:
             return False
         (d, e), (d2, e2) = self.dot_cross(), other.dot_cross()
+        if _cross_nonzero_mod_p(d, e, d2, e2):
+            return False
         return cross_is_zero((d, e), (d2, e2))
 
     def __hash__(self) -> int:
         return self._hash
+
+
+def _cross_nonzero_mod_p(d, e, d2, e2) -> bool:
+    """True only when d e2 - e d2 != 0 is proved by its image under a ring map into F_p
+    (:func:`exactsym.exact.cyclotomic_modular.images`: zero maps to zero); False means
+    "not proved".  Equal hash cells of unequal angles are then refuted without the exact
+    products (over a sparse base they cross-multiply denominators: issue 9)."""
+    found = images((d, e, d2, e2))
+    if found is None:
+        return False
+    p, sides = found
+    return any((a * b2 - b * a2) % p for a, b, a2, b2 in sides)
 
 
 def gap_ratio_key(a, b, c: int, dot_sign: int):
