@@ -234,11 +234,6 @@ class Encoder:
         if not tower.radicands:         # every radical denested: the real-cyclotomic field
             return
         if tower.classes is not None:   # square roots of rationals only: one joint proof
-            if tower.field.degree > KUMMER_BASE_DEGREE:
-                raise CertificateError(
-                    f"square roots over Q(zeta_{tower.conductor}) (degree "
-                    f"{tower.field.degree}): the checker would multiply numbers of degree "
-                    f"{tower.field.degree // 2} term by term (limit {KUMMER_BASE_DEGREE})")
             primes = kummer_witness(tower)
             if primes is None:
                 raise CertificateError(f"no primes below 2^40 prove the square roots of "
@@ -366,12 +361,6 @@ class Encoder:
         if value.degree() <= 0:
             return rational_text(value.coeffs()[0] if value.degree() == 0 else 0)
         return [rational_text(c) for c in value.coeffs()]
-
-
-#: largest phi(M) of the base of a tower of square roots of rationals that certify writes
-#: (the checker multiplies base numbers term by term: at degree 996 a two-robot certificate
-#: took minutes)
-KUMMER_BASE_DEGREE = 256
 
 
 def _level_proofs(tower, witness, entry) -> list:

@@ -107,11 +107,13 @@ def test_square_roots_beyond_the_dense_field_become_levels():
 
 
 def test_a_nested_radical_over_a_large_base_is_refused_at_once():
-    """The complete square-root test over Q(zeta_3988) would factor norms of degree 3984:
-    refused (one line, exit 2) instead of running for minutes."""
-    system, (a,) = _system(["sqrt(145)*cos(2*pi/997)"])
+    """The complete square-root test over Q(zeta_404) (phi = 200, beyond the base bound 192)
+    would factor norms of degree 400: refused (one line, exit 2) instead of running for
+    minutes."""
+    system, (a,) = _system(["sqrt(1499)*cos(2*pi/101)"])
+    assert isinstance(system, CyclotomicTowerSystem) and system.tower.field.degree == 200
     with pytest.raises(FieldTooLargeError, match="beyond the limits"):
-        system.sqrt(a + 5)
+        system.sqrt(a + 50)
 
 
 def _toml(points) -> str:
@@ -182,11 +184,17 @@ def test_kummer_levels_certify_and_tampering_is_caught(tmp_path):
     _rejected(bad, "positive rational")
 
 
-def test_certify_refuses_kummer_levels_over_a_large_base(tmp_path):
-    """Over Q(zeta_3988) the checker would multiply numbers of degree 996 term by term."""
+def test_turns_j_997_put_square_roots_over_the_sparse_base(tmp_path):
+    """Beyond phi(M) = 256 (Q(zeta_3988)) the levels sit over the sparse base: a moved
+    configuration's SEC centre is then a quotient, not a dense inverse of seconds; certify
+    has no format for it yet and refuses it in one line."""
+    from exactsym.exact.evaluate import KUMMER_DENSE_DEGREE, SparseKummerSystem
+    system, _ = _system(["sqrt(145)*cos(2*pi/997)"])
+    assert isinstance(system, SparseKummerSystem) and system.tower.conductor == 3988
+    assert KUMMER_DENSE_DEGREE < 1992
     path = tmp_path / "two.toml"
     path.write_text(_toml([("sqrt(145)", "1/997"), ("sqrt(374)", "300/997")]))
-    with pytest.raises(CertificateError, match="term by term"):
+    with pytest.raises(CertificateError, match="no certificate format"):
         make_certificate(load(str(path)))
 
 

@@ -536,14 +536,23 @@ def _sparse_system(atoms, conductor: int, degree: int):
     return SparseCyclotomicSystem(conductor)
 
 
+#: largest phi(M) of a dense base under square-root levels; beyond it the sparse base
+KUMMER_DENSE_DEGREE = 256
+
+
 def _kummer_system(atoms, limit: int):
     """Square roots of rationals whose Gauss sums would take the field beyond the dense limit
     (``sqrt(145)`` with turns j/997: Q(zeta_578260)) while the cosines alone fit: a tower over
     Q(zeta_M) of the cosines whose levels are the square roots (:mod:`.kummer` decides which
     are new), or None when the cosines alone need the sparse field."""
     conductor = _cosine_conductor(atoms)
-    if cyclotomic.euler_phi(conductor) > limit:
+    degree = cyclotomic.euler_phi(conductor)
+    if degree > limit:
         return None
+    if degree > KUMMER_DENSE_DEGREE:
+        # over Q(zeta_3988) the paper layer's divisions (a moved configuration's SEC
+        # centre) cost seconds each in the dense field, microseconds as sparse quotients
+        return SparseKummerSystem(conductor)
     return CyclotomicTowerSystem(conductor, base_checked=False)
 
 
