@@ -273,17 +273,20 @@ def test_sums_over_one_denominator_keep_it():
 @settings(max_examples=30, deadline=None)
 @given(st.lists(st.integers(-4, 4), min_size=8, max_size=8), st.integers(1, 9),
        st.sampled_from(["997", "999983"]))
-def test_angle_keys_refuted_in_f_p_only_when_not_parallel(cs, k, den):
-    """The F_p filter of AngleKey equality (ratio_keys._cross_nonzero_mod_p) says "not
-    parallel" only for vectors whose exact cross product is non-zero, and never for a
-    positive multiple."""
-    from exactsym.exact.fused import cross_is_zero
-    from exactsym.paper.ratio_keys import _cross_nonzero_mod_p
+def test_angle_keys_refuted_in_f_p_only_when_unequal(cs, k, den):
+    """The F_p filter of AngleKey equality (ratio_keys._angles_differ_mod_p) says "unequal
+    angles" only when conj(a) b and conj(a2) b2 are not parallel exactly, and never for
+    the same angle between scaled vectors."""
+    from exactsym.exact.fused import complex_product, cross_is_zero
+    from exactsym.paper.ratio_keys import _angles_differ_mod_p
     atoms = ["1", f"cos(2*pi/{den})", "sqrt(145)", f"sqrt(374)*cos(6*pi/{den})"]
     _, values = evaluate_all([parse_expression(e) for e in atoms])
-    d = sum((c * v for c, v in zip(cs[:4], values)), fmpq(0))
-    e = sum((c * v for c, v in zip(cs[4:], values)), fmpq(0))
-    d2, e2 = d * fmpq(k, 3), e * fmpq(k, 3)
-    assert not _cross_nonzero_mod_p(d, e, d2, e2)
-    if _cross_nonzero_mod_p(d, e, e + 1, d):
-        assert not cross_is_zero((d, e), (e + 1, d))
+    x = sum((c * v for c, v in zip(cs[:4], values)), fmpq(0))
+    y = sum((c * v for c, v in zip(cs[4:], values)), fmpq(0))
+    a, b = (x, y), (y + 1, x - 2)
+    s = fmpq(k, 3)
+    assert not _angles_differ_mod_p(a, b, (s * x, s * y), (2 * b[0], 2 * b[1]))
+    a2, b2 = (x + 1, y), b
+    if _angles_differ_mod_p(a, b, a2, b2):
+        assert not cross_is_zero(complex_product((a[0], -a[1]), b),
+                                 complex_product((a2[0], -a2[1]), b2))

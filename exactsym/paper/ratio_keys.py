@@ -289,25 +289,32 @@ class AngleKey(RatioKey):
         if self._hash != other._hash or self.home is not other.home \
                 or self.dot_sign != other.dot_sign:
             return False
-        (d, e), (d2, e2) = self.dot_cross(), other.dot_cross()
-        if _cross_nonzero_mod_p(d, e, d2, e2):
+        if _angles_differ_mod_p(self.a, self.b, other.a, other.b):
             return False
+        (d, e), (d2, e2) = self.dot_cross(), other.dot_cross()
         return cross_is_zero((d, e), (d2, e2))
 
     def __hash__(self) -> int:
         return self._hash
 
 
-def _cross_nonzero_mod_p(d, e, d2, e2) -> bool:
-    """True only when d e2 - e d2 != 0 is proved by its image under a ring map into F_p
-    (:func:`exactsym.exact.cyclotomic_modular.images`: zero maps to zero); False means
-    "not proved".  Equal hash cells of unequal angles are then refuted without the exact
-    products (over a sparse base they cross-multiply denominators: issue 9)."""
-    found = images((d, e, d2, e2))
+def _angles_differ_mod_p(a, b, a2, b2) -> bool:
+    """True only when the angle from a to b is proved unequal to the one from a2 to b2:
+    (d, e) = conj(a) b and (d2, e2) = conj(a2) b2 have d e2 - e d2 != 0 under a ring map
+    into F_p (:func:`exactsym.exact.cyclotomic_modular.images` of the eight coordinates;
+    zero maps to zero).  False means "not proved".  Equal hash cells of unequal angles
+    are then refuted without any exact product (over a sparse base those cross-multiply
+    denominators: issue 9)."""
+    found = images((*a, *b, *a2, *b2))
     if found is None:
         return False
     p, sides = found
-    return any((a * b2 - b * a2) % p for a, b, a2, b2 in sides)
+    for ax, ay, bx, by, cx, cy, ex, ey in sides:
+        d, e = ax * bx + ay * by, ax * by - ay * bx
+        d2, e2 = cx * ex + cy * ey, cx * ey - cy * ex
+        if (d * e2 - e * d2) % p:
+            return True
+    return False
 
 
 def gap_ratio_key(a, b, c: int, dot_sign: int):
