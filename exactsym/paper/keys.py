@@ -12,6 +12,8 @@ from __future__ import annotations
 from functools import cmp_to_key
 from math import atan2, gcd, pi
 
+from flint import ctx
+
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
@@ -160,6 +162,12 @@ class LineKey:
             if parts is not None:
                 s, x, y = parts
                 return (s, _Slope(x, y))
+            key = self.canon[3] if isinstance(self.canon, tuple) and len(self.canon) == 4 \
+                else None
+            if isinstance(key, _DirectionKey) and key.factors is not None:
+                # ordered from the balls of its two factors: the product a b, a tower's
+                # exact multiplication, only if they never separate
+                return (key.signs[0], _Slope(None, None, key.factors, key.vector))
         if self._vector is None:
             return self.value
         x, y = self._vector
@@ -294,22 +302,36 @@ class _Slope:
     Arb balls at rising precision (distinct lines have distinct slopes), and if they
     never separate, the exact sign of y x' - y' x over sign(x x')."""
 
-    __slots__ = ("x", "y")
+    __slots__ = ("x", "y", "_factors", "_make")
 
-    def __init__(self, x, y):
-        self.x, self.y = x, y
+    def __init__(self, x, y, factors=None, make=None):
+        """``factors`` (a, b) and ``make``: the direction is the complex product a b, made
+        by ``make()`` only if the balls never separate (its balls come from a's and b's)."""
+        self.x, self.y, self._factors, self._make = x, y, factors, make
+
+    def _ball(self, prec: int):
+        with ctx.workprec(prec):
+            if self.x is None:
+                (ax, ay), (bx, by) = ([ball_at(c, prec) for c in v] for v in self._factors)
+                return (ax * by + ay * bx) / (ax * bx - ay * by)
+            return ball_at(self.y, prec) / ball_at(self.x, prec)
+
+    def _exact(self) -> tuple:
+        if self.x is None:
+            self.x, self.y = self._make()
+        return self.x, self.y
 
     def _cmp(self, other) -> int:
         prec = 64
         for _ in range(4):
-            a = ball_at(self.y, prec) / ball_at(self.x, prec)
-            b = ball_at(other.y, prec) / ball_at(other.x, prec)
+            a, b = self._ball(prec), other._ball(prec)
             if a < b:
                 return -1
             if a > b:
                 return 1
             prec *= 4
-        return sign(self.y * other.x - other.y * self.x) * sign(self.x) * sign(other.x)
+        (x, y), (ox, oy) = self._exact(), other._exact()
+        return sign(y * ox - oy * x) * sign(x) * sign(ox)
 
     def __lt__(self, other) -> bool:
         return self._cmp(other) < 0
