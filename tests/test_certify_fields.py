@@ -20,6 +20,7 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 from exactsym import checker
 from exactsym.certificate import make_certificate
 from exactsym.configuration import load
+from certificate_checks import rejected
 
 ROOT = Path(__file__).resolve().parent.parent
 _spec = importlib.util.spec_from_file_location("certify_fields", ROOT / "bench" /
@@ -41,12 +42,6 @@ def certify_text(tmp_path: Path, points: list[str]) -> dict:
     ok, message = checker.verify_certificate(cert)
     assert ok, message
     return cert
-
-
-def rejected(cert: dict, fragment: str) -> None:
-    cert["configuration_sha256"] = checker.digest(cert["configuration"])
-    ok, message = checker.verify_certificate(cert)
-    assert not ok and fragment in message, message
 
 
 @pytest.mark.parametrize("name", [n for n in fields.CASES if n not in SLOW])

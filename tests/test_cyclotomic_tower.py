@@ -31,6 +31,7 @@ from exactsym.exact.tower import TowerElement
 from exactsym.expr import MAX_LENGTH, parse_expression
 from exactsym.levels import levels_of
 from exactsym.symmetry import symmetry_group
+from certificate_checks import rejected as _rejected
 
 P = parse_expression
 EVALUATE = importlib.import_module("exactsym.exact.evaluate")
@@ -210,12 +211,6 @@ def _cert(tmp_path, rows: list[str]) -> dict:
     ok, message = checker.verify_certificate(cert)
     assert ok, message
     return cert
-
-
-def _rejected(cert: dict, fragment: str) -> None:
-    cert["configuration_sha256"] = checker.digest(cert["configuration"])
-    ok, message = checker.verify_certificate(cert)
-    assert not ok and fragment in message, message
 
 
 ISSUE_9 = ['["sqrt(1+sqrt(2))", "0"]', '["cos(2*pi/13)", "sin(2*pi/13)"]', '["1", "1"]',

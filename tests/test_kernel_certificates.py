@@ -16,6 +16,7 @@ import pytest
 from exactsym import checker
 from exactsym.certificate import make_certificate
 from exactsym.configuration import load
+from certificate_checks import rejected as _rejected
 
 
 def _cert(tmp_path, points: list[str]) -> dict:
@@ -25,12 +26,6 @@ def _cert(tmp_path, points: list[str]) -> dict:
     ok, message = checker.verify_certificate(cert)
     assert ok, message
     return cert
-
-
-def _rejected(cert: dict, fragment: str) -> None:
-    cert["configuration_sha256"] = checker.digest(cert["configuration"])
-    ok, message = checker.verify_certificate(cert)
-    assert not ok and fragment in message, message
 
 
 @pytest.mark.parametrize("points, group", [

@@ -23,6 +23,7 @@ from exactsym.exact.kummer import SquareClasses
 from exactsym.exact.tower import TowerElement
 from exactsym.expr import parse_expression
 from exactsym.symmetry import symmetry_group
+from certificate_checks import rejected as _rejected
 
 
 def _free_primes(q: fmpq, base) -> frozenset:
@@ -140,12 +141,6 @@ def _k7(tmp_path):
     ok, message = checker.verify_certificate(cert)
     assert ok, message
     return cert
-
-
-def _rejected(cert: dict, fragment: str) -> None:
-    cert["configuration_sha256"] = checker.digest(cert["configuration"])
-    ok, message = checker.verify_certificate(cert)
-    assert not ok and fragment in message, message
 
 
 def test_kummer_levels_certify_and_tampering_is_caught(tmp_path):

@@ -24,6 +24,7 @@ from exactsym.exact.multiquadratic import MQ
 from exactsym.exact.tower import TowerElement
 from exactsym.exact.tower_proof import nonsquare_witness
 from exactsym.expr import MAX_LENGTH, parse_expression
+from certificate_checks import rejected as _rejected
 
 P = parse_expression
 
@@ -241,12 +242,6 @@ def _cert(tmp_path, rows: list[str]) -> dict:
     ok, message = checker.verify_certificate(cert)
     assert ok, message
     return cert
-
-
-def _rejected(cert: dict, fragment: str) -> None:
-    cert["configuration_sha256"] = checker.digest(cert["configuration"])
-    ok, message = checker.verify_certificate(cert)
-    assert not ok and fragment in message, message
 
 
 @pytest.mark.parametrize("rows, group", [

@@ -461,14 +461,15 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
             return FieldSystem(cyclotomic.cyclotomic_field(conductor))
         if any(atom[0] == "cos" for atom in atoms):
             if degree > cyclotomic.MAX_DEGREE:
-                kummer = _kummer_system(atoms, limit)
-                if kummer is not None:
-                    return kummer
-                if limit < cyclotomic.MAX_DEGREE and \
-                        _kummer_system(atoms, cyclotomic.MAX_DEGREE) is not None:
+                # the square roots' Gauss sums leave the dense field; the cosines alone?
+                cosines = _cosine_conductor(atoms)
+                phi = cyclotomic.euler_phi(cosines)
+                if phi <= limit:
+                    return _kummer_system(cosines, phi)
+                if phi <= cyclotomic.MAX_DEGREE:
                     # certify's lower limit: these square roots would be Gauss sums of
                     # hundreds of terms in the sparse field; the caller falls back to the
-                    # limit check uses (the tower over the dense field)
+                    # limit check uses (the square roots as tower levels)
                     raise FieldTooLargeError("square roots beyond the sparse field's reach")
             return _sparse_system(atoms, conductor, degree)
     if all(kind != "cos" for kind, *_ in atoms):   # nested radicals of square roots only
@@ -540,15 +541,11 @@ def _sparse_system(atoms, conductor: int, degree: int):
 KUMMER_DENSE_DEGREE = 256
 
 
-def _kummer_system(atoms, limit: int):
+def _kummer_system(conductor: int, degree: int):
     """Square roots of rationals whose Gauss sums would take the field beyond the dense limit
-    (``sqrt(145)`` with turns j/997: Q(zeta_578260)) while the cosines alone fit: a tower over
-    Q(zeta_M) of the cosines whose levels are the square roots (:mod:`.kummer` decides which
-    are new), or None when the cosines alone need the sparse field."""
-    conductor = _cosine_conductor(atoms)
-    degree = cyclotomic.euler_phi(conductor)
-    if degree > limit:
-        return None
+    (``sqrt(145)`` with turns j/997: Q(zeta_578260)) while the cosines alone fit Q(zeta_M)
+    (``conductor``, of degree ``degree``): a tower over Q(zeta_M) whose levels are the square
+    roots (:mod:`.kummer` decides which are new)."""
     if degree > KUMMER_DENSE_DEGREE:
         # over Q(zeta_3988) the paper layer's divisions (a moved configuration's SEC
         # centre) cost seconds each in the dense field, microseconds as sparse quotients

@@ -35,6 +35,7 @@ from flint import arb, ctx, fmpq, fmpz
 
 from .field import FieldElement
 from .multiquadratic import MQ
+from .sparse_cyclotomic import SparseCyclotomic
 
 _ZERO = MQ()
 _MAX_PREC = 1 << 18
@@ -440,7 +441,6 @@ def leaf_ratio(num, den):
         return num.terms.get(m, fmpq(0)) / c
     dp, np_ = getattr(den, "poly", None), getattr(num, "poly", None)
     if dp is None or np_ is None or not den:
-        from .sparse_cyclotomic import SparseCyclotomic
         if isinstance(den, SparseCyclotomic) and den and \
                 isinstance(num, (SparseCyclotomic, MQ)):
             q = num / den          # a sparse base: a quotient, no inverse; exact test

@@ -19,9 +19,13 @@ Public names: :func:`nonsquare_witness`, :func:`cyclotomic_nonsquare_witness`,
 
 from __future__ import annotations
 
+from math import gcd, lcm
+
 from flint import fmpq, fmpz
 
+from .cyclotomic_modular import sparse_image
 from .cyclotomic_sqrt import image_mod, root_of_unity_mod, split_primes
+from .factor import factorization
 from .multiquadratic import MQ
 from .tower import Tower, _split, level, sub
 
@@ -312,11 +316,10 @@ def cyclotomic_nonsquare_witness(tower, lev: int, limit: int = 200_000):
     image of each lower radicand, under which r_lev is a non-residue and every lower radicand
     is p-integral with a norm prime to p (docs/certificates.md, "Towers over Q(zeta_M)").
     None if no prime below ``limit`` is found."""
-    from math import gcd
     m = tower.conductor
     radicands = tower.radicands[:lev]
     base_norms = [_tower_norm_to_base(tower, r) for r in radicands[:-1]]
-    half = [k for k in range(1, m // 2 + 1) if gcd(k, m) == 1] if m > 2 else [1]
+    half = _half_units(m)
     for p in split_primes(m, start=3):
         if p >= limit:
             return None
@@ -342,6 +345,12 @@ def cyclotomic_nonsquare_witness(tower, lev: int, limit: int = 200_000):
                 thetas.remove(chosen)
                 return p, [chosen] + thetas, roots
     return None
+
+
+def _half_units(m: int) -> list:
+    """The units k of Z/m up to sign (1 <= k <= m/2): w^k + w^-k runs over the roots of
+    Psi_m modulo a prime p = 1 mod m (w a primitive m-th root of unity there)."""
+    return [k for k in range(1, m // 2 + 1) if gcd(k, m) == 1] if m > 2 else [1]
 
 
 def _base_parts(x):
@@ -383,10 +392,9 @@ def kummer_witness(tower, limit: int = 1 << 40):
     (docs/certificates.md, "Square roots of rationals over Q(zeta_M)").  One prime per
     level, never a chain of roots: L levels would need a prime where L - 1 radicands are
     residues.  None if the primes up to ``limit`` do not reach rank L."""
-    from math import gcd
     m = tower.conductor
     values = [int(r.rational().p) * int(r.rational().q) for r in tower.radicands]
-    half = [k for k in range(1, m // 2 + 1) if gcd(k, m) == 1] if m > 2 else [1]
+    half = _half_units(m)
     rows: dict = {}
     out = []
     for p in split_primes(m, start=3):
@@ -418,8 +426,6 @@ def _kummer_maps(tower):
     every radicand is a residue ((l | p) = (p | l) = 1 by reciprocity, p = 1 mod 4, and
     (2 | p) = 1 as p = 1 mod 8): y_i -> roots[i] and its negative.  None when N has no
     second embedding (N <= 6)."""
-    from math import gcd, lcm
-    from .factor import factorization
     n = tower.conductor
     j = next((j for j in range(2, n - 1) if gcd(j, n) == 1), None)
     if j is None:
@@ -476,5 +482,4 @@ def _kummer_image_of(x, p: int, w: int, roots: list):
         for c in reversed(poly.numer().coeffs()):
             value = (value * w + int(c)) % p
         return value * pow(den, -1, p) % p
-    from .cyclotomic_modular import sparse_image
     return sparse_image(x, p, w)
