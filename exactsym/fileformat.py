@@ -59,6 +59,7 @@ EXPECT_KEYS: dict[str, type | tuple] = {
     # the paper on the whole configuration (exactsym.paper.family)
     "paper_leader": int,            # the robot ElectLeader elects; -1: none
     "audit_agrees": bool,           # exactsym.audit finds no false statement
+    "audit_false": list,            # the labels it finds false, exactly (any order)
     # the gathering simulator (exactsym.gathering.cases): the outcome and the run's setting
     "gather_outcome": str, "gather_label": str, "gather_invariant": str,
     "gather_robots": list, "gather_time": str, "gather_scheduler": str, "gather_seed": int,

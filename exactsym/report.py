@@ -296,6 +296,10 @@ EXPECTATIONS = {
     "paper_orderable": (lambda r: (r.get("paper") or {}).get("orderable"), _equal),
     "paper_leader": (_paper_leader, _equal),
     "audit_agrees": (lambda r: (r.get("audit") or {}).get("agrees"), _equal),
+    # the set of statements the audit finds false (order and repeats ignored)
+    "audit_false": (lambda r: sorted({d["statement"] for d in
+                                      (r.get("audit") or {}).get("discrepancies", [])}),
+                    lambda want, got: sorted(set(want)) == got),
     # the paper on each level polygon
     "paper_symmetric": _level("symmetric"),
     "paper_straight": _level("straight"),

@@ -136,7 +136,7 @@ def _rotate_vector(v, tau, times: int = 1):
 
 
 def _epsilon_rotation(place: _Placement, robot: int, orientation: int, accept,
-                      all_robots: Sequence[int], max_halvings: int = 6):
+                      all_robots: Sequence[int], max_halvings: int = 6, cap=None):
     """Move ``robot`` by epsilon along its circle, clockwise for the observer of this
     handedness (the direction Make_SymToAsym calls "its right side"; MakeAsym names
     none).  Polar: epsilon = a quarter of the smallest angular gap between rays of the
@@ -144,10 +144,14 @@ def _epsilon_rotation(place: _Placement, robot: int, orientation: int, accept,
     Cartesian: the rational rotation of Pythagorean parameter tau = -orientation/4,
     halved until four such rotations stay inside the gap to the neighbouring ray, then
     until ``accept`` holds.  When no epsilon tried is accepted, the first one is used.
+    ``cap`` (polar): a turn epsilon must stay below; the first epsilon is then at most
+    half of it (:func:`_stable_turn_cap`).
     Returns ``(amount_text, accepted)``; the placement is left moved."""
     if place.polar:
         start = place.turns[robot]
         first = _global_gap(place, [i for i in all_robots if place.r2[i] != 0]) / 4
+        if cap is not None and first >= cap:
+            first = cap / 2
         delta = first
         for _ in range(max_halvings + 1):
             place.set_turn(robot, start - orientation * delta)
@@ -173,6 +177,40 @@ def _epsilon_rotation(place: _Placement, robot: int, orientation: int, accept,
         tau /= 2
     place.set_vector(robot, _rotate_vector(u, first))
     return f"rotation with tau = {number_text(first)}", False
+
+
+def _stable_turn_cap(directions, start, sense: int):
+    """MakeAsym line 26 (polar): how far, in turns, v may move from turn ``start`` in the
+    sense ``sense`` (+1 counter-clockwise) before the ordering of G_it could change.
+
+    G_it is G_t's polygon (turns ``directions``) with v's ray added.  Elect_Leader_Asym
+    compares the vertices' strings entry by entry, each entry a gap between consecutive
+    rays (or its chord, equal for gaps g and 1 - g).  Only v's two gaps change as v
+    moves, so every comparison keeps its outcome until one of v's gaps meets a fixed gap
+    g or 1 - g, or v's two gaps meet each other: the first such position bounds epsilon.
+    This is the reading of the paper's "epsilon" that ``obs-v-move`` needs (docstring
+    of :func:`make_asym`); a quarter of the smallest gap between rays alone can carry v
+    across a line of symmetry of G_t (docs/interpretations.md)."""
+    ts = sorted(set(normal_turn(t) for t in directions))
+    if not ts:
+        return None
+    # a, b: the rays of G_t around v's path (v on a ray of G_t: the gap it moves into)
+    ahead = [normal_turn(sense * (t - start)) for t in ts]
+    b_dist = min((d for d in ahead if d != 0), default=fmpq(1))
+    a_dist = min((normal_turn(-d) for d in ahead if d != 0), default=fmpq(1))
+    if 0 in ahead:
+        a_dist = fmpq(0)
+    span = a_dist + b_dist
+    gaps = [y - x for x, y in zip(ts, ts[1:])] + [ts[0] + 1 - ts[-1]]
+    gaps.remove(span if span < 1 else max(gaps))   # v's gap: no longer fixed
+    # after moving d: v's gaps are a_dist + d (behind) and b_dist - d (ahead)
+    events = [span / 2 - a_dist]
+    for g in set(gaps):
+        for h in {g, 1 - g}:
+            events += [h - a_dist, b_dist - h]
+    events.append(b_dist)
+    positive = [e for e in events if e > 0]
+    return min(positive) if positive else None
 
 
 _FULL_TURN = (1, 0)
@@ -240,7 +278,11 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
     (``mq_closure.decided_sqrt`` without its bounded split, :mod:`exactsym.exact.adjoin_sqrt`).
     "Move v, epsilon distance" for a single-vertex polygon: along its circle (the robot at
     C moves to a quarter of the smallest radius, towards the first vertex of G_t
-    counter-clockwise from the observer's x axis: no invariant direction exists there)."""
+    counter-clockwise from the observer's x axis: no invariant direction exists there);
+    polar, its epsilon also stays below the first turn at which the ordering of G_it
+    could change (:func:`_stable_turn_cap`): the paper's epsilon is "small", and
+    ``obs-v-move`` (the leader chosen through G_it is the same while v moves) holds only
+    for such an epsilon."""
     alg = "MakeAsym"
     t = len(Gp)
     Gt = Gp[-1]
@@ -353,7 +395,10 @@ def make_asym(config: Configuration, ring_data: Levels, Gp: Sequence[Ring], trac
         else:
             def accept_pair(pl):
                 return not is_symmetric_pair(_moved_ring(gi, pl), Gt)
-            amount, pair_ok = _epsilon_rotation(place, v, orientation, accept_pair, everyone)
+            cap = (_stable_turn_cap(Gt.polygon.directions, place.turns[v], -orientation)
+                   if place.polar and Gt.polygon is not None else None)
+            amount, pair_ok = _epsilon_rotation(place, v, orientation, accept_pair, everyone,
+                                                cap=cap)
             moves.append({"robot": v, "algorithm": alg, "line": 26, "kind": "epsilon",
                           "amount": amount})
             trace_entry(trace, alg, 26, [gi.name], "obs-v-move",
