@@ -45,7 +45,7 @@ from .exact.sparse_cyclotomic import SparseCyclotomic
 from .exact.tower import TowerElement
 from .exact.sparse_tower import SparseKummerTower
 from .exact.tower_proof import (cyclotomic_nonsquare_witness, kummer_witness,
-                                nonsquare_witness)
+                                legendre_rank_primes, nonsquare_witness)
 from .prime_certificates import (MR_LIMIT, PrimalityError, hashing_prime_factors,
                                  primality_proofs)
 
@@ -126,9 +126,13 @@ class Encoder:
         range the ``primality`` proofs of prime_certificates), the prime l = 1 mod N and the
         root of order N mod l (its hash), and every denominator prime to l; numbers are
         {e: c} = sum c cos(2 pi e/N)."""
-        context = system.context
         self.field = None
-        self.sparse = context
+        self.sparse = system.context
+        self.spec = self._sparse_spec(system.context, values)
+
+    def _sparse_spec(self, context, values) -> dict:
+        """The ``{"sparse-cyclotomic": ...}`` field of :meth:`_sparse` (``values``: sparse
+        numbers or rationals, whose denominators must be prime to l)."""
         ell = context.ell                       # l - 1 = k N: factored from N's factors
         known = {ell: hashing_prime_factors(ell, context.n, context.factors)} \
             if ell >= MR_LIMIT else {}
@@ -144,15 +148,45 @@ class Encoder:
             elif int(fmpq(v).q if not isinstance(v, FieldElement) else v.rational().q) \
                     % context.ell == 0:
                 raise CertificateError("a denominator is divisible by the hashing prime")
-        self.spec = {"sparse-cyclotomic": {
+        spec = {"sparse-cyclotomic": {
             "conductor": str(context.n),
             "factors": [[str(p), a] for p, a in sorted(context.factors.items())],
             "prime": str(context.ell), "root": str(context.g)}}
         if proofs:
-            self.spec["sparse-cyclotomic"]["primality"] = proofs
+            spec["sparse-cyclotomic"]["primality"] = proofs
+        return spec
+
+    def _sparse_tower(self, tower, values):
+        """Square roots of rationals over the sparse Q(zeta_N) (checker_tower_sparse):
+        ``{"tower": {"base": {"sparse-cyclotomic": ...}, "levels": [{"radicand": r_i,
+        "kummer": true}, ...], "kummer": [{"prime": p}, ...]}}``, the primes p = 1 mod N
+        whose Legendre symbols (r_i | p) have rank L over F_2; numbers are base numbers
+        {e: c} or [i, A, B] = A + B y_i.  A tower without levels is the sparse field."""
+        self.field = None
+        self.sparse = tower.context
+        leaves = [leaf for v in values for leaf in _leaves(
+            v.v if isinstance(v, TowerElement) else v)]
+        base = self._sparse_spec(tower.context, leaves + list(tower.radicands))
+        if not tower.radicands:
+            self.spec = base
+            return
+        self.tower = tower
+        primes = legendre_rank_primes(tower.conductor, tower.radicands, MR_LIMIT)
+        if primes is None:
+            raise CertificateError(f"no primes below {MR_LIMIT} prove the square roots of "
+                                   f"{tower.name} independent; cannot certify")
+        levels = [{"radicand": rational_text(r.rational()), "kummer": True}
+                  for r in tower.radicands]
+        self.spec = {"tower": {"base": base, "levels": levels,
+                               "kummer": [{"prime": str(p)} for p in primes]}}
 
     def _sparse_text(self, x):
-        """A real sparse number as {e: c} = sum c cos(2 pi e/N) (e and N - e merged)."""
+        """A real sparse number as {e: c} = sum c cos(2 pi e/N) (e and N - e merged); in a
+        tower over the sparse base, a raw value's [i, A, B] = A + B y_i."""
+        if isinstance(x, TowerElement):
+            x = x.v
+        if type(x) is tuple:
+            return [x[0], self._sparse_text(x[1]), self._sparse_text(x[2])]
         if not isinstance(x, SparseCyclotomic):
             return rational_text(x.rational() if isinstance(x, FieldElement) else fmpq(x))
         if x.den is not None:
@@ -177,22 +211,26 @@ class Encoder:
 
     def sparse_homogeneous(self, values) -> tuple[list, object]:
         """(texts of k v for v in values, text of k): k a common denominator of the values
-        (quotients num/den of one den, or plain sums), checked exactly."""
+        (quotients num/den of one den, or plain sums; in a tower, of the base numbers of
+        their [i, A, B] forms), checked exactly."""
         one = SparseCyclotomic(self.sparse, {0: fmpq(1)})
-        entries = [one * e for e in values]
-        den = next((e.den for e in entries if e.den is not None), None)
+        entries = [e.v if isinstance(e, TowerElement) else one * e for e in values]
+        den = next((e.den for v in entries for e in _leaves(v) if e.den is not None), None)
         scale = SparseCyclotomic(self.sparse, den) if den is not None else one
-        scaled = []
-        for e in entries:
+
+        def times_scale(e):
+            if type(e) is tuple:
+                return (e[0], times_scale(e[1]), times_scale(e[2]))
             if e.den is None:
-                s = e * scale
-            elif e.den == den or SparseCyclotomic(self.sparse, e.den) == scale:
-                s = SparseCyclotomic(self.sparse, e.num)
-            else:
-                s = None
+                return e * scale
+            if e.den == den:                    # num/den times den: num
+                return SparseCyclotomic(self.sparse, e.num)
+            s = SparseCyclotomic(self.sparse, e.num) \
+                if SparseCyclotomic(self.sparse, e.den) == scale else None
             if s is None or s != e * scale:     # e = s / scale, exactly
                 raise CertificateError("numbers of a witness have no common denominator")
-            scaled.append(s)
+            return s
+        scaled = [times_scale(e) for e in entries]
         return [self._sparse_text(v) for v in scaled], self._sparse_text(scale)
 
     def _square_roots(self, values):
@@ -211,8 +249,8 @@ class Encoder:
         """K_0 = Q(sqrt p) over the tower's base primes, then each level's radicand with a
         homomorphism to F_p proving it a non-square in the field below (checker_tower)."""
         if isinstance(tower, SparseKummerTower):
-            raise CertificateError(f"square roots as levels over the sparse Q(zeta_"
-                                   f"{tower.conductor}): no certificate format yet")
+            self._sparse_tower(tower, values)
+            return
         if isinstance(tower, CyclotomicTower):
             self._cyclotomic_tower(tower)
             return
@@ -376,6 +414,13 @@ def _level_proofs(tower, witness, entry) -> list:
     return levels
 
 
+def _leaves(v) -> list:
+    """The base numbers of a raw tower value (a base number: itself)."""
+    if type(v) is tuple:
+        return _leaves(v[1]) + _leaves(v[2])
+    return [v]
+
+
 def _tower_text(v):
     """A raw tower value (exact/tower.py) in the certificate: a rational, {m: c} in the base,
     or [i, a, b] = a + b y_i."""
@@ -435,6 +480,8 @@ def _refutations(n, ref, level, rot, mir, image, surely_out=None) -> dict:
             maps_in = image(kind, b)
             apart = surely_out(kind, b) if surely_out is not None else None
             for w in itertools.chain(level, range(n)):
+                if w == ref:
+                    continue                    # its image is b, a point of P
                 if (apart is not None and apart(w)) or not maps_in(w):
                     out[kind].append([b, w])
                     break
@@ -453,19 +500,29 @@ def _cartesian_witness(config, group, enc):
     ux, uy = rel[ref]
     s = ux * ux + uy * uy
     level = [i for i, (x, y) in enumerate(rel) if x * x + y * y == s]
-    inv = 1 / s
     where = {p: i for i, p in enumerate(pts)}
+    inverse: list = []                          # [1 / s], when an exact image is first asked
 
     def image(kind, b):
-        vx, vy = rel[b]
-        if kind == "rotation":
-            dot, cross = (ux * vx + uy * vy) * inv, (ux * vy - uy * vx) * inv
-            m = ((dot, -cross), (cross, dot))
-        else:
-            c, s2 = (ux * vx - uy * vy) * inv, (ux * vy + uy * vx) * inv
-            m = ((c, s2), (s2, -c))
-        return lambda w: (cx + m[0][0] * rel[w][0] + m[0][1] * rel[w][1],
-                          cy + m[1][0] * rel[w][0] + m[1][1] * rel[w][1]) in where
+        # the exact matrix only when balls cannot tell (in a tower over the sparse base its
+        # products cost a second each)
+        matrix: list = []
+
+        def maps_in(w):
+            if not matrix:
+                if not inverse:
+                    inverse.append(1 / s)
+                inv, (vx, vy) = inverse[0], rel[b]
+                if kind == "rotation":
+                    dot, cross = (ux * vx + uy * vy) * inv, (ux * vy - uy * vx) * inv
+                    matrix.append(((dot, -cross), (cross, dot)))
+                else:
+                    c, s2 = (ux * vx - uy * vy) * inv, (ux * vy + uy * vx) * inv
+                    matrix.append(((c, s2), (s2, -c)))
+            m = matrix[0]
+            return (cx + m[0][0] * rel[w][0] + m[0][1] * rel[w][1],
+                    cy + m[1][0] * rel[w][0] + m[1][1] * rel[w][1]) in where
+        return maps_in
 
     def isometry(iso):
         if iso is None:

@@ -615,7 +615,15 @@ def number_field(spec: dict):
 
 def tower_field(spec: dict):
     """Nested radicals: a tower of quadratic extensions (exactsym.checker_tower), over the
-    square roots or, with a "base" field, over Q(theta) (exactsym.checker_tower_cyclotomic)."""
+    square roots or, with a "base" field, over Q(theta) (exactsym.checker_tower_cyclotomic);
+    square roots of rationals over a sparse Q(zeta_N) base (exactsym.checker_tower_sparse)."""
+    if isinstance(spec, dict) and isinstance(spec.get("base"), dict) \
+            and "sparse-cyclotomic" in spec["base"]:
+        try:
+            from .checker_tower_sparse import SparseKummerTower
+        except ImportError:     # run as a lone script: a sibling file
+            from checker_tower_sparse import SparseKummerTower
+        return SparseKummerTower(spec)
     if isinstance(spec, dict) and "base" in spec:
         try:
             from .checker_tower_cyclotomic import CyclotomicTower

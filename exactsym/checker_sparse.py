@@ -213,15 +213,20 @@ class SparseField:
             found = self._cos[key] = _cos_bounds(max(tlo, 0), thi, bits)
         return found
 
+    def term_bounds(self, terms: dict, bits: int) -> tuple[int, int]:
+        """Integers lo <= (sum c cos(2 pi e/N)) 2^bits <= hi."""
+        lo = hi = 0
+        for e, c in terms.items():
+            clo, chi = (1 << bits, 1 << bits) if e == 0 else self.cos_bounds(e, bits)
+            lo, hi = (lo + c * clo, hi + c * chi) if c > 0 else (lo + c * chi, hi + c * clo)
+        return lo, hi
+
     def sign(self, x: "SNum") -> int:
         if self.is_zero(x.t):
             return 0
         bits = 64
         while bits < 1 << 20:
-            lo = hi = 0
-            for e, c in x.t.items():
-                clo, chi = self.cos_bounds(e, bits)
-                lo, hi = (lo + c * clo, hi + c * chi) if c > 0 else (lo + c * chi, hi + c * clo)
+            lo, hi = self.term_bounds(x.t, bits)
             if lo > 0 or hi < 0:
                 return 1 if lo > 0 else -1
             bits *= 2

@@ -456,7 +456,7 @@ def test_interval_must_isolate_one_root():
 # ------------------------------------------------------------------ the checker's parts
 CHECKER_MODULES = ("checker", "checker_numbers", "checker_groups", "checker_ordering",
                    "checker_refutations", "checker_sparse", "checker_tower",
-                   "checker_tower_cyclotomic")
+                   "checker_tower_cyclotomic", "checker_tower_sparse")
 
 
 def test_checker_imports_only_the_standard_library():

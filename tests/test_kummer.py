@@ -13,7 +13,7 @@ from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certificate import CertificateError, make_certificate
+from exactsym.certificate import make_certificate
 from exactsym.configuration import load
 from exactsym.errors import FieldTooLargeError
 from exactsym.exact import evaluate_all
@@ -182,15 +182,16 @@ def test_kummer_levels_certify_and_tampering_is_caught(tmp_path):
 def test_turns_j_997_put_square_roots_over_the_sparse_base(tmp_path):
     """Beyond phi(M) = 256 (Q(zeta_3988)) the levels sit over the sparse base: a moved
     configuration's SEC centre is then a quotient, not a dense inverse of seconds; certify
-    has no format for it yet and refuses it in one line."""
+    writes the sparse Kummer tower (tests/test_sparse_kummer_certificates.py)."""
     from exactsym.exact.evaluate import KUMMER_DENSE_DEGREE, SparseKummerSystem
     system, _ = _system(["sqrt(145)*cos(2*pi/997)"])
     assert isinstance(system, SparseKummerSystem) and system.tower.conductor == 3988
     assert KUMMER_DENSE_DEGREE < 1992
     path = tmp_path / "two.toml"
     path.write_text(_toml([("sqrt(145)", "1/997"), ("sqrt(374)", "300/997")]))
-    with pytest.raises(CertificateError, match="no certificate format"):
-        make_certificate(load(str(path)))
+    cert = make_certificate(load(str(path)))
+    assert set(cert["configuration"]["field"]["tower"]["base"]) == {"sparse-cyclotomic"}
+    assert checker.verify_certificate(cert) == (True, "group D2, orderable false, leader")
 
 
 # ------------------------------------------------------------------ over the sparse Q(zeta_N)
@@ -212,11 +213,13 @@ def test_square_roots_over_the_sparse_field_are_levels(tmp_path):
         assert symmetry_group(load(str(path))).name == "D2"
 
 
-def test_certify_refuses_levels_over_the_sparse_field(tmp_path):
+def test_certify_proves_levels_over_the_sparse_field(tmp_path):
     path = tmp_path / "s.toml"
     path.write_text(_toml([("sqrt(145)", "1/999983"), ("sqrt(374)", "3/999983")]))
-    with pytest.raises(CertificateError, match="no certificate format"):
-        make_certificate(load(str(path)))
+    cert = make_certificate(load(str(path)))
+    tower = cert["configuration"]["field"]["tower"]
+    assert [lev["radicand"] for lev in tower["levels"]] == ["145", "374"]
+    assert checker.verify_certificate(cert) == (True, "group D2, orderable false, leader")
 
 
 def test_a_nested_radical_over_the_sparse_field_is_refused():

@@ -13,7 +13,9 @@ Only square roots of rationals are held: a nested radical would need a square-ro
 the sparse base, which does not exist, so it is refused (FieldTooLargeError, exit 2; a
 MakeAsym radial move is then "incomplete").  A rational whose class needs a Gauss sum of
 more than :data:`.sparse_cyclotomic.MAX_GAUSS_TERMS` terms (a prime of N near 10^6) is
-refused too.  ``certify`` has no format for this tower yet and refuses it.
+refused too.  ``certify`` writes the tower over the sparse base, its levels proved new by
+Legendre symbols at primes p = 1 mod N (:func:`.tower_proof.legendre_rank_primes`; the
+checker: ``exactsym/checker_tower_sparse.py``).
 
 Public names: :class:`SparseKummerTower`.
 """

@@ -393,10 +393,29 @@ def kummer_witness(tower, limit: int = 1 << 40):
     level, never a chain of roots: L levels would need a prime where L - 1 radicands are
     residues.  None if the primes up to ``limit`` do not reach rank L."""
     m = tower.conductor
-    values = [int(r.rational().p) * int(r.rational().q) for r in tower.radicands]
+    primes = legendre_rank_primes(m, tower.radicands, limit)
+    if primes is None:
+        return None
     half = _half_units(m)
-    rows: dict = {}
     out = []
+    for p in primes:
+        w = root_of_unity_mod(m, p)
+        out.append((p, [(pow(w, j, p) + pow(w, -j, p)) % p for j in half]))
+    return out
+
+
+def legendre_rank_primes(m: int, radicands, limit: int):
+    """Primes p = 1 mod m below ``limit``, none dividing a numerator or denominator of the
+    rational ``radicands``, each adding rank to the vectors of Legendre symbols
+    ((r_1|p), ..., (r_L|p)) over F_2 until it is L; None if the primes below ``limit`` do not
+    reach it.  Alone (no roots of Psi_m) they prove the radicands independent modulo squares
+    of Q(zeta_m) (docs/certificates.md, "Square roots of rationals over the sparse
+    Q(zeta_N)")."""
+    values = [int(r.rational().p) * int(r.rational().q) for r in radicands]
+    rows: dict = {}
+    out: list = []
+    if not values:
+        return out
     for p in split_primes(m, start=3):
         if p >= limit:
             return None
@@ -411,8 +430,7 @@ def kummer_witness(tower, limit: int = 1 << 40):
         if not vector:
             continue                                   # no new rank from this prime
         rows[vector.bit_length() - 1] = vector
-        w = root_of_unity_mod(m, p)
-        out.append((p, [(pow(w, j, p) + pow(w, -j, p)) % p for j in half]))
+        out.append(p)
         if len(rows) == len(values):
             return out
     return None

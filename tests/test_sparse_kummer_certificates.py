@@ -1,0 +1,231 @@
+"""Certificates of square roots of rationals as tower levels over the sparse Q(zeta_N)
+(certificate.Encoder._sparse_tower, checker_tower_sparse.py): the case files certify and
+verify, the levels' proof (Legendre symbols at primes p = 1 mod N of full rank over F_2) and
+the numbers are re-checked, and tampering with either is caught.
+
+The format carries no Legendre symbols: the checker computes them from the radicands and the
+primes, so tampering with "a Legendre claim" is tampering with a radicand or a prime."""
+
+from __future__ import annotations
+
+import copy
+import json
+from pathlib import Path
+
+import pytest
+from flint import fmpq
+
+from exactsym import checker
+from exactsym.certificate import make_certificate
+from exactsym.checker_numbers import Invalid
+from exactsym.checker_tower_sparse import SparseKummerTower
+from exactsym.cli import main as cli_main
+from exactsym.configuration import load
+from exactsym.exact.cyclotomic_sqrt import split_primes
+from exactsym.exact.kummer import SquareClasses
+from exactsym.exact.sparse_cyclotomic import sparse_context
+from certificate_checks import rejected
+
+ROOT = Path(__file__).resolve().parent.parent
+CASE_997 = ROOT / "cases" / "numbers" / "square-roots-over-turns-997.toml"
+CASE_999983 = ROOT / "cases" / "numbers" / "square-roots-over-turns-999983.toml"
+
+
+@pytest.fixture(scope="module")
+def cert_997():
+    return make_certificate(load(str(CASE_997)))
+
+
+@pytest.fixture(scope="module")
+def cert_999983():
+    return make_certificate(load(str(CASE_999983)))
+
+
+def _base(n: int) -> dict:
+    context = sparse_context(n)
+    return {"sparse-cyclotomic": {
+        "conductor": str(n), "factors": [[str(p), a] for p, a in sorted(context.factors.items())],
+        "prime": str(context.ell), "root": str(context.g)}}
+
+
+def _tower(n: int, radicands: list, primes: list) -> dict:
+    return {"base": _base(n), "levels": [{"radicand": str(r), "kummer": True} for r in radicands],
+            "kummer": [{"prime": str(p)} for p in primes]}
+
+
+# ------------------------------------------------------------------ the case files
+def test_the_997_case_certifies(cert_997):
+    field = cert_997["configuration"]["field"]["tower"]
+    assert field["base"]["sparse-cyclotomic"]["conductor"] == "3988"
+    assert field["levels"] == [{"radicand": "145", "kummer": True},
+                               {"radicand": "374", "kummer": True}]
+    # (145 | 3989) = 1, (374 | 3989) = -1; (145 | 47857) = (374 | 47857) = -1: rank 2
+    assert field["kummer"] == [{"prime": "3989"}, {"prime": "47857"}]
+    assert cert_997["configuration"]["points"][0] == [[1, "0", {"4": "1"}],
+                                                      [1, "0", {"993": "1"}]]
+    assert cert_997["witness"]["mirror"]["scale"] != "1"      # a quotient, written k M
+    assert checker.verify_certificate(cert_997) == (True, "group D2, orderable false, leader")
+
+
+def test_the_999983_case_certifies(cert_999983):
+    field = cert_999983["configuration"]["field"]["tower"]
+    assert field["base"]["sparse-cyclotomic"]["conductor"] == "3999932"
+    assert [lev["radicand"] for lev in field["levels"]] == ["145", "374", "7"]
+    assert field["kummer"] == [{"prime": "11999797"}, {"prime": "35999389"},
+                               {"prime": "71998777"}]
+    assert cert_999983["claim"] == {"group": "C1", "orderable": True, "ordering": [2, 0, 1],
+                                    "leader": 2}
+    assert checker.verify_certificate(cert_999983) == (
+        True, "group C1, orderable true, ordering and leader")
+
+
+def test_cli_certify_and_verify(tmp_path, capsys):
+    out_path = tmp_path / "c.json"
+    assert cli_main(["certify", str(CASE_997), "-o", str(out_path)]) == 0
+    assert cli_main(["verify", str(out_path)]) == 0
+    out, _ = capsys.readouterr()
+    assert f"{out_path}: valid: group D2, orderable false, leader" in out
+    cert = json.loads(out_path.read_text())
+    cert["configuration"]["field"]["tower"]["kummer"].pop()
+    cert["configuration_sha256"] = checker.digest(cert["configuration"])
+    out_path.write_text(json.dumps(cert))
+    assert cli_main(["verify", str(out_path)]) == 1
+    _, err = capsys.readouterr()
+    assert "have rank 1 over F_2, not 2" in err
+
+
+# ------------------------------------------------------------------ tampering
+def _level(cert, i):
+    return cert["configuration"]["field"]["tower"]["levels"][i]
+
+
+def test_tampered_radicands(cert_997):
+    for i, radicand, why in ((1, "9", "rank 1 over F_2, not 2"),       # a square
+                             (1, "580", "rank 1 over F_2, not 2"),     # 4 * 145: level 1's class
+                             (1, "144565", "rank 1 over F_2, not 2"),  # 997 * 145 (sqrt(997)
+                             (0, "-145", "positive rational"),         # is in Q(zeta_3988))
+                             (0, "0", "positive rational"),
+                             (0, "146", "the matrix is not orthogonal")):  # a valid level, but
+        bad = copy.deepcopy(cert_997)                                # not these numbers'
+        _level(bad, i)["radicand"] = radicand
+        rejected(bad, why)
+    bad = copy.deepcopy(cert_997)
+    _level(bad, 1)["radicand"] = {"1": "1"}
+    rejected(bad, "positive rational")
+    bad = copy.deepcopy(cert_997)
+    _level(bad, 1)["radicand"] = [1, "0", "1"]
+    rejected(bad, "positive rational")
+    bad = copy.deepcopy(cert_997)
+    del _level(bad, 0)["kummer"]
+    rejected(bad, "every level is a kummer level")
+
+
+def test_tampered_primes(cert_997):
+    def with_primes(primes):
+        bad = copy.deepcopy(cert_997)
+        bad["configuration"]["field"]["tower"]["kummer"] = [{"prime": p} for p in primes]
+        return bad
+    rejected(with_primes(["3991", "47857"]), "3991 is not an odd prime = 1 mod 3988")
+    rejected(with_primes(["3989", "7977"]), "7977 is not an odd prime = 1 mod 3988")  # 3*2659
+    rejected(with_primes(["3989"]), "rank 1 over F_2, not 2")
+    # 23929 has the symbols of 3989, 63809 none at -1: no rank added
+    rejected(with_primes(["3989", "23929", "63809"]), "rank 1 over F_2, not 2")
+    rejected(with_primes([]), "rank 0 over F_2, not 2")
+    bad = with_primes(["3989", "47857"])
+    del bad["configuration"]["field"]["tower"]["kummer"]
+    rejected(bad, "a \"kummer\" list of primes")
+    bad = with_primes(["3989", "47857"])
+    bad["configuration"]["field"]["tower"]["kummer"][0] = {"prime": True}
+    rejected(bad, "not an object with a prime")
+    good = with_primes([3989, "75773"])                                 # ints read too
+    good["configuration_sha256"] = checker.digest(good["configuration"])
+    assert checker.verify_certificate(good) == (True, "group D2, orderable false, leader")
+
+
+def test_tampered_numbers(cert_997, cert_999983):
+    bad = copy.deepcopy(cert_997)
+    bad["configuration"]["points"][0][0] = [1, "0", {"5": "1"}]
+    rejected(bad, "the centre is not the centroid")
+    bad = copy.deepcopy(cert_997)
+    bad["witness"]["rotation"]["centre"][0][1][2] = {"4": "1/3"}
+    rejected(bad, "the centre is not the centroid")
+    bad = copy.deepcopy(cert_997)
+    entry = bad["witness"]["mirror"]["matrix"][0][0]
+    entry[1] = {**entry[1], "8": "-33205/31"}
+    rejected(bad, "the matrix is not orthogonal")
+    bad = copy.deepcopy(cert_997)
+    bad["witness"]["mirror"]["scale"]["0"] = "587586/64"
+    rejected(bad, "mirror")
+    bad = copy.deepcopy(cert_997)
+    bad["configuration"]["points"][1][0][0] = 1     # y_2 cos -> y_1 cos: a point coincides
+    rejected(bad)
+    bad = copy.deepcopy(cert_999983)
+    bad["witness"]["sec"]["centre"][1][2] = {"200017": "1/3"}
+    rejected(bad, "sec")
+    bad = copy.deepcopy(cert_999983)
+    bad["configuration"]["points"][2][0] = [3, "0", {"1599932": "10"}]
+    rejected(bad, "sec: a point lies outside the circle")
+
+
+# ------------------------------------------------------------------ the checker's field
+def test_checker_arithmetic_equality_and_signs():
+    field = SparseKummerTower(_tower(3988, [145, 374], [3989, 47857]))
+    y1, y2 = field.num([1, "0", "1"]), field.num([2, "0", "1"])
+    assert y1 * y1 == 145 and y2 * y2 == 374 and y1 * y2 != y2
+    assert (y1 * y2).v[0] == 2 and (y1 * y2) * (y1 * y2) == 145 * 374
+    assert (y1 - 12).sign() == 1 and (y1 - 13).sign() == -1     # 12 < sqrt(145) < 13
+    assert (y2 - y1 - 8).sign() == -1 and (y2 - y1 - 7).sign() == 1  # 19.34 - 12.04 = 7.30
+    # cos(2 pi 997/3988) = cos(pi/2) = 0: another form of the same number, the same hash
+    a, b = field.num([1, "0", {"4": "1", "997": "1"}]), field.num([1, "0", {"4": "1"}])
+    assert a == b and hash(a) == hash(b)
+    c = field.num([1, {"997": "2"}, {"4": "1"}])
+    assert c == b and c.v[1] == 0
+    # sqrt(145) cos(2 pi 4/3988) - sqrt(374) cos(2 pi 600/3988): 12.04 - 19.34 * 0.586 > 0
+    d = field.num([2, [1, "0", {"4": "1"}], {"600": "-1"}])
+    assert d.sign() == 1 and (-d).sign() == -1
+    assert (d - d).sign() == 0 and d - d == 0
+
+
+def test_the_base_class_is_no_new_level():
+    """sqrt(997) is a Gauss sum of Q(zeta_3988), so sqrt(997 * 145) = sqrt(997) sqrt(145) is
+    in K_1: no list of primes p = 1 mod 3988 proves it a new level ((997 | p) = 1 there)."""
+    primes = []
+    for p in split_primes(3988, start=3):
+        primes.append(p)
+        if len(primes) == 40:
+            break
+    with pytest.raises(Invalid, match="rank 1 over F_2, not 2"):
+        SparseKummerTower(_tower(3988, [145, 997 * 145], primes))
+    with pytest.raises(Invalid, match="divides a radicand"):
+        SparseKummerTower(_tower(3988, [3989], [3989]))
+    assert SparseKummerTower(_tower(3988, [145], primes)).r[0] == 145
+
+
+def test_the_checker_agrees_with_the_square_classes():
+    """Over Q(zeta_60) (base primes 3, 5): radicands that SquareClasses finds new are proved
+    by the solver's primes, and whenever one of them is not new the checker refuses the
+    tower with the first 60 primes p = 1 mod 60 (exact expected verdicts)."""
+    primes = []
+    for p in split_primes(60, start=3):
+        primes.append(p)
+        if len(primes) == 60:
+            break
+    verdicts = {}
+    for radicands in ([2], [7], [3], [15], [2, 7], [2, 8], [2, 6], [7, 21, 11], [2, 7, 14],
+                      [2, 7, 11, 13, 17], [1, 2], [fmpq(1, 7), 7]):
+        classes = SquareClasses(60)
+        new = True
+        for r in radicands:
+            if classes.express(fmpq(r)) is not None:
+                new = False
+                break
+            classes.add(fmpq(r))
+        texts = [f"{fmpq(r).p}/{fmpq(r).q}" for r in radicands]
+        try:
+            SparseKummerTower(_tower(60, texts, primes))
+            verdicts[tuple(texts)] = True
+        except Invalid:
+            verdicts[tuple(texts)] = False
+        assert verdicts[tuple(texts)] is new, radicands
+    assert [k for k, v in verdicts.items() if v] == [
+        ("2/1",), ("7/1",), ("2/1", "7/1"), ("2/1", "7/1", "11/1", "13/1", "17/1")]
