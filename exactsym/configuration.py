@@ -113,7 +113,10 @@ class Configuration:
 
     @cached_property
     def system(self):
-        return self._cartesian()[0]
+        # the points with it: computing them apart would evaluate every expression twice
+        # (and choose the field twice, perhaps differently inside dense_degree_limit)
+        self.points
+        return self.__dict__["system"]
 
     @cached_property
     def points(self) -> tuple:

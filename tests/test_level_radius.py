@@ -9,7 +9,9 @@ from flint import ctx, fmpq
 from hypothesis import assume, given, settings, strategies as st
 
 from exactsym import load
+from exactsym.exact.cyclotomic import MAX_DEGREE
 from exactsym.exact.cyclotomic_modular import _element_images, _embeddings
+from exactsym.exact.evaluate import dense_degree_limit
 from exactsym.exact.field import PolyElement
 from exactsym.level_radius import LevelRadius
 from exactsym.levels import levels_of
@@ -23,7 +25,10 @@ def _config(tmp_path, seed: int, n: int = 6):
                    for t in draw.sample(range(331), n))
     path = tmp_path / f"c{seed}.toml"
     path.write_text("format = 1\npoints = [\n" + rows + "]\n")
-    return load(path)
+    with dense_degree_limit(MAX_DEGREE):      # the dense field (sparse by default)
+        config = load(path)
+        config.system                         # chosen when first read
+    return config
 
 
 def _fresh(level: LevelRadius) -> LevelRadius:

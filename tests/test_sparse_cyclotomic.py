@@ -15,7 +15,7 @@ from hypothesis import given, settings, strategies as st
 from exactsym.configuration import load
 from exactsym.errors import FieldTooLargeError, InputError
 from exactsym.exact import cyclotomic, evaluate, exact_key, number_text
-from exactsym.exact.evaluate import SparseCyclotomicSystem, number_system
+from exactsym.exact.evaluate import SparseCyclotomicSystem, dense_degree_limit, number_system
 from exactsym.exact.sparse_cyclotomic import (SparseCyclotomic, cos_turn, from_poly_element,
                                               is_zero_sum, sparse_context, sqrt_rational)
 from exactsym.expr import parse_expression
@@ -326,14 +326,15 @@ MODERATE = {
 
 
 @pytest.mark.parametrize("name", sorted(MODERATE))
-def test_same_report_as_the_dense_field(tmp_path, monkeypatch, name):
+def test_same_report_as_the_dense_field(tmp_path, name):
     """The same file through the dense Q(zeta_M) and, forced, through the sparse system:
     the same full report (truth, levels, paper layer, audit) up to the texts of numbers."""
     path = _write(tmp_path, "c.toml", MODERATE[name])
-    dense_config, dense = _report(path)
+    with dense_degree_limit(cyclotomic.MAX_DEGREE):
+        dense_config, dense = _report(path)
     assert not isinstance(dense_config.system, SparseCyclotomicSystem)
-    monkeypatch.setattr(cyclotomic, "MAX_DEGREE", 0)
-    sparse_config, sparse = _report(path)
+    with dense_degree_limit(0):
+        sparse_config, sparse = _report(path)
     assert isinstance(sparse_config.system, SparseCyclotomicSystem)
     assert _verdicts(sparse) == _verdicts(dense)
 

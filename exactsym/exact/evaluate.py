@@ -11,9 +11,10 @@ configuration once and picks the smallest machinery that holds them all:
    multiquadratic field of the square roots, built lazily (:mod:`.tower`);
 4. nested radicals mixed with cos/sin: the same tower over the real subfield of Q(zeta_M)
    (:mod:`.cyclotomic_tower`).
-5. **sparse Q(zeta_N)** when case 2 would need a dense field above
-   :data:`.cyclotomic.MAX_DEGREE` (turns of denominators near 10^6): sums of roots of unity
-   with an exact zero test over N's factorisation (:mod:`.sparse_cyclotomic`).
+5. **sparse Q(zeta_N)** when case 2 would need a dense field above :data:`DENSE_DEGREE`
+   (turns j/997, or of denominators near 10^6): sums of roots of unity with an exact zero
+   test over N's factorisation (:mod:`.sparse_cyclotomic`); square roots whose Gauss sums
+   would be long are then quadratic levels over the cosines' field (:mod:`.kummer`).
 (sympy's primitive element, :mod:`.general`, is no longer chosen here; it stays for callers
 that build Q(theta) from atoms.)
 
@@ -408,16 +409,24 @@ def _evaluate(node: Node, system):
     raise ExpressionError(f"unknown expression node {type(node).__name__}", offset=node.offset)
 
 
-#: a lower limit on the dense Q(zeta_M)'s degree while :func:`dense_degree_limit` is active
+#: the largest phi(M) of a dense Q(zeta_M); cos/sin needing a larger one are sparse sums in
+#: Q(zeta_N) (:mod:`.sparse_cyclotomic`).  Measured (bench/bench_small_algebraic.py): at
+#: degree 960 and 1,992 the sparse field is as fast or faster (three robots at turns j/997
+#: off-centre: 24 s dense, one division of the moved SEC centre costing seconds; 0.7 s
+#: sparse), and no input of the benchmark is slower
+DENSE_DEGREE = 256
+
+#: the dense limit while :func:`dense_degree_limit` is active (the innermost block's)
 _DENSE_LIMITS: list = []
 
 
 @contextmanager
 def dense_degree_limit(degree: int):
-    """Within the block, cos/sin beyond a dense Q(zeta_M) of ``degree`` are read in the
-    sparse Q(zeta_N) (as beyond :data:`.cyclotomic.MAX_DEGREE`): ``exactsym certify`` asks
-    for it, because the standard-library checker multiplies dense numbers of degree
-    thousands term by term, while the sparse certificate's numbers keep a few terms."""
+    """Within the block, cos/sin are read in a dense Q(zeta_M) up to phi(M) = ``degree``
+    (at most :data:`.cyclotomic.MAX_DEGREE`) instead of :data:`DENSE_DEGREE`, and in the
+    sparse Q(zeta_N) beyond: ``exactsym certify`` asks for 64, because the standard-library
+    checker multiplies dense numbers of degree hundreds term by term, while the sparse
+    certificate's numbers keep a few terms; tests ask for more to reach the dense field."""
     _DENSE_LIMITS.append(degree)
     try:
         yield
@@ -456,21 +465,16 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
         # sines are cosines of 1/4 - t, already in the list; i needs 4 | M for them
         conductor = cyclotomic.lcm(_conductor(atoms), 4)
         degree = cyclotomic.euler_phi(conductor)
-        limit = min([cyclotomic.MAX_DEGREE] + _DENSE_LIMITS[-1:])
+        limit = min(cyclotomic.MAX_DEGREE, _DENSE_LIMITS[-1]) if _DENSE_LIMITS else DENSE_DEGREE
         if degree <= limit:
             return FieldSystem(cyclotomic.cyclotomic_field(conductor))
         if any(atom[0] == "cos" for atom in atoms):
-            if degree > cyclotomic.MAX_DEGREE:
-                # the square roots' Gauss sums leave the dense field; the cosines alone?
-                cosines = _cosine_conductor(atoms)
-                phi = cyclotomic.euler_phi(cosines)
-                if phi <= limit:
-                    return _kummer_system(cosines, phi)
-                if phi <= cyclotomic.MAX_DEGREE:
-                    # certify's lower limit: these square roots would be Gauss sums of
-                    # hundreds of terms in the sparse field; the caller falls back to the
-                    # limit check uses (the square roots as tower levels)
-                    raise FieldTooLargeError("square roots beyond the sparse field's reach")
+            # the square roots' Gauss sums take the field beyond the dense limit: the
+            # cosines alone fit a dense Q(zeta_M)? then the roots are levels over it
+            cosines = _cosine_conductor(atoms)
+            phi = cyclotomic.euler_phi(cosines)
+            if cosines != conductor and phi <= limit:
+                return _kummer_system(cosines, phi)
             return _sparse_system(atoms, conductor, degree)
     if all(kind != "cos" for kind, *_ in atoms):   # nested radicals of square roots only
         primes: set = set()
@@ -531,7 +535,7 @@ def _sparse_system(atoms, conductor: int, degree: int):
             if terms > sparse_cyclotomic.MAX_GAUSS_TERMS:
                 raise FieldTooLargeError(
                     f"these numbers need the cyclotomic field Q(zeta_{conductor}) of degree "
-                    f"{degree}, above the limit {cyclotomic.MAX_DEGREE}, where sqrt({s}) would "
+                    f"{degree}, above the limit {DENSE_DEGREE}, where sqrt({s}) would "
                     f"be a sum of {terms} roots of unity (limit "
                     f"{sparse_cyclotomic.MAX_GAUSS_TERMS})")
     return SparseCyclotomicSystem(conductor)

@@ -282,6 +282,11 @@ class SparseCyclotomic(FieldElement):
             other.ctx is not self.ctx else other
         if o is None:
             return NotImplemented
+        # the images modulo l differ: not equal, without the difference (whose
+        # denominators cross-multiply sums of hundreds of cosines: issue 9)
+        (an, ad), (bn, bd) = self.rho(), o.rho()
+        if min(an, ad, bn, bd) >= 0 and (an * bd - bn * ad) % self.ctx.ell:
+            return False
         return (self - o).is_zero()
 
     def __ne__(self, other):
