@@ -75,7 +75,28 @@ class _Plane:
         half = [0 if sign(y) > 0 or (y == 0 and sign(x) > 0) else 1 for x, y in (a, b)]
         if half[0] != half[1]:
             return -1 if half[0] < half[1] else 1
-        return -sign(a[0] * b[1] - a[1] * b[0])
+        cross = _enclosed_cross_sign(a, b)
+        return -(cross if cross is not None else sign(a[0] * b[1] - a[1] * b[0]))
+
+
+def _enclosed_cross_sign(a, b):
+    """sign(a0 b1 - a1 b0) from integer enclosures of the four factors, when their field
+    gives them (``bounds(x, bits)``: lo <= x 2^bits <= hi, a tower over the sparse
+    Q(zeta_N)) and they exclude 0; else None (the exact products decide).  There the exact
+    products multiply sparse sums of thousands of cosines term by term."""
+    factors = (a[0], b[1], a[1], b[0])
+    field = getattr(a[0], "f", None)
+    bounds = getattr(field, "bounds", None)
+    if bounds is None or any(getattr(v, "f", None) is not field for v in factors):
+        return None
+    for bits in (64, 192):
+        (alo, ahi), (blo, bhi), (clo, chi), (dlo, dhi) = (bounds(v.v, bits) for v in factors)
+        first = (alo * blo, alo * bhi, ahi * blo, ahi * bhi)
+        second = (clo * dlo, clo * dhi, chi * dlo, chi * dhi)
+        lo, hi = min(first) - max(second), max(first) - min(second)
+        if lo > 0 or hi < 0:
+            return 1 if lo > 0 else -1
+    return None
 
 
 def _rays(plane: _Plane, order: list) -> list:
@@ -144,6 +165,8 @@ def _primitive(x, y) -> tuple[int, int]:
 
 
 def _cmp_symbol(plane: _Plane, s, t) -> int:
+    if s is t:                                  # one symbol read twice (a reading against
+        return 0                                # its own rotations): no products
     if plane.native:                            # canonical radii and angles (see _symbols):
         if s[0] != t[0]:                        # tuples compare with a proper prefix first
             return -1 if s[0] < t[0] else 1

@@ -88,6 +88,10 @@ class SparseKummerTower(Tower):
             return lo // x.den, -(-hi // x.den)
         return Tower._interval(self, x, bits)
 
+    def bounds(self, x, bits: int):
+        """Integers lo <= x 2^bits <= hi (x a raw value; checker_ordering's filter)."""
+        return self._interval(x, bits)
+
     def _sign(self, x) -> int:
         if isinstance(x, SNum):
             return x.sign()

@@ -229,3 +229,25 @@ def test_the_checker_agrees_with_the_square_classes():
         assert verdicts[tuple(texts)] is new, radicands
     assert [k for k, v in verdicts.items() if v] == [
         ("2/1",), ("7/1",), ("2/1", "7/1"), ("2/1", "7/1", "11/1", "13/1", "17/1")]
+
+
+def test_the_ordering_filter_agrees_with_exact_products():
+    """checker_ordering's enclosure of a0 b1 - a1 b0 (the cross product of two angles) gives
+    the exact sign when it excludes 0, and None (the exact products decide) for 0."""
+    from exactsym.checker_ordering import _enclosed_cross_sign
+    field = SparseKummerTower(_tower(3988, [145, 374], [3989, 47857]))
+    nums = [field.num(v) for v in ([1, "0", {"4": "1"}], [2, "1/3", {"600": "-1"}],
+                                   [2, [1, "0", {"17": "2"}], {"990": "1"}], {"1000": "5"})]
+    seen = set()
+    for a0 in nums:
+        for a1 in nums:
+            for b0 in nums:
+                b1 = nums[0] - a0 + 1
+                exact = (a0 * b1 - a1 * b0).sign()
+                found = _enclosed_cross_sign((a0, a1), (b0, b1))
+                assert found in (None, exact)
+                seen.add((exact, found))
+    assert seen == {(1, 1), (-1, -1)}
+    assert _enclosed_cross_sign((nums[0], nums[1]), (nums[0], nums[1])) is None
+    assert _enclosed_cross_sign((nums[2], nums[1]), (nums[2] * 2, nums[1] * 2)) is None
+    assert _enclosed_cross_sign((nums[0], 1), (nums[0], nums[1])) is None    # an int: exact
