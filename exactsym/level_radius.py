@@ -27,9 +27,11 @@ from __future__ import annotations
 from flint import arb, ctx, fmpq
 
 from .exact.field import PolyElement
+from .exact.field import FieldElement, sign
+from .exact.tower import TowerElement, _raw
 from .geometry import enclosure_of
 
-__all__ = ["LevelRadius"]
+__all__ = ["LevelRadius", "TowerLevelRadius"]
 
 
 class LevelRadius(PolyElement):
@@ -145,3 +147,95 @@ class LevelRadius(PolyElement):
         state = "made" if self._exact is not None else "not made"
         return f"LevelRadius(level {self.index}, {state})"
 
+
+
+class TowerLevelRadius(TowerElement):
+    """The squared radius |p - C|^2 of level ``index`` of the levels ``owner`` in a tower of
+    square roots over the sparse Q(zeta_N), computed (``make()``) when first read exactly.
+
+    There the product p.C alone cost seconds: C = (X/D, Y/D) has the tower's inverse of D
+    in it (three robots at radii sqrt(k) and turns j/997 ran past 90 s, most of it on the
+    radii of the paper's moved configurations).  Before it is made it answers, as
+    :class:`LevelRadius` does: balls from those of p and of C's homogeneous form; ``==`` and ``<`` with another
+    level of the same levels by their indices (the levels are sorted by radius, nearest
+    first, and distinct levels have distinct radii); ``sign`` from balls.  Anything else
+    reads the exact number (``v``), then computed once."""
+
+    __slots__ = ("_make", "_value", "_exact", "_p", "_c", "owner", "index")
+
+    def __init__(self, tower, make, p, homogeneous, owner, index: int):
+        self.tower, self._hash = tower, None
+        self._make, self._value, self._exact = make, None, None
+        self._p, self._c = p, homogeneous       # the centre (X/D, Y/D): not divided
+        self.owner, self.index = owner, index
+
+    def value(self):
+        """The exact number (a :class:`TowerElement`, or a rational / base number when
+        the radius happens to lie below the levels), computed once."""
+        if self._make is not None:
+            self._value, self._make = self._make(), None
+        return self._value
+
+    @property
+    def v(self):
+        if self._exact is None:
+            self._exact = _raw(self.tower, self.value())
+        return self._exact
+
+    @property
+    def made(self) -> bool:
+        return self._make is None
+
+    def is_rational(self) -> bool:
+        value = self.value()
+        return value.is_rational() if isinstance(value, FieldElement) else True
+
+    def rational(self):
+        value = self.value()
+        return value.rational() if isinstance(value, FieldElement) else fmpq(value)
+
+    def enclosure(self, prec: int = 53):
+        if self.made:
+            return enclosure_of(self.value(), prec)
+        with ctx.workprec(prec + 16):
+            (x, y), (cx, cy, d) = self._p, self._c
+            d = enclosure_of(d, prec)
+            dx = enclosure_of(x, prec) - enclosure_of(cx, prec) / d
+            dy = enclosure_of(y, prec) - enclosure_of(cy, prec) / d
+            return dx * dx + dy * dy
+
+    def sign(self) -> int:
+        if not self.made:
+            prec = 64
+            while prec <= 1024:
+                if self.enclosure(prec) > 0:
+                    return 1
+                prec *= 4
+        return sign(self.value())
+
+    def _same_levels(self, other) -> bool:
+        return isinstance(other, TowerLevelRadius) and other.owner is self.owner
+
+    def __eq__(self, other):
+        if self is other:
+            return True
+        if self._same_levels(other):
+            return self.index == other.index        # distinct levels, distinct radii
+        if isinstance(other, (int, fmpq)) and other == 0:
+            return self.sign() == 0
+        return TowerElement.__eq__(self, other)
+
+    def __ne__(self, other):
+        result = self.__eq__(other)
+        return result if result is NotImplemented else not result
+
+    __hash__ = TowerElement.__hash__
+
+    def _cmp(self, other):
+        if self._same_levels(other):                # nearest first
+            return (self.index > other.index) - (self.index < other.index)
+        return TowerElement._cmp(self, other)
+
+    def __repr__(self):
+        state = "made" if self.made else "not made"
+        return f"TowerLevelRadius(level {self.index}, {state})"

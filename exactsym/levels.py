@@ -23,7 +23,8 @@ from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels, s
 from .exact import FieldElement, RationalSystem, exact_key, exact_sorted, fmpq
 from .exact.field import PolyElement
 from .exact.tower import TowerElement
-from .level_radius import LevelRadius
+from .exact.sparse_tower import SparseKummerTower
+from .level_radius import LevelRadius, TowerLevelRadius
 from .geometry import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
                        float_differences, float_squared_norms,
                        sorted_by_value, squared_distance)
@@ -279,7 +280,8 @@ class AlgebraicLevels(RationalLevels):
 
     def level_radius(self, k: int, i: int):
         """The squared radius of level ``k`` (point ``i``): in a large cyclotomic field a
-        :class:`~exactsym.level_radius.LevelRadius`, computed when first read exactly
+        :class:`~exactsym.level_radius.LevelRadius`, in a tower over the sparse Q(zeta_N) a
+        :class:`~exactsym.level_radius.TowerLevelRadius`, computed when first read exactly
         (most readers compare radii: balls, level indices, images in F_p)."""
         enc = self.enclosures
         if not enc.unit and self.circle is not None and self._d2 is None and \
@@ -288,6 +290,11 @@ class AlgebraicLevels(RationalLevels):
             return LevelRadius(enc.homogeneous[2].field, lambda: self.radius_squared(i),
                                enc.points[i], self.circle.centre, 1, self, k,
                                self.circle.homogeneous)
+        if not enc.unit and self.circle is not None and self._d2 is None and \
+                isinstance(enc.homogeneous[2], TowerElement) and \
+                isinstance(enc.homogeneous[2].tower, SparseKummerTower):
+            return TowerLevelRadius(enc.homogeneous[2].tower, lambda: self.radius_squared(i),
+                                    enc.points[i], self.circle.homogeneous, self, k)
         return self.radius_squared(i)
 
     def radius_squared(self, i: int):

@@ -13,7 +13,10 @@ from exactsym.exact.cyclotomic import MAX_DEGREE
 from exactsym.exact.cyclotomic_modular import _element_images, _embeddings
 from exactsym.exact.evaluate import dense_degree_limit
 from exactsym.exact.field import PolyElement
-from exactsym.level_radius import LevelRadius
+from exactsym.configuration import Configuration
+from exactsym.exact import sign
+from exactsym.exact.evaluate import SparseKummerSystem
+from exactsym.level_radius import LevelRadius, TowerLevelRadius
 from exactsym.levels import levels_of
 
 
@@ -74,3 +77,37 @@ def test_lazy_radii_answer_as_the_exact_ones(tmp_path_factory, seed):
         with ctx.workprec(80):
             assert twice.enclosure(64).contains((es * 3).enclosure(200))
         assert twice.poly == (es * 3).poly
+
+
+def _sqrt_config(seed: int, n: int = 4):
+    """n robots at radii sqrt(k) and turns j/30, off centre, written in the tower of square
+    roots over the sparse Q(zeta_60) (evaluate.SparseKummerSystem; chosen for turns j/997,
+    where an exact radius takes minutes: small here so that the test can compute them)."""
+    draw = random.Random(seed)
+    system = SparseKummerSystem(60)
+    points = []
+    for t in draw.sample(range(1, 30), n):
+        r = system.sqrt(fmpq(draw.randrange(2, 40)))
+        points.append((r * system.cos_turn(fmpq(t, 30)), r * system.sin_turn(fmpq(t, 30))))
+    return Configuration(points=points, system=system)
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.integers(0, 10 ** 6))
+def test_tower_radii_answer_as_the_exact_ones(seed):
+    levels = levels_of(_sqrt_config(seed))
+    lazy = [level.radius_squared for level in levels.levels]
+    assume(len(lazy) >= 2 and all(isinstance(r, TowerLevelRadius) for r in lazy))
+    assert not any(r.made for r in lazy)
+    fresh = [TowerLevelRadius(r.tower, r._make, r._p, r._c, r.owner, r.index) for r in lazy]
+    exact = [r.value() for r in lazy]                 # computes them
+    for a, ea in zip(fresh, exact):
+        with ctx.workprec(80):
+            assert a.enclosure(64).contains(ea.enclosure(200))
+        assert a.sign() == sign(ea) == 1
+        for b, eb in zip(fresh, exact):
+            assert (a == b) == (ea == eb) and (a != b) == (ea != eb)
+            assert (a < b) == (ea < eb) and (a >= b) == (ea >= eb)
+        assert not a.made                  # none of the above computed it
+        # read exactly, it is the number
+        assert a * 3 == ea * 3 and a - ea == 0 and a.made

@@ -193,3 +193,30 @@ def test_a_slope_in_a_large_field_is_written_undivided_and_reads_back():
     node = parse_expression(slope)
     value = evaluate(node, number_system([node]))
     assert value == key.value[1]                     # the same number as the division
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(st.tuples(st.integers(1, 29), st.integers(2, 12)), min_size=3, max_size=6,
+                unique_by=lambda p: p[0]))
+def test_ordered_chords_off_one_circle_agree_with_the_exact_keys(rows):
+    """A polygon off one circle (a radial projection's) in a tower over the sparse
+    Q(zeta_60): its strings' keys (ratio_keys.chord_key, from balls) are equal and ordered
+    as the exact chord keys; v_i v_j and v_j v_i are equal without their products."""
+    from exactsym.exact.evaluate import SparseKummerSystem
+    from exactsym.paper.circle_polygon import polygon_from_directions
+    from exactsym.paper.ratio_keys import chord_key
+    system = SparseKummerSystem(60)
+    dirs = []
+    for t, k in rows:
+        r = system.sqrt(fmpq(k))
+        dirs.append((r * system.cos_turn(fmpq(t, 30)), r * system.sin_turn(fmpq(t, 30))))
+    poly = polygon_from_directions(tuple(range(len(dirs))), dirs, False)
+    n = poly.n
+    pairs = [(i, j) for i in range(n) for j in range(n) if i != j]
+    ordered = {p: chord_key(poly, *p) for p in pairs}
+    assert ordered[(0, 1)] == ordered[(1, 0)]
+    exact = {p: poly.chord_key(*p) for p in pairs}
+    for p in pairs:
+        for q in pairs:
+            assert (ordered[p] == ordered[q]) == (exact[p] == exact[q])
+            assert (ordered[p] < ordered[q]) == (exact[p] < exact[q])

@@ -122,11 +122,26 @@ class OrderedKey(RatioKey):
     degree thousands (:func:`chord_key`): the strings compare and hash them, and an
     exact chord is two products of megabyte numbers."""
 
-    __slots__ = ("_ball_at",)
+    __slots__ = ("_ball_at", "_pair")
 
-    def __init__(self, value, value_ball, home):
+    def __init__(self, value, value_ball, home, pair=None):
         self._ball_at = value_ball
+        self._pair = pair
         super().__init__(lambda: (value(), 1), value_ball, home)
+
+    def __eq__(self, other) -> bool:
+        # the keys of one pair of vector objects, either way round (a string's chord
+        # v_i v_j and another's v_j v_i): equal without the product u.v, which in a tower
+        # over the sparse Q(zeta_N) can cost seconds
+        p = self._pair
+        if p is not None and isinstance(other, OrderedKey) and other._pair is not None:
+            q = other._pair
+            if (p[0] is q[0] and p[1] is q[1]) or (p[0] is q[1] and p[1] is q[0]):
+                return True
+        return RatioKey.__eq__(self, other)
+
+    def __ne__(self, other) -> bool:
+        return not self.__eq__(other)
 
     def _cmp(self, other) -> int:
         if self == other:
@@ -157,16 +172,24 @@ class OrderedKey(RatioKey):
 
 
 def chord_key(polygon, i: int, j: int) -> OrderedKey:
-    """:meth:`~exactsym.paper.circle_polygon.CirclePolygon.chord_key` of a polygon on one
-    circle (``-u.v``) as an :class:`OrderedKey`: equal, ordered and hashed as that exact
-    key, read from balls of the vectors (the product only for equal or touching balls)."""
+    """:meth:`~exactsym.paper.circle_polygon.CirclePolygon.chord_key` of a polygon (on one
+    circle ``-u.v``, else the signed squared cosine) as an :class:`OrderedKey`: equal,
+    ordered and hashed as that exact key, read from balls of the vectors (the products
+    only for equal or touching balls)."""
     n = polygon.n
     u, v = polygon.directions[i % n], polygon.directions[j % n]
+    one_circle = polygon.one_circle
 
     def value_ball(prec):
         ux, uy, vx, vy = (ball_at(c, prec) for c in (u[0], u[1], v[0], v[1]))
-        return -(ux * vx + uy * vy)
-    return OrderedKey(lambda: polygon.chord_key(i, j), value_ball, _largest_field(u + v))
+        d = ux * vx + uy * vy
+        if one_circle:
+            return -d
+        # off one circle the key is -sign(u.v) (u.v)^2 / (|u|^2 |v|^2) (_cosine_key):
+        # -d |d| / ..., continuous, so a ball of it from the balls of d and the lengths
+        return -d * abs(d) / ((ux * ux + uy * uy) * (vx * vx + vy * vy))
+    return OrderedKey(lambda: polygon.chord_key(i, j), value_ball, _largest_field(u + v),
+                      (u, v))
 
 
 def _poly(x) -> fmpq_poly:

@@ -64,12 +64,14 @@ def cw_string(polygon: CirclePolygon, m: int, orientation: int = 1) -> tuple:
 
 def _ordered_chords(polygon: CirclePolygon) -> bool:
     """Whether the strings of ``polygon`` hold :func:`~exactsym.paper.ratio_keys.chord_key`
-    keys: a Cartesian polygon on one circle in a huge field (:func:`.keys.huge_field`);
-    decided once per polygon, so that every string of it holds one kind of key."""
+    keys: a Cartesian polygon in a huge field (:func:`.keys.huge_field`; off one circle,
+    a radial projection's, each exact key is four products and two inverses in a tower
+    over the sparse Q(zeta_N)); decided once per polygon, so that every string of it
+    holds one kind of key."""
     found = polygon.__dict__.get("_ordered_chords")
     if found is None:
         found = polygon.__dict__["_ordered_chords"] = not polygon.polar and \
-            polygon.one_circle and any(huge_field(*d) for d in polygon.directions)
+            any(huge_field(*d) for d in polygon.directions)
     return found
 
 
