@@ -96,10 +96,11 @@ def inputs() -> dict[str, str]:
 
 
 def level_inputs() -> dict[str, str]:
-    """Many levels in Q(zeta_3988) (degree 1,992): robots at turns j/997 and distinct
+    """Many levels at turns j/997 (the sparse Q(zeta_3988), degree 1,992) and distinct
     radii, the SEC off the origin, so every robot is on a level of its own and the
-    paper layer compares hundreds of pairs of levels; and 100 such levels at turns
-    j/999983 (the sparse Q(zeta_N))."""
+    paper layer compares hundreds of pairs of levels; 100 such levels at turns j/999983;
+    three robots whose moved configurations the paper and the audit analyse again; radii
+    sqrt(k) (square roots as levels over the cosines' field)."""
     out = {}
     for n in (31, 100):
         draw = random.Random(n)
@@ -112,6 +113,13 @@ def level_inputs() -> dict[str, str]:
     out["100 levels, turns j/999983"] = _polar(
         [(str(draw.randrange(1, 400)), f"{t}/999983") for t in turns])
     # radii sqrt(k): square roots as Kummer levels over the cosines' field (exact/kummer.py)
+    # three robots off-centre at turns j/997: the paper's moved configurations' SEC centres
+    # and radii (integer radii: 24 s in the dense Q(zeta_3988); radii sqrt(k): past 90 s)
+    out["3 radii, turns j/997"] = _polar([("12", "1/997"), ("19", "300/997"),
+                                          ("3", "600/997")])
+    out["3 sqrt radii, turns j/997"] = _polar([("sqrt(145)", "680/997"),
+                                               ("sqrt(374)", "183/997"),
+                                               ("sqrt(63)", "339/997")])
     for n, den in ((2, 997), (10, 999983), (31, 999983)):
         draw = random.Random(7000 + n)
         turns = draw.sample(range(1, den), n)

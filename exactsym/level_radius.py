@@ -239,3 +239,51 @@ class TowerLevelRadius(TowerElement):
     def __repr__(self):
         state = "made" if self.made else "not made"
         return f"TowerLevelRadius(level {self.index}, {state})"
+
+
+def tower_ratio_irrational(num, den) -> bool:
+    """Whether ``num / den`` is proved irrational, when one of them is a
+    :class:`TowerLevelRadius` not made yet (else False: the caller decides), by two ring
+    maps of its tower into F_p (:func:`~exactsym.exact.tower_proof.tower_images`) under
+    which the quotient has two images: a rational has one.  A radius' image is read from
+    those of its point and of the centre's homogeneous form, |D p - (X, Y)|^2 / D^2, so
+    no exact radius is made (a radial projection asks whether two levels' radii have a
+    rational ratio; in a tower over the sparse Q(zeta_3988) an exact radius costs
+    seconds).  Images with a zero denominator prove nothing: False."""
+    from .exact.tower_proof import tower_images
+    lazy = [z for z in (num, den) if isinstance(z, TowerLevelRadius) and not z.made]
+    if not lazy:
+        return False
+    tower = lazy[0].tower
+    raws, parts = [], []
+    try:
+        for z in (num, den):
+            parts.append(len(raws))
+            if isinstance(z, TowerLevelRadius) and not z.made:
+                (x, y), (cx, cy, d) = z._p, z._c
+                raws += [_raw(tower, v) for v in (x, y, cx, cy, d)]
+                parts[-1] = (parts[-1], True)
+            else:
+                raws.append(_raw(tower, z))
+                parts[-1] = (parts[-1], False)
+    except TypeError:                   # two towers: nothing to compare here
+        return False
+    found = tower_images(tower, raws)
+    if found is None:
+        return False
+    p, maps = found
+
+    def value(images, part):
+        """(numerator, denominator) of the image of one number."""
+        start, is_radius = part
+        if not is_radius:
+            return images[start] % p, 1
+        x, y, cx, cy, d = images[start:start + 5]
+        return ((d * x - cx) ** 2 + (d * y - cy) ** 2) % p, d * d % p
+    quotients = []
+    for images in maps:
+        (a, b), (c, e) = value(images, parts[0]), value(images, parts[1])
+        if b * c * e % p == 0:
+            return False
+        quotients.append(a * e * pow(b * c, -1, p) % p)
+    return quotients[0] != quotients[1]

@@ -16,7 +16,7 @@ from exactsym.exact.field import PolyElement
 from exactsym.configuration import Configuration
 from exactsym.exact import sign
 from exactsym.exact.evaluate import SparseKummerSystem
-from exactsym.level_radius import LevelRadius, TowerLevelRadius
+from exactsym.level_radius import LevelRadius, TowerLevelRadius, tower_ratio_irrational
 from exactsym.levels import levels_of
 
 
@@ -111,3 +111,33 @@ def test_tower_radii_answer_as_the_exact_ones(seed):
         assert not a.made                  # none of the above computed it
         # read exactly, it is the number
         assert a * 3 == ea * 3 and a - ea == 0 and a.made
+
+
+@settings(max_examples=12, deadline=None)
+@given(st.integers(0, 10 ** 6))
+def test_tower_ratio_refuted_only_when_irrational(seed):
+    """A ratio of radii that tower_ratio_irrational calls irrational is irrational (exact
+    quotient); a radius against itself or a rational multiple of its exact value never is."""
+    from exactsym.paper.ratio_keys import rational_ratio
+    levels = levels_of(_sqrt_config(seed, 5))
+    lazy = [level.radius_squared for level in levels.levels]
+    assume(len(lazy) >= 2 and all(isinstance(r, TowerLevelRadius) for r in lazy))
+    fresh = [TowerLevelRadius(r.tower, r._make, r._p, r._c, r.owner, r.index) for r in lazy]
+    refuted = [[tower_ratio_irrational(a, b) for b in fresh] for a in fresh]
+    assert not any(r.made for r in fresh)
+    exact = [r.value() for r in lazy]
+    for i, a in enumerate(exact):
+        assert not refuted[i][i]
+        assert not tower_ratio_irrational(fresh[i], a * 3)     # 1/3, made on the right
+        for j, b in enumerate(exact):
+            if refuted[i][j]:       # the exact numbers (made): the quotient's test
+                assert rational_ratio(a, b) is None
+
+
+def test_tower_ratio_refutes_the_levels_of_one_configuration():
+    """Seed 0: three levels whose radii have irrational ratios (checked above against the
+    exact quotient); the maps into F_p refute all six without an exact radius."""
+    radii = [level.radius_squared for level in levels_of(_sqrt_config(0, 5)).levels]
+    assert len(radii) == 3 and all(isinstance(r, TowerLevelRadius) for r in radii)
+    assert sum(tower_ratio_irrational(a, b) for a in radii for b in radii if a is not b) == 6
+    assert not any(r.made for r in radii)

@@ -220,3 +220,26 @@ def test_ordered_chords_off_one_circle_agree_with_the_exact_keys(rows):
         for q in pairs:
             assert (ordered[p] == ordered[q]) == (exact[p] == exact[q])
             assert (ordered[p] < ordered[q]) == (exact[p] < exact[q])
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.integers(2, 400), st.integers(1, 996), st.integers(2, 400), st.integers(1, 996))
+def test_a_lazy_line_of_a_sparse_tower_is_shown_by_the_exact_slopes_decimal(k, s, m, t):
+    """Square roots over the sparse Q(zeta_3988): the summary's text of a line whose
+    doubled direction a b is not made is the decimal of the exact product's slope."""
+    from exactsym.exact.evaluate import SparseKummerSystem
+    from exactsym.paper.keys import _product_line, complex_product
+    from exactsym.text_numbers import quotient_decimal
+    system = SparseKummerSystem(3988)
+
+    def vector(q, turn):
+        r = system.sqrt(fmpq(q))
+        return (r * system.cos_turn(fmpq(turn, 997)), r * system.sin_turn(fmpq(turn, 997)))
+    a, b = vector(k, s), vector(m, t)
+    line = _product_line(a, b)
+    shown = line._factor_decimal()
+    if line._vector_ is not None:
+        assert shown is None                 # made: the exact text is shown
+        return
+    x, y = complex_product(a, b)
+    assert shown == f"({sign(x)}, ≈ {quotient_decimal(y, x)} (exact: in --json))"

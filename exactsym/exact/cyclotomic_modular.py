@@ -73,7 +73,7 @@ def images(numbers) -> tuple | None:
     (rationals and elements of cyclotomic fields, embedded in Q(zeta_M) for M the lcm
     of their conductors), or None when that does not apply (another kind of number; M
     without two non-conjugate roots; a denominator divisible by p)."""
-    towers = {id(x.tower): x.tower for x in numbers if type(x) is TowerElement}
+    towers = {id(x.tower): x.tower for x in numbers if isinstance(x, TowerElement) and x.kernel}
     if towers:
         # a tower of nested radicals over a multiquadratic base: its own pair of maps
         if len(towers) > 1 or any(isinstance(x, (PolyElement, SparseCyclotomic))

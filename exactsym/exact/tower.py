@@ -473,6 +473,11 @@ class TowerElement(FieldElement):
 
     __slots__ = ("tower", "v", "_hash")
 
+    #: a number of the analysis kernel: the paper layer's keys read it from balls and F_p
+    #: images in large fields (False: the gathering simulator's subclass, whose decisions
+    #: keep their exact keys)
+    kernel = True
+
     def __init__(self, tower: Tower, v):
         self.tower, self.v, self._hash = tower, v, None
 

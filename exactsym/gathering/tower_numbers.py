@@ -66,6 +66,7 @@ class TowerNumber(TowerElement):
     :class:`TowerNumber` through arithmetic."""
 
     __slots__ = ()
+    kernel = False          # its decisions keep their exact keys (paper.ratio_keys.big_field)
 
     def _new(self, v):
         return _wrap(self.tower, v)      # TowerElement's arithmetic keeps this type

@@ -17,7 +17,7 @@ from flint import ctx
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
-from ..text_numbers import HUGE, LONG, huge_quotient, number, quotient_decimal
+from ..text_numbers import DIGITS, HUGE, LONG, huge_quotient, number, quotient_decimal
 from .homogeneous import line_direction, quotient_text
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
@@ -231,6 +231,9 @@ class LineKey:
             s, x, y = parts
             return f"({s}, ≈ {quotient_decimal(y, x)} (exact: {len(text)} characters, " \
                 "in --json))"
+        shown = self._factor_decimal() if self._value is None else None
+        if shown is not None:
+            return shown
         if (self._text is None or len(self._text) > HUGE) and self._value is None and \
                 self._vector is not None and _quotient_field(*self._vector):
             x, y = self._vector
@@ -240,7 +243,7 @@ class LineKey:
                 return f"({s}, {shown})"
         text = self.text
         if len(text) > LONG and self._value is None and self._vector is not None and \
-                any(type(c) is TowerElement and _kummer_tower(c.tower)
+                any(isinstance(c, TowerElement) and c.kernel and _kummer_tower(c.tower)
                     for c in self._vector) and sign(self._vector[0]):
             # a tower of square roots over a large or sparse cyclotomic field: the undivided
             # quotient's decimal (the division costs seconds there)
@@ -253,6 +256,29 @@ class LineKey:
             # a sum of hundreds of cosines, which the summary would not read back
             return f"({value[0]}, {number(value[1])})"
         return text
+
+    def _factor_decimal(self) -> str | None:
+        """The screen text of a line of a tower over a sparse or large cyclotomic field
+        whose doubled direction a b is not made: its slope's decimal from the balls of
+        the two factors (the product is a tower multiplication of seconds, and its exact
+        text, megabytes, would not be shown), or None."""
+        key = self.canon[3] if self._vector_ is None and isinstance(self.canon, tuple) \
+            and len(self.canon) == 4 else None
+        if not isinstance(key, _DirectionKey) or key.factors is None:
+            return None
+        (a, b), prec = key.factors, 64
+        if not any(isinstance(c, TowerElement) and c.kernel and _kummer_tower(c.tower)
+                   for c in a + b):
+            return None
+        while prec <= 4096:
+            with ctx.workprec(prec + 16):
+                ax, ay, bx, by = (ball_at(v, prec) for v in (a[0], a[1], b[0], b[1]))
+                slope = (ax * by + ay * bx) / (ax * bx - ay * by)
+                if slope.is_finite() and slope.rad() < abs(slope.mid()) * 1e-9 + 1e-30:
+                    return f"({key.signs[0]}, ≈ {slope.str(DIGITS, radius=False)} " \
+                        "(exact: in --json))"
+            prec *= 4
+        return None
 
     @property
     def h(self):
@@ -279,7 +305,8 @@ def _quotient_field(*numbers) -> bool:
     rationals over such a field or over a sparse one (exact/kummer.py): where a slope's
     division costs seconds or grows its quotient's sums without bound."""
     return any(getattr(getattr(x, "field", None), "degree", 0) >= QUOTIENT_DEGREE or
-               type(x) is TowerElement and _kummer_tower(x.tower) for x in numbers)
+               isinstance(x, TowerElement) and x.kernel and _kummer_tower(x.tower)
+               for x in numbers)
 
 
 def _kummer_tower(tower) -> bool:
@@ -293,8 +320,9 @@ def huge_field(*numbers) -> bool:
     simulator's subclass): there the keys of lines and chords are read from balls and
     F_p images, and exact products (of megabyte numbers, or of tower numbers of
     thousands of terms) are made only for equalities."""
-    return _quotient_field(*numbers) or any(isinstance(v, SparseCyclotomic) or
-                                            type(v) is TowerElement for v in numbers)
+    return _quotient_field(*numbers) or any(
+        isinstance(v, SparseCyclotomic) or isinstance(v, TowerElement) and v.kernel
+        for v in numbers)
 
 
 class _Slope:

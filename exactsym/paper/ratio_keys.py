@@ -22,6 +22,7 @@ from ..exact.sparse_cyclotomic import SparseCyclotomic
 from ..exact.tower import TowerElement, _raw as tower_raw, leaf_ratio
 from ..exact.fused import complex_product, cross_is_zero
 from .filtered import ball
+from ..level_radius import tower_ratio_irrational
 
 #: polynomial fields from this degree get ratio keys: all of them, since an inverse is
 #: slow at degree thousands and also at degree 4 with coefficients of thousands of digits
@@ -38,7 +39,7 @@ def big_field(*numbers) -> bool:
     nested radicals (an inverse there is a chain of conjugate products down the levels).
     (Not the gathering simulator's tower numbers, a subclass: its decisions keep their
     keys.)"""
-    return any(isinstance(x, SparseCyclotomic) or type(x) is TowerElement or
+    return any(isinstance(x, SparseCyclotomic) or isinstance(x, TowerElement) and x.kernel or
                isinstance(x, PolyElement) and x.field.degree >= RATIO_KEY_DEGREE
                for x in numbers)
 
@@ -208,6 +209,8 @@ def rational_ratio(num, den):
         q = num / den
         return q.rational() if q.is_rational() else None
     if isinstance(num, TowerElement) or isinstance(den, TowerElement):
+        if tower_ratio_irrational(num, den):     # a level's radius, not made: F_p images
+            return None
         tower = num.tower if isinstance(num, TowerElement) else den.tower
         q = leaf_ratio(tower_raw(tower, num), tower_raw(tower, den))
         if q is not NotImplemented:
