@@ -154,7 +154,8 @@ NESTED = {2: ("sqrt(2+sqrt(3))", "sqrt(5-sqrt(2))"),
 
 def nested_inputs() -> dict[str, str]:
     """3 points and 100 points (a C4 set of 25 orbits, and the same with one point moved:
-    asymmetric) whose coordinates are small rational combinations of nested radicals."""
+    asymmetric) whose coordinates are small rational combinations of nested radicals; ten
+    and twelve points on distinct nested radicals."""
     out = {}
     for depth, (r1, r2) in NESTED.items():
         out[f"nested depth {depth}, 3 pts"] = _cartesian([(r1, "0"), ("0", r2), ("1", "1")])
@@ -166,6 +167,12 @@ def nested_inputs() -> dict[str, str]:
             orbit += [(x, y), (f"-({y})", x), (f"-({x})", f"-({y})"), (y, f"-({x})")]
         out[f"nested depth {depth}, 100 pts C4"] = _cartesian(orbit)
         out[f"nested depth {depth}, 100 pts asym"] = _cartesian(orbit[:-1] + [("1/7", "2/7")])
+    # ten and twelve distinct nested radicals sqrt(1 + sqrt(p)): towers of 10 and 12 levels
+    # over Q(sqrt 2, ..., sqrt 29 or 37), where a "no" of the square-root test took 30 s
+    primes = (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37)
+    for k in (10, 12):
+        out[f"{k} nested radicals, {k} pts"] = _cartesian(
+            [(f"sqrt(1+sqrt({p}))", str(i)) for i, p in enumerate(primes[:k])])
     return out
 
 

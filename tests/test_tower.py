@@ -303,3 +303,27 @@ def test_square_radicand_has_no_witness():
     assert nonsquare_witness(tower, 2, limit=3000) is None
     tower.radicands[-1] = MQ.rational(3) + MQ.sqrt(3)            # not a square
     assert nonsquare_witness(tower, 2) is not None
+
+
+_BASE = (2, 3, 5, 7, 11)
+_mq = st.dictionaries(st.sampled_from([1, 2, 3, 5, 6, 7, 10, 11, 14, 15, 21, 22, 35, 77, 2310]),
+                      st.integers(-4, 4).filter(bool).map(fmpq), min_size=1, max_size=5
+                      ).map(MQ)
+
+
+@settings(max_examples=60, deadline=None)
+@given(_mq, _mq)
+def test_base_square_roots_with_the_legendre_filter(y, z):
+    """Tower._mq_root over Q(sqrt 2, ..., sqrt 11): the F_p filter never refuses a square
+    (y^2 has its root found, and every Legendre character is 1 on it), and a product it
+    refuses has a non-residue image (a character -1)."""
+    from exactsym.exact.tower import Tower
+    from exactsym.exact.tower_proof import square_class_rank
+    tower = Tower(_BASE)
+    x = y * y
+    assert square_class_rank(_BASE, [x], tries=2, signs=4) == 0
+    root = tower._mq_root(x, len(_BASE))
+    assert root is not None and root * root == x
+    w = y * z
+    if w.sign() > 0 and tower._mq_root(w, len(_BASE)) is not None:
+        assert square_class_rank(_BASE, [w], tries=2, signs=4) == 0

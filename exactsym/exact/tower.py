@@ -310,6 +310,14 @@ class Tower:
             return _rational_root(x.to_fmpq(), self.primes[:k])
         if x.sign() < 0 or k == 0:
             return None
+        if k >= 3 and len(x.terms) > 1:
+            # a Legendre character of a ring map K_0 -> F_p that is -1 on x proves x no
+            # square (the image of a square is a square): the search below branches three
+            # ways per prime, and its "no" took 30 s over ten primes (nested radicals of
+            # ten square roots, MakeAsym's radial move)
+            from .tower_proof import square_class_rank
+            if square_class_rank(self.primes[:k], [x], tries=2, signs=4):
+                return None
         p = self.primes[k - 1]
         a, b = _mq_split(x, p)
         sp = MQ({p: fmpq(1)})

@@ -63,6 +63,9 @@ def image(x, p: int, base: dict, roots: list) -> int:
     return (image(a, p, base, roots) + image(b, p, base, roots) * roots[lev - 1]) % p
 
 
+_NON_RESIDUES: dict = {}     # p -> the least quadratic non-residue mod p
+
+
 def sqrt_mod(a: int, p: int):
     """A square root of a modulo the odd prime p, or None (Tonelli-Shanks)."""
     a %= p
@@ -73,7 +76,14 @@ def sqrt_mod(a: int, p: int):
     q, s = p - 1, 0
     while q % 2 == 0:
         q, s = q // 2, s + 1
-    z = next(z for z in range(2, p) if pow(z, (p - 1) // 2, p) == p - 1)
+    z = _NON_RESIDUES.get(p)
+    if z is None:
+        # the base primes and their products are residues mod a split prime: the search
+        # passes them all, once per prime
+        z = next(z for z in range(2, p) if pow(z, (p - 1) // 2, p) == p - 1)
+        if len(_NON_RESIDUES) >= 1 << 12:
+            _NON_RESIDUES.clear()
+        _NON_RESIDUES[p] = z
     m, c, t, r = s, pow(z, q, p), pow(a, q, p), pow(a, (q + 1) // 2, p)
     while t != 1:
         i, t2 = 0, t
