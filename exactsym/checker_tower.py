@@ -65,6 +65,19 @@ def _is_prime(p: int) -> bool:
     return p > 1 and all(p % d for d in range(2, isqrt(p) + 1))
 
 
+def add_legendre_row(rows: dict, values: list, p: int) -> None:
+    """Row-reduce the vector of Legendre symbols (v | p) of ``values`` (bit i set for -1)
+    into ``rows`` (pivot bit -> row) over F_2: their number is the rank so far."""
+    vector = 0
+    for i, v in enumerate(values):
+        if pow(v, (p - 1) // 2, p) == p - 1:
+            vector |= 1 << i
+    while vector and vector.bit_length() - 1 in rows:
+        vector ^= rows[vector.bit_length() - 1]
+    if vector:
+        rows[vector.bit_length() - 1] = vector
+
+
 class Tower:
     """The field of a ``"tower"`` spec: checks every level, then makes elements."""
 

@@ -22,10 +22,10 @@ from fractions import Fraction
 
 try:
     from .checker_numbers import Field, integer, need
-    from .checker_tower import Tower, _add, _is_prime, _level, _neg, _split
+    from .checker_tower import Tower, _add, _is_prime, _level, _neg, _split, add_legendre_row
 except ImportError:     # run as a lone script: sibling files
     from checker_numbers import Field, integer, need
-    from checker_tower import Tower, _add, _is_prime, _level, _neg, _split
+    from checker_tower import Tower, _add, _is_prime, _level, _neg, _split, add_legendre_row
 
 
 class CyclotomicTower(Tower):
@@ -85,12 +85,13 @@ class CyclotomicTower(Tower):
     def _prove(self, i: int, r, lev: dict) -> None:
         """f is monic integral with d distinct roots h_1..h_d modulo the odd prime p
         (:meth:`_split_roots`): theta -> h_1 is a ring map R_0 -> F_p.  N_(K_0/Q)(n) =
-        Res(f, n) is, modulo p, prod n(h_k).  With every r_j (j < i) p-integral and N(r_j) a p-unit (the norm
-        taken down the tower, a^2 - r b^2 per level, then over K_0), R = R_0[y_1..y_(i-1)]
-        has a discriminant over Z_(p) that is a p-unit, so it is integrally closed, and
-        y_j -> roots_j (roots_j^2 = phi(r_j) mod p, checked) extends the map to R.  If
-        r_i = z^2 in K_(i-1) with r_i in R, z is integral over R, so z is in R and
-        phi(r_i) = phi(z)^2 would be a square mod p; it is checked to be a non-residue."""
+        Res(f, n) is, modulo p, prod n(h_k).  With every r_j (j < i) p-integral and N(r_j)
+        a p-unit (the norm taken down the tower, a^2 - r b^2 per level, then over K_0),
+        R = R_0[y_1..y_(i-1)] has a discriminant over Z_(p) that is a p-unit, so it is
+        integrally closed, and y_j -> roots_j (roots_j^2 = phi(r_j) mod p, checked)
+        extends the map to R.  If r_i = z^2 in K_(i-1) with r_i in R, z is integral over
+        R, so z is in R and phi(r_i) = phi(z)^2 would be a square mod p; it is checked to
+        be a non-residue."""
         p, roots = lev.get("prime"), lev.get("roots")
         thetas = self._split_roots(f"tower level {i}", p, lev.get("theta"))
         need(isinstance(roots, list) and len(roots) == i - 1,
@@ -150,14 +151,7 @@ class CyclotomicTower(Tower):
             p = entry.get("prime")
             self._split_roots(f"tower kummer prime {k + 1}", p, entry.get("theta"))
             need(all(v % p for v in values), f"tower kummer prime {p} divides a radicand")
-            vector = 0
-            for i, v in enumerate(values):
-                if pow(v, (p - 1) // 2, p) == p - 1:
-                    vector |= 1 << i
-            while vector and vector.bit_length() - 1 in rows:
-                vector ^= rows[vector.bit_length() - 1]
-            if vector:
-                rows[vector.bit_length() - 1] = vector
+            add_legendre_row(rows, values, p)
         need(len(rows) == len(values), f"tower: the Legendre symbols of the kummer levels "
              f"have rank {len(rows)} over F_2, not {len(values)}")
 

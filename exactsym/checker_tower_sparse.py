@@ -41,11 +41,11 @@ from fractions import Fraction
 try:
     from .checker_numbers import Invalid, integer, need
     from .checker_sparse import SNum, SparseField, is_prime
-    from .checker_tower import Tower
+    from .checker_tower import Tower, add_legendre_row
 except ImportError:     # run as a lone script: sibling files
     from checker_numbers import Invalid, integer, need
     from checker_sparse import SNum, SparseField, is_prime
-    from checker_tower import Tower
+    from checker_tower import Tower, add_legendre_row
 
 
 class SparseKummerTower(Tower):
@@ -119,14 +119,7 @@ class SparseKummerTower(Tower):
             need(p > 2 and p % n == 1 and is_prime(p),
                  f"tower kummer prime {k + 1}: {p} is not an odd prime = 1 mod {n}")
             need(all(v % p for v in values), f"tower kummer prime {p} divides a radicand")
-            vector = 0
-            for i, v in enumerate(values):
-                if pow(v, (p - 1) // 2, p) == p - 1:
-                    vector |= 1 << i
-            while vector and vector.bit_length() - 1 in rows:
-                vector ^= rows[vector.bit_length() - 1]
-            if vector:
-                rows[vector.bit_length() - 1] = vector
+            add_legendre_row(rows, values, p)
         need(len(rows) == len(values), f"tower: the Legendre symbols of the kummer levels "
              f"have rank {len(rows)} over F_2, not {len(values)}")
 

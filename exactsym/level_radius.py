@@ -34,7 +34,42 @@ from .geometry import enclosure_of
 __all__ = ["LevelRadius", "TowerLevelRadius"]
 
 
-class LevelRadius(PolyElement):
+class _LevelIdentity:
+    """What a lazy squared radius answers from its level alone: ``==`` with the radius of
+    another level of the same levels (``owner``) by their indices (the levels group the
+    points by exactly equal distance: distinct levels, distinct radii), ``== 0`` and
+    ``sign`` from balls (``enclosure``) while not made.  ``_number`` is the exact class
+    whose methods answer everything else."""
+
+    __slots__ = ()
+
+    def _same_levels(self, other) -> bool:
+        return isinstance(other, type(self)) and other.owner is self.owner
+
+    def _ball_sign(self):
+        """1 when a ball proves the radius positive, else None (not decided)."""
+        prec = 64
+        while prec <= 1024:
+            if self.enclosure(prec) > 0:
+                return 1
+            prec *= 4
+        return None
+
+    def __eq__(self, other):
+        if self is other:
+            return True
+        if self._same_levels(other):
+            return self.index == other.index        # distinct levels, distinct radii
+        if isinstance(other, (int, fmpq)) and other == 0:
+            return self.sign() == 0
+        return self._number.__eq__(self, other)
+
+    def __ne__(self, other):
+        result = self.__eq__(other)
+        return result if result is NotImplemented else not result
+
+
+class LevelRadius(_LevelIdentity, PolyElement):
     """``scale * |p - C|^2`` (``p``, ``centre`` exact points of one cyclotomic field,
     ``make()`` the exact |p - C|^2) for level ``index`` of the levels ``owner``."""
 
@@ -98,30 +133,10 @@ class LevelRadius(PolyElement):
         return tuple((((ix - icx) ** 2 + (iy - icy) ** 2) * q) % p
                      for ix, iy, icx, icy in zip(*parts))
 
+    _number = PolyElement
+
     def sign(self) -> int:
-        if self._exact is None:
-            prec = 64
-            while prec <= 1024:
-                if self.enclosure(prec) > 0:
-                    return 1
-                prec *= 4
-        return PolyElement.sign(self)
-
-    def _same_levels(self, other) -> bool:
-        return isinstance(other, LevelRadius) and other.owner is self.owner
-
-    def __eq__(self, other):
-        if self is other:
-            return True
-        if self._same_levels(other):
-            return self.index == other.index        # distinct levels, distinct radii
-        if isinstance(other, (int, fmpq)) and other == 0:
-            return self.sign() == 0
-        return PolyElement.__eq__(self, other)
-
-    def __ne__(self, other):
-        result = self.__eq__(other)
-        return result if result is NotImplemented else not result
+        return (self._exact is None and self._ball_sign()) or PolyElement.sign(self)
 
     __hash__ = PolyElement.__hash__
 
@@ -149,16 +164,17 @@ class LevelRadius(PolyElement):
 
 
 
-class TowerLevelRadius(TowerElement):
+class TowerLevelRadius(_LevelIdentity, TowerElement):
     """The squared radius |p - C|^2 of level ``index`` of the levels ``owner`` in a tower of
     square roots over the sparse Q(zeta_N), computed (``make()``) when first read exactly.
 
     There the product p.C alone cost seconds: C = (X/D, Y/D) has the tower's inverse of D
     in it (three robots at radii sqrt(k) and turns j/997 ran past 90 s, most of it on the
     radii of the paper's moved configurations).  Before it is made it answers, as
-    :class:`LevelRadius` does: balls from those of p and of C's homogeneous form; ``==`` and ``<`` with another
-    level of the same levels by their indices (the levels are sorted by radius, nearest
-    first, and distinct levels have distinct radii); ``sign`` from balls.  Anything else
+    :class:`LevelRadius` does: balls from those of p and of C's homogeneous form; ``==``
+    and ``<`` with another level of the same levels by their indices (the levels are
+    sorted by radius, nearest first, and distinct levels have distinct radii); ``sign``
+    from balls.  Anything else
     reads the exact number (``v``), then computed once."""
 
     __slots__ = ("_make", "_value", "_exact", "_p", "_c", "owner", "index")
@@ -204,30 +220,10 @@ class TowerLevelRadius(TowerElement):
             dy = enclosure_of(y, prec) - enclosure_of(cy, prec) / d
             return dx * dx + dy * dy
 
+    _number = TowerElement
+
     def sign(self) -> int:
-        if not self.made:
-            prec = 64
-            while prec <= 1024:
-                if self.enclosure(prec) > 0:
-                    return 1
-                prec *= 4
-        return sign(self.value())
-
-    def _same_levels(self, other) -> bool:
-        return isinstance(other, TowerLevelRadius) and other.owner is self.owner
-
-    def __eq__(self, other):
-        if self is other:
-            return True
-        if self._same_levels(other):
-            return self.index == other.index        # distinct levels, distinct radii
-        if isinstance(other, (int, fmpq)) and other == 0:
-            return self.sign() == 0
-        return TowerElement.__eq__(self, other)
-
-    def __ne__(self, other):
-        result = self.__eq__(other)
-        return result if result is NotImplemented else not result
+        return (not self.made and self._ball_sign()) or sign(self.value())
 
     __hash__ = TowerElement.__hash__
 
