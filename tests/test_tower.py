@@ -327,3 +327,15 @@ def test_base_square_roots_with_the_legendre_filter(y, z):
     w = y * z
     if w.sign() > 0 and tower._mq_root(w, len(_BASE)) is not None:
         assert square_class_rank(_BASE, [w], tries=2, signs=4) == 0
+
+
+def test_products_of_the_levels_radicands_are_squares_above_them():
+    """Levels sqrt(1+sqrt(p)) over Q(sqrt 2, sqrt 3, sqrt 5, sqrt 7): a product of
+    radicands times a square of K_0 has its root above the levels (Kummer theory: the
+    Legendre characters find it dependent), any other number a new level."""
+    system, (a, b, c, ab, abc, new) = _values(
+        "sqrt(1+sqrt(2))", "sqrt(1+sqrt(3))", "sqrt(1+sqrt(5))",
+        "sqrt((1+sqrt(2))*(1+sqrt(3)))", "sqrt((1+sqrt(2))*(1+sqrt(3))*(1+sqrt(5))*(3+sqrt(7))^2)",
+        "sqrt(1+sqrt(7))")
+    assert ab == a * b and abc == a * b * c * (3 + MQ.sqrt(7))
+    assert system.tower.levels == 4 and new * new == 1 + MQ.sqrt(7)

@@ -310,7 +310,7 @@ class Tower:
             return _rational_root(x.to_fmpq(), self.primes[:k])
         if x.sign() < 0 or k == 0:
             return None
-        if k >= 3 and len(x.terms) > 1:
+        if k >= 3 and len(x.terms) > 1 and self._in_base([x], k):
             # a Legendre character of a ring map K_0 -> F_p that is -1 on x proves x no
             # square (the image of a square is a square): the search below branches three
             # ways per prime, and its "no" took 30 s over ten primes (nested radicals of
@@ -346,14 +346,18 @@ class Tower:
         if root is not None:
             return root
         root = self._rational_sqrt(x)
-        if root is None and self.levels >= MAX_LEVELS and isinstance(x, MQ) and \
-                all(isinstance(r, MQ) for r in self.radicands):
-            # a new level would be beyond the bound: refuse now when x is proved no square
-            # (independent of the radicands modulo squares) instead of after the test
+        proved_new = False
+        if root is None and isinstance(x, MQ) and x.sign() > 0 and \
+                all(isinstance(r, MQ) for r in self.radicands) and \
+                self._in_base([x] + self.radicands):
+            # every level a square root of K_0: by Kummer theory x is a square above them
+            # only if x is in K_0*^2 <r_1, ..., r_L>; Legendre characters proving x and the
+            # radicands independent modulo squares settle it at once (the search below
+            # branches twice per level: ten levels took seconds), and beyond the bound
+            # the new level is refused now instead of after the search
             from .tower_proof import independent_square_classes
-            if independent_square_classes(self.primes, self.radicands + [x]):
-                self._check_new_level()
-        if root is None:
+            proved_new = independent_square_classes(self.primes, self.radicands + [x])
+        if root is None and not proved_new:
             root = self.root_in(x, self.levels)
         if root is None:
             self._check_new_level()
@@ -363,6 +367,16 @@ class Tower:
             root = neg(root)
         self._roots[key] = root
         return root
+
+    def _in_base(self, values, k: int | None = None) -> bool:
+        """Whether the MQ ``values`` lie in Q(sqrt p : p among the first ``k`` primes,
+        all by default): every squarefree radicand of their terms divides the product of
+        those primes (the gathering simulator's towers take square roots of any rational
+        over an empty list; Legendre characters of K_0 say nothing there)."""
+        product = 1
+        for q in self.primes[:k]:
+            product *= q
+        return all(product % int(m) == 0 for v in values for m in v.terms)
 
     def adjoin(self, x):
         """The generator of a new level for ``x > 0`` (raw value) that the caller has
