@@ -156,8 +156,11 @@ class Tower:
             self._balls[key] = (isqrt(max(lo, 0) << bits), isqrt(hi << bits) + 1)
         return self._balls[key]
 
+    #: the base's number type: its own sign, exact (a subclass over another base sets it)
+    base_number = Root
+
     def _sign(self, x) -> int:
-        if isinstance(x, Root):
+        if isinstance(x, self.base_number):
             return x.sign()
         bits = 64
         while bits < 1 << 20:

@@ -39,11 +39,11 @@ from __future__ import annotations
 from fractions import Fraction
 
 try:
-    from .checker_numbers import Invalid, integer, need
+    from .checker_numbers import integer, need
     from .checker_sparse import SNum, SparseField, is_prime
     from .checker_tower import Tower, add_legendre_row
 except ImportError:     # run as a lone script: sibling files
-    from checker_numbers import Invalid, integer, need
+    from checker_numbers import integer, need
     from checker_sparse import SNum, SparseField, is_prime
     from checker_tower import Tower, add_legendre_row
 
@@ -51,6 +51,8 @@ except ImportError:     # run as a lone script: sibling files
 class SparseKummerTower(Tower):
     """The field of a ``"tower"`` spec whose base is ``{"sparse-cyclotomic": ...}``: checks
     the base and the proof of the levels, then makes elements (:class:`checker_tower.TNum`)."""
+
+    base_number = SNum          # a base number's sign: the sparse zero test, then balls
 
     def __init__(self, spec: dict):
         need(isinstance(spec, dict) and isinstance(spec.get("base"), dict)
@@ -91,17 +93,6 @@ class SparseKummerTower(Tower):
     def bounds(self, x, bits: int):
         """Integers lo <= x 2^bits <= hi (x a raw value; checker_ordering's filter)."""
         return self._interval(x, bits)
-
-    def _sign(self, x) -> int:
-        if isinstance(x, SNum):
-            return x.sign()
-        bits = 64
-        while bits < 1 << 20:
-            lo, hi = self._interval(x, bits)
-            if lo > 0 or hi < 0:
-                return 1 if lo > 0 else -1
-            bits *= 2
-        raise Invalid("a sign could not be decided")
 
     # -- the proof that no r_i is a square in K_(i-1) ----------------------------
     def _prove_kummer(self, rationals: list, primes) -> None:

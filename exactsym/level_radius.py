@@ -29,6 +29,7 @@ from flint import arb, ctx, fmpq
 from .exact.field import PolyElement
 from .exact.field import FieldElement, sign
 from .exact.tower import TowerElement, _raw
+from .exact.tower_proof import tower_images
 from .geometry import enclosure_of
 
 __all__ = ["LevelRadius", "TowerLevelRadius"]
@@ -246,7 +247,6 @@ def tower_ratio_irrational(num, den) -> bool:
     no exact radius is made (a radial projection asks whether two levels' radii have a
     rational ratio; in a tower over the sparse Q(zeta_3988) an exact radius costs
     seconds).  Images with a zero denominator prove nothing: False."""
-    from .exact.tower_proof import tower_images
     lazy = [z for z in (num, den) if isinstance(z, TowerLevelRadius) and not z.made]
     if not lazy:
         return False

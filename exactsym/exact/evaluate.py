@@ -475,7 +475,7 @@ def _number_system(exprs: Iterable[Node], turns: Iterable[fmpq]):
             phi = cyclotomic.euler_phi(cosines)
             if cosines != conductor and phi <= limit:
                 return _kummer_system(cosines, phi)
-            return _sparse_system(atoms, conductor, degree)
+            return _sparse_system(atoms, conductor)
     if all(kind != "cos" for kind, *_ in atoms):   # nested radicals of square roots only
         primes: set = set()
         for atom in atoms:
@@ -519,25 +519,15 @@ def _check_tower_levels(atoms, primes) -> None:
 SPARSE_GAUSS_LEVEL = 32
 
 
-def _sparse_system(atoms, conductor: int, degree: int):
-    """The sparse Q(zeta_N) for cos/sin beyond the dense limit; with square roots of long
-    Gauss sums, the tower of square roots over the cosines' sparse field instead; or
-    FieldTooLargeError (one line, before any work) when a square root's Gauss sum would be
-    too long and the tower does not apply."""
+def _sparse_system(atoms, conductor: int):
+    """The sparse Q(zeta_N) for cos/sin beyond the dense limit, square roots held as Gauss
+    sums of at most :data:`SPARSE_GAUSS_LEVEL` terms; with a longer one, the tower of square
+    roots over the cosines' sparse field instead (which refuses a Gauss sum beyond
+    :data:`.sparse_cyclotomic.MAX_GAUSS_TERMS` when the input needs one)."""
     if any(atom[0] == "sqrt" and sparse_cyclotomic.gauss_terms(
             cyclotomic.squarefree_decomposition(atom[1])[1]) > SPARSE_GAUSS_LEVEL
            for atom in atoms):
         return SparseKummerSystem(_cosine_conductor(atoms))
-    for atom in atoms:
-        if atom[0] == "sqrt":
-            s = cyclotomic.squarefree_decomposition(atom[1])[1]
-            terms = sparse_cyclotomic.gauss_terms(s)
-            if terms > sparse_cyclotomic.MAX_GAUSS_TERMS:
-                raise FieldTooLargeError(
-                    f"these numbers need the cyclotomic field Q(zeta_{conductor}) of degree "
-                    f"{degree}, above the limit {DENSE_DEGREE}, where sqrt({s}) would "
-                    f"be a sum of {terms} roots of unity (limit "
-                    f"{sparse_cyclotomic.MAX_GAUSS_TERMS})")
     return SparseCyclotomicSystem(conductor)
 
 

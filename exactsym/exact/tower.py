@@ -29,7 +29,7 @@ Public names: :class:`Tower`, :class:`TowerElement`, :func:`height_bits`.
 from __future__ import annotations
 
 from fractions import Fraction
-from math import isqrt, lcm
+from math import isqrt, lcm, prod
 
 from flint import arb, ctx, fmpq, fmpz
 
@@ -373,9 +373,7 @@ class Tower:
         all by default): every squarefree radicand of their terms divides the product of
         those primes (the gathering simulator's towers take square roots of any rational
         over an empty list; Legendre characters of K_0 say nothing there)."""
-        product = 1
-        for q in self.primes[:k]:
-            product *= q
+        product = prod(self.primes[:k])
         return all(product % int(m) == 0 for v in values for m in v.terms)
 
     def adjoin(self, x):
