@@ -339,3 +339,31 @@ def test_products_of_the_levels_radicands_are_squares_above_them():
         "sqrt(1+sqrt(7))")
     assert ab == a * b and abc == a * b * c * (3 + MQ.sqrt(7))
     assert system.tower.levels == 4 and new * new == 1 + MQ.sqrt(7)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.booleans(), min_size=4, max_size=4), _mq, _mq)
+def test_roots_over_levels_of_k0_agree_with_the_complete_search(subset, y, z):
+    """Tower.root_in for x of K_0 over levels sqrt(1 + sqrt p), p = 2, 3, 5, 7: the Kummer
+    shortcut (the one product of radicands Legendre characters allow) answers as the
+    recursion over the levels does, for x = y^2 * prod(r_j : j in S) (always a square up
+    there) and for x = y z * prod(...) (a square or not); a root squares back to x."""
+    from exactsym.exact.tower import Tower, _UNDECIDED
+    tower = Tower(_BASE)
+    for p in (2, 3, 5, 7):
+        tower.radicands.append(1 + MQ.sqrt(p))
+    product = MQ.rational(1)
+    for r, chosen in zip(tower.radicands, subset):
+        if chosen:
+            product = product * r
+    search = Tower(_BASE)
+    search.radicands = tower.radicands
+    search._kummer_root = lambda x, lev: _UNDECIDED          # the recursion alone
+    for x in (y * y * product, y * z * product):
+        if x.sign() <= 0:
+            continue
+        root = tower.root_in(x, 4)
+        assert (root is None) == (search.root_in(x, 4) is None)
+        if root is not None:
+            assert tower.mul(root, root) == x
+    assert tower.root_in(y * y * product, 4) is not None

@@ -114,26 +114,17 @@ def _split_primes(primes):
             yield k * m + 1
 
 
-def square_class_rank(primes, values, tries: int = 32, signs: int = 8) -> int:
-    """A proved lower bound on the rank of the classes of the non-zero elements ``values``
-    of K_0 = Q(sqrt q : q in ``primes``) (``MQ``) in K_0*/K_0*^2: at least that many of
-    them are independent (no product of a non-empty subset of those is a square in K_0),
-    so K_0(sqrt v : v in values) has degree at least 2^rank over K_0.  Each ring map
-    phi: K_0 -> F_p (p odd, every base prime a square mod p, no denominator divisible by
-    p: the roots' signs choose the map) composed with the Legendre symbol is a character
-    of K_0*/K_0*^2 where phi is a unit (the image of a square is a square); the rank over
-    F_2 of a matrix of such characters is a lower bound of the rank.  The primes are
-    :func:`_split_primes` (``tries`` of them, ``signs`` maps each).  Milliseconds: the
-    tower refuses a level beyond its bound with it before any square-root test in a base
-    of 2^k terms."""
-    need = len(values)
-    if need == 0:
-        return 0
+def _character_rows(primes, values, tries: int, signs: int):
+    """Rows of characters of K_0*/K_0*^2 on the non-zero ``values`` (``MQ``): bit i set when
+    value i is a non-residue.  Each ring map phi: K_0 -> F_p (p odd, every base prime a
+    square mod p, no denominator divisible by p: the roots' signs choose the map) composed
+    with the Legendre symbol is such a character where phi is a unit: the image of a square
+    is a square (p is unramified, so a root of a p-unit is p-integral).  The primes are
+    :func:`_split_primes` (``tries`` of them, ``signs`` maps each)."""
     dens = 1
     for v in values:
         for c in v.terms.values():
             dens *= int(c.q)
-    basis: list = []                        # row-reduced bit masks over F_2
     candidates = _split_primes(primes)
     for _ in range(tries):
         p = next(candidates)
@@ -148,15 +139,65 @@ def square_class_rank(primes, values, tries: int = 32, signs: int = 8) -> int:
             images = [image(v, p, base, []) for v in values]
             if any(a == 0 for a in images):
                 continue
-            row = sum(1 << i for i, a in enumerate(images) if pow(a, (p - 1) // 2, p) != 1)
-            for b in basis:
-                row = min(row, row ^ b)
-            if row:
-                basis.append(row)
-                basis.sort(reverse=True)
-                if len(basis) == need:
-                    return need
+            yield sum(1 << i for i, a in enumerate(images) if pow(a, (p - 1) // 2, p) != 1)
+
+
+def square_class_rank(primes, values, tries: int = 32, signs: int = 8) -> int:
+    """A proved lower bound on the rank of the classes of the non-zero elements ``values``
+    of K_0 = Q(sqrt q : q in ``primes``) (``MQ``) in K_0*/K_0*^2: at least that many of
+    them are independent (no product of a non-empty subset of those is a square in K_0),
+    so K_0(sqrt v : v in values) has degree at least 2^rank over K_0.  The rank over F_2
+    of a matrix of characters (:func:`_character_rows`) is a lower bound of the rank.
+    Milliseconds: the tower refuses a level beyond its bound with it before any
+    square-root test in a base of 2^k terms."""
+    need = len(values)
+    if need == 0:
+        return 0
+    basis: list = []                        # row-reduced bit masks over F_2
+    for row in _character_rows(primes, values, tries, signs):
+        for b in basis:
+            row = min(row, row ^ b)
+        if row:
+            basis.append(row)
+            basis.sort(reverse=True)
+            if len(basis) == need:
+                return need
     return len(basis)
+
+
+def kummer_subset(primes, radicands, x, tries: int = 32, signs: int = 8):
+    """Which product of ``radicands`` r_1..r_L (``MQ``, non-zero) can make the non-zero x
+    a square of K_0 (``MQ`` over the base ``primes``): by Kummer theory x is a square of
+    K_0(sqrt r_1, ..., sqrt r_L) iff x * prod(r_j : j in S) is a square of K_0 for some S.
+
+    Each character chi (:func:`_character_rows`) must then satisfy
+    chi(x) = sum(chi(r_j) : j in S) over F_2.  Returns False when that system has no
+    solution (proved: x is no square up there), the tuple S (indices from 0, increasing)
+    when the radicands' characters have full rank L (S is then the only candidate: the
+    caller tests the one product), and None when the characters found within the bounds
+    settle neither."""
+    n = len(radicands)
+    rows: dict = {}                      # pivot bit -> reduced row; bit 0: x, bit j: r_j
+    for chars in _character_rows(primes, [x] + list(radicands), tries, signs):
+        row = chars
+        for pivot in sorted(rows, reverse=True):
+            if row >> pivot & 1:
+                row ^= rows[pivot]
+        if row == 1:                     # 0 = chi(x) + sum over S: no S satisfies it
+            return False
+        if row:
+            rows[row.bit_length() - 1] = row
+            if len(rows) == n:
+                break
+    else:
+        return None
+    chosen = 0                           # bit j: r_j in S
+    for pivot in sorted(rows):           # back substitution, lowest pivot first
+        row = rows[pivot]
+        # s_pivot = chi(x) + the s_j of the lower bits of its row (all decided already)
+        if (row & 1) ^ ((row & chosen).bit_count() & 1):
+            chosen |= 1 << pivot
+    return tuple(j - 1 for j in range(1, n + 1) if chosen >> j & 1)
 
 
 _MAPS: dict = {}           # id(tower) -> (tower, number of radicands, maps or None)
