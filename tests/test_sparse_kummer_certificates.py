@@ -251,3 +251,29 @@ def test_the_ordering_filter_agrees_with_exact_products():
     assert _enclosed_cross_sign((nums[0], nums[1]), (nums[0], nums[1])) is None
     assert _enclosed_cross_sign((nums[2], nums[1]), (nums[2] * 2, nums[1] * 2)) is None
     assert _enclosed_cross_sign((nums[0], 1), (nums[0], nums[1])) is None    # an int: exact
+
+
+def test_checker_tower_products_by_a_lower_level():
+    """Tower.mul of a factor below the other's level multiplies the two halves (a + b y) c
+    = a c + (b c) y, where the full formula walked the other factor twice per level: the
+    same products as the full formula, on numbers spread over three levels."""
+    from exactsym.checker_tower import _add, _make, _split, _level
+    field = SparseKummerTower(_tower(3999932, [145, 374, 7], ["11999797", "35999389",
+                                                             "71998777"]))
+
+    def full(x, y):
+        if not isinstance(x, tuple) and not isinstance(y, tuple):
+            return x * y
+        lev = max(_level(x), _level(y))
+        (xa, xb), (ya, yb) = _split(x, lev), _split(y, lev)
+        cross = _add(full(xa, yb), full(xb, ya))
+        return _make(lev, _add(full(xa, ya), full(field.r[lev - 1], full(xb, yb))), cross)
+    raw = [field.num(v).v for v in (
+        "3/7", {"4": "1", "17": "-2"}, [1, "0", {"4": "1"}], [2, "1/3", {"600": "-1"}],
+        [3, [1, "0", {"17": "2"}], {"990": "1"}], [3, [2, [1, "1", "2"], "-1"], [1, "0", "5"]],
+        [2, "0", [1, {"8": "1"}, "1"]])]
+    for x in raw:
+        for y in raw:
+            assert field.mul(x, y) == full(x, y) == field.mul(y, x)
+    y1, y2, y3 = (field.num([i, "0", "1"]) for i in (1, 2, 3))
+    assert (y1 * y2 * y3) * (y3 * y2 * y1) == 145 * 374 * 7
