@@ -14,7 +14,9 @@ of the plane with g(P) = P; the "level" of a point is the set of points as far a
     H (b is in the H-orbit of a, computed from the verified permutations) or the witness names
     a point w whose image under the candidate is not in P: then the candidate is not in G.
 So G = H: the checker names it, derives "orderable" (no element of G moves a point) and
-compares both with the claim.  The cost is linear: O(n) per generator, O(1) per candidate.
+compares both with the claim.  The cost is O(n) per generator and, per candidate, O(1)
+(polar) or the number of points on the circle of w (Cartesian, see image_in in cartesian():
+one when the distances from c differ).
 
 Numbers are exact: rationals (ints after scaling by a common denominator, or Fractions), or
 elements of one real number field Q(theta) written as coefficient lists in theta.
