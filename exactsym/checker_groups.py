@@ -135,12 +135,20 @@ def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, boo
     # Distances from c without the square of the sum S = (sx, sy) (in a sparse Q(zeta_N) a
     # sum of hundreds of cosines on every level, whose square costs minutes): with
     # w_i = n p_i - S, |w_i|^2 = n (n |p_i|^2 - 2 S.p_i) + |S|^2, so the points on one
-    # circle about c are those with one value of key_i = n |p_i|^2 - 2 S.p_i.
-    key = [n * (x * x + y * y) - 2 * (sx * x + sy * y) for x, y in pts]
-    on_circle: dict = {}
-    for i, k in enumerate(key):
-        on_circle.setdefault(k, []).append(i)
-    level = on_circle[key[ref]]
+    # circle about c are those with one value of key_i = n |p_i|^2 - 2 S.p_i.  (Python
+    # numbers: |w_i|^2 itself, as cheap.)
+    if field is not None:
+        key = [n * (x * x + y * y) - 2 * (sx * x + sy * y) for x, y in pts]
+    else:
+        key = [x * x + y * y for x, y in w]
+    level = [i for i, k in enumerate(key) if k == key[ref]]
+    on_circle: dict = {}                        # key -> the points with it, when first asked
+
+    def circle(k):
+        if not on_circle:
+            for i, v in enumerate(key):
+                on_circle.setdefault(v, []).append(i)
+        return on_circle[k]
 
     def distance2(i, j):                        # |p_i - p_j|^2: no S
         (x, y), (u, v) = pts[i], pts[j]
@@ -163,7 +171,7 @@ def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, boo
         # g(p_i) is such a point when it is in P.  Exact, with no product of S by S.
         d = distance2(i, ref)
         turn = side(ref, i) * (1 if kind == "rotation" else -1)
-        return any(distance2(j, b) == d and side(b, j) == turn for j in on_circle[key[i]])
+        return any(distance2(j, b) == d and side(b, j) == turn for j in circle(key[i]))
 
     return group(n, ref, level, rot, mir, witness, image_in)
 
