@@ -7,6 +7,9 @@ the CPU seconds of the text summary (``exactsym check``, which writes no exact t
 does not print).  Run: ``python bench/bench_small_algebraic.py``
 (``--timeout S`` per run, default 60; ``--only NAME`` for one input).
 
+``--certify``: also the CPU seconds of ``exactsym certify`` (which runs the checker on what
+it writes) and of ``exactsym verify`` on its certificate, beside those of ``check``.
+
 ``--in-process``: only the truth, timed inside the child after its imports (load + levels
 + symmetry_group, wall and CPU seconds; the best of ``--repeat`` fresh children, default
 3, since the first call in a process also builds the number fields), against the 0.2 s
@@ -21,6 +24,7 @@ up to 3; asymmetric ones < 0.2 s; a refusal only beyond documented bounds, withi
 from __future__ import annotations
 
 import argparse
+import math
 from fractions import Fraction as fmpq_of
 import random
 import resource
@@ -120,7 +124,7 @@ def level_inputs() -> dict[str, str]:
     out["3 sqrt radii, turns j/997"] = _polar([("sqrt(145)", "680/997"),
                                                ("sqrt(374)", "183/997"),
                                                ("sqrt(63)", "339/997")])
-    for n, den in ((2, 997), (10, 999983), (31, 999983)):
+    for n, den in ((2, 997), (10, 999983), (31, 999983), (100, 997)):
         draw = random.Random(7000 + n)
         turns = draw.sample(range(1, den), n)
         out[f"{n} sqrt radii, turns j/{den}"] = _polar(
@@ -253,13 +257,16 @@ def main() -> None:
     parser.add_argument("--in-process", action="store_true",
                         help="only the truth, timed inside the child, imports excluded")
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--certify", action="store_true",
+                        help="also time certify and verify (CPU seconds)")
     opts = parser.parse_args()
     if opts.in_process:
         in_process(opts)
         return
     exactsym = [sys.executable, "-m", "exactsym"]
     print(f"{'input':28} {'truth s':>8} {'group':>8} {'check s':>8} {'cpu s':>7}  "
-          f"{'summary cpu s':>13}  outcome")
+          f"{'summary cpu s':>13}  outcome" + ("  certify cpu s  verify cpu s"
+                                               if opts.certify else ""))
     for name, path in input_files(opts.only):
         t_truth, group = run([sys.executable, "-c", TRUTH, str(path)], opts.timeout)
         if group.startswith("timeout"):
@@ -273,8 +280,16 @@ def main() -> None:
         c_summary = LAST_CPU[0]
         if not outcome.startswith(("timeout", "exit")):
             outcome = "answered"
+        certified = ""
+        if opts.certify:
+            cert = path.with_suffix(".cert.json")
+            _, done = run(exactsym + ["certify", str(path), "-o", str(cert)], opts.timeout)
+            c_certify = LAST_CPU[0] if not done.startswith(("timeout", "exit")) else math.nan
+            run(exactsym + ["verify", str(cert)], opts.timeout)
+            c_verify = LAST_CPU[0] if c_certify == c_certify else math.nan
+            certified = f"  {c_certify:13.2f}  {c_verify:12.2f}"
         print(f"{name:28} {t_truth:8.2f} {group:>8} {t_check:8.2f} {c_check:7.2f}  "
-              f"{c_summary:13.2f}  {outcome}", flush=True)
+              f"{c_summary:13.2f}  {outcome}{certified}", flush=True)
 
 
 if __name__ == "__main__":

@@ -456,6 +456,40 @@ def _sparsest(distances: list, centre_value) -> int:
     return min(groups.values(), key=len)[0]
 
 
+def _levels_by_balls(norm_balls: list, exact_norm) -> list[list[int]]:
+    """The levels (points at one distance from the centre, the centre itself left out), in
+    the order of their first point, as :func:`_sparsest` groups them: balls whose
+    intervals meet no other ball are levels of one point (and, excluding 0, off the
+    centre); only the points of a cluster of overlapping balls are compared exactly, by
+    ``exact_norm(i)`` (a squared distance; 0 at the centre).  In a tower over the sparse
+    Q(zeta_N) the centroid is a sum of hundreds of cosines on every level, and one exact
+    squared distance costs seconds."""
+    order = sorted(range(len(norm_balls)), key=lambda i: norm_balls[i].lower())
+    clusters, top = [], None
+    for i in order:                             # a sweep over the intervals by lower end
+        ball = norm_balls[i]
+        if clusters and not ball.lower() > top:
+            clusters[-1].append(i)
+            top = max(top, ball.upper())
+        else:
+            clusters.append([i])
+            top = ball.upper()
+    groups = []
+    for cluster in clusters:
+        if len(cluster) == 1 and not norm_balls[cluster[0]].contains(0):
+            groups.append(cluster)
+            continue
+        zero, by_norm = None, {}
+        for i in sorted(cluster):
+            d = exact_norm(i)
+            if zero is None:
+                zero = d * 0
+            if d != zero:
+                by_norm.setdefault(d, []).append(i)
+        groups += by_norm.values()
+    return sorted(groups, key=lambda g: g[0])
+
+
 def _orbits(ref: int, rot, mir) -> tuple[set, set]:
     """The images of ``ref`` under the rotations and under the reflections of the group."""
     orbit, j = [ref], (rot[ref] if rot else ref)
@@ -496,10 +530,21 @@ def _cartesian_witness(config, group, enc):
     n = len(pts)
     cx, cy = _centroid(pts)
     rel = [(x - cx, y - cy) for x, y in pts]
-    ref = _sparsest([x * x + y * y for x, y in rel], cx * 0)
+    # balls of the points and of the vectors from the centroid: the levels and a
+    # candidate's image of a point that is no point of P are found without exact products
+    # (in a sparse Q(zeta_N) the centroid is a sum of hundreds of cosines, and an exact
+    # squared distance or image costs seconds)
+    with ctx.workprec(_REFUTE_PREC):
+        point_balls = [(_ball(x), _ball(y)) for x, y in pts]
+        rel_balls = [(_ball(x), _ball(y)) for x, y in rel]
+        centre_ball = (_ball(cx), _ball(cy))
+        norm_balls = [x * x + y * y for x, y in rel_balls]
+    if not all(b.is_finite() for b in norm_balls):
+        norm_balls = [arb(0, "inf")] * n         # no balls: every point compared exactly
+    levels = _levels_by_balls(norm_balls, lambda i: rel[i][0] ** 2 + rel[i][1] ** 2)
+    level = min(levels, key=len)
+    ref = level[0]
     ux, uy = rel[ref]
-    s = ux * ux + uy * uy
-    level = [i for i, (x, y) in enumerate(rel) if x * x + y * y == s]
     where = {p: i for i, p in enumerate(pts)}
     inverse: list = []                          # [1 / s], when an exact image is first asked
 
@@ -511,7 +556,7 @@ def _cartesian_witness(config, group, enc):
         def maps_in(w):
             if not matrix:
                 if not inverse:
-                    inverse.append(1 / s)
+                    inverse.append(1 / (ux * ux + uy * uy))
                 inv, (vx, vy) = inverse[0], rel[b]
                 if kind == "rotation":
                     dot, cross = (ux * vx + uy * vy) * inv, (ux * vy - uy * vx) * inv
@@ -533,14 +578,6 @@ def _cartesian_witness(config, group, enc):
         return {"centre": [enc.text(cx), enc.text(cy)],
                 "matrix": [[enc.text(e) for e in row] for row in iso.matrix],
                 "permutation": list(iso.permutation)}
-
-    # balls of the points and of the vectors from the centroid: a candidate's image of a
-    # point is shown to be no point of P without exact products (in a sparse Q(zeta_N)
-    # the centroid is a sum of hundreds of cosines, and an exact image costs seconds)
-    with ctx.workprec(_REFUTE_PREC):
-        point_balls = [(_ball(x), _ball(y)) for x, y in pts]
-        rel_balls = [(_ball(x), _ball(y)) for x, y in rel]
-        centre_ball = (_ball(cx), _ball(cy))
 
     def surely_out(kind, b):
         with ctx.workprec(_REFUTE_PREC):

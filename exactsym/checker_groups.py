@@ -14,7 +14,9 @@ of the plane with g(P) = P; the "level" of a point is the set of points as far a
     H (b is in the H-orbit of a, computed from the verified permutations) or the witness names
     a point w whose image under the candidate is not in P: then the candidate is not in G.
 So G = H: the checker names it, derives "orderable" (no element of G moves a point) and
-compares both with the claim.  The cost is linear: O(n) per generator, O(1) per candidate.
+compares both with the claim.  The cost is O(n) per generator and, per candidate, O(1)
+(polar) or the number of points on the circle of w (Cartesian, see image_in in cartesian():
+one when the distances from c differ).
 
 Numbers are exact: rationals (ints after scaling by a common denominator, or Fractions), or
 elements of one real number field Q(theta) written as coefficient lists in theta.
@@ -129,29 +131,47 @@ def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, boo
         return perm
 
     rot, mir, ref = isometry("rotation", 1), isometry("mirror", -1), reference(witness, n)
-    ux, uy = w[ref]
-    s = ux * ux + uy * uy
-    need(s != 0, "the reference point is the centre")
-    level = [i for i, (x, y) in enumerate(w) if x * x + y * y == s]
-    scaled_w: set = set()
+    need(w[ref][0] != 0 or w[ref][1] != 0, "the reference point is the centre")
+    # Distances from c without the square of the sum S = (sx, sy) (in a sparse Q(zeta_N) a
+    # sum of hundreds of cosines on every level, whose square costs minutes): with
+    # w_i = n p_i - S, |w_i|^2 = n (n |p_i|^2 - 2 S.p_i) + |S|^2, so the points on one
+    # circle about c are those with one value of key_i = n |p_i|^2 - 2 S.p_i.  (Python
+    # numbers: |w_i|^2 itself, as cheap.)
+    if field is not None:
+        key = [n * (x * x + y * y) - 2 * (sx * x + sy * y) for x, y in pts]
+    else:
+        key = [x * x + y * y for x, y in w]
+    level = [i for i, k in enumerate(key) if k == key[ref]]
+    on_circle: dict = {}                        # key -> the points with it, when first asked
+
+    def circle(k):
+        if not on_circle:
+            for i, v in enumerate(key):
+                on_circle.setdefault(v, []).append(i)
+        return on_circle[k]
+
+    def distance2(i, j):                        # |p_i - p_j|^2: no S
+        (x, y), (u, v) = pts[i], pts[j]
+        return (x - u) * (x - u) + (y - v) * (y - v)
+
+    def side(i, j):
+        # the sign of w_i x w_j = n (n p_i x p_j - (p_i - p_j) x S): which side of the line
+        # through c and p_i the point p_j lies on (0: on it), without S x S = 0
+        (x, y), (u, v) = pts[i], pts[j]
+        return sgn(n * (x * v - y * u) - ((x - u) * sy - (y - v) * sx))
 
     def image_in(kind, b, i):
-        # The isometry about c with u = w[ref] -> v = w[b] (|u|^2 = |v|^2 = s) is the rotation
-        # [[dot, -cross], [cross, dot]] / s or the reflection [[e, f], [f, -e]] / s; s times the
-        # image of w[i] is looked up in s * P, so nothing is divided.
-        (vx, vy), (x, y) = w[b], w[i]
-        if kind == "rotation":
-            dot, cross = ux * vx + uy * vy, ux * vy - uy * vx
-            image = dot * x - cross * y, cross * x + dot * y
-        else:
-            e, f = ux * vx - uy * vy, ux * vy + uy * vx
-            image = e * x + f * y, f * x - e * y
-        if type(s) is int:                      # integer coordinates: s * P holds the image
-            # iff s divides it and the quotient is a point
-            return all(v % s == 0 for v in image) and (image[0] // s, image[1] // s) in points_w
-        if not scaled_w:
-            scaled_w.update((s * x, s * y) for x, y in w)
-        return image in scaled_w
+        # The isometry g about c with g(p_ref) = p_b (a rotation, det 1, or a reflection,
+        # det -1) maps p_i to the point at distance |p_i - c| from c and |p_i - p_ref| from
+        # p_b, on the side of the line c p_b given by det(g) side(ref, i) (an isometry fixing
+        # c multiplies orientations about c by its determinant).  The two circles have the
+        # distinct centres c and p_b (p_b is on the level of p_ref, not c), so they meet in
+        # at most two points, mirror images in that line: a point p_j with key_j = key_i,
+        # |p_j - p_b| = |p_i - p_ref| and side(b, j) = det(g) side(ref, i) is g(p_i), and
+        # g(p_i) is such a point when it is in P.  Exact, with no product of S by S.
+        d = distance2(i, ref)
+        turn = side(ref, i) * (1 if kind == "rotation" else -1)
+        return any(distance2(j, b) == d and side(b, j) == turn for j in circle(key[i]))
 
     return group(n, ref, level, rot, mir, witness, image_in)
 

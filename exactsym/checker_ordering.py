@@ -22,11 +22,20 @@ in that frame (one comparison per point), builds both frames' strings, and prove
 reading X least with the Z-algorithm on X + sentinel + (other string doubled): it gives, for
 every other start, the length L of the common prefix with X using O(m) symbol equalities in all;
 one comparison at position L shows that start larger (or L = m: an equal reading).  Linear.
+
+Cartesian certificates in a number field: with c = (X, Y)/k (k = 1 without a scale), the
+points are compared by key_i = sign(k) (k |p_i|^2 - 2 X . p_i), and |k p_i - X|^2 =
+|k| key_i + |X|^2 is an increasing function of it, so every comparison of distances from c
+is one of keys (no square of X is made: in a sparse Q(zeta_N) a sum of hundreds of cosines
+on every level).  In the sparse Q(zeta_N) and the tower over it, angles are read from exact
+integer enclosures of the directions (:class:`_Angle`); their products are made only where
+the enclosures hold 0.
 """
 
 from __future__ import annotations
 
-from math import gcd, lcm
+from fractions import Fraction
+from math import ceil, floor, gcd, lcm
 
 try:
     from .checker_numbers import need, rat, scaled, sgn
@@ -43,60 +52,140 @@ def _native_sign(v) -> int:
 
 
 class _Plane:
-    """Points about c in one frame: the radius and the direction of each point off c.
-    ``native``: every number is an int or a Fraction (no number field), so Python's own
-    comparisons are exact and symbols get canonical forms (see _symbols)."""
+    """Points about c in one frame: a key of the distance from c and the direction of each
+    point off c.  ``native``: every number is an int or a Fraction (no number field), so
+    Python's own comparisons are exact and symbols get canonical forms (see _symbols); the
+    key is then the squared distance itself.  ``boxed``: the numbers have integer
+    enclosures (a sparse Q(zeta_N) or a tower over it), so angles are :class:`_Angle`s,
+    made exactly only when their enclosures cannot decide."""
 
-    def __init__(self, polar: bool, r2: list, dirs: list, turn: int, native: bool = False):
+    def __init__(self, polar: bool, r2: list, dirs: list, turn: int, native: bool = False,
+                 boxed: bool = False):
         self.polar, self.r2, self.dirs, self.turn = polar, r2, dirs, turn
-        self.native = native
+        self.native, self.boxed = native, boxed
         self.sign = _native_sign if native else sgn
+        self._boxes: dict = {}
 
     def mirrored(self) -> "_Plane":
         if self.polar:
             return _Plane(True, self.r2, [None if d is None else -d % self.turn
                                           for d in self.dirs], self.turn, self.native)
         return _Plane(False, self.r2, [None if d is None else (d[0], -d[1])
-                                       for d in self.dirs], self.turn, self.native)
+                                       for d in self.dirs], self.turn, self.native, self.boxed)
 
     def angle(self, i: int, j: int):
         """The angle from the direction of point i to that of point j, in [0, 2pi): a turn
-        (polar, in units of 1/turn) or the vector (u . v, u x v) (Cartesian)."""
+        (polar, in units of 1/turn) or the vector (u . v, u x v) (Cartesian; an
+        :class:`_Angle` when the plane is boxed)."""
         if self.polar:
             return (self.dirs[j] - self.dirs[i]) % self.turn
+        if self.boxed:
+            return _Angle(self, i, j)
         (ux, uy), (vx, vy) = self.dirs[i], self.dirs[j]
         return ux * vx + uy * vy, ux * vy - uy * vx
+
+    def box(self, i: int, bits: int):
+        """Enclosures of the direction of point i: two boxes (lo, hi, bits)."""
+        key = (i, bits)
+        if key not in self._boxes:
+            self._boxes[key] = tuple((*_bounds(v, bits), bits) for v in self.dirs[i])
+        return self._boxes[key]
 
     def cmp_angle(self, a, b) -> int:
         if self.polar:
             return (a > b) - (a < b)
+        if self.boxed:
+            return _Angle.cmp(a, b)
         # upper half [0, pi) before lower half [pi, 2pi); in one half, the cross product
         sign = self.sign
         half = [0 if sign(y) > 0 or (y == 0 and sign(x) > 0) else 1 for x, y in (a, b)]
         if half[0] != half[1]:
             return -1 if half[0] < half[1] else 1
-        cross = _enclosed_cross_sign(a, b)
-        return -(cross if cross is not None else sign(a[0] * b[1] - a[1] * b[0]))
+        return -sign(a[0] * b[1] - a[1] * b[0])
 
 
-def _enclosed_cross_sign(a, b):
-    """sign(a0 b1 - a1 b0) from integer enclosures of the four factors, when their field
-    gives them (``bounds(x, bits)``: lo <= x 2^bits <= hi, a tower over the sparse
-    Q(zeta_N)) and they exclude 0; else None (the exact products decide).  There the exact
-    products multiply sparse sums of thousands of cosines term by term."""
-    factors = (a[0], b[1], a[1], b[0])
-    field = getattr(a[0], "f", None)
-    bounds = getattr(field, "bounds", None)
-    if bounds is None or any(getattr(v, "f", None) is not field for v in factors):
-        return None
-    for bits in (64, 192):
-        (alo, ahi), (blo, bhi), (clo, chi), (dlo, dhi) = (bounds(v.v, bits) for v in factors)
-        first = (alo * blo, alo * bhi, ahi * blo, ahi * bhi)
-        second = (clo * dlo, clo * dhi, chi * dlo, chi * dhi)
-        lo, hi = min(first) - max(second), max(first) - min(second)
-        if lo > 0 or hi < 0:
-            return 1 if lo > 0 else -1
-    return None
+def _bounds(v, bits: int) -> tuple[int, int]:
+    """Integers lo <= v 2^bits <= hi: a rational exactly, a number of a field with
+    ``bounds`` (the sparse Q(zeta_N) and the tower over it) from its terms' enclosures."""
+    if isinstance(v, (int, Fraction)):
+        v = Fraction(v) * (1 << bits)
+        return floor(v), ceil(v)
+    return v.f.bounds(getattr(v, "v", v), bits)     # a tower's TNum: its raw value
+
+
+# Boxes (lo, hi, e): integers with lo <= x 2^e <= hi.  Products and sums are exact integer
+# operations on the ends (no rounding), so a box holds its number whenever its operands' do.
+
+def _box_mul(a, b):
+    ends = (a[0] * b[0], a[0] * b[1], a[1] * b[0], a[1] * b[1])
+    return min(ends), max(ends), a[2] + b[2]
+
+
+def _box_add(a, b):
+    if a[2] < b[2]:
+        a, b = b, a
+    shift = a[2] - b[2]
+    return a[0] + (b[0] << shift), a[1] + (b[1] << shift), a[2]
+
+
+def _box_neg(a):
+    return -a[1], -a[0], a[2]
+
+
+def _box_sign(a):
+    return 1 if a[0] > 0 else -1 if a[1] < 0 else None
+
+
+class _Angle:
+    """The angle from the direction u of point i to the direction v of point j, the vector
+    (u . v, u x v), in a boxed plane.  Its signs and its comparisons are read from boxes
+    of u and v at 64, then 192 bits; the exact vector (products of sums of hundreds of
+    cosines on every level: seconds each) is made only when both hold 0 (ties: two points
+    on one ray, equal gaps)."""
+    __slots__ = ("plane", "i", "j", "_exact")
+    BITS = (64, 192)
+
+    def __init__(self, plane: _Plane, i: int, j: int):
+        self.plane, self.i, self.j, self._exact = plane, i, j, None
+
+    def boxes(self, bits: int):
+        (ux, uy), (vx, vy) = self.plane.box(self.i, bits), self.plane.box(self.j, bits)
+        return (_box_add(_box_mul(ux, vx), _box_mul(uy, vy)),
+                _box_add(_box_mul(ux, vy), _box_mul(_box_neg(uy), vx)))
+
+    def exact(self):
+        if self._exact is None:
+            (ux, uy), (vx, vy) = self.plane.dirs[self.i], self.plane.dirs[self.j]
+            self._exact = (ux * vx + uy * vy, ux * vy - uy * vx)
+        return self._exact
+
+    def sign(self, k: int) -> int:
+        """The sign of u . v (k = 0) or u x v (k = 1)."""
+        if self.i == self.j:                # u . u > 0 (u != 0), u x u = 0
+            return 1 - k
+        for bits in self.BITS:
+            s = _box_sign(self.boxes(bits)[k])
+            if s is not None:
+                return s
+        return sgn(self.exact()[k])
+
+    def half(self) -> int:
+        """0 in the upper half [0, pi), 1 in the lower half [pi, 2pi)."""
+        y = self.sign(1)
+        return 0 if y > 0 or (y == 0 and self.sign(0) > 0) else 1
+
+    @staticmethod
+    def cmp(a: "_Angle", b: "_Angle") -> int:
+        ha, hb = a.half(), b.half()
+        if ha != hb:
+            return -1 if ha < hb else 1
+        for bits in _Angle.BITS:            # in one half, the sign of a x b
+            (ax, ay), (bx, by) = a.boxes(bits), b.boxes(bits)
+            s = _box_sign(_box_add(_box_mul(ax, by), _box_neg(_box_mul(ay, bx))))
+            if s is not None:
+                return -s
+        (ax, ay), (bx, by) = a.exact(), b.exact()
+        return -sgn(ax * by - ay * bx)
 
 
 def _rays(plane: _Plane, order: list) -> list:
@@ -277,22 +366,33 @@ def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
     sec = witness["sec"]
     xy, scale, num = read                       # the group check's points, times scale
     cx, cy = (num(v) * scale for v in sec["centre"])
-    if field is not None and "scale" in sec:    # c = (X, Y) / k: scale the plane by k != 0
-        k = num(sec["scale"])                   # (k < 0 adds a half turn: a rotation, so
-        need(k != 0, "sec: the scale is zero")  # orders, orientations and distances agree)
-        xy = [(k * x, k * y) for x, y in xy]
-    if field is None:                           # all times k more: c has integer coordinates
+    support = _indices(sec["support"], len(points), "witness.sec.support")
+    need(1 <= len(support) <= 3, "witness.sec.support: one to three points")
+    if field is None:                           # all times k: c has integer coordinates
         k = lcm(cx.denominator, cy.denominator)
         if k > 1:
             xy = [(k * x, k * y) for x, y in xy]
         cx, cy = int(cx * k), int(cy * k)       # exact: k clears both denominators
-    w = [(x - cx, y - cy) for x, y in xy]
-    r2 = [x * x + y * y for x, y in w]
+        w = [(x - cx, y - cy) for x, y in xy]
+        r2 = [x * x + y * y for x, y in w]
+    else:
+        # c = (X, Y) / k (k = 1 without "scale"): the plane scaled by k != 0 (k < 0 adds a
+        # half turn: a rotation, so orders, orientations and distances agree), w = k p - c.
+        # The key of a distance: |k p - X|^2 = |k| key + |X|^2 with
+        # key = sign(k) (k |p|^2 - 2 X . p), an increasing function of the squared distance
+        # that needs no square of X (in a sparse Q(zeta_N) a sum of hundreds of cosines on
+        # every level, whose square costs seconds)
+        k = num(sec["scale"]) if "scale" in sec else 1
+        need(k != 0, "sec: the scale is zero")
+        sk = sgn(k)
+        w = [(k * x - cx, k * y - cy) for x, y in xy]
+        r2 = [sk * (k * (x * x + y * y) - 2 * (cx * x + cy * y)) for x, y in xy]
+    at_c = [x == 0 and y == 0 for x, y in w]
+    dirs = [None if z else d for z, d in zip(at_c, w)]
+    plane = _Plane(False, r2, dirs, 1, field is None, getattr(field, "bounds", None) is not None)
     # c is the SEC centre: every point within R of c, and c in the convex hull of support
     # points at distance R (a circle about c' != c misses one of them: the one s with
     # (s - c) . (c' - c) <= 0 is farther than R from c').
-    support = _indices(sec["support"], len(points), "witness.sec.support")
-    need(1 <= len(support) <= 3, "witness.sec.support: one to three points")
     big = r2[support[0]]
     need(all(r2[i] == big for i in support), "sec: the support points are not on one circle")
     need(max(r2) <= big if field is None else all(_cmp(v, big) <= 0 for v in r2),
@@ -301,13 +401,20 @@ def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
         (ax, ay), (bx, by) = (w[i] for i in support)
         need(ax + bx == 0 and ay + by == 0, "sec: the centre is not the midpoint of the support")
     elif len(support) == 3:
-        turns = {sgn(w[a][0] * w[b][1] - w[a][1] * w[b][0])
-                 for a, b in zip(support, support[1:] + support[:1])}
+        need(not any(at_c[i] for i in support), "sec: a support point is the centre")
+        turns = {_cross_sign(plane, a, b) for a, b in zip(support, support[1:] + support[:1])}
         need(not {-1, 1} <= turns, "sec: the centre is outside the support triangle")
     else:
-        need(big == 0, "sec: one support point must be the centre")
-    dirs = [None if v == 0 else d for v, d in zip(r2, w)] if 0 in r2 else w
-    return _Plane(False, r2, dirs, 1, field is None)
+        need(at_c[support[0]], "sec: one support point must be the centre")
+    return plane
+
+
+def _cross_sign(plane: _Plane, a: int, b: int) -> int:
+    """The sign of w_a x w_b (the directions of points a and b, off c)."""
+    if plane.boxed:
+        return _Angle(plane, a, b).sign(1)
+    (ax, ay), (bx, by) = plane.dirs[a], plane.dirs[b]
+    return plane.sign(ax * by - ay * bx)
 
 
 def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,

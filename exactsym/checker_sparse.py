@@ -221,6 +221,11 @@ class SparseField:
             lo, hi = (lo + c * clo, hi + c * chi) if c > 0 else (lo + c * chi, hi + c * clo)
         return lo, hi
 
+    def bounds(self, x: "SNum", bits: int) -> tuple[int, int]:
+        """Integers lo <= x 2^bits <= hi (checker_ordering's filter)."""
+        lo, hi = self.term_bounds(x.t, bits)
+        return lo // x.den, -(-hi // x.den)
+
     def sign(self, x: "SNum") -> int:
         if self.is_zero(x.t):
             return 0

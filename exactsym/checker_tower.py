@@ -125,6 +125,12 @@ class Tower:
         if not isinstance(x, tuple) and not isinstance(y, tuple):
             return x * y
         lev = max(_level(x), _level(y))
+        if _level(y) < lev or _level(x) < lev:
+            # one factor lies below level lev: (a + b y_lev) c = a c + (b c) y_lev, two
+            # products of half the size (the full formula's products by a zero part would
+            # walk the other factor's tree twice per level: 2^L visits over L levels)
+            (a, b), c = (x[1:], y) if _level(x) == lev else (y[1:], x)
+            return _make(lev, self.mul(a, c), self.mul(b, c))
         (xa, xb), (ya, yb) = _split(x, lev), _split(y, lev)
         cross = _add(self.mul(xa, yb), self.mul(xb, ya))
         return _make(lev, _add(self.mul(xa, ya), self.mul(self.r[lev - 1], self.mul(xb, yb))),

@@ -155,6 +155,93 @@ def test_random_configurations_round_trip():
         assert ok, (sorted(points), message)
 
 
+def _explicit_image(points, ref, b, w, kind):
+    """g(p_w) for the isometry g about the centroid c with g(p_ref) = p_b, by its matrix."""
+    n = len(points)
+    cx, cy = (sum(p[k] for p in points) / n for k in (0, 1))
+    (ux, uy), (vx, vy), (x, y) = ((p[0] - cx, p[1] - cy) for p in
+                                  (points[ref], points[b], points[w]))
+    s = ux * ux + uy * uy
+    if kind == "rotation":
+        dot, cross = (ux * vx + uy * vy) / s, (ux * vy - uy * vx) / s
+        return cx + dot * x - cross * y, cy + cross * x + dot * y
+    e, f = (ux * vx - uy * vy) / s, (ux * vy + uy * vx) / s
+    return cx + e * x + f * y, cy + f * x - e * y
+
+
+def test_refutations_are_judged_by_the_exact_image():
+    """The checker decides "the candidate maps p_w onto a point of P" from invariants
+    (distance from c, distance from p_b, side of the line c p_b), with no product of the
+    centroid's sum by itself: for every candidate of every level and every point w, its
+    verdict on a refutation [b, w] is that of the image computed by its matrix.  Symmetric
+    sets are where a point at the right two distances lies on the wrong side (the twin of
+    g(p_w) in the line c p_b is rho(p_w) for the rotation rho in the group with
+    rho(p_ref) = p_b, when the reflection g is not in it, and the other way round)."""
+    rnd = random.Random(5)
+    sets = [[(3, 1), (-1, 3), (-3, -1), (1, -3), (1, 3), (-3, 1), (-1, -3), (3, -1)],   # C4 x2
+            [(2, 1), (-1, 2), (-2, -1), (1, -2), (0, 0)],                              # C4
+            [(-1, 0), (1, 0), (0, 3), (0, 1)],                                         # D1
+            [(2, 1), (-2, 1), (2, -1), (-2, -1), (1, 2)],                              # D1
+            [(0, 0), (4, 0), (4, 2), (0, 2)]]                                          # D2
+    for _ in range(6):
+        base_points = {(rnd.randint(-5, 5), rnd.randint(-5, 5)) for _ in range(3)}
+        sets.append(sorted(base_points | {(-x, -y) for x, y in base_points}))       # C2
+    judged, twins = {True: 0, False: 0}, 0     # twins: refuted only by the side
+    for points in sets:
+        points = [(Fraction(x) + Fraction(1, 3), Fraction(y)) for x, y in points]
+        cert = json.loads(json.dumps(make_certificate(Configuration.from_points(points))))
+        ref = cert["witness"]["reference"]
+        n = len(points)
+        c = (sum(p[0] for p in points) / n, sum(p[1] for p in points) / n)
+
+        def d2(p):
+            return (p[0] - c[0]) ** 2 + (p[1] - c[1]) ** 2
+        level = [b for b in range(n) if d2(points[b]) == d2(points[ref])]
+        for kind in ("rotation", "reflection"):
+            for b in level:
+                for w in range(n):
+                    bad = copy.deepcopy(cert)
+                    bad["witness"]["refutations"][kind] = [[b, w]]     # rotations first
+                    ok, message = verify(bad)
+                    inside = _explicit_image(points, ref, b, w, kind) in set(points)
+                    assert ("onto a point of the configuration" in message) is inside, \
+                        (points, kind, b, w, message)
+                    judged[inside] += 1
+                    twins += not inside and any(
+                        d2(p) == d2(points[w]) and _dist2(p, points[b]) ==
+                        _dist2(points[w], points[ref]) for p in points)
+    assert judged[True] > 200 and judged[False] > 50 and twins > 10, (judged, twins)
+
+
+def _dist2(p, q):
+    return (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2
+
+
+def test_levels_by_balls_compare_only_overlapping_points_exactly():
+    """certificate._levels_by_balls: the levels of _sparsest (in the order of their first
+    point, the centre left out), with exact squared distances asked only for the points
+    whose balls meet another's or hold 0."""
+    from flint import arb
+    from exactsym.certificate import _levels_by_balls
+    norms = [Fraction(2), Fraction(5), Fraction(2), Fraction(0), Fraction(7), Fraction(9, 2),
+             Fraction(5), Fraction(1, 3)]
+    asked = []
+
+    def exact(i):
+        asked.append(i)
+        return norms[i]
+    tight = [arb(float(v), 1e-9) for v in norms]
+    assert _levels_by_balls(tight, exact) == [[0, 2], [1, 6], [4], [5], [7]]
+    assert sorted(asked) == [0, 1, 2, 3, 6]         # equal values, and the ball holding 0
+    asked.clear()
+    wide = tight[:5] + [arb(4.5, 2.6)] + tight[6:]  # 4.5 +- 2.6 meets 2, 5, 5 and 7
+    assert _levels_by_balls(wide, exact) == [[0, 2], [1, 6], [4], [5], [7]]
+    assert sorted(asked) == [0, 1, 2, 3, 4, 5, 6]
+    asked.clear()
+    assert _levels_by_balls([arb(0, "inf")] * 8, exact) == [[0, 2], [1, 6], [4], [5], [7]]
+    assert sorted(asked) == list(range(8))
+
+
 # ------------------------------------------------------------------ tampering
 def base(tmp_path, name):
     return certify(write(tmp_path, "c.txt", CASES[name][0]))

@@ -232,22 +232,149 @@ def test_the_checker_agrees_with_the_square_classes():
 
 
 def test_the_ordering_filter_agrees_with_exact_products():
-    """checker_ordering's enclosure of a0 b1 - a1 b0 (the cross product of two angles) gives
-    the exact sign when it excludes 0, and None (the exact products decide) for 0."""
-    from exactsym.checker_ordering import _enclosed_cross_sign
-    field = SparseKummerTower(_tower(3988, [145, 374], [3989, 47857]))
+    """checker_ordering's angles in a boxed plane (a tower over the sparse Q(zeta_N)): the
+    signs of u . v and u x v and the order of two angles read from boxes are the exact
+    ones (an unboxed plane of the same directions computes the products), and ties -- two
+    points on one ray, equal angles -- fall back to the exact products."""
+    from exactsym.checker_ordering import _Angle, _Plane
+    field = SparseKummerTower(_tower(3999932, [145, 374, 7], ["11999797", "35999389",
+                                                             "71998777"]))
     nums = [field.num(v) for v in ([1, "0", {"4": "1"}], [2, "1/3", {"600": "-1"}],
-                                   [2, [1, "0", {"17": "2"}], {"990": "1"}], {"1000": "5"})]
+                                   [3, [1, "0", {"17": "2"}], {"990": "1"}], {"1000": "5"},
+                                   [2, "-2", {"999": "1"}])]
+    dirs = [(a, b) for a in nums for b in nums if a is not b]
+    dirs += [(x * 2, y * 2) for x, y in (dirs[1], dirs[7])]       # 20, 21: on the rays of 1, 7
+    boxed = _Plane(False, [0] * len(dirs), dirs, 1, boxed=True)
+    exact = _Plane(False, [0] * len(dirs), dirs, 1)
+    pairs = [(0, j) for j in range(len(dirs))] + [(1, 20), (1, 7), (20, 21), (7, 5)]
+    angles = [(boxed.angle(i, j), exact.angle(i, j)) for i, j in pairs]
+    for a, e in angles:
+        assert [a.sign(k) for k in (0, 1)] == [e[k].sign() for k in (0, 1)]
     seen = set()
-    for a0 in nums:
-        for a1 in nums:
-            for b0 in nums:
-                b1 = nums[0] - a0 + 1
-                exact = (a0 * b1 - a1 * b0).sign()
-                found = _enclosed_cross_sign((a0, a1), (b0, b1))
-                assert found in (None, exact)
-                seen.add((exact, found))
-    assert seen == {(1, 1), (-1, -1)}
-    assert _enclosed_cross_sign((nums[0], nums[1]), (nums[0], nums[1])) is None
-    assert _enclosed_cross_sign((nums[2], nums[1]), (nums[2] * 2, nums[1] * 2)) is None
-    assert _enclosed_cross_sign((nums[0], 1), (nums[0], nums[1])) is None    # an int: exact
+    for a, e in angles:
+        for b, f in angles:
+            found = boxed.cmp_angle(a, b)
+            assert found == exact.cmp_angle(e, f)
+            seen.add(found)
+    assert seen == {-1, 0, 1}
+    same_ray = boxed.angle(1, 20)                   # (2 u) . u > 0, u x 2u = 0: exact
+    assert same_ray.sign(1) == 0 and same_ray._exact is not None
+    assert boxed.angle(0, 4)._exact is None         # never made: the boxes decided
+    assert boxed.cmp_angle(boxed.angle(0, 1), boxed.angle(0, 20)) == 0     # one ray
+    assert boxed.cmp_angle(boxed.angle(1, 7), boxed.angle(20, 21)) == 0    # equal angles
+
+
+def test_checker_tower_products_by_a_lower_level():
+    """Tower.mul of a factor below the other's level multiplies the two halves (a + b y) c
+    = a c + (b c) y, where the full formula walked the other factor twice per level: the
+    same products as the full formula, on numbers spread over three levels."""
+    from exactsym.checker_tower import _add, _make, _split, _level
+    field = SparseKummerTower(_tower(3999932, [145, 374, 7], ["11999797", "35999389",
+                                                             "71998777"]))
+
+    def full(x, y):
+        if not isinstance(x, tuple) and not isinstance(y, tuple):
+            return x * y
+        lev = max(_level(x), _level(y))
+        (xa, xb), (ya, yb) = _split(x, lev), _split(y, lev)
+        cross = _add(full(xa, yb), full(xb, ya))
+        return _make(lev, _add(full(xa, ya), full(field.r[lev - 1], full(xb, yb))), cross)
+    raw = [field.num(v).v for v in (
+        "3/7", {"4": "1", "17": "-2"}, [1, "0", {"4": "1"}], [2, "1/3", {"600": "-1"}],
+        [3, [1, "0", {"17": "2"}], {"990": "1"}], [3, [2, [1, "1", "2"], "-1"], [1, "0", "5"]],
+        [2, "0", [1, {"8": "1"}, "1"]])]
+    for x in raw:
+        for y in raw:
+            assert field.mul(x, y) == full(x, y) == field.mul(y, x)
+    y1, y2, y3 = (field.num([i, "0", "1"]) for i in (1, 2, 3))
+    assert (y1 * y2 * y3) * (y3 * y2 * y1) == 145 * 374 * 7
+
+
+# ------------------------------------------------------------------ Cartesian certificates
+def _polar_file(tmp_path, rows) -> str:
+    path = tmp_path / "c.toml"
+    path.write_text("format = 1\npoints = [\n" + "".join(
+        f'  {{ r = "{r}", turn = "{t}" }},\n' for r, t in rows) + "]\n")
+    return str(path)
+
+
+TEN = [("sqrt(280)", "990378/999983"), ("sqrt(58)", "842326/999983"),
+       ("sqrt(198)", "98956/999983"), ("sqrt(60)", "625529/999983"),
+       ("sqrt(332)", "997227/999983"), ("sqrt(386)", "889866/999983"),
+       ("sqrt(9)", "341287/999983"), ("sqrt(144)", "459986/999983"),
+       ("sqrt(134)", "328628/999983"), ("sqrt(77)", "78439/999983")]
+
+
+def test_ten_robots_off_centre(tmp_path):
+    """Ten robots at radii sqrt(k), turns j/999983 (the SEC off the origin: a Cartesian
+    certificate over the sparse tower): the distances from the centroid and from the SEC
+    centre are compared by keys without the square of the centre, the angles by boxes;
+    the claim is the truth's, and tampering with the SEC, the reference, the refutation,
+    the ordering or the frame is caught."""
+    config = load(_polar_file(tmp_path, TEN))
+    cert = json.loads(json.dumps(make_certificate(config)))
+    assert "base" in cert["configuration"]["field"]["tower"]
+    assert cert["configuration"]["coordinates"] == "cartesian"
+    assert cert["claim"] == {"group": "C1", "orderable": True,
+                             "ordering": [1, 5, 0, 4, 2, 9, 8, 6, 7, 3], "leader": 1}
+    assert cert["witness"]["sec"]["support"] == [4, 5, 7]
+    assert cert["witness"]["refutations"] == {"rotation": [], "reflection": [[0, 1]]}
+    assert checker.verify_certificate(cert) == (
+        True, "group C1, orderable true, ordering and leader")
+
+    def tampered(change, why):
+        bad = copy.deepcopy(cert)
+        change(bad)
+        rejected(bad, why)
+    tampered(lambda c: c["witness"]["sec"]["support"].__setitem__(2, 8),
+             "sec: the support points are not on one circle")
+    tampered(lambda c: c["witness"]["sec"].__setitem__("support", [4, 5]),
+             "sec: the centre is not the midpoint of the support")
+    tampered(lambda c: c["witness"]["sec"]["centre"][0].__setitem__(1, "1/3"), "sec")
+    tampered(lambda c: c["witness"]["refutations"]["reflection"].__setitem__(0, [0, 0]),
+             "maps point 0 onto a point of the configuration: it refutes nothing")
+    tampered(lambda c: c["witness"].__setitem__("reference", 3),
+             "point 0 is not on the level of the reference point 3")
+    tampered(lambda c: c["claim"]["ordering"].__setitem__(slice(1, 3), [0, 5]),
+             "ordering: point 5 is not in angular order")
+    tampered(lambda c: c["witness"]["canonical"].__setitem__("orientation", "cw"),
+             "ordering: point 0 is not in angular order")
+    tampered(lambda c: c["claim"].__setitem__("leader", 5),
+             "claim.leader is not the first of the ordering")
+
+
+def test_a_mirror_off_centre(tmp_path):
+    """D1 off the origin over the sparse tower: the rotations taking the reference point to
+    its mirror image are refuted by the side of the line c p_b (the mirror maps each point
+    to a point at the right two distances), the leader is the nearer of the two points on
+    the mirror whose reading is least; a claimed C1 is refuted by the mirror."""
+    rows = [("sqrt(145)", "1/999983"), ("sqrt(145)", "-1/999983"),
+            ("sqrt(7)", "300000/999983"), ("sqrt(7)", "-300000/999983"), ("3", "0"),
+            ("2", "1/2")]
+    cert = json.loads(json.dumps(make_certificate(load(_polar_file(tmp_path, rows)))))
+    assert cert["configuration"]["coordinates"] == "cartesian"
+    assert cert["claim"] == {"group": "D1", "orderable": False, "ordering": None, "leader": 4}
+    assert cert["witness"]["canonical"] == {"orientation": "ccw", "order": [0, 2, 4, 5, 3, 1]}
+    assert checker.verify_certificate(cert) == (True, "group D1, orderable false, leader")
+    bad = copy.deepcopy(cert)
+    bad["claim"]["leader"] = 5
+    rejected(bad, "claim.leader must be point 4")
+    bad = copy.deepcopy(cert)                      # the mirror left out: C1 claimed
+    bad["witness"]["mirror"] = None
+    bad["claim"].update(group="C1", orderable=True, ordering=[4, 0, 2, 5, 3, 1], leader=4)
+    rejected(bad, "the reflection taking point")
+    bad["witness"]["refutations"]["reflection"] = [[4, 0]]      # the mirror itself
+    rejected(bad, "the reflection taking point 4 to point 4 maps point 0 onto a point")
+    # the two pairs alone: the reference point 0 has its mirror image 1 on its level
+    cert = json.loads(json.dumps(make_certificate(load(_polar_file(tmp_path, rows[:4])))))
+    assert cert["claim"] == {"group": "D1", "orderable": False, "ordering": None,
+                             "leader": None}
+    assert cert["witness"]["reference"] == 0 and cert["witness"]["mirror"]["permutation"] \
+        == [1, 0, 3, 2]
+    # the rotation taking 0 to 1 would take 1 to the twin of the mirror's image 0
+    assert cert["witness"]["refutations"] == {"rotation": [[1, 1]], "reflection": [[0, 1]]}
+    assert checker.verify_certificate(cert) == (True, "group D1, orderable false, leader")
+    for w in range(4):                             # the mirror maps every point into P
+        bad = copy.deepcopy(cert)
+        bad["witness"]["refutations"]["reflection"] = [[1, w]]
+        rejected(bad, f"the reflection taking point 0 to point 1 maps point {w} onto a point")
