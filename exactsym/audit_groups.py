@@ -123,6 +123,13 @@ class SubGroups:
         if len(levels) > 1:
             counts = []
             for k in levels:
+                level = levels_of[k - 1]
+                if len(level.points) == 1 and level.radius_squared != 0:
+                    # one point P off C: its group about C is D1 (the mirror CP), which
+                    # neither fact 2 nor fact 3 uses, and computing it took exact squared
+                    # lengths (100 robots on radii sqrt(k): a second)
+                    counts.append(1)
+                    continue
                 g = self._level(k)
                 if g.rotations == 1 and g.mirrors == 0:                     # fact 2
                     return True
