@@ -10,7 +10,7 @@ from exactsym import checker
 from exactsym.certificate import make_certificate
 from exactsym.configuration import load
 from exactsym.errors import InputError
-from exactsym.exact import evaluate_all, exact_key
+from exactsym.exact import evaluate, evaluate_all, exact_key
 from exactsym.expr import parse_expression
 from exactsym.levels import levels_of
 from exactsym.symmetry import symmetry_group
@@ -91,3 +91,17 @@ def test_nine_square_roots_truth(tmp_path):
     sec = levels_of(config).sec
     assert all(sec.contains(p) for p in config.points)
     assert all(sec.scaled_power(config.points[i]) == 0 for i in sec.support)
+
+
+def test_power_of_a_number_of_a_tower_over_the_sparse_base(tmp_path):
+    # a power's size bound read the base numbers as dense polynomials: exit 3
+    rows = ['{ r = "sqrt(145)", turn = "680/997" }',
+            '{ r = "(sqrt(2)*cos(2*pi/997) + sqrt(3))^2", turn = "183/997" }',
+            '{ r = "sqrt(63)", turn = "339/997" }']
+    config = load(_toml(tmp_path, rows))
+    x, y = config.points[1]
+    r2 = x * x + y * y                                   # the squared radius
+    c = "cos(2*pi/997)"
+    square = f"(2*{c}*{c} + 2*sqrt(6)*{c} + 3)"         # r, expanded: no power
+    assert r2 == evaluate(parse_expression(f"{square}*{square}"), config.system)
+    assert symmetry_group(config).name == "C1"

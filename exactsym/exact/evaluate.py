@@ -333,13 +333,9 @@ MAX_POWER_BITS = 1_000_000
 
 def _height_bits(x) -> int:
     """Bits of the largest numerator or denominator in ``x`` (a rational or field element)."""
-    if isinstance(x, (MQ, SparseCyclotomic)):
-        coeffs = list(x.terms.values() if isinstance(x, MQ) else
-                      list(x.num.values()) + list((x.den or {}).values())) or [fmpq(0)]
-        return max(int(c.p).bit_length() + int(c.q).bit_length() for c in coeffs)
-    if hasattr(x, "tower"):
+    if isinstance(x, (MQ, SparseCyclotomic)) or hasattr(x, "tower"):
         from .tower import height_bits
-        return height_bits(x.v)
+        return height_bits(x if isinstance(x, (MQ, SparseCyclotomic)) else x.v)
     if isinstance(x, FieldElement):
         coeffs = x.poly.coeffs() or [fmpq(0)]
         return max(int(c.p).bit_length() + int(c.q).bit_length() for c in coeffs)

@@ -121,8 +121,11 @@ def height_bits(v) -> int:
     if isinstance(v, MQ):
         return max((int(c.p).bit_length() + int(c.q).bit_length() for c in v.terms.values()),
                    default=1)
-    if type(v) is not tuple:                # a PolyElement of a cyclotomic base
+    if type(v) is not tuple and hasattr(v, "poly"):     # a PolyElement of a cyclotomic base
         return max(int(v.poly.numer().height_bits()), 1) + int(v.poly.denom()).bit_length()
+    if type(v) is not tuple:                # a SparseCyclotomic base: num / den, cosines
+        return max((int(c.p).bit_length() + int(c.q).bit_length()
+                    for c in list(v.num.values()) + list((v.den or {}).values())), default=1)
     return max(height_bits(v[1]), height_bits(v[2]))
 
 

@@ -1,5 +1,6 @@
-"""Short exact texts for a cyclotomic field of degree thousands: numbers written as
-quotients of numbers with small coefficients.
+"""Short exact texts for a cyclotomic field of degree thousands, and for a tower of
+square roots over one or over the sparse Q(zeta_N): numbers written as quotients of
+numbers with small coefficients.
 
 The SEC centre is C = (X/D, Y/D) with X, Y, D of a few bits per coefficient (products of
 the support points' coordinates), but C itself, divided, has coefficients of thousands
@@ -13,6 +14,11 @@ wrote 566 MB of JSON).  The same values have short exact forms:
   when a and b are scaled by positive numbers, so it is written from the homogeneous
   directions' product;
 * |p - C|^2 = |D p - (X, Y)|^2 / D^2, and C = (X/D, Y/D), written as such quotients.
+
+In a tower over the sparse Q(zeta_N) even the product of two homogeneous directions, or
+a square, costs a tenth of a second or more: there the texts write the products out,
+``((a0)*(b1) + (a1)*(b0))/((a0)*(b0) - (a1)*(b1))`` and ``((u)^2 + (v)^2)/((D)^2)``
+(:func:`_expanded`).  A rational centre is written as itself (:func:`is_short`).
 
 The configuration syntax reads a quotient back as the same number (it divides exactly),
 so these texts are exact; they are only *written* this way, every computation uses the
@@ -28,9 +34,13 @@ from __future__ import annotations
 
 from ..exact import number_text
 from ..exact.field import PolyElement
+from ..exact.sparse_cyclotomic import SparseCyclotomic
+from ..exact.tower import TowerElement
+from .ratio_keys import rational_ratio
 
 __all__ = ["SHORT_DEGREE", "forget", "register", "homogeneous_of", "scaled", "quotient_text",
-           "centre_texts", "radius_text", "sec_radius_text", "line_direction"]
+           "centre_texts", "is_short", "is_short_field", "radius_text", "sec_radius_text",
+           "line_direction", "slope_text"]
 
 #: fields from this degree get the short texts
 SHORT_DEGREE = 512
@@ -39,21 +49,50 @@ SHORT_DEGREE = 512
 # first asks (the summary writes few lines: no product per robot on the hot path)
 _FORMS: dict = {}
 _LIMIT = 1 << 14
+# id(homogeneous centre) -> [centre, whether its texts are short] (:func:`is_short`)
+_SHORT: dict = {}
 
 
 def forget() -> None:
     """Drop every recorded form (a new configuration is analysed)."""
     _FORMS.clear()
+    _SHORT.clear()
 
 
-def _huge(d) -> bool:
-    return isinstance(d, PolyElement) and d.field.degree >= SHORT_DEGREE
+def is_short_field(d) -> bool:
+    """Whether ``d``'s field gets the short texts: a dense field of degree >=
+    :data:`SHORT_DEGREE`, or a tower of square roots over such a field or over the sparse
+    Q(zeta_N) (there a divided coordinate is a quotient of sparse sums per tower
+    coefficient: the SEC centre of 31 robots at radii sqrt(k) and turns j/997 wrote 5,000
+    characters, its homogeneous X, Y, D a few hundred).  In the sparse Q(zeta_N) itself a
+    number is held as such a quotient anyway: the usual texts."""
+    if isinstance(d, PolyElement):
+        return d.field.degree >= SHORT_DEGREE
+    return isinstance(d, TowerElement) and d.tower.degree >= SHORT_DEGREE
+
+
+def is_short(homogeneous) -> bool:
+    """Whether the texts about the centre C = (X/D, Y/D) of ``homogeneous`` = (X, Y, D)
+    are written from it: D of a short field (:func:`is_short_field`) and C not rational
+    (a rational C is short divided: a centre (1, 1/3) stays "1", "1/3"; decided without
+    dividing, :func:`~exactsym.paper.ratio_keys.rational_ratio`).  Decided once per
+    centre."""
+    hit = _SHORT.get(id(homogeneous))
+    if hit is not None and hit[0] is homogeneous:
+        return hit[1]
+    x, y, d = homogeneous
+    short = is_short_field(d) and (rational_ratio(x, d) is None or
+                                   rational_ratio(y, d) is None)
+    if len(_SHORT) >= _LIMIT:
+        _SHORT.clear()
+    _SHORT[id(homogeneous)] = [homogeneous, short]
+    return short
 
 
 def register(vector, point, homogeneous) -> None:
     """Record ``D p - (X, Y)`` as the homogeneous form of ``vector == p - C``."""
-    x, y, d = homogeneous
-    if _huge(d):
+    if is_short(homogeneous):
+        x, y, d = homogeneous
         _record(vector, lambda: (d * point[0] - x, d * point[1] - y))
 
 
@@ -89,15 +128,29 @@ def quotient_text(num, den) -> str:
 
 def centre_texts(circle):
     """``[X/D, Y/D]`` texts of the SEC centre, or None (a small field: the usual texts)."""
-    x, y, d = circle.homogeneous
-    if not _huge(d):
+    if not is_short(circle.homogeneous):
         return None
+    x, y, d = circle.homogeneous
     return [quotient_text(x, d), quotient_text(y, d)]
+
+
+def _expanded(*numbers) -> bool:
+    """Whether a product of short forms is written expanded: in a dense field (a product
+    there is fast), not over the sparse Q(zeta_N), where the product of two short forms
+    in a tower of square roots costs a tenth of a second to seconds (100 robots at radii
+    sqrt(k) and turns j/997 spent 50 s writing lines and radii) and its expanded text is
+    longer than the product written out."""
+    return not any(isinstance(c, (SparseCyclotomic, TowerElement)) for c in numbers)
 
 
 def _squared_quotient(point, homogeneous, scale=1) -> str:
     x, y, d = homogeneous
     u, v = d * point[0] - x, d * point[1] - y
+    if not _expanded(u, v, d):
+        total = f"({number_text(u)})^2 + ({number_text(v)})^2"
+        if scale != 1:
+            total = f"({number_text(scale)})*({total})"
+        return f"({total})/(({number_text(d)})^2)"
     total = u * u + v * v
     if scale != 1:
         total = total * scale
@@ -108,28 +161,54 @@ def radius_text(r2):
     """The text of a level's squared radius (:class:`~exactsym.level_radius.LevelRadius`,
     which keeps its point and the homogeneous centre) as |D p - (X, Y)|^2 scale / D^2, or
     None."""
-    from ..level_radius import LevelRadius
+    from ..level_radius import LevelRadius, TowerLevelRadius
+    if isinstance(r2, TowerLevelRadius):
+        return _squared_quotient(r2._p, r2._c) if is_short(r2._c) else None
     if not isinstance(r2, LevelRadius) or r2.homogeneous is None \
-            or not _huge(r2.homogeneous[2]):
+            or not is_short(r2.homogeneous):
         return None
     return _squared_quotient(r2._p, r2.homogeneous, r2.scale)
+
+
+def _forms(factors):
+    """The homogeneous forms of a line's two factors (a, b), or None when one is not
+    known."""
+    if factors is None:
+        return None
+    a, b = (homogeneous_of(v) for v in factors)
+    return None if a is None or b is None else (a, b)
 
 
 def line_direction(factors):
     """``(X', Y')``, a positive multiple of the doubled direction a b of ``factors``
     (a, b), from their homogeneous forms (the same slope), or None when one is not
     known."""
-    if factors is None:
+    forms = _forms(factors)
+    if forms is None:
         return None
-    a, b = (homogeneous_of(v) for v in factors)
-    if a is None or b is None:
-        return None
+    a, b = forms
     return a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0]
+
+
+def slope_text(factors) -> str | None:
+    """The text ``(Y')/(X')`` of the slope of the doubled direction a b of ``factors``
+    from their homogeneous forms (:func:`line_direction`), or None when one is not known;
+    over the sparse Q(zeta_N) with the products written out, not expanded
+    (:func:`_expanded`)."""
+    forms = _forms(factors)
+    if forms is None:
+        return None
+    (a0, a1), (b0, b1) = forms
+    if _expanded(a0, a1, b0, b1):
+        x, y = line_direction(factors)
+        return quotient_text(y, x)
+    t0, t1, u0, u1 = (f"({number_text(c)})" for c in (a0, a1, b0, b1))
+    return f"({t0}*{u1} + {t1}*{u0})/({t0}*{u0} - {t1}*{u1})"
 
 
 def sec_radius_text(circle, points):
     """The SEC's squared radius as |D t - (X, Y)|^2 / D^2 for a point t on it, or None."""
-    if not _huge(circle.homogeneous[2]):
+    if not is_short(circle.homogeneous):
         return None
     t = circle._through if circle._through is not None else points[circle.support[0]]
     return _squared_quotient(t, circle.homogeneous)

@@ -18,7 +18,7 @@ from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
 from ..text_numbers import DIGITS, HUGE, LONG, huge_quotient, number, quotient_decimal
-from .homogeneous import line_direction, quotient_text
+from .homogeneous import line_direction, slope_text
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
 from ..exact.sparse_cyclotomic import SparseCyclotomic
@@ -155,19 +155,20 @@ class LineKey:
         the vertical doubled direction as ``(0, 0)``), compared without dividing for a
         Cartesian line (:class:`_Slope`): in a field of degree thousands one slope costs
         seconds to divide.  A line whose doubled direction is not made yet is ordered by
-        the positive multiple of it its short text is written from (:meth:`_short_parts`:
-        the same sign and slope, numbers of a few bits per coefficient)."""
+        the balls of its two factors, and if they never separate by the positive multiple
+        of it its short text is written from (:meth:`_short_parts`: the same sign and
+        slope, numbers of a few bits per coefficient)."""
         if self._vector_ is None:
-            parts = self._short_parts()
-            if parts is not None:
-                s, x, y = parts
-                return (s, _Slope(x, y))
             key = self.canon[3] if isinstance(self.canon, tuple) and len(self.canon) == 4 \
                 else None
             if isinstance(key, _DirectionKey) and key.factors is not None:
-                # ordered from the balls of its two factors: the product a b, a tower's
-                # exact multiplication, only if they never separate
-                return (key.signs[0], _Slope(None, None, key.factors, key.vector))
+                # ordered from the balls of its two factors; only if they never separate,
+                # the exact product: of the short forms when known (sorting a G_ij's
+                # lines made a product per line where 8 are shown), else a b itself
+                def direction():
+                    parts = self._short_parts()
+                    return key.vector() if parts is None else parts[1:]
+                return (key.signs[0], _Slope(None, None, key.factors, direction))
         if self._vector is None:
             return self.value
         x, y = self._vector
@@ -201,21 +202,28 @@ class LineKey:
             self._text = known[1]
         return self._text
 
+    def _direction_key(self):
+        """The :class:`_DirectionKey` of a line whose doubled direction is the product of
+        two factors, or None."""
+        key = self.canon[3] if isinstance(self.canon, tuple) and len(self.canon) == 4 \
+            else None
+        return key if isinstance(key, _DirectionKey) and key.factors is not None else None
+
     def _short_parts(self):
         """``(sign, X', Y')``: a positive multiple of this line's doubled direction made
         from the homogeneous forms of the two directions it is the product of
         (:mod:`.homogeneous`: the same slope, numbers of a few bits per coefficient where
         the product's have thousands of digits), or None."""
-        key = self.canon[3] if isinstance(self.canon, tuple) and len(self.canon) == 4 \
-            else None
-        if not isinstance(key, _DirectionKey):
-            return None
-        found = line_direction(key.factors)
+        key = self._direction_key()
+        found = None if key is None else line_direction(key.factors)
         return None if found is None else (key.signs[0],) + found
 
     def _short_text(self):
-        parts = self._short_parts()
-        return None if parts is None else f"({parts[0]}, {quotient_text(parts[2], parts[1])})"
+        """``(sign, slope)`` with the slope written from the homogeneous forms
+        (:func:`.homogeneous.slope_text`), or None."""
+        key = self._direction_key()
+        text = None if key is None else slope_text(key.factors)
+        return None if text is None else f"({key.signs[0]}, {text})"
 
     def screen_text(self) -> str:
         """:attr:`text`, except a slope written as a quotient whose exact text would be
@@ -223,6 +231,9 @@ class LineKey:
         (:func:`exactsym.text_numbers.huge_quotient`), what the text summary shows,
         without writing the text; and a long slope of a sparse Q(zeta_N), by its decimal
         and length (:func:`exactsym.text_numbers.number`)."""
+        shown = self._factor_decimal() if self._value is None else None
+        if shown is not None:               # a tower over the sparse Q(zeta_N): no product
+            return shown
         parts = self._short_parts() if self._value is None else None
         if parts is not None:
             text = self.text                        # the short exact text
@@ -231,9 +242,6 @@ class LineKey:
             s, x, y = parts
             return f"({s}, ≈ {quotient_decimal(y, x)} (exact: {len(text)} characters, " \
                 "in --json))"
-        shown = self._factor_decimal() if self._value is None else None
-        if shown is not None:
-            return shown
         if (self._text is None or len(self._text) > HUGE) and self._value is None and \
                 self._vector is not None and _quotient_field(*self._vector):
             x, y = self._vector
