@@ -10,7 +10,7 @@ import time
 
 import pytest
 from flint import fmpq
-from hypothesis import given, settings, strategies as st
+from hypothesis import assume, given, settings, strategies as st
 
 from exactsym.configuration import load
 from exactsym.errors import FieldTooLargeError, InputError
@@ -206,6 +206,26 @@ def test_cosine_products_agree_with_the_dense_field(data, m):
         assert q.residue() == SparseCyclotomic(context, q.num, q.den).residue()
     if m % 4 == 0:
         assert SparseCyclotomic(context, {m // 4: fmpq(3)}) == 0
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.data(), st.sampled_from(CONDUCTORS), st.booleans())
+def test_quotients_over_one_denominator_agree_with_the_dense_field(data, m, same_object):
+    """(a/d) / (b/d) = a/b (sparse_cyclotomic.__truediv__, no product of sums), the
+    denominator shared as one object or as equal dictionaries: value, sign, zero test and
+    residue against the dense field."""
+    context = sparse_context(m)
+    a, b, d = (_real(_random_terms(data, m), m) for _ in range(3))
+    assume(d and b)
+    x = SparseCyclotomic(context, a, d)
+    y = SparseCyclotomic(context, b, d if same_object else dict(d))
+    dx, dy, dd = _dense_cos(m, a), _dense_cos(m, b), _dense_cos(m, d)
+    assume(dd != 0 and dy != 0)
+    q, dense = x / y, dx / dy
+    assert q * y == x and q.sign() == dense.sign() and q.is_zero() == (dense == 0)
+    assert _dense_cos(m, q.num) == dense * _dense_cos(m, q.den)
+    fresh = SparseCyclotomic(context, q.num, q.den)
+    assert q.residue() == fresh.residue() and hash(q) == hash(fresh)
 
 
 def test_mixing_with_the_dense_field():

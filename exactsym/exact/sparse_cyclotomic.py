@@ -211,6 +211,12 @@ class SparseCyclotomic(FieldElement):
             return NotImplemented
         if o.is_rational():
             return self / o.rational()
+        if self.den is not None and (self.den is o.den or self.den == o.den):
+            # (a/d) / (b/d) = a/b: no product of sums (a line's slope y/x, whose
+            # coordinates share the denominator of the SEC centre, multiplied a/d by d/b)
+            if o.is_zero():
+                raise ZeroDivisionError("division by zero")
+            return self._new(self.num, dict(o.num), (self.rho()[0], o.rho()[0]))
         return self * o.inverse()
 
     def __rtruediv__(self, other):
