@@ -432,3 +432,27 @@ def test_a_long_sparse_line_is_shown_by_its_decimal_on_the_screen():
     short = line_key(False, (SparseCyclotomic(context, {0: fmpq(1)}),
                              SparseCyclotomic(context, {0: fmpq(0)})))
     assert short.screen_text() == short.text
+
+
+@pytest.mark.parametrize("shift", [("1/3", "1/5"), ("0", "-7/2")])
+def test_a_rational_sec_centre_is_held_as_a_rational(tmp_path, shift):
+    """A C7 set at turns j/7 + k/999983 translated by a rational vector: the SEC centre,
+    a quotient X/D of sums of cosines, is held as the rational it is (sec._reduced), so
+    the directions p - C stay sums of two cosines; the group is C7 and an unmoved copy has
+    the same verdicts."""
+    from exactsym.levels import levels_of
+    from exactsym.symmetry import symmetry_group
+    rows = _orbit_rows(7, 1, fmpq(1, 999983), shift) + \
+        _orbit_rows(7, 2, fmpq(3, 999983), shift)
+    config = load(_write(tmp_path, "t.toml", rows))
+    assert isinstance(config.system, SparseCyclotomicSystem)
+    centre = levels_of(config).sec.centre
+    assert [c.den for c in centre] == [None, None]
+    assert list(centre) == [fmpq(shift[0]), fmpq(shift[1])]
+    x, y = config.points[0]
+    assert len((x - centre[0]).num) <= 2 and symmetry_group(config).name == "C7"
+    _, moved = _report(_write(tmp_path, "t.toml", rows))
+    _, origin = _report(_write(tmp_path, "o.toml", _orbit_rows(7, 1, fmpq(1, 999983), ("0", "0"))
+                               + _orbit_rows(7, 2, fmpq(3, 999983), ("0", "0"))))
+    assert {k: v for k, v in _verdicts(moved).items() if k != "sec"} == \
+        {k: v for k, v in _verdicts(origin).items() if k != "sec"}
