@@ -383,18 +383,7 @@ class Tower:
         if root is not None:
             return root
         root = self._rational_sqrt(x)
-        proved_new = False
-        if root is None and isinstance(x, MQ) and x.sign() > 0 and \
-                all(isinstance(r, MQ) for r in self.radicands) and \
-                self._in_base([x] + self.radicands):
-            # every level a square root of K_0: by Kummer theory x is a square above them
-            # only if x is in K_0*^2 <r_1, ..., r_L>; Legendre characters proving x and the
-            # radicands independent modulo squares settle it at once (the search below
-            # branches twice per level: ten levels took seconds), and beyond the bound
-            # the new level is refused now instead of after the search
-            from .tower_proof import independent_square_classes
-            proved_new = independent_square_classes(self.primes, self.radicands + [x])
-        if root is None and not proved_new:
+        if root is None:        # x of K_0 over levels of K_0: Kummer theory (_kummer_root)
             root = self.root_in(x, self.levels)
         if root is None:
             self._check_new_level()

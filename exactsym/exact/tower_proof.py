@@ -94,12 +94,6 @@ def sqrt_mod(a: int, p: int):
     return r
 
 
-def independent_square_classes(primes, values, **bounds) -> bool:
-    """True only when the elements ``values`` of K_0 are proved independent in
-    K_0*/K_0*^2 (:func:`square_class_rank` is their number)."""
-    return square_class_rank(primes, values, **bounds) == len(values)
-
-
 def _split_primes(primes):
     """Primes p = 1 + k M, M = 8 times the odd base primes: p = 1 mod 8 makes 2 a square
     mod p, and p = 1 mod q with p = 1 mod 4 makes q one (quadratic reciprocity)."""
