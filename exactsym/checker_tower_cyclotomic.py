@@ -31,6 +31,10 @@ except ImportError:     # run as a lone script: sibling files
 class CyclotomicTower(Tower):
     """The field of a ``"tower"`` spec with a ``"base"`` field: checks every level."""
 
+    #: no integer enclosures of a base number here (its signs come from Field's isolating
+    #: interval): checker_ordering compares angles exactly
+    bounds = None
+
     def __init__(self, spec: dict):
         need(isinstance(spec, dict) and isinstance(spec.get("base"), dict)
              and isinstance(spec.get("levels"), list) and spec["levels"],

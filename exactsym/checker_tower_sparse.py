@@ -90,10 +90,6 @@ class SparseKummerTower(Tower):
             return lo // x.den, -(-hi // x.den)
         return Tower._interval(self, x, bits)
 
-    def bounds(self, x, bits: int):
-        """Integers lo <= x 2^bits <= hi (x a raw value; checker_ordering's filter)."""
-        return self._interval(x, bits)
-
     # -- the proof that no r_i is a square in K_(i-1) ----------------------------
     def _prove_kummer(self, rationals: list, primes) -> None:
         """The Legendre symbols (r_i | p) at the listed primes p = 1 mod N have rank L over

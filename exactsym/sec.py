@@ -21,7 +21,6 @@ from flint import arb, ctx
 from .exact import fmpq, sign
 from .exact.field import PolyElement
 from .exact.sparse_cyclotomic import SparseCyclotomic
-from .exact.sparse_terms import rational_terms
 from .exact.tower import TowerElement
 from .geometry import (Point, Turn, circumcentre_homogeneous, midpoint,
                        orientation_homogeneous, squared_distance)
@@ -30,13 +29,12 @@ _SEED = 20100707
 
 
 def _reduced(v):
-    """A coordinate of the centre in the sparse Q(zeta_N), a quotient of sums, as the
-    rational it is when it is one: the centre (1/3, 1/5) of a C7 set translated by it was
-    held as quotients of 28 and 4 cosines, and every direction p - C, gap and line of the
-    98 robots multiplied them (7.5 s of a check)."""
-    if isinstance(v, SparseCyclotomic) and v.den is not None and v.is_rational():
-        return v._new(rational_terms(v.rational()))
-    return v
+    """A coordinate of the centre as the rational it is when it is one in the sparse
+    Q(zeta_N) (:meth:`~.exact.sparse_cyclotomic.SparseCyclotomic.reduced`): the centre
+    (1/3, 1/5) of a C7 set translated by it was held as quotients of 28 and 4 cosines, and
+    every direction p - C, gap and line of the 98 robots multiplied them (7.5 s of a
+    check)."""
+    return v.reduced() if isinstance(v, SparseCyclotomic) else v
 
 
 class Circle:

@@ -46,8 +46,14 @@ D1_POLAR = "".join(f"polar {r} {t}\n" for r, t in
 TWO_RAYS_POLAR = "polar 1 0\npolar 2 0\npolar 3 1/3\n"
 
 
+# a tower of nested radicals (checker_tower: angles compared from integer boxes, exactly on
+# a tie), two points on one ray
+NESTED = "sqrt(2+sqrt(3)) 0\n0 sqrt(2+sqrt(3))\n-1 -1\n2 3\n2*sqrt(2+sqrt(3)) 0\n" \
+    "-3 sqrt(5+sqrt(2))\n"
+
+
 @pytest.mark.parametrize("text", [C1, C1_POLAR, TWO_RAYS_POLAR,
-                                  "0 0\nsqrt(2) 0\n0 sqrt(3)\n1 1\n"])
+                                  "0 0\nsqrt(2) 0\n0 sqrt(3)\n1 1\n", NESTED])
 def test_orderable_certificate_proves_the_ordering(tmp_path, text):
     cert = certify_text(tmp_path, text)
     order = cert["claim"]["ordering"]

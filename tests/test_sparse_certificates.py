@@ -44,6 +44,9 @@ CASES = {
     "D5": _orbit(5, 1, D),
     "C5": _orbit(5, 1, D) + _orbit(5, 2, D + fmpq(1, 13)),
     "D7": _orbit(7, 1, D),
+    # a rational centroid: a sum of cosines held as the rational (certificate._centroid);
+    # each reflection maps an orbit onto points, the other orbit refutes it
+    "C7 translated": _orbit(7, 1, D, ("1/3", "1/5")) + _orbit(7, 2, 3 * D, ("1/3", "1/5")),
     # square roots of rationals join as Gauss sums
     "C1 with square roots": ['{ r = "sqrt(2)", turn = "0" }', '{ r = "1", turn = "1/999983" }',
                              '{ r = "sqrt(5)", turn = "2/5" }', '{ r = "3", turn = "3/999979" }',

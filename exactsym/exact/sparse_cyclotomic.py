@@ -235,6 +235,14 @@ class SparseCyclotomic(FieldElement):
             z = self._zero = False if self.rho()[0] > 0 else cosines_zero(self.num, self.ctx.n)
         return z
 
+    def reduced(self) -> "SparseCyclotomic":
+        """This number written as the rational ``{0: q}`` when it is one held as a quotient
+        or a sum of cosines (the SEC centre X/D, the centroid of a translated C7 set: every
+        later product multiplied those sums), else itself."""
+        if (self.den is not None or len(self.num) > 1) and self.is_rational():
+            return self._new(rational_terms(self.rational()))
+        return self
+
     def is_rational(self) -> bool:
         return self._rational_value() is not None
 
