@@ -44,8 +44,8 @@ from .exact.evaluate import SparseCyclotomicSystem
 from .exact.sparse_cyclotomic import SparseCyclotomic
 from .exact.tower import TowerElement
 from .exact.sparse_tower import SparseKummerTower
-from .exact.tower_proof import (cyclotomic_nonsquare_witness, kummer_witness,
-                                legendre_rank_primes, nonsquare_witness)
+from .exact.tower_proof import (base_kummer_witness, cyclotomic_nonsquare_witness,
+                                kummer_witness, legendre_rank_primes, nonsquare_witness)
 from .prime_certificates import (MR_LIMIT, PrimalityError, hashing_prime_factors,
                                  primality_proofs)
 
@@ -254,11 +254,28 @@ class Encoder:
         if isinstance(tower, CyclotomicTower):
             self._cyclotomic_tower(tower)
             return
-        levels = _level_proofs(tower, nonsquare_witness, lambda r, p, base, roots: {
-            "radicand": _tower_text(r), "prime": p, "base": [str(s) for s in base],
-            "roots": [str(t) for t in roots]})
+        def entry(r, p, base, roots):
+            return {"radicand": _tower_text(r), "prime": p, "base": [str(s) for s in base],
+                    "roots": [str(t) for t in roots]}
         self.field, self.tower = None, tower
-        self.spec = {"tower": {"radicands": [str(p) for p in tower.primes], "levels": levels}}
+        self.spec = {"tower": {"radicands": [str(p) for p in tower.primes]}}
+        try:
+            self.spec["tower"]["levels"] = _level_proofs(tower, nonsquare_witness, entry)
+            return
+        except CertificateError:
+            # a proof per level needs a prime at which every lower radicand is a residue;
+            # radicands of K_0 are proved new together by characters of full rank
+            prefix = next((i for i, r in enumerate(tower.radicands) if not isinstance(r, MQ)),
+                          len(tower.radicands))
+            maps = base_kummer_witness(tower.primes, tower.radicands[:prefix]) if prefix \
+                else None
+            if maps is None:
+                raise
+        self.spec["tower"]["levels"] = \
+            [{"radicand": _tower_text(r), "kummer": True} for r in tower.radicands[:prefix]] + \
+            _level_proofs(tower, nonsquare_witness, entry, start=prefix + 1)
+        self.spec["tower"]["kummer"] = [{"prime": p, "base": [str(s) for s in base]}
+                                        for p, base in maps]
 
     def _cyclotomic_tower(self, tower):
         """K_0 = Q(theta), theta = 2cos(2pi/M), written as the real-cyclotomic field below
@@ -401,11 +418,12 @@ class Encoder:
         return [rational_text(c) for c in value.coeffs()]
 
 
-def _level_proofs(tower, witness, entry) -> list:
-    """Each level's radicand with its non-square proof (``witness(tower, i)``: a prime and
-    the data the checker re-runs), written by ``entry(radicand, *proof)``."""
+def _level_proofs(tower, witness, entry, start: int = 1) -> list:
+    """Each level's radicand from level ``start`` on with its non-square proof
+    (``witness(tower, i)``: a prime and the data the checker re-runs), written by
+    ``entry(radicand, *proof)``."""
     levels = []
-    for i, r in enumerate(tower.radicands, start=1):
+    for i, r in enumerate(tower.radicands[start - 1:], start=start):
         proof = witness(tower, i)
         if proof is None:
             raise CertificateError(f"no prime below 200000 proves the radicand of level {i} "

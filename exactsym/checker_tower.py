@@ -93,12 +93,22 @@ class Tower:
             self.base.radicands = []
         self.r: list = []
         self._balls: dict = {}
+        kummer: list = []               # the radicands of the "kummer" levels (in K_0)
         for i, lev in enumerate(spec["levels"], start=1):
             need(isinstance(lev, dict), f"tower level {i}: not an object")
             r = self._read(lev.get("radicand"), i - 1)
-            self._prove(i, r, lev)
+            if lev.get("kummer") is True:
+                need(len(kummer) == i - 1, f"tower level {i}: a kummer level above a level "
+                     "that is not")
+                need(isinstance(r, Root), f"tower level {i}: a kummer radicand must lie in "
+                     "K_0")
+                kummer.append(r)
+            else:
+                self._prove(i, r, lev)
             self.r.append(r)
             need(self._sign(r) > 0, f"tower level {i}: the radicand is not positive")
+        if kummer:
+            self._prove_kummer(kummer, spec.get("kummer"))
 
     # -- elements -----------------------------------------------------------
     def _read(self, value, top: int):
@@ -219,6 +229,41 @@ class Tower:
         value = _image(r, p, base_map, roots)
         need(pow(value, (p - 1) // 2, p) == p - 1,
              f"tower level {i}: the radicand's image {value} is a square modulo {p}")
+
+    def _prove_kummer(self, radicands: list, maps) -> None:
+        """The radicands r_1, ..., r_L of the first L levels, all in K_0, are independent
+        modulo squares of K_0, so each level is new (Kummer theory: K_0(sqrt r_1, ...,
+        sqrt r_L) has degree 2^L).  Each entry of ``maps``, an odd prime p < 2^40 and a
+        root mod p of each q_j (none dividing p), defines phi: R -> F_p as in :meth:`_prove`
+        (R integrally closed: its discriminant, powers of 4 q_j, is a p-unit); every r_j is
+        in R with phi(r_j) != 0.  If a product of some r_j were z^2 with z in K_0, z would
+        lie in R and its image be a square: the Legendre symbol of phi of the product is 1
+        for every map.  The symbols' rank L over F_2 rules out every non-empty product."""
+        need(isinstance(maps, list), "tower: kummer levels need a \"kummer\" list of maps")
+        qs = self.base.radicands
+        rows: dict = {}
+        for k, entry in enumerate(maps, start=1):
+            need(isinstance(entry, dict) and isinstance(entry.get("base"), list),
+                 f"tower kummer map {k}: not an object with a prime and base roots")
+            p, base = entry.get("prime"), entry["base"]
+            need(isinstance(p, int) and not isinstance(p, bool) and 2 < p < 1 << 40
+                 and _is_prime(p), f"tower kummer map {k}: {p!r} is not an odd prime below "
+                 "2^40")
+            base = [integer(b) if isinstance(b, str) else b for b in base]
+            need(len(base) == len(qs) and all(isinstance(v, int) and 0 <= v < p
+                                               for v in base),
+                 f"tower kummer map {k}: one root in [0, p) per base radicand")
+            for q, s in zip(qs, base):
+                need(q % p != 0 and (s * s - q) % p == 0,
+                     f"tower kummer map {k}: {s} is not a root of {q} modulo {p}, or p "
+                     "divides it")
+            need(all(c.denominator % p for r in radicands for c in _coefficients(r)),
+                 f"tower kummer map {k}: p divides a denominator of a radicand")
+            images = [_image(r, p, dict(zip(qs, base)), []) for r in radicands]
+            need(all(images), f"tower kummer map {k}: a radicand's image is 0")
+            add_legendre_row(rows, images, p)
+        need(len(rows) == len(radicands), f"tower: the Legendre symbols of the kummer levels "
+             f"have rank {len(rows)} over F_2, not {len(radicands)}")
 
     def _norm(self, x) -> Fraction:
         for lev in range(_level(x), 0, -1):

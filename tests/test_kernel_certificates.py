@@ -178,3 +178,42 @@ def test_square_roots_over_a_real_cyclotomic_field(tmp_path, monkeypatch):
     bad = copy.deepcopy(cert)                       # without the cyclotomic part: 4 != 12
     del bad["configuration"]["field"]["irreducible"]["cyclotomic"]
     _rejected(bad, "degree 2^k e")
+
+
+# ten nested radicals over ten primes: a proof per level needs a prime at which every lower
+# radicand is a residue (none below 200,000); the radicands, all in K_0, are proved new
+# together by Legendre characters of full rank ("kummer" levels)
+TEN_NESTED = [f'["sqrt(1+sqrt({q}))", "{k}"]'
+              for k, q in enumerate([2, 3, 5, 7, 11, 13, 17, 19, 23, 29])]
+
+
+def test_nested_radicals_of_k0_are_proved_new_together(tmp_path):
+    cert = _cert(tmp_path, TEN_NESTED)
+    tower = cert["configuration"]["field"]["tower"]
+    assert [lev.get("kummer") for lev in tower["levels"]] == [True] * 10
+    assert cert["claim"]["group"] == "C1" and len(tower["kummer"]) >= 10
+    # a map too few: rank 9
+    bad = copy.deepcopy(cert)
+    bad["configuration"]["field"]["tower"]["kummer"].pop()
+    _rejected(bad, "rank")
+    # a wrong root of a base radicand
+    bad = copy.deepcopy(cert)
+    entry = bad["configuration"]["field"]["tower"]["kummer"][0]
+    entry["base"][0] = str((int(entry["base"][0]) + 1) % entry["prime"])
+    _rejected(bad, "not a root")
+    # a composite "prime"
+    bad = copy.deepcopy(cert)
+    bad["configuration"]["field"]["tower"]["kummer"][0]["prime"] *= 3
+    _rejected(bad, "not an odd prime")
+    # a kummer radicand above K_0, and a kummer level above one that is not
+    bad = copy.deepcopy(cert)
+    bad["configuration"]["field"]["tower"]["levels"][1]["radicand"] = [1, "1", "1"]
+    _rejected(bad, "must lie in K_0")
+    bad = copy.deepcopy(cert)
+    levels = bad["configuration"]["field"]["tower"]["levels"]
+    levels[0] = {"radicand": levels[0]["radicand"], "prime": 7, "base": [], "roots": []}
+    _rejected(bad)
+    # a radicand made a square of K_0 (3 + 2 sqrt 2 = (1 + sqrt 2)^2): no rank can prove it
+    bad = copy.deepcopy(cert)
+    bad["configuration"]["field"]["tower"]["levels"][0]["radicand"] = {"1": "3", "2": "2"}
+    _rejected(bad, "rank")

@@ -11,13 +11,16 @@ modulo a prime p = 1 mod M (:func:`cyclotomic_nonsquare_witness`); the checker r
 ``exactsym.checker_tower``.
 
 Levels that are all square roots of rationals over a cyclotomic base (:mod:`.kummer`) are
-proved together by :func:`kummer_witness`: Legendre symbols of full rank over F_2.
+proved together by :func:`kummer_witness`: Legendre symbols of full rank over F_2; levels
+whose radicands all lie in K_0 = Q(sqrt q, ...) likewise by :func:`base_kummer_witness`.
 
 Public names: :func:`nonsquare_witness`, :func:`cyclotomic_nonsquare_witness`,
-:func:`kummer_witness`, :func:`norm`, :func:`image`.
+:func:`kummer_witness`, :func:`base_kummer_witness`, :func:`norm`, :func:`image`.
 """
 
 from __future__ import annotations
+
+import random
 
 from math import gcd, lcm
 
@@ -279,6 +282,51 @@ def _odd_primes(limit: int):
             if p > 2:
                 yield p
             sieve[p * p::p] = bytearray(len(range(p * p, limit, p)))
+
+
+def base_kummer_witness(primes, radicands, limit: int = 1 << 24, signs: int = 16):
+    """``[(p, base), ...]``: ring maps K_0 -> F_p, K_0 = Q(sqrt q : q in ``primes``) (p an
+    odd prime, ``base`` a root mod p of each q, none 0; no denominator of a radicand's
+    coefficient divisible by p and no radicand's image 0) whose Legendre characters on the
+    ``radicands`` (``MQ``, all in K_0) have rank L = len(radicands) over F_2.  Then no
+    product of a non-empty subset of them is a square of K_0 (:func:`_character_rows`), so
+    by Kummer theory each level of K_0(sqrt r_1, ..., sqrt r_L) is new: the certificate of
+    a tower whose radicands all lie in K_0 ("kummer" levels, checker_tower), where a proof
+    per level needs a prime at which every lower radicand is a residue (ten nested radicals
+    over ten primes: none below 200,000).  None when the primes below ``limit`` do not
+    reach rank L."""
+    k = len(primes)
+    dens = 1
+    for r in radicands:
+        for c in r.terms.values():
+            dens *= int(c.q)
+    rows: dict = {}                           # pivot bit -> reduced row
+    maps = []
+    draw = random.Random(len(radicands))      # the sign choices: the same in every run
+    p = 1
+    while len(rows) < len(radicands):
+        p += 2
+        if p >= limit:
+            return None
+        if dens % p == 0 or any(pow(q, (p - 1) // 2, p) != 1 for q in primes) or \
+                not fmpz(p).is_prime():
+            continue
+        roots = [sqrt_mod(q, p) for q in primes]
+        for _ in range(min(signs, 1 << k)):
+            base = [r if draw.getrandbits(1) else p - r for r in roots]
+            images = [image(r, p, dict(zip(primes, base)), []) for r in radicands]
+            if any(v == 0 for v in images):
+                continue
+            row = sum(1 << i for i, v in enumerate(images) if pow(v, (p - 1) // 2, p) != 1)
+            for pivot in sorted(rows, reverse=True):
+                if row >> pivot & 1:
+                    row ^= rows[pivot]
+            if row:
+                rows[row.bit_length() - 1] = row
+                maps.append((p, base))
+                if len(rows) == len(radicands):
+                    break
+    return maps
 
 
 def nonsquare_witness(tower: Tower, lev: int, limit: int = 200_000):
