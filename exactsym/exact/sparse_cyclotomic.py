@@ -216,6 +216,8 @@ class SparseCyclotomic(FieldElement):
             # coordinates share the denominator of the SEC centre, multiplied a/d by d/b)
             if o.is_zero():
                 raise ZeroDivisionError("division by zero")
+            if len(o.num) == 1 and 0 in o.num:              # b rational: a scaled
+                return self._new(scale_terms(self.num, 1 / o.num[0]))
             return self._new(self.num, dict(o.num), (self.rho()[0], o.rho()[0]))
         return self * o.inverse()
 
