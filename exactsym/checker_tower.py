@@ -6,7 +6,10 @@ is the square-root field of :class:`checker_numbers.SquareRoots` (pairwise copri
 > 1, none a square; the list may be empty: K_0 = Q), and K_i = K_(i-1)(y_i), y_i the positive
 square root of ``level_i["radicand"]`` = r_i, an element of K_(i-1) proved > 0 and NOT a square
 in K_(i-1) by ``level_i["prime"]`` p, ``"base"`` (a root of each q_j mod p) and ``"roots"``
-(a root of the image of each r_j, j < i): see :func:`Tower._prove`.
+(a root of the image of each r_j, j < i): see :func:`Tower._prove`.  The first levels may
+instead say ``"kummer": true`` (radicands in K_0), proved new together by the spec's
+``"kummer"`` list of maps K_0 -> F_p whose Legendre symbols have full rank: see
+:meth:`Tower._prove_kummer`.
 
 Elements: a rational ``"p/q"``; ``{"P_S": c, ...}`` in K_0; ``[i, A, B]`` = A + B y_i with A, B
 elements of levels < i and B != 0.  Since each r_i is not a square, {1, y_i} is a basis of K_i
