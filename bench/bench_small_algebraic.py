@@ -177,6 +177,15 @@ def nested_inputs() -> dict[str, str]:
     for k in (10, 12):
         out[f"{k} nested radicals, {k} pts"] = _cartesian(
             [(f"sqrt(1+sqrt({p}))", str(i)) for i, p in enumerate(primes[:k])])
+    # two mirror pairs at turns +-2j/997 (the sparse Q(zeta_N)): the per-level polygon
+    # section and the audit took minutes (session 13, open); at j/31 (dense) 0.3 s
+    for label, radius, shift in (("rational radii, off centre", lambda k: str(k % 17 + 1),
+                                  ("1/3", "1/5")),
+                                 ("sqrt radii, about 0", lambda k: f"sqrt({k})", ("0", "0"))):
+        out[f"2 mirror pairs j/997, {label}"] = _cartesian(
+            [(f"{shift[0]} + {radius(k)}*cos({2 * s * j}*pi/997)",
+              f"{shift[1]} + {radius(k)}*sin({2 * s * j}*pi/997)")
+             for k, j in ((123, 304), (280, 100)) for s in (1, -1)])
     return out
 
 
