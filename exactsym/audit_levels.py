@@ -127,7 +127,7 @@ def level_findings(config, levels, verdicts, types=None) -> tuple[list, list, se
             if types is not None:
                 facts = types[index]
             else:
-                kind = P.polygon_type(level_polygon(config, levels, index))
+                kind = P.polygon_type(level_polygon(config, levels, index, cleared=True))
                 facts = None if kind is None else (str(kind), all(t > 0 for t in kind.through))
             if facts is not None and facts[1]:
                 covered.add("lemma-sym-regular")
@@ -161,7 +161,7 @@ def _elect_leader_asym(config, levels, index, v, name, where) -> list:
     verdicts already hold it when the check also says asymmetric; else it is run here."""
     leaders = v.get("leader_asym")
     if leaders is None:
-        poly = level_polygon(config, levels, index)
+        poly = level_polygon(config, levels, index, cleared=True)
         plus, minus = P.elect_leader_asym(poly, 1), P.elect_leader_asym(poly, -1)
         leaders = {"+1": plus.label, "-1": minus.label, "tie": plus.tie or minus.tie}
     out = []

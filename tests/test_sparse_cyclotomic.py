@@ -342,6 +342,11 @@ MODERATE = {
     "D5 off centre": _orbit_rows(5, 1, fmpq(1, 7)),
     "C5 off centre": _orbit_rows(5, 1, fmpq(1, 7)) + _orbit_rows(5, 2, fmpq(1, 9)),
     "D3 and a point": _orbit_rows(3, 1, fmpq(1, 7)) + ['["1", "1/3"]'],
+    # two mirror pairs off the origin: the level polygons' denominators cleared
+    # (circle_polygon._cleared, the per-level verdicts only)
+    "two mirror pairs": [f'["1/3 + {r}*cos({2 * s * j}*pi/63)", '
+                         f'"1/5 + {r}*sin({2 * s * j}*pi/63)"]'
+                         for r, j in ((5, 19), (9, 6)) for s in (1, -1)],
 }
 
 
@@ -357,6 +362,20 @@ def test_same_report_as_the_dense_field(tmp_path, name):
         sparse_config, sparse = _report(path)
     assert isinstance(sparse_config.system, SparseCyclotomicSystem)
     assert _verdicts(sparse) == _verdicts(dense)
+    if name == "two mirror pairs":                  # the cleared path was taken
+        from exactsym.levels import levels_of
+        from exactsym.paper.circle_polygon import level_polygon
+        levels = levels_of(sparse_config)
+        assert any(level_polygon(sparse_config, levels, k, cleared=True).cleared
+                   for k in range(len(levels.levels)))
+        for k in range(len(levels.levels)):     # one positive multiple f (p - C) of all
+            mine = level_polygon(sparse_config, levels, k, cleared=True).directions
+            true = level_polygon(sparse_config, levels, k).directions
+            (a0, b0), (u0, v0) = mine[0], true[0]
+            for (a, b), (u, v) in zip(mine, true):
+                assert a * v - b * u == 0 and (a * u + b * v).sign() > 0
+                assert (a * a + b * b) * (u0 * u0 + v0 * v0) == \
+                    (a0 * a0 + b0 * b0) * (u * u + v * v)
 
 
 def _big_rows(shuffle=0, turn=fmpq(0), reflect=False):

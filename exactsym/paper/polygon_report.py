@@ -354,7 +354,7 @@ def _level_section(config, levels, strings: bool) -> LevelSection:
         if len(level.points) == 1 and not strings:
             # every single vertex has the same shape: no polygon needs building
             if single is None:
-                polygon = level_polygon(config, levels, index)
+                polygon = level_polygon(config, levels, index, cleared=True)
                 verdict, facts = _verdicts_and_type(polygon)
                 single = (_single_relabeller(verdict, polygon.labels[0]), facts)
             if single[0] is not None:
@@ -362,7 +362,7 @@ def _level_section(config, levels, strings: bool) -> LevelSection:
                 verdicts.append(single[0](level.points[0]))
                 types.append(single[1])
                 continue
-        polygon = level_polygon(config, levels, index)
+        polygon = level_polygon(config, levels, index, cleared=True)
         polygons.append(polygon)
         verdict, facts = memo.verdicts_and_type(polygon)
         verdicts.append(verdict)

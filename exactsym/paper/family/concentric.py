@@ -155,7 +155,8 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
         else:
             labels = tuple([(i,) for i in robots])
             built = level_polygons[k] if level_polygons is not None else None
-            if built is not None and built.labels == robots:
+            if built is not None and built.labels == robots and \
+                    not built.__dict__.get("cleared"):      # its directions are p - C
                 poly = new_polygon(CirclePolygon)
                 poly.__dict__.update(labels=labels, directions=built.directions,
                                      polar=polar, one_circle=True)
