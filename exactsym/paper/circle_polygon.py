@@ -73,7 +73,6 @@ from functools import cached_property, cmp_to_key
 
 from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
 from ..exact.sparse_cyclotomic import SparseCyclotomic
-from ..exact.tower import TowerElement
 from .filtered import ball, compare_directions
 from .homogeneous import register
 from .inverses import inverse_length, squared_length
@@ -348,45 +347,23 @@ def level_polygon(config, rings, level_index: int, cleared: bool = False) -> Cir
 
 
 def _cleared(dirs):
-    """``dirs`` (vectors of the sparse Q(zeta_N), or of a tower of square roots over it)
-    times f = |d|, d the denominator of their first quotient base number, when every
-    quotient base number has it (then a base number a/d becomes +-a, the others a product
-    by f), else None.  The sums of quotients with a denominator cross-multiplied it into
-    every product of the strings: a 4-gon of two mirror pairs at turns j/997 took 6 s per
-    string partition, 0.2 s cleared."""
-    leaves = [leaf for d in dirs for c in d for leaf in _base_numbers(c)]
-    den = next((x.den for x in leaves if x is not None and x.den is not None), None)
-    if den is None or not all(x is not None and (x.den is None or x.den == den)
-                              for x in leaves):
+    """``dirs`` (vectors of the sparse Q(zeta_N)) times f = |d|, d the denominator of
+    their first quotient coordinate, when every quotient coordinate has it (then a
+    coordinate a/d becomes +-a, the others a product by f), else None.  The sums of
+    quotients with a denominator cross-multiplied it into every product of the strings:
+    a 4-gon of two mirror pairs at turns j/997 took 6 s per string partition, 0.2 s
+    cleared.  (Over a tower of square roots over the sparse base clearing the leaves did
+    not help: 17 s per partition, the tower's inverses and products remain.)"""
+    if not all(isinstance(c, SparseCyclotomic) for d in dirs for c in d):
         return None
-    factor = leaves[0]._new(den)
+    den = next((c.den for d in dirs for c in d if c.den is not None), None)
+    if den is None or not all(c.den is None or c.den == den for d in dirs for c in d):
+        return None
+    factor = dirs[0][0]._new(den)
     s = factor.sign()
     factor = factor * s
-
-    def clear(v):
-        if type(v) is tuple:
-            return (v[0], clear(v[1]), clear(v[2]))
-        return v._new(v.num) * s if v.den is not None else v * factor
-    return tuple(tuple(c._new(clear(c.v)) if isinstance(c, TowerElement) else clear(c)
-                       for c in d) for d in dirs)
-
-
-def _base_numbers(c):
-    """The base numbers of a coordinate (a SparseCyclotomic, or the leaves of a tower
-    number over the sparse base); None for any other kind."""
-    if isinstance(c, SparseCyclotomic):
-        return [c]
-    if isinstance(c, TowerElement) and c.kernel and \
-            getattr(c.tower, "zero", None).__class__ is SparseCyclotomic:
-        out, stack = [], [c.v]
-        while stack:
-            v = stack.pop()
-            if type(v) is tuple:
-                stack += [v[1], v[2]]
-            else:
-                out.append(v if isinstance(v, SparseCyclotomic) else None)
-        return out
-    return [None]
+    return tuple(tuple(c._new(c.num) * s if c.den is not None else c * factor for c in d)
+                 for d in dirs)
 
 
 def _length_ball(d):
