@@ -178,7 +178,9 @@ def nested_inputs() -> dict[str, str]:
         out[f"{k} nested radicals, {k} pts"] = _cartesian(
             [(f"sqrt(1+sqrt({p}))", str(i)) for i, p in enumerate(primes[:k])])
     # two mirror pairs at turns +-2j/997 (the sparse Q(zeta_N)): the per-level polygon
-    # section and the audit took minutes (session 13, open); at j/31 (dense) 0.3 s
+    # section took 29 s with rational radii (1.5 s since its directions are cleared of
+    # the centre's denominator) and still takes minutes with radii sqrt(k) (a tower over
+    # the sparse base: open); at j/31 (dense) 0.3 s
     for label, radius, shift in (("rational radii, off centre", lambda k: str(k % 17 + 1),
                                   ("1/3", "1/5")),
                                  ("sqrt radii, about 0", lambda k: f"sqrt({k})", ("0", "0"))):
