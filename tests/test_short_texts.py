@@ -28,20 +28,6 @@ from exactsym.report import report_json
 _PAIR = re.compile(r"\((-?1), ")
 
 
-def _line_texts(text: str) -> list:
-    """The ``(s, slope)`` pairs of a lines text: each "(s, " opens a pair whose slope runs
-    to the parenthesis closing it (slopes nest parentheses to any depth)."""
-    found = []
-    for match in _PAIR.finditer(text):
-        depth, start = 1, match.end()
-        for end in range(start, len(text)):
-            depth += {"(": 1, ")": -1}.get(text[end], 0)
-            if depth == 0:
-                found.append((match.group(1), text[start:end]))
-                break
-    return found
-
-
 def _closing(text: str, start: int) -> int:
     """The index of the parenthesis closing the one at ``start``."""
     depth = 0
@@ -50,6 +36,13 @@ def _closing(text: str, start: int) -> int:
         if depth == 0:
             return end
     raise ValueError(f"unbalanced: {text[:80]}")
+
+
+def _line_texts(text: str) -> list:
+    """The ``(s, slope)`` pairs of a lines text: each "(s, " opens a pair whose slope runs
+    to the parenthesis closing it (slopes nest parentheses to any depth)."""
+    return [(m.group(1), text[m.end():_closing(text, m.start())])
+            for m in _PAIR.finditer(text)]
 
 
 def _quotient(text: str):

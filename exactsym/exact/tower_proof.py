@@ -20,8 +20,6 @@ Public names: :func:`nonsquare_witness`, :func:`cyclotomic_nonsquare_witness`,
 
 from __future__ import annotations
 
-import random
-
 from math import gcd, lcm
 
 from flint import fmpq, fmpz
@@ -111,32 +109,49 @@ def _split_primes(primes):
             yield k * m + 1
 
 
-def _character_rows(primes, values, tries: int, signs: int):
-    """Rows of characters of K_0*/K_0*^2 on the non-zero ``values`` (``MQ``): bit i set when
-    value i is a non-residue.  Each ring map phi: K_0 -> F_p (p odd, every base prime a
-    square mod p, no denominator divisible by p: the roots' signs choose the map) composed
-    with the Legendre symbol is such a character where phi is a unit: the image of a square
-    is a square (p is unramified, so a root of a p-unit is p-integral).  The primes are
-    :func:`_split_primes` (``tries`` of them, ``signs`` maps each)."""
+def _character_rows(primes, values, tries: int, signs: int, candidates=None):
+    """Rows of characters of K_0*/K_0*^2 on the non-zero ``values`` (``MQ``), each with its
+    map: ``(p, base, row)``, bit i of row set when value i is a non-residue.  Each ring map
+    phi: K_0 -> F_p (p odd, every base prime a square mod p, no denominator divisible by
+    p: ``base``, a root of each base prime, chooses the map) composed with the Legendre
+    symbol is such a character where phi is a unit: the image of a square is a square (p
+    is unramified, so a root of a p-unit is p-integral).  The primes are ``candidates``
+    (by default :func:`_split_primes`; ``tries`` of them, ``signs`` maps each)."""
     dens = 1
     for v in values:
         for c in v.terms.values():
             dens *= int(c.q)
-    candidates = _split_primes(primes)
-    for _ in range(tries):
-        p = next(candidates)
+    candidates = _split_primes(primes) if candidates is None else candidates
+    for _, p in zip(range(tries), candidates):
         if dens % p == 0:
             continue
         roots = [sqrt_mod(q, p) for q in primes]
         if any(r is None for r in roots):
             continue
-        for choice in range(signs):
-            base = {q: (r if (choice >> k) & 1 == 0 else p - r)
-                    for k, (q, r) in enumerate(zip(primes, roots))}
-            images = [image(v, p, base, []) for v in values]
+        for choice in range(min(signs, 1 << len(primes))):
+            base = [r if (choice >> k) & 1 == 0 else p - r for k, r in enumerate(roots)]
+            images = [image(v, p, dict(zip(primes, base)), []) for v in values]
             if any(a == 0 for a in images):
                 continue
-            yield sum(1 << i for i, a in enumerate(images) if pow(a, (p - 1) // 2, p) != 1)
+            yield p, base, sum(1 << i for i, a in enumerate(images)
+                               if pow(a, (p - 1) // 2, p) != 1)
+
+
+def _independent_rows(rows, need: int):
+    """The rows (with their maps) that raise the rank over F_2, taken until it is
+    ``need``: ``[(p, base, row), ...]`` (reduced rows)."""
+    basis: list = []                        # row-reduced bit masks over F_2
+    kept = []
+    for p, base, row in rows:
+        for b in basis:
+            row = min(row, row ^ b)
+        if row:
+            basis.append(row)
+            basis.sort(reverse=True)
+            kept.append((p, base, row))
+            if len(basis) == need:
+                break
+    return kept
 
 
 def square_class_rank(primes, values, tries: int = 32, signs: int = 8) -> int:
@@ -147,19 +162,9 @@ def square_class_rank(primes, values, tries: int = 32, signs: int = 8) -> int:
     of a matrix of characters (:func:`_character_rows`) is a lower bound of the rank.
     Milliseconds: the tower refuses a level beyond its bound with it before any
     square-root test in a base of 2^k terms."""
-    need = len(values)
-    if need == 0:
+    if not values:
         return 0
-    basis: list = []                        # row-reduced bit masks over F_2
-    for row in _character_rows(primes, values, tries, signs):
-        for b in basis:
-            row = min(row, row ^ b)
-        if row:
-            basis.append(row)
-            basis.sort(reverse=True)
-            if len(basis) == need:
-                return need
-    return len(basis)
+    return len(_independent_rows(_character_rows(primes, values, tries, signs), len(values)))
 
 
 def kummer_subset(primes, radicands, x, tries: int = 32, signs: int = 8):
@@ -175,7 +180,7 @@ def kummer_subset(primes, radicands, x, tries: int = 32, signs: int = 8):
     settle neither."""
     n = len(radicands)
     rows: dict = {}                      # pivot bit -> reduced row; bit 0: x, bit j: r_j
-    for chars in _character_rows(primes, [x] + list(radicands), tries, signs):
+    for _, _, chars in _character_rows(primes, [x] + list(radicands), tries, signs):
         row = chars
         for pivot in sorted(rows, reverse=True):
             if row >> pivot & 1:
@@ -295,38 +300,13 @@ def base_kummer_witness(primes, radicands, limit: int = 1 << 24, signs: int = 16
     per level needs a prime at which every lower radicand is a residue (ten nested radicals
     over ten primes: none below 200,000).  None when the primes below ``limit`` do not
     reach rank L."""
-    k = len(primes)
-    dens = 1
-    for r in radicands:
-        for c in r.terms.values():
-            dens *= int(c.q)
-    rows: dict = {}                           # pivot bit -> reduced row
-    maps = []
-    draw = random.Random(len(radicands))      # the sign choices: the same in every run
-    p = 1
-    while len(rows) < len(radicands):
-        p += 2
-        if p >= limit:
-            return None
-        if dens % p == 0 or any(pow(q, (p - 1) // 2, p) != 1 for q in primes) or \
-                not fmpz(p).is_prime():
-            continue
-        roots = [sqrt_mod(q, p) for q in primes]
-        for _ in range(min(signs, 1 << k)):
-            base = [r if draw.getrandbits(1) else p - r for r in roots]
-            images = [image(r, p, dict(zip(primes, base)), []) for r in radicands]
-            if any(v == 0 for v in images):
-                continue
-            row = sum(1 << i for i, v in enumerate(images) if pow(v, (p - 1) // 2, p) != 1)
-            for pivot in sorted(rows, reverse=True):
-                if row >> pivot & 1:
-                    row ^= rows[pivot]
-            if row:
-                rows[row.bit_length() - 1] = row
-                maps.append((p, base))
-                if len(rows) == len(radicands):
-                    break
-    return maps
+    def candidates():           # small primes at which every base prime is a square
+        for p in range(3, limit, 2):
+            if all(pow(q, (p - 1) // 2, p) == 1 for q in primes) and fmpz(p).is_prime():
+                yield p
+    kept = _independent_rows(_character_rows(primes, radicands, limit, signs, candidates()),
+                             len(radicands))
+    return [(p, base) for p, base, _ in kept] if len(kept) == len(radicands) else None
 
 
 def nonsquare_witness(tower: Tower, lev: int, limit: int = 200_000):

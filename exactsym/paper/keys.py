@@ -159,9 +159,8 @@ class LineKey:
         of it its short text is written from (:meth:`_short_parts`: the same sign and
         slope, numbers of a few bits per coefficient)."""
         if self._vector_ is None:
-            key = self.canon[3] if isinstance(self.canon, tuple) and len(self.canon) == 4 \
-                else None
-            if isinstance(key, _DirectionKey) and key.factors is not None:
+            key = self._direction_key()
+            if key is not None:
                 # ordered from the balls of its two factors; only if they never separate,
                 # the exact product: of the short forms when known (sorting a G_ij's
                 # lines made a product per line where 8 are shown), else a b itself
@@ -270,9 +269,8 @@ class LineKey:
         whose doubled direction a b is not made: its slope's decimal from the balls of
         the two factors (the product is a tower multiplication of seconds, and its exact
         text, megabytes, would not be shown), or None."""
-        key = self.canon[3] if self._vector_ is None and isinstance(self.canon, tuple) \
-            and len(self.canon) == 4 else None
-        if not isinstance(key, _DirectionKey) or key.factors is None:
+        key = self._direction_key() if self._vector_ is None else None
+        if key is None:
             return None
         (a, b), prec = key.factors, 64
         if not any(isinstance(c, TowerElement) and c.kernel and _kummer_tower(c.tower)
