@@ -4,6 +4,7 @@ Newton-lifted inverse against the xgcd inverse at degree hundreds."""
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import given, settings, strategies as st
 
 from flint import fmpq, fmpq_poly, fmpz_poly
@@ -14,8 +15,8 @@ from exactsym.exact.inverse import inverse_mod
 from exactsym.paper.circle_polygon import CirclePolygon
 from exactsym.paper.keys import (LineKey, ccw_gap_key, gap_ids, hashable_key, line_key,
                                  ray_key)
-from exactsym.paper.ratio_keys import (AngleKey, RATIO_KEY_DEGREE, RatioKey, rational_ratio,
-                                       ray_ratio_key)
+from exactsym.paper.ratio_keys import (AngleKey, RATIO_KEY_DEGREE, RatioKey, ball_at,
+                                       rational_ratio, ray_ratio_key)
 
 FIELD = cyclotomic_field(136)
 assert FIELD.degree >= RATIO_KEY_DEGREE
@@ -243,3 +244,23 @@ def test_a_lazy_line_of_a_sparse_tower_is_shown_by_the_exact_slopes_decimal(k, s
         return
     x, y = complex_product(a, b)
     assert shown == f"({sign(x)}, ≈ {quotient_decimal(y, x)} (exact: in --json))"
+
+
+@pytest.mark.parametrize("x, y", [(fmpq(10 ** 8) + fmpq(1, 3), fmpq(10 ** 8) + fmpq(2, 7)),
+                                  (fmpq(10 ** 8) + fmpq(1, 3), fmpq(10 ** 8) + fmpq(1, 7)),
+                                  (fmpq(-3 * 10 ** 9, 7), fmpq(10 ** 9) + fmpq(1, 11))])
+def test_ratio_key_cells_of_large_values(x, y):
+    """The cell floor(2^24 value) of a value beyond 10^16 from balls of numbers near 10^8
+    (the first an integer: its cell is on a boundary): the balls' products and the floor
+    are taken at the balls' precision (at 53 bits the radius stayed above 1 and the
+    precision rose without end; a boundary read at 53 bits gave another cell)."""
+    asked = []
+
+    def value_ball(prec):
+        asked.append(prec)
+        assert prec <= 4096, "the ball never narrowed"
+        return ball_at(x, prec) * ball_at(y, prec)
+    key = RatioKey(lambda: (x * y, 1), value_ball, None)
+    value = x * y * (1 << 24)
+    assert hash(key) == hash(("ratio", int(value.p // value.q)))
+    assert max(asked) <= 1024

@@ -84,14 +84,18 @@ class RatioKey:
         bits) until the ball is narrow, then the cell, or at a boundary an exact sign."""
         prec = _PREC
         while True:
-            scaled = value_ball(prec) * _CELLS
-            if scaled.is_finite() and scaled.rad() < 0.25:
-                break
+            # every operation at the balls' precision (at the default 53 bits a value of
+            # 10^16, from a level's homogeneous directions, never got narrow; and a floor
+            # rounded to 53 bits is not the cell)
+            with ctx.workprec(prec + 16):
+                scaled = value_ball(prec) * _CELLS
+                if scaled.is_finite() and scaled.rad() < 0.25:
+                    cell = scaled.floor().unique_fmpz()
+                    if cell is not None:
+                        return int(cell)
+                    j = int(scaled.upper().floor().unique_fmpz())   # the one boundary in it
+                    break
             prec *= 4
-        cell = scaled.floor().unique_fmpz()
-        if cell is not None:
-            return int(cell)
-        j = int(scaled.upper().floor().unique_fmpz())     # the one boundary in the ball
         num, den = self.exact()
         return j if sign(_CELLS * num - j * den) >= 0 else j - 1
 
@@ -149,7 +153,8 @@ class OrderedKey(RatioKey):
             return 0
         prec = _PREC
         while prec <= 1024:
-            a, b = self._ball_at(prec), other._ball_at(prec)
+            with ctx.workprec(prec + 16):
+                a, b = self._ball_at(prec), other._ball_at(prec)
             if a < b:
                 return -1
             if a > b:
