@@ -177,17 +177,22 @@ def nested_inputs() -> dict[str, str]:
     for k in (10, 12):
         out[f"{k} nested radicals, {k} pts"] = _cartesian(
             [(f"sqrt(1+sqrt({p}))", str(i)) for i, p in enumerate(primes[:k])])
-    # two mirror pairs at turns +-2j/997 (the sparse Q(zeta_N)): the per-level polygon
-    # section took 29 s with rational radii (1.5 s since its directions are cleared of
-    # the centre's denominator) and still takes minutes with radii sqrt(k) (a tower over
-    # the sparse base: open); at j/31 (dense) 0.3 s
-    for label, radius, shift in (("rational radii, off centre", lambda k: str(k % 17 + 1),
-                                  ("1/3", "1/5")),
-                                 ("sqrt radii, about 0", lambda k: f"sqrt({k})", ("0", "0"))):
-        out[f"2 mirror pairs j/997, {label}"] = _cartesian(
+    # mirror pairs at turns +-2j/997 (the sparse Q(zeta_N)): the per-level polygon section
+    # took 29 s with rational radii (1.5 s since its directions are cleared of the
+    # centre's denominator); with radii sqrt(k) (a tower over the sparse base) two pairs
+    # took minutes and four past ten minutes, in the level section and the family layer
+    # (now homogeneous directions D p - (X, Y), string classes without an inverse, family
+    # gap and line keys from the homogeneous forms); at j/31 (dense) 0.3 s
+    pairs = ((123, 304), (280, 100), (191, 469), (244, 321))
+    for label, radius, shift, count in (
+            ("rational radii, off centre", lambda k: str(k % 17 + 1), ("1/3", "1/5"), 2),
+            ("sqrt radii, about 0", lambda k: f"sqrt({k})", ("0", "0"), 2),
+            ("sqrt radii, off centre", lambda k: f"sqrt({k})", ("1/3", "1/5"), 2),
+            ("sqrt radii, off centre", lambda k: f"sqrt({k})", ("1/3", "1/5"), 4)):
+        out[f"{count} mirror pairs j/997, {label}"] = _cartesian(
             [(f"{shift[0]} + {radius(k)}*cos({2 * s * j}*pi/997)",
               f"{shift[1]} + {radius(k)}*sin({2 * s * j}*pi/997)")
-             for k, j in ((123, 304), (280, 100)) for s in (1, -1)])
+             for k, j in pairs[:count] for s in (1, -1)])
     return out
 
 

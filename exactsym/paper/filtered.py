@@ -83,27 +83,37 @@ def compare_directions(d1, d2) -> int:
 
 def gap_classes_on_circle(dirs) -> list:
     """For non-zero exact vectors of one length, in counter-clockwise order: one hashable
-    token per gap (d_i, d_{i+1}), equal iff the counter-clockwise angles are equal.
+    token per gap (d_i, d_{i+1}), equal iff the counter-clockwise angles are equal
+    (:func:`circle_gap_tokens` with every scale 1)."""
+    n = len(dirs)
+    return circle_gap_tokens([(dirs[i], dirs[(i + 1) % n], None) for i in range(n)])
+
+
+def circle_gap_tokens(pairs) -> list:
+    """One hashable token per ``(a, b, scale)`` of ``pairs`` (non-zero exact vectors, a
+    scale an exact positive number or None for 1), equal iff the counter-clockwise angles
+    from a to b are equal -- provided |a| |b| scale is the same for every pair.
 
     The angle is fixed by the sign of the cross product (below, at or above half a turn)
-    and the dot product (the lengths being equal); balls sort the dot products, and only
-    gaps in a cluster of overlapping balls get exact dot products -- distinct gaps cost no
-    exact product at all."""
-    n = len(dirs)
+    and the dot product times the scale (|a| |b| scale cos(angle), the common factor
+    being positive); balls sort those, and only pairs in a cluster of overlapping balls
+    get exact products -- distinct gaps cost no exact product at all.  (Scales let one
+    call compare the gaps of a polygon on one circle of squared radius L, scale L, with
+    gaps to a vector of length L^(3/2), scale 1: a reflection u^2 conj(w) made without
+    dividing by L, :func:`exactsym.paper.polygon.strings.string_classes`.)"""
     classes, dots = [], []
-    for i in range(n):
-        a, b = dirs[i], dirs[(i + 1) % n]
-        c = cross_sign(a, b)
-        classes.append(c)
-        dots.append(ball(a[0]) * ball(b[0]) + ball(a[1]) * ball(b[1]))
-    tokens: list = [None] * n
+    for a, b, scale in pairs:
+        classes.append(cross_sign(a, b))
+        d = ball(a[0]) * ball(b[0]) + ball(a[1]) * ball(b[1])
+        dots.append(d if scale is None else d * ball(scale))
+    tokens: list = [None] * len(pairs)
     by_class: dict = {}
     for i, c in enumerate(classes):
         by_class.setdefault(c, []).append(i)
     for c, members in by_class.items():
         if c == 0:       # a half or a full turn: the sign of the dot product tells them apart
             for i in members:
-                tokens[i] = (0, dot_sign(dirs[i], dirs[(i + 1) % n]))
+                tokens[i] = (0, dot_sign(pairs[i][0], pairs[i][1]))
             continue
         members.sort(key=lambda i: dots[i].lower())     # interval merging: overlapping
         # balls (the only ones that may hold equal values) end up in one cluster
@@ -118,11 +128,13 @@ def gap_classes_on_circle(dirs) -> list:
                 tokens[cluster[0]] = (c, "alone", cluster[0])
             else:
                 for j in cluster:
-                    a, b = dirs[j], dirs[(j + 1) % n]
-                    tokens[j] = (c, exact_key(a[0] * b[0] + a[1] * b[1]))
+                    a, b, scale = pairs[j]
+                    d = a[0] * b[0] + a[1] * b[1]
+                    tokens[j] = (c, exact_key(d if scale is None else d * scale))
             if i is not None:
                 cluster, upper = [i], dots[i].upper()
     return tokens
 
 
-__all__ = ["ball", "cross_sign", "dot_sign", "compare_directions", "gap_classes_on_circle"]
+__all__ = ["ball", "cross_sign", "dot_sign", "compare_directions", "gap_classes_on_circle",
+           "circle_gap_tokens"]

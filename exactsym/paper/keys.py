@@ -18,7 +18,7 @@ from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
 from ..text_numbers import DIGITS, HUGE, LONG, huge_quotient, number, quotient_decimal
-from .homogeneous import line_direction, slope_text
+from .homogeneous import homogeneous_pair, line_direction, slope_text
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
 from ..exact.sparse_cyclotomic import SparseCyclotomic
@@ -425,6 +425,9 @@ def _product_line(a, b) -> LineKey:
     canon = lazy_line_canon(a, b, make)
     if canon is not None:
         return LineKey(canon, None, None, make)
+    forms = homogeneous_pair(a, b)
+    if forms is not None:       # the same line from positive multiples of a and b
+        return LineKey(line_canon(complex_product(*forms)), None, None, make)
     prod = make()
     return LineKey(line_canon(prod), None, prod)
 
@@ -628,7 +631,8 @@ def gap_equality_key(a, b):
     c, s = cross_sign(a, b), dot_sign(a, b)        # both ball-filtered
     if c == 0:
         return (1, 0) if s < 0 else (3, 0)
-    return gap_ratio_key(a, b, c, s)
+    forms = homogeneous_pair(a, b)          # the same angle, from short numbers
+    return gap_ratio_key(*(forms or (a, b)), c, s)
 
 
 def circle_line_keys(poly: CirclePolygon):

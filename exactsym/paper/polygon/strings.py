@@ -9,10 +9,11 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from ...exact import fmpq, normal_turn
+from ...exact import FieldElement, fmpq, normal_turn
 from ...strings import cyclic_period, first_occurrence
 from ..circle_polygon import CirclePolygon
-from ..filtered import cross_sign
+from ..filtered import circle_gap_tokens, cross_sign, gap_classes_on_circle
+from ..inverses import squared_length
 from . import small
 from ..keys import HALF, ccw_gap_key, huge_field
 from ..ratio_keys import chord_key as ordered_chord_key
@@ -159,12 +160,80 @@ class Hasher:
 
 
 def gap_classes(polygon: CirclePolygon):
+    """``(ids, h)``: h[b] a positive integer per gap (v_b, v_b+1), equal iff the
+    counter-clockwise angles are equal; ``ids`` maps the gap keys to them."""
     ids: dict = {}
     n = polygon.n
-    h = [ids.setdefault(ccw_gap_key(polygon.polar, polygon.directions[b],
-                                    polygon.directions[(b + 1) % n]), len(ids) + 1)
-         for b in range(n)]
-    return ids, h
+    dirs = polygon.directions
+    if _circle_tokens(polygon):
+        tokens = gap_classes_on_circle(dirs)
+    else:
+        tokens = [ccw_gap_key(polygon.polar, dirs[b], dirs[(b + 1) % n]) for b in range(n)]
+    return ids, [ids.setdefault(t, len(ids) + 1) for t in tokens]
+
+
+def _circle_tokens(polygon: CirclePolygon) -> bool:
+    """Whether the gaps are told apart by :func:`.filtered.circle_gap_tokens`: a Cartesian
+    polygon on one circle with algebraic coordinates.  Its :func:`ccw_gap_key` divides by
+    the squared lengths, and in a tower of square roots over the sparse Q(zeta_N) that
+    inverse is a dense quotient: two mirror pairs at turns +-2j/997, radii sqrt(k), took
+    minutes per string partition."""
+    return not polygon.polar and polygon.one_circle and \
+        any(isinstance(c, FieldElement) for d in polygon.directions for c in d)
+
+
+def canonical(polygon: CirclePolygon, i: int, ccw: bool):
+    """(base, start, patches) of the canonical gap sequence of the string of v_i
+    read counter-clockwise (ACW_i) or clockwise (CW_i) (:func:`string_classes`); a patch
+    is (position, (a, b)), the gap from direction a to b (one of them reflected), its
+    class given by :func:`_gap_ids`."""
+    n, dirs = polygon.n, polygon.directions
+    step = 1 if ccw else -1
+    start = i if ccw else (n - i) % n
+
+    def w(s):
+        return (i + step * s) % n
+    lo, hi = 0, n - 1           # p = number of s in 1..n-1 with angle < 1/2
+    while lo < hi:
+        mid = (lo + hi + 1) // 2
+        if below_half(polygon, dirs[i], dirs[w(mid)], ccw) < 0:
+            lo = mid
+        else:
+            hi = mid - 1
+    p = lo
+    f = p + 1
+    if f > n - 1 or below_half(polygon, dirs[i], dirs[w(f)], ccw) <= 0:
+        return ccw, start, ()
+    if p > 0 and not polygon.chord_key(i, w(f)) > polygon.chord_key(i, w(p)):
+        return ccw, start, ()
+    flipped = reflect_direction(polygon, dirs[w(f)], dirs[i])
+    before = dirs[w(f - 1)]
+    after = dirs[w(f + 1)]              # w(n) = i
+    if ccw:
+        return ccw, start, ((f - 1, (before, flipped)), (f, (flipped, after)))
+    return ccw, start, ((f - 1, (flipped, before)), (f, (after, flipped)))
+
+
+def _gap_ids(polygon: CirclePolygon, forms: list) -> tuple[list, list]:
+    """``(h, forms)``: the class (a positive integer) of each gap (v_b, v_b+1), and
+    ``forms`` with each patch's gap replaced by its class, classes equal iff the angles
+    are.  On one circle (:func:`_circle_tokens`, squared radius L) a reflected direction
+    u^2 conj(w) has length L^(3/2), so the polygon's own gaps are scaled by L to compare
+    with the patches' (:func:`.filtered.circle_gap_tokens`): no division."""
+    n, dirs = polygon.n, polygon.directions
+    patches = [gap for form in forms for _, gap in form[2]]
+    if _circle_tokens(polygon):
+        length = squared_length(dirs[0])
+        tokens = circle_gap_tokens([(dirs[b], dirs[(b + 1) % n], length) for b in range(n)] +
+                                   [(a, b, None) for a, b in patches])
+    else:
+        tokens = [ccw_gap_key(polygon.polar, dirs[b], dirs[(b + 1) % n]) for b in range(n)] + \
+            [ccw_gap_key(polygon.polar, a, b) for a, b in patches]
+    ids: dict = {}
+    classes = iter([ids.setdefault(t, len(ids) + 1) for t in tokens])
+    h = [next(classes) for _ in range(n)]
+    return h, [(base, start, tuple((q, next(classes)) for q, _ in patch))
+               for base, start, patch in forms]
 
 
 def string_classes(polygon: CirclePolygon, orientation: int = 1):
@@ -186,46 +255,15 @@ def string_classes(polygon: CirclePolygon, orientation: int = 1):
             return small.string_classes_small(polygon, orientation)
         return string_classes_reference(polygon, orientation)
     dirs = polygon.directions
-    ids, h = gap_classes(polygon)
+    forms = [canonical(polygon, i, False) for i in range(n)] + \
+        [canonical(polygon, i, True) for i in range(n)]
+    h, forms = _gap_ids(polygon, forms)
     r_seq = h[::-1]                         # R[k] = h(n-1-k): clockwise reading
     bases = {True: h + h, False: r_seq + r_seq}    # ccw -> H, cw -> R
     hashers = {key: Hasher(seq) for key, seq in bases.items()}
     powers = [1]
     for _ in range(n + 1):
         powers.append(powers[-1] * HASH_BASE % HASH_MOD)
-
-    def canonical(i: int, ccw: bool):
-        """(base, start, patches) of the canonical gap sequence of the string of v_i
-        read counter-clockwise (ACW_i) or clockwise (CW_i)."""
-        step = 1 if ccw else -1
-        start = i if ccw else (n - i) % n
-
-        def w(s):
-            return (i + step * s) % n
-        lo, hi = 0, n - 1           # p = number of s in 1..n-1 with angle < 1/2
-        while lo < hi:
-            mid = (lo + hi + 1) // 2
-            if below_half(polygon, dirs[i], dirs[w(mid)], ccw) < 0:
-                lo = mid
-            else:
-                hi = mid - 1
-        p = lo
-        f = p + 1
-        if f > n - 1 or below_half(polygon, dirs[i], dirs[w(f)], ccw) <= 0:
-            return ccw, start, ()
-        if p > 0 and not polygon.chord_key(i, w(f)) > polygon.chord_key(i, w(p)):
-            return ccw, start, ()
-        flipped = reflect_direction(polygon, dirs[w(f)], dirs[i])
-        before = dirs[w(f - 1)]
-        after = dirs[w(f + 1)]              # w(n) = i
-        if ccw:
-            g1 = ccw_gap_key(polygon.polar, before, flipped)
-            g2 = ccw_gap_key(polygon.polar, flipped, after)
-        else:
-            g1 = ccw_gap_key(polygon.polar, flipped, before)
-            g2 = ccw_gap_key(polygon.polar, after, flipped)
-        return ccw, start, ((f - 1, ids.setdefault(g1, len(ids) + 1)),
-                            (f, ids.setdefault(g2, len(ids) + 1)))
 
     def hash_of(form) -> int:
         base, start, patches = form
@@ -257,7 +295,6 @@ def string_classes(polygon: CirclePolygon, orientation: int = 1):
             else:
                 sb = (mirror + sb) % n
         return (sa - sb) % period == 0
-    forms = [canonical(i, False) for i in range(n)] + [canonical(i, True) for i in range(n)]
     groups: dict = {}
     classes = []
     next_id = 0
