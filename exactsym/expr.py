@@ -61,12 +61,12 @@ class Token(NamedTuple):
         return self.offset + len(self.text)
 
 
-def tokenize(text: str) -> list[Token]:
+def tokenize(text: str, max_digits: int | None = MAX_DIGITS) -> list[Token]:
     """Return the tokens of ``text``, always ending with an ``"end"`` token.
 
     Unknown characters become ``"bad"`` tokens (the parser rejects them where it
-    meets them).  Raises :class:`ExpressionError` for a malformed or too large
-    number literal.
+    meets them).  Raises :class:`ExpressionError` for a malformed number literal, or one
+    of more than ``max_digits`` digits (None: any).
     """
     tokens: list[Token] = []
     i, n = 0, len(text)
@@ -77,7 +77,8 @@ def tokenize(text: str) -> list[Token]:
         elif ch.isascii() and (ch.isdigit() or (ch == "." and i + 1 < n and text[i + 1].isdigit()
                                                and text[i + 1].isascii())):
             match = _NUMBER.match(text, i)
-            tokens.append(Token("number", match.group(), i, _number_value(match, i)))
+            tokens.append(Token("number", match.group(), i,
+                                _number_value(match, i, max_digits)))
             i = match.end()
             if i < n and text[i] in "eE":
                 raise ExpressionError("malformed decimal exponent (write e.g. 1e-3)", offset=i)
@@ -101,13 +102,13 @@ def tokenize(text: str) -> list[Token]:
     return tokens
 
 
-def _number_value(match: re.Match, offset: int) -> Fraction:
+def _number_value(match: re.Match, offset: int, max_digits: int | None) -> Fraction:
     """Return the exact value of a number literal; raise ExpressionError past the limits."""
     mantissa = match.group().split("e")[0].split("E")[0]
     whole, _, frac = mantissa.partition(".")
-    if len(whole) + len(frac) > MAX_DIGITS:
+    if max_digits is not None and len(whole) + len(frac) > max_digits:
         raise ExpressionError(f"number has {len(whole) + len(frac)} digits "
-                              f"(at most {MAX_DIGITS})", offset=offset)
+                              f"(at most {max_digits})", offset=offset)
     exponent = 0
     if match.group(1):
         digits = match.group(3).lstrip("0") or "0"
@@ -152,8 +153,8 @@ def _show(token: Token) -> str:
 class _Parser:
     """One parse of one expression string; see :func:`parse_expression`."""
 
-    def __init__(self, text: str):
-        self.tokens = tokenize(text)
+    def __init__(self, text: str, max_digits: int | None = MAX_DIGITS):
+        self.tokens = tokenize(text, max_digits)
         self.pos = 0
         self.depth = 0                  # open parentheses and function calls
         self.trig: str | None = None    # "cos"/"sin" while parsing its argument
@@ -360,7 +361,7 @@ class _Parser:
 _SIMPLE_RATIONAL = re.compile(r"([+-]?[0-9]{1,1000})(?:/([0-9]{1,1000}))?")
 
 
-def parse_expression(text: str) -> Node:
+def parse_expression(text: str, written: bool = False) -> Node:
     """Parse one expression string of configuration format 1.
 
     Returns the expression tree (:mod:`exactsym.exprtree`), with rational
@@ -369,14 +370,19 @@ def parse_expression(text: str) -> Node:
     ``text`` of the offending character, for anything malformed or beyond the
     limits (``MAX_LENGTH``, ``MAX_DEPTH``, ``MAX_EXPONENT``,
     ``MAX_DECIMAL_EXPONENT``, ``MAX_DIGITS``).
+
+    ``written=True`` reads a number exactsym wrote (a report, ``--json``): the length
+    and digit limits, which bound configuration input, do not apply -- an exact number
+    of a large field can be written in more than 10,000 characters, and it reads back
+    to itself; the other limits do.
     """
-    if len(text) > MAX_LENGTH:
+    if not written and len(text) > MAX_LENGTH:
         raise ExpressionError(f"expression is too long ({len(text)} characters, at most "
                               f"{MAX_LENGTH})", offset=MAX_LENGTH)
     simple = _SIMPLE_RATIONAL.fullmatch(text)
     if simple and int(simple.group(2) or 1) != 0:   # fast path: most inputs are "p" or "p/q"
         return Const(Fraction(int(simple.group(1)), int(simple.group(2) or 1)), offset=0)
-    parser = _Parser(text)
+    parser = _Parser(text, None if written else MAX_DIGITS)
     if parser.peek().kind == "end":
         raise ExpressionError("empty expression", offset=0)
     node = parser.expression()
