@@ -12,6 +12,10 @@ A configuration in a cyclotomic field (``FieldSystem`` of Q(zeta_M)) or already 
 over one (:class:`~.evaluate.CyclotomicTowerSystem`) gets the root from that tower's
 complete square-root test (:mod:`.cyclotomic_sqrt`): a new level only for a non-square.
 
+Over the sparse Q(zeta_N) (cosines of turns of large denominators) the root is a new level
+of a copy of the configuration's tower when Legendre characters prove it new
+(:mod:`.sparse_nested`); a radicand they do not settle is out of reach.
+
 Out of reach (None): a base Q(zeta_M) beyond the tower's a-priori bound
 (:data:`~.cyclotomic_tower.MAX_BASE_DEGREE`), a number field that is not cyclotomic, and a
 root sqrt(m) w whose integer m has more than 160 bits (:func:`~.mq_closure.decided_sqrt`
@@ -25,11 +29,11 @@ from flint import fmpq, fmpz
 
 from ..errors import FieldTooLargeError
 from .evaluate import (CyclotomicTowerSystem, FieldSystem, MultiquadraticSystem,
-                       RationalSystem, TowerSystem)
+                       RationalSystem, SparseCyclotomicSystem, SparseKummerSystem, TowerSystem)
 from .field import FieldElement
 from .mq_closure import decided_sqrt
 from .multiquadratic import MQ
-from .tower import TowerElement
+from .tower import TowerElement, wrap
 
 __all__ = ["adjoin_sqrt"]
 
@@ -47,6 +51,19 @@ def _radicands(values) -> set:
     for v in values:
         out |= set(v.radicands())
     return out
+
+
+def _sparse_level(system, x):
+    """``(system2, root)`` with sqrt(x) a new level over the sparse Q(zeta_N) (a copy of the
+    tower: the configuration's own tower keeps its levels), or None."""
+    if not isinstance(system, SparseKummerSystem) or not isinstance(x, TowerElement):
+        return None
+    try:
+        bigger = system.extended(x)
+    except FieldTooLargeError:          # not proved new: x may be a square there
+        return None
+    tower = bigger.tower
+    return bigger, wrap(tower, (tower.levels, tower.zero, tower.one))
 
 
 def adjoin_sqrt(system, numbers, x):
@@ -76,7 +93,11 @@ def adjoin_sqrt(system, numbers, x):
         try:
             return system, system.sqrt(x)
         except FieldTooLargeError:      # a tower beyond its bounds, or a sparse base
-            return None
+            return _sparse_level(system, x)
+    if isinstance(system, SparseCyclotomicSystem):
+        # cosines held as sums of roots of unity: the same numbers in a tower over them
+        system = SparseKummerSystem(system.conductor)
+        return _sparse_level(system, system.coerce(x))
     if not isinstance(system, (RationalSystem, MultiquadraticSystem)):
         return None
     mx = _as_mq(x)

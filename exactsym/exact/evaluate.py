@@ -215,10 +215,10 @@ class SparseKummerSystem(TowerSystem):
     them (:class:`~.sparse_tower.SparseKummerTower`), instead of Gauss sums of hundreds of
     roots of unity.  Numbers are ``MQ`` (rationals) or :class:`~.tower.TowerElement`."""
 
-    def __init__(self, conductor: int):
+    def __init__(self, conductor: int, tower=None):
         from .sparse_tower import SparseKummerTower
         self.context = sparse_cyclotomic.sparse_context(conductor)
-        self.tower = SparseKummerTower(self.context)
+        self.tower = SparseKummerTower(self.context) if tower is None else tower
 
     def cos_turn(self, turn: fmpq):
         value = rational_cos_turn(turn)
@@ -227,9 +227,22 @@ class SparseKummerSystem(TowerSystem):
         return self.tower.wrap(sparse_cyclotomic.cos_turn(self.context, turn))
 
     def coerce(self, value):
+        from .tower import TowerElement
         if isinstance(value, SparseCyclotomic):
             return self.tower.wrap(value)
+        if isinstance(value, TowerElement) and value.tower is not self.tower and \
+                getattr(value.tower, "context", None) is self.context and \
+                value.tower.radicands == self.tower.radicands[:value.tower.levels]:
+            return self.tower.wrap(value.v)     # a number of a tower this one extends
         return super().coerce(value)
+
+    def extended(self, x) -> "SparseKummerSystem":
+        """This system with sqrt(x) adjoined as a new level of a copy of its tower
+        (:meth:`~.sparse_tower.SparseKummerTower.extended`; FieldTooLargeError when the
+        level is not proved new)."""
+        from .tower import TowerElement
+        raw = x.v if isinstance(x, TowerElement) else self.tower.coerce_base(x)
+        return SparseKummerSystem(self.context.n, self.tower.extended(raw))
 
 
 class FieldSystem:

@@ -9,9 +9,13 @@ canonical form a + b y per level.  The base numbers are :class:`~.sparse_cycloto
 SparseCyclotomic`, whose form is not canonical but whose equality, hash and zero test are
 exact, which is all the tower's structural equality and hash ask of its base values.
 
-Only square roots of rationals are held: a nested radical would need a square-root test in
-the sparse base, which does not exist, so it is refused (FieldTooLargeError, exit 2; a
-MakeAsym radial move is then "incomplete").  A rational whose class needs a Gauss sum of
+Only square roots of rationals are held in input: a nested radical would need a square-root
+test in the sparse base, which does not exist, so it is refused (FieldTooLargeError, exit
+2).  MakeAsym's radial move (a root of a ratio of squared radii) gets a copy of the tower
+with one more level when Legendre characters prove the radicand new
+(:meth:`SparseKummerTower.extended`, :mod:`.sparse_nested`); in such a tower a rational
+whose root would need a new level is refused (rational levels come first, so that
+:class:`.kummer.SquareClasses` still indexes them).  A rational whose class needs a Gauss sum of
 more than :data:`.sparse_cyclotomic.MAX_GAUSS_TERMS` terms (a prime of N near 10^6) is
 refused too.  ``certify`` writes the tower over the sparse base, its levels proved new by
 Legendre symbols at primes p = 1 mod N (:func:`.tower_proof.legendre_rank_primes`; the
@@ -22,6 +26,7 @@ Public names: :class:`SparseKummerTower`.
 
 from __future__ import annotations
 
+from copy import deepcopy
 from fractions import Fraction
 
 from flint import fmpq, fmpz
@@ -33,7 +38,8 @@ from .cyclotomic_tower import CyclotomicTower
 from .kummer import SquareClasses
 from .multiquadratic import MQ
 from .sparse_cyclotomic import SparseCyclotomic
-from .tower import Tower
+from .sparse_nested import new_level_proved
+from .tower import MAX_LEVELS, Tower
 
 
 class SparseKummerTower(CyclotomicTower):
@@ -46,6 +52,7 @@ class SparseKummerTower(CyclotomicTower):
         self.zero = SparseCyclotomic(context, {})
         self.one = SparseCyclotomic(context, {0: fmpq(1)})
         self.classes = SquareClasses(self.conductor)
+        self.nested = 0             # levels whose radicand is not rational (the last ones)
 
     @property
     def degree(self) -> int:
@@ -84,8 +91,39 @@ class SparseKummerTower(CyclotomicTower):
         if type(x) is not tuple:
             x = self.coerce_base(x)
             if x is not None and x.is_rational():
+                if self.nested and x not in self._roots and \
+                        self.classes.express(x.rational()) is None and x.rational() > 0:
+                    raise FieldTooLargeError(
+                        f"sqrt({x.rational()}) above a nested radical over the sparse "
+                        f"Q(zeta_{self.conductor}) (no square-root test there)")
                 return self._kummer_sqrt(x)
         return self.base_root(x)
+
+    def extended(self, x) -> "SparseKummerTower":
+        """A copy of this tower with one more level, sqrt(x), for a positive raw value x
+        that is not rational: Legendre characters prove x no square of the top field
+        (:func:`.sparse_nested.new_level_proved`).  The numbers of this tower are numbers
+        of the copy (same levels below).  FieldTooLargeError when nothing is proved (x
+        may be a square: no root is computed here) or past :data:`.tower.MAX_LEVELS`
+        nested levels."""
+        if self.nested >= MAX_LEVELS:
+            raise FieldTooLargeError(f"more than {MAX_LEVELS} nested radicals over the "
+                                     f"sparse Q(zeta_{self.conductor})")
+        if not new_level_proved(self, x):
+            raise FieldTooLargeError(
+                f"a square root over the sparse Q(zeta_{self.conductor}) that characters do "
+                "not prove new (it may lie in the field: no square-root test there)")
+        copy = SparseKummerTower(self.context)
+        copy.radicands = list(self.radicands) + [x]
+        copy.classes = deepcopy(self.classes)
+        copy.nested = self.nested + 1
+        copy._roots = dict(self._roots)
+        copy._roots[x] = (copy.levels, copy.zero, copy.one)
+        return copy
+
+    def _check_new_level(self) -> None:
+        raise FieldTooLargeError(f"a nested radical over the sparse Q(zeta_{self.conductor})"
+                                 " (no square-root test there)")
 
 
 __all__ = ["SparseKummerTower"]

@@ -20,6 +20,7 @@ Public names: :func:`nonsquare_witness`, :func:`cyclotomic_nonsquare_witness`,
 
 from __future__ import annotations
 
+from itertools import chain, islice
 from math import gcd, lcm
 
 from flint import fmpq, fmpz
@@ -521,7 +522,9 @@ def _kummer_maps(tower):
     j = next((j for j in range(2, n - 1) if gcd(j, n) == 1), None)
     if j is None:
         return None
-    values = [int(r.rational().p) * int(r.rational().q) for r in tower.radicands]
+    nested = getattr(tower, "nested", 0)
+    rational = tower.radicands[:len(tower.radicands) - nested]
+    values = [int(r.rational().p) * int(r.rational().q) for r in rational]
     modulus = lcm(n, 8)
     for v in values:
         for q in factorization(v) if v > 1 else ():
@@ -534,7 +537,28 @@ def _kummer_maps(tower):
     roots = [sqrt_mod(v % p, p) for v in values]
     if any(t is None for t in roots):          # cannot happen (reciprocity)
         return None
-    return p, (w, roots), (pow(w, j, p), [(p - t) % p for t in roots])
+    if not nested:
+        return p, (w, roots), (pow(w, j, p), [(p - t) % p for t in roots])
+    # levels whose radicands are not rational (MakeAsym's radial moves over the sparse
+    # base, .sparse_tower): embeddings w^u through which each such image is a residue.
+    # The images are remembered by (number, p, w): so the roots of the rational levels
+    # under w^u are those the maps above give (negated for u = j), for every tower
+    found: list = []
+    others = (u for u in range(2, n // 2 + 1) if gcd(u, n) == 1 and u != j)
+    for u in chain((1, j), islice(others, 256)):
+        wu = pow(w, u, p)
+        extended = [(p - t) % p for t in roots] if u == j else list(roots)
+        for r in tower.radicands[len(rational):]:
+            t = _kummer_image_of(r, p, wu, extended)
+            t = sqrt_mod(t, p) if t else None
+            if not t:
+                break
+            extended.append(t)
+        else:
+            found.append((wu, extended))
+            if len(found) == 2:
+                return (p,) + tuple(found)
+    return None
 
 
 _KUMMER_IMAGES: dict = {}  # (id(x), p, w) -> (x, image): coordinates enter many keys
