@@ -16,6 +16,17 @@ from .factor import factorization
 _COS_CACHE_LIMIT = 1 << 16
 
 
+def root_of_unity(n: int, factors, ell: int) -> int:
+    """A primitive n-th root of unity modulo the prime ell = 1 mod n (``factors``: the
+    primes of n)."""
+    h = 2
+    while True:
+        g = pow(h, (ell - 1) // n, ell)
+        if all(pow(g, n // p, ell) != 1 for p in factors):
+            return g
+        h += 1
+
+
 # ---------------------------------------------------------------- the conductor's context
 def _is_prime(n: int) -> bool:
     return bool(fmpz(n).is_prime())
@@ -41,13 +52,7 @@ class SparseContext:
         while not _is_prime(k * n + 1):
             k += 1
         self.ell = ell = k * n + 1
-        h = 2
-        while True:
-            g = pow(h, (ell - 1) // n, ell)
-            if all(pow(g, n // p, ell) != 1 for p in self.factors):
-                break
-            h += 1
-        self.g = g
+        self.g = g = root_of_unity(n, self.factors, ell)
         self._lifts: dict = {1: g}
         self._cos: dict = {}
 

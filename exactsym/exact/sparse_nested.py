@@ -34,6 +34,7 @@ from __future__ import annotations
 
 from flint import fmpz
 
+from .sparse_context import root_of_unity
 from .sparse_cyclotomic import SparseCyclotomic
 from .tower_proof import sqrt_mod
 
@@ -143,14 +144,8 @@ def _primes(context, count: int):
         k += 1
         if not fmpz(l).is_prime():
             continue
-        h = 2
-        while True:
-            g = pow(h, (l - 1) // n, l)
-            if all(pow(g, n // p, l) != 1 for p in context.factors):
-                break
-            h += 1
         found += 1
-        yield l, g
+        yield l, root_of_unity(n, context.factors, l)
 
 
 def _units(n: int, count: int):
