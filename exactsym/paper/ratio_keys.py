@@ -85,8 +85,8 @@ class RatioKey:
         prec = _PREC
         while True:
             # every operation at the balls' precision (at the default 53 bits a value of
-            # 10^16, from a level's homogeneous directions, never got narrow; and a floor
-            # rounded to 53 bits is not the cell)
+            # 10^16, from a level's directions scaled to clear the centre's denominator,
+            # never got narrow; and a floor rounded to 53 bits is not the cell)
             with ctx.workprec(prec + 16):
                 scaled = value_ball(prec) * _CELLS
                 if scaled.is_finite() and scaled.rad() < 0.25:

@@ -254,7 +254,6 @@ def string_classes(polygon: CirclePolygon, orientation: int = 1):
         if small.applies(polygon):          # entries compared by balls, exact on overlap
             return small.string_classes_small(polygon, orientation)
         return string_classes_reference(polygon, orientation)
-    dirs = polygon.directions
     forms = [canonical(polygon, i, False) for i in range(n)] + \
         [canonical(polygon, i, True) for i in range(n)]
     h, forms = _gap_ids(polygon, forms)
