@@ -79,3 +79,64 @@ def test_homogeneous_sec_equals_brute_force(points):
     assert all(circle.contains(p) for p in points)
     assert all(squared_distance(circle.centre, points[i]) == circle.radius_squared
                for i in circle.support)
+
+
+# ------------------------------------------- gaps on one circle, with reflections (strings)
+from exactsym.paper.filtered import circle_gap_tokens  # noqa: E402
+
+_S2 = None
+
+
+def _scale():
+    """1 + sqrt(2), an algebraic factor (the tokens' ball path)."""
+    global _S2
+    if _S2 is None:
+        _, (_S2,) = evaluate_all([parse_expression("1 + sqrt(2)")])
+    return _S2
+
+
+def _unit(t):
+    t = fmpq(t)
+    return ((1 - t * t) / (1 + t * t), 2 * t / (1 + t * t))
+
+
+def _times(u, v):
+    return (u[0] * v[0] - u[1] * v[1], u[0] * v[1] + u[1] * v[0])
+
+
+def _angle(u, v):
+    """The exact angle from unit vector u to unit vector v as (cross sign, dot)."""
+    c = u[0] * v[1] - u[1] * v[0]
+    return (0 if c == 0 else (1 if c > 0 else -1), u[0] * v[0] + u[1] * v[1])
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.integers(-6, 6).map(lambda k: fmpq(k, 3)), min_size=2, max_size=6,
+                unique=True),
+       st.lists(st.tuples(st.integers(0, 5), st.integers(0, 5), st.integers(0, 5),
+                          st.booleans()), min_size=1, max_size=8))
+def test_circle_gap_tokens_with_reflections(params, picks):
+    """Gaps between points of one circle of squared radius L (scale L) and gaps to
+    reflections u^2 conj(w), of length L^(3/2) (scale 1), in one call: tokens equal iff
+    the exact angles are (string_classes compares a string's patched gaps so)."""
+    units = [_unit(t) for t in params]
+    s = _scale()
+    vec = [(s * x, s * y) for x, y in units]
+    length = vec[0][0] * vec[0][0] + vec[0][1] * vec[0][1]
+    pairs, angles = [], []
+    n = len(units)
+    for i in range(n):
+        pairs.append((vec[i], vec[(i + 1) % n], length))
+        angles.append(_angle(units[i], units[(i + 1) % n]))
+    for i, k, m, first in picks:
+        i, k, m = i % n, k % n, m % n
+        u, w = vec[k], vec[m]
+        flipped = _times(_times(u, u), (w[0], -w[1]))
+        unit = _times(_times(units[k], units[k]), (units[m][0], -units[m][1]))
+        pair = (vec[i], flipped, None) if first else (flipped, vec[i], None)
+        pairs.append(pair)
+        angles.append(_angle(units[i], unit) if first else _angle(unit, units[i]))
+    tokens = circle_gap_tokens(pairs)
+    for x in range(len(pairs)):
+        for y in range(x):
+            assert (tokens[x] == tokens[y]) == (angles[x] == angles[y])
