@@ -593,7 +593,7 @@ class _TomlReader:
             if ExpressionText in kinds and isinstance(value, str):
                 start = None if where is None else self.where.value(value, where)
                 try:
-                    parse_expression(value)
+                    parse_expression(value, written=True)    # a number as exactsym wrote it
                 except ExpressionError as err:
                     at_error = where if start is None else start + err.offset
                     raise err.located(self.source, *(self.where.position(at_error)

@@ -238,8 +238,9 @@ def check_report(config: Configuration, *, strings: bool = False) -> dict:
 
 # ---------------------------------------------------------------- [expect]
 def _same_number(text_a: str, text_b: str) -> bool:
-    """Exact equality of two numbers written in the configuration syntax."""
-    a, b = parse_expression(text_a), parse_expression(text_b)
+    """Exact equality of two numbers written in the configuration syntax (as exactsym
+    writes them: no limit on their length, :func:`~exactsym.expr.parse_expression`)."""
+    a, b = parse_expression(text_a, written=True), parse_expression(text_b, written=True)
     system = number_system([a, b])
     return evaluate(a, system) == evaluate(b, system)
 

@@ -6,11 +6,15 @@ have the value of E.  Both are evaluated in one number system with E, so equalit
 
 from __future__ import annotations
 
+import contextlib
+import io
+import json
 from fractions import Fraction
 
 import pytest
 from hypothesis import given, settings, strategies as st
 
+from exactsym.cli import main
 from exactsym.errors import ExpressionError
 from exactsym.exact import evaluate_all, expression_text, number_text
 from exactsym.expr import MAX_LENGTH, parse_expression
@@ -113,3 +117,26 @@ def test_issue_examples_number_text():
         printed = number_text(x)
         assert "sqrtsqrt" not in printed and "sqrtcos" not in printed and "(1)*" not in printed
         assert same_value(tree, printed)
+
+
+def test_a_long_written_number_as_an_expectation(tmp_path):
+    """The SEC's squared radius of three robots at turns j/999983 is written in about 28,000
+    characters; copied into [expect], it is read (not refused as too long) and met."""
+    points = ('  { r = "987654321/1234567", turn = "1/999983" },\n'
+              '  { r = "876543219/2345671", turn = "300001/999983" },\n'
+              '  { r = "765432198/3456712", turn = "600011/999983" },\n')
+    plain = tmp_path / "three.toml"
+    plain.write_text("format = 1\npoints = [\n" + points + "]\n")
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        assert main(["check", "--json", str(plain)]) == 0
+    radius = json.loads(out.getvalue())["sec"]["radius_squared"]
+    assert len(radius) > MAX_LENGTH
+    expected = tmp_path / "expected.toml"
+    expected.write_text(plain.read_text() + f'\n[expect]\nsec_radius_squared = "{radius}"\n')
+    with contextlib.redirect_stdout(io.StringIO()):
+        assert main(["check", str(expected)]) == 0
+    wrong = tmp_path / "wrong.toml"
+    wrong.write_text(plain.read_text() + f'\n[expect]\nsec_radius_squared = "1 + {radius}"\n')
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+        assert main(["check", str(wrong)]) == 1

@@ -70,7 +70,7 @@ def configuration_of(points) -> Configuration:
         return kernel_configuration(points)
     if all(x.is_rational() and y.is_rational() for x, y in points):
         return Configuration.from_points([(x.to_fmpq(), y.to_fmpq()) for x, y in points])
-    exprs = [parse_expression(c.text()) for p in points for c in p]
+    exprs = [parse_expression(c.text(), written=True) for p in points for c in p]
     system = number_system(exprs)
     vals = [evaluate(e, system) for e in exprs]
     return Configuration.from_points(list(zip(vals[0::2], vals[1::2])), system=system)
