@@ -23,25 +23,30 @@ there, has an image in F_l itself.)  Each map is one
 linear equation over F_2 in the unknown T; when they have no solution (Gaussian
 elimination reaches 0 = 1) no T exists and x is not a square.  Several maps per prime l
 (w = g^u for units u: conjugate embeddings) vary chi(phi(x)); several primes l vary the
-chi(k_m).  A non-square is typically proved at the first prime (two conjugates disagree),
+chi(k_m).  The primes are l = 1 mod lcm(N, 8, the primes of the rational radicands in S),
+so that those levels always extend a map (reciprocity).  A non-square is typically proved at the first prime (two conjugates disagree),
 a rational non-square times a square after about |R| primes; a square is never proved,
-and costs the whole budget (:data:`_PRIMES` primes) before it is refused.
+and costs the whole budget (|R| + 40 primes, at most :data:`_PRIMES`) before it is
+refused.
 
 Public names: :func:`new_level_proved`.
 """
 
 from __future__ import annotations
 
+from math import lcm
+
 from flint import fmpz
 
+from .factor import factorization
 from .sparse_context import root_of_unity
 from .sparse_cyclotomic import SparseCyclotomic
 from .tower_proof import sqrt_mod
 
 __all__ = ["new_level_proved"]
 
-#: primes l = k N + 1 tried at most: :data:`_CONJUGATES` embeddings at the first (they
-#: settle a non-square there), two at each later one (they vary the chi(k_m))
+#: primes l = k N + 1 tried at most (and |R| + 40): :data:`_CONJUGATES` embeddings at the
+#: first (they settle a non-square there), two at each later one (they vary the chi(k_m))
 _PRIMES = 400
 _CONJUGATES = 8
 
@@ -135,17 +140,29 @@ def _roots_of(embedding: _Embedding, radicands, levels) -> dict | None:
     return roots
 
 
-def _primes(context, count: int):
-    """Primes l = k N + 1 (k from 2^20: l far above the small denominators) with g a
-    primitive N-th root of unity mod l."""
+def _primes(context, count: int, modulus: int):
+    """Primes l = k M + 1 (M = ``modulus``, a multiple of N; k from 2^20: l far above the
+    small denominators) with g a primitive N-th root of unity mod l."""
     n, k, found = context.n, 1 << 20, 0
     while found < count:
-        l = k * n + 1
+        l = k * modulus + 1
         k += 1
         if not fmpz(l).is_prime():
             continue
         found += 1
         yield l, root_of_unity(n, context.factors, l)
+
+
+def _split_modulus(n: int, rationals) -> int:
+    """lcm(N, 8, the odd primes of ``rationals``): modulo a prime l = 1 mod it every one of
+    them is a square (2 and -1 as l = 1 mod 8, an odd prime q by reciprocity as l = 1 mod
+    4q), so the levels of F that are roots of rationals always extend a map."""
+    modulus = lcm(n, 8)
+    for q in rationals:
+        for part in (int(q.p), int(q.q)):
+            for prime in (factorization(abs(part)) if abs(part) > 1 else ()):
+                modulus = lcm(modulus, prime)
+    return modulus
 
 
 def _units(n: int, count: int):
@@ -169,7 +186,12 @@ def new_level_proved(tower, x) -> bool:
     rationals = [_rational(radicands[j - 1]) for j in outer]
     rows: dict = {}         # pivot bit -> (mask over the outer levels, right-hand side)
     units = _units(tower.context.n, _CONJUGATES)
-    for index, (l, g) in enumerate(_primes(tower.context, _PRIMES)):
+    # |R| + 1 independent rows settle any x; a square never is (a prime l near a
+    # 350-bit N costs 40 ms to find): so at most |R| + 40 primes
+    budget = min(_PRIMES, len(outer) + 40)
+    split = _split_modulus(tower.context.n, [q for q in map(_rational, (
+        radicands[j - 1] for j in inner)) if q is not None])
+    for index, (l, g) in enumerate(_primes(tower.context, budget, split)):
         chis = []
         for q in rationals:
             image = _rational_image(q, l)
