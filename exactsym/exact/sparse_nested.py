@@ -19,15 +19,15 @@ Legendre symbol written additively, x * prod_T k_m a square forces
 chi(phi(x)) + sum_T chi(k_m) = 0 whenever every factor is a unit at l.  (phi is the
 reduction at a prime of F above l of degree 1: l splits in Q(zeta_N), and each level whose
 radicand's image is a non-zero square splits it again; so the root of x prod k_m, a unit
-there, has an image in F_l itself.)  Each map is one
-linear equation over F_2 in the unknown T; when they have no solution (Gaussian
-elimination reaches 0 = 1) no T exists and x is not a square.  Several maps per prime l
+there, has an image in F_l itself.)  Each map is one linear equation over F_2 in the
+unknown T; when they have no solution (Gaussian elimination reaches 0 = 1) no T exists and
+x is not a square.  Several maps per prime l
 (w = g^u for units u: conjugate embeddings) vary chi(phi(x)); several primes l vary the
 chi(k_m).  The primes are l = 1 mod lcm(N, 8, the primes of the rational radicands in S),
-so that those levels always extend a map (reciprocity).  A non-square is typically proved at the first prime (two conjugates disagree),
-a rational non-square times a square after about |R| primes; a square is never proved,
-and costs the whole budget (|R| + 40 primes, at most :data:`_PRIMES`) before it is
-refused.
+so that those levels always extend a map (reciprocity).  A non-square is typically proved
+at the first prime (two conjugates disagree), a rational non-square times a square after
+about |R| primes; a square is never proved, and costs the whole budget (|R| + 40 primes,
+at most :data:`_PRIMES`) before it is refused.
 
 Public names: :func:`new_level_proved`.
 """
@@ -45,7 +45,7 @@ from .tower_proof import sqrt_mod
 
 __all__ = ["new_level_proved"]
 
-#: primes l = k N + 1 tried at most (and |R| + 40): :data:`_CONJUGATES` embeddings at the
+#: primes l = k M + 1 tried at most (and |R| + 40): :data:`_CONJUGATES` embeddings at the
 #: first (they settle a non-square there), two at each later one (they vary the chi(k_m))
 _PRIMES = 400
 _CONJUGATES = 8
