@@ -39,8 +39,8 @@ from math import lcm
 from flint import fmpz
 
 from .factor import factorization
+from .cyclotomic_modular import sparse_image
 from .sparse_context import root_of_unity
-from .sparse_cyclotomic import SparseCyclotomic
 from .tower_proof import sqrt_mod
 
 __all__ = ["new_level_proved"]
@@ -84,42 +84,15 @@ def _rational_image(q, l: int):
 
 
 class _Embedding:
-    """zeta_N -> w modulo l, on sums of cosines (cached per exponent)."""
+    """zeta_N -> w modulo l (:func:`.cyclotomic_modular.sparse_image` on the base)."""
 
     def __init__(self, n: int, l: int, w: int):
         self.n, self.l, self.w = n, l, w
-        self.half = pow(2, -1, l)
-        self._cos: dict = {}
-
-    def cosine(self, e: int) -> int:
-        c = self._cos.get(e)
-        if c is None:
-            c = self._cos[e] = (pow(self.w, e, self.l) + pow(self.w, self.n - e % self.n,
-                                                              self.l)) * self.half % self.l
-        return c
-
-    def terms(self, terms: dict):
-        total = 0
-        for e, c in terms.items():
-            q = _rational_image(c, self.l)
-            if q is None:
-                return None
-            total += q * self.cosine(e)
-        return total % self.l
-
-    def base(self, x: SparseCyclotomic):
-        num = self.terms(x.num)
-        if num is None:
-            return None
-        if x.den is None:
-            return num
-        den = self.terms(x.den)
-        return None if not den else num * pow(den, -1, self.l) % self.l
 
     def value(self, v, roots: dict):
         """phi(v) for a raw tower value whose levels have images in ``roots``."""
         if type(v) is not tuple:
-            return self.base(v)
+            return sparse_image(v, self.l, self.w)
         lev, a, b = v
         ia, ib = self.value(a, roots), self.value(b, roots)
         if ia is None or ib is None:
