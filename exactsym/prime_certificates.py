@@ -8,11 +8,15 @@ prime l larger.  For each prime p at or above that bound this module writes
 p - 1 and one a with a^(p-1) = 1 and a^((p-1)/q) != 1 mod p for every q.  The checker accepts
 F > sqrt(p) (Pocklington; Pratt when F = p - 1) or F^3 >= p with the Brillhart-Lehmer-Selfridge
 condition, and proves each q at or above the bound by its own entry (recursion here).
+When p - 1 resists, p is proved by an elliptic curve (:mod:`.elliptic_primes`: ``{"prime":
+p, "curve": [a, b], "point": [x, y], "order": q}``, a point of prime order q above
+(p^(1/4) + 1)^2), and q in turn.
 
 Effort is bounded, so that certify never hangs where check answered: p - 1 is split by
 python-flint's ``factor_smooth`` (trial division and ECM for factors up to 2^32, 2^48, then 2^60),
 and a composite cofactor of at most :data:`FULL_DIGITS` digits is factored completely
-(quadratic sieve, about a second at 56 digits).  When the prime part found is below p^(1/3),
+(quadratic sieve, about a second at 56 digits).  When the prime part found is below p^(1/3)
+and no elliptic curve is found either (none is searched above 200 digits),
 :class:`PrimalityError` names p.  The hashing prime l = kN + 1 needs no search: l - 1 = k N
 with N's factorisation known.
 
@@ -26,6 +30,7 @@ from math import gcd, isqrt, prod
 
 from flint import fmpz
 
+from .elliptic_primes import EllipticError, elliptic_proofs
 from .exact.factor import factorization
 
 #: the checker's deterministic Miller-Rabin test decides below this (checker_sparse._MR_LIMIT)
@@ -64,9 +69,16 @@ def _prove(p: int, known: dict, proofs: dict) -> None:
             continue
     f = _part(usable)
     if f ** 3 < p:
-        raise PrimalityError(f"no primality certificate of the prime {p}: the factored part of "
-                             f"p - 1 found within the effort bound ({f.bit_length()} of "
-                             f"{p.bit_length()} bits) is below p^(1/3)")
+        # p - 1 resists: an elliptic curve with a point of large prime order proves p
+        try:
+            for entry in elliptic_proofs(p):
+                proofs.setdefault(int(entry["prime"]), entry)
+            return
+        except EllipticError as error:
+            raise PrimalityError(
+                f"no primality certificate of the prime {p}: the factored part of p - 1 "
+                f"found within the effort bound ({f.bit_length()} of {p.bit_length()} "
+                f"bits) is below p^(1/3), and {error}") from None
     if f <= isqrt(p):                           # Brillhart-Lehmer-Selfridge, as the checker
         c2, c1 = divmod((p - 1) // f, f)
         d = c1 * c1 - 4 * c2

@@ -379,10 +379,15 @@ def test_large_numbers_without_a_proof_are_refused():
 
 def test_certify_refuses_in_one_line_when_p_minus_1_resists(tmp_path, monkeypatch, capsys):
     """p - 1 = 2 k r1 r2 with r1, r2 31-digit primes: no factored part of p^(1/3) within the
-    effort (here made smaller to keep the test fast; the real bound refuses it in about 2.5 s):
-    certify exits 2 with one line naming p; check answers."""
-    from exactsym import prime_certificates
+    effort (here made smaller to keep the test fast; the real bound refuses it in about 2.5 s),
+    and no elliptic curve (the search made to fail: tests/test_elliptic_primes.py has the
+    success): certify exits 2 with one line naming p; check answers."""
+    from exactsym import elliptic_primes, prime_certificates
     from exactsym.cli import main
+
+    def no_curve(n):
+        raise elliptic_primes.EllipticError(f"no elliptic primality certificate of {n}")
+    monkeypatch.setattr(elliptic_primes, "_step", no_curve)
     r1, r2 = 3 * 10 ** 30 + 91, 5 * 10 ** 30 + 27
     p = 2 * 7 * r1 * r2 + 1
     assert all(checker_sparse_prime(x) for x in (r1, r2, p))
