@@ -192,6 +192,27 @@ def test_c3_configuration_is_called_orderable():
     assert report["discrepancies"][-2]["statement"] == "GatheringPattern"
 
 
+def test_merge_witnesses_name_their_reading_on_levels_of_one_or_two_robots():
+    """obs-merg-asym-pair: two lone robots at turns 0 and 1/7 form an asymmetric pair whose
+    G_ij (a 2-gon) has a mirror, a witness only if a level of one robot is a polygon: the
+    witness names that reading.  The two triangles (a witness under every reading) name
+    none."""
+    from exactsym.paper.family.claims import SMALL_LEVEL_READING
+    cases = ((ring(1, ["0"]) + ring(2, ["1/7"]) + ring(3, ["3/10", "3/5", "9/10"]), True),
+             (regular(1, 3) + regular(2, 3, Fraction(1, 10)), False))
+    for points, small in cases:
+        _, _, G = family_of(points)
+        sizes = {g.name: g.n for g in G}
+        failures = [c for c in F.family_claims(G, F.preprocess(G, []))
+                    if c["statement"] == "obs-merg-asym-pair" and c["holds"] is False]
+        assert failures
+        for claim in failures:
+            pair_small = min(sizes[claim["polygons"][0]], sizes[claim["polygons"][1]]) < 3
+            assert pair_small == ("reading" in claim["witness"]) == \
+                (SMALL_LEVEL_READING in claim["detail"])
+        assert any("reading" in c["witness"] for c in failures) == small
+
+
 def test_mirror_inside_half_turn_is_called_not_orderable():
     config, res = run(ring(1, ["1/4", "1/20", "9/20"])
                       + ring(2, ["0", "1/10", "1/4", "1/2", "3/5", "3/4"]))

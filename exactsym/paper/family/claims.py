@@ -197,17 +197,29 @@ def obs_pair_asym_ord(rec: _Record, a: Ring, b: Ring, common) -> None:
                      "an asymmetric polygon in a symmetric pair")
 
 
+#: named when a witness of obs-merg-asym-pair has a level of one or two robots
+SMALL_LEVEL_READING = ("levels of 1 or 2 robots are polygons of G (the paper's G covers every "
+                       "robot); if a polygon needs 3 vertices, this pair is outside the statement")
+
+
 def obs_merg_asym_pair(rec: _Record, a: Ring, b: Ring, common, proj, polar: bool) -> None:
     """``obs-merg-asym-pair`` (as stated: no hypothesis on n_i, n_j): an asymmetric pair
-    makes an asymmetric G_ij."""
+    makes an asymmetric G_ij.  Reading: every level is a polygon of G, one or two robots
+    included ("the t convex polygons whose union is the whole set of points"); a witness
+    with such a level names that reading, since polygons of 3 or more vertices only would
+    rescue the statement there (not everywhere: two triangles refute it, the ledger's
+    witness)."""
     gij = proj.ring
     if not has_lines(common):
         rec.check("obs-merg-asym-pair")
         if is_symmetric_polygon(gij):
+            small = min(a.n, b.n) < 3
             rec.fail("obs-merg-asym-pair", [a.name, b.name, gij.name],
                      lambda: f"<{a.name}, {b.name}> is an asymmetric pair but G_ij = "
-                     f"{gij.name} has {lines_text(gij, polar)}" + coincidence_note(proj),
-                     lambda: {"G_ij lines": lines_text(gij, polar)})
+                     f"{gij.name} has {lines_text(gij, polar)}" + coincidence_note(proj)
+                     + (f" (reading: {SMALL_LEVEL_READING})" if small else ""),
+                     lambda: {"G_ij lines": lines_text(gij, polar),
+                              **({"reading": SMALL_LEVEL_READING} if small else {})})
 
 
 def lem_los_gij(rec: _Record, a: Ring, b: Ring, common, proj, polar: bool) -> None:
