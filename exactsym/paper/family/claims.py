@@ -217,7 +217,7 @@ def obs_merg_asym_pair(rec: _Record, a: Ring, b: Ring, common, proj, polar: bool
             rec.fail("obs-merg-asym-pair", [a.name, b.name, gij.name],
                      lambda: f"<{a.name}, {b.name}> is an asymmetric pair but G_ij = "
                      f"{gij.name} has {lines_text(gij, polar)}" + coincidence_note(proj)
-                     + (f" (reading: {SMALL_LEVEL_READING})" if small else ""),
+                     + (f"; reading: {SMALL_LEVEL_READING}" if small else ""),
                      lambda: {"G_ij lines": lines_text(gij, polar),
                               **({"reading": SMALL_LEVEL_READING} if small else {})})
 
