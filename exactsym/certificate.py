@@ -43,6 +43,7 @@ from .exact.cyclotomic_tower import CyclotomicTower
 from .exact.evaluate import SparseCyclotomicSystem
 from .exact.sparse_cyclotomic import SparseCyclotomic
 from .exact.tower import TowerElement
+from .exact.sparse_nested import level_witness
 from .exact.sparse_tower import SparseKummerTower
 from .exact.tower_proof import (base_kummer_witness, cyclotomic_nonsquare_witness,
                                 kummer_witness, legendre_rank_primes, nonsquare_witness)
@@ -166,19 +167,30 @@ class Encoder:
         self.sparse = tower.context
         leaves = [leaf for v in values for leaf in _leaves(
             v.v if isinstance(v, TowerElement) else v)]
-        base = self._sparse_spec(tower.context, leaves + list(tower.radicands))
+        base = self._sparse_spec(tower.context, leaves + [leaf for r in tower.radicands
+                                                         for leaf in _leaves(r)])
         if not tower.radicands:
             self.spec = base
             return
         self.tower = tower
-        primes = legendre_rank_primes(tower.conductor, tower.radicands, MR_LIMIT)
-        if primes is None:
-            raise CertificateError(f"no primes below {MR_LIMIT} prove the square roots of "
-                                   f"{tower.name} independent; cannot certify")
-        levels = [{"radicand": rational_text(r.rational()), "kummer": True}
-                  for r in tower.radicands]
-        self.spec = {"tower": {"base": base, "levels": levels,
-                               "kummer": [{"prime": str(p)} for p in primes]}}
+        rational = tower.radicands[:len(tower.radicands) - tower.nested]
+        levels = [{"radicand": rational_text(r.rational()), "kummer": True} for r in rational]
+        self.spec = {"tower": {"base": base, "levels": levels}}
+        if rational:
+            primes = legendre_rank_primes(tower.conductor, rational, MR_LIMIT)
+            if primes is None:
+                raise CertificateError(f"no primes below {MR_LIMIT} prove the square roots "
+                                       f"of {tower.name} independent; cannot certify")
+            self.spec["tower"]["kummer"] = [{"prime": str(p)} for p in primes]
+        for index in range(len(rational) + 1, tower.levels + 1):
+            # a nested radical (exact/sparse_nested.py): one ring map onto F_l
+            found = level_witness(tower, index, MR_LIMIT)
+            if found is None:
+                raise CertificateError(f"no prime below {MR_LIMIT} proves level {index} of "
+                                       f"{tower.name} new; cannot certify")
+            l, w, roots = found
+            levels.append({"radicand": self._sparse_text(tower.radicands[index - 1]),
+                           "prime": str(l), "zeta": str(w), "roots": [str(t) for t in roots]})
 
     def _sparse_text(self, x):
         """A real sparse number as {e: c} = sum c cos(2 pi e/N) (e and N - e merged); in a

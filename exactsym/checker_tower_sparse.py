@@ -3,11 +3,13 @@ library only; shares no code with the solver; docs/certificates.md, "Square root
 over the sparse Q(zeta_N)").
 
 Field ``{"tower": {"base": {"sparse-cyclotomic": SPEC}, "levels": [{"radicand": r_i,
-"kummer": true}, ...], "kummer": [{"prime": p}, ...]}}``: K_0 is the real subfield F of
-Q(zeta_N), its numbers the sums of cosines of :class:`checker_sparse.SparseField` (``SPEC``
-as there: the factors of N, the hashing prime l and its root of order N); K_i = K_(i-1)(y_i),
-y_i the positive square root of the positive rational r_i.  Every level must be a kummer
-level, and the levels are proved together (:meth:`SparseKummerTower._prove_kummer`):
+"kummer": true}, ..., {"radicand": r_k, "prime": l, "zeta": w, "roots": [s_1, ...]}, ...],
+"kummer": [{"prime": p}, ...]}}``: K_0 is the real subfield F of Q(zeta_N), its numbers the
+sums of cosines of :class:`checker_sparse.SparseField` (``SPEC`` as there: the factors of N,
+the hashing prime l and its root of order N); K_i = K_(i-1)(y_i), y_i the positive square
+root of r_i > 0.  The first levels are kummer levels (r_i rational), proved together
+(:meth:`SparseKummerTower._prove_kummer`); each level above them (a nested radical) is
+proved by a ring map onto F_l (:meth:`SparseKummerTower._prove_nested`).  The kummer proof:
 
 * Kummer theory (exponent 2, characteristic 0): if x in a field K is a square in K(sqrt r),
   x = (c + d sqrt r)^2, then 2cd = 0 when sqrt r is not in K, so x = c^2 or x = r d^2.
@@ -64,15 +66,21 @@ class SparseKummerTower(Tower):
         self._balls: dict = {}
         rationals: list = []
         for i, lev in enumerate(spec["levels"], start=1):
-            need(isinstance(lev, dict) and lev.get("kummer") is True,
-                 f"tower level {i}: over a sparse base every level is a kummer level")
+            need(isinstance(lev, dict), f"tower level {i}: not an object")
             r = self._read(lev.get("radicand"), i - 1)
-            q = _rational(r)
-            need(q is not None and q > 0,
-                 f"tower level {i}: a kummer radicand must be a positive rational")
-            rationals.append(q)
+            if lev.get("kummer") is True:
+                need(len(rationals) == i - 1, f"tower level {i}: a kummer level above a "
+                     "nested one")
+                q = _rational(r)
+                need(q is not None and q > 0,
+                     f"tower level {i}: a kummer radicand must be a positive rational")
+                rationals.append(q)
+            else:
+                need(self._sign(r) > 0, f"tower level {i}: the radicand is not positive")
+                self._prove_nested(i, r, lev)
             self.r.append(r)
-        self._prove_kummer(rationals, spec.get("kummer"))
+        if rationals:
+            self._prove_kummer(rationals, spec.get("kummer"))
 
     def base_num(self, value):
         need(isinstance(value, (str, int, dict)) and not isinstance(value, bool),
@@ -109,6 +117,55 @@ class SparseKummerTower(Tower):
             add_legendre_row(rows, values, p)
         need(len(rows) == len(values), f"tower: the Legendre symbols of the kummer levels "
              f"have rank {len(rows)} over F_2, not {len(values)}")
+
+
+    # -- the proof that a nested radicand r_i is not a square in K_(i-1) ------------------
+    def _prove_nested(self, i: int, r, lev: dict) -> None:
+        """A prime l = 1 mod N (Miller-Rabin below 3.3 * 10^24), w of order N modulo l and
+        roots s_j with s_j^2 = phi(r_j) != 0 mod l for j < i, every denominator prime to l,
+        and phi(r_i) a non-residue (Euler's criterion).  Then w is a simple root of Phi_N mod
+        l (l does not divide N), so zeta_N -> w is a ring map phi from A = Z_(l)[zeta_N],
+        a regular ring (l is unramified), onto F_l, and cos(2 pi e/N) -> (w^e + w^-e)/2.
+        B = A[Y_1, ..., Y_(i-1)] / (Y_j^2 - r_j) extends it by Y_j -> s_j; B is a domain
+        (its levels are proper: proved below it), its fraction field is K_(i-1), and at
+        q = ker phi its Jacobian prod 2 s_j is a unit, so B_q is etale over A, regular of
+        dimension 1: a discrete valuation ring, integrally closed.  If r_i = z^2, z in
+        K_(i-1), z is integral over B_q (a root of X^2 - r_i), so z in B_q and
+        phi(r_i) = phi(z)^2 would be a square mod l."""
+        where = f"tower level {i}"
+        p, w, roots = lev.get("prime"), lev.get("zeta"), lev.get("roots")
+        need(all(isinstance(v, (str, int)) and not isinstance(v, bool) for v in (p, w)),
+             f"{where}: a nested level needs a prime and zeta")
+        p, w, n = integer(str(p)), integer(str(w)), self.base.n
+        need(p > 2 and p % n == 1 and is_prime(p),
+             f"{where}: {p} is not an odd prime = 1 mod {n} below the Miller-Rabin bound")
+        need(0 < w < p and pow(w, n, p) == 1
+             and all(pow(w, n // q, p) != 1 for q, _ in self.base.factors),
+             f"{where}: zeta does not have order N modulo {p}")
+        need(isinstance(roots, list) and len(roots) == i - 1, f"{where}: one root per level "
+             "below")
+        roots = [integer(str(t)) % p for t in roots]
+        for j, rj in enumerate(self.r):
+            image = _image(rj, p, w, n, roots)
+            need(image is not None and image != 0,
+                 f"{where}: radicand {j + 1} is not a unit modulo {p}")
+            need((roots[j] * roots[j] - image) % p == 0,
+                 f"{where}: {roots[j]} is not a root of radicand {j + 1} modulo {p}")
+        image = _image(r, p, w, n, roots)
+        need(image is not None and pow(image, (p - 1) // 2, p) == p - 1,
+             f"{where}: the radicand's image is not a non-residue modulo {p}")
+
+
+def _image(x, p: int, w: int, n: int, roots: list):
+    """phi(x): zeta_N -> w, y_j -> roots[j - 1]; None when a denominator is divisible by p."""
+    if isinstance(x, tuple):
+        lev, a, b = x
+        ia, ib = _image(a, p, w, n, roots), _image(b, p, w, n, roots)
+        return None if ia is None or ib is None else (ia + ib * roots[lev - 1]) % p
+    if x.den % p == 0:
+        return None
+    total = sum(c * (pow(w, e, p) + pow(w, n - e, p)) for e, c in x.t.items())
+    return total * pow(2 * x.den, -1, p) % p
 
 
 def _rational(x):

@@ -116,8 +116,8 @@ def test_tampered_radicands(cert_997):
     _level(bad, 1)["radicand"] = [1, "0", "1"]
     rejected(bad, "positive rational")
     bad = copy.deepcopy(cert_997)
-    del _level(bad, 0)["kummer"]
-    rejected(bad, "every level is a kummer level")
+    del _level(bad, 0)["kummer"]                  # then a nested level, without its proof
+    rejected(bad, "a nested level needs a prime and zeta")
 
 
 def test_tampered_primes(cert_997):

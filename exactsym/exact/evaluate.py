@@ -245,6 +245,53 @@ class SparseKummerSystem(TowerSystem):
         return SparseKummerSystem(self.context.n, self.tower.extended(raw))
 
 
+class SparseNestedSystem(SparseKummerSystem):
+    """Nested radicals of the input with cos/sin whose dense base would pass
+    :data:`.cyclotomic_tower.MAX_BASE_DEGREE` (turns j/97 and sqrt(1 + sqrt(2)): Q(zeta_2328),
+    degree 768): the tower of :class:`SparseKummerSystem`, its rational levels made first
+    (:func:`_sparse_nested_system`), then each nested radical a level proved new by
+    characters, added in place (:meth:`~.sparse_tower.SparseKummerTower.adjoin_nested`;
+    FieldTooLargeError when not proved, e.g. a radicand that is a square there)."""
+
+    def __init__(self, conductor: int):
+        super().__init__(conductor)
+        self.denested: dict = {}        # raw radicand -> its root, an MQ (see denest)
+
+    def sqrt(self, x):
+        from .tower import TowerElement, wrap
+        raw = x.v if isinstance(x, TowerElement) else self.coerce(x)
+        if type(raw) is tuple or (isinstance(raw, SparseCyclotomic) and not raw.is_rational()):
+            root = self.denested.get(raw)
+            if root is not None:
+                return sum((c * super(SparseNestedSystem, self).sqrt(fmpq(m))
+                            for m, c in root.terms.items()), self.coerce(0))
+            return wrap(self.tower, self.tower.adjoin_nested(raw))
+        return super().sqrt(x)
+
+    def denest(self, node: Node) -> None:
+        """Before any nested level: when the radicand of the nested radical ``node`` is
+        written with square roots of rationals only and has a root in the multiquadratic
+        closure (:func:`.mq_closure.decided_sqrt`: sqrt(3 + sqrt(5)) = (sqrt(10) +
+        sqrt(2))/2), that root's square roots of rationals are read now and the radical
+        is read as that root (characters cannot prove a square new)."""
+        from .mq_closure import decided_sqrt
+        inner: list = []
+        _collect(node.arg, inner)
+        if any(kind != "sqrt" for kind, *_ in inner):
+            return
+        value = _evaluate(node.arg, MultiquadraticSystem(()))
+        if not isinstance(value, MQ) or value.sign() <= 0:
+            return
+        root, _ = decided_sqrt(value)
+        if root is None:
+            return
+        for m in root.terms:
+            super().sqrt(fmpq(m))
+        from .tower import TowerElement
+        raw = _evaluate(node.arg, self)
+        self.denested[raw.v if isinstance(raw, TowerElement) else self.coerce(raw)] = root
+
+
 class FieldSystem:
     """A number field ``field`` with the atoms (square roots, trig values) it holds."""
 
@@ -566,9 +613,28 @@ def _cosine_conductor(atoms) -> int:
 
 
 def _mixed_system(atoms):
-    """Nested radicals mixed with cos/sin (tests swap in ``general.general_system``, the
-    former path, for a differential test)."""
-    return CyclotomicTowerSystem(cyclotomic.lcm(_conductor(atoms), 4))
+    """Nested radicals mixed with cos/sin: a tower over the dense Q(zeta_M) up to
+    :data:`.cyclotomic_tower.MAX_BASE_DEGREE`, over the sparse one beyond (tests swap in
+    ``general.general_system``, the former path, for a differential test)."""
+    from .cyclotomic_tower import MAX_BASE_DEGREE
+    conductor = cyclotomic.lcm(_conductor(atoms), 4)
+    if cyclotomic.euler_phi(conductor) <= MAX_BASE_DEGREE:
+        return CyclotomicTowerSystem(conductor)
+    return _sparse_nested_system(atoms)
+
+
+def _sparse_nested_system(atoms):
+    """The cosines' sparse Q(zeta_N) with every square root of a rational among the atoms a
+    Kummer level (or a Gauss sum) first, so that the nested radicals, read later, are the
+    top levels (above them a new root of a rational is refused)."""
+    system = SparseNestedSystem(_cosine_conductor(atoms))
+    for atom in atoms:
+        if atom[0] == "sqrt":
+            system.sqrt(atom[1])
+    for atom in atoms:
+        if atom[0] == "nested":
+            system.denest(atom[1])
+    return system
 
 
 def _conductor(atoms) -> int:
@@ -598,6 +664,7 @@ def evaluate_all(exprs: Sequence[Node], turns: Sequence[fmpq] = ()):
 
 
 __all__ = ["RationalSystem", "MultiquadraticSystem", "TowerSystem", "CyclotomicTowerSystem",
+           "SparseNestedSystem",
            "SparseCyclotomicSystem", "SparseKummerSystem",
            "FieldSystem", "number_system", "evaluate", "evaluate_all",
            "rational_cos_turn", "rational_sqrt", "normal_turn", "Fraction"]

@@ -23,13 +23,16 @@ there, has an image in F_l itself.)  Each map is one linear equation over F_2 in
 unknown T; when they have no solution (Gaussian elimination reaches 0 = 1) no T exists and
 x is not a square.  Several maps per prime l
 (w = g^u for units u: conjugate embeddings) vary chi(phi(x)); several primes l vary the
-chi(k_m).  The primes are l = 1 mod lcm(N, 8, the primes of the rational radicands in S),
+chi(k_m).  The primes are l = 1 mod lcm(N, 4, the primes of the rational radicands in S; 8 for 2),
 so that those levels always extend a map (reciprocity).  A non-square is typically proved
 at the first prime (two conjugates disagree), a rational non-square times a square after
 about |R| primes; a square is never proved, and costs the whole budget (|R| + 40 primes,
 at most :data:`_PRIMES`) before it is refused.
 
-Public names: :func:`new_level_proved`.
+The certificate (:func:`level_witness`) proves each nested level with one map defined on
+every level below it, which the checker re-runs (``checker_tower_sparse``).
+
+Public names: :func:`new_level_proved`, :func:`level_witness`.
 """
 
 from __future__ import annotations
@@ -43,7 +46,7 @@ from .cyclotomic_modular import sparse_image
 from .sparse_context import root_of_unity
 from .tower_proof import sqrt_mod
 
-__all__ = ["new_level_proved"]
+__all__ = ["new_level_proved", "level_witness"]
 
 #: primes l = k M + 1 tried at most (and |R| + 40): :data:`_CONJUGATES` embeddings at the
 #: first (they settle a non-square there), two at each later one (they vary the chi(k_m))
@@ -127,14 +130,18 @@ def _primes(context, count: int, modulus: int):
 
 
 def _split_modulus(n: int, rationals) -> int:
-    """lcm(N, 8, the odd primes of ``rationals``): modulo a prime l = 1 mod it every one of
-    them is a square (2 and -1 as l = 1 mod 8, an odd prime q by reciprocity as l = 1 mod
-    4q), so the levels of F that are roots of rationals always extend a map."""
-    modulus = lcm(n, 8)
+    """lcm(N, 4, the odd primes of ``rationals``, 8 if 2 divides one of them an odd number of
+    times): modulo a prime l = 1 mod it every one of them is a square (an odd prime q by
+    reciprocity as l = 1 mod 4q, 2 as l = 1 mod 8), so the levels of F that are roots of
+    rationals always extend a map.  8 only when needed: with l = 1 mod 8 always, sqrt(2)
+    has an image at every prime, and sqrt(2 + sqrt(3)) = (sqrt(6) + sqrt(2))/2, not in a
+    field without sqrt(2), would have a square image at every map."""
+    modulus = lcm(n, 4)
     for q in rationals:
         for part in (int(q.p), int(q.q)):
-            for prime in (factorization(abs(part)) if abs(part) > 1 else ()):
-                modulus = lcm(modulus, prime)
+            factors = factorization(abs(part)) if abs(part) > 1 else {}
+            for prime, exponent in factors.items():
+                modulus = lcm(modulus, 8 if prime == 2 and exponent % 2 else prime)
     return modulus
 
 
@@ -194,3 +201,30 @@ def new_level_proved(tower, x) -> bool:
             elif rhs:
                 return True         # 0 = 1: no subset T makes x prod k_m a square of F
     return False
+
+
+def level_witness(tower, index: int, limit: int):
+    """``(l, w, roots)`` for the certificate of level ``index`` (1-based) of ``tower``, a
+    nested level: l = 1 mod lcm(N, 4, the primes of the rational radicands below; 8 for 2)
+    prime below ``limit``, w a primitive N-th root of unity mod l, ``roots`` a root of the
+    image of each radicand below (all non-zero residues), and the image of the level's
+    radicand a non-residue (``checker_tower_sparse``'s proof).  None when no prime among
+    :data:`_PRIMES` (each with :data:`_CONJUGATES` embeddings) gives one."""
+    radicands = tower.radicands
+    below = range(1, index)
+    split = _split_modulus(tower.context.n, [q for q in (_rational(radicands[j - 1])
+                                                          for j in below) if q is not None])
+    units = _units(tower.context.n, _CONJUGATES)
+    for l, g in _primes(tower.context, _PRIMES, split):
+        if l >= limit:
+            return None
+        for u in units:
+            w = pow(g, u, l)
+            embedding = _Embedding(tower.context.n, l, w)
+            roots = _roots_of(embedding, radicands, below)
+            if roots is None:
+                continue
+            image = embedding.value(radicands[index - 1], roots)
+            if image and pow(image, (l - 1) // 2, l) == l - 1:
+                return l, w, [roots[j] for j in below]
+    return None

@@ -9,12 +9,14 @@ canonical form a + b y per level.  The base numbers are :class:`~.sparse_cycloto
 SparseCyclotomic`, whose form is not canonical but whose equality, hash and zero test are
 exact, which is all the tower's structural equality and hash ask of its base values.
 
-Only square roots of rationals are held in input: a nested radical would need a square-root
-test in the sparse base, which does not exist, so it is refused (FieldTooLargeError, exit
-2).  MakeAsym's radial move (a root of a ratio of squared radii) gets a copy of the tower
-with one more level when Legendre characters prove the radicand new
-(:meth:`SparseKummerTower.extended`, :mod:`.sparse_nested`); in such a tower a rational
-whose root would need a new level is refused (rational levels come first, so that
+There is no square-root test in the sparse base.  A nested radical is a new level when
+Legendre characters prove its radicand no square of the top field (:mod:`.sparse_nested`):
+MakeAsym's radial move (a root of a ratio of squared radii) gets a copy of the tower with
+that level (:meth:`SparseKummerTower.extended`), a nested radical of the input extends the
+tower in place (:meth:`SparseKummerTower.adjoin_nested`, after every root of a rational of
+the input); a radicand the characters do not settle (it may be a square, e.g. a denesting)
+is refused (FieldTooLargeError, exit 2).  Above a nested level a rational whose root would
+need a new level is refused (rational levels come first, so that
 :class:`.kummer.SquareClasses` still indexes them).  A rational whose class needs a Gauss sum of
 more than :data:`.sparse_cyclotomic.MAX_GAUSS_TERMS` terms (a prime of N near 10^6) is
 refused too.  ``certify`` writes the tower over the sparse base, its levels proved new by
@@ -106,6 +108,23 @@ class SparseKummerTower(CyclotomicTower):
         of the copy (same levels below).  FieldTooLargeError when nothing is proved (x
         may be a square: no root is computed here) or past :data:`.tower.MAX_LEVELS`
         nested levels."""
+        copy = SparseKummerTower(self.context)
+        copy.radicands = list(self.radicands)
+        copy.classes = deepcopy(self.classes)
+        copy.nested = self.nested
+        copy._roots = dict(self._roots)
+        copy._adjoin_proved(x)
+        return copy
+
+    def adjoin_nested(self, x):
+        """The root of x (a positive raw value, not rational) in this tower, extended in
+        place by the level sqrt(x) unless x already is a radicand: a nested radical of the
+        input (:class:`.evaluate.SparseNestedSystem`, which reads every root of a rational
+        first).  FieldTooLargeError as :meth:`extended`."""
+        root = self._roots.get(x)
+        return root if root is not None else self._adjoin_proved(x)
+
+    def _adjoin_proved(self, x):
         if self.nested >= MAX_LEVELS:
             raise FieldTooLargeError(f"more than {MAX_LEVELS} nested radicals over the "
                                      f"sparse Q(zeta_{self.conductor})")
@@ -113,13 +132,10 @@ class SparseKummerTower(CyclotomicTower):
             raise FieldTooLargeError(
                 f"a square root over the sparse Q(zeta_{self.conductor}) that characters do "
                 "not prove new (it may lie in the field: no square-root test there)")
-        copy = SparseKummerTower(self.context)
-        copy.radicands = list(self.radicands) + [x]
-        copy.classes = deepcopy(self.classes)
-        copy.nested = self.nested + 1
-        copy._roots = dict(self._roots)
-        copy._roots[x] = (copy.levels, copy.zero, copy.one)
-        return copy
+        self.radicands.append(x)
+        self.nested += 1
+        root = self._roots[x] = (self.levels, self.zero, self.one)
+        return root
 
     def _check_new_level(self) -> None:
         raise FieldTooLargeError(f"a nested radical over the sparse Q(zeta_{self.conductor})"

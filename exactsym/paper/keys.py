@@ -189,8 +189,8 @@ class LineKey:
                 _quotient_field(*self._vector):
             x, y = self._vector
             s = sign(x)
-            self._text = f"({s}, ({number_text(y)})/({number_text(x)}))" if s else \
-                f"(0, {sign(y)})"
+            self._text = f"(0, {sign(y)})" if not s else f"({s}, 0)" if y == 0 else \
+                f"({s}, ({number_text(y)})/({number_text(x)}))"
         if self._text is None:
             value = self.value
             known = _LINE_VALUES.get(self._slot()) if self._vector is not None else None
