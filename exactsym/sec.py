@@ -18,7 +18,7 @@ from collections.abc import Sequence
 import numpy as np
 from flint import arb, ctx
 
-from .exact import fmpq, sign
+from .exact import FieldElement, fmpq, sign
 from .exact.field import PolyElement
 from .exact.sparse_cyclotomic import SparseCyclotomic
 from .exact.tower import TowerElement
@@ -380,9 +380,42 @@ def smallest_enclosing_circle(points: list[Point], floats=None, errors=None) -> 
 
 
 def _canonical(points, circle: Circle) -> Circle:
-    """Report the support sorted by index (the circle itself is unique)."""
-    return Circle(circle._centre, circle._radius_squared, tuple(sorted(circle.support)),
-                  circle.homogeneous, circle._through)
+    """Report the support sorted by index (the circle itself is unique), and a rational
+    centre as rational (:func:`_rational_centre`)."""
+    support = tuple(sorted(circle.support))
+    centre = _rational_centre(circle.homogeneous)
+    if centre is not None:
+        return Circle(centre, circle._radius_squared, support,
+                      through=circle._through or points[support[0]])
+    return Circle(circle._centre, circle._radius_squared, support, circle.homogeneous,
+                  circle._through)
+
+
+def _rational_centre(homogeneous):
+    """``(X/D, Y/D)`` when both are rational, else None: a rational guessed from Arb balls
+    of the quotients, then proved by X == q D exactly (a scalar product).  Three robots at
+    radii sqrt(1+sqrt(2)), ... about (0, 1/7) gave a determinant D of a tower over the
+    sparse Q(zeta_N), and every |D p - (X, Y)|^2 and every direction D p - (X, Y) of the
+    levels and the polygons carried its terms (100 robots: 8 s of products, 2 s with p - C)."""
+    from fractions import Fraction
+    x, y, d = homogeneous
+    if not isinstance(d, (PolyElement, TowerElement)) or d.is_rational():
+        return None
+    with ctx.workprec(128):
+        bd = d.enclosure(128)
+        out = []
+        for v in (x, y):
+            b = (v.enclosure(128) if isinstance(v, FieldElement) else arb(fmpq(v))) / bd
+            if not b.is_finite() or b.rad() > 2.0 ** -80:
+                return None
+            man, exp = b.mid().man_exp()
+            guess = (Fraction(int(man)) * Fraction(2) ** int(exp)).limit_denominator(1 << 24)
+            q = fmpq(guess.numerator, guess.denominator)
+            if not b.contains(arb(guess.numerator) / guess.denominator) or \
+                    sign(d * q - v) != 0:
+                return None
+            out.append(q)
+    return tuple(out)
 
 
 def sec_by_brute_force(points: list[Point]) -> Circle:

@@ -123,3 +123,18 @@ def test_polar_configuration_off_centre_falls_back_to_cartesian():
     ring = levels_of(config)
     assert not ring.polar
     assert ring.sec.radius_squared < 1
+
+
+def test_a_rational_centre_of_a_tower_is_proved_rational():
+    """sec._rational_centre: (X/D, Y/D) rational only when X = q D exactly; a quotient within
+    10^-40 of a rational (whose ball holds it) stays homogeneous, and so does a centre of a
+    multiquadratic field (no determinant to carry)."""
+    from exactsym.exact import evaluate_all
+    from exactsym.expr import parse_expression
+    from exactsym.sec import _rational_centre
+    _, (d, e) = evaluate_all([parse_expression("2 + sqrt(1+sqrt(2))"),
+                              parse_expression("10^-40*sqrt(1+sqrt(2))")])
+    assert _rational_centre((d * fmpq(1, 7), d * fmpq(-3, 5), d)) == (fmpq(1, 7), fmpq(-3, 5))
+    assert _rational_centre((d * 0, d, d)) == (0, 1)
+    assert _rational_centre((d * fmpq(1, 7) + e, d, d)) is None
+    assert _rational_centre((fmpq(1), fmpq(2), fmpq(3))) is None
