@@ -29,6 +29,8 @@ from math import gcd, isqrt
 
 from flint import acb, arb, ctx, fmpz, fmpz_mod_poly_ctx
 
+from .exact.tower_proof import sqrt_mod
+
 #: the checker decides primality below this by Miller-Rabin (checker_sparse._MR_LIMIT)
 MR_LIMIT = 3317044064679887385961981
 _DISCRIMINANT_LIMIT = 3000
@@ -111,34 +113,9 @@ def _discriminants() -> tuple:
     return tuple(d for _, _, d in sorted(found))
 
 
-def _sqrt_mod(a: int, p: int):
-    """A square root of a modulo the (probable) prime p, or None (Tonelli-Shanks)."""
-    a %= p
-    if a == 0:
-        return 0
-    if pow(a, (p - 1) // 2, p) != 1:
-        return None
-    q, s = p - 1, 0
-    while q % 2 == 0:
-        q, s = q // 2, s + 1
-    z = 2
-    while pow(z, (p - 1) // 2, p) != p - 1:
-        z += 1
-    m, c, t, r = s, pow(z, q, p), pow(a, q, p), pow(a, (q + 1) // 2, p)
-    while t != 1:
-        i, t2 = 0, t
-        while t2 != 1:
-            t2, i = t2 * t2 % p, i + 1
-            if i == m:
-                return None             # p is not prime after all
-        b = pow(c, 1 << (m - i - 1), p)
-        m, c, t, r = i, b * b % p, t * b * b % p, r * b % p
-    return r
-
-
 def _cornacchia(d: int, n: int):
     """(u, v) with u^2 + |d| v^2 = 4 n, or None."""
-    x = _sqrt_mod(d, n)
+    x = sqrt_mod(d, n)
     if x is None:
         return None
     if (x - d) % 2:
@@ -231,7 +208,7 @@ def _curve_and_point(d: int, n: int, s: int, q: int, rng):
 def _random_point(a: int, b: int, n: int, rng):
     for _ in range(64):
         x = rng.randrange(n)
-        y = _sqrt_mod(x ** 3 + a * x + b, n)
+        y = sqrt_mod(x ** 3 + a * x + b, n)
         if y:
             return x, y
     return None

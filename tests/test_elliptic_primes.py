@@ -90,8 +90,8 @@ def test_tampered_elliptic_proofs_are_rejected(chain):
         rhs = (x2 ** 3 + a * x2 + b) % p
         if pow(rhs, (p - 1) // 2, p) == 1:
             break
-    from exactsym.elliptic_primes import _sqrt_mod
-    y2 = _sqrt_mod(rhs, p)
+    from exactsym.exact.tower_proof import sqrt_mod
+    y2 = sqrt_mod(rhs, p)
     with pytest.raises(checker.Invalid, match="is not -P|infinity|not a unit"):
         _elliptic(p, [a, b], [x2, y2], q, proved_primes(chain[:-1]))
     with pytest.raises(checker.Invalid, match="singular"):
@@ -109,10 +109,10 @@ def test_composites_are_not_proved():
     a, b = (int(v) for v in entry["curve"])
     x, y = (int(v) for v in entry["point"])
     # the point modulo s: any point of the curve there; CRT to a point modulo n
-    from exactsym.elliptic_primes import _sqrt_mod
+    from exactsym.exact.tower_proof import sqrt_mod
     xs = 0
     while True:
-        ys = _sqrt_mod((xs ** 3 + a * xs + b) % s, s)
+        ys = sqrt_mod((xs ** 3 + a * xs + b) % s, s)
         if ys:
             break
         xs += 1

@@ -69,7 +69,8 @@ _NON_RESIDUES: dict = {}     # p -> the least quadratic non-residue mod p
 
 
 def sqrt_mod(a: int, p: int):
-    """A square root of a modulo the odd prime p, or None (Tonelli-Shanks)."""
+    """A square root of a modulo the odd prime p, or None (Tonelli-Shanks; also None when
+    the search shows p composite)."""
     a %= p
     if a == 0:
         return 0
@@ -91,6 +92,8 @@ def sqrt_mod(a: int, p: int):
         i, t2 = 0, t
         while t2 != 1:
             t2, i = t2 * t2 % p, i + 1
+            if i == m:
+                return None             # p is not prime (a probable prime of ECPP)
         b = pow(c, 1 << (m - i - 1), p)
         m, c, t, r = i, b * b % p, t * b * b % p, r * b % p
     return r
