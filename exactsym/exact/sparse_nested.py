@@ -116,10 +116,10 @@ def _roots_of(embedding: _Embedding, radicands, levels) -> dict | None:
     return roots
 
 
-def _primes(context, count: int, modulus: int):
-    """Primes l = k M + 1 (M = ``modulus``, a multiple of N; k from 2^20: l far above the
-    small denominators) with g a primitive N-th root of unity mod l."""
-    n, k, found = context.n, 1 << 20, 0
+def _primes(context, count: int, modulus: int, start: int = 1 << 20):
+    """Primes l = k M + 1 (M = ``modulus``, a multiple of N; k from ``start``, by default
+    2^20: l far above the small denominators) with g a primitive N-th root of unity mod l."""
+    n, k, found = context.n, start, 0
     while found < count:
         l = k * modulus + 1
         k += 1
@@ -215,7 +215,9 @@ def level_witness(tower, index: int, limit: int):
     split = _split_modulus(tower.context.n, [q for q in (_rational(radicands[j - 1])
                                                           for j in below) if q is not None])
     units = _units(tower.context.n, _CONJUGATES)
-    for l, g in _primes(tower.context, _PRIMES, split):
+    # from k = 1: the checker's Miller-Rabin bound is near 3.3 * 10^24 (a denominator that
+    # l divides makes an image undefined, and the next prime is taken)
+    for l, g in _primes(tower.context, _PRIMES, split, start=1):
         if l >= limit:
             return None
         for u in units:
