@@ -12,6 +12,7 @@ from fractions import Fraction
 
 import pytest
 from flint import fmpq
+from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
 from exactsym.certificate import make_certificate
@@ -181,3 +182,31 @@ def test_a_rational_centre_keeps_the_plain_directions(tmp_path):
         assert polygon.directions == tuple((config.points[i][0] - cx, config.points[i][1] - cy)
                                            for i in polygon.labels)
         assert level_verdicts(polygon) == level_verdicts(level_polygon(config, levels, index))
+
+
+@settings(max_examples=6, deadline=None)
+@given(st.integers(2, 5), st.lists(st.integers(1, 96), min_size=2, max_size=3),
+       st.integers(0, 96), st.sampled_from([("0", "0"), ("1", "1/3"), ("-2/5", "7")]),
+       st.booleans())
+def test_turning_and_translating_keeps_the_group(tmp_path_factory, k, offsets, turn, shift,
+                                                 mirror):
+    """Metamorphic: orbits of C_k at radii sqrt(1+sqrt(2)), 2, 3 with offsets j/97 (over the
+    sparse base) keep their group when every turn gains turn/97 and the set is translated
+    by a rational vector; the group is C_k, D_k with each offset's mirror image added."""
+    tmp = tmp_path_factory.mktemp("turned")
+    radii = ("sqrt(1+sqrt(2))", "2", "3")
+
+    def rows(extra, centre):
+        out = []
+        for r, j in zip(radii, offsets):
+            for base in ([j, -j] if mirror else [j]):
+                out += _ring(r, Fraction(base + extra, 97), k, *centre)
+        return out
+    groups = []
+    for extra, centre in ((0, ("0", "0")), (turn, shift)):
+        config = load(_write(tmp, f"g{extra}.toml", rows(extra, centre)))
+        assert isinstance(config.system, SparseNestedSystem)
+        groups.append(symmetry_group(config, levels_of(config)).name)
+    assert groups[0] == groups[1]
+    # a mirror common to rings turned by j/97 and j'/97 needs 97 | j - j' (k <= 5)
+    assert groups[0] == (f"D{k}" if mirror or len(set(offsets)) == 1 else f"C{k}")
