@@ -194,6 +194,24 @@ def test_same_verdicts_as_the_primitive_element_path(tmp_path, rows, monkeypatch
         [lev.points for lev in general_levels.levels]
 
 
+@pytest.mark.parametrize("rows", SMALL)
+def test_same_verdicts_over_the_sparse_base(tmp_path, rows, monkeypatch):
+    """The tower over the sparse Q(zeta_N) (beyond the dense base bound, exact/evaluate.py
+    SparseNestedSystem) forced on inputs the dense tower reads: the same group, ordering,
+    leader and levels."""
+    path = _file(tmp_path, rows, "c.toml")
+    config = load(path)
+    dense, dense_levels = symmetry_group(config), levels_of(config)
+    monkeypatch.setattr(EVALUATE, "_mixed_system", EVALUATE._sparse_nested_system)
+    config = load(path)
+    assert type(config.system).__name__ == "SparseNestedSystem"
+    sparse, sparse_levels = symmetry_group(config), levels_of(config)
+    assert (dense.name, dense.orderable, dense.ordering, dense.leader) == \
+        (sparse.name, sparse.orderable, sparse.ordering, sparse.leader)
+    assert [lev.points for lev in dense_levels.levels] == \
+        [lev.points for lev in sparse_levels.levels]
+
+
 # ------------------------------------------------------------------ certificates
 def _cert(tmp_path, rows: list[str]) -> dict:
     cert = json.loads(json.dumps(make_certificate(load(_file(tmp_path, rows, "c.toml")))))
