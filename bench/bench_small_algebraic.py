@@ -147,21 +147,6 @@ def mixed_inputs() -> dict[str, str]:
                   for j in range(5)]
     out["nested3+cos, 100 pts C5"] = _cartesian(orbit)
     out["nested3+cos, 100 pts asym"] = _cartesian(orbit[:-1] + [("1/7", "2/7")])
-    # beyond the dense base (phi(M) > 192: formerly refused): the tower over the sparse
-    # Q(zeta_N), nested radicals as levels proved new by characters (exact/sparse_nested.py)
-    for den in (97, 999983):
-        draw = random.Random(den)
-        rows, seen = [], set()
-        while len(rows) < 100:
-            t = draw.randrange(1, den)
-            r = draw.choice(("sqrt(1+sqrt(2))", "sqrt(2+sqrt(5))", "1", "sqrt(3)", "2"))
-            if (t, r) not in seen:
-                seen.add((t, r))
-                rows.append((f"{r}*cos(2*pi*{t}/{den})", f"{r}*sin(2*pi*{t}/{den}) + 1/7"))
-        out[f"nested+cos j/{den}, 100 pts asym"] = _cartesian(rows)
-    ring = [(f"1 + {r}*cos(2*pi*({a} + {j}/7))", f"1/3 + {r}*sin(2*pi*({a} + {j}/7))")
-            for r, a in (("sqrt(1+sqrt(2))", "1/97"), ("3", "3/101")) for j in range(7)]
-    out["nested+cos j/97, C7 off centre"] = _cartesian(ring)
     return out
 
 

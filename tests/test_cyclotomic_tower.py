@@ -158,6 +158,20 @@ def test_printed_mixed_numbers_read_back(data, gens):
     assert a == b
 
 
+def test_base_bound_is_refused_before_any_work(tmp_path):
+    """Beyond the dense base the input is refused at once (the sparse tower exists,
+    tests/test_sparse_nested_input.py, but is not reached from input: see
+    evaluate._sparse_nested_system)."""
+    start = time.perf_counter()
+    with pytest.raises(FieldTooLargeError, match="above the limit 192"):
+        _values("sqrt(1+sqrt(2))", "cos(2*pi/1009)")
+    path = tmp_path / "big.toml"
+    path.write_text('format = 1\npoints = [["sqrt(1+sqrt(2))", "cos(2*pi/1009)"], ["0", "1"]]\n')
+    with pytest.raises(InputError, match="above the limit"):
+        load(str(path)).points
+    assert time.perf_counter() - start < 2
+
+
 # ------------------------------------------------------------------ differential test
 SMALL = [
     ['["sqrt(1+sqrt(2))", "0"]', '["cos(2*pi/5)", "sin(2*pi/5)"]', '["1", "1"]'],

@@ -93,6 +93,9 @@ def test_line_keys_undivided_agree_with_their_values(ts, ss):
         assert key.value == value
         assert LineKey.of(value) == key and hash(LineKey.of(value)) == hash(key)
         assert key.text == LineKey.of(value).text
+        # one key per vector object (a lone vertex's mirror is the line of its direction:
+        # equal without exact products); an equal vector made apart gets an equal key
+        assert line_key(False, v) is key and line_key(False, (x * 1, y * 1)) == key
 
 
 @settings(max_examples=15, deadline=None)

@@ -12,9 +12,9 @@ exact, which is all the tower's structural equality and hash ask of its base val
 There is no square-root test in the sparse base.  A nested radical is a new level when
 Legendre characters prove its radicand no square of the top field (:mod:`.sparse_nested`):
 MakeAsym's radial move (a root of a ratio of squared radii) gets a copy of the tower with
-that level (:meth:`SparseKummerTower.extended`), a nested radical of the input extends the
-tower in place (:meth:`SparseKummerTower.adjoin_nested`, after every root of a rational of
-the input); a radicand the characters do not settle (it may be a square, e.g. a denesting)
+that level (:meth:`SparseKummerTower.extended`), a nested radical read by
+:func:`.evaluate._sparse_nested_system` (not yet reached from input) extends the tower in
+place (:meth:`SparseKummerTower.adjoin_nested`, after every root of a rational); a radicand the characters do not settle (it may be a square, e.g. a denesting)
 is refused (FieldTooLargeError, exit 2).  Above a nested level a rational whose root would
 need a new level is refused (rational levels come first, so that
 :class:`.kummer.SquareClasses` still indexes them).  A rational whose class needs a Gauss sum of

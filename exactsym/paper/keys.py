@@ -414,12 +414,29 @@ def bisector_key(polar: bool, a, b) -> LineKey:
     return _product_line(a, b)
 
 
+_PRODUCT_LINES: dict = {}   # (id(a), id(b)) -> (a, b, key): one key per pair of vectors
+
+
 def _product_line(a, b) -> LineKey:
     """The key of the line whose doubled angle has the direction of the complex product
     a b = (a_x b_x - a_y b_y, a_x b_y + a_y b_x) (a == b: the line along a).  In a large
     cyclotomic field the key is made without that product when filters settle it
     (:func:`lazy_line_canon`); the product is then made only if the line's value, text or
-    an exact equality asks for it."""
+    an exact equality asks for it.  One key per pair of vector objects (the entry keeps
+    them, so an id is not reused): the line of a lone vertex, its mirror, is the line of
+    its direction, and two keys made apart were equal only by exact products, minutes in
+    a tower over the sparse base with a centre of thousands of terms."""
+    hit = _PRODUCT_LINES.get((id(a), id(b)))
+    if hit is not None and hit[0] is a and hit[1] is b:
+        return hit[2]
+    key = _made_product_line(a, b)
+    if len(_PRODUCT_LINES) >= 1 << 14:
+        _PRODUCT_LINES.clear()
+    _PRODUCT_LINES[(id(a), id(b))] = (a, b, key)
+    return key
+
+
+def _made_product_line(a, b) -> LineKey:
     def make():
         return complex_product(a, b)
     canon = lazy_line_canon(a, b, make)
