@@ -628,9 +628,9 @@ def _sparse_nested_system(atoms):
     Not yet reached from input (:func:`_mixed_system` refuses beyond the dense base): on
     30 random sets of rings with nested radii and turns j/53 to j/999983 it answered 25,
     24 certified in about a second each, but two robots on two nested radii took a minute
-    to certify, and five sets ran past two minutes (near misses at 10^-30: the paper
-    layer's exact SEC of the moved configurations, numbers of thousands of terms about an
-    irrational centre).  Tested by swapping it in (tests/test_sparse_nested_input.py);
+    to certify, and five sets ran past two minutes (a mirror pair of two such pairs, and
+    four near misses at 10^-30 in the paper layer's exact SEC of the moved
+    configurations: numbers of thousands of terms about an irrational centre).  Tested by swapping it in (tests/test_sparse_nested_input.py);
     its levels certify (``checker_tower_sparse``)."""
     system = SparseNestedSystem(_cosine_conductor(atoms))
     for atom in atoms:
