@@ -232,11 +232,15 @@ class SparseField:
 
     def residue(self, terms: dict, den: int) -> int:
         """(sum c (g^e + g^-e)/2) / den modulo l."""
-        ell, g, n = self.ell, self.g, self.n
-        total = 0
+        return self.image(terms, den, self.ell, self.g)
+
+    def image(self, terms: dict, den: int, p: int, w: int) -> int:
+        """(sum c (w^e + w^-e)/2) / den modulo the odd prime p (zeta_N -> w, w of order N;
+        den prime to p)."""
+        n, total = self.n, 0
         for e, c in terms.items():
-            total += c * (pow(g, e, ell) + pow(g, n - e, ell))
-        return total * pow(2 * den, -1, ell) % ell
+            total += c * (pow(w, e, p) + pow(w, n - e, p))
+        return total * pow(2 * den, -1, p) % p
 
     # -- the zero test -----------------------------------------------------------
     def is_zero(self, terms: dict) -> bool:

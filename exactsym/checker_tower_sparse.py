@@ -146,26 +146,23 @@ class SparseKummerTower(Tower):
              "below")
         roots = [integer(str(t)) % p for t in roots]
         for j, rj in enumerate(self.r):
-            image = _image(rj, p, w, n, roots)
+            image = _image(rj, p, w, roots)
             need(image is not None and image != 0,
                  f"{where}: radicand {j + 1} is not a unit modulo {p}")
             need((roots[j] * roots[j] - image) % p == 0,
                  f"{where}: {roots[j]} is not a root of radicand {j + 1} modulo {p}")
-        image = _image(r, p, w, n, roots)
+        image = _image(r, p, w, roots)
         need(image is not None and pow(image, (p - 1) // 2, p) == p - 1,
              f"{where}: the radicand's image is not a non-residue modulo {p}")
 
 
-def _image(x, p: int, w: int, n: int, roots: list):
+def _image(x, p: int, w: int, roots: list):
     """phi(x): zeta_N -> w, y_j -> roots[j - 1]; None when a denominator is divisible by p."""
     if isinstance(x, tuple):
         lev, a, b = x
-        ia, ib = _image(a, p, w, n, roots), _image(b, p, w, n, roots)
+        ia, ib = _image(a, p, w, roots), _image(b, p, w, roots)
         return None if ia is None or ib is None else (ia + ib * roots[lev - 1]) % p
-    if x.den % p == 0:
-        return None
-    total = sum(c * (pow(w, e, p) + pow(w, n - e, p)) for e, c in x.t.items())
-    return total * pow(2 * x.den, -1, p) % p
+    return None if x.den % p == 0 else x.f.image(x.t, x.den, p, w)
 
 
 def _rational(x):

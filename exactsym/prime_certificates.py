@@ -30,11 +30,11 @@ from math import gcd, isqrt, prod
 
 from flint import fmpz
 
-from .elliptic_primes import EllipticError, elliptic_proofs
+# MR_LIMIT: the checker's deterministic Miller-Rabin test decides below it (defined once, in
+# the module this one builds on)
+from .elliptic_primes import MR_LIMIT, EllipticError, elliptic_proofs
 from .exact.factor import factorization
 
-#: the checker's deterministic Miller-Rabin test decides below this (checker_sparse._MR_LIMIT)
-MR_LIMIT = 3317044064679887385961981
 #: a composite cofactor of p - 1 left by the smooth passes is factored completely up to this
 FULL_DIGITS = 56
 _SMOOTH_BITS = (32, 48, 60)

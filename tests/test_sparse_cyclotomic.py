@@ -6,14 +6,12 @@ numbers read back; the big conductor of the issue is answered."""
 
 from __future__ import annotations
 
-import time
-
 import pytest
 from flint import fmpq
 from hypothesis import assume, given, settings, strategies as st
 
 from exactsym.configuration import load
-from exactsym.errors import FieldTooLargeError, InputError
+from exactsym.errors import FieldTooLargeError
 from exactsym.exact import cyclotomic, evaluate, exact_key, number_text
 from exactsym.exact.evaluate import SparseCyclotomicSystem, dense_degree_limit, number_system
 from exactsym.exact.sparse_cyclotomic import (SparseCyclotomic, cos_turn, from_poly_element,

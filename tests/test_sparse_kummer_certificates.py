@@ -236,7 +236,7 @@ def test_the_ordering_filter_agrees_with_exact_products():
     signs of u . v and u x v and the order of two angles read from boxes are the exact
     ones (an unboxed plane of the same directions computes the products), and ties -- two
     points on one ray, equal angles -- fall back to the exact products."""
-    from exactsym.checker_ordering import _Angle, _Plane
+    from exactsym.checker_ordering import _Plane
     field = SparseKummerTower(_tower(3999932, [145, 374, 7], ["11999797", "35999389",
                                                              "71998777"]))
     nums = [field.num(v) for v in ([1, "0", {"4": "1"}], [2, "1/3", {"600": "-1"}],
