@@ -27,10 +27,10 @@ import time
 from pathlib import Path
 
 from exactsym import checker
-from exactsym.cli import main as cli_main
-from exactsym.configuration import load
-from exactsym.levels import levels_of
-from exactsym.symmetry import symmetry_group
+from exactsym.cli.main import main as cli_main
+from exactsym.geometry.configuration import load
+from exactsym.geometry.levels import levels_of
+from exactsym.truth.symmetry import symmetry_group
 
 
 def d4_rational(path: Path, n: int = 100_000, seed: int = 3) -> None:

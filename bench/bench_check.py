@@ -70,10 +70,10 @@ CASES = {
 
 
 def run_case(key: str) -> dict:
-    from exactsym.configuration import load, no_cycle_collection
-    from exactsym.levels import levels_of
-    from exactsym.report import check_report, json_text
-    from exactsym.symmetry import symmetry_group
+    from exactsym.geometry.configuration import load, no_cycle_collection
+    from exactsym.geometry.levels import levels_of
+    from exactsym.report.check import check_report, json_text
+    from exactsym.truth.symmetry import symmetry_group
 
     path = Path(tempfile.mkdtemp()) / f"{key}.txt"
     path.write_text(CASES[key][1]())

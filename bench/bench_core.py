@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 from float_points import read_float_points
 
-from exactsym.configuration import load
-from exactsym.levels import levels_of
+from exactsym.geometry.configuration import load
+from exactsym.geometry.levels import levels_of
 
 
 def float_pipeline(path: Path) -> int:

@@ -18,8 +18,8 @@ import time
 
 from flint import fmpz
 
-from exactsym.checker_sparse import proved_primes
-from exactsym.prime_certificates import PrimalityError, primality_proofs
+from exactsym.checker.sparse import proved_primes
+from exactsym.certify.primes import PrimalityError, primality_proofs
 
 
 def _next_prime(n: int) -> int:

@@ -36,9 +36,9 @@ from pathlib import Path
 
 TRUTH = """
 import sys, time
-from exactsym.configuration import load
-from exactsym.levels import levels_of
-from exactsym.symmetry import symmetry_group
+from exactsym.geometry.configuration import load
+from exactsym.geometry.levels import levels_of
+from exactsym.truth.symmetry import symmetry_group
 start, cpu = time.perf_counter(), time.process_time()
 config = load(sys.argv[1])
 group = symmetry_group(config, levels_of(config))

@@ -131,9 +131,9 @@ def float_pipeline(path: Path) -> str:
 # ---------------------------------------------------------------- one case, in a child
 
 def run_case(key: str) -> dict:
-    from exactsym.configuration import load
-    from exactsym.levels import levels_of
-    from exactsym.symmetry import symmetry_group
+    from exactsym.geometry.configuration import load
+    from exactsym.geometry.levels import levels_of
+    from exactsym.truth.symmetry import symmetry_group
 
     path = Path(tempfile.mkdtemp()) / f"{key}.txt"
     path.write_text(CASES[key][1]())

@@ -115,7 +115,7 @@ class _Timeout(Exception):
 
 def run_case(path: Path, timeout: float) -> dict:
     """certify then verify ``path``; the outcome, times, group and field of the certificate."""
-    from exactsym.cli import main as cli_main
+    from exactsym.cli.main import main as cli_main
     cert = path.with_suffix(".cert.json")
     row = {"outcome": "ok", "certify": None, "verify": None, "group": "", "field": "", "why": ""}
 

@@ -27,15 +27,15 @@ imports matplotlib only when it is called.
 
 from importlib import import_module
 
-__version__ = "0.1.0"
+from .version import __version__
 
 #: name -> the module that defines it (imported on first use).
 _EXPORTS = {
-    "load": ".configuration", "Configuration": ".configuration",
+    "load": ".geometry.configuration", "Configuration": ".geometry.configuration",
     "analyse": ".analysis", "Analysis": ".analysis", "Options": ".analysis",
-    "symmetry_group": ".symmetry", "SymmetryGroup": ".symmetry",
-    "report_text": ".report", "report_json": ".report",
-    "near_symmetry_hint": ".near_symmetry",
+    "symmetry_group": ".truth.symmetry", "SymmetryGroup": ".truth.symmetry",
+    "report_text": ".report.check", "report_json": ".report.check",
+    "near_symmetry_hint": ".truth.near_symmetry",
     "InputError": ".errors",
 }
 

@@ -7,7 +7,7 @@
                                    -> paper, whole family (Preprocess, MakeAsym, ElectLeader)
                                    -> audit (paper against truth)
 
-Every command and both renderings of the report (:mod:`exactsym.report`: JSON and text)
+Every command and both renderings of the report (:mod:`exactsym.report.check`: JSON and text)
 read the :class:`Analysis` it returns; nothing appends itself to anything at import.
 """
 
@@ -15,13 +15,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from .audit import audit as run_audit
-from .configuration import Configuration, no_cycle_collection
-from .levels import Level, Levels, RationalLevels, levels_of
+from .audit.statements import audit as run_audit
+from .geometry.configuration import Configuration, no_cycle_collection
+from .geometry.levels import Level, Levels, RationalLevels, levels_of
 from .paper.family import DEFAULT_LIMITS, PaperResult, paper_procedure
 from .paper.homogeneous import forget as forget_directions
 from .paper.polygon_report import level_section
-from .symmetry import SymmetryGroup, symmetry_group
+from .truth.symmetry import SymmetryGroup, symmetry_group
 
 #: The parts :func:`analyse` can compute, in the order it computes them.
 PARTS = ("truth", "polygons", "family", "audit")
@@ -60,7 +60,7 @@ class Analysis:
     ``level_verdicts``: per level, the polygon layer's verdicts (a JSON-ready dict, None
     for the robot at C); ``level_strings``: per level, the CW/ACW strings (None unless
     ``options.strings``); ``paper``: the family layer's result; ``audit``: the audit's
-    JSON-ready dict (:func:`exactsym.audit.audit`)."""
+    JSON-ready dict (:func:`exactsym.audit.statements.audit`)."""
     config: Configuration
     options: Options
     levels: Levels

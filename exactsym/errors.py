@@ -63,7 +63,7 @@ class FieldTooLargeError(InputError):
 
 
 class MoveImpossible(Exception):
-    """A move or change of frame of a :class:`~exactsym.configuration.Configuration`
+    """A move or change of frame of a :class:`~exactsym.geometry.configuration.Configuration`
     cannot be made: robots would coincide or overlap, or the new position is not exact in
     the configuration's numbers.  Not the user's fault (not an :class:`InputError`): the
     algorithm that asked for the move decides what it means."""

@@ -12,7 +12,7 @@ Import with ``from strategies import ...`` (pytest puts ``tests/`` on the path).
   :func:`polar_group_points` (Ck / Dk for any k, as ``(r, turn)`` pairs);
   both are filtered to have *exactly* that group by the brute-force oracles
   :func:`brute_force_group` and :func:`brute_force_polar_group`, which share no
-  code with ``exactsym.symmetry``;
+  code with ``exactsym.truth.symmetry``;
 * :func:`polar_configuration` / :func:`shuffled` build inputs from them.
 """
 
@@ -23,10 +23,10 @@ from fractions import Fraction
 
 from hypothesis import strategies as st
 
-from exactsym.fileformat import ConfigFile, PointSpec
-from exactsym.configuration import Configuration, from_file
+from exactsym.io.fileformat import ConfigFile, PointSpec
+from exactsym.geometry.configuration import Configuration, from_file
 from exactsym.exact import fmpq
-from exactsym.exprtree import Const
+from exactsym.io.exprtree import Const
 
 Q = fmpq
 

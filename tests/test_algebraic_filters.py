@@ -1,4 +1,4 @@
-"""The Arb-ball filters of the truth for irrational coordinates (exactsym/algebraic_filtered.py)
+"""The Arb-ball filters of the truth for irrational coordinates (exactsym/geometry/algebraic_filtered.py)
 decide exactly as the exact path: same levels (with their exact radii), same group, same
 canonical ordering, leader, reference and symmetries, on adversarial near-ties (points
 moved by 1e-30 off a symmetric position), on genuinely equal distances spelled with
@@ -15,14 +15,14 @@ from flint import arb
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-import exactsym.levels as levels_module
-from exactsym.configuration import Similarity, _coincident, from_file
+import exactsym.geometry.levels as levels_module
+from exactsym.geometry.configuration import Similarity, _coincident, from_file
 from exactsym.errors import InputError
 from exactsym.exact import exact_key, fmpq, number_text
 from exactsym.exact.field import PolyElement
-from exactsym.fileformat import parse_config_text
-from exactsym.levels import AlgebraicLevels, levels_of
-from exactsym.symmetry import _certified_c1, symmetry_group
+from exactsym.io.fileformat import parse_config_text
+from exactsym.geometry.levels import AlgebraicLevels, levels_of
+from exactsym.truth.symmetry import _certified_c1, symmetry_group
 
 
 def _config(rows: list[tuple[str, str]]):
@@ -302,7 +302,7 @@ def test_filtered_equals_exact_on_mixed_fields(rows):
     [("sqrt(2+sqrt(3))/2", "(sqrt(3)-1)^-2"), ("1", "0"), ("0", "sqrt(5-sqrt(2))")],
 ])
 def test_expression_balls_enclose_the_exact_values(rows):
-    from exactsym.algebraic_filtered import coordinate_balls
+    from exactsym.geometry.algebraic_filtered import coordinate_balls
     config = _config(rows)
     xs, ys = coordinate_balls(config.points, specs=config.specs)
     for (x, y), bx, by in zip(config.points, xs, ys):
@@ -317,7 +317,7 @@ def test_radii_from_the_divided_centre_are_the_squared_distances(den):
     """AlgebraicLevels writes |p - C|^2 as |p|^2 - 2 p.C + |C|^2 (|C|^2 once): each level's
     squared radius equals (x - cx)^2 + (y - cy)^2 of its points, exactly, for polar files
     about a centre off the origin (Q(zeta_4 den): the radicals p and 2p fold too)."""
-    from exactsym.fileformat import parse_config_text as parse
+    from exactsym.io.fileformat import parse_config_text as parse
     # the SEC through three robots of radii 5, 6, 7 a third of a turn apart: C = (X/D, Y/D)
     # with D irrational
     turns = [(5, 0), (6, den // 3), (7, 2 * den // 3), (1, 1), (2, 2), (3, den // 2)]

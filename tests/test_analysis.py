@@ -1,14 +1,14 @@
-"""The analysis pipeline (exactsym.analysis) and the command table (exactsym.cli)."""
+"""The analysis pipeline (exactsym.analysis) and the command table (exactsym.cli.main)."""
 
 from __future__ import annotations
 
 import pytest
 
-from exactsym import cli
+from exactsym.cli import main as cli
 from exactsym.analysis import PARTS, Options, analyse
-from exactsym.configuration import load
-from exactsym.report import EXPECTATIONS, report_json
-from exactsym.fileformat import EXPECT_KEYS
+from exactsym.geometry.configuration import load
+from exactsym.report.check import EXPECTATIONS, report_json
+from exactsym.io.fileformat import EXPECT_KEYS
 
 CASE = "cases/family/single-vertex-on-mirror.toml"
 
@@ -43,7 +43,7 @@ def test_unknown_part_is_an_error():
 
 def test_every_expect_key_has_exactly_one_check():
     from exactsym.gathering.cases import CHECKED_KEYS, SETTING_KEYS
-    from exactsym.report import GATHER_PREFIX
+    from exactsym.report.check import GATHER_PREFIX
     check_keys = {k for k in EXPECT_KEYS if not k.startswith(GATHER_PREFIX)}
     assert set(EXPECTATIONS) == check_keys
     assert {k for k in EXPECT_KEYS if k.startswith(GATHER_PREFIX)} == \

@@ -11,9 +11,9 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 
-DOCUMENTED = ["exactsym", "exactsym.configuration", "exactsym.analysis", "exactsym.symmetry",
-              "exactsym.text_numbers", "exactsym.summary"]
-# (exactsym.near_symmetry and exactsym.pictures are doctested by their own test modules)
+DOCUMENTED = ["exactsym", "exactsym.geometry.configuration", "exactsym.analysis", "exactsym.truth.symmetry",
+              "exactsym.exact.text_numbers", "exactsym.report.summary"]
+# (exactsym.truth.near_symmetry and exactsym.pictures are doctested by their own test modules)
 
 
 @pytest.mark.parametrize("name", DOCUMENTED)
@@ -25,7 +25,10 @@ def test_docstring_examples_run(name, monkeypatch):
 
 def test_the_four_names_and_their_docstrings():
     import exactsym
-    from exactsym import analyse, load, plot, symmetry_group
+    from exactsym import analyse
+    from exactsym import load
+    from exactsym import plot
+    from exactsym import symmetry_group
     for function in (load, analyse, symmetry_group, plot):
         assert callable(function) and ">>> " in function.__doc__, function
     assert set(exactsym.__all__) >= {"load", "analyse", "symmetry_group", "plot"}

@@ -73,7 +73,7 @@ def test_dense_product_of_full_elements():
 # -- tower products: scaled to integer coefficients, then divided back ----------------------
 from exactsym.exact import evaluate_all  # noqa: E402
 from exactsym.exact.tower import TowerElement  # noqa: E402
-from exactsym.expr import parse_expression  # noqa: E402
+from exactsym.io.expr import parse_expression  # noqa: E402
 
 TOWER_GENERATORS = ["sqrt(2+sqrt(3+sqrt(5)))", "sqrt(7-sqrt(2+sqrt(3)))", "sqrt(5-sqrt(2))"]
 

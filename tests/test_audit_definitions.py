@@ -19,17 +19,17 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from exactsym.analysis import analyse
-from exactsym.audit import DISCREPANCY_KINDS, NOTE_KINDS, audit
-from exactsym.audit_levels import level_findings
-from exactsym.configuration import Configuration, load
+from exactsym.audit.statements import DISCREPANCY_KINDS, NOTE_KINDS, audit
+from exactsym.audit.levels import level_findings
+from exactsym.geometry.configuration import Configuration, load
 from exactsym.exact import fmpq
-from exactsym.levels import levels_of
+from exactsym.geometry.levels import levels_of
 from exactsym.paper import family as F
 from exactsym.paper import polygon as P
 from exactsym.paper.circle_polygon import level_polygon, polygon_from_directions
 from exactsym.paper.family.elect_leader import line_four
 from exactsym.paper.polygon_report import level_reports
-from exactsym.report import report_json
+from exactsym.report.check import report_json
 from strategies import (PolarSimilarity, polar_configuration, polar_group_points,
                         rational_group_points, similarities)
 
@@ -248,7 +248,7 @@ def test_frames_parting_after_the_first_rounds_epsilon_move_is_not_a_discrepancy
     MakeAsym runs a second round (robot 2 to G_t's circle) while the file's frame stops
     after one: the move lists differ, yet on each configuration after round one both
     frames act alike -- the mover's choice of sense, not a frame-dependent leader."""
-    from exactsym.audit import _procedure
+    from exactsym.audit.statements import _procedure
     config = load(CASES / "gathering/reaches-symmetric-configuration.toml")
     ident, refl = _procedure(config, "identity", {}), _procedure(config, "reflection", {})
     assert [m["robot"] for m in ident.moves] == [0, 4]

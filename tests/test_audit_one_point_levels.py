@@ -1,4 +1,4 @@
-"""exactsym/audit_groups.py fact 4 (a union of one-point levels is orderable) against the
+"""exactsym/audit/groups.py fact 4 (a union of one-point levels is orderable) against the
 groups the truth computes for those unions."""
 
 from __future__ import annotations
@@ -8,9 +8,9 @@ from itertools import combinations
 
 from hypothesis import given, settings, strategies as st
 
-from exactsym.audit_groups import SubGroups, group_about_centre
-from exactsym.levels import levels_of
-from exactsym.symmetry import symmetry_group
+from exactsym.audit.groups import SubGroups, group_about_centre
+from exactsym.geometry.levels import levels_of
+from exactsym.truth.symmetry import symmetry_group
 from strategies import polar_configuration
 
 

@@ -15,8 +15,8 @@ from pathlib import Path
 
 import pytest
 
-from exactsym.cases_cli import case_files, run_case, run_cases
-from exactsym.fileformat import read_config
+from exactsym.report.cases import case_files, run_case, run_cases
+from exactsym.io.fileformat import read_config
 
 
 CASES = Path(__file__).resolve().parent.parent / "cases"

@@ -23,10 +23,10 @@ import pytest
 from flint import fmpq, fmpz_poly, nmod_poly
 
 from exactsym import checker
-from exactsym.certificate import CertificateError, make_certificate
-from exactsym.cli import main as cli_main
-from exactsym.configuration import Configuration, load
-from exactsym.symmetry import symmetry_group
+from exactsym.certify.certificate import CertificateError, make_certificate
+from exactsym.cli.main import main as cli_main
+from exactsym.geometry.configuration import Configuration, load
+from exactsym.truth.symmetry import symmetry_group
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLES = ROOT / "cases" / "examples"
@@ -222,7 +222,7 @@ def test_levels_by_balls_compare_only_overlapping_points_exactly():
     point, the centre left out), with exact squared distances asked only for the points
     whose balls meet another's or hold 0."""
     from flint import arb
-    from exactsym.certificate import _levels_by_balls
+    from exactsym.certify.certificate import _levels_by_balls
     norms = [Fraction(2), Fraction(5), Fraction(2), Fraction(0), Fraction(7), Fraction(9, 2),
              Fraction(5), Fraction(1, 3)]
     asked = []
@@ -483,7 +483,7 @@ def test_malformed_certificates(tmp_path):
 # ------------------------------------------------------------------ hand-made symmetry data
 def test_certificate_from_hand_made_group():
     """make_certificate needs only the group's generators and permutations: a group written by
-    hand (no exactsym.symmetry) gives a certificate that verifies, and a wrong one does not."""
+    hand (no exactsym.truth.symmetry) gives a certificate that verifies, and a wrong one does not."""
     config = Configuration.from_points([(0, 0), (2, 0), (2, 2), (0, 2)])
     one, zero = fmpq(1), fmpq(0)
     iso = lambda kind, matrix, perm: SimpleNamespace(kind=kind, centre=(one, one), turn=None,
@@ -541,9 +541,9 @@ def test_interval_must_isolate_one_root():
 
 
 # ------------------------------------------------------------------ the checker's parts
-CHECKER_MODULES = ("checker", "checker_numbers", "checker_groups", "checker_ordering",
-                   "checker_refutations", "checker_sparse", "checker_tower",
-                   "checker_tower_cyclotomic", "checker_tower_sparse")
+CHECKER = ROOT / "exactsym" / "checker"
+CHECKER_MODULES = ("__init__", "__main__", "arithmetic", "groups", "ordering", "refutations",
+                   "sparse", "tower", "tower_cyclotomic", "tower_sparse")
 
 
 def test_checker_imports_only_the_standard_library():
@@ -551,27 +551,28 @@ def test_checker_imports_only_the_standard_library():
     when run as a lone script), the other checker modules: nothing else of exactsym."""
     allowed = {"__future__", "fractions", "json", "math", "sys", "argparse", "dataclasses",
                "typing", "itertools", "functools", "collections", "hashlib", "re", "gc"}
-    assert sorted(p.stem for p in (ROOT / "exactsym").glob("checker*.py")) == \
-        sorted(CHECKER_MODULES)
+    assert sorted(p.stem for p in CHECKER.glob("*.py")) == sorted(CHECKER_MODULES)
+    siblings = set(CHECKER_MODULES) | {f"checker_{m}" for m in CHECKER_MODULES} | {"checker_numbers"}
     for module in CHECKER_MODULES:
-        tree = ast.parse((ROOT / "exactsym" / f"{module}.py").read_text())
+        tree = ast.parse((CHECKER / f"{module}.py").read_text())
         imported = set()
         for node in ast.walk(tree):
             if isinstance(node, ast.Import):
                 imported.update(alias.name.split(".")[0] for alias in node.names)
             elif isinstance(node, ast.ImportFrom):
                 if node.level:
-                    assert node.level == 1 and node.module in CHECKER_MODULES, (module, node.module)
-                elif node.module not in CHECKER_MODULES:
+                    assert node.level == 1 and (node.module is None or node.module in siblings), \
+                        (module, node.module)
+                elif node.module not in siblings:
                     imported.add(node.module.split(".")[0])
         assert imported <= allowed, (module, imported - allowed)
     code = ("import sys, exactsym.checker; print(sorted(m for m in sys.modules if "
             "m.split('.')[0] in ('exactsym', 'flint', 'sympy', 'networkx')))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert out.stdout.split() == [
-        "['exactsym',", "'exactsym.checker',", "'exactsym.checker_groups',",
-        "'exactsym.checker_numbers',", "'exactsym.checker_ordering',",
-        "'exactsym.checker_refutations']"], out
+        "['exactsym',", "'exactsym.checker',", "'exactsym.checker.arithmetic',",
+        "'exactsym.checker.groups',", "'exactsym.checker.ordering',",
+        "'exactsym.checker.refutations',", "'exactsym.version']"], out
 
 
 def test_psi_is_the_minimal_polynomial_of_2cos():
@@ -682,13 +683,12 @@ def test_checker_as_a_program(tmp_path):
                                        cwd=ROOT)
     done = run("-m", "exactsym.checker", str(cert_path))
     assert done.returncode == 0 and "valid: group D4, orderable false" in done.stdout
-    done = run(str(ROOT / "exactsym" / "checker.py"), str(cert_path))   # as a lone script
-    assert done.returncode == 0, done.stderr
-    alone = tmp_path / "alone"                  # the checker's files copied anywhere
-    alone.mkdir()
+    alone = tmp_path / "alone"                  # the checker's package copied anywhere
+    (alone / "checker").mkdir(parents=True)
     for module in CHECKER_MODULES:
-        (alone / f"{module}.py").write_text((ROOT / "exactsym" / f"{module}.py").read_text())
-    done = run(str(alone / "checker.py"), str(cert_path))
+        (alone / "checker" / f"{module}.py").write_text((CHECKER / f"{module}.py").read_text())
+    done = subprocess.run([sys.executable, "-m", "checker", str(cert_path)], capture_output=True,
+                          text=True, cwd=alone)
     assert done.returncode == 0 and "valid: group D4" in done.stdout, done.stderr
     cert = json.loads(cert_path.read_text())
     cert["witness"]["mirror"]["permutation"] = [0, 1, 2, 3]

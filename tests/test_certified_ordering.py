@@ -12,9 +12,9 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certificate import make_certificate
-from exactsym.configuration import Configuration, load
-from exactsym.symmetry import symmetry_group
+from exactsym.certify.certificate import make_certificate
+from exactsym.geometry.configuration import Configuration, load
+from exactsym.truth.symmetry import symmetry_group
 
 
 def certify_text(tmp_path, text: str) -> dict:
@@ -160,8 +160,8 @@ def _every_reading(cert: dict) -> list:
     """(orientation, ordering) for every start in both frames, read off the certified one:
     in its frame the rays R_0 .. R_(m-1) follow the ordering; the other frame reads them
     backwards."""
-    from exactsym.checker_groups import read_cartesian
-    from exactsym.checker_ordering import _plane, _rays
+    from exactsym.checker.groups import read_cartesian
+    from exactsym.checker.ordering import _plane, _rays
     config, claim = cert["configuration"], cert["claim"]
     field = checker.number_field(config["field"]) if config.get("field") else None
     kind, points = config["coordinates"], config["points"]

@@ -18,8 +18,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certificate import make_certificate
-from exactsym.configuration import load
+from exactsym.certify.certificate import make_certificate
+from exactsym.geometry.configuration import load
 from certificate_checks import rejected
 
 ROOT = Path(__file__).resolve().parent.parent

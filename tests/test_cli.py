@@ -6,7 +6,7 @@ import sys
 
 import pytest
 
-from exactsym.cli import main
+from exactsym.cli.main import main
 
 EXAMPLES = "cases/examples"
 

@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 
 import exactsym
-from exactsym import cli
-from exactsym.cli import main
+from exactsym.cli import main as cli
+from exactsym.cli.main import main
 
 ROOT = Path(__file__).resolve().parent.parent
 NINE = "cases/examples/chiral-nine-gon.toml"

@@ -20,17 +20,17 @@ from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certificate import make_certificate
-from exactsym.configuration import load
+from exactsym.certify.certificate import make_certificate
+from exactsym.geometry.configuration import load
 from exactsym.errors import FieldTooLargeError, InputError
 from exactsym.exact import cyclotomic, evaluate, evaluate_all, exact_key, number_text
 from exactsym.exact.cyclotomic_sqrt import _trager_sqrt, field_sqrt, refuted
 from exactsym.exact.cyclotomic_tower import CyclotomicTower
 from exactsym.exact.general import general_system
 from exactsym.exact.tower import TowerElement
-from exactsym.expr import MAX_LENGTH, parse_expression
-from exactsym.levels import levels_of
-from exactsym.symmetry import symmetry_group
+from exactsym.io.expr import MAX_LENGTH, parse_expression
+from exactsym.geometry.levels import levels_of
+from exactsym.truth.symmetry import symmetry_group
 from certificate_checks import rejected as _rejected
 
 P = parse_expression
@@ -293,8 +293,8 @@ def test_cyclotomic_tower_certificates_are_checked(tmp_path):
 
 def test_checker_signs_are_exact():
     """The checker's tower signs (A + B y by A, B and A^2 - r B^2) against Arb values."""
-    from exactsym.checker_numbers import tower_field
-    from exactsym.certificate import Encoder
+    from exactsym.checker.arithmetic import tower_field
+    from exactsym.certify.certificate import Encoder
     system, values = _values("sqrt(2+cos(2*pi/7))", "cos(2*pi/7)", "sqrt(3+sqrt(2+cos(2*pi/7)))")
     y, c, z = values
     xs = [y - c - 1, 2 * y - 3 * c - 1, z - y - 1, y * z - 3 + c, c - fmpq(1, 2)]

@@ -14,8 +14,8 @@ from fractions import Fraction
 
 import pytest
 
-from exactsym.configuration import load
-from exactsym.symmetry import symmetry_group
+from exactsym.geometry.configuration import load
+from exactsym.truth.symmetry import symmetry_group
 
 
 def _orbit(k: int, mirror: bool) -> list[tuple[str, Fraction]]:

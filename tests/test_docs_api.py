@@ -20,7 +20,7 @@ def test_picture_commands_in_docs_make_the_pictures_shown(tmp_path, monkeypatch)
     import shlex
     import xml.etree.ElementTree as ET
 
-    from exactsym.cli import main as exactsym_main
+    from exactsym.cli.main import main as exactsym_main
     from exactsym.pictures.run_cli import main as run_main
 
     def content(path):

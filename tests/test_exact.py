@@ -6,7 +6,7 @@ from hypothesis import given, settings, strategies as st
 
 from exactsym.errors import ExpressionError
 from exactsym.exact import FieldElement, evaluate_all, fmpq, number_text, sign
-from exactsym.expr import parse_expression
+from exactsym.io.expr import parse_expression
 
 
 def values(*texts):

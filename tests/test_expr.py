@@ -1,4 +1,4 @@
-"""The expression parser of configuration format 1 (exactsym.expr)."""
+"""The expression parser of configuration format 1 (exactsym.io.expr)."""
 
 import re
 from fractions import Fraction as F
@@ -7,10 +7,10 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from exactsym import expr
+from exactsym.io import expr
 from exactsym.errors import ExpressionError, InputError
-from exactsym.expr import parse_expression as parse
-from exactsym.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
+from exactsym.io.expr import parse_expression as parse
+from exactsym.io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 
 
 def C(value) -> Const:

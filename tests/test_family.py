@@ -1,4 +1,4 @@
-"""The paper on whole configurations (exactsym.paper.family) and the audit (exactsym.audit).
+"""The paper on whole configurations (exactsym.paper.family) and the audit (exactsym.audit.statements).
 
 Exact expected values on small families, agreement of the O(n) line finder with the
 definition (exactsym.paper.polygon.definition_mirrors), the branches of MakeAsym,
@@ -17,11 +17,11 @@ from pathlib import Path
 import pytest
 from hypothesis import event, given, settings, strategies as st
 
-from exactsym.audit_levels import LEVEL_STATEMENTS
-from exactsym.audit import audit, transformed
-from exactsym.configuration import load
+from exactsym.audit.levels import LEVEL_STATEMENTS
+from exactsym.audit.statements import audit, transformed
+from exactsym.geometry.configuration import load
 from exactsym.exact import fmpq
-from exactsym.levels import levels_of
+from exactsym.geometry.levels import levels_of
 from exactsym.paper import family as F
 from exactsym.paper.keys import hashable_key
 from exactsym.paper import polygon as P
@@ -276,7 +276,7 @@ def test_chirality_changes_the_leader_and_the_audit_says_so():
 
 def test_cartesian_rational_configuration():
     """The Cartesian path (exact rationals, SEC centre not at a nice place)."""
-    from exactsym.configuration import Configuration
+    from exactsym.geometry.configuration import Configuration
     pts = [(Q(3), Q(4)), (Q(-5), Q(0)), (Q(0), Q(-5)), (Q(4), Q(-3)),   # radius 5
            (Q(1), Q(0)), (Q(0), Q(2))]
     config = Configuration.from_points(pts)
@@ -325,7 +325,7 @@ FAMILY_STATEMENTS = [
 
 @pytest.mark.parametrize("label", FAMILY_STATEMENTS)
 def test_every_family_statement_has_a_case_with_expectations(label):
-    from exactsym.fileformat import read_config
+    from exactsym.io.fileformat import read_config
     tagged = []
     for path in _all_cases():
         cfg = read_config(path)
@@ -337,7 +337,7 @@ def test_every_family_statement_has_a_case_with_expectations(label):
 
 
 def test_discrepancy_cases_have_notes():
-    from exactsym.fileformat import read_config
+    from exactsym.io.fileformat import read_config
     for path in sorted(DISCREPANCIES.glob("family-*.toml")):
         cfg = read_config(path)
         assert cfg.notes and cfg.expect.get("audit_agrees") is False, path
@@ -516,7 +516,7 @@ def test_union_lines_are_the_chained_projections_lines(points):
 @given(st.lists(st.tuples(st.integers(-5, 5), st.integers(-5, 5)).filter(lambda p: p != (0, 0)),
                 min_size=3, max_size=12, unique=True))
 def test_union_lines_cartesian(points):
-    from exactsym.configuration import Configuration
+    from exactsym.geometry.configuration import Configuration
     pts = dict.fromkeys([(x, y) for x, y in points] + [(x * 2, y * 2) for x, y in points[:2]])
     config = Configuration.from_points([(Q(x), Q(y)) for x, y in pts])
     G = F.concentric_polygons(config)
@@ -602,7 +602,7 @@ _NORM5 = [(5, 0), (4, 3), (3, 4), (0, 5), (-3, 4), (-4, 3), (-5, 0), (-4, -3), (
 def test_prefiltered_preprocess_cartesian(subsets):
     """Cartesian rings on the 12 rational rays of norm 5 (shared rays across circles),
     inside a ring of all 12: the prefilter's exact Cartesian ray keys."""
-    from exactsym.configuration import Configuration
+    from exactsym.geometry.configuration import Configuration
     pts = []
     for k, subset in enumerate(subsets, 1):
         pts += [(Q(k * _NORM5[d][0]), Q(k * _NORM5[d][1])) for d in subset]

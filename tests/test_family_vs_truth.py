@@ -27,12 +27,12 @@ from pathlib import Path
 
 from hypothesis import HealthCheck, event, given, settings, strategies as st
 
-from exactsym.audit import audit, transformed
-from exactsym.configuration import Configuration, load
-from exactsym.levels import levels_of
+from exactsym.audit.statements import audit, transformed
+from exactsym.geometry.configuration import Configuration, load
+from exactsym.geometry.levels import levels_of
 from exactsym.paper import family as F
 from exactsym.paper.keys import line_value
-from exactsym.symmetry import symmetry_group
+from exactsym.truth.symmetry import symmetry_group
 
 from strategies import (PolarSimilarity, polar_configuration, rational_group_points,
                         similarities)

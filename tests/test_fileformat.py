@@ -1,4 +1,4 @@
-"""Reading configuration files (exactsym.fileformat)."""
+"""Reading configuration files (exactsym.io.fileformat)."""
 
 import io
 import sys
@@ -8,10 +8,10 @@ from fractions import Fraction as F
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from exactsym.fileformat import (EXPECT_KEYS, ConfigFile, PointSpec, parse_config_text,
+from exactsym.io.fileformat import (EXPECT_KEYS, ConfigFile, PointSpec, parse_config_text,
                              read_config)
 from exactsym.errors import ExpressionError, InputError
-from exactsym.exprtree import BinOp, Const, Sqrt, Trig
+from exactsym.io.exprtree import BinOp, Const, Sqrt, Trig
 
 
 def C(value) -> Const:

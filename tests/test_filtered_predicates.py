@@ -11,9 +11,9 @@ from __future__ import annotations
 from hypothesis import given, settings, strategies as st
 
 from exactsym.exact import evaluate_all, fmpq
-from exactsym.expr import parse_expression
-from exactsym.geometry import PseudoAngle, intern_by_value, sorted_by_value
-from exactsym.symmetry import pseudo_angle
+from exactsym.io.expr import parse_expression
+from exactsym.geometry.predicates import PseudoAngle, intern_by_value, sorted_by_value
+from exactsym.truth.symmetry import pseudo_angle
 
 _, (R2, C7) = evaluate_all([parse_expression("sqrt(2)"), parse_expression("sqrt(3)")])
 _, (Z,) = evaluate_all([parse_expression("cos(2*pi/7)")])
@@ -52,8 +52,8 @@ def test_pseudo_angles_filtered_equal_exact(vecs):
 
 # -- the SEC with a homogeneous centre, against brute force, on cocircular near-ties ------
 
-from exactsym.sec import sec_by_brute_force, smallest_enclosing_circle  # noqa: E402
-from exactsym.geometry import squared_distance  # noqa: E402
+from exactsym.geometry.sec import sec_by_brute_force, smallest_enclosing_circle  # noqa: E402
+from exactsym.geometry.predicates import squared_distance  # noqa: E402
 
 S2, S3 = R2, C7
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 from hypothesis import given, settings, strategies as st
 
 from exactsym.analysis import built_levels
-from exactsym.configuration import Configuration
-from exactsym.levels import Level, RationalLevels, levels_of
+from exactsym.geometry.configuration import Configuration
+from exactsym.geometry.levels import Level, RationalLevels, levels_of
 
 # many points on few circles about the origin (levels of several points, and ties of
 # squared radii), plus distinct random points: levels_of then keeps RationalLevels
@@ -48,7 +48,7 @@ _json = st.recursive(st.none() | st.booleans() | st.integers() | st.text(max_siz
 @given(_json)
 def test_prebuilt_encoder_writes_as_json_dumps(value):
     import json
-    from exactsym.report import _item
+    from exactsym.report.check import _item
     assert _item(value) == json.dumps(value, separators=(", ", ": "))
 
 
@@ -58,7 +58,7 @@ def test_prebuilt_encoder_writes_as_json_dumps(value):
 def test_verdict_templates_write_what_the_encoder_writes(points):
     import json
     from exactsym.paper.polygon_report import LabelledVerdict
-    from exactsym.report import _item, check_report
+    from exactsym.report.check import _item, check_report
     report = check_report(Configuration.from_points(points))
     templated = 0
     for entry in report["levels"]:
@@ -74,7 +74,7 @@ def test_verdict_templates_write_what_the_encoder_writes(points):
 
 def test_single_robot_levels_carry_a_template():
     from exactsym.paper.polygon_report import LabelledVerdict
-    from exactsym.report import check_report
+    from exactsym.report.check import check_report
     report = check_report(Configuration.from_points([(0, 0), (1, 0), (0, 2), (3, 1), (-5, 2)]))
     singles = [e["paper"] for e in report["levels"] if len(e["points"]) == 1]
     assert len(singles) == 3
@@ -144,7 +144,7 @@ def test_one_robot_level_text_is_what_the_encoder_writes(radius, points, strings
     json.dumps writes."""
     import json
     from exactsym.paper.polygon_report import LabelledVerdict
-    from exactsym.report import _item, check_report
+    from exactsym.report.check import _item, check_report
     report = check_report(Configuration.from_points([(0, 0), (1, 0), (0, 2), (3, 1), (-5, 2)]))
     paper = next(e["paper"] for e in report["levels"] if len(e["points"]) == 1)
     assert type(paper) is LabelledVerdict and paper.json_parts is not None
@@ -186,7 +186,7 @@ def test_coincident_points_found_with_the_shared_floats(coords):
     import pytest
     from flint import fmpq
     from exactsym.errors import InputError
-    from exactsym.geometry import float_coordinates
+    from exactsym.geometry.predicates import float_coordinates
     xs = [fmpq(a, b) for a, b in coords[:64]]
     ys = [fmpq(a, b) for a, b in coords[64:128]]
     points = list(dict.fromkeys(zip(xs, ys)))

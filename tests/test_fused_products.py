@@ -75,7 +75,7 @@ def test_radii_interned_by_value_key_as_by_hash(values, data):
     """symmetry._intern in a field of large degree (value_key) gives the ids the hash of
     the elements gives: equal ids iff equal radii (single radii and tuples of radii,
     rational elements among them, repeated values)."""
-    from exactsym.symmetry import _KEY_DEGREE, _intern
+    from exactsym.truth.symmetry import _KEY_DEGREE, _intern
     assert LARGE.degree >= _KEY_DEGREE
     xs = [x if irrational else LARGE(data.draw(st.integers(0, 2))) for x, irrational in values]
     xs += [x + 0 for x in xs[: data.draw(st.integers(0, len(xs)))]]    # equal, other objects

@@ -11,7 +11,7 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from exactsym.cli import main  # noqa: E402
+from exactsym.cli.main import main  # noqa: E402
 from exactsym.gathering import drawing  # noqa: E402
 from exactsym.gathering.cases import run_settings, settings_of  # noqa: E402
 from exactsym.gathering.paper_bridge import read_case  # noqa: E402

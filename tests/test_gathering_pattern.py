@@ -170,8 +170,8 @@ def test_linear_motions():
 @settings(max_examples=40, deadline=None)
 @given(st.lists(points, min_size=2, max_size=9, unique=True))
 def test_sec_matches_the_kernel(pts):
-    from exactsym.configuration import Configuration
-    from exactsym.sec import smallest_enclosing_circle
+    from exactsym.geometry.configuration import Configuration
+    from exactsym.geometry.sec import smallest_enclosing_circle
     mq_pts = [g.point(*p) for p in pts]
     centre, r2 = g.smallest_enclosing_circle(mq_pts)
     circle = smallest_enclosing_circle(Configuration.from_points(pts).points)

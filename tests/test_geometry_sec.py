@@ -3,12 +3,12 @@
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from exactsym.configuration import Configuration
+from exactsym.geometry.configuration import Configuration
 from exactsym.exact import fmpq
-from exactsym.geometry import (Turn, angular_sort, circumcentre, compare_directions,
+from exactsym.geometry.predicates import (Turn, angular_sort, circumcentre, compare_directions,
                                compare_distance, midpoint, orientation, squared_distance)
-from exactsym.levels import levels_of
-from exactsym.sec import sec_by_brute_force, smallest_enclosing_circle
+from exactsym.geometry.levels import levels_of
+from exactsym.geometry.sec import sec_by_brute_force, smallest_enclosing_circle
 
 Q = fmpq
 
@@ -102,8 +102,8 @@ def test_sec_and_levels_map_along_under_similarities(raw, similarity, rnd):
 
 
 def test_levels_of_a_polar_polygon_use_turns():
-    from exactsym.fileformat import parse_config_text
-    from exactsym.configuration import from_file
+    from exactsym.io.fileformat import parse_config_text
+    from exactsym.geometry.configuration import from_file
     text = "\n".join(f"polar 1 {k}/7" for k in range(7)) + "\npolar 1/2 1/14\n"
     config = from_file(parse_config_text(text, "<test>", "txt"))
     ring = levels_of(config)
@@ -117,8 +117,8 @@ def test_levels_of_a_polar_polygon_use_turns():
 
 
 def test_polar_configuration_off_centre_falls_back_to_cartesian():
-    from exactsym.fileformat import parse_config_text
-    from exactsym.configuration import from_file
+    from exactsym.io.fileformat import parse_config_text
+    from exactsym.geometry.configuration import from_file
     config = from_file(parse_config_text("polar 1 0\npolar 1 1/5\npolar 1 1/10\n", "<t>", "txt"))
     ring = levels_of(config)
     assert not ring.polar
@@ -130,8 +130,8 @@ def test_a_rational_centre_of_a_tower_is_proved_rational():
     10^-40 of a rational (whose ball holds it) stays homogeneous, and so does a centre of a
     multiquadratic field (no determinant to carry)."""
     from exactsym.exact import evaluate_all
-    from exactsym.expr import parse_expression
-    from exactsym.sec import _rational_centre
+    from exactsym.io.expr import parse_expression
+    from exactsym.geometry.sec import _rational_centre
     _, (d, e) = evaluate_all([parse_expression("2 + sqrt(1+sqrt(2))"),
                               parse_expression("10^-40*sqrt(1+sqrt(2))")])
     assert _rational_centre((d * fmpq(1, 7), d * fmpq(-3, 5), d)) == (fmpq(1, 7), fmpq(-3, 5))

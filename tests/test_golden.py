@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from exactsym.cli import main
+from exactsym.cli.main import main
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES, GOLDEN = ROOT / "cases", ROOT / "tests" / "golden"

@@ -1,4 +1,4 @@
-"""The JSON text of ``exactsym check --json`` (exactsym.report.json_text): the layout of
+"""The JSON text of ``exactsym check --json`` (exactsym.report.check.json_text): the layout of
 ``json.dumps(indent=2)`` for small reports, long lists one item per line, and the same
 object either way."""
 
@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import json
 
-from exactsym.configuration import load
-from exactsym.report import LONG_LIST, check_report, json_text
+from exactsym.geometry.configuration import load
+from exactsym.report.check import LONG_LIST, check_report, json_text
 
 
 def test_small_report_is_written_as_json_dumps_indent_2():
@@ -34,7 +34,7 @@ def test_written_by_pieces_the_same_text(monkeypatch):
     """write_json streams the text json_text makes (by pieces of about 4 MB: here forced
     to a few bytes, so every piece is its own write), and a newline."""
     import io
-    import exactsym.report as report_module
+    import exactsym.report.check as report_module
     n = LONG_LIST + 5
     report = {"n": n, "levels": [{"radius_squared": f"{k}/3", "points": [k]}
                                  for k in range(n)], "text": "x" * 5000, "nested": {"a": [1]}}

@@ -14,8 +14,8 @@ import json
 import pytest
 
 from exactsym import checker
-from exactsym.certificate import make_certificate
-from exactsym.configuration import load
+from exactsym.certify.certificate import make_certificate
+from exactsym.geometry.configuration import load
 from certificate_checks import rejected as _rejected
 
 
@@ -47,10 +47,10 @@ def test_nested_biquadratic_fields_are_certified(tmp_path, points, group):
 def _primitive_cert(points: list[str]) -> dict:
     """The certificate of points evaluated in a field built by sympy's primitive element
     (the path still taken by nested radicals mixed with trigonometry), checked."""
-    from exactsym.configuration import Configuration
+    from exactsym.geometry.configuration import Configuration
     from exactsym.exact.evaluate import _collect, evaluate
     from exactsym.exact.general import general_system
-    from exactsym.expr import parse_expression
+    from exactsym.io.expr import parse_expression
     trees = [parse_expression(t) for row in points for t in json.loads(row)]
     atoms: list = []
     for tree in trees:

@@ -7,13 +7,13 @@ import json
 import pytest
 
 from exactsym import checker
-from exactsym.certificate import make_certificate
-from exactsym.configuration import load
+from exactsym.certify.certificate import make_certificate
+from exactsym.geometry.configuration import load
 from exactsym.errors import InputError
 from exactsym.exact import evaluate, evaluate_all, exact_key
-from exactsym.expr import parse_expression
-from exactsym.levels import levels_of
-from exactsym.symmetry import symmetry_group
+from exactsym.io.expr import parse_expression
+from exactsym.geometry.levels import levels_of
+from exactsym.truth.symmetry import symmetry_group
 
 
 def _toml(tmp_path, points: list[str]) -> str:

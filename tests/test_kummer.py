@@ -13,16 +13,16 @@ from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certificate import make_certificate
-from exactsym.configuration import load
+from exactsym.certify.certificate import make_certificate
+from exactsym.geometry.configuration import load
 from exactsym.errors import FieldTooLargeError
 from exactsym.exact import evaluate_all
 from exactsym.exact.evaluate import CyclotomicTowerSystem
 from exactsym.exact.factor import factorization
 from exactsym.exact.kummer import SquareClasses
 from exactsym.exact.tower import TowerElement
-from exactsym.expr import parse_expression
-from exactsym.symmetry import symmetry_group
+from exactsym.io.expr import parse_expression
+from exactsym.truth.symmetry import symmetry_group
 from certificate_checks import rejected as _rejected
 
 

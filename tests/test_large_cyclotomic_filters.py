@@ -7,9 +7,9 @@ off-centre polar files) against the exact computations they replace, on near tie
   numbers (rational ratios, equal values, values 10^-30 apart);
 * the lazily keyed lines (:func:`exactsym.paper.keys.lazy_line_canon`) equal, hash and
   compare as the keys of the exact doubled directions;
-* the Cartesian symmetries' matrices (:class:`exactsym.isometries.LazyMatrix`) are those
+* the Cartesian symmetries' matrices (:class:`exactsym.truth.isometries.LazyMatrix`) are those
   computed eagerly; CirclePolygon.one_circle and the remembered point vectors of
-  exactsym.symmetry give the exact answers.
+  exactsym.truth.symmetry give the exact answers.
 """
 
 from __future__ import annotations
@@ -18,18 +18,18 @@ from hypothesis import given, settings, strategies as st
 
 from flint import fmpq, fmpq_poly
 
-from exactsym.configuration import load
+from exactsym.geometry.configuration import load
 from exactsym.exact import sign
 from exactsym.exact.cyclotomic import cos_turn, cyclotomic_field, sin_turn
 from exactsym.exact.cyclotomic_modular import product_ratio_irrational, ratio_irrational
 from exactsym.exact.cyclotomic_text import cyclotomic_text, fast_number_text
 from exactsym.exact.text import number_text
-from exactsym.isometries import LazyMatrix
+from exactsym.truth.isometries import LazyMatrix
 from exactsym.paper.circle_polygon import CirclePolygon
 from exactsym.paper.keys import (QUOTIENT_DEGREE, bisector_key, complex_product,
                                  lazy_line_canon, line_canon, line_key)
 from exactsym.paper.ratio_keys import rational_ratio
-from exactsym.symmetry import _directions, symmetry_group
+from exactsym.truth.symmetry import _directions, symmetry_group
 
 M = 2520                                    # degree 576 >= QUOTIENT_DEGREE
 BIG = cyclotomic_field(M)

@@ -1,4 +1,4 @@
-"""The gaps of :mod:`exactsym.symmetry` in number fields, made lazily (``_LazyGap``: a
+"""The gaps of :mod:`exactsym.truth.symmetry` in number fields, made lazily (``_LazyGap``: a
 ball from the coordinates' balls, exact parts only when read) and compared through their
 remembered balls (``_Angle._cmp``), against the exact pseudo-angles they replace, on near
 ties: equal gaps (one pair of rays turned by a rational turn), perpendicular and opposite
@@ -13,8 +13,8 @@ from flint import fmpq
 
 from exactsym.exact import sign
 from exactsym.exact.cyclotomic import cos_turn, cyclotomic_field, sin_turn
-from exactsym.geometry import PseudoAngle
-from exactsym.symmetry import _Angle, _LazyGap
+from exactsym.geometry.predicates import PseudoAngle
+from exactsym.truth.symmetry import _Angle, _LazyGap
 
 M = 120
 FIELD = cyclotomic_field(M)

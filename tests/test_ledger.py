@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from exactsym.cases_cli import case_files, label_counts, run_cases
-from exactsym.cli import main as exactsym_main
+from exactsym.report.cases import case_files, label_counts, run_cases
+from exactsym.cli.main import main as exactsym_main
 from exactsym.errors import InputError
 from exactsym.labels import ALGORITHMS, LABELS, STATEMENTS, nearest_label
 from exactsym.ledger import LedgerError, load_ledger
@@ -307,14 +307,14 @@ def test_uses_contain_every_extracted_ref(ledger):
 
 # ---------------------------------------------------------------- refutation certificates
 def _refutation(label, case):
-    from exactsym.configuration import load
-    from exactsym.refutation import make_refutation
+    from exactsym.geometry.configuration import load
+    from exactsym.certify.refutation import make_refutation
     return json.loads(json.dumps(make_refutation(load(ROOT / case), label)))
 
 
 def test_refutation_certificates_verify_and_reject_tampering():
     from exactsym import checker
-    from exactsym.certificate import CertificateError
+    from exactsym.certify.certificate import CertificateError
     obj = _refutation("Pasym-Pord", "cases/discrepancies/family-chiral-c3-ring.toml")
     ok, why = checker.verify_refutation(obj)
     assert ok and "order 3" in why

@@ -1,4 +1,4 @@
-"""A level's squared radius held lazily in a large cyclotomic field (exactsym.level_radius):
+"""A level's squared radius held lazily in a large cyclotomic field (exactsym.geometry.level_radius):
 every answer it gives before its polynomial is computed is the exact number's."""
 
 from __future__ import annotations
@@ -13,11 +13,11 @@ from exactsym.exact.cyclotomic import MAX_DEGREE
 from exactsym.exact.cyclotomic_modular import _element_images, _embeddings
 from exactsym.exact.evaluate import dense_degree_limit
 from exactsym.exact.field import PolyElement
-from exactsym.configuration import Configuration
+from exactsym.geometry.configuration import Configuration
 from exactsym.exact import sign
 from exactsym.exact.evaluate import SparseKummerSystem
-from exactsym.level_radius import LevelRadius, TowerLevelRadius, tower_ratio_irrational
-from exactsym.levels import levels_of
+from exactsym.geometry.level_radius import LevelRadius, TowerLevelRadius, tower_ratio_irrational
+from exactsym.geometry.levels import levels_of
 
 
 def _config(tmp_path, seed: int, n: int = 6):

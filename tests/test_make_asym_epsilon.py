@@ -6,8 +6,8 @@ from __future__ import annotations
 
 from hypothesis import given, settings, strategies as st
 
-from exactsym.audit import audit
-from exactsym.configuration import load
+from exactsym.audit.statements import audit
+from exactsym.geometry.configuration import load
 from exactsym.exact import fmpq, normal_turn
 from exactsym.paper import polygon as P
 from exactsym.paper.circle_polygon import polygon_from_directions

@@ -10,13 +10,13 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from exactsym.configuration import Configuration, load
+from exactsym.geometry.configuration import Configuration, load
 from exactsym.exact import fmpq, sign
 from exactsym.exact.adjoin_sqrt import adjoin_sqrt
 from exactsym.exact.evaluate import (FieldSystem, MultiquadraticSystem, RationalSystem,
                                      TowerSystem)
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
-from exactsym.levels import levels_of
+from exactsym.geometry.levels import levels_of
 from exactsym.paper import family as F
 
 FAMILY = Path(__file__).resolve().parent.parent / "cases" / "family"
@@ -123,8 +123,8 @@ def test_each_round_is_checked_against_the_sec_it_started_from():
     onto G_t's circle (a square root adjoined in a tower over Q(zeta_12)) and keeps the SEC
     of round 1: one finding, not two, and the round-2 configuration is exact."""
     from pathlib import Path
-    from exactsym.configuration import load
-    from exactsym.levels import levels_of
+    from exactsym.geometry.configuration import load
+    from exactsym.geometry.levels import levels_of
     from exactsym.paper import family as F
     config = load(Path(__file__).resolve().parent.parent /
                   "cases/sweeps/roots_12_le6/sweep-MakeAsym.toml")

@@ -1,5 +1,5 @@
 """The audit's frames read the SEC and the levels of the configuration mapped along the
-frame's exact similarity (:func:`exactsym.levels.mapped_levels`, ``audit._frame_levels``)
+frame's exact similarity (:func:`exactsym.geometry.levels.mapped_levels`, ``audit._frame_levels``)
 instead of recomputing them: the mapped levels equal those computed from scratch in the
 moved frame (the same SEC centre and radius, the same levels with the same exact squared
 radii and the same counter-clockwise order from the new +x ray), on configurations with
@@ -10,10 +10,10 @@ from __future__ import annotations
 from hypothesis import given, settings, strategies as st
 
 from exactsym.analysis import built_levels
-from exactsym.audit import FRAMES, _frame_levels, transformed
-from exactsym.configuration import from_file
-from exactsym.fileformat import parse_config_text
-from exactsym.levels import levels_of
+from exactsym.audit.statements import FRAMES, _frame_levels, transformed
+from exactsym.geometry.configuration import from_file
+from exactsym.io.fileformat import parse_config_text
+from exactsym.geometry.levels import levels_of
 
 
 @st.composite
@@ -71,7 +71,7 @@ def test_lazy_radii_and_centre_equal_the_exact_path(config):
     (X/D, Y/D)."""
     if config is None:
         return
-    from exactsym import levels as L
+    from exactsym.geometry import levels as L
     filtered = levels_of(config)
     L.ALGEBRAIC_FILTER = False
     try:
@@ -91,8 +91,8 @@ def test_groups_of_unions_of_levels_by_balls_equal_the_exact_ones(config, data):
     leader as the exact path (levels without enclosures)."""
     if config is None:
         return
-    from exactsym.audit_groups import group_about_centre
-    from exactsym.levels import Levels
+    from exactsym.audit.groups import group_about_centre
+    from exactsym.geometry.levels import Levels
     ring = built_levels(levels_of(config))
     bare = Levels(ring.sec, ring.levels, ring.polar)
     t = len(ring.levels)

@@ -8,11 +8,11 @@ from fractions import Fraction
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from exactsym.configuration import Configuration, Polar, Similarity, load
+from exactsym.geometry.configuration import Configuration, Polar, Similarity, load
 from exactsym.errors import InputError, MoveImpossible
 from exactsym.exact import fmpq, number_text
-from exactsym.levels import levels_of
-from exactsym.symmetry import symmetry_group
+from exactsym.geometry.levels import levels_of
+from exactsym.truth.symmetry import symmetry_group
 from strategies import polar_configuration
 
 Q = fmpq

@@ -8,7 +8,7 @@ from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym.exact.multiquadratic import MQ, from_tree, sqrt_rational, squarefree_split
-from exactsym.expr import parse_expression
+from exactsym.io.expr import parse_expression
 
 RADICANDS = [1, 2, 3, 5, 6, 7, 10, 15, 35]
 

@@ -9,11 +9,11 @@ from fractions import Fraction
 
 from hypothesis import given, settings, strategies as st
 
-import exactsym.near_symmetry as near
-from exactsym.configuration import Configuration
+import exactsym.truth.near_symmetry as near
+from exactsym.geometry.configuration import Configuration
 from exactsym.exact import fmpq as Q
-from exactsym.near_symmetry import near_symmetry_hint
-from exactsym.symmetry import symmetry_group
+from exactsym.truth.near_symmetry import near_symmetry_hint
+from exactsym.truth.symmetry import symmetry_group
 
 from strategies import rational_group_points
 
@@ -61,7 +61,7 @@ def test_the_bound_is_tight_enough_to_be_false_for_a_smaller_one():
 
 def test_the_shipped_decimal_hexagon_case():
     from pathlib import Path
-    from exactsym.configuration import load
+    from exactsym.geometry.configuration import load
     config = load(Path(__file__).resolve().parent.parent / "cases/examples/decimal-hexagon.toml")
     hint = near_symmetry_hint(config)
     assert (hint.exact_group, hint.candidate_group, hint.bound) == ("D2", "D6", Q(5, 10 ** 7))

@@ -1,9 +1,9 @@
 """Inputs that colliding number keys answered wrongly (exit 0 with a wrong verdict)."""
 
-from exactsym.fileformat import parse_config_text
-from exactsym.configuration import from_file
-from exactsym.levels import levels_of
-from exactsym.symmetry import symmetry_group
+from exactsym.io.fileformat import parse_config_text
+from exactsym.geometry.configuration import from_file
+from exactsym.geometry.levels import levels_of
+from exactsym.truth.symmetry import symmetry_group
 
 
 def _load(text):

@@ -14,11 +14,11 @@ from fractions import Fraction
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from exactsym.cli import main
+from exactsym.cli.main import main
 from exactsym.errors import ExpressionError
 from exactsym.exact import evaluate_all, expression_text, number_text
-from exactsym.expr import MAX_LENGTH, parse_expression
-from exactsym.exprtree import BinOp, Const, Neg, Pow, Sqrt, Trig
+from exactsym.io.expr import MAX_LENGTH, parse_expression
+from exactsym.io.exprtree import BinOp, Const, Neg, Pow, Sqrt, Trig
 
 consts = st.builds(lambda p, q: Const(Fraction(p, q)), st.integers(-12, 12), st.integers(1, 5))
 square_roots = st.builds(lambda p, q: Sqrt(Const(Fraction(p, q))), st.integers(0, 30),

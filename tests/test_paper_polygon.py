@@ -15,7 +15,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from exactsym.exact import as_fmpq, evaluate_all, fmpq, normal_turn
-from exactsym.expr import parse_expression
+from exactsym.io.expr import parse_expression
 from exactsym.paper import polygon as P
 from exactsym.paper.circle_polygon import (CirclePolygon, level_polygon,
                                            polygon_from_directions)
@@ -421,8 +421,8 @@ def test_elect_leader_asym_triangle_has_no_leader():
 
 
 def test_level_polygon_cartesian_and_radius_zero():
-    from exactsym.configuration import Configuration
-    from exactsym.levels import levels_of
+    from exactsym.geometry.configuration import Configuration
+    from exactsym.geometry.levels import levels_of
     config = Configuration.from_points([(0, 0), (5, 0), (0, 5), (-5, 0), (3, -4)])
     ring = levels_of(config)
     with pytest.raises(ValueError):

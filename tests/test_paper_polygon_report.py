@@ -5,9 +5,9 @@ from __future__ import annotations
 import json
 from fractions import Fraction
 
-from exactsym.cli import main
-from exactsym.configuration import Configuration, load
-from exactsym.report import check_report, failed_expectations
+from exactsym.cli.main import main
+from exactsym.geometry.configuration import Configuration, load
+from exactsym.report.check import check_report, failed_expectations
 from exactsym.paper import polygon_report
 from strategies import polar_configuration
 

@@ -1,4 +1,4 @@
-"""The paper's verdicts on one polygon against the ground truth (exactsym.symmetry).
+"""The paper's verdicts on one polygon against the ground truth (exactsym.truth.symmetry).
 
 Random inscribed polygons (orbits of Ck/Dk with rational turns, perturbed, arithmetic
 progressions) become one-level configurations; the paper's verdicts (Theorem 1, the checks,
@@ -21,15 +21,15 @@ import pytest
 from hypothesis import HealthCheck, assume, event, given, settings
 
 from exactsym.exact import normal_turn
-from exactsym.configuration import load
-from exactsym.levels import levels_of
+from exactsym.geometry.configuration import load
+from exactsym.geometry.levels import levels_of
 from exactsym.paper import polygon as P
 from exactsym.paper.keys import HALF, line_value, ray_value
 from exactsym.paper.circle_polygon import level_polygon
 from strategies import polar_configuration
 from test_paper_polygon import polar_polygons
 
-symmetry = pytest.importorskip("exactsym.symmetry")
+symmetry = pytest.importorskip("exactsym.truth.symmetry")
 
 CASES = Path(__file__).resolve().parent.parent / "cases"
 

@@ -9,7 +9,7 @@ unions of levels equal what they replace (issue 9: speed, never a changed verdic
 * the ball filters of :mod:`exactsym.paper.filtered` (gap classes on one circle, the
   comparison of directions) equal the exact predicates on exact ties;
 * :func:`exactsym.paper.polygon.straight_line_count` counts :func:`straight_lines`;
-* :class:`exactsym.audit_groups.SubGroups` decides orderability of every level and pair
+* :class:`exactsym.audit.groups.SubGroups` decides orderability of every level and pair
   of levels as the group computed from scratch does, on configurations of known
   symmetry (orbits of C_k / D_k, levels of several radii).
 """
@@ -21,11 +21,11 @@ from itertools import combinations
 
 from hypothesis import given, settings, strategies as st
 
-from exactsym.audit_groups import SubGroups, group_about_centre
+from exactsym.audit.groups import SubGroups, group_about_centre
 from exactsym.exact import evaluate_all, fmpq
-from exactsym.exprtree import Const, Sqrt
-from exactsym.levels import levels_of
-from exactsym import geometry
+from exactsym.io.exprtree import Const, Sqrt
+from exactsym.geometry.levels import levels_of
+from exactsym.geometry import predicates as geometry
 from exactsym.paper import filtered
 from exactsym.paper.circle_polygon import polygon_from_directions
 from exactsym.paper.filtered import gap_classes_on_circle
@@ -36,7 +36,7 @@ from exactsym.paper.keys import (LineKey, angle_order_key, bisector_key, bisecto
                                  hashable_key, line_key, line_value, ray_key, ray_value,
                                  sort_by_angle)
 from exactsym.paper.polygon import straight_line_count, straight_lines
-from exactsym.symmetry import symmetry_group
+from exactsym.truth.symmetry import symmetry_group
 
 from strategies import polar_configuration
 

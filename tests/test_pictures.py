@@ -15,7 +15,7 @@ import pytest
 from hypothesis import given, settings
 
 import exactsym.pictures as plot_pkg
-from exactsym.configuration import Configuration, load
+from exactsym.geometry.configuration import Configuration, load
 from exactsym.pictures import PlotUnavailable, plot
 from exactsym.pictures.cli import main
 
@@ -106,7 +106,7 @@ def test_leader_and_ordering_labels_of_an_orderable_configuration(tmp_path):
     out = tmp_path / "c1.svg"
     plot(config, out)
     ids = _svg(out)
-    from exactsym.symmetry import symmetry_group
+    from exactsym.truth.symmetry import symmetry_group
     group = symmetry_group(config)
     assert group.orderable
     ranks = {int(i[5:]): "".join(ids[i].itertext()).strip() for i in ids if i.startswith("rank-")}
@@ -272,7 +272,7 @@ def test_an_analysis_is_drawn_from_its_results(tmp_path):
     """An object with ``config`` (and ``truth``, ``paper``, ``audit``) is drawn from what it
     holds: a stand-in whose truth says D4 draws four mirrors although the points are C1."""
     from types import SimpleNamespace
-    from exactsym.symmetry import symmetry_group
+    from exactsym.truth.symmetry import symmetry_group
     square = Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -1)])
     skewed = Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -2)])
     out = tmp_path / "a.svg"

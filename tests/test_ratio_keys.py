@@ -186,7 +186,7 @@ def test_lines_are_shown_in_the_order_of_their_divided_values(ts, ss):
 
 
 def test_a_slope_in_a_large_field_is_written_undivided_and_reads_back():
-    from exactsym.expr import parse_expression
+    from exactsym.io.expr import parse_expression
     from exactsym.exact import evaluate, number_system
     from exactsym.paper import keys
     field = cyclotomic_field(1024)                      # degree 512
@@ -238,7 +238,7 @@ def test_a_lazy_line_of_a_sparse_tower_is_shown_by_the_exact_slopes_decimal(k, s
     assume(isqrt(k) ** 2 != k or isqrt(m) ** 2 != m)
     from exactsym.exact.evaluate import SparseKummerSystem
     from exactsym.paper.keys import _product_line, complex_product
-    from exactsym.text_numbers import quotient_decimal
+    from exactsym.exact.text_numbers import quotient_decimal
     system = SparseKummerSystem(3988)
 
     def vector(q, turn):

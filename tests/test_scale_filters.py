@@ -14,14 +14,14 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-import exactsym.symmetry as symmetry
-from exactsym.configuration import Configuration
+import exactsym.truth.symmetry as symmetry
+from exactsym.geometry.configuration import Configuration
 from exactsym.exact import fmpq
-from exactsym.geometry import certified_groups, float_differences, float_pseudo_angles
-from exactsym.levels import levels_of
-from exactsym.rays_filtered import filtered_rays, level_ranks
-from exactsym.sec import _circle, _welzl, smallest_enclosing_circle
-from exactsym.symmetry import pseudo_angle
+from exactsym.geometry.predicates import certified_groups, float_differences, float_pseudo_angles
+from exactsym.geometry.levels import levels_of
+from exactsym.truth.rays_filtered import filtered_rays, level_ranks
+from exactsym.geometry.sec import _circle, _welzl, smallest_enclosing_circle
+from exactsym.truth.symmetry import pseudo_angle
 
 TINY = fmpq(1, 10 ** 30)
 CENTRE = (fmpq(1, 3), fmpq(-2, 7))
@@ -57,7 +57,7 @@ def test_filtered_ordering_near_tie(monkeypatch):
     give the exact path's ordering, and the certificate checker must accept it."""
     import json
     from exactsym import checker
-    from exactsym.certificate import make_certificate
+    from exactsym.certify.certificate import make_certificate
     config = _configuration([((5, 0), 1)] * 8, False, [(0, (0, 1))])
     ring = levels_of(config)
     exact = symmetry.symmetry_group(config, ring)
@@ -71,7 +71,7 @@ def test_filtered_ordering_near_tie(monkeypatch):
 def test_default_path_certifies_the_near_tie():
     import json
     from exactsym import checker
-    from exactsym.certificate import make_certificate
+    from exactsym.certify.certificate import make_certificate
     config = _configuration([((5, 0), 1)] * 8, False, [(0, (0, 1))])
     cert = make_certificate(config)
     assert cert["claim"]["ordering"] == [0, 4, 3, 2, 1]
@@ -161,7 +161,7 @@ def test_exact_fallback_runs_on_near_ties():
 def test_filtered_levels_equal_exact(seeds, mirror, nudges):
     """Levels ordered by one filtered pass (``geometry.angular_ranks``) equal levels
     ordered by the exact comparison sort (``geometry.angular_sort``)."""
-    import exactsym.levels as levels
+    import exactsym.geometry.levels as levels
     config = _configuration(seeds, mirror, nudges)
     saved = levels._FILTER_MIN
     budget = levels._EXACT_SORT_BUDGET
@@ -183,7 +183,7 @@ def test_filtered_levels_equal_exact(seeds, mirror, nudges):
 def test_filtered_coincidence_equals_dictionary_scan(raw):
     """Points 10^-30 apart have equal floats: the filtered duplicate search must still
     report exactly the first pair the exact dictionary scan reports."""
-    from exactsym.configuration import _coincident
+    from exactsym.geometry.configuration import _coincident
     from exactsym.exact import exact_key
     points = [(fmpq(a) + e * TINY, fmpq(b)) for a, b, e in raw]
     config = Configuration(points=points, system=None)
@@ -309,8 +309,8 @@ def test_rational_levels_behave_as_their_tuple(config):
     levels, element by element, as a whole, hashed, sliced, pickled; their ranks are the
     level index of each point; each squared radius is the exact one."""
     import pickle
-    import exactsym.levels as levels
-    from exactsym.geometry import squared_distance
+    import exactsym.geometry.levels as levels
+    from exactsym.geometry.predicates import squared_distance
     saved = levels._FILTER_MIN
     try:
         levels._FILTER_MIN = 1
@@ -342,7 +342,7 @@ def test_large_orderings_pass_the_checker(with_centre):
     import copy
     import json
     from exactsym import checker
-    from exactsym.certificate import make_certificate
+    from exactsym.certify.certificate import make_certificate
     rnd = random.Random(11)
     points = {(fmpq(rnd.randint(-10 ** 4, 10 ** 4), rnd.randint(1, 30)),
                fmpq(rnd.randint(-10 ** 4, 10 ** 4), rnd.randint(1, 30))) for _ in range(200)}

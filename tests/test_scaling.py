@@ -18,14 +18,14 @@ from math import gcd
 
 import pytest
 
-from exactsym.audit import audit
-from exactsym.configuration import Configuration, load
+from exactsym.audit.statements import audit
+from exactsym.geometry.configuration import Configuration, load
 from exactsym.exact import fmpq
-from exactsym.levels import levels_of
+from exactsym.geometry.levels import levels_of
 from exactsym.paper import family as F
 from exactsym.paper import polygon_report
 from exactsym.paper.circle_polygon import level_polygon, polygon_from_directions
-from exactsym.report import check_report
+from exactsym.report.check import check_report
 
 
 TRACE_LIMIT = F.DEFAULT_LIMITS.trace_entries

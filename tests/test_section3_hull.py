@@ -12,9 +12,9 @@ from hypothesis import given, settings, strategies as st
 
 from strategies import rational_group_points
 
-from exactsym.configuration import Configuration
-from exactsym.levels import levels_of
-from exactsym.symmetry import symmetry_group
+from exactsym.geometry.configuration import Configuration
+from exactsym.geometry.levels import levels_of
+from exactsym.truth.symmetry import symmetry_group
 
 GROUPS = ["C2", "C4", "D1", "D2", "D4"]
 

@@ -16,14 +16,14 @@ import pytest
 from exactsym import load
 from exactsym.analysis import Options, analyse
 from exactsym.exact import evaluate
-from exactsym.expr import parse_expression
+from exactsym.io.expr import parse_expression
 from exactsym.exact.cyclotomic import MAX_DEGREE
 from exactsym.exact.evaluate import dense_degree_limit
 from exactsym.exact.sparse_cyclotomic import SparseCyclotomic
 from exactsym.exact.tower import TowerElement
 from exactsym.paper.family.concentric import ALL_LINES
 from exactsym.paper.homogeneous import SHORT_DEGREE, is_short
-from exactsym.report import report_json
+from exactsym.report.check import report_json
 
 _PAIR = re.compile(r"\((-?1), ")
 
@@ -87,7 +87,7 @@ def _sparse_tower_config(tmp_path, case: tuple):
                                         (_sparse_tower_config, (6, 1)),
                                         (_sparse_tower_config, (6, 4))])
 def test_short_texts_read_back_as_the_numbers(tmp_path, monkeypatch, make, seed):
-    from exactsym import expr
+    from exactsym.io import expr
     monkeypatch.setattr(expr, "MAX_LENGTH", 10 ** 6)
     config = make(tmp_path, seed)
     if make is _config:

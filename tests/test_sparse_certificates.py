@@ -13,9 +13,9 @@ from flint import arb, ctx, fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certificate import make_certificate
-from exactsym.checker_sparse import SparseField, _zero, is_prime
-from exactsym.configuration import load
+from exactsym.certify.certificate import make_certificate
+from exactsym.checker.sparse import SparseField, _zero, is_prime
+from exactsym.geometry.configuration import load
 from exactsym.exact import cyclotomic
 from exactsym.exact.sparse_cyclotomic import is_zero_sum, sparse_context
 from certificate_checks import rejected as _rejected
@@ -152,7 +152,7 @@ def test_miller_rabin():
 def test_checker_numbers_agree_with_the_solver(data, m):
     """The checker's cosine-form sums and products (its own code) against the solver's:
     equal numbers, equal residues (hash), the same sign."""
-    from exactsym.certificate import Encoder
+    from exactsym.certify.certificate import Encoder
     from exactsym.exact.evaluate import SparseCyclotomicSystem
     system = SparseCyclotomicSystem(m)
     field = SparseField({"conductor": str(m),
@@ -183,7 +183,7 @@ def test_certify_writes_moderate_cyclotomic_fields_sparse(tmp_path, capsys):
     checker multiplies dense numbers term by term): the certificate's field is sparse, it
     verifies, and it claims the group check reports; degree 24 stays dense."""
     from exactsym.analysis import analyse
-    from exactsym.cli import main
+    from exactsym.cli.main import main
     for den, kind in ((127, "sparse-cyclotomic"), (13, None)):
         path = _moderate(tmp_path, den)
         out = tmp_path / f"c{den}.json"
@@ -201,11 +201,11 @@ def test_certify_writes_moderate_cyclotomic_fields_sparse(tmp_path, capsys):
 def test_certify_falls_back_to_the_dense_field(tmp_path, monkeypatch):
     """When the sparse field cannot write a certificate, certify writes it in the dense
     field check uses (one that verifies)."""
-    import exactsym.certificate as certificate
-    from exactsym.certificate import CertificateError
-    from exactsym.certify_cli import _certificate
+    import exactsym.certify.certificate as certificate
+    from exactsym.certify.certificate import CertificateError
+    from exactsym.cli.certify import _certificate
     from exactsym.exact.evaluate import SparseCyclotomicSystem
-    from exactsym.fileformat import read_config
+    from exactsym.io.fileformat import read_config
     made = certificate.make_certificate
     seen = []
 
@@ -245,8 +245,8 @@ def test_turns_of_large_prime_denominators_certify(tmp_path, p):
     """check answered and certify refused these (a prime factor of N above the checker's
     Miller-Rabin range); now the certificate carries primality proofs and verifies, via the
     command line too (exit 0)."""
-    from exactsym.checker_sparse import proved_primes
-    from exactsym.cli import main
+    from exactsym.checker.sparse import proved_primes
+    from exactsym.cli.main import main
     from flint import fmpz
     assert fmpz(p).is_prime() and p > 3317044064679887385961981
     cert = _cert(tmp_path, _big_turn_rows(p))
@@ -262,8 +262,8 @@ def test_turns_of_large_prime_denominators_certify(tmp_path, p):
 def test_a_conductor_with_two_large_primes():
     """N divisible by two primes above the bound (the full certify factors N many times, about
     10 s: here the field alone): both, and l, are proved, and the checker's field accepts it."""
-    from exactsym.checker_sparse import proved_primes
-    from exactsym.prime_certificates import hashing_prime_factors, primality_proofs
+    from exactsym.checker.sparse import proved_primes
+    from exactsym.certify.primes import hashing_prime_factors, primality_proofs
     q25 = 7 * 10 ** 24 + 61
     n = 4 * 3 * 5 * 7 * P25 * q25
     context = sparse_context(n)
@@ -290,7 +290,7 @@ def _proof_of(cert, p):
 def test_tampered_primality_proofs_are_rejected(tmp_path):
     """A lying proof (witness, factors of p - 1, a missing proof) makes verify fail, saying
     why; the command line exits 1."""
-    from exactsym.cli import main
+    from exactsym.cli.main import main
     good = _cert(tmp_path, _big_turn_rows(P25))
     assert [f for f, _ in _proof_of(good, P25)["factors"]] == [
         "2", "11", "23", "9881422924901185770751"]
@@ -338,8 +338,8 @@ def _factorization(n):
 def test_composites_claimed_prime_are_rejected(n):
     """A Carmichael number (a^(n-1) = 1 for every a prime to it) or a product of two 20-digit
     primes, with the true factorisation of n - 1 and any witness: never proved."""
-    from exactsym.checker_sparse import proved_primes
-    from exactsym.prime_certificates import primality_proofs
+    from exactsym.checker.sparse import proved_primes
+    from exactsym.certify.primes import primality_proofs
     factors = _full_factors(n - 1)
     helpers = primality_proofs([q for q, _ in factors])   # the big prime factors of n - 1
     for a in list(range(2, 40)) + [n - 1, 600000787 + 1]:
@@ -360,7 +360,7 @@ def test_composites_passing_pocklington_conditions_are_rejected(factors, f, a, r
     """Composites whose prime factors are all 1 mod F, with a witness meeting every condition
     on a: only the size of F (sqrt, cube root) and the BLS square test refuse them."""
     from math import gcd, prod
-    from exactsym.checker_sparse import _pocklington
+    from exactsym.checker.sparse import _pocklington
     n, big_f = prod(factors), prod(q ** e for q, e in f.items())
     assert (n - 1) % big_f == 0 and pow(a, n - 1, n) == 1
     assert all(gcd(pow(a, (n - 1) // q, n) - 1, n) == 1 for q in f)
@@ -369,7 +369,7 @@ def test_composites_passing_pocklington_conditions_are_rejected(factors, f, a, r
 
 
 def test_large_numbers_without_a_proof_are_refused():
-    from exactsym.checker_sparse import proved_primes
+    from exactsym.checker.sparse import proved_primes
     with pytest.raises(checker.Invalid, match="no primality proof"):
         is_prime(P25)
     for p in (1, 0, -7):
@@ -382,8 +382,9 @@ def test_certify_refuses_in_one_line_when_p_minus_1_resists(tmp_path, monkeypatc
     effort (here made smaller to keep the test fast; the real bound refuses it in about 2.5 s),
     and no elliptic curve (the search made to fail: tests/test_elliptic_primes.py has the
     success): certify exits 2 with one line naming p; check answers."""
-    from exactsym import elliptic_primes, prime_certificates
-    from exactsym.cli import main
+    from exactsym.certify import elliptic_primes
+    from exactsym.certify import primes as prime_certificates
+    from exactsym.cli.main import main
 
     def no_curve(n):
         raise elliptic_primes.EllipticError(f"no elliptic primality certificate of {n}")
@@ -420,7 +421,7 @@ def checker_sparse_prime(n):
 
 
 def _checker_accepts(n: int, a: int, factors: list) -> bool:
-    from exactsym.checker_sparse import _pocklington
+    from exactsym.checker.sparse import _pocklington
     try:
         _pocklington(n, a, factors, set())
         return True
@@ -436,7 +437,7 @@ def test_proofs_are_accepted_exactly_for_primes(n, data):
     the solver's witness is accepted for a prime when F^3 >= n; no witness is accepted for a
     composite."""
     from flint import fmpz
-    from exactsym.prime_certificates import _witness
+    from exactsym.certify.primes import _witness
     if data.draw(st.booleans()):                # primes are rare among random integers
         n = _next_prime(n)
     factors = _full_factors(n - 1)
@@ -461,8 +462,8 @@ def test_medium_primes_and_composites_above_the_bound():
     composite is proved prime with the true factorisation of n - 1 and small witnesses."""
     import random
     from flint import fmpz
-    from exactsym.checker_sparse import proved_primes
-    from exactsym.prime_certificates import primality_proofs
+    from exactsym.checker.sparse import proved_primes
+    from exactsym.certify.primes import primality_proofs
     rng = random.Random(9)
     for _ in range(12):
         n = rng.randrange(10 ** 24 * 4, 10 ** 40) | 1

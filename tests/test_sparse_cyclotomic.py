@@ -10,13 +10,13 @@ import pytest
 from flint import fmpq
 from hypothesis import assume, given, settings, strategies as st
 
-from exactsym.configuration import load
+from exactsym.geometry.configuration import load
 from exactsym.errors import FieldTooLargeError
 from exactsym.exact import cyclotomic, evaluate, exact_key, number_text
 from exactsym.exact.evaluate import SparseCyclotomicSystem, dense_degree_limit, number_system
 from exactsym.exact.sparse_cyclotomic import (SparseCyclotomic, cos_turn, from_poly_element,
                                               is_zero_sum, sparse_context, sqrt_rational)
-from exactsym.expr import parse_expression
+from exactsym.io.expr import parse_expression
 
 CONDUCTORS = [12, 20, 27, 36, 45, 60, 63, 84, 90, 105, 120, 135, 180, 210, 225, 315, 420]
 BIG = 4 * 5 * 13 * 999983 * 999979          # the issue's example
@@ -294,7 +294,7 @@ def _write(tmp_path, name, rows):
 
 
 def test_issue_example_is_answered(tmp_path):
-    from exactsym.symmetry import symmetry_group
+    from exactsym.truth.symmetry import symmetry_group
     rows = ['{ r = "1", turn = "0" }', '{ r = "1", turn = "1/999983" }',
             '{ r = "2", turn = "2/5" }', '{ r = "3", turn = "3/999979" }',
             '{ r = "1", turn = "5/13" }']
@@ -328,7 +328,7 @@ def _verdicts(report) -> object:
 
 def _report(path):
     from exactsym.analysis import Options, analyse
-    from exactsym.report import report_json
+    from exactsym.report.check import report_json
     import json
     config = load(path)
     return config, json.loads(json.dumps(report_json(analyse(config, options=Options()))))
@@ -361,7 +361,7 @@ def test_same_report_as_the_dense_field(tmp_path, name):
     assert isinstance(sparse_config.system, SparseCyclotomicSystem)
     assert _verdicts(sparse) == _verdicts(dense)
     if name == "two mirror pairs":                  # the cleared path was taken
-        from exactsym.levels import levels_of
+        from exactsym.geometry.levels import levels_of
         from exactsym.paper.circle_polygon import level_polygon
         levels = levels_of(sparse_config)
         assert any(level_polygon(sparse_config, levels, k, cleared=True).cleared
@@ -396,7 +396,7 @@ def test_big_turns_metamorphic(tmp_path, shuffle, turn, reflect):
     """A C5 configuration off the origin at turns 1/999983 (a field of degree ~10^12): the
     group is C5 about (1, 1/3) whatever the rotation (by a turn of denominator 999979),
     reflection or order of the points; the leader and orderability follow."""
-    from exactsym.symmetry import symmetry_group
+    from exactsym.truth.symmetry import symmetry_group
     config = load(_write(tmp_path, "c.toml", _big_rows(shuffle, turn, reflect)))
     assert isinstance(config.system, SparseCyclotomicSystem)
     group = symmetry_group(config)
@@ -414,7 +414,7 @@ def test_big_turns_ordering_maps_along(tmp_path, shuffle, turn, reflect):
     """The issue's asymmetric example (off the origin, so Cartesian in the sparse field) moved
     by a rotation of a turn near 10^-6, a reflection and a shuffle: C1, and the ordering and
     the leader are the same robots."""
-    from exactsym.symmetry import symmetry_group
+    from exactsym.truth.symmetry import symmetry_group
     order = list(range(len(ASYMMETRIC)))
     order = order[shuffle:] + order[:shuffle]
     rows = []
@@ -435,7 +435,7 @@ def test_a_long_sparse_line_is_shown_by_its_decimal_on_the_screen():
     cosines by the slope's decimal and the length of its exact text (which --json
     prints); short ones as they are."""
     from exactsym.paper.keys import line_key
-    from exactsym.text_numbers import LONG, approx
+    from exactsym.exact.text_numbers import LONG, approx
     context = sparse_context(4 * 999983)
     x = sum((SparseCyclotomic(context, {e: fmpq(e, 7)}) for e in (3, 10, 77, 1234)),
             SparseCyclotomic(context, {0: fmpq(1, 3)}))
@@ -457,8 +457,8 @@ def test_a_rational_sec_centre_is_held_as_a_rational(tmp_path, shift):
     a quotient X/D of sums of cosines, is held as the rational it is (sec._rational_centre), so
     the directions p - C stay sums of two cosines; the group is C7 and an unmoved copy has
     the same verdicts."""
-    from exactsym.levels import levels_of
-    from exactsym.symmetry import symmetry_group
+    from exactsym.geometry.levels import levels_of
+    from exactsym.truth.symmetry import symmetry_group
     rows = _orbit_rows(7, 1, fmpq(1, 999983), shift) + \
         _orbit_rows(7, 2, fmpq(3, 999983), shift)
     config = load(_write(tmp_path, "t.toml", rows))

@@ -16,11 +16,11 @@ import pytest
 from flint import fmpq
 
 from exactsym import checker
-from exactsym.certificate import make_certificate
-from exactsym.checker_numbers import Invalid
-from exactsym.checker_tower_sparse import SparseKummerTower
-from exactsym.cli import main as cli_main
-from exactsym.configuration import load
+from exactsym.certify.certificate import make_certificate
+from exactsym.checker.arithmetic import Invalid
+from exactsym.checker.tower_sparse import SparseKummerTower
+from exactsym.cli.main import main as cli_main
+from exactsym.geometry.configuration import load
 from exactsym.exact.cyclotomic_sqrt import split_primes
 from exactsym.exact.kummer import SquareClasses
 from exactsym.exact.sparse_cyclotomic import sparse_context
@@ -236,7 +236,7 @@ def test_the_ordering_filter_agrees_with_exact_products():
     signs of u . v and u x v and the order of two angles read from boxes are the exact
     ones (an unboxed plane of the same directions computes the products), and ties -- two
     points on one ray, equal angles -- fall back to the exact products."""
-    from exactsym.checker_ordering import _Plane
+    from exactsym.checker.ordering import _Plane
     field = SparseKummerTower(_tower(3999932, [145, 374, 7], ["11999797", "35999389",
                                                              "71998777"]))
     nums = [field.num(v) for v in ([1, "0", {"4": "1"}], [2, "1/3", {"600": "-1"}],
@@ -268,7 +268,7 @@ def test_checker_tower_products_by_a_lower_level():
     """Tower.mul of a factor below the other's level multiplies the two halves (a + b y) c
     = a c + (b c) y, where the full formula walked the other factor twice per level: the
     same products as the full formula, on numbers spread over three levels."""
-    from exactsym.checker_tower import _add, _make, _split, _level
+    from exactsym.checker.tower import _add, _make, _split, _level
     field = SparseKummerTower(_tower(3999932, [145, 374, 7], ["11999797", "35999389",
                                                              "71998777"]))
 

@@ -14,7 +14,7 @@ from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym.analysis import analyse
-from exactsym.configuration import load
+from exactsym.geometry.configuration import load
 from exactsym.errors import FieldTooLargeError
 from exactsym.exact.adjoin_sqrt import adjoin_sqrt
 from exactsym.exact.evaluate import SparseKummerSystem

@@ -17,17 +17,17 @@ from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certificate import make_certificate
-from exactsym.configuration import load
+from exactsym.certify.certificate import make_certificate
+from exactsym.geometry.configuration import load
 from exactsym.errors import InputError
 from exactsym.exact import evaluate, evaluate_all
 from exactsym.exact.evaluate import SparseNestedSystem
 from exactsym.exact.multiquadratic import MQ
 from exactsym.exact.sparse_tower import SparseKummerTower
 from exactsym.exact.tower import TowerElement
-from exactsym.expr import parse_expression
-from exactsym.levels import levels_of
-from exactsym.symmetry import symmetry_group
+from exactsym.io.expr import parse_expression
+from exactsym.geometry.levels import levels_of
+from exactsym.truth.symmetry import symmetry_group
 from certificate_checks import rejected
 
 

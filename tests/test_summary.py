@@ -9,9 +9,11 @@ from pathlib import Path
 
 import pytest
 
-from exactsym import Configuration, analyse, load
+from exactsym import Configuration
+from exactsym import analyse
+from exactsym import load
 from exactsym.analysis import Options
-from exactsym.summary import one_line, summary_text
+from exactsym.report.summary import one_line, summary_text
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = sorted(p for p in (ROOT / "cases").rglob("*") if p.suffix in (".toml", ".txt"))
@@ -133,7 +135,7 @@ def test_no_python_value_on_screen_and_a_decimal_beside_every_irrational_number(
 def test_fields_added_later_are_shown_in_words(monkeypatch):
     """report_text reads the JSON form: a field another layer adds (to a level's paper
     verdict, a discrepancy, the paper, the audit) is shown with --verbose, in words."""
-    import exactsym.report as report
+    import exactsym.report.check as report
 
     original = report.report_json
 
@@ -214,7 +216,7 @@ def test_one_line_per_file(monkeypatch):
 
 
 def test_the_audit_command_prints_no_python_value(capsys, monkeypatch):
-    from exactsym.cli import main
+    from exactsym.cli.main import main
     monkeypatch.chdir(ROOT)
     for path in CASES:
         main(["audit", str(path.relative_to(ROOT))])
@@ -224,7 +226,7 @@ def test_the_audit_command_prints_no_python_value(capsys, monkeypatch):
 
 
 def test_the_audit_line_counts_the_statements_checked_when_told(monkeypatch):
-    import exactsym.report as report
+    import exactsym.report.check as report
     original = report.report_json
 
     def covered(analysis, brief=False):
@@ -243,8 +245,8 @@ def test_the_summary_builds_no_exact_texts_it_does_not_print(monkeypatch):
     """report_json(brief=True) (the summary's) leaves out the levels and the paper's G
     and G': their descriptions are not even computed; the full report has both."""
     from exactsym.analysis import analyse
-    from exactsym.configuration import load
-    from exactsym.report import report_json
+    from exactsym.geometry.configuration import load
+    from exactsym.report.check import report_json
     monkeypatch.chdir(ROOT)
     analysis = analyse(load("cases/family/equilateral-g1-leader.toml"))
     brief = report_json(analysis, brief=True)
@@ -291,7 +293,7 @@ def test_a_huge_exact_number_is_sized_without_being_written():
     from flint import fmpq_poly
     from exactsym.exact.cyclotomic import cyclotomic_field
     from exactsym.exact.text import number_text
-    from exactsym.text_numbers import HUGE, _huge_text, approx, number
+    from exactsym.exact.text_numbers import HUGE, _huge_text, approx, number
     field = cyclotomic_field(2520)                     # degree 576
     rng = random.Random(5)
     big = field.element(fmpq_poly([rng.getrandbits(2000) - (1 << 1999)
@@ -320,7 +322,7 @@ def test_a_huge_line_is_written_by_its_decimal_for_the_screen_only():
     from exactsym.exact.text import number_text
     from exactsym.paper.family.concentric import SCREEN_ONLY, line_text, lines_text
     from exactsym.paper.keys import line_key
-    from exactsym.text_numbers import HUGE
+    from exactsym.exact.text_numbers import HUGE
     field = cyclotomic_field(2520)                     # degree 576
     rng = random.Random(11)
     x, y = (field.element(fmpq_poly([rng.getrandbits(1200) - (1 << 1199)

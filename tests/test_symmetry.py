@@ -1,4 +1,4 @@
-"""Ground truth: the symmetry group, the canonical ordering and the leader (exactsym.symmetry).
+"""Ground truth: the symmetry group, the canonical ordering and the leader (exactsym.truth.symmetry).
 
 Laws: the group and orderability never change under an exact similarity and a shuffle of
 the input; the ordering and the leader map along; the group agrees with a brute-force
@@ -15,10 +15,10 @@ from pathlib import Path
 import pytest
 from hypothesis import event, given, settings, strategies as st
 
-from exactsym.configuration import Configuration, load
+from exactsym.geometry.configuration import Configuration, load
 from exactsym.exact import fmpq
-from exactsym.report import check_report
-from exactsym.symmetry import (SymmetryGroup, cyclic_period, least_rotation, occurrences,
+from exactsym.report.check import check_report
+from exactsym.truth.symmetry import (SymmetryGroup, cyclic_period, least_rotation, occurrences,
                                pseudo_angle, symmetry_group)
 
 from strategies import (RATIONAL_GROUPS, brute_force_group, brute_force_polar_group,
@@ -132,7 +132,7 @@ def test_one_point():
 
 def test_group_about_a_given_centre():
     """Rings with another centre: the symmetries that fix it (used for sub-configurations)."""
-    from exactsym.levels import Level, Levels, levels_of
+    from exactsym.geometry.levels import Level, Levels, levels_of
     whole = levels_of(Configuration.from_points(P((0, 0), (4, 0), (4, 4), (0, 4), (1, 2))))
     one = Configuration.from_points(P((1, 2)))
     group = symmetry_group(one, Levels(whole.sec, (Level(Q(1), (0,)),), False))
@@ -240,7 +240,7 @@ def test_regular_10000_gon_is_fast_and_lazy():
 
 def test_report_section():
     from exactsym.analysis import analyse
-    from exactsym.report import report_text
+    from exactsym.report.check import report_text
     report = check_report(Configuration.from_points(P((0, 0), (4, 0), (2, 3))))
     assert (report["group"], report["orderable"], report["ordering"], report["leader"]) == \
         ("D1", False, None, 2)
@@ -287,7 +287,7 @@ def test_pseudo_angle_orders_like_the_angle(u, v):
 
 def test_sort_by_exact_keys_is_decided_exactly():
     """Keys whose floats collide or are in the wrong order: the exact sort decides."""
-    from exactsym.symmetry import sort_by_exact_keys
+    from exactsym.truth.symmetry import sort_by_exact_keys
     tiny = Q(1, 10**30)
     keys = [Q(1, 3) + j * tiny for j in range(100, 0, -1)] + [Q(1, 3) - tiny, Q(1, 3)]
     idx = list(range(len(keys)))
@@ -301,8 +301,8 @@ def test_sort_by_exact_keys_is_decided_exactly():
 @settings(max_examples=60, deadline=None)
 def test_integer_and_generic_ray_arithmetic_agree(points):
     """The integer fast path for rational points gives exactly the generic result."""
-    from exactsym.levels import levels_of
-    from exactsym.symmetry import _cartesian_rays
+    from exactsym.geometry.levels import levels_of
+    from exactsym.truth.symmetry import _cartesian_rays
     centre = levels_of(Configuration.from_points(points)).sec.centre
     assert _cartesian_rays(points, centre, True) == _cartesian_rays(points, centre, False)
 

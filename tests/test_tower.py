@@ -16,14 +16,14 @@ from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certificate import make_certificate
-from exactsym.configuration import load
+from exactsym.certify.certificate import make_certificate
+from exactsym.geometry.configuration import load
 from exactsym.errors import FieldTooLargeError, InputError
 from exactsym.exact import evaluate, evaluate_all, exact_key, number_text
 from exactsym.exact.multiquadratic import MQ
 from exactsym.exact.tower import TowerElement
 from exactsym.exact.tower_proof import nonsquare_witness
-from exactsym.expr import MAX_LENGTH, parse_expression
+from exactsym.io.expr import MAX_LENGTH, parse_expression
 from certificate_checks import rejected as _rejected
 
 P = parse_expression

@@ -12,8 +12,8 @@ from __future__ import annotations
 
 import pytest
 from exactsym.analysis import analyse, built_levels
-from exactsym.configuration import load
-from exactsym.levels import levels_of
+from exactsym.geometry.configuration import load
+from exactsym.geometry.levels import levels_of
 from exactsym.paper import polygon as P
 from exactsym.paper.circle_polygon import level_polygon
 from exactsym.paper.family import concentric_polygons

@@ -34,7 +34,7 @@ from typing import Iterable, Sequence
 from flint import fmpq, fmpz
 
 from ..errors import ExpressionError, FieldTooLargeError
-from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
+from ..io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 from . import cyclotomic
 from .field import FieldElement, NumberField, PolyElement, as_fmpq
 from .multiquadratic import MQ, sqrt_rational, squarefree_split

@@ -13,7 +13,7 @@ from __future__ import annotations
 from flint import arb, ctx, fmpq, fmpq_poly
 
 from ..errors import ExpressionError, FieldTooLargeError
-from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
+from ..io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 from .field import NumberField, as_fmpq
 from .text import _pi_multiple_text, _sum_text, expression_text, rational_text
 

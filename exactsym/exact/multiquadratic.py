@@ -25,7 +25,7 @@ from math import gcd, lcm
 
 from flint import arb, ctx, fmpq, fmpz, fmpz_poly
 
-from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt
+from ..io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt
 from .factor import factorization
 from .field import FieldElement
 
@@ -313,7 +313,7 @@ class MQ(FieldElement):
 
     def text(self) -> str:
         """The value in the configuration expression syntax (``3/4*sqrt(6) - 1/2``):
-        parsing it with :func:`exactsym.expr.parse_expression` and :func:`from_tree`
+        parsing it with :func:`exactsym.io.expr.parse_expression` and :func:`from_tree`
         gives back this element."""
         if not self.terms:
             return "0"
@@ -375,7 +375,7 @@ def sqrt_rational(q) -> MQ:
 
 
 def from_tree(node: Node) -> MQ:
-    """Evaluate an expression tree (:mod:`exactsym.exprtree`) built from rationals,
+    """Evaluate an expression tree (:mod:`exactsym.io.exprtree`) built from rationals,
     ``+ - * /``, integer powers and square roots of non-negative rationals.
     Raises ``ValueError`` for anything else (``cos``, ``pi``, nested radicals)."""
     if isinstance(node, Const):

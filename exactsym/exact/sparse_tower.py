@@ -21,7 +21,7 @@ need a new level is refused (rational levels come first, so that
 more than :data:`.sparse_cyclotomic.MAX_GAUSS_TERMS` terms (a prime of N near 10^6) is
 refused too.  ``certify`` writes the tower over the sparse base, its levels proved new by
 Legendre symbols at primes p = 1 mod N (:func:`.tower_proof.legendre_rank_primes`; the
-checker: ``exactsym/checker_tower_sparse.py``).
+checker: ``exactsym/checker/tower_sparse.py``).
 
 Public names: :class:`SparseKummerTower`.
 """

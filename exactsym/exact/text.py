@@ -1,6 +1,6 @@
 """Exact numbers and expression trees written back in the configuration syntax.
 
-Every string made here parses (with :func:`exactsym.expr.parse_expression`) to
+Every string made here parses (with :func:`exactsym.io.expr.parse_expression`) to
 the same exact number: the JSON output of ``exactsym check`` relies on it.
 """
 
@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from flint import fmpq
 
-from ..exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
+from ..io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 from .field import FieldElement, as_fmpq
 from .multiquadratic import MQ
 from .sparse_cyclotomic import SparseCyclotomic
@@ -75,7 +75,7 @@ def _expression(node: Node) -> tuple[str, int]:
 
 def expression_text(node: Node) -> str:
     """The text of an expression tree with only the parentheses it needs; it parses back
-    (:func:`exactsym.expr.parse_expression`) to an expression of the same value."""
+    (:func:`exactsym.io.expr.parse_expression`) to an expression of the same value."""
     return _expression(node)[0]
 
 

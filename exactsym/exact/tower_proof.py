@@ -4,11 +4,11 @@ A level's radicand r_i is proved a non-square of K_(i-1) by a ring homomorphism
 phi: R -> F_p (R: the elements whose coefficients have no p in their denominators) under
 which r_i is a quadratic non-residue; docs/certificates.md ("Towers") gives the argument and
 its conditions (p odd, p divides no base radicand, r_j p-integral and N(r_j) a p-unit for
-j < i), which the checker (exactsym.checker_tower) re-checks.
+j < i), which the checker (exactsym.checker.tower) re-checks.
 
 Over a cyclotomic base (:mod:`.cyclotomic_tower`) the map sends zeta to a root w of Phi_M
 modulo a prime p = 1 mod M (:func:`cyclotomic_nonsquare_witness`); the checker re-checks it in
-``exactsym.checker_tower``.
+``exactsym.checker.tower``.
 
 Levels that are all square roots of rationals over a cyclotomic base (:mod:`.kummer`) are
 proved together by :func:`kummer_witness`: Legendre symbols of full rank over F_2; levels

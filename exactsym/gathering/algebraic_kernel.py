@@ -105,10 +105,10 @@ def _kernel_field(root, basis):
 
 
 def kernel_configuration(points):
-    """A kernel :class:`~exactsym.configuration.Configuration` of the snapshot ``points``
+    """A kernel :class:`~exactsym.geometry.configuration.Configuration` of the snapshot ``points``
     (pairs of MQ and :class:`AlgebraicNumber` numbers of one root), in a
     :class:`~exactsym.exact.evaluate.FieldSystem` over ``Q(gamma)``."""
-    from ..configuration import Configuration
+    from ..geometry.configuration import Configuration
     roots = {x.root for p in points for x in p if is_algebraic(x)}
     if len(roots) != 1:
         raise ValueError("kernel_configuration: the points hold no number of one K(alpha)")

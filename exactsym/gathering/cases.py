@@ -1,6 +1,6 @@
 """Gathering expectations of case files (``cases/gathering/``).
 
-``[expect]`` keys read here (validated by :data:`exactsym.fileformat.EXPECT_KEYS`):
+``[expect]`` keys read here (validated by :data:`exactsym.io.fileformat.EXPECT_KEYS`):
 
 * ``gather_outcome`` -- gathered | stalled | violated | not-possible | undecided | max-events;
 * ``gather_label`` -- the violated statement's label (``gather-no-obstacle``, ...);

@@ -1,7 +1,7 @@
 """The one place where the gathering simulator imports the rest of exactsym.
 
 The paper layer (Preprocess, MakeAsym, ElectLeader on concentric polygons) works on
-:class:`~exactsym.configuration.Configuration` objects whose numbers live in one
+:class:`~exactsym.geometry.configuration.Configuration` objects whose numbers live in one
 number system of the kernel; the simulator holds points as multiquadratic elements.
 :func:`paper_decision` converts a snapshot of R, runs GatheringPattern's decision and
 the leader election exactly as the paper layer implements them, and returns who moves
@@ -21,11 +21,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from fractions import Fraction
 
-from ..configuration import Configuration
+from ..geometry.configuration import Configuration
 from ..errors import InputError
 from ..exact import evaluate, fmpq, number_system
-from ..expr import parse_expression
-from ..levels import levels_of as compute_rings
+from ..io.expr import parse_expression
+from ..geometry.levels import levels_of as compute_rings
 from ..paper.family import (concentric_polygons, elect_leader, is_symmetric_family,
                             is_symmetric_polygon, make_asym, preprocess)
 
@@ -136,8 +136,8 @@ def _decision(config, ring_data, orientation: int, reading: str) -> PaperDecisio
 def read_case(path):
     """Read a case file (configuration format 1): ``(points as fmpq pairs, name, expect,
     source)``; raises :class:`InputError` with the file location."""
-    from ..fileformat import read_config
-    from ..configuration import from_file
+    from ..io.fileformat import read_config
+    from ..geometry.configuration import from_file
     config = from_file(read_config(path))
     pts = []
     for x, y in config.points:

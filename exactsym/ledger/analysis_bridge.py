@@ -30,8 +30,8 @@ class CaseAnalysis:
 def analyse_case(path) -> CaseAnalysis:
     """Load ``path`` and analyse it once (the caller caches per file)."""
     from ..analysis import analyse
-    from ..configuration import load
-    from ..report import GATHER_PREFIX, failed_expectations, report_json
+    from ..geometry.configuration import load
+    from ..report.check import GATHER_PREFIX, failed_expectations, report_json
     try:
         config = load(Path(path))
     except InputError as err:

@@ -74,7 +74,7 @@ def half_plane(d) -> int:
 
 def compare_directions(d1, d2) -> int:
     """Compare the angles in [0, 2 pi) of two non-zero vectors: -1, 0 or 1 (as
-    :func:`exactsym.geometry.compare_directions`, with the cross product filtered)."""
+    :func:`exactsym.geometry.predicates.compare_directions`, with the cross product filtered)."""
     h1, h2 = half_plane(d1), half_plane(d2)
     if h1 != h2:
         return -1 if h1 < h2 else 1

@@ -158,10 +158,10 @@ def _squared_quotient(point, homogeneous, scale=1) -> str:
 
 
 def radius_text(r2):
-    """The text of a level's squared radius (:class:`~exactsym.level_radius.LevelRadius`,
+    """The text of a level's squared radius (:class:`~exactsym.geometry.level_radius.LevelRadius`,
     which keeps its point and the homogeneous centre) as |D p - (X, Y)|^2 scale / D^2, or
     None."""
-    from ..level_radius import LevelRadius, TowerLevelRadius
+    from ..geometry.level_radius import LevelRadius, TowerLevelRadius
     if isinstance(r2, TowerLevelRadius):
         return _squared_quotient(r2._p, r2._c) if is_short(r2._c) else None
     if not isinstance(r2, LevelRadius) or r2.homogeneous is None \

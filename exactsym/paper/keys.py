@@ -1,7 +1,7 @@
 """The paper layer's exact keys of rays, lines through C and gaps between directions.
 
 One home for the keys both :mod:`exactsym.paper.polygon` and :mod:`exactsym.paper.family`
-compare (the ground truth, :mod:`exactsym.symmetry`, keeps its own: the two sides share
+compare (the ground truth, :mod:`exactsym.truth.symmetry`, keeps its own: the two sides share
 no logic).  A direction is a rational turn (polar path) or an exact vector from C
 (Cartesian path).  A *line* through C is a direction modulo half a turn: its key is the
 turn of the line in [0, 1/2), or the ray of its doubled angle (``lemma-LOS-Passes-CenterSECP``).
@@ -17,7 +17,7 @@ from flint import ctx
 from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
-from ..text_numbers import DIGITS, HUGE, LONG, huge_quotient, number, quotient_decimal
+from ..exact.text_numbers import DIGITS, HUGE, LONG, huge_quotient, number, quotient_decimal
 from .homogeneous import homogeneous_pair, line_direction, slope_text
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
@@ -227,9 +227,9 @@ class LineKey:
     def screen_text(self) -> str:
         """:attr:`text`, except a slope written as a quotient whose exact text would be
         megabytes: then its decimal and the estimated length
-        (:func:`exactsym.text_numbers.huge_quotient`), what the text summary shows,
+        (:func:`exactsym.exact.text_numbers.huge_quotient`), what the text summary shows,
         without writing the text; and a long slope of a sparse Q(zeta_N), by its decimal
-        and length (:func:`exactsym.text_numbers.number`)."""
+        and length (:func:`exactsym.exact.text_numbers.number`)."""
         shown = self._factor_decimal() if self._value is None else None
         if shown is not None:               # a tower over the sparse Q(zeta_N): no product
             return shown

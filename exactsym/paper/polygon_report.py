@@ -1,7 +1,7 @@
 """The paper's verdicts on each level polygon (Section 3 and 4.1), for the report.
 
 :func:`level_reports` gives, per level, the ``"paper"`` entry of ``report["levels"]``
-(:mod:`exactsym.analysis` calls it once; :mod:`exactsym.report` places it)::
+(:mod:`exactsym.analysis` calls it once; :mod:`exactsym.report.check` places it)::
 
     {"straight": bool, "skew": bool, "degree": int or "p/q" string,
      "type": "type-0".."type-4" | "unclassified" | null, "type_reason": str,
@@ -46,7 +46,7 @@ import json
 from dataclasses import dataclass, field
 
 from ..exact import FieldElement, as_fmpq, exact_key, number_text, sign
-from ..configuration import no_cycle_collection
+from ..geometry.configuration import no_cycle_collection
 from . import polygon as paper
 from .circle_polygon import level_polygon
 from .family.concentric import mirror_lines
@@ -73,7 +73,7 @@ def level_verdicts(polygon) -> dict:
 
 
 def _type_facts(kind) -> tuple | None:
-    """What the audit reads of a polygon's type (:func:`exactsym.audit_levels.level_findings`,
+    """What the audit reads of a polygon's type (:func:`exactsym.audit.levels.level_findings`,
     ``lemma-sym-regular``): its name and whether every mirror passes through a vertex."""
     if kind is None:
         return None

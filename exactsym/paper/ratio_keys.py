@@ -22,7 +22,7 @@ from ..exact.sparse_cyclotomic import SparseCyclotomic
 from ..exact.tower import TowerElement, _raw as tower_raw, leaf_ratio
 from ..exact.fused import complex_product, cross_is_zero
 from .filtered import ball
-from ..level_radius import tower_ratio_irrational
+from ..geometry.level_radius import tower_ratio_irrational
 
 #: polynomial fields from this degree get ratio keys: all of them, since an inverse is
 #: slow at degree thousands and also at degree 4 with coefficients of thousands of digits

@@ -17,7 +17,7 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
     """Draw a configuration; save it to ``path`` (``.svg``, ``.png`` or ``.pdf``) when
     given, and return the matplotlib ``Figure``.
 
-    ``config_or_analysis``: a :class:`exactsym.configuration.Configuration`, a path to
+    ``config_or_analysis``: a :class:`exactsym.geometry.configuration.Configuration`, a path to
     a configuration file, or an object with a ``config`` attribute (an analysis: its
     ``truth``, ``paper`` and ``audit``, when present, are drawn instead of recomputed).
     ``show_paper``: also draw the lines of symmetry the paper's tests report per level
@@ -30,7 +30,7 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
     Raises :class:`PlotUnavailable` when matplotlib is missing (install the ``plot``
     extra), ``ValueError`` for an unknown picture format.
 
-    >>> from exactsym.configuration import Configuration
+    >>> from exactsym.geometry.configuration import Configuration
     >>> from exactsym.pictures import plot
     >>> square = Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -1)])
     >>> fig = plot(square)

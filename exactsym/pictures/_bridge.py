@@ -14,14 +14,14 @@ import re
 from flint import arb
 
 from ..exact import fmpq
-from ..configuration import Configuration, load
+from ..geometry.configuration import Configuration, load
 from ..errors import InputError
-from ..levels import levels_of as compute_rings
-from ..symmetry import symmetry_group
+from ..geometry.levels import levels_of as compute_rings
+from ..truth.symmetry import symmetry_group
 from ..paper import polygon as paper_polygon
 from ..paper.circle_polygon import level_polygon
 from ..paper import family as paper_family
-from ..audit import audit as run_audit
+from ..audit.statements import audit as run_audit
 from .scene import Circle, Line, Paper, PaperLevel, Robot, Rotation, Scene, Witness
 
 __all__ = ["scene_of", "load_configuration", "Configuration", "InputError"]

@@ -46,7 +46,7 @@ __all__ = ["analyse", "warm_up", "discrepancy_text", "expect_block", "check_case
 
 WHATS = ("truth", "paper", "audit", "gather")
 
-#: The conclusions the audit reports besides the statements (``exactsym.audit``).
+#: The conclusions the audit reports besides the statements (``exactsym.audit.statements``).
 _AUDIT_CONCLUSIONS = ("GatheringPattern", "ElectLeader", "MakeAsym")
 #: The statements the audit checks itself against the truth (their hypotheses are
 #: derived by :func:`_audit_hypotheses`, never from the paper's trace).
@@ -77,17 +77,17 @@ class BridgeInputError(ValueError):
 
 # ---------------------------------------------------------------- configurations
 def configuration(points, source: str = "<sweep>"):
-    """The :class:`exactsym.configuration.Configuration` of ``points``, read from the
+    """The :class:`exactsym.geometry.configuration.Configuration` of ``points``, read from the
     same text a case file holds (so a worker analyses exactly what is written)."""
-    from ..configuration import from_file
-    from ..fileformat import parse_config_text
+    from ..geometry.configuration import from_file
+    from ..io.fileformat import parse_config_text
     return from_file(parse_config_text(case_text(points), source, "toml"))
 
 
 def file_points(path: str) -> tuple:
     """The points of a configuration file as text: polar points as written (radius text,
     rational turn), Cartesian points when every coordinate is rational."""
-    from ..configuration import load
+    from ..geometry.configuration import load
     from ..errors import InputError
     from ..exact import RationalSystem
     try:
@@ -110,7 +110,8 @@ def _q(x) -> str:
 def warm_up(what: str) -> None:
     """Import what ``analyse(what, ...)`` needs (a worker does it once, before the clock
     of its first batch: the imports take about a second)."""
-    from .. import audit, symmetry  # noqa: F401
+    from ..audit import statements  # noqa: F401
+    from ..truth import symmetry  # noqa: F401
     from ..paper import family  # noqa: F401
     if what == "gather":
         from ..gathering import cases  # noqa: F401
@@ -120,7 +121,7 @@ def statement_labels(what: str) -> tuple:
     """Every label ``analyse(what, ...)`` checks, in the paper's order (``paper``: not the
     statements about orderability, which need the truth)."""
     if what in ("audit", "paper"):
-        from ..audit import CLAIMS, STATEMENT_ORDER
+        from ..audit.statements import CLAIMS, STATEMENT_ORDER
         labels = list(STATEMENT_ORDER) + [c for c in CLAIMS if c not in STATEMENT_ORDER]
         if what == "audit":
             labels += [c for c in _AUDIT_CONCLUSIONS if c not in labels]
@@ -132,7 +133,7 @@ def statement_labels(what: str) -> tuple:
 
 def analyse(what: str, points, budget: int = 0) -> dict:
     """Run one analysis on the configuration ``points`` (see the module docstring)."""
-    from ..configuration import no_cycle_collection
+    from ..geometry.configuration import no_cycle_collection
     config = configuration(points)
     with no_cycle_collection():
         if what == "truth":
@@ -147,7 +148,7 @@ def analyse(what: str, points, budget: int = 0) -> dict:
 
 
 def _truth(config) -> dict:
-    from ..symmetry import symmetry_group
+    from ..truth.symmetry import symmetry_group
     group = symmetry_group(config)
     return {"failed": [], "applicable": None,
             "truth": {"group": group.name, "orderable": group.orderable}}
@@ -159,7 +160,7 @@ def _paper_summary(res) -> dict:
 
 def _outside_instance(e) -> bool:
     """A trace entry the family layer marks outside the statement's hypotheses (the audit
-    makes it a note, ``exactsym.audit.HYPOTHESIS_MARKED``)."""
+    makes it a note, ``exactsym.audit.statements.HYPOTHESIS_MARKED``)."""
     witness = e.get("witness")
     return isinstance(witness, dict) and witness.get("within_hypotheses") is False
 
@@ -322,5 +323,5 @@ def expect_block(what: str, record: dict) -> dict:
 def check_case_file(path) -> list[str]:
     """The ``[expect]`` claims of the case file at ``path`` that ``exactsym check``
     contradicts (empty: the case passes), as ``exactsym cases`` prints them."""
-    from ..cases_cli import run_case
+    from ..report.cases import run_case
     return list(run_case(path).failures)

@@ -12,7 +12,7 @@ but does not give, ``FindAsymmetry`` and ``Find_Asymmetry_Pair``) and the decisi
 ``GatheringPattern``.  Single polygons are :mod:`exactsym.paper.polygon`'s business
 (Check_Symmetry_*, Elect_Leader_Sym, Make_SymToAsym, Elect_Leader_Asym, polygon types); this
 package calls them and never re-implements them.  It never imports the ground truth
-(:mod:`exactsym.symmetry`): the audit (:mod:`exactsym.audit`) compares the two.
+(:mod:`exactsym.truth.symmetry`): the audit (:mod:`exactsym.audit.statements`) compares the two.
 
 Every reading chosen where the paper is ambiguous is listed in
 ``docs/interpretations.md`` (section "The family layer"); the essentials:

@@ -3,7 +3,7 @@
 :func:`family_claims` checks, within the work budgets (:class:`~.limits.Limits`), each
 statement by the function named after its label (``obs_pair_asym_ord``, ...) and records
 each failure (``holds`` False, with a witness) and one summary per statement that holds.
-Claims about orderability need the truth and are the audit's (:mod:`exactsym.audit`).
+Claims about orderability need the truth and are the audit's (:mod:`exactsym.audit.statements`).
 """
 
 from __future__ import annotations

@@ -9,7 +9,7 @@ symmetry.  Two or more polygons have a common line iff these sets intersect (ALL
 neutral); a skew symmetric polygon thus pairs symmetrically with every symmetric polygon
 (the reading of ``lem-3-pair-sym``'s proof; ``docs/interpretations.md``).
 
-:class:`Ring` is one polygon of G or G' (one level of :class:`exactsym.levels.Levels`, or
+:class:`Ring` is one polygon of G or G' (one level of :class:`exactsym.geometry.levels.Levels`, or
 several merged by Preprocess); its vertex labels are tuples of configuration indices.
 """
 
@@ -21,10 +21,10 @@ from functools import cached_property
 from operator import attrgetter
 from typing import Iterable, Sequence
 
-from ...configuration import Configuration
+from ...geometry.configuration import Configuration
 from ...exact import number_text, sign
-from ...levels import Levels, levels_of
-from ...strings import find_all
+from ...geometry.levels import Levels, levels_of
+from ...geometry.strings import find_all
 from ..circle_polygon import CirclePolygon
 from ..homogeneous import register
 from ..keys import bisector_key, gap_ids, line_key, ray_keys

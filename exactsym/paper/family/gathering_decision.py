@@ -9,10 +9,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import partial
 
-from ...configuration import Configuration, Polar, no_cycle_collection
+from ...geometry.configuration import Configuration, Polar, no_cycle_collection
 from ...errors import InputError, MoveImpossible
 from ...exact import normal_turn
-from ...levels import Levels, levels_of, polar_sec
+from ...geometry.levels import Levels, levels_of, polar_sec
 from .claims import family_claims
 from .concentric import (common_lines, concentric_polygons, is_polar, is_symmetric_family,
                          is_symmetric_polygon, lines_text)

@@ -2,7 +2,7 @@
 
 Epsilon moves are exact: a rational turn (polar), or a rational rotation keeping the
 robot on its circle (Cartesian).  The configuration after the moves is built with
-:meth:`exactsym.configuration.Configuration.with_positions` (exact numbers; an
+:meth:`exactsym.geometry.configuration.Configuration.with_positions` (exact numbers; an
 impossible move raises :class:`~exactsym.errors.MoveImpossible`).
 """
 
@@ -12,17 +12,17 @@ from dataclasses import dataclass, field
 from typing import Iterable, Sequence
 
 from .. import polygon as P
-from ...configuration import Configuration, Polar
+from ...geometry.configuration import Configuration, Polar
 from ...errors import MoveImpossible
 from ...exact.adjoin_sqrt import adjoin_sqrt
 from ...exact import fmpq, normal_turn, number_text, sign
-from ...levels import Levels
+from ...geometry.levels import Levels
 from ..circle_polygon import polygon_from_directions
 from .concentric import (Ring, has_lines, intersect_lines, is_symmetric_pair,
                          is_symmetric_polygon, lines_text, new_ring)
 from .elect_leader import elect_leader_asym_on, first_of_ring_in_ordering
 from .find_asymmetry import find_asymmetry, find_asymmetry_pair
-from ...geometry import PseudoAngle
+from ...geometry.predicates import PseudoAngle
 from ..keys import HALF, cross, dot
 from .limits import DEFAULT_LIMITS, Limits, MAX_QUADRATIC_N, WorkBudgetExceeded
 from .projection import radial_projection, robot_in, scale_to

@@ -8,7 +8,7 @@ Elect_Leader_Asym); this package re-exports their public names.
 
 Everything here follows the paper's words; where the paper is ambiguous the
 reading chosen is stated in the docstring and in ``docs/interpretations.md``.
-This module never imports the ground truth (:mod:`exactsym.symmetry`).
+This module never imports the ground truth (:mod:`exactsym.truth.symmetry`).
 
 Strings (Section 3, before ``lemma-straight-sym``)
 --------------------------------------------------

@@ -10,7 +10,7 @@ from __future__ import annotations
 from typing import Sequence
 
 from ...exact import FieldElement, fmpq, normal_turn
-from ...strings import cyclic_period, first_occurrence
+from ...geometry.strings import cyclic_period, first_occurrence
 from ..circle_polygon import CirclePolygon
 from ..filtered import circle_gap_tokens, cross_sign, gap_classes_on_circle
 from ..inverses import squared_length

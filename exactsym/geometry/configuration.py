@@ -1,0 +1,482 @@
+"""A configuration: robot positions as exact numbers, validated; moves and frames on it.
+
+:func:`load` reads a file (:mod:`exactsym.io.fileformat`), evaluates every expression in
+one number system (:mod:`exactsym.exact`) and checks validity (distinct points,
+``r >= 0``, fat robots at distance >= 2).  A configuration whose points are all
+polar keeps them as ``(r^2, turn)`` (and the radii r) too: about the origin, radii and
+angles are then rationals and need no trigonometry, which keeps polar polygons with
+thousands of vertices cheap (``docs/numbers.md``); Cartesian coordinates are
+built on first use.
+
+Moves and changes of frame work on the exact numbers (never on expressions):
+:meth:`Configuration.moved` / :meth:`Configuration.with_positions` put robots at new
+positions (Cartesian pairs or :class:`Polar`), :meth:`Configuration.transformed` applies
+a :class:`Similarity`; an impossible result (robots coinciding or overlapping, a
+negative radius) raises :class:`~exactsym.errors.MoveImpossible`, not ``InputError``.
+"""
+
+from __future__ import annotations
+
+import gc
+from contextlib import contextmanager
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Iterable, Mapping, Sequence
+
+import numpy as np
+
+from ..io.fileformat import ConfigFile, PlainPoints, PointSpec, read_config
+from ..errors import ExpressionError, InputError, MoveImpossible
+from ..exact import (FieldElement, RationalSystem, evaluate, exact_key, fmpq, normal_turn,
+                    number_system, sign)
+from ..io.exprtree import Const, Node
+from ..exact.field import PolyElement
+from .predicates import float_coordinates
+
+
+@dataclass(frozen=True)
+class Polar:
+    """A position about the origin: radius ``r`` (an exact number >= 0) and ``turn``
+    (a rational, in turns)."""
+    r: object
+    turn: fmpq
+
+
+@dataclass(frozen=True)
+class Similarity:
+    """An exact similarity of the plane: first the reflection (x, y) -> (x, -y) when
+    ``reflect``, then the rotation about the origin by the rational ``turn`` or by the
+    exact matrix ``rotation = (c, s)`` (c^2 + s^2 = 1), then the scaling by ``scale`` (a
+    positive rational) and the translation by ``shift``.  Without ``rotation`` and
+    ``shift`` it keeps a polar configuration polar."""
+    reflect: bool = False
+    turn: fmpq | None = None
+    rotation: tuple | None = None
+    scale: object = 1
+    shift: tuple | None = None
+
+    @property
+    def keeps_polar(self) -> bool:
+        return self.rotation is None and self.shift is None
+
+
+class Configuration:
+    """A finite set of distinct robot positions, exact.  Treat as immutable.
+
+    ``points``: tuple of ``(x, y)`` in ``system`` (a number system of
+    :mod:`exactsym.exact`); ``polar``: tuple of ``(r^2, turn in [0, 1))`` about the
+    origin when every point was given in polar form, else ``None``.
+    """
+
+    def __init__(self, *, source: str = "<memory>", name: str | None = None,
+                 notes: str | None = None, model: str = "points", lemmas: Sequence[str] = (),
+                 expect: Mapping | None = None, specs: Sequence[PointSpec] = (),
+                 points: Sequence | None = None, system=None,
+                 polar: Sequence | None = None, polar_system=None,
+                 radii: Sequence | None = None):
+        self.source = source
+        self.name = name
+        self.notes = notes
+        self.model = model
+        self.lemmas = tuple(lemmas)
+        self.expect = dict(expect or {})
+        self.specs = specs if isinstance(specs, PlainPoints) else tuple(specs)
+        self.polar = tuple(polar) if polar is not None else None
+        self.polar_system = polar_system
+        self.radii = tuple(radii) if radii is not None else None     # r, when polar
+        if points is not None:
+            self.__dict__["points"] = tuple(map(tuple, points))
+            self.__dict__["system"] = system
+        self.n = len(points) if points is not None else len(self.polar)
+
+    @classmethod
+    def from_points(cls, points: Iterable, system=None, **kw) -> "Configuration":
+        """From exact ``(x, y)`` pairs (``fmpq``, ``int``, ``Fraction`` or field elements);
+        raises :class:`~exactsym.errors.InputError` when two points coincide.
+
+        >>> from fractions import Fraction
+        >>> square = Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -1)])
+        >>> square.n, square.points[1]
+        (4, (0, 1))
+        >>> Configuration.from_points([(0, 0), (Fraction(1, 2), 0)]).points[1]
+        (1/2, 0)
+        """
+        from ..exact import RationalSystem, as_fmpq
+        pts = []
+        for x, y in points:
+            if system is None:
+                x, y = as_fmpq(x), as_fmpq(y)
+            pts.append((x, y))
+        config = cls(points=pts, system=system or RationalSystem(), **kw)
+        check_distinct(config)
+        return config
+
+    @cached_property
+    def system(self):
+        # the points with it: computing them apart would evaluate every expression twice
+        # (and choose the field twice, perhaps differently inside dense_degree_limit)
+        self.points
+        return self.__dict__["system"]
+
+    @cached_property
+    def points(self) -> tuple:
+        system, pts = self._cartesian()
+        self.__dict__["system"] = system
+        return tuple(pts)
+
+    @cached_property
+    def float_points(self):
+        """``geometry.float_coordinates(self.points)`` (the correctly rounded floats of
+        rational coordinates, or None), computed once: the check for coincident points
+        and the levels' filters both read them."""
+        return float_coordinates(self.points)
+
+    def _cartesian(self):
+        if self.specs or self.radii is None:
+            return _cartesian(self.specs, self.source)
+        return _cartesian_of_polar(self.radii, [t for _, t in self.polar])
+
+    # ------------------------------------------------------------ moves and frames
+    def _same(self, **kw) -> "Configuration":
+        return Configuration(source=self.source, name=self.name, model=self.model, **kw)
+
+    def with_positions(self, positions: Mapping[int, object]) -> "Configuration":
+        """The configuration with robot i at ``positions[i]`` (every other robot where it
+        is): a :class:`Polar` position keeps a polar configuration polar (its radius in
+        :attr:`polar_system`), an exact ``(x, y)`` pair is Cartesian (in :attr:`system`).
+        Raises :class:`MoveImpossible` when robots coincide, fat robots overlap or a
+        radius is negative."""
+        if self.radii is not None and all(isinstance(p, Polar) for p in positions.values()):
+            radii, polar = list(self.radii), list(self.polar)
+            for i, p in positions.items():
+                if sign(p.r) < 0:
+                    raise MoveImpossible(f"robot {i}: negative radius")
+                radii[i] = p.r
+                polar[i] = (p.r * p.r, normal_turn(p.turn) if sign(p.r) != 0 else fmpq(0))
+            new = self._same(polar=polar, radii=radii, polar_system=self.polar_system)
+        else:
+            points = list(self.points)
+            for i, p in positions.items():
+                points[i] = _cartesian_position(p, self.system)
+            new = self._same(points=points, system=self.system)
+        _check_move(new)
+        return new
+
+    def moved(self, index: int, point) -> "Configuration":
+        """The configuration with robot ``index`` at ``point`` (see :meth:`with_positions`)."""
+        return self.with_positions({index: point})
+
+    def radius(self, index: int):
+        """The radius r of robot ``index`` about the origin (polar configurations)."""
+        if self.radii is None:
+            raise ValueError("not a polar configuration with known radii")
+        return self.radii[index]
+
+    def cartesian(self) -> "Configuration":
+        """The same points, as a Cartesian configuration (no polar data)."""
+        return self._same(points=self.points, system=self.system)
+
+    def transformed(self, similarity: Similarity) -> "Configuration":
+        """The configuration in another frame, robot indices unchanged: a polar
+        configuration stays polar when ``similarity.keeps_polar``."""
+        sim = similarity
+        if self.radii is not None and sim.keeps_polar:
+            turn = sim.turn if sim.turn is not None else fmpq(0)
+            scale = fmpq(sim.scale)
+            return self.with_positions({i: Polar(r * scale, (-t if sim.reflect else t) + turn)
+                                        for i, (r, (_, t)) in enumerate(zip(self.radii,
+                                                                            self.polar))})
+        coerce = self.system.coerce
+        if sim.rotation is not None:
+            c, s = coerce(sim.rotation[0]), coerce(sim.rotation[1])
+        elif sim.turn is not None:
+            c, s = self.system.cos_turn(sim.turn), self.system.sin_turn(sim.turn)
+        else:
+            c, s = coerce(1), coerce(0)
+        k = coerce(sim.scale)
+        dx, dy = (coerce(v) for v in (sim.shift or (0, 0)))
+        points = []
+        for x, y in self.points:
+            if sim.reflect:
+                y = -y
+            if sim.rotation is not None or sim.turn is not None:
+                x, y = c * x - s * y, s * x + c * y
+            if sim.scale != 1:
+                x, y = k * x, k * y
+            if sim.shift is not None:
+                x, y = x + dx, y + dy
+            points.append((x, y))
+        new = self._same(points=points, system=self.system)
+        _check_move(new)
+        return new
+
+
+def _locate(err: ExpressionError, spec: PointSpec, which: int, source: str) -> InputError:
+    column = spec.columns[which] + err.offset if which < len(spec.columns) else spec.column
+    return err.located(source, spec.line, column)
+
+
+def _expressions(specs: Sequence[PointSpec], polar_only: bool):
+    """``(exprs, owners)``: the expressions to evaluate and ``(spec, slot)`` for each."""
+    exprs, owners = [], []
+    for spec in specs:
+        if spec.is_polar:
+            exprs.append(spec.r)
+            owners.append((spec, 0))
+        elif not polar_only:
+            exprs.extend((spec.x, spec.y))
+            owners.extend(((spec, 0), (spec, 1)))
+    return exprs, owners
+
+
+def _system_and_values(exprs: list[Node], owners, turns, source: str):
+    if not turns and all(type(e) is Const for e in exprs):   # plain rationals: Q, no scan
+        return RationalSystem(), [fmpq(e.value.numerator, e.value.denominator) for e in exprs]
+    try:
+        system = number_system(exprs, turns)
+    except ExpressionError as err:
+        index = getattr(err, "index", None)
+        if index is not None:
+            spec, slot = owners[index]
+            raise _locate(err, spec, slot, source) from None
+        raise err.located(source) from None
+    if isinstance(system, RationalSystem) and all(type(e) is Const for e in exprs):
+        return system, [fmpq(e.value.numerator, e.value.denominator) for e in exprs]
+    values = []
+    for expr, (spec, slot) in zip(exprs, owners):
+        try:
+            values.append(evaluate(expr, system))
+        except ExpressionError as err:
+            raise _locate(err, spec, slot, source) from None
+    return system, values
+
+
+def _cartesian(specs: Sequence[PointSpec], source: str = "<memory>"):
+    exprs, owners = _expressions(specs, polar_only=False)
+    turns = [spec.turn for spec in specs if spec.is_polar]
+    system, values = _system_and_values(exprs, owners, [fmpq(t.numerator, t.denominator)
+                                                        for t in turns], source)
+    points, k = [], 0
+    for spec in specs:
+        if spec.is_polar:
+            r = values[k]
+            k += 1
+            if r < 0:
+                raise InputError("polar radius must be >= 0", source, spec.line, spec.column)
+            t = fmpq(spec.turn.numerator, spec.turn.denominator)
+            points.append((r * system.cos_turn(t), r * system.sin_turn(t)))
+        else:
+            points.append((values[k], values[k + 1]))
+            k += 2
+    return system, points
+
+
+def _cartesian_of_polar(radii, turns):
+    """Cartesian points of polar positions given by exact values (a configuration made
+    by moves): rational radii only (the field of irrational radii and of the turns'
+    cosines is not built from values)."""
+    rational = []
+    for r in radii:
+        if isinstance(r, FieldElement):
+            if not r.is_rational():
+                raise NotImplementedError("Cartesian coordinates of moved robots at "
+                                          "irrational radii are not built")
+            r = r.rational()
+        rational.append(r)
+    system = number_system((), turns)
+    return system, [(system.coerce(r) * system.cos_turn(t),
+                     system.coerce(r) * system.sin_turn(t)) for r, t in zip(rational, turns)]
+
+
+def _cartesian_position(p, system):
+    if isinstance(p, Polar):
+        r = system.coerce(p.r)
+        return r * system.cos_turn(p.turn), r * system.sin_turn(p.turn)
+    return p
+
+
+def _check_move(config: Configuration) -> None:
+    pair = _coincident(config)
+    if pair is not None:
+        raise MoveImpossible(f"robots {pair[0]} and {pair[1]} would coincide")
+    if config.model == "fat":
+        pair = _overlapping(config)
+        if pair is not None:
+            raise MoveImpossible(f"fat robots {pair[0]} and {pair[1]} would overlap")
+
+
+def from_file(config_file: ConfigFile) -> Configuration:
+    """Evaluate and validate a parsed configuration file (raises :class:`InputError`)."""
+    specs = config_file.points
+    common = dict(source=config_file.source, name=config_file.name, notes=config_file.notes,
+                  model=config_file.model, lemmas=config_file.lemmas,
+                  expect=config_file.expect, specs=specs)
+    if isinstance(specs, PlainPoints):        # "p/q p/q" lines only: exact values directly
+        config = Configuration(points=specs.rationals, system=RationalSystem(), **common)
+    elif all(spec.is_polar for spec in specs):
+        exprs, owners = _expressions(specs, polar_only=True)
+        system, radii = _system_and_values(exprs, owners, (), config_file.source)
+        polar = []
+        for spec, r in zip(specs, radii):
+            if r < 0:
+                raise InputError("polar radius must be >= 0", config_file.source, spec.line,
+                                 spec.column)
+            turn = normal_turn(fmpq(spec.turn.numerator, spec.turn.denominator)) \
+                if r != 0 else fmpq(0)
+            polar.append((r * r, turn))
+        config = Configuration(polar=polar, polar_system=system, radii=radii, **common)
+    else:
+        system, points = _cartesian(specs, config_file.source)
+        config = Configuration(points=points, system=system, **common)
+    check_distinct(config)
+    if config.model == "fat":
+        check_fat(config)
+    return config
+
+
+@contextmanager
+def no_cycle_collection():
+    """Pause the cyclic garbage collector: reading and analysing build millions of small
+    acyclic objects, and the collector's passes over them doubled the running time."""
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was_enabled:
+            gc.enable()
+
+
+def load(path) -> Configuration:
+    """Read, evaluate and validate a configuration file (``"-"`` is standard input;
+    the format: ``docs/format.md``).  Returns a :class:`Configuration` whose points are
+    exact; raises :class:`~exactsym.errors.InputError` (``file:line:col: ...``) on
+    unusable input.
+
+    >>> from exactsym import load
+    >>> config = load("cases/examples/chiral-nine-gon.toml")
+    >>> config.n, config.model, config.name
+    (9, 'points', 'Nine robots with threefold rotational symmetry and no mirror')
+    >>> x, y = config.points[1]           # r = 4 at 1/3 turn: (-2, 2*sqrt(3)), exact
+    >>> x == -2, y * y == 12, y > 0
+    (True, True, True)
+    >>> load("no/such/file.toml")
+    Traceback (most recent call last):
+    ...
+    exactsym.errors.InputError: no/such/file.toml: no such file
+    """
+    with no_cycle_collection():
+        return from_file(read_config(path))
+
+
+def _coincident(config: Configuration) -> tuple[int, int] | None:
+    """The first two indices of coincident points, or None."""
+    if config.polar is None and config.n >= 64 and isinstance(config.points[0][0], fmpq):
+        candidates = _equal_float_groups(config.points, config.float_points)
+        if candidates is not None:
+            return _first_coincident(config.points, candidates)
+    if config.polar is None and config.n >= 3 and any(
+            isinstance(c, PolyElement) for p in config.points for c in p):
+        return _coincident_irrational(config)      # polynomials: hashing them is slow
+    seen: dict = {}
+    keys = config.polar if config.polar is not None else config.points
+    for i, (a, b) in enumerate(keys):
+        if config.polar is not None and a == 0:
+            b = fmpq(0)                      # every angle names the origin
+        j = seen.setdefault((exact_key(a), exact_key(b)), i)
+        if j != i:
+            return j, i
+    return None
+
+
+def _coincident_irrational(config: Configuration) -> tuple[int, int] | None:
+    """:func:`_coincident` for points with irrational coordinates: Arb balls of the
+    coordinates (kept for the levels, ``algebraic_filtered.coordinate_balls``) separate
+    the points whose balls are disjoint; only points whose balls overlap in both
+    coordinates are compared exactly (hashing a polynomial of degree 960 per coordinate
+    cost more than the rest of the truth, issue 9; a multiquadratic or tower element
+    hashes faster than it is enclosed, so those keep the dictionary scan)."""
+    from .algebraic_filtered import coordinate_balls, overlapping_pairs
+    points = config.points
+    xs, ys = coordinate_balls(points, specs=config.specs or None)
+    best = None
+    for j, i in overlapping_pairs(xs, ys):         # j < i
+        if points[i][0] == points[j][0] and points[i][1] == points[j][1]:
+            if best is None or i < best[1] or (i == best[1] and j < best[0]):
+                best = (j, i)
+    return best
+
+
+def _equal_float_groups(points, floats=None):
+    """Groups (lists of indices, at least two) of rational points whose correctly rounded
+    float pairs are equal: equal points have equal floats, so coincident points are only
+    to be looked for inside these groups.  None if a float is not finite.  ``floats``:
+    ``float_coordinates(points)``, if known."""
+    floats = floats if floats is not None else float_coordinates(points)
+    if floats is None:
+        return None
+    fx, fy = floats
+    order = np.lexsort((fy, fx))
+    same = (np.diff(fx[order]) == 0) & (np.diff(fy[order]) == 0)
+    if not same.any():
+        return []
+    groups, current = [], None
+    for a in np.flatnonzero(same).tolist():
+        if current is not None and current[-1] == order[a]:
+            current.append(int(order[a + 1]))
+        else:
+            current = [int(order[a]), int(order[a + 1])]
+            groups.append(current)
+    return groups
+
+
+def _first_coincident(points, groups) -> tuple[int, int] | None:
+    """As the dictionary scan of :func:`_coincident`: the least i with an equal earlier
+    point, and the first such point j; compared exactly inside each float group."""
+    best = None
+    for group in groups:
+        seen: dict = {}
+        for i in sorted(group):
+            x, y = points[i]
+            j = seen.setdefault((exact_key(x), exact_key(y)), i)
+            if j != i:
+                if best is None or i < best[1]:
+                    best = (j, i)
+                break
+    return best
+
+
+def _overlapping(config: Configuration) -> tuple[int, int] | None:
+    """Two fat robots (unit discs) that overlap (centres closer than 2), or None."""
+    pts = config.points
+    order = sorted(range(config.n), key=lambda i: pts[i][0])
+    for a, i in enumerate(order):
+        for j in order[a + 1:]:
+            dx = pts[j][0] - pts[i][0]
+            if dx >= 2:
+                break
+            dy = pts[j][1] - pts[i][1]
+            if dx * dx + dy * dy < 4:
+                lo, hi = sorted((i, j))
+                return lo, hi
+    return None
+
+
+def check_distinct(config: Configuration) -> None:
+    """Raise :class:`InputError` naming the first two indices of coincident points."""
+    pair = _coincident(config)
+    if pair is not None:
+        raise InputError(f"points {pair[0]} and {pair[1]} coincide", config.source,
+                         _line(config, pair[1]))
+
+
+def check_fat(config: Configuration) -> None:
+    """Unit discs must not overlap: centres at distance >= 2 (touching is allowed)."""
+    pair = _overlapping(config)
+    if pair is not None:
+        raise InputError(f"fat robots {pair[0]} and {pair[1]} overlap (centres closer "
+                         "than 2)", config.source, _line(config, pair[1]))
+
+
+def _line(config: Configuration, i: int) -> int | None:
+    return config.specs[i].line if i < len(config.specs) else None
