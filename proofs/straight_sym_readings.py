@@ -11,7 +11,12 @@ symmetry iff CW_m = ACW_m or CW_m' = ACW_m', where m, m' are where L meets G.  R
   exhaustively; proofs/straight_sym_readings.md gives the argument for every polygon);
 * ``and`` with m, m' the points where L meets the polygon's boundary: false when an edge
   is a diameter (m' = C, every distance equal: ``cases/discrepancies/half-hexagon-
-  trapezoid.toml``, turns 0, 1/6, 1/3, 1/2, the line through the vertex at 1/6).
+  trapezoid.toml``, turns 0, 1/6, 1/3, 1/2, the line through the vertex at 1/6);
+* ``and`` with m, m' on the circle but L any straight line, as printed (not only lines
+  through C): false -- in the equilateral triangle (turns 0, 1/3, 2/3) the chord between
+  the circle points at turns 1/6 and 1/2 has both strings palindromes and is no mirror
+  (:func:`chord_witness`): equal distances from a circle point m make two points mirror
+  images across the diameter through m, which is L only when L passes through C.
 
 Polygons: vertices among the N-th roots of unity (turns x/N), 2..``max_vertices``
 vertices, up to rotation; lines: the N lines through C at turns s/(2N).  Work in units of
@@ -34,6 +39,18 @@ def string_at(p: int, vertices: tuple, M: int) -> tuple:
 
 def palindrome(s: tuple) -> bool:
     return s == s[::-1]
+
+
+def chord_witness() -> tuple:
+    """The equilateral triangle and the chord between the circle points at turns 1/6 and
+    1/2 (12th roots: vertices at positions 0, 8, 16 of M = 24; the chord's ends at 4 and
+    12): both strings are palindromes, the chord does not pass through C (its ends are
+    not antipodal), so it is no line of symmetry."""
+    M, vertices, ends = 24, (0, 8, 16), (4, 12)
+    strings = tuple(string_at(p, vertices, M) for p in ends)
+    assert all(palindrome(s) for s in strings), strings
+    assert (ends[1] - ends[0]) % M != M // 2          # not a diameter: not through C
+    return strings
 
 
 def check(N: int = 24, max_vertices: int = 8) -> dict:
@@ -62,7 +79,8 @@ def check(N: int = 24, max_vertices: int = 8) -> dict:
                     or_failures += 1
                     first_or_failure = first_or_failure or (xs, s)
     return {"N": N, "max_vertices": max_vertices, "straight_symmetric_polygons": polygons,
-            "or_reading_failures": or_failures, "first_or_failure": first_or_failure}
+            "or_reading_failures": or_failures, "first_or_failure": first_or_failure,
+            "chord_not_through_C": chord_witness()}
 
 
 if __name__ == "__main__":

@@ -191,7 +191,8 @@ def test_docs_audit_is_generated_from_the_ledger(ledger):
 
 def test_rests_on_refuted_in_the_real_ledger(ledger):
     sup = support(ledger)
-    assert "lem-type4" in sup["lem-3-pair-sym"].rests_on_reading
+    assert "lem-type4" in sup["lem-3-pair-sym"].rests_on_refuted     # refuted (issue 32)
+    assert "lem-3-pair-sym" in sup["theorem-sym-pair-symG"].rests_on_reading
     assert "obs-exh-poly" in sup["lem-3-pair-sym"].rests_on_refuted
     assert "lem-los-gij" in sup["Gprime-equiG"].rests_on_refuted
     assert sup["lemma-sym-ord"].rests_only_on_proved
@@ -281,6 +282,35 @@ def test_readings_are_metamorphic_under_rotation_and_reflection():
             for reading in R.READINGS:
                 assert R.family_symmetric(R.levels(other), reading) == \
                     R.family_symmetric(R.levels(pts), reading)
+
+
+def test_same_kind_reading_breaks_three_pairs():
+    """lem-3-pair-sym / theorem-sym-pair-symG: pairwise symmetric, no common line, under
+    exactly the four same-kind readings (issue 32)."""
+    r = _proofs_module("three_pairs_same_kind").check()
+    assert len(r["fails_under"]) == 4 and all(n.startswith("same-kind") for n in r["fails_under"])
+    assert all(n.startswith("mixed") for n in r["holds_under"])
+
+
+def test_straight_sym_needs_lines_through_centre():
+    """The equilateral triangle's chord between the circle points at turns 1/6 and 1/2:
+    both strings palindromes, no mirror (the third change lemma-straight-sym needs)."""
+    ssr = _proofs_module("straight_sym_readings")
+    assert ssr.chord_witness() == ((4, 12, 4), (4, 12, 4))
+    assert ssr.check(12, 4)["chord_not_through_C"] == ((4, 12, 4), (4, 12, 4))
+
+
+def test_literal_pattern_has_gaps():
+    """Def. 1 read literally: no pattern of n = 2, 8, 20, 38, 63 robots; the capacities
+    agree with exactsym's generator."""
+    from exactsym.gathering.pattern import capacity
+    pl = _proofs_module("pattern_lone_layer")
+    assert pl.no_literal_pattern(70) == [2, 8, 20, 38, 63]
+    assert [pl.capacity(L) for L in range(1, 7)] == [capacity(L) for L in range(1, 7)]
+
+
+def test_chord_strings_make_no_false_vertex_equality():
+    assert _proofs_module("chord_strings").check(10, 6)["asymmetric_polygons"] > 0
 
 
 def test_extract_refs_on_a_snippet():
