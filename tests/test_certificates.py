@@ -218,11 +218,11 @@ def _dist2(p, q):
 
 
 def test_levels_by_balls_compare_only_overlapping_points_exactly():
-    """certificate._levels_by_balls: the levels of _sparsest (in the order of their first
+    """witness._levels_by_balls: the levels of _sparsest (in the order of their first
     point, the centre left out), with exact squared distances asked only for the points
     whose balls meet another's or hold 0."""
     from flint import arb
-    from exactsym.certify.certificate import _levels_by_balls
+    from exactsym.certify.witness import _levels_by_balls
     norms = [Fraction(2), Fraction(5), Fraction(2), Fraction(0), Fraction(7), Fraction(9, 2),
              Fraction(5), Fraction(1, 3)]
     asked = []

@@ -294,7 +294,7 @@ def test_cyclotomic_tower_certificates_are_checked(tmp_path):
 def test_checker_signs_are_exact():
     """The checker's tower signs (A + B y by A, B and A^2 - r B^2) against Arb values."""
     from exactsym.checker.arithmetic import tower_field
-    from exactsym.certify.certificate import Encoder
+    from exactsym.certify.encoder import Encoder
     system, values = _values("sqrt(2+cos(2*pi/7))", "cos(2*pi/7)", "sqrt(3+sqrt(2+cos(2*pi/7)))")
     y, c, z = values
     xs = [y - c - 1, 2 * y - 3 * c - 1, z - y - 1, y * z - 3 + c, c - fmpq(1, 2)]

@@ -25,7 +25,6 @@ NOT_YET = {
     ("private", "gathering"),
     ("private", "geometry"),
     ("private", "paper"),
-    ("length", "certify"),
     ("length", "exact"),
     ("length", "paper"),
     ("length", "truth"),

@@ -152,7 +152,7 @@ def test_miller_rabin():
 def test_checker_numbers_agree_with_the_solver(data, m):
     """The checker's cosine-form sums and products (its own code) against the solver's:
     equal numbers, equal residues (hash), the same sign."""
-    from exactsym.certify.certificate import Encoder
+    from exactsym.certify.encoder import Encoder
     from exactsym.exact.evaluate import SparseCyclotomicSystem
     system = SparseCyclotomicSystem(m)
     field = SparseField({"conductor": str(m),
