@@ -29,26 +29,21 @@ import hashlib
 import json
 from math import lcm
 
-try:
-    from .ordering import check as check_ordering
-    from .arithmetic import (Field, Invalid, frac, need, number_field, rat, rats,
-                                  scaled, sgn)
-except ImportError:     # run as a lone script (python exactsym/checker/__init__.py): a sibling file
-    from checker_ordering import check as check_ordering
-    from checker_numbers import (Field, Invalid, frac, need, number_field, rat, rats,
-                                 scaled, sgn)
+from .dispatch import number_field
+from .numbers import Field, Invalid, frac, is_int, need, rat, rats, scaled, sgn
+from .ordering import check as check_ordering
 
 
 def permutation(spec: dict, n: int, name: str) -> list:
     perm = spec["permutation"]
-    need(isinstance(perm, list) and len(perm) == n and all(
-        isinstance(j, int) and 0 <= j < n for j in perm), f"{name}: not a list of {n} indices")
+    need(isinstance(perm, list) and len(perm) == n and all(is_int(j) and 0 <= j < n for j in perm),
+         f"{name}: not a list of {n} indices")
     return perm
 
 
 def reference(witness: dict, n: int) -> int:
     ref = witness["reference"]
-    need(isinstance(ref, int) and 0 <= ref < n, f"bad reference point {ref!r}")
+    need(is_int(ref) and 0 <= ref < n, f"bad reference point {ref!r}")
     return ref
 
 
@@ -65,9 +60,9 @@ def group(n, ref, level, rot, mir, witness, image_in) -> tuple[str, bool, list |
     for kind in ("rotation", "reflection"):
         refuted = set()
         for b, w in refutations.get(kind, []):
-            need(b in on_level, f"{kind} refutation: point {b!r} is not on the level of the "
-                 f"reference point {ref}")
-            need(isinstance(w, int) and 0 <= w < n, f"{kind} refutation: bad point {w!r}")
+            need(is_int(b) and b in on_level, f"{kind} refutation: point {b!r} is not on the "
+                 f"level of the reference point {ref}")
+            need(is_int(w) and 0 <= w < n, f"{kind} refutation: bad point {w!r}")
             need(not image_in(kind, b, w), f"the {kind} taking point {ref} to point {b} maps "
                  f"point {w} onto a point of the configuration: it refutes nothing")
             refuted.add(b)
@@ -250,7 +245,8 @@ def verify_certificate(cert) -> tuple[bool, str]:
 def _verify(cert) -> tuple[bool, str]:
     try:
         need(isinstance(cert, dict) and cert.get("format") == "exactsym-certificate"
-             and cert.get("version") == 1, "not an exactsym certificate of version 1")
+             and is_int(cert.get("version")) and cert["version"] == 1,
+             "not an exactsym certificate of version 1")
         config, claim, witness = cert["configuration"], cert["claim"], cert["witness"]
         # A fingerprint of the configuration: it catches edits; the proof does not rely on it.
         need(cert.get("configuration_sha256") == digest(config),

@@ -27,20 +27,16 @@ Cartesian certificates in a number field: with c = (X, Y)/k (k = 1 without a sca
 points are compared by key_i = sign(k) (k |p_i|^2 - 2 X . p_i), and |k p_i - X|^2 =
 |k| key_i + |X|^2 is an increasing function of it, so every comparison of distances from c
 is one of keys (no square of X is made: in a sparse Q(zeta_N) a sum of hundreds of cosines
-on every level).  In the sparse Q(zeta_N) and the tower over it, angles are read from exact
-integer enclosures of the directions (:class:`_Angle`); their products are made only where
-the enclosures hold 0.
+on every level).  A field whose numbers have integer enclosures (the towers over square roots
+and the sparse Q(zeta_N): extensions) brings its own class of angles (``field.Angle``, in
+``ext_boxes``), read from enclosures and made exactly only where they hold 0.
 """
 
 from __future__ import annotations
 
-from fractions import Fraction
-from math import ceil, floor, gcd, lcm
+from math import gcd, lcm
 
-try:
-    from .arithmetic import need, rat, scaled, sgn
-except ImportError:     # run as a lone script (python exactsym/checker/__init__.py): a sibling file
-    from checker_numbers import need, rat, scaled, sgn
+from .numbers import is_int, need, rat, scaled, sgn
 
 
 def _cmp(a, b) -> int:
@@ -55,137 +51,44 @@ class _Plane:
     """Points about c in one frame: a key of the distance from c and the direction of each
     point off c.  ``native``: every number is an int or a Fraction (no number field), so
     Python's own comparisons are exact and symbols get canonical forms (see _symbols); the
-    key is then the squared distance itself.  ``boxed``: the numbers have integer
-    enclosures (a sparse Q(zeta_N) or a tower over it), so angles are :class:`_Angle`s,
-    made exactly only when their enclosures cannot decide."""
+    key is then the squared distance itself.  ``Angle``: the field's class of angles read
+    from integer enclosures (ext_boxes), or None; ``boxes`` its enclosures of directions."""
 
     def __init__(self, polar: bool, r2: list, dirs: list, turn: int, native: bool = False,
-                 boxed: bool = False):
+                 Angle=None):
         self.polar, self.r2, self.dirs, self.turn = polar, r2, dirs, turn
-        self.native, self.boxed = native, boxed
+        self.native, self.Angle, self.boxes = native, Angle, {}
         self.sign = _native_sign if native else sgn
-        self._boxes: dict = {}
 
     def mirrored(self) -> "_Plane":
         if self.polar:
             return _Plane(True, self.r2, [None if d is None else -d % self.turn
                                           for d in self.dirs], self.turn, self.native)
         return _Plane(False, self.r2, [None if d is None else (d[0], -d[1])
-                                       for d in self.dirs], self.turn, self.native, self.boxed)
+                                       for d in self.dirs], self.turn, self.native, self.Angle)
 
     def angle(self, i: int, j: int):
         """The angle from the direction of point i to that of point j, in [0, 2pi): a turn
-        (polar, in units of 1/turn) or the vector (u . v, u x v) (Cartesian; an
-        :class:`_Angle` when the plane is boxed)."""
+        (polar, in units of 1/turn) or the vector (u . v, u x v) (Cartesian; the field's
+        ``Angle`` when it has one)."""
         if self.polar:
             return (self.dirs[j] - self.dirs[i]) % self.turn
-        if self.boxed:
-            return _Angle(self, i, j)
+        if self.Angle:
+            return self.Angle(self, i, j)
         (ux, uy), (vx, vy) = self.dirs[i], self.dirs[j]
         return ux * vx + uy * vy, ux * vy - uy * vx
-
-    def box(self, i: int, bits: int):
-        """Enclosures of the direction of point i: two boxes (lo, hi, bits)."""
-        key = (i, bits)
-        if key not in self._boxes:
-            self._boxes[key] = tuple((*_bounds(v, bits), bits) for v in self.dirs[i])
-        return self._boxes[key]
 
     def cmp_angle(self, a, b) -> int:
         if self.polar:
             return (a > b) - (a < b)
-        if self.boxed:
-            return _Angle.cmp(a, b)
+        if self.Angle:
+            return a.cmp(b)
         # upper half [0, pi) before lower half [pi, 2pi); in one half, the cross product
         sign = self.sign
         half = [0 if sign(y) > 0 or (y == 0 and sign(x) > 0) else 1 for x, y in (a, b)]
         if half[0] != half[1]:
             return -1 if half[0] < half[1] else 1
         return -sign(a[0] * b[1] - a[1] * b[0])
-
-
-def _bounds(v, bits: int) -> tuple[int, int]:
-    """Integers lo <= v 2^bits <= hi: a rational exactly, a number of a field with
-    ``bounds`` (the sparse Q(zeta_N) and the tower over it) from its terms' enclosures."""
-    if isinstance(v, (int, Fraction)):
-        v = Fraction(v) * (1 << bits)
-        return floor(v), ceil(v)
-    return v.f.bounds(getattr(v, "v", v), bits)     # a tower's TNum: its raw value
-
-
-# Boxes (lo, hi, e): integers with lo <= x 2^e <= hi.  Products and sums are exact integer
-# operations on the ends (no rounding), so a box holds its number whenever its operands' do.
-
-def _box_mul(a, b):
-    ends = (a[0] * b[0], a[0] * b[1], a[1] * b[0], a[1] * b[1])
-    return min(ends), max(ends), a[2] + b[2]
-
-
-def _box_add(a, b):
-    if a[2] < b[2]:
-        a, b = b, a
-    shift = a[2] - b[2]
-    return a[0] + (b[0] << shift), a[1] + (b[1] << shift), a[2]
-
-
-def _box_neg(a):
-    return -a[1], -a[0], a[2]
-
-
-def _box_sign(a):
-    return 1 if a[0] > 0 else -1 if a[1] < 0 else None
-
-
-class _Angle:
-    """The angle from the direction u of point i to the direction v of point j, the vector
-    (u . v, u x v), in a boxed plane.  Its signs and its comparisons are read from boxes
-    of u and v at 64, then 192 bits; the exact vector (products of sums of hundreds of
-    cosines on every level: seconds each) is made only when both hold 0 (ties: two points
-    on one ray, equal gaps)."""
-    __slots__ = ("plane", "i", "j", "_exact")
-    BITS = (64, 192)
-
-    def __init__(self, plane: _Plane, i: int, j: int):
-        self.plane, self.i, self.j, self._exact = plane, i, j, None
-
-    def boxes(self, bits: int):
-        (ux, uy), (vx, vy) = self.plane.box(self.i, bits), self.plane.box(self.j, bits)
-        return (_box_add(_box_mul(ux, vx), _box_mul(uy, vy)),
-                _box_add(_box_mul(ux, vy), _box_mul(_box_neg(uy), vx)))
-
-    def exact(self):
-        if self._exact is None:
-            (ux, uy), (vx, vy) = self.plane.dirs[self.i], self.plane.dirs[self.j]
-            self._exact = (ux * vx + uy * vy, ux * vy - uy * vx)
-        return self._exact
-
-    def sign(self, k: int) -> int:
-        """The sign of u . v (k = 0) or u x v (k = 1)."""
-        if self.i == self.j:                # u . u > 0 (u != 0), u x u = 0
-            return 1 - k
-        for bits in self.BITS:
-            s = _box_sign(self.boxes(bits)[k])
-            if s is not None:
-                return s
-        return sgn(self.exact()[k])
-
-    def half(self) -> int:
-        """0 in the upper half [0, pi), 1 in the lower half [pi, 2pi)."""
-        y = self.sign(1)
-        return 0 if y > 0 or (y == 0 and self.sign(0) > 0) else 1
-
-    @staticmethod
-    def cmp(a: "_Angle", b: "_Angle") -> int:
-        ha, hb = a.half(), b.half()
-        if ha != hb:
-            return -1 if ha < hb else 1
-        for bits in _Angle.BITS:            # in one half, the sign of a x b
-            (ax, ay), (bx, by) = a.boxes(bits), b.boxes(bits)
-            s = _box_sign(_box_add(_box_mul(ax, by), _box_neg(_box_mul(ay, bx))))
-            if s is not None:
-                return -s
-        (ax, ay), (bx, by) = a.exact(), b.exact()
-        return -sgn(ax * by - ay * bx)
 
 
 def _rays(plane: _Plane, order: list) -> list:
@@ -347,8 +250,7 @@ def _frame(spec: dict) -> bool:
 
 
 def _indices(order, n: int, what: str) -> list:
-    need(isinstance(order, list) and all(isinstance(i, int) and not isinstance(i, bool)
-                                         and 0 <= i < n for i in order)
+    need(isinstance(order, list) and all(is_int(i) and 0 <= i < n for i in order)
          and len(set(order)) == len(order), f"{what}: not a list of distinct point indices")
     return order
 
@@ -389,7 +291,7 @@ def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
         r2 = [sk * (k * (x * x + y * y) - 2 * (cx * x + cy * y)) for x, y in xy]
     at_c = [x == 0 and y == 0 for x, y in w]
     dirs = [None if z else d for z, d in zip(at_c, w)]
-    plane = _Plane(False, r2, dirs, 1, field is None, getattr(field, "bounds", None) is not None)
+    plane = _Plane(False, r2, dirs, 1, field is None, getattr(field, "Angle", None))
     # c is the SEC centre: every point within R of c, and c in the convex hull of support
     # points at distance R (a circle about c' != c misses one of them: the one s with
     # (s - c) . (c' - c) <= 0 is farther than R from c').
@@ -411,8 +313,8 @@ def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
 
 def _cross_sign(plane: _Plane, a: int, b: int) -> int:
     """The sign of w_a x w_b (the directions of points a and b, off c)."""
-    if plane.boxed:
-        return _Angle(plane, a, b).sign(1)
+    if plane.Angle:
+        return plane.Angle(plane, a, b).sign(1)
     (ax, ay), (bx, by) = plane.dirs[a], plane.dirs[b]
     return plane.sign(ax * by - ay * bx)
 
@@ -423,7 +325,7 @@ def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
     returns a phrase for the summary."""
     n = len(points)
     ordering, leader = claim["ordering"], claim["leader"]
-    need(leader is None or isinstance(leader, int) and not isinstance(leader, bool),
+    need(leader is None or is_int(leader),
          "claim.leader must be a point index or null")
     if n == 1:
         need(ordering == [0] and leader == 0, "one point: the ordering is [0], the leader 0")

@@ -10,14 +10,8 @@ from __future__ import annotations
 from fractions import Fraction
 from math import isqrt
 
-try:
-    from .arithmetic import Invalid, frac, need
-except ImportError:     # run as a lone script (python exactsym/checker/__init__.py): a sibling file
-    from checker_numbers import Invalid, frac, need
-try:
-    from .groups import verify_certificate
-except ImportError:     # run as a lone script (python exactsym/checker/__init__.py): a sibling file
-    from checker_groups import verify_certificate
+from .groups import verify_certificate
+from .numbers import Invalid, frac, is_int, need
 
 REFUTABLE = {"Pasym-Pord": "P is orderable if P is in O_A",
              "lem-asym-ord": "an asymmetric polygon is orderable",
@@ -184,7 +178,8 @@ def verify_refutation(obj) -> tuple[bool, str]:
     obs-merg-asym-pair, an asymmetric pair whose merged polygon is symmetric."""
     try:
         need(isinstance(obj, dict) and obj.get("format") == "exactsym-refutation"
-             and obj.get("version") == 1, "not an exactsym refutation of version 1")
+             and is_int(obj.get("version")) and obj["version"] == 1,
+             "not an exactsym refutation of version 1")
         label = obj.get("label")
         need(label in REFUTABLE, f"no refutation by symmetry facts for {label!r}")
         need(obj.get("statement") == REFUTABLE[label], "the statement is not the label's")

@@ -1,8 +1,6 @@
-"""The exact numbers of the independent checker (standard library only; see exactsym.checker).
-
-Rationals (``"p/q"`` text, read without Python's int-string limit) and the elements of one real
-number field Q(theta), whose description -- minimal polynomial, isolating interval of theta and
-a proof that the polynomial is irreducible -- is checked before any element is made.
+"""The checker's exact numbers (standard library only): rationals, the square roots of integers,
+and one real number field Q(theta) whose description -- minimal polynomial, isolating interval
+of theta, proof of irreducibility -- is checked before any element is made.
 """
 
 from __future__ import annotations
@@ -13,6 +11,7 @@ from fractions import Fraction
 from functools import lru_cache
 from math import gcd, isqrt, lcm, prod
 
+
 class Invalid(Exception):
     """The certificate does not prove its claim; the message says why."""
 
@@ -20,6 +19,11 @@ class Invalid(Exception):
 def need(condition, reason: str) -> None:
     if not condition:
         raise Invalid(reason)
+
+
+def is_int(x) -> bool:
+    """A JSON integer: bool is an int in Python, but true is no number."""
+    return isinstance(x, int) and not isinstance(x, bool)
 
 
 _SHORT = re.compile(r"([+-]?[0-9]{1,4000})(?:/([0-9]{1,4000}))?")     # ASCII digits only
@@ -31,7 +35,7 @@ def rat(text) -> tuple[int, int]:
         pair = _short_rat(text)                 # the common case: parsed once per text
         if pair is not None and pair[1] > 0:
             return pair
-    if isinstance(text, int) and not isinstance(text, bool):
+    if is_int(text):
         return text, 1
     num, slash, den = text.partition("/") if isinstance(text, str) else ("?", "", "")
     try:
@@ -54,10 +58,8 @@ def rats(texts: list) -> list[tuple[int, int]]:
     return [rat(t) for t in texts]
 
 
-@lru_cache(maxsize=1 << 18)
+@lru_cache(maxsize=1 << 18)     # keyed by the text: the group and ordering checks read it twice
 def _short_rat(text: str) -> tuple[int, int] | None:
-    """(p, q) for "p/q" or "p" in ASCII digits, else None (the group and the ordering
-    checks read the same points: the cache parses each text once)."""
     match = _SHORT.fullmatch(text)
     if not match:
         return None
@@ -86,7 +88,7 @@ def scaled(pairs: list) -> tuple[list, int]:
     """Rationals as ints times a common denominator D (scaling all numbers of one kind by one
     D > 0 keeps equality, order and symmetries); Fractions and D = 1 if D would be huge."""
     d = 1
-    for q in {q for _, q in pairs}:             # each denominator once
+    for q in {q for _, q in pairs}:
         if d % q:
             d = lcm(d, q)
             if d.bit_length() > 8192:
@@ -94,20 +96,26 @@ def scaled(pairs: list) -> tuple[list, int]:
     return [p * (d // q) for p, q in pairs] if d > 1 else [p for p, _ in pairs], d
 
 
-# ------------------------------------------------------------------ the number field
-# theta is the only root of the monic polynomial p in the interval (lo, hi).  If p is
-# irreducible, a polynomial of degree < deg p vanishes at theta only if it is zero, so the
-# coefficients of an element reduced modulo p are canonical: == and hash on them decide the
-# equality of real numbers exactly.  So irreducibility is PROVED, never trusted: with a
-# reducible p, equal numbers could have different coefficients and a false witness would pass.
+def peval(p, x):
+    value = 0
+    for c in reversed(p):
+        value = value * x + c
+    return value
+
+
+# ------------------------------------------------------------------ the number field Q(theta)
+# theta is the only root of the monic polynomial p in (lo, hi).  If p is irreducible, a
+# polynomial of degree < deg p vanishes at theta only if it is zero, so the coefficients of an
+# element reduced modulo p are canonical: == and hash decide equality of real numbers.  So
+# irreducibility is PROVED (dispatch.IRREDUCIBILITY), never trusted: with a reducible p, equal
+# numbers could have different coefficients and a false witness would pass.
 
 def psi(m: int) -> list[int]:
     """The minimal polynomial of 2cos(2pi/m), m >= 3, with integer coefficients (low first).
-
     Phi_m = prod over squarefree t | m of (x^(m/t) - 1)^mu(t) (Moebius inversion of
-    x^m - 1 = prod_{e | m} Phi_e); dividing after all multiplications keeps divisions exact.
-    Phi_m is irreducible (Gauss), palindromic of degree 2h, and z^-h Phi_m(z) = Psi_m(z + 1/z):
-    so 2cos(2pi/m) has degree h, and Psi_m, monic of degree h, is its minimal polynomial."""
+    x^m - 1 = prod_{e | m} Phi_e), divisions after all products so they are exact.  Phi_m is
+    irreducible (Gauss), palindromic of degree 2h, and z^-h Phi_m(z) = Psi_m(z + 1/z): so
+    2cos(2pi/m) has degree h, and Psi_m, monic of degree h, is its minimal polynomial."""
     primes, r = [], m
     for q in range(2, isqrt(m) + 1):
         if r % q == 0:
@@ -139,15 +147,14 @@ def psi(m: int) -> list[int]:
 
 
 def irreducible_mod(p: list, ell) -> bool:
-    """p (monic, rational) keeps its degree d and is irreducible modulo the prime ell.
-
-    This proves p irreducible over Q: by Gauss's lemma a factorisation over Q gives one of an
-    integer multiple of p over Z with the same degrees, which reduced mod ell (not dividing the
-    leading coefficient) factors p mod ell.  Over F_ell, x^(ell^i) - x is the product of the
-    monic irreducibles of degree dividing i, and a reducible f has a factor of degree <= d/2:
-    so f is irreducible iff gcd(x^(ell^i) - x, f) = 1 for i = 1 .. d/2."""
-    need(isinstance(ell, int) and 2 <= ell < 1 << 32
-         and all(ell % q for q in range(2, isqrt(ell) + 1)), f"{ell!r} is not a prime")
+    """p (monic, rational) keeps its degree d and is irreducible modulo the prime ell: then it
+    is irreducible over Q (Gauss's lemma: a factorisation over Q gives one over Z with the same
+    degrees, which reduced mod ell, not dividing the leading coefficient, factors p mod ell).
+    Over F_ell, x^(ell^i) - x is the product of the monic irreducibles of degree dividing i,
+    and a reducible f has a factor of degree <= d/2: f is irreducible iff
+    gcd(x^(ell^i) - x, f) = 1 for i = 1 .. d/2."""
+    need(is_int(ell) and 2 <= ell < 1 << 32 and all(ell % q for q in range(2, isqrt(ell) + 1)),
+         f"{ell!r} is not a prime")
     den = lcm(*(c.denominator for c in p))
     lead = int(p[-1] * den) % ell
     f = [int(c * den) * pow(lead, -1, ell) % ell for c in p] if lead else [0]
@@ -166,11 +173,7 @@ def irreducible_mod(p: list, ell) -> bool:
                 a[s + j] = (a[s + j] - t * c) % ell
 
     def mulmod(a, b):
-        out = [0] * (len(a) + len(b) - 1)
-        for i, x in enumerate(a):
-            for j, y in enumerate(b):
-                out[i + j] += x * y
-        return rem(out, f)
+        return rem(_product(a, b), f)
 
     h = [0, 1]
     for _ in range((len(f) - 1) // 2):
@@ -186,12 +189,20 @@ def irreducible_mod(p: list, ell) -> bool:
     return True
 
 
+def _product(a, b) -> list:
+    out = [0] * max(len(a) + len(b) - 1, 0)
+    for i, x in enumerate(a):
+        for j, y in enumerate(b):
+            out[i + j] += x * y
+    return out
+
+
 def one_root(p: list, lo: Fraction, hi: Fraction) -> bool:
     """p has exactly one root in (lo, hi): Descartes' rule of signs on
     q(x) = (1 + x)^d p(lo + (hi - lo)/(1 + x)), whose positive roots are the roots of p in
-    (lo, hi); the sign changes of q's coefficients exceed the number of positive roots by an
-    even number, so one sign change means exactly one (simple) root.  (In integers: with
-    lo = l/D, hi = h/D, q is a positive multiple of (1 + x)^d P((l + (h - l)/(1 + x))/D).)"""
+    (lo, hi); sign changes exceed positive roots by an even number, so one change means one
+    (simple) root.  In integers: lo = l/D, hi = h/D, q is a positive multiple of
+    (1 + x)^d P((l + (h - l)/(1 + x))/D)."""
     def shift(c, a):                            # the coefficients of c(x + a)
         c = list(c)
         for i in range(len(c) - 1):
@@ -206,28 +217,9 @@ def one_root(p: list, lo: Fraction, hi: Fraction) -> bool:
     return sum(a != b for a, b in zip(signs, signs[1:])) == 1
 
 
-def squarefree_part(n: int) -> int:
-    """n divided by its largest square factor (trial division: the radicands of a
-    square-roots proof are below 2^48, products of primes of a discriminant)."""
-    out, q = 1, 2
-    while q * q <= n:
-        while n % (q * q) == 0:
-            n //= q * q
-        if n % q == 0:
-            out, n = out * q, n // q
-        q += 1
-    return out * n
-
-
-def peval(p, x):
-    value = 0
-    for c in reversed(p):
-        value = value * x + c
-    return value
-
-
 class Field:
-    """Q(theta): checks the field's description, then makes its elements and decides signs."""
+    """Q(theta): checks the minimal polynomial and the interval of theta, then makes elements
+    and decides signs.  Irreducibility is proved by the caller (dispatch.number_field)."""
 
     def __init__(self, spec: dict):
         p = [frac(c) for c in spec["minpoly"]]
@@ -241,77 +233,11 @@ class Field:
         need(lo < hi and peval(self.p, lo) * peval(self.p, hi) < 0,
              "the minimal polynomial does not change sign on the interval of theta")
         need(one_root(self.p, lo, hi), "the interval does not isolate one root of the polynomial")
-        proof = spec["irreducible"]
-        if proof["method"] == "real-cyclotomic":    # p must be Psi_m: irreducible by theorem
-            m = proof["conductor"]
-            need(isinstance(m, int) and 3 <= m <= 10 ** 6 and psi(m) == self.p,
-                 f"the minimal polynomial is not that of 2cos(2pi/{m!r})")
-        elif proof["method"] == "square-roots":
-            self.square_roots(proof["radicands"], proof["roots"], proof.get("cyclotomic"))
-        else:
-            need(proof["method"] == "prime", f"unknown irreducibility proof {proof['method']!r}")
-            need(irreducible_mod(self.p, proof["prime"]),
-                 f"the minimal polynomial is not irreducible modulo {proof['prime']!r}")
-
-    def square_roots(self, radicands: list, roots: list, cyclo: dict | None = None) -> None:
-        """p is irreducible if it has degree 2^k e and, for every root theta' of p, Q(theta')
-        holds a subfield K of degree e and square roots of k positive integers a_1..a_k no
-        product of a non-empty subset of which is a square in K.  By Kummer theory (exponent
-        2; K holds -1) K(sqrt a_1, ..., sqrt a_k) then has degree 2^k over K, so every root of p
-        has degree >= 2^k e = deg p, and p is its minimal polynomial.  The roots are
-        polynomials g_i with g_i^2 = a_i modulo p: this holds at every root of p, whatever p
-        is, because it is a polynomial identity modulo p.
-
-        K = Q without ``cyclo`` (e = 1: a product must not be a rational square).  With
-        ``cyclo`` = {"conductor": M, "root": h}, Psi_M(h) = 0 modulo p (again an identity at
-        every root), so Q(theta') holds K = Q(2cos(2pi/M)), of degree e = deg Psi_M (Gauss).
-        ``cyclo`` may be a list of such parts with pairwise coprime conductors M_j: K is then
-        the compositum of the Q(2cos(2pi/M_j)), of degree e = prod e_j (Q(zeta_Mi) and
-        Q(zeta_Mj) meet only in Q, so Galois subfields of them are linearly disjoint), inside
-        Q(zeta_M), M = prod M_j.  A rational a is a square in K only if sqrt(a) lies in
-        Q(zeta_M), i.e. (a's squarefree part s > 1) only if Q(sqrt s) has conductor dividing
-        M: s if s = 1 mod 4, else 4s (conductor-discriminant formula).  So the checker
-        requires, for every non-empty subset, a squarefree part s > 1 whose conductor does
-        not divide M
-        (e.g. Q(sqrt 2, sqrt 3, cos(2pi/13)): 2^2 * 6 = 24; Q(sqrt 3, cos(2pi/16)): 2 * 4, where
-        sqrt 2 is in K and may not be a radicand)."""
-        a = [integer(x) for x in radicands]
-        k = len(a)
-        e, m = 1, 1
-        for part in [cyclo] if isinstance(cyclo, dict) else cyclo or []:
-            mj = part["conductor"]
-            need(isinstance(mj, int) and 3 <= mj <= 10 ** 4 and gcd(m, mj) == 1,
-                 "square-roots proof: bad conductor (conductors must be pairwise coprime)")
-            psi_m, h = psi(mj), self.num(part["root"])
-            value = 0
-            for c in reversed(psi_m):
-                value = value * h + c
-            need(value == 0, f"square-roots proof: the root given is not a root of Psi_{mj}")
-            e, m = e * (len(psi_m) - 1), m * mj
-        need(0 <= k <= 16 and self.d == (1 << k) * e > 1 and len(roots) == k
-             and all(x > 0 for x in a), "square-roots proof: need k positive radicands and "
-             "degree 2^k e")
-        need(all(x < 1 << 48 for x in a), "square-roots proof: radicands below 2^48")
-        parts = [squarefree_part(x) for x in a]
-        for mask in range(1, 1 << k):
-            s = 1                               # squarefree s, t: st = g^2 (s/g)(t/g)
-            for i, t in enumerate(parts):
-                if mask >> i & 1:
-                    g = gcd(s, t)
-                    s = (s // g) * (t // g)
-            need(s > 1, f"square-roots proof: a product of radicands is a square ({s})")
-            need(m % (s if s % 4 == 1 else 4 * s) != 0, f"square-roots proof: sqrt({s}) lies "
-                 f"in Q(zeta_{m}), so a product of radicands is a square there")
-        for x, g in zip(a, roots):
-            need(isinstance(g, list), "square-roots proof: a root must be a coefficient list")
-            root = self.num(g)
-            need(root * root == x, f"square-roots proof: the root given for {x} does not "
-                 "square to it")
 
     def make(self, c: list, den: int) -> "Alg":
-        """The element (sum c_i theta^i) / den in canonical form: c reduced modulo p (in
-        integers: c - (c_i / lead) theta^(i-d) big, first scaling c and den by lead if needed),
-        then divided by the gcd of den and all of c, without trailing zeros."""
+        """(sum c_i theta^i) / den, canonical: c reduced modulo p (in integers:
+        c - (c_i / lead) theta^(i-d) big, scaling c and den by lead first if needed), divided
+        by the gcd of den and all of c, without trailing zeros."""
         big, lead, d = self.big, self.lead, self.d
         for i in range(len(c) - 1, d - 1, -1):
             t = c[i]
@@ -334,10 +260,9 @@ class Field:
         return self.make([int(x * den) for x in q], den)
 
     def sign(self, c: tuple) -> int:
-        """The sign of c(theta): interval Horner on [lo, hi] in fixed point (see _horner),
-        bisecting the interval (towards the sign change of p) until 0 is excluded.
-        c(theta) != 0 for canonical c != 0 and the enclosure shrinks to c(theta) as the
-        interval and the rounding shrink, so this ends; the narrower interval is kept."""
+        """The sign of c(theta): interval Horner on [lo, hi] in fixed point, bisecting the
+        interval (towards the sign change of p) until 0 is excluded.  c(theta) != 0 for
+        canonical c != 0 and the enclosure shrinks to it: this ends."""
         if not c:
             return 0
         for _ in range(4000):
@@ -351,11 +276,10 @@ class Field:
         raise Invalid("a sign could not be decided")
 
     def _bits(self) -> int:
-        """Fixed-point bits for Horner on the interval: its width, plus d bits per doubling of
-        |theta| (the rounding error of step i is multiplied by |theta|^(d - i)), plus 64."""
+        """Fixed-point bits: the interval's width, plus d bits per doubling of |theta| (step
+        i's rounding error is multiplied by |theta|^(d - i)), plus 64."""
         lo, hi = self.interval
-        width = hi - lo
-        scale = max(abs(lo), abs(hi), Fraction(1))
+        width, scale = hi - lo, max(abs(lo), abs(hi), Fraction(1))
         return (64 + width.denominator.bit_length() - width.numerator.bit_length()
                 + self.d * (int(scale).bit_length() + 1))
 
@@ -364,14 +288,13 @@ class Field:
         mid = Fraction(_floor((lo + hi) / 2, bits), 1 << bits)
         if not lo < mid < hi:
             mid = (lo + hi) / 2
-        at_lo = self._p_sign(lo, bits)
         at_mid = self._p_sign(mid, bits)
         need(at_mid != 0, "the minimal polynomial has a rational root")
-        self.interval = (lo, mid) if at_lo != at_mid else (mid, hi)
+        self.interval = (lo, mid) if self._p_sign(lo, bits) != at_mid else (mid, hi)
 
     def _p_sign(self, x: Fraction, bits: int) -> int:
-        """The sign of p(x): fixed point first, exact if the enclosure holds 0."""
-        if x.denominator & (x.denominator - 1) == 0:        # dyadic: exactly representable
+        """The sign of p(x): fixed point first (x dyadic), exact if the enclosure holds 0."""
+        if x.denominator & (x.denominator - 1) == 0:
             for extra in (0, 64, 256):
                 a, b = _horner(self.big, _floor(x, bits + extra), _ceil(x, bits + extra),
                                bits + extra)
@@ -391,8 +314,8 @@ def _ceil(x: Fraction, bits: int) -> int:
 
 def _horner(c, lo: int, hi: int, bits: int) -> tuple[int, int]:
     """[a, b] / 2^bits holding sum c_i t^i for every t in [lo, hi] / 2^bits (c integers):
-    interval Horner in integers scaled by 2^bits, products rounded outwards (floor and
-    ceiling shifts), so the numbers stay of about ``bits`` bits whatever the degree."""
+    interval Horner scaled by 2^bits, products rounded outwards, so the numbers keep about
+    ``bits`` bits whatever the degree."""
     a = b = 0
     for coeff in reversed(c):
         ends = (a * lo, a * hi, b * lo, b * hi)
@@ -400,110 +323,22 @@ def _horner(c, lo: int, hi: int, bits: int) -> tuple[int, int]:
     return a, b
 
 
-class Alg:
-    """c(theta)/den, canonical (see Field.make): == and hash are exact; mixes with int/Fraction."""
-    __slots__ = ("f", "c", "den")
-
-    def __init__(self, f: Field, c: tuple, den: int):
-        self.f, self.c, self.den = f, c, den
-
-    def _of(self, o) -> tuple:
-        if isinstance(o, Alg):
-            return o.c, o.den
-        o = Fraction(o)
-        return ((o.numerator,) if o else ()), o.denominator
-
-    def __add__(self, o):
-        (b, db), a, da = self._of(o), self.c, self.den
-        return self.f.make([x * db + y * da for x, y in itertools.zip_longest(a, b, fillvalue=0)],
-                           da * db)
-
-    def __mul__(self, o):
-        (b, db), a = self._of(o), self.c
-        out = [0] * max(len(a) + len(b) - 1, 0)
-        for i, x in enumerate(a):
-            for j, y in enumerate(b):
-                out[i + j] += x * y
-        return self.f.make(out, self.den * db)
-
-    def __neg__(self):
-        return Alg(self.f, tuple(-x for x in self.c), self.den)
-
-    def __sub__(self, o):
-        return self + (-o)
-
-    def __rsub__(self, o):
-        return -self + o
-
-    __radd__, __rmul__ = __add__, __mul__
-
-    def __eq__(self, o):
-        return isinstance(o, (Alg, int, Fraction)) and (self.c, self.den) == self._of(o)
-
-    def __hash__(self):
-        return hash((self.c, self.den))
+def cyclotomic_proof(field: Field, proof: dict) -> None:
+    """{"method": "real-cyclotomic", "conductor": m}: p is Psi_m, irreducible by theorem."""
+    m = proof["conductor"]
+    need(is_int(m) and 3 <= m <= 10 ** 6 and psi(m) == field.p,
+         f"the minimal polynomial is not that of 2cos(2pi/{m!r})")
 
 
-def sgn(v) -> int:
-    """The sign of a number (den > 0, so an element has the sign of its numerator)."""
-    if isinstance(v, Alg):
-        return v.f.sign(v.c)
-    if isinstance(v, Root) or hasattr(v, "f") and hasattr(v, "sign"):   # a tower's TNum too
-        return v.sign()
-    return (v > 0) - (v < 0)
-
-
-# ------------------------------------------------------------------ square roots, natively
-# Q(sqrt a_1, ..., sqrt a_k) for integers a_i > 1, pairwise coprime, none a square.  A product
-# of pairwise coprime integers is a square only if each is, so no product of a non-empty subset
-# is a square, and the square roots of the 2^k subset products P_S are linearly independent
-# over Q (Besicovitch 1940).  So an element sum c_S sqrt(P_S), kept as {P_S: c_S} without zero
-# coefficients, is canonical: == and hash decide equality of real numbers.  Products:
-# sqrt(P_S) sqrt(P_T) = P_(S and T) sqrt(P_(S xor T)), and with coprime radicands
-# P_(S and T) = gcd(P_S, P_T), P_(S xor T) = P_S P_T / gcd^2: no subset is ever enumerated.
-
-class SquareRoots:
-    """The field ``{"radicands": [a_1, ...]}``: checks them, then makes elements."""
-
-    def __init__(self, spec: dict):
-        a = [integer(x) if isinstance(x, str) else x for x in spec["radicands"]]
-        need(a and all(isinstance(x, int) and x > 1 for x in a),
-             "radicands: integers above 1")
-        need(all(isqrt(x) ** 2 != x for x in a), "radicands: one of them is a square")
-        need(all(gcd(x, y) == 1 for i, x in enumerate(a) for y in a[i + 1:]),
-             "radicands: not pairwise coprime")
-        self.radicands = a
-
-    def key(self, text) -> int:
-        """A product of a subset of the radicands (text), checked to be one."""
-        m = integer(text)
-        rest = m
-        for x in self.radicands:
-            if rest % x == 0:
-                rest //= x
-        need(m >= 1 and rest == 1, f"{text!r} is not a product of distinct radicands")
-        return m
-
-    def num(self, value) -> "Root":
-        """A rational, or {"P_S": coefficient, ...}."""
-        if isinstance(value, dict):
-            terms: dict = {}
-            for m, c in value.items():
-                q = frac(c)
-                m = self.key(m)
-                need(m not in terms, f"radicand product {m} given twice")
-                if q:
-                    terms[m] = q
-            return Root.of(terms)
-        need(not isinstance(value, list), "a square-root field's numbers are rationals or "
-             "{product: coefficient} maps")
-        q = frac(value)
-        return Root.of({1: q} if q else {})
+def prime_proof(field: Field, proof: dict) -> None:
+    """{"method": "prime", "prime": ell}: p is irreducible modulo ell (:func:`irreducible_mod`)."""
+    need(irreducible_mod(field.p, proof["prime"]),
+         f"the minimal polynomial is not irreducible modulo {proof['prime']!r}")
 
 
 class RingOps:
-    """Subtraction and the reflected + and * of a checker number class, from its +, * and
-    unary - and its ``_of`` (an int or Fraction as a number of the same kind)."""
+    """Subtraction and the reflected + and * of a number class, from its +, *, unary - and
+    ``_of`` (an int or Fraction as a number of the same kind)."""
     __slots__ = ()
 
     def __sub__(self, o):
@@ -519,12 +354,99 @@ class RingOps:
         return self * o
 
 
+class Alg(RingOps):
+    """c(theta)/den, canonical (Field.make): == and hash are exact; mixes with int/Fraction."""
+    __slots__ = ("f", "c", "den")
+
+    def __init__(self, f: Field, c: tuple, den: int):
+        self.f, self.c, self.den = f, c, den
+
+    def _of(self, o) -> "Alg":
+        if isinstance(o, Alg):
+            return o
+        o = Fraction(o)
+        return Alg(self.f, (o.numerator,) if o else (), o.denominator)
+
+    def __add__(self, o):
+        o, a, da = self._of(o), self.c, self.den
+        return self.f.make([x * o.den + y * da for x, y in
+                            itertools.zip_longest(a, o.c, fillvalue=0)], da * o.den)
+
+    def __mul__(self, o):
+        o = self._of(o)
+        return self.f.make(_product(self.c, o.c), self.den * o.den)
+
+    def __neg__(self):
+        return Alg(self.f, tuple(-x for x in self.c), self.den)
+
+    def __eq__(self, o):
+        if not isinstance(o, (Alg, int, Fraction)):
+            return False
+        o = self._of(o)
+        return (self.c, self.den) == (o.c, o.den)
+
+    def __hash__(self):
+        return hash((self.c, self.den))
+
+    def sign(self) -> int:
+        return self.f.sign(self.c)              # den > 0
+
+
+def sgn(v) -> int:
+    """The sign of a number: a rational's, or the number's own exact ``sign()``."""
+    return v.sign() if hasattr(v, "sign") else (v > 0) - (v < 0)
+
+
+# ------------------------------------------------------------------ square roots, natively
+# Q(sqrt a_1, ..., sqrt a_k) for integers a_i > 1, pairwise coprime, none a square.  A product
+# of pairwise coprime integers is a square only if each is, so no product of a non-empty subset
+# is a square, and the square roots of the 2^k subset products P_S are linearly independent
+# over Q (Besicovitch 1940).  So sum c_S sqrt(P_S), kept as {P_S: c_S} without zero
+# coefficients, is canonical: == and hash decide equality of real numbers.  Products:
+# sqrt(P_S) sqrt(P_T) = P_(S and T) sqrt(P_(S xor T)), and with coprime radicands
+# P_(S and T) = gcd(P_S, P_T), P_(S xor T) = P_S P_T / gcd^2: no subset is ever enumerated.
+
+class SquareRoots:
+    """The field ``{"radicands": [a_1, ...]}``: checks them, then makes elements."""
+
+    def __init__(self, spec: dict):
+        a = [integer(x) if isinstance(x, str) else x for x in spec["radicands"]]
+        need(a and all(is_int(x) and x > 1 for x in a), "radicands: integers above 1")
+        need(all(isqrt(x) ** 2 != x for x in a), "radicands: one of them is a square")
+        need(all(gcd(x, y) == 1 for i, x in enumerate(a) for y in a[i + 1:]),
+             "radicands: not pairwise coprime")
+        self.radicands = a
+
+    def key(self, text) -> int:
+        """A product of a subset of the radicands (text), checked to be one."""
+        m = rest = integer(text)
+        for x in self.radicands:
+            if rest % x == 0:
+                rest //= x
+        need(m >= 1 and rest == 1, f"{text!r} is not a product of distinct radicands")
+        return m
+
+    def num(self, value) -> "Root":
+        """A rational, or {"P_S": coefficient, ...}."""
+        if isinstance(value, dict):
+            terms: dict = {}
+            for m, c in value.items():
+                q, m = frac(c), self.key(m)
+                need(m not in terms, f"radicand product {m} given twice")
+                if q:
+                    terms[m] = q
+            return Root.of(terms)
+        need(not isinstance(value, list), "a square-root field's numbers are rationals or "
+             "{product: coefficient} maps")
+        q = frac(value)
+        return Root.of({1: q} if q else {})
+
+
 class Root(RingOps):
     """(sum c_m sqrt(m)) / den with integer c_m, canonical (see SquareRoots): no zero c_m,
     den > 0 and gcd(den, every c_m) = 1, so == and hash are exact; mixes with numbers.
     Integer coefficients over one denominator: a product of two elements of t terms costs
-    t^2 integer products, not t^2 fraction products with a gcd each (nine square roots and a
-    circumcentre give elements of 128 terms with 100-digit coefficients)."""
+    t^2 integer products, not t^2 fraction products with a gcd each."""
     __slots__ = ("t", "den")
 
     def __init__(self, terms: dict, den: int = 1):
@@ -583,8 +505,7 @@ class Root(RingOps):
 
     def sign(self) -> int:
         """By rational enclosures sqrt(m) in [isqrt(m 4^b), isqrt(m 4^b) + 1] / 2^b, b rising
-        until 0 is excluded (a non-zero element is a non-zero real: this ends).  In integers:
-        lo, hi bound 2^b times the numerator; den > 0 does not change the sign."""
+        until 0 is excluded (a non-zero element is a non-zero real: this ends)."""
         if not self.t:
             return 0
         bits = 32
@@ -598,40 +519,3 @@ class Root(RingOps):
                 return 1 if lo > 0 else -1
             bits *= 2
         raise Invalid("a sign could not be decided")
-
-
-def number_field(spec: dict):
-    """The field of a certificate: square roots natively, or Q(theta)."""
-    if "tower" in spec:
-        return tower_field(spec["tower"])
-    if "sparse-cyclotomic" in spec:             # Q(zeta_N) beyond a minimal polynomial
-        try:
-            from .sparse import SparseField
-        except ImportError:     # run as a lone script: a sibling file
-            from checker_sparse import SparseField
-        return SparseField(spec["sparse-cyclotomic"])
-    return SquareRoots(spec) if "radicands" in spec else Field(spec)
-
-
-def tower_field(spec: dict):
-    """Nested radicals: a tower of quadratic extensions (exactsym.checker.tower), over the
-    square roots or, with a "base" field, over Q(theta) (exactsym.checker.tower_cyclotomic);
-    square roots of rationals over a sparse Q(zeta_N) base (exactsym.checker.tower_sparse)."""
-    if isinstance(spec, dict) and isinstance(spec.get("base"), dict) \
-            and "sparse-cyclotomic" in spec["base"]:
-        try:
-            from .tower_sparse import SparseKummerTower
-        except ImportError:     # run as a lone script: a sibling file
-            from checker_tower_sparse import SparseKummerTower
-        return SparseKummerTower(spec)
-    if isinstance(spec, dict) and "base" in spec:
-        try:
-            from .tower_cyclotomic import CyclotomicTower
-        except ImportError:     # run as a lone script: a sibling file
-            from checker_tower_cyclotomic import CyclotomicTower
-        return CyclotomicTower(spec)
-    try:
-        from .tower import Tower
-    except ImportError:     # run as a lone script: a sibling file
-        from checker_tower import Tower
-    return Tower(spec)
