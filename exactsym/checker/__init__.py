@@ -15,11 +15,11 @@ import sys
 
 from .dispatch import number_field, parse, verify
 from .groups import digest, verify_certificate
-from .numbers import Field, Invalid, frac, integer, irreducible_mod, one_root, psi, rat, sgn
+from .numbers import Field, Invalid, frac, integer, one_root, psi, rat, sgn
 from .refutations import REFUTABLE, verify_refutation
 
-__all__ = ["Field", "Invalid", "REFUTABLE", "digest", "frac", "integer", "irreducible_mod",
-           "main", "number_field", "one_root", "parse", "psi", "rat", "sgn", "verify",
+__all__ = ["Field", "Invalid", "REFUTABLE", "digest", "frac", "integer", "main",
+           "number_field", "one_root", "parse", "psi", "rat", "sgn", "verify",
            "verify_certificate", "verify_refutation"]
 
 

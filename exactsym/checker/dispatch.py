@@ -27,8 +27,8 @@ NUMBER_SYSTEMS = {
 
 #: the "method" of a Q(theta)'s "irreducible" proof -> the function checking it
 IRREDUCIBILITY = {"real-cyclotomic": ("numbers", "cyclotomic_proof"),
-                  "prime": ("numbers", "prime_proof"),
-                  "square-roots": ("ext_kummer", "square_roots_proof")}
+                  "prime": ("ext_primitive", "prime_proof"),
+                  "square-roots": ("ext_primitive", "square_roots_proof")}
 
 
 def load(table: dict, key: str):

@@ -146,50 +146,7 @@ def psi(m: int) -> list[int]:
     return out
 
 
-def irreducible_mod(p: list, ell) -> bool:
-    """p (monic, rational) keeps its degree d and is irreducible modulo the prime ell: then it
-    is irreducible over Q (Gauss's lemma: a factorisation over Q gives one over Z with the same
-    degrees, which reduced mod ell, not dividing the leading coefficient, factors p mod ell).
-    Over F_ell, x^(ell^i) - x is the product of the monic irreducibles of degree dividing i,
-    and a reducible f has a factor of degree <= d/2: f is irreducible iff
-    gcd(x^(ell^i) - x, f) = 1 for i = 1 .. d/2."""
-    need(is_int(ell) and 2 <= ell < 1 << 32 and all(ell % q for q in range(2, isqrt(ell) + 1)),
-         f"{ell!r} is not a prime")
-    den = lcm(*(c.denominator for c in p))
-    lead = int(p[-1] * den) % ell
-    f = [int(c * den) * pow(lead, -1, ell) % ell for c in p] if lead else [0]
-    if f[0] == 0:                               # ell divides the leading coefficient, or x | f
-        return False
-
-    def rem(a, g):                              # a mod g over F_ell, no trailing zeros
-        a, inv = [c % ell for c in a], pow(g[-1], -1, ell)
-        while True:
-            while a and a[-1] == 0:
-                a.pop()
-            if len(a) < len(g):
-                return a
-            t, s = a[-1] * inv % ell, len(a) - len(g)
-            for j, c in enumerate(g):
-                a[s + j] = (a[s + j] - t * c) % ell
-
-    def mulmod(a, b):
-        return rem(_product(a, b), f)
-
-    h = [0, 1]
-    for _ in range((len(f) - 1) // 2):
-        base, e, h = h, ell, [1]
-        while e:                                # h = base^ell mod f: now h = x^(ell^i) mod f
-            h = mulmod(h, base) if e & 1 else h
-            base, e = mulmod(base, base), e >> 1
-        a, b = f, rem([c - (j == 1) for j, c in enumerate(h + [0] * (2 - len(h)))], f)
-        while b:                                # gcd(f, x^(ell^i) - x)
-            a, b = b, rem(a, b)
-        if len(a) > 1:
-            return False
-    return True
-
-
-def _product(a, b) -> list:
+def poly_product(a, b) -> list:
     out = [0] * max(len(a) + len(b) - 1, 0)
     for i, x in enumerate(a):
         for j, y in enumerate(b):
@@ -330,12 +287,6 @@ def cyclotomic_proof(field: Field, proof: dict) -> None:
          f"the minimal polynomial is not that of 2cos(2pi/{m!r})")
 
 
-def prime_proof(field: Field, proof: dict) -> None:
-    """{"method": "prime", "prime": ell}: p is irreducible modulo ell (:func:`irreducible_mod`)."""
-    need(irreducible_mod(field.p, proof["prime"]),
-         f"the minimal polynomial is not irreducible modulo {proof['prime']!r}")
-
-
 class RingOps:
     """Subtraction and the reflected + and * of a number class, from its +, *, unary - and
     ``_of`` (an int or Fraction as a number of the same kind)."""
@@ -354,36 +305,41 @@ class RingOps:
         return self * o
 
 
-class Alg(RingOps):
+class Alg:
     """c(theta)/den, canonical (Field.make): == and hash are exact; mixes with int/Fraction."""
     __slots__ = ("f", "c", "den")
 
     def __init__(self, f: Field, c: tuple, den: int):
         self.f, self.c, self.den = f, c, den
 
-    def _of(self, o) -> "Alg":
+    def _of(self, o) -> tuple:
         if isinstance(o, Alg):
-            return o
+            return o.c, o.den
         o = Fraction(o)
-        return Alg(self.f, (o.numerator,) if o else (), o.denominator)
+        return ((o.numerator,) if o else ()), o.denominator
 
     def __add__(self, o):
-        o, a, da = self._of(o), self.c, self.den
-        return self.f.make([x * o.den + y * da for x, y in
-                            itertools.zip_longest(a, o.c, fillvalue=0)], da * o.den)
+        (b, db), a, da = self._of(o), self.c, self.den
+        return self.f.make([x * db + y * da for x, y in itertools.zip_longest(a, b, fillvalue=0)],
+                           da * db)
 
     def __mul__(self, o):
-        o = self._of(o)
-        return self.f.make(_product(self.c, o.c), self.den * o.den)
+        b, db = self._of(o)
+        return self.f.make(poly_product(self.c, b), self.den * db)
 
     def __neg__(self):
         return Alg(self.f, tuple(-x for x in self.c), self.den)
 
+    def __sub__(self, o):
+        return self + (-o)
+
+    def __rsub__(self, o):
+        return -self + o
+
+    __radd__, __rmul__ = __add__, __mul__
+
     def __eq__(self, o):
-        if not isinstance(o, (Alg, int, Fraction)):
-            return False
-        o = self._of(o)
-        return (self.c, self.den) == (o.c, o.den)
+        return isinstance(o, (Alg, int, Fraction)) and (self.c, self.den) == self._of(o)
 
     def __hash__(self):
         return hash((self.c, self.den))

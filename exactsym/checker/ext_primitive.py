@@ -1,14 +1,63 @@
-"""Checker extension: the "square-roots" irreducibility proof of a field Q(theta) (standard
-library only), for fields given by a primitive element that no prime proves irreducible:
-Q(sqrt 2, sqrt 3), Q(sqrt 2, sqrt 3, cos(2pi/13)), ...  Reached through
-``dispatch.IRREDUCIBILITY``.
+"""Checker extension: irreducibility proofs of a field Q(theta) given by a primitive element
+(nested radicals; standard library only), reached through ``dispatch.IRREDUCIBILITY``: a prime
+modulo which the minimal polynomial stays irreducible, or, when no prime can (Q(sqrt 2, sqrt 3),
+Q(sqrt 2, sqrt 3, cos(2pi/13)), ...), square roots proving its degree by Kummer theory.
 """
 
 from __future__ import annotations
 
-from math import gcd
+from math import gcd, isqrt, lcm
 
-from .numbers import Field, integer, is_int, need, psi
+from .numbers import Field, poly_product, integer, is_int, need, psi
+
+
+def prime_proof(field: Field, proof: dict) -> None:
+    """{"method": "prime", "prime": ell}: p is irreducible modulo ell (:func:`irreducible_mod`)."""
+    need(irreducible_mod(field.p, proof["prime"]),
+         f"the minimal polynomial is not irreducible modulo {proof['prime']!r}")
+
+
+def irreducible_mod(p: list, ell) -> bool:
+    """p (monic, rational) keeps its degree d and is irreducible modulo the prime ell: then it
+    is irreducible over Q (Gauss's lemma: a factorisation over Q gives one over Z with the same
+    degrees, which reduced mod ell, not dividing the leading coefficient, factors p mod ell).
+    Over F_ell, x^(ell^i) - x is the product of the monic irreducibles of degree dividing i,
+    and a reducible f has a factor of degree <= d/2: f is irreducible iff
+    gcd(x^(ell^i) - x, f) = 1 for i = 1 .. d/2."""
+    need(is_int(ell) and 2 <= ell < 1 << 32 and all(ell % q for q in range(2, isqrt(ell) + 1)),
+         f"{ell!r} is not a prime")
+    den = lcm(*(c.denominator for c in p))
+    lead = int(p[-1] * den) % ell
+    f = [int(c * den) * pow(lead, -1, ell) % ell for c in p] if lead else [0]
+    if f[0] == 0:                               # ell divides the leading coefficient, or x | f
+        return False
+
+    def rem(a, g):                              # a mod g over F_ell, no trailing zeros
+        a, inv = [c % ell for c in a], pow(g[-1], -1, ell)
+        while True:
+            while a and a[-1] == 0:
+                a.pop()
+            if len(a) < len(g):
+                return a
+            t, s = a[-1] * inv % ell, len(a) - len(g)
+            for j, c in enumerate(g):
+                a[s + j] = (a[s + j] - t * c) % ell
+
+    def mulmod(a, b):
+        return rem(poly_product(a, b), f)
+
+    h = [0, 1]
+    for _ in range((len(f) - 1) // 2):
+        base, e, h = h, ell, [1]
+        while e:                                # h = base^ell mod f: now h = x^(ell^i) mod f
+            h = mulmod(h, base) if e & 1 else h
+            base, e = mulmod(base, base), e >> 1
+        a, b = f, rem([c - (j == 1) for j, c in enumerate(h + [0] * (2 - len(h)))], f)
+        while b:                                # gcd(f, x^(ell^i) - x)
+            a, b = b, rem(a, b)
+        if len(a) > 1:
+            return False
+    return True
 
 
 def square_roots_proof(field: Field, proof: dict) -> None:
