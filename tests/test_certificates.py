@@ -544,8 +544,8 @@ def test_interval_must_isolate_one_root():
 # ------------------------------------------------------------------ the checker's parts
 CHECKER = ROOT / "exactsym" / "checker"
 CHECKER_CORE = ("__init__", "__main__", "numbers", "dispatch", "groups", "ordering", "refutations")
-CHECKER_MODULES = CHECKER_CORE + ("ext_boxes", "ext_primes", "ext_primitive", "ext_sparse",
-                                  "ext_sparse_tower", "ext_tower")
+CHECKER_MODULES = CHECKER_CORE + ("ext_boxes", "ext_polygons", "ext_primes", "ext_primitive",
+                                  "ext_sparse", "ext_sparse_tower", "ext_tower")
 
 
 def test_checker_imports_only_the_standard_library():

@@ -30,6 +30,16 @@ IRREDUCIBILITY = {"real-cyclotomic": ("numbers", "cyclotomic_proof"),
                   "prime": ("ext_primitive", "prime_proof"),
                   "square-roots": ("ext_primitive", "square_roots_proof")}
 
+#: a refutable label -> the function deriving its premise and failed conclusion from G
+REFUTATIONS = {"Pasym-Pord": ("refutations", "in_o_a"), "lem-asym-ord": ("refutations", "in_o_a"),
+               "cor-Pasym-Pord": ("ext_polygons", "asymmetric_level"),
+               "lem-one-pair-asym-ord": ("ext_polygons", "asymmetric_level"),
+               "lem-asym-pair-ord": ("ext_polygons", "asymmetric_pair"),
+               "lem-all-pair-asym-ord": ("ext_polygons", "asymmetric_pair"),
+               "obs-merg-asym-pair": ("ext_polygons", "merged_pair"),
+               "lemma-sym-regular": ("ext_polygons", "sym_regular"),
+               "obs-exh-poly": ("ext_polygons", "no_type")}
+
 
 def load(table: dict, key: str):
     module, name = table[key]

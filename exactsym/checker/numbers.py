@@ -1,7 +1,5 @@
-"""The checker's exact numbers (standard library only): rationals, the square roots of integers,
-and one real number field Q(theta) whose description -- minimal polynomial, isolating interval
-of theta, proof of irreducibility -- is checked before any element is made.
-"""
+"""The checker's exact numbers: rationals, square roots of integers, and one real field Q(theta)
+whose description (minimal polynomial, isolating interval, irreducibility) is checked first."""
 
 from __future__ import annotations
 
@@ -22,8 +20,7 @@ def need(condition, reason: str) -> None:
 
 
 def is_int(x) -> bool:
-    """A JSON integer: bool is an int in Python, but true is no number."""
-    return isinstance(x, int) and not isinstance(x, bool)
+    return isinstance(x, int) and not isinstance(x, bool)      # JSON true is no number
 
 
 _SHORT = re.compile(r"([+-]?[0-9]{1,4000})(?:/([0-9]{1,4000}))?")     # ASCII digits only
@@ -49,11 +46,10 @@ def rat(text) -> tuple[int, int]:
 def rats(texts: list) -> list[tuple[int, int]]:
     """``[rat(t) for t in texts]``, the common case (short texts "p/q") in one pass."""
     try:
-        if max(map(len, texts), default=0) < 200:
-            pairs = list(map(_short_rat, texts))        # TypeError: not a string
-            if None not in pairs and 0 not in {q for _, q in pairs}:
-                return pairs
-    except TypeError:
+        pairs = list(map(_short_rat, texts)) if max(map(len, texts), default=0) < 200 else [None]
+        if None not in pairs and 0 not in {q for _, q in pairs}:
+            return pairs
+    except TypeError:                           # not a string
         pass
     return [rat(t) for t in texts]
 
@@ -61,10 +57,7 @@ def rats(texts: list) -> list[tuple[int, int]]:
 @lru_cache(maxsize=1 << 18)     # keyed by the text: the group and ordering checks read it twice
 def _short_rat(text: str) -> tuple[int, int] | None:
     match = _SHORT.fullmatch(text)
-    if not match:
-        return None
-    num, den = match.groups()
-    return int(num), (int(den) if den is not None else 1)
+    return match and (int(match[1]), int(match[2]) if match[2] is not None else 1)
 
 
 def integer(text: str) -> int:
@@ -74,8 +67,7 @@ def integer(text: str) -> int:
     if not (digits.isascii() and digits.isdigit()):
         raise ValueError(f"not an integer: {text!r}")
     value = 0
-    for start in range(0, len(digits), 4000):
-        chunk = digits[start:start + 4000]
+    for chunk in (digits[i:i + 4000] for i in range(0, len(digits), 4000)):
         value = value * 10 ** len(chunk) + int(chunk)
     return -value if text[:1] == "-" else value
 
@@ -104,11 +96,10 @@ def peval(p, x):
 
 
 # ------------------------------------------------------------------ the number field Q(theta)
-# theta is the only root of the monic polynomial p in (lo, hi).  If p is irreducible, a
-# polynomial of degree < deg p vanishes at theta only if it is zero, so the coefficients of an
-# element reduced modulo p are canonical: == and hash decide equality of real numbers.  So
-# irreducibility is PROVED (dispatch.IRREDUCIBILITY), never trusted: with a reducible p, equal
-# numbers could have different coefficients and a false witness would pass.
+# theta is the only root of the monic p in (lo, hi).  If p is irreducible, a polynomial of
+# degree < deg p vanishes at theta only if it is zero, so elements reduced modulo p have
+# canonical coefficients: == and hash decide equality.  So irreducibility is PROVED
+# (dispatch.IRREDUCIBILITY): with a reducible p a false witness could pass.
 
 def psi(m: int) -> list[int]:
     """The minimal polynomial of 2cos(2pi/m), m >= 3, with integer coefficients (low first).
@@ -118,10 +109,9 @@ def psi(m: int) -> list[int]:
     2cos(2pi/m) has degree h, and Psi_m, monic of degree h, is its minimal polynomial."""
     primes, r = [], m
     for q in range(2, isqrt(m) + 1):
-        if r % q == 0:
-            primes.append(q)
-            while r % q == 0:
-                r //= q
+        primes += [q] if r % q == 0 else []
+        while r % q == 0:
+            r //= q
     primes += [r] if r > 1 else []
     phi, divide = [1], []
     for chosen in itertools.product((0, 1), repeat=len(primes)):
@@ -161,7 +151,6 @@ def one_root(p: list, lo: Fraction, hi: Fraction) -> bool:
     (simple) root.  In integers: lo = l/D, hi = h/D, q is a positive multiple of
     (1 + x)^d P((l + (h - l)/(1 + x))/D)."""
     def shift(c, a):                            # the coefficients of c(x + a)
-        c = list(c)
         for i in range(len(c) - 1):
             for j in range(len(c) - 2, i - 1, -1):
                 c[j] += a * c[j + 1]
@@ -186,15 +175,14 @@ class Field:
         self.p, self.d = [c / p[-1] for c in p], len(p) - 1
         self.lead = lcm(*(c.denominator for c in self.p))      # p = big / lead, big integral
         self.big = [int(c * self.lead) for c in self.p]
-        lo, hi = self.interval = tuple(frac(x) for x in spec["interval"])
+        lo, hi = self.interval = tuple(map(frac, spec["interval"]))
         need(lo < hi and peval(self.p, lo) * peval(self.p, hi) < 0,
              "the minimal polynomial does not change sign on the interval of theta")
         need(one_root(self.p, lo, hi), "the interval does not isolate one root of the polynomial")
 
     def make(self, c: list, den: int) -> "Alg":
-        """(sum c_i theta^i) / den, canonical: c reduced modulo p (in integers:
-        c - (c_i / lead) theta^(i-d) big, scaling c and den by lead first if needed), divided
-        by the gcd of den and all of c, without trailing zeros."""
+        """(sum c_i theta^i) / den, canonical: c reduced mod p in integers (c -= (c_i / lead)
+        theta^(i-d) big, c and den scaled by lead first if needed), over gcd, no trailing 0."""
         big, lead, d = self.big, self.lead, self.d
         for i in range(len(c) - 1, d - 1, -1):
             t = c[i]
@@ -217,34 +205,29 @@ class Field:
         return self.make([int(x * den) for x in q], den)
 
     def sign(self, c: tuple) -> int:
-        """The sign of c(theta): interval Horner on [lo, hi] in fixed point, bisecting the
-        interval (towards the sign change of p) until 0 is excluded.  c(theta) != 0 for
-        canonical c != 0 and the enclosure shrinks to it: this ends."""
-        if not c:
-            return 0
-        for _ in range(4000):
-            lo, hi = self.interval
-            bits = self._bits()
+        """The sign of c(theta): interval Horner on [lo, hi] in fixed point, the interval
+        bisected until 0 is excluded (c(theta) != 0 for canonical c != 0: this ends)."""
+        for _ in range(4000 if c else 0):
+            (lo, hi), bits = self.interval, self._bits()
             a, b = _horner(c, _floor(lo, bits), _ceil(hi, bits), bits)
             if a > 0 or b < 0:
                 return 1 if a > 0 else -1
             for _ in range(16):
                 self._bisect(self._bits())
-        raise Invalid("a sign could not be decided")
+        need(not c, "a sign could not be decided")
+        return 0
 
     def _bits(self) -> int:
         """Fixed-point bits: the interval's width, plus d bits per doubling of |theta| (step
         i's rounding error is multiplied by |theta|^(d - i)), plus 64."""
-        lo, hi = self.interval
-        width, scale = hi - lo, max(abs(lo), abs(hi), Fraction(1))
+        (lo, hi), width = self.interval, self.interval[1] - self.interval[0]
         return (64 + width.denominator.bit_length() - width.numerator.bit_length()
-                + self.d * (int(scale).bit_length() + 1))
+                + self.d * (int(max(abs(lo), abs(hi), 1)).bit_length() + 1))
 
     def _bisect(self, bits: int) -> None:
         lo, hi = self.interval
         mid = Fraction(_floor((lo + hi) / 2, bits), 1 << bits)
-        if not lo < mid < hi:
-            mid = (lo + hi) / 2
+        mid = mid if lo < mid < hi else (lo + hi) / 2
         at_mid = self._p_sign(mid, bits)
         need(at_mid != 0, "the minimal polynomial has a rational root")
         self.interval = (lo, mid) if self._p_sign(lo, bits) != at_mid else (mid, hi)
@@ -288,8 +271,8 @@ def cyclotomic_proof(field: Field, proof: dict) -> None:
 
 
 class RingOps:
-    """Subtraction and the reflected + and * of a number class, from its +, *, unary - and
-    ``_of`` (an int or Fraction as a number of the same kind)."""
+    """- and the reflected + and * of a number class from its +, *, unary - and ``_of`` (an int
+    or Fraction as a number of the same kind)."""
     __slots__ = ()
 
     def __sub__(self, o):
@@ -354,13 +337,10 @@ def sgn(v) -> int:
 
 
 # ------------------------------------------------------------------ square roots, natively
-# Q(sqrt a_1, ..., sqrt a_k) for integers a_i > 1, pairwise coprime, none a square.  A product
-# of pairwise coprime integers is a square only if each is, so no product of a non-empty subset
-# is a square, and the square roots of the 2^k subset products P_S are linearly independent
-# over Q (Besicovitch 1940).  So sum c_S sqrt(P_S), kept as {P_S: c_S} without zero
-# coefficients, is canonical: == and hash decide equality of real numbers.  Products:
-# sqrt(P_S) sqrt(P_T) = P_(S and T) sqrt(P_(S xor T)), and with coprime radicands
-# P_(S and T) = gcd(P_S, P_T), P_(S xor T) = P_S P_T / gcd^2: no subset is ever enumerated.
+# Q(sqrt a_1, ..., sqrt a_k), integers a_i > 1 pairwise coprime, none a square: no product of
+# a non-empty subset is a square, so the square roots of the 2^k subset products P_S are
+# linearly independent over Q (Besicovitch 1940) and sum c_S sqrt(P_S), kept as {P_S: c_S}
+# without zeros, is canonical.  sqrt(P_S) sqrt(P_T) = g sqrt(P_S P_T / g^2), g = gcd(P_S, P_T).
 
 class SquareRoots:
     """The field ``{"radicands": [a_1, ...]}``: checks them, then makes elements."""
@@ -377,8 +357,7 @@ class SquareRoots:
         """A product of a subset of the radicands (text), checked to be one."""
         m = rest = integer(text)
         for x in self.radicands:
-            if rest % x == 0:
-                rest //= x
+            rest //= x if rest % x == 0 else 1
         need(m >= 1 and rest == 1, f"{text!r} is not a product of distinct radicands")
         return m
 
@@ -399,10 +378,8 @@ class SquareRoots:
 
 
 class Root(RingOps):
-    """(sum c_m sqrt(m)) / den with integer c_m, canonical (see SquareRoots): no zero c_m,
-    den > 0 and gcd(den, every c_m) = 1, so == and hash are exact; mixes with numbers.
-    Integer coefficients over one denominator: a product of two elements of t terms costs
-    t^2 integer products, not t^2 fraction products with a gcd each."""
+    """(sum c_m sqrt(m)) / den, integers c_m != 0, den > 0, gcd 1: canonical, == and hash exact.
+    One denominator: a product of t terms by t terms is t^2 integer products, no gcds."""
     __slots__ = ("t", "den")
 
     def __init__(self, terms: dict, den: int = 1):
@@ -460,11 +437,9 @@ class Root(RingOps):
         return hash((frozenset(self.t.items()), self.den))
 
     def sign(self) -> int:
-        """By rational enclosures sqrt(m) in [isqrt(m 4^b), isqrt(m 4^b) + 1] / 2^b, b rising
-        until 0 is excluded (a non-zero element is a non-zero real: this ends)."""
-        if not self.t:
-            return 0
-        bits = 32
+        """By enclosures sqrt(m) in [isqrt(m 4^b), isqrt(m 4^b) + 1] / 2^b, b doubling until 0 is
+        excluded (a non-zero element is a non-zero real: this ends)."""
+        bits = 32 if self.t else 1 << 20
         while bits < 1 << 20:
             lo = hi = 0
             for m, c in self.t.items():
@@ -474,4 +449,5 @@ class Root(RingOps):
             if lo > 0 or hi < 0:
                 return 1 if lo > 0 else -1
             bits *= 2
-        raise Invalid("a sign could not be decided")
+        need(not self.t, "a sign could not be decided")
+        return 0
