@@ -1,13 +1,8 @@
-"""The independent checker of exactsym certificates: standard library only, no code shared with
+"""The independent checker of exactsym certificates: standard library only, sharing no code with
 the solver (docs/certificates.md).  ``python -m exactsym.checker CERT.json`` (or, this directory
 copied anywhere, ``python -m checker CERT.json``) exits 0 when the certificate proves its claim,
-1 when it does not (the reason on stderr), 2 when the file is unreadable.
-
-The core, to be read in one sitting: ``numbers`` (rationals, square roots, Q(theta)),
-``dispatch`` (which module checks what), ``groups`` (what a group certificate proves),
-``ordering`` (the canonical ordering and the leader), ``refutations``.  The ``ext_*`` modules
-are optional extensions for other number systems, reached through ``dispatch`` only.
-"""
+1 when it does not (the reason on stderr), 2 when the file is unreadable.  The core: numbers,
+dispatch, groups, ordering, refutations; ``ext_*``: optional extensions, reached by dispatch."""
 
 from __future__ import annotations
 

@@ -1,9 +1,7 @@
-"""The checker's dispatch tables, written out in one place (nothing registers itself): which
-module verifies each certificate format, reads each number system and checks each proof of
-irreducibility.  Entries name a module of this package and a function or class in it, loaded
-on first use.  The core modules are always there; an ``ext_*`` module is an optional extension:
-a certificate that needs an absent one is rejected, saying which.
-"""
+"""The checker's dispatch tables, written out in one place (nothing registers itself): the
+module and function or class that verifies each format, reads each number system, proves each
+kind of irreducibility and checks each refuted label, loaded on first use.  An ``ext_*`` module
+is an optional extension: a certificate that needs an absent one is rejected, saying which."""
 
 from __future__ import annotations
 
@@ -53,7 +51,7 @@ def load(table: dict, key: str):
 
 
 def system(spec: dict) -> str:
-    """The number system of a configuration's "field" object (a key of NUMBER_SYSTEMS)."""
+    """The key in NUMBER_SYSTEMS of a configuration's "field" object."""
     if "tower" in spec:
         tower = spec["tower"] if isinstance(spec["tower"], dict) else {}
         if "base" not in tower:
@@ -65,8 +63,7 @@ def system(spec: dict) -> str:
 
 
 def number_field(spec: dict):
-    """The checked field of a configuration's "field" object: the class of its system, given
-    the object under the key "tower" or "sparse-cyclotomic", or the object itself."""
+    """The checked field of a "field" object (the part under "tower" or "sparse-cyclotomic")."""
     kind = system(spec)
     key = kind.split()[0]
     return load(NUMBER_SYSTEMS, kind)(spec[key] if key in ("tower", "sparse-cyclotomic")
@@ -91,15 +88,13 @@ def _no_duplicate(pairs: list) -> dict:
 
 
 def parse(text: str):
-    """The JSON of a certificate, strictly: a key given twice in one object is Invalid (JSON
-    would keep the last: two "claim" objects, one checked and one read).  ValueError when
-    the text is not JSON."""
+    """A certificate's JSON; a key twice in one object is Invalid (json keeps the last: two
+    "claim" objects, one read by a person, one checked); ValueError when it is not JSON."""
     return json.loads(text, object_pairs_hook=_no_duplicate)
 
 
 def verify(cert) -> tuple[bool, str]:
-    """``(True, summary)`` when the certificate (refutation or group certificate, by its
-    format) proves its claim, else ``(False, reason)``."""
+    """``(True, summary)`` when the certificate proves its claim, else ``(False, reason)``."""
     kind = cert.get("format") if isinstance(cert, dict) else None
     return load(FORMATS, kind if isinstance(kind, str) and kind in FORMATS
                 else "exactsym-certificate")(cert)

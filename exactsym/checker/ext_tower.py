@@ -440,7 +440,8 @@ class CyclotomicTower(Tower):
                  for v in roots), f"tower level {i}: roots must be integers in [0, p)")
         h = thetas[0]
         for j, rj in enumerate(self.r):
-            need(_theta_integral(rj, p), f"tower level {i}: p divides a denominator of radicand {j + 1}")
+            need(_theta_integral(rj, p),
+                 f"tower level {i}: p divides a denominator of radicand {j + 1}")
             n = self._base_norm(rj)
             norm = 1
             for t in thetas:

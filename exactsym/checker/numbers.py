@@ -28,10 +28,9 @@ _SHORT = re.compile(r"([+-]?[0-9]{1,4000})(?:/([0-9]{1,4000}))?")     # ASCII di
 
 def rat(text) -> tuple[int, int]:
     """An exact rational "p/q" or "p" (or a JSON integer) as ``(p, q)``, q > 0."""
-    if type(text) is str and len(text) < 200:
-        pair = _short_rat(text)                 # the common case: parsed once per text
-        if pair is not None and pair[1] > 0:
-            return pair
+    pair = _short_rat(text) if type(text) is str and len(text) < 200 else None
+    if pair and pair[1] > 0:                    # the common case: parsed once per text
+        return pair
     if is_int(text):
         return text, 1
     num, slash, den = text.partition("/") if isinstance(text, str) else ("?", "", "")
@@ -61,8 +60,7 @@ def _short_rat(text: str) -> tuple[int, int] | None:
 
 
 def integer(text: str) -> int:
-    """``int(text)`` for a decimal integer of any length: Python's ``int`` refuses strings of
-    more than 4300 digits, so longer ones are read in chunks (no global limit is changed)."""
+    """``int(text)`` of any length, in chunks (``int`` refuses over 4300 digits)."""
     digits = text[1:] if text[:1] in "+-" else text
     if not (digits.isascii() and digits.isdigit()):
         raise ValueError(f"not an integer: {text!r}")
@@ -77,8 +75,8 @@ def frac(text) -> Fraction:
 
 
 def scaled(pairs: list) -> tuple[list, int]:
-    """Rationals as ints times a common denominator D (scaling all numbers of one kind by one
-    D > 0 keeps equality, order and symmetries); Fractions and D = 1 if D would be huge."""
+    """Rationals as ints times a common denominator D > 0 (which keeps equality, order and
+    symmetries), or Fractions and D = 1 if D would be huge."""
     d = 1
     for q in {q for _, q in pairs}:
         if d % q:
@@ -102,11 +100,9 @@ def peval(p, x):
 # (dispatch.IRREDUCIBILITY): with a reducible p a false witness could pass.
 
 def psi(m: int) -> list[int]:
-    """The minimal polynomial of 2cos(2pi/m), m >= 3, with integer coefficients (low first).
-    Phi_m = prod over squarefree t | m of (x^(m/t) - 1)^mu(t) (Moebius inversion of
-    x^m - 1 = prod_{e | m} Phi_e), divisions after all products so they are exact.  Phi_m is
-    irreducible (Gauss), palindromic of degree 2h, and z^-h Phi_m(z) = Psi_m(z + 1/z): so
-    2cos(2pi/m) has degree h, and Psi_m, monic of degree h, is its minimal polynomial."""
+    """Psi_m, the minimal polynomial of 2cos(2pi/m), m >= 3 (integers, low first).  Phi_m =
+    prod over squarefree t | m of (x^(m/t) - 1)^mu(t) (Moebius), divisions last, exact.  Phi_m
+    is irreducible (Gauss), palindromic of degree 2h, and z^-h Phi_m(z) = Psi_m(z + 1/z)."""
     primes, r = [], m
     for q in range(2, isqrt(m) + 1):
         primes += [q] if r % q == 0 else []
@@ -145,11 +141,9 @@ def poly_product(a, b) -> list:
 
 
 def one_root(p: list, lo: Fraction, hi: Fraction) -> bool:
-    """p has exactly one root in (lo, hi): Descartes' rule of signs on
-    q(x) = (1 + x)^d p(lo + (hi - lo)/(1 + x)), whose positive roots are the roots of p in
-    (lo, hi); sign changes exceed positive roots by an even number, so one change means one
-    (simple) root.  In integers: lo = l/D, hi = h/D, q is a positive multiple of
-    (1 + x)^d P((l + (h - l)/(1 + x))/D)."""
+    """p has exactly one root in (lo, hi): one sign change (Descartes) in the coefficients of
+    (1 + x)^d p(lo + (hi - lo)/(1 + x)), whose positive roots are those of p in (lo, hi); in
+    integers, lo = l/D, hi = h/D."""
     def shift(c, a):                            # the coefficients of c(x + a)
         for i in range(len(c) - 1):
             for j in range(len(c) - 2, i - 1, -1):
@@ -164,8 +158,8 @@ def one_root(p: list, lo: Fraction, hi: Fraction) -> bool:
 
 
 class Field:
-    """Q(theta): checks the minimal polynomial and the interval of theta, then makes elements
-    and decides signs.  Irreducibility is proved by the caller (dispatch.number_field)."""
+    """Q(theta): checks p and the interval of theta, then makes elements and decides signs.
+    Irreducibility is proved by the caller (dispatch.dense_field)."""
 
     def __init__(self, spec: dict):
         p = [frac(c) for c in spec["minpoly"]]
@@ -218,8 +212,8 @@ class Field:
         return 0
 
     def _bits(self) -> int:
-        """Fixed-point bits: the interval's width, plus d bits per doubling of |theta| (step
-        i's rounding error is multiplied by |theta|^(d - i)), plus 64."""
+        """Fixed-point bits: the interval's width, d per doubling of |theta| (step i's rounding
+        error is multiplied by |theta|^(d - i)), and 64."""
         (lo, hi), width = self.interval, self.interval[1] - self.interval[0]
         return (64 + width.denominator.bit_length() - width.numerator.bit_length()
                 + self.d * (int(max(abs(lo), abs(hi), 1)).bit_length() + 1))
@@ -253,9 +247,8 @@ def _ceil(x: Fraction, bits: int) -> int:
 
 
 def _horner(c, lo: int, hi: int, bits: int) -> tuple[int, int]:
-    """[a, b] / 2^bits holding sum c_i t^i for every t in [lo, hi] / 2^bits (c integers):
-    interval Horner scaled by 2^bits, products rounded outwards, so the numbers keep about
-    ``bits`` bits whatever the degree."""
+    """[a, b] / 2^bits holding sum c_i t^i for every t in [lo, hi] / 2^bits: interval Horner
+    in integers, products rounded outwards (about ``bits`` bits whatever the degree)."""
     a = b = 0
     for coeff in reversed(c):
         ends = (a * lo, a * hi, b * lo, b * hi)
@@ -353,8 +346,7 @@ class SquareRoots:
              "radicands: not pairwise coprime")
         self.radicands = a
 
-    def key(self, text) -> int:
-        """A product of a subset of the radicands (text), checked to be one."""
+    def key(self, text) -> int:                 # a product of distinct radicands
         m = rest = integer(text)
         for x in self.radicands:
             rest //= x if rest % x == 0 else 1
