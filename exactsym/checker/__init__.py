@@ -17,7 +17,6 @@ __all__ = ["Field", "Invalid", "REFUTABLE", "digest", "frac", "integer", "main",
            "number_field", "one_root", "parse", "psi", "rat", "sgn", "verify",
            "verify_certificate", "verify_refutation"]
 
-
 def main(argv: list | None = None) -> int:
     args = sys.argv[1:] if argv is None else argv
     if len(args) != 1:

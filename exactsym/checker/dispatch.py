@@ -38,7 +38,6 @@ REFUTATIONS = {"Pasym-Pord": ("refutations", "in_o_a"), "lem-asym-ord": ("refuta
                "lemma-sym-regular": ("ext_polygons", "sym_regular"),
                "obs-exh-poly": ("ext_polygons", "no_type")}
 
-
 def load(table: dict, key: str):
     module, name = table[key]
     try:
@@ -48,7 +47,6 @@ def load(table: dict, key: str):
             raise
         raise Invalid(f"{key!r} needs the checker extension {module}.py, which is not here") \
             from None
-
 
 def system(spec: dict) -> str:
     """The key in NUMBER_SYSTEMS of a configuration's "field" object."""
@@ -61,7 +59,6 @@ def system(spec: dict) -> str:
     return "sparse-cyclotomic" if "sparse-cyclotomic" in spec else \
         "radicands" if "radicands" in spec else "minpoly"
 
-
 def number_field(spec: dict):
     """The checked field of a "field" object (the part under "tower" or "sparse-cyclotomic")."""
     kind = system(spec)
@@ -69,14 +66,12 @@ def number_field(spec: dict):
     return load(NUMBER_SYSTEMS, kind)(spec[key] if key in ("tower", "sparse-cyclotomic")
                                       else spec)
 
-
 def dense_field(spec: dict) -> Field:
     """Q(theta) with its minimal polynomial proved irreducible by the proof named."""
     field, proof = Field(spec), spec["irreducible"]
     need(proof["method"] in IRREDUCIBILITY, f"unknown irreducibility proof {proof['method']!r}")
     load(IRREDUCIBILITY, proof["method"])(field, proof)
     return field
-
 
 def _no_duplicate(pairs: list) -> dict:
     out = dict(pairs)
@@ -86,12 +81,10 @@ def _no_duplicate(pairs: list) -> dict:
         raise Invalid(f"the key {twice!r} is given twice in one object")
     return out
 
-
 def parse(text: str):
     """A certificate's JSON; a key twice in one object is Invalid (json keeps the last: two
     "claim" objects, one read by a person, one checked); ValueError when it is not JSON."""
     return json.loads(text, object_pairs_hook=_no_duplicate)
-
 
 def verify(cert) -> tuple[bool, str]:
     """``(True, summary)`` when the certificate proves its claim, else ``(False, reason)``."""

@@ -27,7 +27,6 @@ from .dispatch import number_field
 from .numbers import Field, Invalid, frac, is_int, need, rat, rats, scaled, sgn
 from .ordering import check as check_ordering
 
-
 def permutation(spec: dict, n: int, name: str) -> list:
     perm = spec["permutation"]
     need(isinstance(perm, list) and len(perm) == n and all(is_int(j) and 0 <= j < n
@@ -35,12 +34,10 @@ def permutation(spec: dict, n: int, name: str) -> list:
          f"{name}: not a list of {n} indices")
     return perm
 
-
 def reference(witness: dict, n: int) -> int:
     ref = witness["reference"]
     need(is_int(ref) and 0 <= ref < n, f"bad reference point {ref!r}")
     return ref
-
 
 def group(n, ref, level, rot, mir, witness, image_in) -> tuple[str, bool, list | None]:
     """Order of rho and step 3, given the verified permutations; returns (name, orderable).
@@ -67,13 +64,11 @@ def group(n, ref, level, rot, mir, witness, image_in) -> tuple[str, bool, list |
     orderable = len(orbit) == 1 and (mir is None or all(mir[i] == i for i in range(n)))
     return f"{'D' if mir else 'C'}{len(orbit)}", orderable, mir
 
-
 def distinct(keys: list) -> dict:
     index: dict = {}
     for i, k in enumerate(keys):
         need(index.setdefault(k, i) == i, f"points {index[k]} and {i} coincide")
     return index
-
 
 def read_cartesian(points: list, field: Field | None) -> tuple[list, int, object]:
     """(pts, scale, num), shared with the ordering check: the points times scale > 0 (ints after
@@ -82,7 +77,6 @@ def read_cartesian(points: list, field: Field | None) -> tuple[list, int, object
         flat, scale = scaled(rats([v for p in points for v in p]))
         return list(zip(flat[0::2], flat[1::2])), scale, frac
     return [(field.num(x), field.num(y)) for x, y in points], 1, field.num
-
 
 def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
     pts, scale, num = read
@@ -150,7 +144,6 @@ def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, boo
 
     return group(n, ref, level, rot, mir, witness, image_in)
 
-
 def polar(points: list, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
     n = len(points)
     rot, mir = witness.get("rotation"), witness.get("mirror")
@@ -203,13 +196,11 @@ def polar(points: list, field: Field | None, witness: dict) -> tuple[str, bool, 
 
     return group(n, ref, level, rot, mir, witness, image_in)
 
-
 # ------------------------------------------------------------------ the certificate
 
 def digest(configuration) -> str:
     text = json.dumps(configuration, sort_keys=True, separators=(",", ":"))
     return hashlib.sha256(text.encode()).hexdigest()
-
 
 def verify_certificate(cert) -> tuple[bool, str]:
     """``(True, summary)`` when the certificate proves its claim, else ``(False, reason)``."""

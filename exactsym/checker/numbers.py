@@ -9,22 +9,17 @@ from fractions import Fraction
 from functools import lru_cache
 from math import gcd, isqrt, lcm, prod
 
-
 class Invalid(Exception):
     """The certificate does not prove its claim; the message says why."""
-
 
 def need(condition, reason: str) -> None:
     if not condition:
         raise Invalid(reason)
 
-
 def is_int(x) -> bool:
     return isinstance(x, int) and not isinstance(x, bool)      # JSON true is no number
 
-
 _SHORT = re.compile(r"([+-]?[0-9]{1,4000})(?:/([0-9]{1,4000}))?")     # ASCII digits only
-
 
 def rat(text) -> tuple[int, int]:
     """An exact rational "p/q" or "p" (or a JSON integer) as ``(p, q)``, q > 0."""
@@ -41,7 +36,6 @@ def rat(text) -> tuple[int, int]:
     need(q > 0, f"not an exact rational: {text!r}")
     return p, q
 
-
 def rats(texts: list) -> list[tuple[int, int]]:
     """``[rat(t) for t in texts]``, the common case (short texts "p/q") in one pass."""
     try:
@@ -52,12 +46,10 @@ def rats(texts: list) -> list[tuple[int, int]]:
         pass
     return [rat(t) for t in texts]
 
-
 @lru_cache(maxsize=1 << 18)     # keyed by the text: the group and ordering checks read it twice
 def _short_rat(text: str) -> tuple[int, int] | None:
     match = _SHORT.fullmatch(text)
     return match and (int(match[1]), int(match[2]) if match[2] is not None else 1)
-
 
 def integer(text: str) -> int:
     """``int(text)`` of any length, in chunks (``int`` refuses over 4300 digits)."""
@@ -69,10 +61,8 @@ def integer(text: str) -> int:
         value = value * 10 ** len(chunk) + int(chunk)
     return -value if text[:1] == "-" else value
 
-
 def frac(text) -> Fraction:
     return Fraction(*rat(text))
-
 
 def scaled(pairs: list) -> tuple[list, int]:
     """Rationals as ints times a common denominator D > 0 (which keeps equality, order and
@@ -85,13 +75,11 @@ def scaled(pairs: list) -> tuple[list, int]:
                 return [Fraction(p, q) for p, q in pairs], 1
     return [p * (d // q) for p, q in pairs] if d > 1 else [p for p, _ in pairs], d
 
-
 def peval(p, x):
     value = 0
     for c in reversed(p):
         value = value * x + c
     return value
-
 
 # ------------------------------------------------------------------ the number field Q(theta)
 # theta is the only root of the monic p in (lo, hi).  If p is irreducible, a polynomial of
@@ -131,14 +119,12 @@ def psi(m: int) -> list[int]:
                         for i in range(len(v) + 1)]
     return out
 
-
 def poly_product(a, b) -> list:
     out = [0] * max(len(a) + len(b) - 1, 0)
     for i, x in enumerate(a):
         for j, y in enumerate(b):
             out[i + j] += x * y
     return out
-
 
 def one_root(p: list, lo: Fraction, hi: Fraction) -> bool:
     """p has exactly one root in (lo, hi): one sign change (Descartes) in the coefficients of
@@ -155,7 +141,6 @@ def one_root(p: list, lo: Fraction, hi: Fraction) -> bool:
     c = shift([cj * (h - l) ** j for j, cj in enumerate(c)][::-1], 1)
     signs = [x > 0 for x in c if x]
     return sum(a != b for a, b in zip(signs, signs[1:])) == 1
-
 
 class Field:
     """Q(theta): checks p and the interval of theta, then makes elements and decides signs.
@@ -227,8 +212,7 @@ class Field:
         self.interval = (lo, mid) if self._p_sign(lo, bits) != at_mid else (mid, hi)
 
     def _p_sign(self, x: Fraction, bits: int) -> int:
-        """The sign of p(x): fixed point first (x dyadic), exact if the enclosure holds 0."""
-        if x.denominator & (x.denominator - 1) == 0:
+        if x.denominator & (x.denominator - 1) == 0:    # dyadic: fixed point first, then exact
             for extra in (0, 64, 256):
                 a, b = _horner(self.big, _floor(x, bits + extra), _ceil(x, bits + extra),
                                bits + extra)
@@ -237,14 +221,11 @@ class Field:
         v = peval(self.big, x)
         return (v > 0) - (v < 0)
 
-
 def _floor(x: Fraction, bits: int) -> int:
     return (x.numerator << bits) // x.denominator
 
-
 def _ceil(x: Fraction, bits: int) -> int:
     return -((-x.numerator << bits) // x.denominator)
-
 
 def _horner(c, lo: int, hi: int, bits: int) -> tuple[int, int]:
     """[a, b] / 2^bits holding sum c_i t^i for every t in [lo, hi] / 2^bits: interval Horner
@@ -255,17 +236,14 @@ def _horner(c, lo: int, hi: int, bits: int) -> tuple[int, int]:
         a, b = (min(ends) >> bits) + (coeff << bits), -(-max(ends) >> bits) + (coeff << bits)
     return a, b
 
-
 def cyclotomic_proof(field: Field, proof: dict) -> None:
     """{"method": "real-cyclotomic", "conductor": m}: p is Psi_m, irreducible by theorem."""
     m = proof["conductor"]
     need(is_int(m) and 3 <= m <= 10 ** 6 and psi(m) == field.p,
          f"the minimal polynomial is not that of 2cos(2pi/{m!r})")
 
-
 class RingOps:
-    """- and the reflected + and * of a number class from its +, *, unary - and ``_of`` (an int
-    or Fraction as a number of the same kind)."""
+    """-, reflected + and * from +, *, unary - and ``_of`` (an int or Fraction as a number)."""
     __slots__ = ()
 
     def __sub__(self, o):
@@ -279,7 +257,6 @@ class RingOps:
 
     def __rmul__(self, o):
         return self * o
-
 
 class Alg:
     """c(theta)/den, canonical (Field.make): == and hash are exact; mixes with int/Fraction."""
@@ -323,11 +300,9 @@ class Alg:
     def sign(self) -> int:
         return self.f.sign(self.c)              # den > 0
 
-
 def sgn(v) -> int:
     """The sign of a number: a rational's, or the number's own exact ``sign()``."""
     return v.sign() if hasattr(v, "sign") else (v > 0) - (v < 0)
-
 
 # ------------------------------------------------------------------ square roots, natively
 # Q(sqrt a_1, ..., sqrt a_k), integers a_i > 1 pairwise coprime, none a square: no product of
@@ -367,7 +342,6 @@ class SquareRoots:
              "{product: coefficient} maps")
         q = frac(value)
         return Root.of({1: q} if q else {})
-
 
 class Root(RingOps):
     """(sum c_m sqrt(m)) / den, integers c_m != 0, den > 0, gcd 1: canonical, == and hash exact.

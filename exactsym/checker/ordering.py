@@ -29,11 +29,6 @@ from math import gcd, lcm
 
 from .numbers import is_int, need, rat, scaled, sgn
 
-
-def _native_sign(v) -> int:
-    return (v > 0) - (v < 0)
-
-
 class _Plane:
     """Points about c in one frame: a key of the distance from c and the direction of each
     point off c.  ``native``: ints and Fractions, whose own comparisons are exact (symbols get
@@ -43,7 +38,7 @@ class _Plane:
                  Angle=None):
         self.polar, self.r2, self.dirs, self.turn = polar, r2, dirs, turn
         self.native, self.Angle, self.boxes = native, Angle, {}
-        self.sign = _native_sign if native else sgn
+        self.sign = (lambda v: (v > 0) - (v < 0)) if native else sgn
 
     def mirrored(self) -> "_Plane":
         if self.polar:
@@ -74,7 +69,6 @@ class _Plane:
             return -1 if half[0] < half[1] else 1
         return -sign(a[0] * b[1] - a[1] * b[0])
 
-
 def _rays(plane: _Plane, order: list) -> list:
     """The rays of ``order`` (points off c), checked to be sorted counter-clockwise from the
     first point's direction, each ray by increasing distance."""
@@ -94,7 +88,6 @@ def _rays(plane: _Plane, order: list) -> list:
             rays.append([i])
         last = a
     return rays
-
 
 def _rays_native(plane: _Plane, order: list) -> list:
     """_rays written out for Python numbers: v is in the upper half (h = 0) of the first
@@ -118,7 +111,6 @@ def _rays_native(plane: _Plane, order: list) -> list:
         px, py, lh = vx, vy, h
     return rays
 
-
 def _symbols(plane: _Plane, rays: list) -> tuple[list, list]:
     """The readings from R_0: counter-clockwise, and clockwise (the string of the mirror image
     read from R_0: rays R_0, R_-1, ..., each with the angle from the ray before it)."""
@@ -130,13 +122,11 @@ def _symbols(plane: _Plane, rays: list) -> tuple[list, list]:
     return (list(zip(radii, gaps)),
             [(radii[-j % m], gaps[(-j - 1) % m]) for j in range(m)])
 
-
 def _primitive(x, y) -> tuple[int, int]:
     """The positive multiple of the vector (x, y) != 0 with coprime integer coordinates."""
     d = lcm(x.denominator, y.denominator)
     g = gcd(int(x * d), int(y * d))
     return int(x * d) // g, int(y * d) // g
-
 
 def _cmp_symbol(plane: _Plane, s, t) -> int:
     if s is t:                                  # one symbol read twice (a reading against
@@ -152,7 +142,6 @@ def _cmp_symbol(plane: _Plane, s, t) -> int:
     if len(s[0]) != len(t[0]):
         return -1 if len(s[0]) < len(t[0]) else 1
     return plane.cmp_angle(s[1], t[1])
-
 
 def _least(plane: _Plane, x: list, cw: list) -> None:
     """The ccw reading x is no greater than any rotation of itself or of cw (Z-algorithm)."""
@@ -172,7 +161,6 @@ def _least(plane: _Plane, x: list, cw: list) -> None:
                 need(_cmp_symbol(plane, s[i + zi], x[zi]) > 0, "ordering: the reading from "
                      f"ray {i - m - 1} is less than the claimed one (they differ at symbol "
                      f"{zi}): the claimed order is not the canonical one")
-
 
 def _least_native(plane: _Plane, rays: list) -> None:
     """_least for Python numbers, symbols made only where needed.  Both frames' readings have
@@ -219,12 +207,10 @@ def _least_native(plane: _Plane, rays: list) -> None:
                      f"ray {i - m - 1} is less than the claimed one (they differ at symbol "
                      f"{zi}): the claimed order is not the canonical one")
 
-
 def _indices(order, n: int, what: str) -> list:
     need(isinstance(order, list) and all(is_int(i) and 0 <= i < n for i in order)
          and len(set(order)) == len(order), f"{what}: not a list of distinct point indices")
     return order
-
 
 def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
     """The points about the SEC centre c (polar: the origin, verified by the group check;
@@ -275,14 +261,12 @@ def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
         need(at_c[support[0]], "sec: one support point must be the centre")
     return plane
 
-
 def _cross_sign(plane: _Plane, a: int, b: int) -> int:
     """The sign of w_a x w_b (the directions of points a and b, off c)."""
     if plane.Angle:
         return plane.Angle(plane, a, b).sign(1)
     (ax, ay), (bx, by) = plane.dirs[a], plane.dirs[b]
     return plane.sign(ax * by - ay * bx)
-
 
 def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
           orderable: bool, mirror: list | None, read=None) -> str:

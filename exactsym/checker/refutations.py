@@ -23,13 +23,11 @@ REFUTABLE = {"Pasym-Pord": "P is orderable if P is in O_A",
                                   "each through a vertex, is regular",
              "obs-exh-poly": "every straight symmetric polygon is of type 0, 1, 2, 3 or 4"}
 
-
 def not_orderable(premise: str, name: str, k: int, orderable: bool) -> str:
     """The conclusion "P is orderable" fails: some element of G moves a point."""
     need(orderable is False, f"the conclusion holds: group {name} is orderable")
     mover = f"its rotation of order {k}" if k > 1 else "its mirror"
     return f"{premise}, yet P (group {name}) is not orderable: {mover} moves a point"
-
 
 def in_o_a(obj: dict, name: str, k: int, n: int, orderable: bool) -> str:
     """Pasym-Pord, lem-asym-ord: P is in O_A -- at least two points, no mirror that moves a
@@ -42,7 +40,6 @@ def in_o_a(obj: dict, name: str, k: int, n: int, orderable: bool) -> str:
     return not_orderable(f"group {name} has no mirror moving a point and no half-turn", name, k,
                          orderable)
 
-
 def _one_level(config) -> bool:
     """All points at one distance from c (rational coordinates only)."""
     pts = config["points"]
@@ -53,7 +50,6 @@ def _one_level(config) -> bool:
     xs, ys = [frac(p[0]) for p in pts], [frac(p[1]) for p in pts]
     cx, cy = sum(xs) / len(xs), sum(ys) / len(ys)
     return len({(x - cx) ** 2 + (y - cy) ** 2 for x, y in zip(xs, ys)}) == 1
-
 
 def verify_refutation(obj) -> tuple[bool, str]:
     """``(True, summary)`` when the refutation certificate shows a configuration meeting the
