@@ -7,6 +7,7 @@ from __future__ import annotations
 import ast
 import json
 import random
+import re
 import shutil
 import subprocess
 import sys
@@ -207,3 +208,15 @@ def test_refusals_solver_and_checker_agree(label, case):
            "certificate": certificate.make_certificate(config)}
     ok, why = checker.verify(json.loads(json.dumps(obj)))
     assert not ok and str(refused.value) == f"does not refute {label}: {why}"
+
+
+def test_the_core_is_small_and_docs_count_it():
+    """The core is at most 1,200 lines (wc -l) and docs/certificates.md gives each file's
+    count; every other module of the checker is an extension."""
+    counts = {p.name: len(p.read_text().splitlines()) for p in CHECKER.glob("*.py")}
+    assert sum(counts[name] for name in CORE) <= 1200
+    assert all(name.startswith("ext_") for name in set(counts) - set(CORE))
+    docs = (ROOT / "docs" / "certificates.md").read_text()
+    assert f"The **core**, {sum(counts[n] for n in CORE):,} lines" in docs
+    for name, lines in counts.items():
+        assert re.search(rf"`(exactsym/checker/)?{re.escape(name)}` \| {lines} \|", docs), name
