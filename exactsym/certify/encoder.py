@@ -123,7 +123,7 @@ class Encoder:
 
     def _sparse(self, system, values):
         """``{"sparse-cyclotomic": {conductor, factors, prime, root[, primality]}}``
-        (checker_sparse): the checker proves the factors prime (Miller-Rabin, or above its
+        (checker/ext_sparse.py): the checker proves the factors prime (Miller-Rabin, or above its
         range the ``primality`` proofs of prime_certificates), the prime l = 1 mod N and the
         root of order N mod l (its hash), and every denominator prime to l; numbers are
         {e: c} = sum c cos(2 pi e/N)."""
@@ -158,7 +158,7 @@ class Encoder:
         return spec
 
     def _sparse_tower(self, tower, values):
-        """Square roots of rationals over the sparse Q(zeta_N) (checker_tower_sparse):
+        """Square roots of rationals over the sparse Q(zeta_N) (checker/ext_sparse_tower.py):
         ``{"tower": {"base": {"sparse-cyclotomic": ...}, "levels": [{"radicand": r_i,
         "kummer": true}, ...], "kummer": [{"prime": p}, ...]}}``, the primes p = 1 mod N
         whose Legendre symbols (r_i | p) have rank L over F_2; numbers are base numbers
@@ -259,7 +259,7 @@ class Encoder:
 
     def _tower(self, tower, values):
         """K_0 = Q(sqrt p) over the tower's base primes, then each level's radicand with a
-        homomorphism to F_p proving it a non-square in the field below (checker_tower)."""
+        homomorphism to F_p proving it a non-square in the field below (checker/ext_tower.py)."""
         if isinstance(tower, SparseKummerTower):
             self._sparse_tower(tower, values)
             return
@@ -292,7 +292,8 @@ class Encoder:
     def _cyclotomic_tower(self, tower):
         """K_0 = Q(theta), theta = 2cos(2pi/M), written as the real-cyclotomic field below
         (its elements converted to powers of theta), then each level's radicand with a prime
-        p = 1 mod M and the roots of Psi_M modulo p (checker_tower, "Towers over Q(zeta_M)")."""
+        p = 1 mod M and the roots of Psi_M modulo p (checker/ext_tower.py; docs/certificates.md,
+        "Towers over Q(zeta_M)")."""
         self.field = tower.field
         self.atoms = None
         self._cyclotomic(tower.field)
