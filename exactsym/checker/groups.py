@@ -29,8 +29,8 @@ from .ordering import check as check_ordering
 
 def permutation(spec: dict, n: int, name: str) -> list:
     perm = spec["permutation"]
-    need(isinstance(perm, list) and len(perm) == n and all(is_int(j) and 0 <= j < n
-                                                           for j in perm),
+    need(isinstance(perm, list) and len(perm) == n and all(type(j) is int and 0 <= j < n
+                                                           for j in perm),   # not bool
          f"{name}: not a list of {n} indices")
     return perm
 
