@@ -303,7 +303,10 @@ def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
     plane = plane.mirrored() if spec["orientation"] == "cw" else plane
     rays = _rays(plane, order)
     if orderable:
-        _least_native(plane, rays) if plane.native else _least(plane, *_symbols(plane, rays))
+        if plane.native:
+            _least_native(plane, rays)
+        else:
+            _least(plane, *_symbols(plane, rays))
         need(leader == ordering[0], "claim.leader is not the first of the ordering")
         return "ordering and leader"
     ccw = _symbols(plane, rays)[0]
