@@ -155,9 +155,15 @@ def test_the_checker_runs_copied_as_a_directory(tmp_path):
              "sparse": "cases/examples/big-turns-asymmetric.toml"}
     paths = {k: _write(tmp_path / f"{k}.json", json.dumps(_certificate(v)))
              for k, v in cases.items()}
+    trig = _write(tmp_path / "trig.txt", "".join(   # a hexagon by cos and sin: Q(2cos(2pi/12))
+        f"{sx}cos(pi/3) {sy}sin(pi/3)\n" for sx, sy in (("", ""), ("-", ""), ("-", "-"),
+                                                         ("", "-"))) + "1 0\n-1 0\n")
+    cert = json.loads(json.dumps(certificate.make_certificate(load(trig))))
+    assert cert["configuration"]["field"]["irreducible"]["method"] == "real-cyclotomic"
+    paths["minpoly"] = _write(tmp_path / "minpoly.json", json.dumps(cert))
     for kind, path in paths.items():
         assert _run_checker(full.parent, "checker", path).returncode == 0, kind
-    for kind in ("rational", "radicands"):
+    for kind in ("rational", "radicands", "minpoly"):
         assert _run_checker(core.parent, "checker", paths[kind]).returncode == 0, kind
     for kind, ext in (("tower", "ext_tower.py"), ("sparse", "ext_sparse.py")):
         out = _run_checker(core.parent, "checker", paths[kind])
