@@ -3,7 +3,7 @@
 For each size, ``--count`` primes (the least prime above a random integer of that many
 digits, seeded by the size) are proved by ``prime_certificates.primality_proofs`` (the
 bounded p - 1 effort, then an elliptic curve when p - 1 resists) and the proofs re-checked by
-``checker_sparse.proved_primes``.  Prints per size how many were proved, in how many of
+``checker/ext_primes.proved_primes``.  Prints per size how many were proved, in how many of
 those an elliptic curve was used, and the median and largest CPU seconds per prime.  There
 is no float yardstick for primality; the target is that ``certify`` never refuses what
 ``check`` answered, within a bounded time.  Run: ``python bench/bench_primes.py [--digits 60 80 100] [--count 12]``.
@@ -18,7 +18,7 @@ import time
 
 from flint import fmpz
 
-from exactsym.checker.sparse import proved_primes
+from exactsym.checker.ext_primes import proved_primes
 from exactsym.certify.primes import PrimalityError, primality_proofs
 
 

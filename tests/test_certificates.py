@@ -23,6 +23,7 @@ import pytest
 from flint import fmpq, fmpz_poly, nmod_poly
 
 from exactsym import checker
+from exactsym.checker.ext_primitive import irreducible_mod
 from exactsym.certify.certificate import CertificateError, make_certificate
 from exactsym.cli.main import main as cli_main
 from exactsym.geometry.configuration import Configuration, load
@@ -218,11 +219,11 @@ def _dist2(p, q):
 
 
 def test_levels_by_balls_compare_only_overlapping_points_exactly():
-    """certificate._levels_by_balls: the levels of _sparsest (in the order of their first
+    """witness._levels_by_balls: the levels of _sparsest (in the order of their first
     point, the centre left out), with exact squared distances asked only for the points
     whose balls meet another's or hold 0."""
     from flint import arb
-    from exactsym.certify.certificate import _levels_by_balls
+    from exactsym.certify.witness import _levels_by_balls
     norms = [Fraction(2), Fraction(5), Fraction(2), Fraction(0), Fraction(7), Fraction(9, 2),
              Fraction(5), Fraction(1, 3)]
     asked = []
@@ -542,17 +543,19 @@ def test_interval_must_isolate_one_root():
 
 # ------------------------------------------------------------------ the checker's parts
 CHECKER = ROOT / "exactsym" / "checker"
-CHECKER_MODULES = ("__init__", "__main__", "arithmetic", "groups", "ordering", "refutations",
-                   "sparse", "tower", "tower_cyclotomic", "tower_sparse")
+CHECKER_CORE = ("__init__", "__main__", "numbers", "dispatch", "groups", "ordering", "refutations")
+CHECKER_MODULES = CHECKER_CORE + ("ext_boxes", "ext_polygons", "ext_primes", "ext_primitive",
+                                  "ext_sparse", "ext_sparse_tower", "ext_tower")
 
 
 def test_checker_imports_only_the_standard_library():
-    """Every checker module imports the standard library and, relatively (or as a sibling file
-    when run as a lone script), the other checker modules: nothing else of exactsym."""
+    """Every checker module imports the standard library and, relatively, the other checker
+    modules: nothing else of exactsym, and no fallback for running as loose files."""
     allowed = {"__future__", "fractions", "json", "math", "sys", "argparse", "dataclasses",
-               "typing", "itertools", "functools", "collections", "hashlib", "re", "gc"}
+               "typing", "itertools", "functools", "collections", "hashlib", "re", "gc",
+               "importlib"}
     assert sorted(p.stem for p in CHECKER.glob("*.py")) == sorted(CHECKER_MODULES)
-    siblings = set(CHECKER_MODULES) | {f"checker_{m}" for m in CHECKER_MODULES} | {"checker_numbers"}
+    siblings = set(CHECKER_MODULES)
     for module in CHECKER_MODULES:
         tree = ast.parse((CHECKER / f"{module}.py").read_text())
         imported = set()
@@ -563,15 +566,17 @@ def test_checker_imports_only_the_standard_library():
                 if node.level:
                     assert node.level == 1 and (node.module is None or node.module in siblings), \
                         (module, node.module)
-                elif node.module not in siblings:
+                else:
                     imported.add(node.module.split(".")[0])
+            elif isinstance(node, ast.ExceptHandler):       # no loose-file fallbacks
+                assert "ImportError" not in ast.dump(node.type or ast.Pass()), module
         assert imported <= allowed, (module, imported - allowed)
     code = ("import sys, exactsym.checker; print(sorted(m for m in sys.modules if "
             "m.split('.')[0] in ('exactsym', 'flint', 'sympy', 'networkx')))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert out.stdout.split() == [
-        "['exactsym',", "'exactsym.checker',", "'exactsym.checker.arithmetic',",
-        "'exactsym.checker.groups',", "'exactsym.checker.ordering',",
+        "['exactsym',", "'exactsym.checker',", "'exactsym.checker.dispatch',",
+        "'exactsym.checker.groups',", "'exactsym.checker.numbers',", "'exactsym.checker.ordering',",
         "'exactsym.checker.refutations',", "'exactsym.version']"], out
 
 
@@ -600,7 +605,7 @@ def test_irreducible_mod_agrees_with_flint():
         factors = nmod_poly([c % ell for c in primitive], ell).factor()[1]
         expected = primitive[-1] % ell != 0 and len(factors) == 1 and factors[0][1] == 1
         p = [Fraction(c, coeffs[-1]) for c in coeffs]
-        assert checker.irreducible_mod(p, ell) == expected, (coeffs, ell)
+        assert irreducible_mod(p, ell) == expected, (coeffs, ell)
 
 
 def test_one_root_agrees_with_sympy():

@@ -46,7 +46,7 @@ D1_POLAR = "".join(f"polar {r} {t}\n" for r, t in
 TWO_RAYS_POLAR = "polar 1 0\npolar 2 0\npolar 3 1/3\n"
 
 
-# a tower of nested radicals (checker_tower: angles compared from integer boxes, exactly on
+# a tower of nested radicals (checker/ext_tower: angles compared from integer boxes, exactly on
 # a tie), two points on one ray
 NESTED = "sqrt(2+sqrt(3)) 0\n0 sqrt(2+sqrt(3))\n-1 -1\n2 3\n2*sqrt(2+sqrt(3)) 0\n" \
     "-3 sqrt(5+sqrt(2))\n"

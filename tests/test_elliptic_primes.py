@@ -1,5 +1,5 @@
 """Elliptic-curve primality certificates (exactsym/certify/elliptic_primes.py) and their check
-(checker_sparse._elliptic): a turn 1/p with p a 100-digit prime whose p - 1 resists now
+(checker/ext_primes._elliptic): a turn 1/p with p a 100-digit prime whose p - 1 resists now
 certifies; every proof verifies; tampering is caught."""
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ import pytest
 from flint import fmpz
 
 from exactsym import checker
-from exactsym.checker.sparse import _elliptic, proved_primes
+from exactsym.checker.ext_primes import _elliptic, proved_primes
 from exactsym.cli.main import main
 from exactsym.certify.elliptic_primes import MR_LIMIT, elliptic_proofs
 

@@ -1,4 +1,4 @@
-"""Certificates of configurations in a sparse Q(zeta_N) (certificate.py, checker_sparse.py):
+"""Certificates of configurations in a sparse Q(zeta_N) (certify/encoder.py, checker/ext_sparse.py):
 they verify, tampering is caught, and the checker's own zero test and cosine enclosures agree
 with the solver's."""
 
@@ -14,7 +14,8 @@ from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
 from exactsym.certify.certificate import make_certificate
-from exactsym.checker.sparse import SparseField, _zero, is_prime
+from exactsym.checker.ext_primes import is_prime
+from exactsym.checker.ext_sparse import SparseField, _zero
 from exactsym.geometry.configuration import load
 from exactsym.exact import cyclotomic
 from exactsym.exact.sparse_cyclotomic import is_zero_sum, sparse_context
@@ -152,7 +153,7 @@ def test_miller_rabin():
 def test_checker_numbers_agree_with_the_solver(data, m):
     """The checker's cosine-form sums and products (its own code) against the solver's:
     equal numbers, equal residues (hash), the same sign."""
-    from exactsym.certify.certificate import Encoder
+    from exactsym.certify.encoder import Encoder
     from exactsym.exact.evaluate import SparseCyclotomicSystem
     system = SparseCyclotomicSystem(m)
     field = SparseField({"conductor": str(m),
@@ -245,7 +246,7 @@ def test_turns_of_large_prime_denominators_certify(tmp_path, p):
     """check answered and certify refused these (a prime factor of N above the checker's
     Miller-Rabin range); now the certificate carries primality proofs and verifies, via the
     command line too (exit 0)."""
-    from exactsym.checker.sparse import proved_primes
+    from exactsym.checker.ext_primes import proved_primes
     from exactsym.cli.main import main
     from flint import fmpz
     assert fmpz(p).is_prime() and p > 3317044064679887385961981
@@ -262,7 +263,7 @@ def test_turns_of_large_prime_denominators_certify(tmp_path, p):
 def test_a_conductor_with_two_large_primes():
     """N divisible by two primes above the bound (the full certify factors N many times, about
     10 s: here the field alone): both, and l, are proved, and the checker's field accepts it."""
-    from exactsym.checker.sparse import proved_primes
+    from exactsym.checker.ext_primes import proved_primes
     from exactsym.certify.primes import hashing_prime_factors, primality_proofs
     q25 = 7 * 10 ** 24 + 61
     n = 4 * 3 * 5 * 7 * P25 * q25
@@ -338,7 +339,7 @@ def _factorization(n):
 def test_composites_claimed_prime_are_rejected(n):
     """A Carmichael number (a^(n-1) = 1 for every a prime to it) or a product of two 20-digit
     primes, with the true factorisation of n - 1 and any witness: never proved."""
-    from exactsym.checker.sparse import proved_primes
+    from exactsym.checker.ext_primes import proved_primes
     from exactsym.certify.primes import primality_proofs
     factors = _full_factors(n - 1)
     helpers = primality_proofs([q for q, _ in factors])   # the big prime factors of n - 1
@@ -360,7 +361,7 @@ def test_composites_passing_pocklington_conditions_are_rejected(factors, f, a, r
     """Composites whose prime factors are all 1 mod F, with a witness meeting every condition
     on a: only the size of F (sqrt, cube root) and the BLS square test refuse them."""
     from math import gcd, prod
-    from exactsym.checker.sparse import _pocklington
+    from exactsym.checker.ext_primes import _pocklington
     n, big_f = prod(factors), prod(q ** e for q, e in f.items())
     assert (n - 1) % big_f == 0 and pow(a, n - 1, n) == 1
     assert all(gcd(pow(a, (n - 1) // q, n) - 1, n) == 1 for q in f)
@@ -369,7 +370,7 @@ def test_composites_passing_pocklington_conditions_are_rejected(factors, f, a, r
 
 
 def test_large_numbers_without_a_proof_are_refused():
-    from exactsym.checker.sparse import proved_primes
+    from exactsym.checker.ext_primes import proved_primes
     with pytest.raises(checker.Invalid, match="no primality proof"):
         is_prime(P25)
     for p in (1, 0, -7):
@@ -421,7 +422,7 @@ def checker_sparse_prime(n):
 
 
 def _checker_accepts(n: int, a: int, factors: list) -> bool:
-    from exactsym.checker.sparse import _pocklington
+    from exactsym.checker.ext_primes import _pocklington
     try:
         _pocklington(n, a, factors, set())
         return True
@@ -462,7 +463,7 @@ def test_medium_primes_and_composites_above_the_bound():
     composite is proved prime with the true factorisation of n - 1 and small witnesses."""
     import random
     from flint import fmpz
-    from exactsym.checker.sparse import proved_primes
+    from exactsym.checker.ext_primes import proved_primes
     from exactsym.certify.primes import primality_proofs
     rng = random.Random(9)
     for _ in range(12):

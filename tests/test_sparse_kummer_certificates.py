@@ -1,5 +1,5 @@
 """Certificates of square roots of rationals as tower levels over the sparse Q(zeta_N)
-(certificate.Encoder._sparse_tower, checker_tower_sparse.py): the case files certify and
+(certificate.Encoder._sparse_tower, checker/ext_sparse_tower.py): the case files certify and
 verify, the levels' proof (Legendre symbols at primes p = 1 mod N of full rank over F_2) and
 the numbers are re-checked, and tampering with either is caught.
 
@@ -17,8 +17,8 @@ from flint import fmpq
 
 from exactsym import checker
 from exactsym.certify.certificate import make_certificate
-from exactsym.checker.arithmetic import Invalid
-from exactsym.checker.tower_sparse import SparseKummerTower
+from exactsym.checker.numbers import Invalid
+from exactsym.checker.ext_sparse_tower import SparseKummerTower
 from exactsym.cli.main import main as cli_main
 from exactsym.geometry.configuration import load
 from exactsym.exact.cyclotomic_sqrt import split_primes
@@ -232,8 +232,8 @@ def test_the_checker_agrees_with_the_square_classes():
 
 
 def test_the_ordering_filter_agrees_with_exact_products():
-    """checker_ordering's angles in a boxed plane (a tower over the sparse Q(zeta_N)): the
-    signs of u . v and u x v and the order of two angles read from boxes are the exact
+    """The ordering's angles in a boxed plane (ext_boxes.BoxedAngle; a tower over the sparse
+    Q(zeta_N)): the signs of u . v and u x v and the order of two angles read from boxes are the exact
     ones (an unboxed plane of the same directions computes the products), and ties -- two
     points on one ray, equal angles -- fall back to the exact products."""
     from exactsym.checker.ordering import _Plane
@@ -244,7 +244,7 @@ def test_the_ordering_filter_agrees_with_exact_products():
                                    [2, "-2", {"999": "1"}])]
     dirs = [(a, b) for a in nums for b in nums if a is not b]
     dirs += [(x * 2, y * 2) for x, y in (dirs[1], dirs[7])]       # 20, 21: on the rays of 1, 7
-    boxed = _Plane(False, [0] * len(dirs), dirs, 1, boxed=True)
+    boxed = _Plane(False, [0] * len(dirs), dirs, 1, Angle=field.Angle)
     exact = _Plane(False, [0] * len(dirs), dirs, 1)
     pairs = [(0, j) for j in range(len(dirs))] + [(1, 20), (1, 7), (20, 21), (7, 5)]
     angles = [(boxed.angle(i, j), exact.angle(i, j)) for i, j in pairs]
@@ -268,7 +268,7 @@ def test_checker_tower_products_by_a_lower_level():
     """Tower.mul of a factor below the other's level multiplies the two halves (a + b y) c
     = a c + (b c) y, where the full formula walked the other factor twice per level: the
     same products as the full formula, on numbers spread over three levels."""
-    from exactsym.checker.tower import _add, _make, _split, _level
+    from exactsym.checker.ext_tower import _add, _make, _split, _level
     field = SparseKummerTower(_tower(3999932, [145, 374, 7], ["11999797", "35999389",
                                                              "71998777"]))
 

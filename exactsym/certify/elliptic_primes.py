@@ -4,7 +4,7 @@ Why: a turn 1/p with p a 100-digit prime puts p in the conductor N of the sparse
 and the certificate must prove p prime.  :mod:`.prime_certificates` proves it from a factored
 part of p - 1, which for p = 10^99 + 289 is 37 of 329 bits: certify refused what check
 answered.  Here p is proved by a curve E: y^2 = x^3 + a x + b and a point P of prime order
-q > (p^(1/4) + 1)^2 (the checker, ``checker_sparse._elliptic``, verifies (q - 1) P = -P), and
+q > (p^(1/4) + 1)^2 (the checker, ``ext_primes._elliptic``, verifies (q - 1) P = -P), and
 q in turn, down to the checker's deterministic Miller-Rabin range.
 
 Finding the curve (complex multiplication): for a discriminant D < 0 with 4 p = u^2 + |D| v^2
@@ -31,7 +31,7 @@ from flint import acb, arb, ctx, fmpz, fmpz_mod_poly_ctx
 
 from ..exact.tower_proof import sqrt_mod
 
-#: the checker decides primality below this by Miller-Rabin (checker_sparse._MR_LIMIT)
+#: the checker decides primality below this by Miller-Rabin (``ext_primes.MR_LIMIT``)
 MR_LIMIT = 3317044064679887385961981
 _DISCRIMINANT_LIMIT = 3000
 _CLASS_NUMBER_LIMIT = 16

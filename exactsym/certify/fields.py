@@ -1,6 +1,6 @@
 """Irreducibility proofs that ``certify`` writes for a field given by a primitive element.
 
-The checker's "square-roots" proof (``checker_numbers.Field.square_roots``,
+The checker's "square-roots" proof (``Field.square_roots`` of the checker's numbers,
 ``docs/certificates.md``) names, in Q(theta), a root h of Psi_M (so the real cyclotomic field
 K = Q(2cos(2pi/M)) of degree e lies in Q(theta)) and square roots g_i of k positive integers
 a_i, no non-empty subset product of which is a square in K (the checker tests this with the
@@ -21,7 +21,6 @@ import math
 
 from flint import arb, ctx, fmpq, fmpq_poly, fmpz, fmpz_mat, fmpz_poly, nmod_poly
 
-from .. import checker
 
 MAX_CONDUCTOR = 400          # 2cos(2pi/M) is looked for up to this conductor
 _PLACES = 48                 # degree-1 primes used as filters
@@ -78,7 +77,7 @@ def _atom_cyclotomic(field, atoms: dict) -> list:
             m = int(fmpq(key[1]).q)
             h = 2 * value.poly
             if _psi_value(m, h, field.minpoly) == 0:
-                found.append((m, len(checker.psi(m)) - 1, h))
+                found.append((m, _psi(m).degree(), h))
     found.sort(key=lambda x: (-x[1], x[0]))
     parts: list = []
     for m, e, h in found:
@@ -122,7 +121,13 @@ def _degree_one_primes(ints: list[int], disc: int) -> list[int]:
 
 
 def _is_prime(n: int) -> bool:
-    return n > 1 and all(n % q for q in range(2, math.isqrt(n) + 1))
+    return n > 1 and bool(fmpz(n).is_prime())
+
+
+def _psi(m: int) -> fmpz_poly:
+    """Psi_m, the minimal polynomial of 2cos(2pi/m) (flint's; the checker derives its own
+    from the cyclotomic polynomial and compares)."""
+    return fmpz_poly.cos_minpoly(m)
 
 
 def _conductors(d: int, primes: list[int], places: list[int]):
@@ -132,7 +137,7 @@ def _conductors(d: int, primes: list[int], places: list[int]):
     for m in range(3, MAX_CONDUCTOR + 1):
         if m % 4 == 2:
             continue                            # Q(zeta_2n) = Q(zeta_n) for odd n
-        psi = checker.psi(m)
+        psi = [int(c) for c in _psi(m).coeffs()]
         e = len(psi) - 1
         if e < 2 or d % e or (d // e) & (d // e - 1):
             continue
@@ -152,7 +157,7 @@ def _prime_factors(m: int) -> list[int]:
 
 def _psi_value(m: int, h: fmpq_poly, minpoly: fmpq_poly):
     value = fmpq_poly([0])
-    for c in reversed(checker.psi(m)):
+    for c in reversed(_psi(m).coeffs()):
         value = (value * h + c) % minpoly
     return value
 

@@ -1,7 +1,7 @@
 """Primality certificates of large primes for the sparse Q(zeta_N) certificate (issue: certify
 succeeds wherever check does).
 
-Why: the checker (checker_sparse.is_prime) proves primes by deterministic Miller-Rabin only
+Why: the checker (``ext_primes.is_prime``) proves primes by deterministic Miller-Rabin only
 below :data:`MR_LIMIT` (about 3.3 * 10^24); a turn 1/(10^25 + 13) makes N and the hashing
 prime l larger.  For each prime p at or above that bound this module writes
 ``{"prime": p, "witness": a, "factors": [[q, e], ...]}``: a factored part F = prod q^e of

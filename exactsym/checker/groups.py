@@ -1,7 +1,5 @@
-"""The checker of group certificates (standard library only; see exactsym.checker).
-
-What a valid certificate proves.  P is the embedded point set, G the group of the isometries g
-of the plane with g(P) = P; the "level" of a point is the set of points as far as it from c.
+"""The checker of group certificates.  What a valid certificate proves.  P is the embedded point
+set, G the group of isometries g with g(P) = P; the "level" of a point: the points as far from c.
  1. c is fixed by every g in G.  Cartesian: c is the centroid (g is affine and permutes P, so it
     fixes the mean of P).  Polar: c is the origin, checked to be the centre of the smallest
     enclosing circle of P, which is unique and so mapped onto itself by every g.
@@ -15,11 +13,7 @@ of the plane with g(P) = P; the "level" of a point is the set of points as far a
     a point w whose image under the candidate is not in P: then the candidate is not in G.
 So G = H: the checker names it, derives "orderable" (no element of G moves a point) and
 compares both with the claim.  The cost is O(n) per generator and, per candidate, O(1)
-(polar) or the number of points on the circle of w (Cartesian, see image_in in cartesian():
-one when the distances from c differ).
-
-Numbers are exact: rationals (ints after scaling by a common denominator, or Fractions), or
-elements of one real number field Q(theta) written as coefficient lists in theta.
+(polar) or the number of points on the circle of w (Cartesian: one when distances differ).
 """
 
 from __future__ import annotations
@@ -29,28 +23,21 @@ import hashlib
 import json
 from math import lcm
 
-try:
-    from .ordering import check as check_ordering
-    from .arithmetic import (Field, Invalid, frac, need, number_field, rat, rats,
-                                  scaled, sgn)
-except ImportError:     # run as a lone script (python exactsym/checker/__init__.py): a sibling file
-    from checker_ordering import check as check_ordering
-    from checker_numbers import (Field, Invalid, frac, need, number_field, rat, rats,
-                                 scaled, sgn)
-
+from .dispatch import number_field
+from .numbers import Field, Invalid, frac, is_int, need, rat, rats, scaled, sgn
+from .ordering import check as check_ordering
 
 def permutation(spec: dict, n: int, name: str) -> list:
     perm = spec["permutation"]
-    need(isinstance(perm, list) and len(perm) == n and all(
-        isinstance(j, int) and 0 <= j < n for j in perm), f"{name}: not a list of {n} indices")
+    need(isinstance(perm, list) and len(perm) == n and all(type(j) is int and 0 <= j < n
+                                                           for j in perm),   # not bool
+         f"{name}: not a list of {n} indices")
     return perm
-
 
 def reference(witness: dict, n: int) -> int:
     ref = witness["reference"]
-    need(isinstance(ref, int) and 0 <= ref < n, f"bad reference point {ref!r}")
+    need(is_int(ref) and 0 <= ref < n, f"bad reference point {ref!r}")
     return ref
-
 
 def group(n, ref, level, rot, mir, witness, image_in) -> tuple[str, bool, list | None]:
     """Order of rho and step 3, given the verified permutations; returns (name, orderable).
@@ -65,9 +52,9 @@ def group(n, ref, level, rot, mir, witness, image_in) -> tuple[str, bool, list |
     for kind in ("rotation", "reflection"):
         refuted = set()
         for b, w in refutations.get(kind, []):
-            need(b in on_level, f"{kind} refutation: point {b!r} is not on the level of the "
-                 f"reference point {ref}")
-            need(isinstance(w, int) and 0 <= w < n, f"{kind} refutation: bad point {w!r}")
+            need(is_int(b) and b in on_level, f"{kind} refutation: point {b!r} is not on the "
+                 f"level of the reference point {ref}")
+            need(is_int(w) and 0 <= w < n, f"{kind} refutation: bad point {w!r}")
             need(not image_in(kind, b, w), f"the {kind} taking point {ref} to point {b} maps "
                  f"point {w} onto a point of the configuration: it refutes nothing")
             refuted.add(b)
@@ -77,31 +64,26 @@ def group(n, ref, level, rot, mir, witness, image_in) -> tuple[str, bool, list |
     orderable = len(orbit) == 1 and (mir is None or all(mir[i] == i for i in range(n)))
     return f"{'D' if mir else 'C'}{len(orbit)}", orderable, mir
 
-
 def distinct(keys: list) -> dict:
     index: dict = {}
     for i, k in enumerate(keys):
         need(index.setdefault(k, i) == i, f"points {index[k]} and {i} coincide")
     return index
 
-
 def read_cartesian(points: list, field: Field | None) -> tuple[list, int, object]:
-    """(pts, scale, num): the points times scale > 0 (rationals: ints after scaling by a common
-    denominator, or Fractions; field elements: scale 1), and the reader of one number.  The
-    group and the ordering checks share them."""
+    """(pts, scale, num), shared with the ordering check: the points times scale > 0 (ints after
+    scaling by a common denominator, or Fractions, or field elements), the number reader."""
     if field is None:
         flat, scale = scaled(rats([v for p in points for v in p]))
         return list(zip(flat[0::2], flat[1::2])), scale, frac
     return [(field.num(x), field.num(y)) for x, y in points], 1, field.num
-
 
 def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
     pts, scale, num = read
     n = len(pts)
     sx, sy = sum(x for x, _ in pts), sum(y for _, y in pts)
     w = [(n * x - sx, n * y - sy) for x, y in pts]     # n * scale * (p - centroid): exact
-    points_w = set(w)
-    if len(points_w) < n:
+    if len(set(w)) < n:
         distinct(w)                             # names two points that coincide
     if n == 1:
         return "O2", True, None
@@ -114,8 +96,7 @@ def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, boo
         need(cx * (n * scale) == sx and cy * (n * scale) == sy,
              f"{name}: the centre is not the centroid of the points")
         (a, b), (c, d) = [[num(v) for v in row] for row in spec["matrix"]]
-        # "scale": k != 0 when the matrix is [[a, b], [c, d]] / k (a sparse cyclotomic field
-        # has no short quotients): every identity below is multiplied through by k or k^2
+        # "scale": the matrix is [[a, b], [c, d]] / k (a sparse field has no short quotients)
         k = num(spec["scale"]) if field and "scale" in spec else 1
         need(k != 0, f"{name}: the scale is zero")
         k2 = k * k
@@ -132,15 +113,10 @@ def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, boo
 
     rot, mir, ref = isometry("rotation", 1), isometry("mirror", -1), reference(witness, n)
     need(w[ref][0] != 0 or w[ref][1] != 0, "the reference point is the centre")
-    # Distances from c without the square of the sum S = (sx, sy) (in a sparse Q(zeta_N) a
-    # sum of hundreds of cosines on every level, whose square costs minutes): with
-    # w_i = n p_i - S, |w_i|^2 = n (n |p_i|^2 - 2 S.p_i) + |S|^2, so the points on one
-    # circle about c are those with one value of key_i = n |p_i|^2 - 2 S.p_i.  (Python
-    # numbers: |w_i|^2 itself, as cheap.)
-    if field is not None:
-        key = [n * (x * x + y * y) - 2 * (sx * x + sy * y) for x, y in pts]
-    else:
-        key = [x * x + y * y for x, y in w]
+    # |w_i|^2 = n (n |p_i|^2 - 2 S.p_i) + |S|^2, S = (sx, sy): one circle about c, one key_i =
+    # n |p_i|^2 - 2 S.p_i, with no square of S (in a sparse Q(zeta_N): minutes)
+    key = [n * (x * x + y * y) - 2 * (sx * x + sy * y) for x, y in pts] if field is not None \
+        else [x * x + y * y for x, y in w]
     level = [i for i, k in enumerate(key) if k == key[ref]]
     on_circle: dict = {}                        # key -> the points with it, when first asked
 
@@ -154,27 +130,19 @@ def cartesian(read: tuple, field: Field | None, witness: dict) -> tuple[str, boo
         (x, y), (u, v) = pts[i], pts[j]
         return (x - u) * (x - u) + (y - v) * (y - v)
 
-    def side(i, j):
-        # the sign of w_i x w_j = n (n p_i x p_j - (p_i - p_j) x S): which side of the line
-        # through c and p_i the point p_j lies on (0: on it), without S x S = 0
+    def side(i, j):                     # sign of w_i x w_j = n (n p_i x p_j - (p_i - p_j) x S)
         (x, y), (u, v) = pts[i], pts[j]
         return sgn(n * (x * v - y * u) - ((x - u) * sy - (y - v) * sx))
 
     def image_in(kind, b, i):
-        # The isometry g about c with g(p_ref) = p_b (a rotation, det 1, or a reflection,
-        # det -1) maps p_i to the point at distance |p_i - c| from c and |p_i - p_ref| from
-        # p_b, on the side of the line c p_b given by det(g) side(ref, i) (an isometry fixing
-        # c multiplies orientations about c by its determinant).  The two circles have the
-        # distinct centres c and p_b (p_b is on the level of p_ref, not c), so they meet in
-        # at most two points, mirror images in that line: a point p_j with key_j = key_i,
-        # |p_j - p_b| = |p_i - p_ref| and side(b, j) = det(g) side(ref, i) is g(p_i), and
-        # g(p_i) is such a point when it is in P.  Exact, with no product of S by S.
+        # g about c with g(p_ref) = p_b maps p_i to the point at distance |p_i - c| from c and
+        # |p_i - p_ref| from p_b on the side det(g) side(ref, i) of the line c p_b: the two
+        # circles (centres c != p_b) meet in at most two points, mirror images in that line
         d = distance2(i, ref)
         turn = side(ref, i) * (1 if kind == "rotation" else -1)
         return any(distance2(j, b) == d and side(b, j) == turn for j in circle(key[i]))
 
     return group(n, ref, level, rot, mir, witness, image_in)
-
 
 def polar(points: list, field: Field | None, witness: dict) -> tuple[str, bool, list | None]:
     n = len(points)
@@ -189,15 +157,15 @@ def polar(points: list, field: Field | None, witness: dict) -> tuple[str, bool, 
     values = set(r2)
     need(all(sgn(v) >= 0 for v in values), "a squared radius is negative")
 
-    def key(r, t):                              # the point (r2, turn), the turn taken mod 1
+    def key(r, t):                              # the point (r2, turn mod 1)
         return (r, 0) if r == 0 else (r, t % T)
 
     keys = [key(r, t) for r, t in zip(r2, turns)]
     index = distinct(keys)
     if n == 1:
         return "O2", True, None
-    # Step 1: the origin is the SEC centre iff no point is farther than R and the points at
-    # distance R leave no angular gap above half a turn (else a smaller circle holds them all).
+    # Step 1: the origin is the SEC centre iff the points at the largest distance R leave no
+    # angular gap above half a turn (else a smaller circle holds them all)
     big = next(iter(values))
     for v in values:
         big = v if sgn(v - big) > 0 else big
@@ -228,29 +196,20 @@ def polar(points: list, field: Field | None, witness: dict) -> tuple[str, bool, 
 
     return group(n, ref, level, rot, mir, witness, image_in)
 
-
 # ------------------------------------------------------------------ the certificate
 
 def digest(configuration) -> str:
     text = json.dumps(configuration, sort_keys=True, separators=(",", ":"))
     return hashlib.sha256(text.encode()).hexdigest()
 
-
 def verify_certificate(cert) -> tuple[bool, str]:
     """``(True, summary)`` when the certificate proves its claim, else ``(False, reason)``."""
     collecting = gc.isenabled()
     gc.disable()        # ~10^5 new tuples and lists, no cycles: the collector would only rescan
     try:
-        return _verify(cert)
-    finally:
-        if collecting:
-            gc.enable()
-
-
-def _verify(cert) -> tuple[bool, str]:
-    try:
         need(isinstance(cert, dict) and cert.get("format") == "exactsym-certificate"
-             and cert.get("version") == 1, "not an exactsym certificate of version 1")
+             and is_int(cert.get("version")) and cert["version"] == 1,
+             "not an exactsym certificate of version 1")
         config, claim, witness = cert["configuration"], cert["claim"], cert["witness"]
         # A fingerprint of the configuration: it catches edits; the proof does not rely on it.
         need(cert.get("configuration_sha256") == digest(config),
@@ -276,3 +235,6 @@ def _verify(cert) -> tuple[bool, str]:
         return False, str(err)
     except (KeyError, TypeError, ValueError, IndexError, AttributeError, ZeroDivisionError) as err:
         return False, f"malformed certificate ({type(err).__name__}: {err})"
+    finally:
+        if collecting:
+            gc.enable()

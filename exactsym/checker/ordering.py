@@ -1,192 +1,73 @@
-"""The checker of the canonical ordering and the leader (standard library only; see
-exactsym.checker).  The definition, in the checker's own terms (docs/certificates.md,
-"Ordering and leader"):
+"""The checker of the canonical ordering and the leader (docs/certificates.md, "Ordering and
+leader").  c is the centre of the smallest enclosing circle (SEC) of P; the points off c lie
+on rays about c.  A frame is the plane as given ("ccw") or mirrored ("cw": y -> -y).  In a
+frame, list the rays counter-clockwise R_0 .. R_(m-1); the symbol of R_j is (the squared
+distances to c of its points, increasing; the angle from R_j to R_(j+1), in [0, 2pi)),
+compared by the tuple (lexicographically, a proper prefix first), then by the angle.  The
+canonical reading is the least of the 2m cyclic strings of symbols (both frames, every first
+ray); the ordering lists the point at c (if any), then the rays of a least reading, each by
+increasing distance (two least readings differ by an isometry of P, which moves no point when
+P is orderable).  The leader: the first of the ordering when orderable; else the point at c;
+else, for D1, the nearest point on the mirror's fixed ray whose reading is least (two cannot
+read alike: the half-turn would be a symmetry); else none.
 
-c is the centre of the smallest enclosing circle (SEC) of P.  About c the points off c lie on
-rays; a frame is the plane as given ("ccw") or mirrored ("cw": y -> -y, a turn t -> -t).  In a
-frame, list the rays counter-clockwise R_0 .. R_(m-1); the symbol of R_j is (the tuple of the
-squared distances to c of its points, increasing; the angle from R_j to R_(j+1), in [0, 2pi)).
-Symbols compare by their tuple (lexicographically, a proper prefix first), then by the angle.
-The reading of a frame from a ray is its cyclic string of symbols from that ray.  The canonical
-reading is the lexicographically least of the 2m readings (both frames, every starting ray);
-the ordering lists the point at c first (if any), then the rays of a least reading, the points
-of a ray by increasing distance.  (Two least readings differ by an isometry of P; when P is
-orderable it moves no point, so every least reading gives the same ordering.)  The leader: the
-first of the ordering when orderable; else the point at c; else, for D1, the nearest point on
-the ray fixed by the mirror whose counter-clockwise reading is least (two fixed rays cannot read
-alike: the half-turn would be a symmetry); else none.
+The witness is the frame of a least reading (for D1 without an ordering, also the points in
+angular order).  The checker verifies the claimed order is angular in that frame (one
+comparison a point) and proves its reading X least by the Z-algorithm on X + sentinel + (the
+other string doubled): the common prefix with X of every other start in O(m) equalities, and
+one comparison where it ends.  Linear.
 
-The witness is only the frame of a least reading (and, for D1 without an ordering, the points
-sorted by angle then distance).  The checker verifies that the claimed order is sorted by angle
-in that frame (one comparison per point), builds both frames' strings, and proves the claimed
-reading X least with the Z-algorithm on X + sentinel + (other string doubled): it gives, for
-every other start, the length L of the common prefix with X using O(m) symbol equalities in all;
-one comparison at position L shows that start larger (or L = m: an equal reading).  Linear.
-
-Cartesian certificates in a number field: with c = (X, Y)/k (k = 1 without a scale), the
-points are compared by key_i = sign(k) (k |p_i|^2 - 2 X . p_i), and |k p_i - X|^2 =
-|k| key_i + |X|^2 is an increasing function of it, so every comparison of distances from c
-is one of keys (no square of X is made: in a sparse Q(zeta_N) a sum of hundreds of cosines
-on every level).  In the sparse Q(zeta_N) and the tower over it, angles are read from exact
-integer enclosures of the directions (:class:`_Angle`); their products are made only where
-the enclosures hold 0.
+In a number field, c = (X, Y)/k: distances compare by key_i = sign(k) (k |p_i|^2 - 2 X . p_i),
+as |k p_i - X|^2 = |k| key_i + |X|^2, with no square of X (in a sparse Q(zeta_N) a sum of
+hundreds of cosines).  A field whose numbers have integer enclosures brings its class of
+angles (``field.Angle``, ext_boxes), made exactly only where the enclosures hold 0.
 """
 
 from __future__ import annotations
 
-from fractions import Fraction
-from math import ceil, floor, gcd, lcm
+from math import gcd, lcm
 
-try:
-    from .arithmetic import need, rat, scaled, sgn
-except ImportError:     # run as a lone script (python exactsym/checker/__init__.py): a sibling file
-    from checker_numbers import need, rat, scaled, sgn
-
-
-def _cmp(a, b) -> int:
-    return sgn(a - b)
-
-
-def _native_sign(v) -> int:
-    return (v > 0) - (v < 0)
-
+from .numbers import is_int, need, rat, scaled, sgn
 
 class _Plane:
     """Points about c in one frame: a key of the distance from c and the direction of each
-    point off c.  ``native``: every number is an int or a Fraction (no number field), so
-    Python's own comparisons are exact and symbols get canonical forms (see _symbols); the
-    key is then the squared distance itself.  ``boxed``: the numbers have integer
-    enclosures (a sparse Q(zeta_N) or a tower over it), so angles are :class:`_Angle`s,
-    made exactly only when their enclosures cannot decide."""
+    point off c.  ``native``: ints and Fractions, whose own comparisons are exact (symbols get
+    canonical forms, _symbols).  ``Angle``: the field's angles from enclosures, or None."""
 
     def __init__(self, polar: bool, r2: list, dirs: list, turn: int, native: bool = False,
-                 boxed: bool = False):
+                 Angle=None):
         self.polar, self.r2, self.dirs, self.turn = polar, r2, dirs, turn
-        self.native, self.boxed = native, boxed
-        self.sign = _native_sign if native else sgn
-        self._boxes: dict = {}
+        self.native, self.Angle, self.boxes = native, Angle, {}
+        self.sign = (lambda v: (v > 0) - (v < 0)) if native else sgn
 
     def mirrored(self) -> "_Plane":
         if self.polar:
             return _Plane(True, self.r2, [None if d is None else -d % self.turn
                                           for d in self.dirs], self.turn, self.native)
         return _Plane(False, self.r2, [None if d is None else (d[0], -d[1])
-                                       for d in self.dirs], self.turn, self.native, self.boxed)
+                                       for d in self.dirs], self.turn, self.native, self.Angle)
 
     def angle(self, i: int, j: int):
-        """The angle from the direction of point i to that of point j, in [0, 2pi): a turn
-        (polar, in units of 1/turn) or the vector (u . v, u x v) (Cartesian; an
-        :class:`_Angle` when the plane is boxed)."""
+        """The angle from the direction of point i to that of j, in [0, 2pi): a turn (polar,
+        in units of 1/turn) or the vector (u . v, u x v), or the field's ``Angle``."""
         if self.polar:
             return (self.dirs[j] - self.dirs[i]) % self.turn
-        if self.boxed:
-            return _Angle(self, i, j)
+        if self.Angle:
+            return self.Angle(self, i, j)
         (ux, uy), (vx, vy) = self.dirs[i], self.dirs[j]
         return ux * vx + uy * vy, ux * vy - uy * vx
-
-    def box(self, i: int, bits: int):
-        """Enclosures of the direction of point i: two boxes (lo, hi, bits)."""
-        key = (i, bits)
-        if key not in self._boxes:
-            self._boxes[key] = tuple((*_bounds(v, bits), bits) for v in self.dirs[i])
-        return self._boxes[key]
 
     def cmp_angle(self, a, b) -> int:
         if self.polar:
             return (a > b) - (a < b)
-        if self.boxed:
-            return _Angle.cmp(a, b)
+        if self.Angle:
+            return a.cmp(b)
         # upper half [0, pi) before lower half [pi, 2pi); in one half, the cross product
         sign = self.sign
         half = [0 if sign(y) > 0 or (y == 0 and sign(x) > 0) else 1 for x, y in (a, b)]
         if half[0] != half[1]:
             return -1 if half[0] < half[1] else 1
         return -sign(a[0] * b[1] - a[1] * b[0])
-
-
-def _bounds(v, bits: int) -> tuple[int, int]:
-    """Integers lo <= v 2^bits <= hi: a rational exactly, a number of a field with
-    ``bounds`` (the sparse Q(zeta_N) and the tower over it) from its terms' enclosures."""
-    if isinstance(v, (int, Fraction)):
-        v = Fraction(v) * (1 << bits)
-        return floor(v), ceil(v)
-    return v.f.bounds(getattr(v, "v", v), bits)     # a tower's TNum: its raw value
-
-
-# Boxes (lo, hi, e): integers with lo <= x 2^e <= hi.  Products and sums are exact integer
-# operations on the ends (no rounding), so a box holds its number whenever its operands' do.
-
-def _box_mul(a, b):
-    ends = (a[0] * b[0], a[0] * b[1], a[1] * b[0], a[1] * b[1])
-    return min(ends), max(ends), a[2] + b[2]
-
-
-def _box_add(a, b):
-    if a[2] < b[2]:
-        a, b = b, a
-    shift = a[2] - b[2]
-    return a[0] + (b[0] << shift), a[1] + (b[1] << shift), a[2]
-
-
-def _box_neg(a):
-    return -a[1], -a[0], a[2]
-
-
-def _box_sign(a):
-    return 1 if a[0] > 0 else -1 if a[1] < 0 else None
-
-
-class _Angle:
-    """The angle from the direction u of point i to the direction v of point j, the vector
-    (u . v, u x v), in a boxed plane.  Its signs and its comparisons are read from boxes
-    of u and v at 64, then 192 bits; the exact vector (products of sums of hundreds of
-    cosines on every level: seconds each) is made only when both hold 0 (ties: two points
-    on one ray, equal gaps)."""
-    __slots__ = ("plane", "i", "j", "_exact")
-    BITS = (64, 192)
-
-    def __init__(self, plane: _Plane, i: int, j: int):
-        self.plane, self.i, self.j, self._exact = plane, i, j, None
-
-    def boxes(self, bits: int):
-        (ux, uy), (vx, vy) = self.plane.box(self.i, bits), self.plane.box(self.j, bits)
-        return (_box_add(_box_mul(ux, vx), _box_mul(uy, vy)),
-                _box_add(_box_mul(ux, vy), _box_mul(_box_neg(uy), vx)))
-
-    def exact(self):
-        if self._exact is None:
-            (ux, uy), (vx, vy) = self.plane.dirs[self.i], self.plane.dirs[self.j]
-            self._exact = (ux * vx + uy * vy, ux * vy - uy * vx)
-        return self._exact
-
-    def sign(self, k: int) -> int:
-        """The sign of u . v (k = 0) or u x v (k = 1)."""
-        if self.i == self.j:                # u . u > 0 (u != 0), u x u = 0
-            return 1 - k
-        for bits in self.BITS:
-            s = _box_sign(self.boxes(bits)[k])
-            if s is not None:
-                return s
-        return sgn(self.exact()[k])
-
-    def half(self) -> int:
-        """0 in the upper half [0, pi), 1 in the lower half [pi, 2pi)."""
-        y = self.sign(1)
-        return 0 if y > 0 or (y == 0 and self.sign(0) > 0) else 1
-
-    @staticmethod
-    def cmp(a: "_Angle", b: "_Angle") -> int:
-        ha, hb = a.half(), b.half()
-        if ha != hb:
-            return -1 if ha < hb else 1
-        for bits in _Angle.BITS:            # in one half, the sign of a x b
-            (ax, ay), (bx, by) = a.boxes(bits), b.boxes(bits)
-            s = _box_sign(_box_add(_box_mul(ax, by), _box_neg(_box_mul(ay, bx))))
-            if s is not None:
-                return -s
-        (ax, ay), (bx, by) = a.exact(), b.exact()
-        return -sgn(ax * by - ay * bx)
-
 
 def _rays(plane: _Plane, order: list) -> list:
     """The rays of ``order`` (points off c), checked to be sorted counter-clockwise from the
@@ -208,11 +89,9 @@ def _rays(plane: _Plane, order: list) -> list:
         last = a
     return rays
 
-
 def _rays_native(plane: _Plane, order: list) -> list:
-    """_rays with plane.angle and plane.cmp_angle written out for Python numbers: the
-    direction v is in the upper half (h = 0) of the first direction u when u x v > 0, or
-    u x v = 0 and u . v > 0; in one half (an arc shorter than pi) v is after the direction p
+    """_rays written out for Python numbers: v is in the upper half (h = 0) of the first
+    direction u when u x v > 0, or = 0 and u . v > 0; in one half v is after the direction p
     before it iff p x v > 0, and p x v = 0 iff v is p's direction."""
     dirs, r2 = plane.dirs, plane.r2
     ux, uy = px, py = dirs[order[0]]
@@ -232,7 +111,6 @@ def _rays_native(plane: _Plane, order: list) -> list:
         px, py, lh = vx, vy, h
     return rays
 
-
 def _symbols(plane: _Plane, rays: list) -> tuple[list, list]:
     """The readings from R_0: counter-clockwise, and clockwise (the string of the mirror image
     read from R_0: rays R_0, R_-1, ..., each with the angle from the ray before it)."""
@@ -244,14 +122,11 @@ def _symbols(plane: _Plane, rays: list) -> tuple[list, list]:
     return (list(zip(radii, gaps)),
             [(radii[-j % m], gaps[(-j - 1) % m]) for j in range(m)])
 
-
 def _primitive(x, y) -> tuple[int, int]:
     """The positive multiple of the vector (x, y) != 0 with coprime integer coordinates."""
     d = lcm(x.denominator, y.denominator)
-    x, y = int(x * d), int(y * d)
-    g = gcd(x, y)
-    return x // g, y // g
-
+    g = gcd(int(x * d), int(y * d))
+    return int(x * d) // g, int(y * d) // g
 
 def _cmp_symbol(plane: _Plane, s, t) -> int:
     if s is t:                                  # one symbol read twice (a reading against
@@ -261,18 +136,17 @@ def _cmp_symbol(plane: _Plane, s, t) -> int:
             return -1 if s[0] < t[0] else 1
         return 0 if s[1] == t[1] else plane.cmp_angle(s[1], t[1])
     for x, y in zip(s[0], t[0]):
-        c = _cmp(x, y)
+        c = sgn(x - y)
         if c:
             return c
     if len(s[0]) != len(t[0]):
         return -1 if len(s[0]) < len(t[0]) else 1
     return plane.cmp_angle(s[1], t[1])
 
-
-def _least(plane: _Plane, x: list, others: list) -> None:
-    """x is no greater than any rotation of any string in ``others`` (Z-algorithm)."""
+def _least(plane: _Plane, x: list, cw: list) -> None:
+    """The ccw reading x is no greater than any rotation of itself or of cw (Z-algorithm)."""
     m = len(x)
-    for other in others:
+    for other in (x, cw):
         s = x + [None] + other + other[:-1]
         z, left, right = [0] * len(s), 0, 0
         for i in range(1, 2 * m + 1):           # s[m + 1 + j:]: the rotation by j
@@ -288,19 +162,14 @@ def _least(plane: _Plane, x: list, others: list) -> None:
                      f"ray {i - m - 1} is less than the claimed one (they differ at symbol "
                      f"{zi}): the claimed order is not the canonical one")
 
-
 def _least_native(plane: _Plane, rays: list) -> None:
-    """_least for Python numbers, the symbols made only where needed.  Both frames' readings
-    have the same radii (ccw from R_0: R_0, R_1, ...; cw: R_0, R_-1, ...), so a start whose
-    first radii differ from X's is larger at symbol 0 when X's first radii are the least (one
-    min over the rays).  The Z-algorithm then visits only starts with X's first radii: at any
-    other position z = 0 (its symbol differs from X's first), which leaves the Z-box as it is.
-    A visited start whose first gap differs is shown larger by one angle comparison."""
+    """_least for Python numbers, symbols made only where needed.  Both frames' readings have
+    the same radii, so a start with other first radii is larger when X's are the least (one
+    min).  The Z-algorithm visits only starts with X's first radii (elsewhere z = 0, which
+    leaves the Z-box as it is); one whose first gap differs is larger by one comparison."""
     m, r2 = len(rays), plane.r2
-    if sum(map(len, rays)) == m:                # one point a ray: its radius for its tuple
-        radii = [r2[ray[0]] for ray in rays]
-    else:
-        radii = [tuple(map(r2.__getitem__, ray)) for ray in rays]
+    one = sum(map(len, rays)) == m              # one point a ray: its radius for its tuple
+    radii = [r2[ray[0]] if one else tuple(map(r2.__getitem__, ray)) for ray in rays]
     r0 = radii[0]
     need(min(radii) == r0, "ordering: a reading is less than the claimed one at symbol 0: "
          "the claimed order is not the canonical one")
@@ -316,13 +185,12 @@ def _least_native(plane: _Plane, rays: list) -> None:
 
     readings = ((lambda j: (radii[j % m], gap(j))), starts[1:]), \
         ((lambda j: (radii[-j % m], gap(-j - 1))), sorted(-j % m for j in starts))
-    x = readings[0][0]
-    x0 = x(0)
+    x0 = (x := readings[0][0])(0)
     for other, js in readings:                  # s = X + sentinel + other doubled
         def sym(i):
             return x(i) if i < m else None if i == m else other(i - m - 1)
         z, left, right = {}, 0, 0
-        for i in [i for i in starts[1:]] + [m + 1 + j for j in js]:
+        for i in starts[1:] + [m + 1 + j for j in js]:
             if sym(i) != x0:                    # same radii, another first gap
                 need(i < m or plane.cmp_angle(sym(i)[1], x0[1]) > 0, "ordering: the "
                      f"reading from ray {i - m - 1} is less than the claimed one at symbol 0:"
@@ -339,24 +207,15 @@ def _least_native(plane: _Plane, rays: list) -> None:
                      f"ray {i - m - 1} is less than the claimed one (they differ at symbol "
                      f"{zi}): the claimed order is not the canonical one")
 
-
-def _frame(spec: dict) -> bool:
-    need(isinstance(spec, dict) and spec.get("orientation") in ("ccw", "cw"),
-         "witness.canonical.orientation must be \"ccw\" or \"cw\"")
-    return spec["orientation"] == "cw"
-
-
 def _indices(order, n: int, what: str) -> list:
-    need(isinstance(order, list) and all(isinstance(i, int) and not isinstance(i, bool)
-                                         and 0 <= i < n for i in order)
+    need(isinstance(order, list) and all(is_int(i) and 0 <= i < n for i in order)
          and len(set(order)) == len(order), f"{what}: not a list of distinct point indices")
     return order
 
-
 def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
     """The points about the SEC centre c (polar: the origin, verified by the group check;
-    Cartesian: c from witness.sec, verified here; ``read``: the points as the group check read
-    them, (xy, scale, num): exact numbers times scale > 0, and the reader of one number)."""
+    Cartesian: witness.sec, verified here; ``read``: the group check's (points times
+    scale > 0, scale, reader of one number))."""
     if kind == "polar":
         turns, T = scaled([rat(t) for _, t in points])
         r2 = scaled([rat(r) for r, _ in points])[0] if field is None else [
@@ -370,18 +229,13 @@ def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
     need(1 <= len(support) <= 3, "witness.sec.support: one to three points")
     if field is None:                           # all times k: c has integer coordinates
         k = lcm(cx.denominator, cy.denominator)
-        if k > 1:
-            xy = [(k * x, k * y) for x, y in xy]
-        cx, cy = int(cx * k), int(cy * k)       # exact: k clears both denominators
+        xy = [(k * x, k * y) for x, y in xy] if k > 1 else xy
+        cx, cy = int(cx * k), int(cy * k)
         w = [(x - cx, y - cy) for x, y in xy]
         r2 = [x * x + y * y for x, y in w]
     else:
-        # c = (X, Y) / k (k = 1 without "scale"): the plane scaled by k != 0 (k < 0 adds a
-        # half turn: a rotation, so orders, orientations and distances agree), w = k p - c.
-        # The key of a distance: |k p - X|^2 = |k| key + |X|^2 with
-        # key = sign(k) (k |p|^2 - 2 X . p), an increasing function of the squared distance
-        # that needs no square of X (in a sparse Q(zeta_N) a sum of hundreds of cosines on
-        # every level, whose square costs seconds)
+        # c = (X, Y) / k: the plane scaled by k != 0 (k < 0 adds a half turn, a rotation),
+        # w = k p - c, distances by their keys (module docstring)
         k = num(sec["scale"]) if "scale" in sec else 1
         need(k != 0, "sec: the scale is zero")
         sk = sgn(k)
@@ -389,13 +243,12 @@ def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
         r2 = [sk * (k * (x * x + y * y) - 2 * (cx * x + cy * y)) for x, y in xy]
     at_c = [x == 0 and y == 0 for x, y in w]
     dirs = [None if z else d for z, d in zip(at_c, w)]
-    plane = _Plane(False, r2, dirs, 1, field is None, getattr(field, "bounds", None) is not None)
-    # c is the SEC centre: every point within R of c, and c in the convex hull of support
-    # points at distance R (a circle about c' != c misses one of them: the one s with
-    # (s - c) . (c' - c) <= 0 is farther than R from c').
+    plane = _Plane(False, r2, dirs, 1, field is None, getattr(field, "Angle", None))
+    # c is the SEC centre: no point beyond R, and c in the hull of support points at R (a
+    # circle about c' != c misses the one s with (s - c) . (c' - c) <= 0)
     big = r2[support[0]]
     need(all(r2[i] == big for i in support), "sec: the support points are not on one circle")
-    need(max(r2) <= big if field is None else all(_cmp(v, big) <= 0 for v in r2),
+    need(max(r2) <= big if field is None else all(sgn(v - big) <= 0 for v in r2),
          "sec: a point lies outside the circle")
     if len(support) == 2:
         (ax, ay), (bx, by) = (w[i] for i in support)
@@ -408,14 +261,12 @@ def _plane(kind: str, points: list, field, witness: dict, read) -> _Plane:
         need(at_c[support[0]], "sec: one support point must be the centre")
     return plane
 
-
 def _cross_sign(plane: _Plane, a: int, b: int) -> int:
     """The sign of w_a x w_b (the directions of points a and b, off c)."""
-    if plane.boxed:
-        return _Angle(plane, a, b).sign(1)
+    if plane.Angle:
+        return plane.Angle(plane, a, b).sign(1)
     (ax, ay), (bx, by) = plane.dirs[a], plane.dirs[b]
     return plane.sign(ax * by - ay * bx)
-
 
 def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
           orderable: bool, mirror: list | None, read=None) -> str:
@@ -423,8 +274,7 @@ def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
     returns a phrase for the summary."""
     n = len(points)
     ordering, leader = claim["ordering"], claim["leader"]
-    need(leader is None or isinstance(leader, int) and not isinstance(leader, bool),
-         "claim.leader must be a point index or null")
+    need(leader is None or is_int(leader), "claim.leader must be a point index or null")
     if n == 1:
         need(ordering == [0] and leader == 0, "one point: the ordering is [0], the leader 0")
         return "ordering and leader"
@@ -448,15 +298,15 @@ def check(kind: str, points: list, field, witness: dict, claim: dict, name: str,
         order = _indices(spec["order"], n, "witness.canonical.order")
         need(sorted(order + centre) == list(range(n)), "witness.canonical.order: not every "
              "point off the centre")
-    if _frame(spec):
-        plane = plane.mirrored()
+    need(isinstance(spec, dict) and spec.get("orientation") in ("ccw", "cw"),
+         "witness.canonical.orientation must be \"ccw\" or \"cw\"")
+    plane = plane.mirrored() if spec["orientation"] == "cw" else plane
     rays = _rays(plane, order)
-    if orderable and plane.native:
-        _least_native(plane, rays)
-    elif orderable:
-        ccw, cw = _symbols(plane, rays)
-        _least(plane, ccw, [ccw, cw])
     if orderable:
+        if plane.native:
+            _least_native(plane, rays)
+        else:
+            _least(plane, *_symbols(plane, rays))
         need(leader == ordering[0], "claim.leader is not the first of the ordering")
         return "ordering and leader"
     ccw = _symbols(plane, rays)[0]

@@ -2,6 +2,8 @@
 
 ``certify`` computes the symmetry group, writes its certificate and checks it with the
 independent checker before reporting success.  ``verify`` uses :mod:`exactsym.checker` only.
+These two commands (and the ledger's evidence check) are the only code of exactsym that runs
+the checker; none shares a function with it.
 Exit codes: 0 valid; 1 the certificate does not prove its claim (reason on stderr); 2 the
 input, the certificate file (unreadable or not JSON) or the command line is unusable.
 """
@@ -93,19 +95,21 @@ def run_verify(args) -> int:
     path = args.certificate
     try:
         if path == "-":
-            cert = json.load(sys.stdin)
+            text = sys.stdin.read()
         else:
             with open(path, encoding="utf-8") as fh:
-                cert = json.load(fh)
+                text = fh.read()
+        cert = checker.parse(text)          # strict: a key given twice is no certificate
     except OSError as err:
         raise InputError(f"{path}: cannot read the certificate: {err.strerror}") from None
     except json.JSONDecodeError as err:
         raise InputError(f"{path}:{err.lineno}:{err.colno}: not JSON: {err.msg}") from None
     except (ValueError, RecursionError) as err:
         raise InputError(f"{path}: not JSON: {err}") from None
-    verify = checker.verify_refutation if isinstance(cert, dict) and \
-        cert.get("format") == "exactsym-refutation" else checker.verify_certificate
-    ok, message = verify(cert)
+    except checker.Invalid as err:          # JSON, but a key given twice in one object
+        print(f"{path}: invalid certificate: {err}", file=sys.stderr)
+        return EXIT_FALSE
+    ok, message = checker.verify(cert)
     if ok:
         print(f"{path}: valid: {message}")
         return EXIT_OK

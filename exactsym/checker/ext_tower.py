@@ -1,8 +1,8 @@
-"""Nested radicals in the independent checker: a tower of quadratic extensions (standard
-library only; shares no code with the solver; see docs/certificates.md, "Towers").
+"""Checker extension: nested radicals, towers of quadratic extensions (standard library only;
+docs/certificates.md, "Towers" and "Towers over Q(zeta_M)").
 
 Field ``{"tower": {"radicands": [q_1, ...], "levels": [level_1, ...]}}``: K_0 = Q(sqrt q_1, ...)
-is the square-root field of :class:`checker_numbers.SquareRoots` (pairwise coprime integers
+is the square-root field of :class:`numbers.SquareRoots` (pairwise coprime integers
 > 1, none a square; the list may be empty: K_0 = Q), and K_i = K_(i-1)(y_i), y_i the positive
 square root of ``level_i["radicand"]`` = r_i, an element of K_(i-1) proved > 0 and NOT a square
 in K_(i-1) by ``level_i["prime"]`` p, ``"base"`` (a root of each q_j mod p) and ``"roots"``
@@ -14,6 +14,8 @@ instead say ``"kummer": true`` (radicands in K_0), proved new together by the sp
 Elements: a rational ``"p/q"``; ``{"P_S": c, ...}`` in K_0; ``[i, A, B]`` = A + B y_i with A, B
 elements of levels < i and B != 0.  Since each r_i is not a square, {1, y_i} is a basis of K_i
 over K_(i-1), so this form is unique: == and hash decide equality of real numbers.
+
+With ``"base": FIELD`` instead of radicands, K_0 is a Q(theta) (:class:`CyclotomicTower`).
 """
 
 from __future__ import annotations
@@ -21,13 +23,12 @@ from __future__ import annotations
 from fractions import Fraction
 from math import isqrt
 
-try:
-    from .arithmetic import Invalid, Root, SquareRoots, integer, need
-except ImportError:     # run as a lone script: a sibling file
-    from checker_numbers import Invalid, Root, SquareRoots, integer, need
+from .dispatch import dense_field
+from .ext_boxes import BoxedAngle
+from .numbers import Invalid, Root, SquareRoots, integer, need
 
 # A value is a base number (a Root of the square-root field, or an Alg of Q(theta) for a
-# tower over Q(zeta_M): checker_tower_cyclotomic.py) or a tuple (i, A, B) = A + B y_i.
+# tower over Q(zeta_M)) or a tuple (i, A, B) = A + B y_i.
 
 def _level(v) -> int:
     return v[0] if isinstance(v, tuple) else 0
@@ -83,6 +84,8 @@ def add_legendre_row(rows: dict, values: list, p: int) -> None:
 
 class Tower:
     """The field of a ``"tower"`` spec: checks every level, then makes elements."""
+
+    Angle = BoxedAngle          # the ordering reads angles from enclosures (bounds)
 
     def __init__(self, spec: dict):
         need(isinstance(spec, dict) and isinstance(spec.get("radicands"), list)
@@ -168,7 +171,7 @@ class Tower:
         return alo + (min(ends) >> bits), ahi - ((-max(ends)) >> bits)
 
     def bounds(self, x, bits: int):
-        """Integers lo <= x 2^bits <= hi (x a raw value): checker_ordering's filter, which
+        """Integers lo <= x 2^bits <= hi (x a raw value): the ordering's filter, which
         then compares angles from boxes and multiplies exactly only on a tie (the ordering
         of 100 points of a tower of nested radicals took 20 s of exact products)."""
         return self._interval(x, bits)
@@ -345,4 +348,184 @@ class TNum:
         return self.f._sign(self.v)
 
 
-__all__ = ["Tower", "TNum"]
+# ------------------------------------------------------------------ towers over Q(theta)
+# Field ``{"tower": {"base": FIELD, "levels": [level_1, ...]}}``: K_0 = Q(theta) is the field
+# of :class:`numbers.Field` (``FIELD`` = minimal polynomial, isolating interval and
+# irreducibility proof, e.g. the real-cyclotomic Psi_M of theta = 2cos(2pi/M)), whose minimal
+# polynomial f must be monic with integer coefficients; K_i = K_(i-1)(y_i), y_i the positive
+# square root of ``level_i["radicand"]`` = r_i, proved > 0 and NOT a square in K_(i-1) by
+# ``level_i["prime"]`` p, ``"theta"`` (the d = deg f roots of f modulo p, the map using the
+# first) and ``"roots"`` (a root of the image of each r_j, j < i): see
+# :meth:`CyclotomicTower._prove`.
+#
+# Elements: a rational ``"p/q"``; ``{"theta": [c_0, c_1, ...]}`` = sum c_k theta^k in K_0;
+# ``[i, A, B]`` = A + B y_i (B != 0).  The form is unique, as in towers over square roots.
+# Signs are exact: sign(A + B y) is sign(A) when A, B agree in sign, else
+# sign(A) * sign(A^2 - r B^2) (|A| > |B| y iff A^2 > r B^2), down to signs in Q(theta).
+
+class CyclotomicTower(Tower):
+    """The field of a ``"tower"`` spec with a ``"base"`` field: checks every level."""
+
+    #: no integer enclosures of a base number here (its signs come from Field's isolating
+    #: interval): the ordering compares angles exactly
+    Angle = bounds = None
+
+    def __init__(self, spec: dict):
+        need(isinstance(spec, dict) and isinstance(spec.get("base"), dict)
+             and isinstance(spec.get("levels"), list) and spec["levels"],
+             "tower: a base field and a non-empty list of levels")
+        self.base = dense_field(spec["base"])
+        need(all(c.denominator == 1 for c in self.base.p),
+             "tower base: the minimal polynomial of theta must have integer coefficients")
+        self.f = [int(c) for c in self.base.p]           # monic: checked by Field
+        self.r: list = []
+        rationals: list = []            # the radicands of the "kummer" levels
+        for i, lev in enumerate(spec["levels"], start=1):
+            need(isinstance(lev, dict), f"tower level {i}: not an object")
+            r = self._read(lev.get("radicand"), i - 1)
+            if lev.get("kummer") is True:
+                need(len(rationals) == i - 1, f"tower level {i}: a kummer level above "
+                     "a level that is not")
+                q = _theta_rational(r)
+                need(q is not None and q > 0, f"tower level {i}: a kummer radicand must be "
+                     "a positive rational")
+                rationals.append(q)
+            else:
+                self._prove(i, r, lev)
+            self.r.append(r)
+            need(self._sign(r) > 0, f"tower level {i}: the radicand is not positive")
+        if rationals:
+            self._prove_kummer(rationals, spec.get("kummer"))
+
+    def base_num(self, value):
+        if isinstance(value, dict):
+            need(set(value) == {"theta"} and isinstance(value["theta"], list),
+                 "a base number of the tower is a rational or {\"theta\": [c_0, ...]}")
+            return self.base.num(value["theta"])
+        need(isinstance(value, (str, int)) and not isinstance(value, bool),
+             f"tower element {value!r:.60}: not a number")
+        return self.base.num(value)
+
+    def base_of(self, o):
+        q = Fraction(o)
+        return self.base.make([q.numerator] if q else [], q.denominator)
+
+    def _sign(self, x) -> int:
+        if not isinstance(x, tuple):
+            return self.base.sign(x.c)                  # den > 0
+        lev, a, b = x
+        sa, sb = self._sign(a), self._sign(b)
+        if sa == 0 or sa == sb:
+            return sb if sa == 0 else sa
+        n = _add(self.mul(a, a), _neg(self.mul(self.r[lev - 1], self.mul(b, b))))
+        return sa * self._sign(n)
+
+    # -- the proof that r_i is not a square in K_(i-1) ---------------------------------
+    def _prove(self, i: int, r, lev: dict) -> None:
+        """f is monic integral with d distinct roots h_1..h_d modulo the odd prime p
+        (:meth:`_split_roots`): theta -> h_1 is a ring map R_0 -> F_p.  N_(K_0/Q)(n) =
+        Res(f, n) is, modulo p, prod n(h_k).  With every r_j (j < i) p-integral and N(r_j)
+        a p-unit (the norm taken down the tower, a^2 - r b^2 per level, then over K_0),
+        R = R_0[y_1..y_(i-1)] has a discriminant over Z_(p) that is a p-unit, so it is
+        integrally closed, and y_j -> roots_j (roots_j^2 = phi(r_j) mod p, checked)
+        extends the map to R.  If r_i = z^2 in K_(i-1) with r_i in R, z is integral over
+        R, so z is in R and phi(r_i) = phi(z)^2 would be a square mod p; it is checked to
+        be a non-residue."""
+        p, roots = lev.get("prime"), lev.get("roots")
+        thetas = self._split_roots(f"tower level {i}", p, lev.get("theta"))
+        need(isinstance(roots, list) and len(roots) == i - 1,
+             f"tower level {i}: one root per level below")
+        roots = [integer(t) if isinstance(t, str) else t for t in roots]
+        need(all(isinstance(v, int) and not isinstance(v, bool) and 0 <= v < p
+                 for v in roots), f"tower level {i}: roots must be integers in [0, p)")
+        h = thetas[0]
+        for j, rj in enumerate(self.r):
+            need(_theta_integral(rj, p),
+                 f"tower level {i}: p divides a denominator of radicand {j + 1}")
+            n = self._base_norm(rj)
+            norm = 1
+            for t in thetas:
+                norm = norm * _theta_image(n, p, t, []) % p
+            need(norm != 0, f"tower level {i}: p divides the norm of radicand {j + 1}")
+            need((roots[j] ** 2 - _theta_image(rj, p, h, roots)) % p == 0,
+                 f"tower level {i}: {roots[j]} is not a root of radicand {j + 1} modulo {p}")
+        need(_theta_integral(r, p), f"tower level {i}: p divides a denominator of the radicand")
+        value = _theta_image(r, p, h, roots)
+        need(pow(value, (p - 1) // 2, p) == p - 1,
+             f"tower level {i}: the radicand's image {value} is a square modulo {p}")
+
+    def _split_roots(self, where: str, p, thetas) -> list:
+        """The d = deg f distinct roots of f modulo the odd prime p (checked): then
+        f = prod (X - h_k) mod p, disc(f) is a p-unit, R_0 = Z_(p)[theta] is integrally
+        closed and theta -> h_1 is a ring map R_0 -> F_p."""
+        need(isinstance(p, int) and not isinstance(p, bool) and 2 < p < 1 << 40
+             and _is_prime(p), f"{where}: {p!r} is not an odd prime below 2^40")
+        d = self.base.d
+        need(isinstance(thetas, list) and len(thetas) == d,
+             f"{where}: {d} roots of the minimal polynomial modulo p")
+        thetas = [integer(h) if isinstance(h, str) else h for h in thetas]
+        need(all(isinstance(v, int) and not isinstance(v, bool) and 0 <= v < p
+                 for v in thetas), f"{where}: roots must be integers in [0, p)")
+        need(len(set(thetas)) == d, f"{where}: the roots modulo {p} are not distinct")
+        for h in thetas:
+            need(_eval_mod(self.f, h, p) == 0,
+                 f"{where}: {h} is not a root of the minimal polynomial modulo {p}")
+        return thetas
+
+    def _prove_kummer(self, rationals: list, primes) -> None:
+        """Levels 1..L are the square roots of positive rationals r_1..r_L.  By Kummer theory
+        (K_0 has characteristic 0 and holds -1), r_i is a square in
+        K_(i-1) = K_0(sqrt r_1, ..., sqrt r_(i-1)) iff r_i prod_(j<i) r_j^(e_j) = s^2 for
+        some s in K_0 and e_j in {0, 1}.  For each listed prime p (f splits into distinct
+        factors modulo p: see _split_roots), chi_p(x) = (phi(x) | p) is a character on the
+        elements of K_0 that are p-units, and on a rational p-unit it is the Legendre
+        symbol.  Such an s has s^2 a rational p-unit, so s is integral over Z_(p), hence in
+        R_0, with phi(s) != 0, and chi_p(r_i prod r_j^(e_j)) = 1 for every p.  The matrix
+        of the symbols (r_i | p) has rank L over F_2 (checked), so no non-trivial product
+        of the r_i has all symbols 1: no r_i is a square in K_(i-1)."""
+        need(isinstance(primes, list), "tower: kummer levels need a \"kummer\" list of primes")
+        values = [q.numerator * q.denominator for q in rationals]
+        rows: dict = {}
+        for k, entry in enumerate(primes):
+            need(isinstance(entry, dict), f"tower kummer prime {k + 1}: not an object")
+            p = entry.get("prime")
+            self._split_roots(f"tower kummer prime {k + 1}", p, entry.get("theta"))
+            need(all(v % p for v in values), f"tower kummer prime {p} divides a radicand")
+            add_legendre_row(rows, values, p)
+        need(len(rows) == len(values), f"tower: the Legendre symbols of the kummer levels "
+             f"have rank {len(rows)} over F_2, not {len(values)}")
+
+    def _base_norm(self, x):
+        """N_(K_L/K_0)(x): an element of Q(theta)."""
+        for lev in range(_level(x), 0, -1):
+            a, b = _split(x, lev)
+            x = _add(self.mul(a, a), _neg(self.mul(self.r[lev - 1], self.mul(b, b))))
+        return x
+
+
+def _theta_rational(x):
+    """The rational value of a base element of degree 0, else None."""
+    if isinstance(x, tuple) or any(x.c[1:]):
+        return None
+    return Fraction(x.c[0] if x.c else 0, x.den)
+
+
+def _eval_mod(c: list, h: int, p: int) -> int:
+    value = 0
+    for coeff in reversed(c):
+        value = (value * h + coeff) % p
+    return value
+
+
+def _theta_integral(x, p: int) -> bool:
+    if isinstance(x, tuple):
+        return _theta_integral(x[1], p) and _theta_integral(x[2], p)
+    return x.den % p != 0
+
+
+def _theta_image(x, p: int, h: int, roots: list) -> int:
+    """phi(x): theta -> h, y_j -> roots[j - 1] (x p-integral)."""
+    if isinstance(x, tuple):
+        lev, a, b = x
+        return (_theta_image(a, p, h, roots) + _theta_image(b, p, h, roots) * roots[lev - 1]) % p
+    return _eval_mod(list(x.c), h, p) * pow(x.den, -1, p) % p

@@ -1,11 +1,11 @@
-"""Square roots of rationals over the sparse Q(zeta_N) in the independent checker (standard
-library only; shares no code with the solver; docs/certificates.md, "Square roots of rationals
-over the sparse Q(zeta_N)").
+"""Checker extension: square roots of rationals, and nested radicals, over the sparse Q(zeta_N)
+(standard library only; docs/certificates.md, "Square roots of rationals over the sparse
+Q(zeta_N)").
 
 Field ``{"tower": {"base": {"sparse-cyclotomic": SPEC}, "levels": [{"radicand": r_i,
 "kummer": true}, ..., {"radicand": r_k, "prime": l, "zeta": w, "roots": [s_1, ...]}, ...],
 "kummer": [{"prime": p}, ...]}}``: K_0 is the real subfield F of Q(zeta_N), its numbers the
-sums of cosines of :class:`checker_sparse.SparseField` (``SPEC`` as there: the factors of N,
+sums of cosines of :class:`ext_sparse.SparseField` (``SPEC`` as there: the factors of N,
 the hashing prime l and its root of order N); K_i = K_(i-1)(y_i), y_i the positive square
 root of r_i > 0.  The first levels are kummer levels (r_i rational), proved together
 (:meth:`SparseKummerTower._prove_kummer`); each level above them (a nested radical) is
@@ -29,9 +29,9 @@ proved by a ring map onto F_l (:meth:`SparseKummerTower._prove_nested`).  The ku
 
 Elements: a rational or ``{"e": c, ...}`` (a number of the sparse base), or ``[i, A, B]`` =
 A + B y_i with A, B of levels below i and B != 0.  Equality is structural down to base
-numbers, which are compared by the exact zero test of :mod:`checker_sparse`; the hash is
+numbers, which are compared by the exact zero test of :mod:`ext_sparse`; the hash is
 the base numbers' residues modulo l (equal numbers, equal residues).  Signs: a base number's
-by :meth:`checker_sparse.SparseField.sign` (zero test, then enclosures); A + B y_i with
+by :meth:`ext_sparse.SparseField.sign` (zero test, then enclosures); A + B y_i with
 B != 0 is not 0 (y_i is not in K_(i-1)), so integer enclosures of it at doubling precision
 (each y_i enclosed from its radicand's) end with 0 excluded.
 """
@@ -40,19 +40,15 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-try:
-    from .arithmetic import integer, need
-    from .sparse import SNum, SparseField, is_prime
-    from .tower import Tower, add_legendre_row
-except ImportError:     # run as a lone script: sibling files
-    from checker_numbers import integer, need
-    from checker_sparse import SNum, SparseField, is_prime
-    from checker_tower import Tower, add_legendre_row
+from .ext_primes import is_prime
+from .ext_sparse import SNum, SparseField
+from .ext_tower import Tower, add_legendre_row
+from .numbers import integer, need
 
 
 class SparseKummerTower(Tower):
     """The field of a ``"tower"`` spec whose base is ``{"sparse-cyclotomic": ...}``: checks
-    the base and the proof of the levels, then makes elements (:class:`checker_tower.TNum`)."""
+    the base and the proof of the levels, then makes elements (:class:`ext_tower.TNum`)."""
 
     base_number = SNum          # a base number's sign: the sparse zero test, then balls
 
@@ -171,5 +167,3 @@ def _rational(x):
         return None
     return Fraction(x.t.get(0, 0), x.den)
 
-
-__all__ = ["SparseKummerTower"]
