@@ -25,9 +25,9 @@ from exactsym.gathering.joint_relations import (centroid_motion, circumcentre_mo
                                                 still, tie_about)
 from exactsym.gathering.joint_symmetry import image_polys
 from exactsym.gathering.pattern import recognise
-from exactsym.gathering.polyroots import peval
+from exactsym.exact.algebraic.polynomials import peval
 from exactsym.gathering.robot import Decision, Move, Readings
-from exactsym.gathering.tower_numbers import is_tower
+from exactsym.exact.algebraic.tower_numbers import is_tower
 from exactsym.gathering.world import IDENTITY, Frame, World
 
 P = g.point

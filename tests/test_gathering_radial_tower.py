@@ -12,11 +12,11 @@ from exactsym.exact.mq_closure import decided_sqrt
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
 from exactsym.gathering.invariants import Checker
-from exactsym.gathering.polyroots import roots_in_unit
+from exactsym.exact.algebraic.roots import roots_in_unit
 from exactsym.gathering.robot import Readings, decide, radial_point
-from exactsym.gathering.run_tower import (RunHome, RunTower, common_tower, home,
-                                          home_point, sqrt_exact, towers_of)
-from exactsym.gathering.tower_numbers import is_tower
+from exactsym.exact.algebraic.run_tower import RunTower, home, sqrt_exact
+from exactsym.gathering.run_home import RunHome, common_tower, home_point, towers_of
+from exactsym.exact.algebraic.tower_numbers import is_tower
 from exactsym.gathering.world import IDENTITY, World
 
 Q = MQ.rational

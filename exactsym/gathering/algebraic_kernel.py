@@ -4,13 +4,13 @@ The paper layer (:mod:`.paper_bridge`) reads a snapshot through the kernel
 (:mod:`exactsym.exact`): rationals, multiquadratic numbers, towers, and general number
 fields ``Q(gamma)`` (:class:`~exactsym.exact.field.NumberField`, exact arithmetic modulo
 gamma's minimal polynomial over Q, signs by Arb).  A snapshot taken at a root ``alpha``
-of a cubic or quartic factor (:mod:`.algebraic_instants`) holds numbers of ``L =
+of a cubic or quartic factor (:mod:`~exactsym.exact.algebraic.algebraic_numbers`) holds numbers of ``L =
 K(alpha)``, ``K = Q(sqrt b_1, ..., sqrt b_m)`` the multiquadratic field of every square
 root in the snapshot and in alpha's polynomial ``f``.  :func:`kernel_configuration`
 writes it in one kernel field:
 
 * ``[L:Q] = d 2^m`` (``d = deg f``; ``f`` stays irreducible over every multiquadratic
-  field, :mod:`.algebraic_instants`), with the basis ``alpha^i sqrt(s)``, ``s`` running
+  field, :mod:`~exactsym.exact.algebraic.algebraic_numbers`), with the basis ``alpha^i sqrt(s)``, ``s`` running
   over the ``2^m`` square-free products of the ``b_j``;
 * ``gamma = alpha + c theta`` (``theta = sum sqrt b_j``, ``c = 0, 1, 2, ...``) is a
   primitive element as soon as its powers ``1, ..., gamma^(D-1)`` are linearly
@@ -29,7 +29,8 @@ from flint import fmpq, fmpq_mat, fmpq_poly
 from ..exact.evaluate import FieldSystem
 from ..exact.field import NumberField
 from ..exact.multiquadratic import MQ
-from .algebraic_instants import AlgebraicNumber, _group_basis, is_algebraic
+from ..exact.algebraic.algebraic_numbers import AlgebraicNumber, is_algebraic
+from ..exact.algebraic.factor import group_basis
 
 __all__ = ["kernel_field", "kernel_configuration"]
 
@@ -62,7 +63,7 @@ def kernel_field(root, numbers):
     :class:`AlgebraicNumber` of ``root``): the kernel field ``Q(gamma) = L`` and the map
     from them to its elements (exact).  The same root and square roots give the same
     field object (a Look's checks meet one instant several times)."""
-    basis, _ = _group_basis(list(root.f) + [c for x in numbers
+    basis, _ = group_basis(list(root.f) + [c for x in numbers
                                       for c in (x.c if is_algebraic(x) else (x,))])
     cache = root.__dict__.setdefault("_kernel_fields", {})
     if basis not in cache:

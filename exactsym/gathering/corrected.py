@@ -70,7 +70,8 @@ from ..exact.multiquadratic import MQ, sqrt_rational
 from . import geometry as g
 from .pattern import Pattern, capacity, recognise, slot
 from .robot import Decision, Move, Readings, radial_point
-from .run_tower import snapshot_key, sqrt_exact
+from ..exact.algebraic.run_tower import sqrt_exact
+from .run_home import snapshot_key
 
 ALGORITHMS = ("paper", "corrected")
 
@@ -300,7 +301,7 @@ def _to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None):
       radially in (every point of the arc has the mover's radius, and the radial part
       is on the target's ray); the radius is a nested radical when ``|p - C|^2`` is a
       square in no multiquadratic field (a number of ``tower``, the snapshot's, or of a
-      new run tower: :func:`.run_tower.sqrt_exact`); the path is left out only when
+      new run tower: :func:`~exactsym.exact.algebraic.run_tower.sqrt_exact`); the path is left out only when
       that root cannot be built (the kernel's limits);
     * for h = 2l + 2, 2l + 4, 2l + 6 with h^2 < ``limit2`` (the squared distance of R's
       next robot to C: the mover stays the nearest; the condition does not change on the
@@ -415,7 +416,7 @@ def _profile_less(a, b) -> int:
 def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> Decision:
     """The corrected algorithm's decision on one snapshot (see the module docstring).  As
     :func:`.robot.decide`: a snapshot whose coordinates come from several towers of
-    nested radicals is first re-homed into one (:func:`.run_tower.common_tower`), a
+    nested radicals is first re-homed into one (:func:`.run_home.common_tower`), a
     radial target whose distance is a nested radical is built in that tower
     (:func:`.robot.radial_point`), and decisions are cached per snapshot and per tower
     (numbers of two towers are never compared, not even as cache keys)."""
@@ -424,7 +425,7 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
 
 @lru_cache(maxsize=4096)
 def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
-    # key: run_tower.snapshot_key (towers and epochs first)
+    # key: run_home.snapshot_key (towers and epochs first)
     towers, _epochs, snapshot = key
     tower = towers[0] if towers else None
     pts = list(snapshot)

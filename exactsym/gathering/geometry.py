@@ -24,7 +24,7 @@ from functools import cached_property
 
 from ..exact.multiquadratic import MQ, mq, sqrt_rational, sum_of_products
 from ..exact.tower import neg as tuple_neg
-from .polyroots import padd, peval, pmul, pscale, trim
+from ..exact.algebraic.polynomials import padd, peval, pmul, pscale, trim
 
 Point = tuple  # (MQ, MQ)
 
@@ -337,7 +337,7 @@ def smallest_enclosing_circle(points) -> tuple:
 # (X(tau), Y(tau)) / W(tau) with multiquadratic coefficients: a segment linearly
 # (W = 1); an arc by the rational rotation of half-angle tangent k*tau, k the tangent of
 # the whole arc's half angle (what ``Arc.at`` does), W = 1 + k^2 tau^2.  Polynomials are
-# coefficient lists, lowest degree first (:mod:`.polyroots`' arithmetic).
+# coefficient lists, lowest degree first (:mod:`~exactsym.exact.algebraic.polynomials`).
 
 
 def piece_motion(piece):
@@ -371,7 +371,7 @@ def joint_gap_polynomial(piece1, piece2, d2=4):
 
 def _tower_norm(f):
     """For coefficients in a tower of nested radicals (a run's positions after a
-    nested-radical radial move, :mod:`.run_tower`): the product of ``f``'s conjugates
+    nested-radical radial move, :mod:`.run_home`): the product of ``f``'s conjugates
     over the tower's levels, top level first (``y_L -> -y_L`` is an automorphism of K_L
     over K_(L-1), and the product ``f * conj(f)`` has its coefficients in K_(L-1)): MQ
     coefficients, every real root of ``f`` among its roots.  ``f`` unchanged when its
@@ -502,7 +502,7 @@ def joint_motion_overlap(piece1, piece2, d2=4):
 def _approx(x):
     terms = getattr(x, "terms", None)
     if terms is None:
-        # a tower number (nested radical, gathering.tower_numbers): its Arb ball's centre,
+        # a tower number (nested radical, exact.algebraic.tower_numbers): its Arb ball's centre,
         # within the ball's radius plus the centre's rounding to a double
         ball = x.enclosure(64)
         mid = float(ball.mid())

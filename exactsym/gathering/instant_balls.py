@@ -8,9 +8,9 @@ coefficient, from the balls of the motion and of the points, costs a few Arb ope
 
 Soundness: every kernel number's ``enclosure`` is a rigorous ball, and interval
 arithmetic keeps the exact value inside every ball it computes.  So when
-:func:`~.polyroots.balls_clear_unit` proves that no polynomial with coefficients in the
+:func:`~exactsym.exact.algebraic.sturm.balls_clear_unit` proves that no polynomial with coefficients in the
 balls has a root in [0, 1], the exact relation has none in (0, 1), and leaving it out
-changes nothing (:func:`~.polyroots.roots_of` reads only roots); likewise a robot proved
+changes nothing (:func:`~exactsym.exact.algebraic.roots.roots_of` reads only roots); likewise a robot proved
 strictly outside a circle (a ball of ``|c - p|^2 - r^2`` above 0) is what the exact test
 ``encloses`` would find.  A ball that cannot decide sends the case to the exact code,
 unchanged.
@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from flint import arb, ctx
 
-from .polyroots import balls_clear_unit
+from ..exact.algebraic.sturm import balls_clear_unit
 
 PREC = 128
 

@@ -4,7 +4,7 @@ A robot moves along one piece (segment or arc) while the others stand still.  Wh
 fresh Look sees changes only where some relation between the mover and the others
 changes; each such relation is a polynomial in the piece's parameter ``f`` (``f`` as in
 ``piece.at(f)``; on an arc the rational rotation's parameter, so a point at a rational
-``f`` stays in the field), and the instants are its roots (:mod:`.polyroots`).
+``f`` stays in the field), and the instants are its roots (:mod:`~exactsym.exact.algebraic.roots`).
 
 Families (each root carries a tag naming the family and the robots):
 
@@ -43,14 +43,14 @@ kernel holds it, and one rational point in each open stretch between consecutive
 (before the first, after the last; half way when there is none), strictly inside the
 piece: in a stretch no relation above changes sign, so its Look stands for the whole
 stretch with respect to them.  A root that needs a nested radical is exact too: a number
-of a tower of quadratic extensions (:func:`.polyroots.exact_root_hook`,
-:mod:`.tower_numbers`), and the mover's point there has tower coordinates, on which the
+of a tower of quadratic extensions (:func:`~exactsym.exact.algebraic.roots.exact_root_hook`,
+:mod:`~exactsym.exact.algebraic.tower_numbers`), and the mover's point there has tower coordinates, on which the
 fresh Look (geometry, pattern, the paper layer) runs unchanged.  A root of an
 irreducible factor of degree 3 or more is exact too, a number of ``K(alpha)``
-(:mod:`.algebraic_instants`: the polynomial factored over its coefficients' field K,
+(:mod:`~exactsym.exact.algebraic.algebraic_numbers`: the polynomial factored over its coefficients' field K,
 alpha's factor of odd degree or a quartic of group S4 or A4); a root of a quartic
 factor of group D4, C4 or V4 is a nested radical, a tower number again
-(:mod:`.quartic_instants`, Ferrari over K).  Only the other roots (other even degrees,
+(:mod:`~exactsym.exact.algebraic.quartic`, Ferrari over K).  Only the other roots (other even degrees,
 a norm or gcd too large, a radicand whose root needs an integer of more than 160 bits
 that the bounded split of :mod:`~exactsym.exact.mq_closure` cannot tell) are seen on
 both sides only (``sided``).  Not enumerated: relations that involve neither C, nor an SEC (R's SEC
@@ -67,10 +67,12 @@ from flint import ctx, fmpq
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from . import instant_balls as B
-from .algebraic_instants import is_algebraic, mixes
+from ..exact.algebraic.algebraic_numbers import is_algebraic
+from ..exact.algebraic.polynomials import padd, pgcd, pmul, pscale, psub, trim
+from ..exact.algebraic.roots import Root, bracket, roots_in_unit, roots_of
+from ..exact.algebraic.sturm import surely_no_root_in_unit
 from .instant_balls import MotionBall
-from .polyroots import (Root, padd, pgcd, pmul, pscale, psub, roots_in_unit,
-                        roots_of, surely_no_root_in_unit, trim)
+from .run_home import instant_in, mixes
 
 ONE = MQ.rational(1)
 
@@ -556,9 +558,8 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
         for u in mirror_lines(list(sub_r.values()), centre):
             polys.append((cross_poly(m, centre, u), ("symmetry", "a mirror line of the rest "
                                                      "of R through C")))
-    from .polyroots import _bracket
-    roots = roots_of(polys, [_bracket((), f, ("symmetry", what)) for f, what in sym_params]
-                     + [_bracket((), f, tag) for f, tag in about_params] + extra)
+    roots = roots_of(polys, [bracket((), f, ("symmetry", what)) for f, what in sym_params]
+                     + [bracket((), f, tag) for f, tag in about_params] + extra)
     for r in roots:
         # a rotation or a reflection about that centre can swap the mover with a robot as
         # far from it: the ties are symmetry candidates too (as for a joint step)
@@ -567,11 +568,10 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
 
 
 def _homed(f, pieces):
-    """An exact instant in the pieces' run tower (:func:`.run_tower.instant_in`); None
+    """An exact instant in the pieces' run tower (:func:`.run_home.instant_in`); None
     (seen on both sides only) when there is none or re-homing it cannot be decided."""
     if f is None:
         return None
-    from .run_tower import instant_in
     try:
         return instant_in(f, pieces)
     except ValueError:
@@ -593,8 +593,8 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
     before the first instant, the last after the last) and each instant itself when the
     kernel holds it (a nested radical: a point with tower coordinates; a root of a cubic
     or quartic factor: a point of ``K(alpha)``; a nested root re-homed into the piece's
-    run tower first, :func:`.run_tower.instant_in`) -- and the number of instants
-    checked only on both sides (the roots :mod:`.algebraic_instants` leaves without a
+    run tower first, :func:`.run_home.instant_in`) -- and the number of instants
+    checked only on both sides (the roots :mod:`~exactsym.exact.algebraic.algebraic_numbers` leaves without a
     value, or that the piece's tower cannot re-home)."""
     roots = critical_roots(piece, world, mover, centre, sec_r)
     if not roots:             # one stretch: the whole open piece
@@ -602,7 +602,7 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
         return [LookPoint(half, piece.at(half), "half way, no critical instant",
                           frozenset(), False)], 0
     out, sided = [], 0
-    # K(alpha)'s numbers do not mix with a run's tower numbers (algebraic_instants.mixes)
+    # K(alpha)'s numbers do not mix with a run's tower numbers (run_home.mixes)
     apart = mixes(world, [piece])
     for k, r in enumerate(roots):
         fams = frozenset(t[0] for t in r.tags)

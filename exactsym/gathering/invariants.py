@@ -18,10 +18,10 @@ Exactness of the "at any instant" checks:
   plans) also at the critical instants inside each piece (:mod:`.instants`): where the
   mover crosses the line through C and another robot, where two distances to C become
   equal, where the SEC's support changes, where a symmetry can appear -- roots of
-  polynomials in the path parameter, isolated exactly (:mod:`.polyroots`).  A Look at
+  polynomials in the path parameter, isolated exactly (:mod:`~exactsym.exact.algebraic.roots`).  A Look at
   each instant the kernel holds, and one in each stretch between consecutive instants;
   an instant that needs a nested radical is checked at the instant too, its point in a
-  tower of quadratic extensions (:mod:`.tower_numbers`, counted as ``nested``); only a
+  tower of quadratic extensions (:mod:`~exactsym.exact.algebraic.tower_numbers`, counted as ``nested``); only a
   root of a cubic or quartic factor that square roots do not express is seen on both
   sides only (``sided``);
 * over a step of several robots moving at once (:meth:`Checker.after_step`): I1 by the
@@ -40,8 +40,8 @@ from . import geometry as g
 from .instants import critical_roots, look_points
 from .joint_instants import joint_look_points
 from .pattern import definition_defects, recognise
-from .algebraic_instants import is_algebraic
-from .tower_numbers import is_tower
+from ..exact.algebraic.algebraic_numbers import is_algebraic
+from ..exact.algebraic.tower_numbers import is_tower
 
 #: How a violation names the statement it contradicts: the paper's ``\\label`` where
 #: the statement has one (``/paper/README.md``), otherwise the algorithm (or the model
@@ -446,7 +446,7 @@ def _same_plan(a: dict, b: dict, home) -> bool | None:
     """Same movers, and the same final target for each, except where either plan starts
     with an epsilon move (MakeAsym, Make_SymToAsym): its sense is the mover's own choice
     (reading A8) and a fresh Look during it asks for a further epsilon.  Targets of two
-    towers are compared in the run's (``home``: the world's :class:`.run_tower.RunHome`);
+    towers are compared in the run's (``home``: the world's :class:`.run_home.RunHome`);
     None when that cannot be decided (the Look counts as undecided)."""
     if set(a) != set(b):
         return False

@@ -7,7 +7,7 @@ time ``tau`` in [0, 1]: affine in ``tau`` on a segment, rational in it on an arc
 still is a constant motion.  Each relation between robots below is, denominators
 cleared (positive factors: no sign changes), a polynomial in ``tau``
 (:mod:`.joint_relations`); its roots in
-(0, 1) are isolated exactly (:mod:`.polyroots`).  Families, each over the relations that
+(0, 1) are isolated exactly (:mod:`~exactsym.exact.algebraic.roots`).  Families, each over the relations that
 involve at least one mover (the others do not change during the step):
 
 * ``distance`` -- two robots as far from C (mover-mover, mover-still);
@@ -45,8 +45,8 @@ A superset of the events above: a candidate where nothing happens costs a Look.
 :func:`joint_look_points` gives, as :func:`.instants.look_points` does, each instant
 whose value the kernel holds and one rational instant in each open stretch between
 consecutive instants (strictly inside (0, 1)); an instant that needs a nested radical
-is a point in a tower of quadratic extensions (:mod:`.tower_numbers`), one at a root of a
-cubic or quartic factor a point of ``K(alpha)`` (:mod:`.algebraic_instants`); only the
+is a point in a tower of quadratic extensions (:mod:`~exactsym.exact.algebraic.tower_numbers`), one at a root of a
+cubic or quartic factor a point of ``K(alpha)`` (:mod:`~exactsym.exact.algebraic.algebraic_numbers`); only the
 roots that module leaves without a value are seen on both sides only (``sided``).  ``invariants.Checker`` checks I3, I4 and I6 at
 every Look, I9 at those of the ``sec`` and ``symmetry`` instants and beside them.
 """
@@ -60,13 +60,15 @@ from flint import fmpq
 
 from ..exact.multiquadratic import MQ
 from . import geometry as g
-from .algebraic_instants import is_algebraic, mixes
+from ..exact.algebraic.algebraic_numbers import is_algebraic
 from .instants import _homed, _reach, hull_indices, may_leave, motion_of
 from .joint_relations import (const, contact_poly, incircle_poly, ray_poly, rel, right_poly,
                               sq, still, tie_poly)
 from .joint_symmetry import symmetry_polys
 from .moving_centre import about_moving_sec, pairs_about
-from .polyroots import pmul, pscale, psub, roots_of
+from ..exact.algebraic.polynomials import pmul, pscale, psub
+from ..exact.algebraic.roots import roots_of
+from .run_home import mixes
 
 
 # -- the families --------------------------------------------------------------------------
@@ -91,7 +93,7 @@ def _sec(motions: dict, movers, tag: str) -> list:
 
 def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
     """Every critical instant strictly inside the step's interval, as separated
-    :class:`.polyroots.Root`\\ s (``pieces``: mover -> the piece it moves along)."""
+    :class:`~exactsym.exact.algebraic.roots.Root`\\ s (``pieces``: mover -> the piece it moves along)."""
     movers = set(pieces)
     motions = {k: motion_of(pieces[k]) if k in movers else still(r.pos)
                for k, r in enumerate(world.robots)}

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from ..exact.multiquadratic import MQ
 from .instants import Motion
-from .polyroots import padd, pmul, pscale, psub
+from ..exact.algebraic.polynomials import padd, pmul, pscale, psub
 
 ONE = MQ.rational(1)
 

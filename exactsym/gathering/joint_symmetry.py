@@ -58,7 +58,7 @@ from .instants import (Motion, _centroid, dist2_poly, may_leave, mirror_lines,
                        smallest_distance_group)
 from .joint_relations import (centroid_motion, collinear_poly, const, crossv, diff, dotv,
                               pair_tie, rel, tie_about, tie_poly)
-from .polyroots import padd, pgcd, pmul, pscale, psub
+from ..exact.algebraic.polynomials import padd, pgcd, pmul, pscale, psub
 
 
 def mirror_pair_poly(a: Motion, b: Motion, z, u) -> tuple:

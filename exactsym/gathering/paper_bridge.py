@@ -11,7 +11,7 @@ the paper layer's rotation parameters: the same rational rotation about the SEC 
 When the kernel cannot hold the snapshot's numbers (a field over the size limit), the
 decision is ``complete=False``: the simulator then stops as undecided rather than guess.
 A snapshot at a root of a cubic or quartic factor (numbers of K(alpha),
-:mod:`.algebraic_instants`) is written in one kernel field Q(gamma)
+:mod:`~exactsym.exact.algebraic.algebraic_numbers`) is written in one kernel field Q(gamma)
 (:func:`.algebraic_kernel.kernel_configuration`); a square root the paper layer then
 asks for outside that field makes the decision incomplete in the same way.
 """
@@ -24,6 +24,7 @@ from fractions import Fraction
 from ..geometry.configuration import Configuration
 from ..errors import InputError
 from ..exact import evaluate, fmpq, number_system
+from ..exact.algebraic.algebraic_numbers import is_algebraic
 from ..io.expr import parse_expression
 from ..geometry.levels import levels_of as compute_rings
 from ..paper.family import (concentric_polygons, elect_leader, is_symmetric_family,
@@ -58,7 +59,6 @@ class PaperDecision:
 
 
 def _algebraic(points) -> bool:
-    from .algebraic_instants import is_algebraic
     return any(is_algebraic(c) for p in points for c in p)
 
 

@@ -3,7 +3,7 @@
 Model (spec section 1; ``docs/gathering.md``): robots are unit discs whose centres are
 exact multiquadratic points, or -- after a radial move whose length is a nested radical
 -- points of the run's one tower of quadratic extensions (``World.home``,
-:mod:`.run_tower`).  A robot is idle, or holds a pending path computed at its
+:mod:`.run_home`).  A robot is idle, or holds a pending path computed at its
 last Look (ASYNC: the path may be stale when it moves).  The adversary's actions are
 plain data (Pactole's demon):
 
@@ -42,7 +42,7 @@ from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .corrected import decide_for
 from .robot import Decision, Readings
-from .run_tower import RunHome
+from .run_home import RunHome
 
 
 @dataclass(frozen=True)

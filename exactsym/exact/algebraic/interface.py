@@ -1,0 +1,71 @@
+"""The declared interface of the numbers the motion needs, and the questions about their kind.
+
+Every number the gathering simulator computes with is one of: a multiquadratic
+:class:`~exactsym.exact.multiquadratic.MQ`; a :class:`~.tower_numbers.TowerNumber` (a
+nested radical: a critical instant's one-level tower, or a run's
+:class:`~.run_tower.RunTower`); an :class:`~.algebraic_numbers.AlgebraicNumber` (a number
+of ``K(alpha)``, alpha a root of a factor that square roots do not express); or an
+:class:`~.algebraic_tower.AlgebraicTowerNumber` (a quadratic level over ``K(alpha)``).
+Each meets :class:`ExactNumber`: field arithmetic, ``sign`` (exact), ``enclosure`` (a
+rigorous Arb ball: filters and drawing only), ``is_zero``, ``is_rational``,
+``to_fmpq``, ``text``.  Code above ``exact/`` calls those and the functions below; it
+asks no ``isinstance`` of a concrete class (sympy's ``Domain``, CGAL's kernel concept).
+"""
+
+from __future__ import annotations
+
+from typing import Protocol, runtime_checkable
+
+from ..multiquadratic import MQ
+from ..tower import TowerElement
+from .algebraic_tower import AlgebraicTower
+from .run_tower import RunTower
+
+__all__ = ["ExactNumber", "compare", "is_multiquadratic", "nested_tower", "is_run_tower"]
+
+
+@runtime_checkable
+class ExactNumber(Protocol):
+    """What every exact number of the motion offers (besides ``+ - * /`` and ``==``)."""
+
+    def sign(self) -> int:
+        """-1, 0 or 1, exactly."""
+
+    def is_zero(self) -> bool:
+        ...
+
+    def is_rational(self) -> bool:
+        ...
+
+    def to_fmpq(self):
+        """The rational value (ValueError when the number is not rational)."""
+
+    def enclosure(self, prec: int = 53):
+        """An Arb ball holding the value (a filter: it never decides alone)."""
+
+    def text(self) -> str:
+        """An expression of the value in the configuration syntax."""
+
+
+def compare(x, y) -> int:
+    """-1, 0 or 1 as ``x < y``, ``x == y``, ``x > y``: the exact sign of the difference."""
+    return (x - y).sign()
+
+
+def is_multiquadratic(x) -> bool:
+    """Is ``x`` a multiquadratic number (no tower, no ``K(alpha)``)?"""
+    return isinstance(x, MQ)
+
+
+def nested_tower(x):
+    """The tower of nested radicals ``x`` lives in (a critical instant's own tower or a
+    run's), or None: an MQ, or a number over ``K(alpha)`` (those come only from fresh
+    Looks at an instant, are compared there and never moved along: not re-homed)."""
+    if isinstance(x, TowerElement) and not isinstance(x.tower, AlgebraicTower):
+        return x.tower
+    return None
+
+
+def is_run_tower(tower) -> bool:
+    """Is ``tower`` a run's :class:`~.run_tower.RunTower` (not an instant's own tower)?"""
+    return isinstance(tower, RunTower)
