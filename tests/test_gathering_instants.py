@@ -10,8 +10,9 @@ from hypothesis import given, settings, strategies as st
 
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
-from exactsym.gathering.instants import (critical_roots, look_points, mirror_lines,
-                                         motion_of, point_param)
+from exactsym.gathering.instants import critical_roots, look_points
+from exactsym.gathering.motion import motion_of, point_param
+from exactsym.gathering.point_sets import mirror_lines
 from exactsym.gathering.invariants import Checker
 from exactsym.exact.algebraic.polynomials import peval, pmul
 from exactsym.exact.algebraic.roots import mq_sqrt, roots_in_unit, separate

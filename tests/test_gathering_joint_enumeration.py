@@ -17,7 +17,7 @@ from hypothesis import given, settings, strategies as st
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
 from exactsym.gathering import joint_instants, joint_symmetry
-from exactsym.gathering.instants import motion_of
+from exactsym.gathering.motion import motion_of
 from exactsym.gathering.invariants import Checker, Violation
 from exactsym.gathering.joint_instants import joint_critical_roots
 from exactsym.gathering.joint_relations import (centroid_motion, circumcentre_motion,
@@ -164,7 +164,7 @@ def _mirror_diagonal(pts):
 
 def _swap_instant():
     """The arc parameter of (0, 20) on robot 4's arc (the rational rotation's)."""
-    from exactsym.gathering.instants import point_param
+    from exactsym.gathering.motion import point_param
     return point_param(SWAP_PIECES[4], P(0, 20))
 
 

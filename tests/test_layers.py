@@ -18,11 +18,9 @@ PACKAGE = ROOT / "exactsym"
 NOT_YET = {
     ("circle", "checker"),
     ("circle", "exact"),
-    ("circle", "gathering"),
     ("circle", "report"),
     ("private", "checker"),
     ("private", "exact"),
-    ("private", "gathering"),
     ("private", "geometry"),
     ("private", "paper"),
     ("length", "certify"),

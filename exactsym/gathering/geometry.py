@@ -23,8 +23,8 @@ from dataclasses import dataclass
 from functools import cached_property
 
 from ..exact.multiquadratic import MQ, mq, sqrt_rational, sum_of_products
-from ..exact.tower import neg as tuple_neg
-from ..exact.algebraic.polynomials import padd, peval, pmul, pscale, trim
+from ..exact.algebraic.norms import negative_instant
+from ..exact.algebraic.polynomials import padd, pmul, pscale, trim
 
 Point = tuple  # (MQ, MQ)
 
@@ -367,99 +367,6 @@ def joint_gap_polynomial(piece1, piece2, d2=4):
     dy = padd(pmul(y1, w2), pscale(pmul(y2, w1), -ONE))
     ww = pmul(w1, w2)
     return trim(padd(padd(pmul(dx, dx), pmul(dy, dy)), pscale(pmul(ww, ww), -mq(d2))))
-
-
-def _tower_norm(f):
-    """For coefficients in a tower of nested radicals (a run's positions after a
-    nested-radical radial move, :mod:`.run_home`): the product of ``f``'s conjugates
-    over the tower's levels, top level first (``y_L -> -y_L`` is an automorphism of K_L
-    over K_(L-1), and the product ``f * conj(f)`` has its coefficients in K_(L-1)): MQ
-    coefficients, every real root of ``f`` among its roots.  ``f`` unchanged when its
-    coefficients are MQ."""
-    towers = {id(a.tower): a.tower for a in f if hasattr(a, "tower")}
-    if not towers:
-        return f
-    if len(towers) > 1:
-        raise ValueError("a polynomial over two towers of nested radicals")
-    (tower,) = towers.values()
-    for lev in range(tower.levels, 0, -1):
-        f = trim(pmul(f, [_conjugate_level(a, lev) for a in f]))
-    return f
-
-
-def _conjugate_level(a, lev: int):
-    """``a`` (of level <= ``lev``) with the generator of level ``lev`` negated."""
-    v = getattr(a, "v", None)
-    if type(v) is not tuple or v[0] != lev:
-        return a
-    return a._new((lev, v[1], tuple_neg(v[2])))
-
-
-def _rational_norm(f):
-    """The product of the Galois conjugates of ``f``: rational coefficients, and every
-    real root of ``f`` is one of its roots (over a tower: :func:`_tower_norm` first)."""
-    from ..exact.multiquadratic import _coprime_base
-    f = _tower_norm(f)
-    rads = sorted({m for a in f for m in a.radicands()})
-    for b in _coprime_base(rads):
-        f = trim(pmul(f, [a.conjugate(b) for a in f]))
-    return [a.to_fmpq() for a in f]
-
-
-def _dyadic(x):
-    from flint import fmpq
-    man, exp = x.man_exp()
-    return fmpq(man) * fmpq(2) ** int(exp) if exp >= 0 else fmpq(man, 2 ** int(-exp))
-
-
-def _simplest_between(lo, hi):
-    """The rational with the smallest denominator strictly between ``lo < hi``
-    (continued fractions): short witnesses."""
-    from fractions import Fraction
-    from flint import fmpq
-
-    def inner(a, b):
-        fl = a.numerator // a.denominator
-        if fl + 1 < b:
-            return Fraction(fl + 1)
-        if a == fl:
-            return fl + Fraction(1, int(1 / (b - fl)) + 1)
-        return fl + 1 / inner(1 / (b - fl), 1 / (a - fl))
-    x = inner(Fraction(int(lo.p), int(lo.q)), Fraction(int(hi.p), int(hi.q)))
-    return fmpq(x.numerator, x.denominator)
-
-
-def negative_instant(f):
-    """A rational ``tau`` in [0, 1] (a ``Fraction``, the earliest sample) with
-    ``f(tau) < 0``, or None when ``f >= 0`` on
-    all of [0, 1].  Exact: the real roots of ``f`` lie among those of its rational norm,
-    isolated by certified balls (python-flint's ``complex_roots``: real roots come with
-    an exactly zero imaginary part); between two consecutive roots ``f`` keeps its sign,
-    so one rational sample per gap, evaluated exactly, decides."""
-    from flint import fmpq, fmpq_poly
-    f = trim(f)
-    if not f:
-        return None                                   # f = 0: touching all along
-    samples = [fmpq(0), fmpq(1)]
-    if len(f) > 1:
-        norm = fmpq_poly(_rational_norm(f))
-        bounds = [(fmpq(0), fmpq(0))]
-        for root, _mult in norm.numer().complex_roots():
-            if not (root.imag.is_exact() and root.imag == 0):
-                continue
-            lo, hi = _dyadic(root.real.lower()), _dyadic(root.real.upper())
-            if hi > 0 and lo < 1:
-                bounds.append((lo, hi))
-        bounds.append((fmpq(1), fmpq(1)))
-        bounds.sort()
-        for (_, left), (right, _) in zip(bounds, bounds[1:]):
-            if left < right:
-                samples.append(_simplest_between(left, right))
-    for t in sorted(samples):
-        if 0 <= t <= 1 and peval(f, MQ.rational(t)).sign() < 0:
-            from fractions import Fraction
-            return Fraction(int(t.p), int(t.q))
-    return None
 
 
 def _piece_disc(piece):

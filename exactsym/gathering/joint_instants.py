@@ -3,7 +3,7 @@
 :mod:`.instants` lists the instants of one robot's motion while the others stand still.
 In a step (``World.advance_together``) every mover is at ``piece.at(tau)`` at the common
 time ``tau`` in [0, 1]: affine in ``tau`` on a segment, rational in it on an arc
-(:func:`.instants.motion_of`, denominator ``1 + T^2 tau^2 > 0``), and a robot standing
+(:func:`.motion.motion_of`, denominator ``1 + T^2 tau^2 > 0``), and a robot standing
 still is a constant motion.  Each relation between robots below is, denominators
 cleared (positive factors: no sign changes), a polynomial in ``tau``
 (:mod:`.joint_relations`); its roots in
@@ -58,17 +58,18 @@ from itertools import combinations
 
 from flint import fmpq
 
+from ..exact.algebraic.algebraic_numbers import is_algebraic
+from ..exact.algebraic.polynomials import pmul, pscale, psub
+from ..exact.algebraic.roots import roots_of
 from ..exact.multiquadratic import MQ
 from . import geometry as g
-from ..exact.algebraic.algebraic_numbers import is_algebraic
-from .instants import _homed, _reach, hull_indices, may_leave, motion_of
+from .motion import may_leave, motion_of, reach
+from .point_sets import hull_indices
 from .joint_relations import (const, contact_poly, incircle_poly, ray_poly, rel, right_poly,
                               sq, still, tie_poly)
 from .joint_symmetry import symmetry_polys
 from .moving_centre import about_moving_sec, pairs_about
-from ..exact.algebraic.polynomials import pmul, pscale, psub
-from ..exact.algebraic.roots import roots_of
-from .run_home import mixes
+from .run_home import instant_or_none, mixes
 
 
 # -- the families --------------------------------------------------------------------------
@@ -104,7 +105,7 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
     for c in sorted(centres, key=lambda p: (str(p[0]), str(p[1]))):
         polys += pairs_about(motions, movers, c, "C")
         for i in movers:
-            lo, hi = _reach(pieces[i], c)
+            lo, hi = reach(pieces[i], c)
             for L in range(1, top + 1):
                 if lo <= 2 * L <= hi:
                     u, v = rel(motions[i], c)
@@ -176,7 +177,7 @@ def joint_look_points(pieces: dict, world, sec_r: bool = False) -> tuple:
         what = "; ".join(sorted({t[1] for t in r.tags}))
         if k == 0:
             out.append(JointPoint(MQ.rational(r.lo), f"just before: {what}", fams, False))
-        tau = _homed(r.exact, pieces.values()) if not (apart and is_algebraic(r.exact)) \
+        tau = instant_or_none(r.exact, pieces.values()) if not (apart and is_algebraic(r.exact)) \
             else None
         if tau is not None:
             out.append(JointPoint(tau, what, fams, True))

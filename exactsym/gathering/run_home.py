@@ -29,7 +29,7 @@ from ..exact.algebraic.tower_numbers import is_tower
 from . import geometry as g
 
 __all__ = ["RunHome", "common_tower", "home_point", "home_piece", "towers_of",
-           "snapshot_key", "instant_in", "mixes"]
+           "snapshot_key", "instant_in", "instant_or_none", "mixes"]
 
 
 def _coordinates(obj):
@@ -177,3 +177,14 @@ def mixes(world, pieces=()) -> bool:
         if r.target is not None:
             pts.append(r.target)
     return any(not is_multiquadratic(c) for p in pts for c in p)
+
+
+def instant_or_none(f, pieces):
+    """An exact instant in the pieces' run tower (:func:`instant_in`); None (seen on both
+    sides only) when there is none or re-homing it cannot be decided."""
+    if f is None:
+        return None
+    try:
+        return instant_in(f, pieces)
+    except ValueError:
+        return None
