@@ -279,7 +279,7 @@ def test_relations_about_moving_points_have_the_signs_of_their_definitions(p1, p
     pa, pb, pq = p1.at(t), p2.at(t), P(qx, qy)
     if g.cross(g.sub(pb, pa), g.sub(pq, pa)).is_zero():
         return
-    cc, _ = g._circle3(pa, pb, pq)
+    cc, _ = g.circumcircle(pa, pb, pq)
     circ = circumcentre_motion(a, b, q)
     assert (peval(circ.nx, t) / peval(circ.d, t), peval(circ.ny, t) / peval(circ.d, t)) == cc
     mid = midpoint_motion(a, b)

@@ -22,7 +22,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import cached_property
 
+from ..exact.algebraic.interface import motion_number
 from ..exact.multiquadratic import MQ, mq, sqrt_rational, sum_of_products
+from ..geometry import sec
+from ..geometry.predicates import circumcentre
 from ..exact.algebraic.norms import negative_instant
 from ..exact.algebraic.polynomials import padd, pmul, pscale, trim
 
@@ -283,53 +286,21 @@ def fmt_point(p) -> str:
     return f"({p[0].text()}, {p[1].text()})"
 
 
-# -- the smallest enclosing circle over multiquadratic points -------------------------
-def _circle2(a, b):
-    c = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
-    return c, dist2(c, a)
-
-
-def _circle3(a, b, c):
-    ab, ac = sub(b, a), sub(c, a)
-    d = cross(ab, ac) * 2
-    if d.is_zero():          # collinear: the circle on the farthest pair
-        pairs = [(a, b), (a, c), (b, c)]
-        far = pairs[0]
-        for p in pairs[1:]:
-            if dist2(*p) > dist2(*far):
-                far = p
-        return _circle2(*far)
-    b2, c2 = dot(ab, ab), dot(ac, ac)
-    ux = (b2 * ac[1] - c2 * ab[1]) / d
-    uy = (c2 * ab[0] - b2 * ac[0]) / d
-    centre = (a[0] + ux, a[1] + uy)
+# -- the smallest enclosing circle: the one of exactsym.geometry.sec ------------------
+def circumcircle(a, b, c):
+    """``(centre, radius^2)`` of the circle through three points that are not collinear."""
+    centre = circumcentre(a, b, c)
     return centre, dist2(centre, a)
 
 
 def smallest_enclosing_circle(points) -> tuple:
-    """``(centre, radius^2)`` of the SEC of MQ points (Welzl, iterative move-to-front, in a
-    fixed pseudo-random order; the SEC is unique so the order does not matter)."""
-    import random
-    order = list(range(len(points)))
-    random.Random(len(points)).shuffle(order)
-    pts = [points[i] for i in order]
-
-    def inside(circ, p):
-        return (dist2(circ[0], p) - circ[1]).sign() <= 0
-
-    circ = (pts[0], ZERO)
-    for i in range(1, len(pts)):
-        if inside(circ, pts[i]):
-            continue
-        circ = (pts[i], ZERO)
-        for j in range(i):
-            if inside(circ, pts[j]):
-                continue
-            circ = _circle2(pts[i], pts[j])
-            for k in range(j):
-                if not inside(circ, pts[k]):
-                    circ = _circle3(pts[i], pts[j], pts[k])
-    return circ
+    """``(centre, radius^2)`` of the SEC of the points (distinct; MQ, tower or K(alpha)
+    coordinates): :func:`exactsym.geometry.sec.smallest_enclosing_circle`, the checker's
+    own, so that the simulator and the paper layer it calls agree on one implementation;
+    a rational centre or radius comes back as an MQ."""
+    circle = sec.smallest_enclosing_circle(list(points))
+    x, y = circle.centre
+    return (motion_number(x), motion_number(y)), motion_number(circle.radius_squared)
 
 
 # -- two discs moving at once (simultaneous motion, I1 in continuous time) -------------

@@ -156,7 +156,7 @@ def _sec_family(m: Motion, static: dict, tag: str, sec=None) -> list:
                 a, b, c = H[x][1], H[y][1], H[z][1]
                 if g.cross(g.sub(b, a), g.sub(c, a)).is_zero():
                     continue
-                cc, r2 = g._circle3(a, b, c)
+                cc, r2 = g.circumcircle(a, b, c)
                 if encloses(cc, r2) and not rootless("dist2", cc, r2):
                     out.append((dist2_poly(m, cc, r2), f"{tag}: the mover on the circle "
                                 f"through robots {H[x][0]}, {H[y][0]}, {H[z][0]}"))

@@ -16,12 +16,15 @@ from __future__ import annotations
 
 from typing import Protocol, runtime_checkable
 
+from flint import fmpq
+
 from ..multiquadratic import MQ
 from ..tower import TowerElement
 from .algebraic_tower import AlgebraicTower
 from .run_tower import RunTower
 
-__all__ = ["ExactNumber", "compare", "is_multiquadratic", "nested_tower", "is_run_tower"]
+__all__ = ["ExactNumber", "compare", "is_multiquadratic", "motion_number", "nested_tower",
+           "is_run_tower"]
 
 
 @runtime_checkable
@@ -55,6 +58,12 @@ def compare(x, y) -> int:
 def is_multiquadratic(x) -> bool:
     """Is ``x`` a multiquadratic number (no tower, no ``K(alpha)``)?"""
     return isinstance(x, MQ)
+
+
+def motion_number(x):
+    """``x`` as a number of the motion: a rational (``fmpq``, ``int``: what the checker's
+    geometry returns for a rational centre) as an MQ, any other number as it is."""
+    return MQ.coerce(x) if isinstance(x, (int, fmpq)) else x
 
 
 def nested_tower(x):
