@@ -79,25 +79,25 @@ def cross(u, v):
 
 def dist2(p, q):
     if _fused(p[0], q[0], p[1], q[1]):
-        key = (id(p), id(q))
-        hit = _DIST2.get(key)
-        if hit is not None and hit[0] is p and hit[1] is q:
-            return hit[2]
+        key = (p, q)
+        out = _DIST2.get(key)
+        if out is not None:
+            return out
         d = sub(p, q)
         out = dot(d, d)
         if len(_DIST2) >= _DIST2_MAX:
             _DIST2.clear()
-        _DIST2[key] = (p, q, out)
+        _DIST2[key] = out
         return out
     d = sub(p, q)
     return dot(d, d)
 
 
-#: dist2 of the same two point objects (a decision measures a robot's distance to the
-#: centre in the recogniser, in R's distances and in the centre rule): remembered by
-#: identity, each entry holding its points (so no id is reused while it is kept); only
-#: for MQ coordinates with several terms (a point is an immutable tuple of numbers that
-#: never change; small ones cost less than the look-up)
+#: dist2 of the same two points (a decision measures a robot's distance to the centre in
+#: the recogniser, in R's distances and in the centre rule): remembered by value, bounded;
+#: only for MQ coordinates with several terms (their hashes are remembered, and a key
+#: met again is usually the same object, found without comparing; small ones cost less
+#: than the look-up)
 _DIST2: dict = {}
 _DIST2_MAX = 1 << 12
 

@@ -37,7 +37,7 @@ from ..exact.multiquadratic import MQ, sqrt_rational
 from .geometry import add, angle_key, angle_less, cross, dist2, dot, rotate, scale, sub
 
 
-@lru_cache(maxsize=None)
+@lru_cache(maxsize=256)
 def layer_rotation(L: int) -> tuple[MQ, MQ]:
     """``(cos theta_L, sin theta_L)`` exactly."""
     c = MQ.rational(1 - fmpq(1, 2 * L * L))
@@ -55,7 +55,7 @@ def rotation_power_coefficients(L: int, k: int) -> tuple[fmpq, fmpq]:
     return a, b
 
 
-@lru_cache(maxsize=None)
+@lru_cache(maxsize=256)
 def capacity(L: int) -> int:
     """Largest k with ``k theta_L <= 2 pi`` (layer 0 holds one robot)."""
     if L == 0:
