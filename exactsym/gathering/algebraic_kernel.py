@@ -26,11 +26,12 @@ from __future__ import annotations
 
 from flint import fmpq, fmpq_mat, fmpq_poly
 
+from ..exact.algebraic.algebraic_numbers import AlgebraicNumber, is_algebraic
+from ..exact.algebraic.factor import group_basis
 from ..exact.evaluate import FieldSystem
 from ..exact.field import NumberField
 from ..exact.multiquadratic import MQ
-from ..exact.algebraic.algebraic_numbers import AlgebraicNumber, is_algebraic
-from ..exact.algebraic.factor import group_basis
+from ..geometry.configuration import Configuration
 
 __all__ = ["kernel_field", "kernel_configuration"]
 
@@ -109,7 +110,6 @@ def kernel_configuration(points):
     """A kernel :class:`~exactsym.geometry.configuration.Configuration` of the snapshot ``points``
     (pairs of MQ and :class:`AlgebraicNumber` numbers of one root), in a
     :class:`~exactsym.exact.evaluate.FieldSystem` over ``Q(gamma)``."""
-    from ..geometry.configuration import Configuration
     roots = {x.root for p in points for x in p if is_algebraic(x)}
     if len(roots) != 1:
         raise ValueError("kernel_configuration: the points hold no number of one K(alpha)")

@@ -69,7 +69,7 @@ from flint import fmpq
 from ..exact.multiquadratic import MQ, sqrt_rational
 from . import geometry as g
 from .pattern import Pattern, capacity, recognise, slot
-from .robot import Decision, Move, Readings, radial_point
+from .robot import Decision, Move, Readings, decide, radial_point
 from ..exact.algebraic.run_tower import sqrt_exact
 from .run_home import snapshot_key
 
@@ -554,7 +554,6 @@ def decide_for(algorithm: str):
     if algorithm == "corrected":
         return decide_corrected
     if algorithm == "paper":
-        from .robot import decide
         return decide
     raise ValueError(f"unknown algorithm {algorithm!r} (choices: {', '.join(ALGORITHMS)})")
 

@@ -19,15 +19,18 @@ Predicates (CGAL style: they return bools or small ints and are exact):
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import cached_property
 
+import numpy as np
+
 from ..exact.algebraic.interface import motion_number
+from ..exact.algebraic.norms import negative_instant
+from ..exact.algebraic.polynomials import padd, pmul, pscale, trim
 from ..exact.multiquadratic import MQ, mq, sqrt_rational, sum_of_products
 from ..geometry import sec
 from ..geometry.predicates import circumcentre
-from ..exact.algebraic.norms import negative_instant
-from ..exact.algebraic.polynomials import padd, pmul, pscale, trim
 
 Point = tuple  # (MQ, MQ)
 
@@ -393,7 +396,6 @@ def _approx(x):
 def approx_points(pts):
     """``(X, Y, E)``: NumPy arrays of the centres' doubles and a bound on the error of
     each coordinate."""
-    import numpy as np
     xs, ys, es = [], [], []
     for p in pts:
         try:
@@ -409,7 +411,6 @@ def approx_points(pts):
 def maybe_touching_pairs(pts, unit) -> list:
     """A superset of the pairs ``(i, j)``, ``i < j``, of centres exactly ``2 unit``
     apart: the pairs the doubles cannot separate from ``4 unit^2``."""
-    import numpy as np
     X, Y, E = approx_points(pts)
     four = 4.0 * float(unit) ** 2
     dx, dy = X[:, None] - X[None, :], Y[:, None] - Y[None, :]
@@ -433,7 +434,6 @@ def touching_pairs(pts, unit) -> list:
 def farthest_candidates(approx, centre, among) -> list:
     """The robots of ``among`` that may be the farthest from ``centre`` (a point): every
     robot left out is certainly nearer than one kept (the doubles' error bounds)."""
-    import numpy as np
     X, Y, E = approx
     idx = np.array(list(among), dtype=int)
     if len(idx) == 0:
@@ -455,7 +455,6 @@ def robots_near_piece(piece, approx, d) -> list:
     """Indices of the robots that may come within ``d`` (a float) of ``piece``: every
     robot left out is certainly farther than ``d`` from every point of it, by the lower
     bound of :func:`_piece_lower_bound` computed for all robots at once."""
-    import numpy as np
     X, Y, E = approx
     try:
         geo = _piece_frame(piece)
@@ -516,7 +515,6 @@ def _certainly_far(piece, q, d2) -> bool:
     """A filter for :func:`piece_hits`: ``q`` is certainly farther than ``sqrt(d2)``
     from every point of the piece (:func:`_piece_lower_bound` in doubles); False when
     the doubles cannot tell (or overflow)."""
-    import math
     try:
         geo = _piece_frame(piece)
         (qx, eq), (qy, gq) = _approx(q[0]), _approx(q[1])
@@ -531,7 +529,6 @@ def maybe_on_layers(approx, centre, unit) -> list:
     """Indices of the robots that may lie exactly at C or at a distance ``2 L unit`` from
     ``centre`` for an integer L >= 1 (every robot left out certainly does not): the
     robots a pattern about ``centre`` can contain."""
-    import numpy as np
     X, Y, E = approx
     try:
         (cx, ex), (cy, ey) = _approx(centre[0]), _approx(centre[1])

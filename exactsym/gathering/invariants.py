@@ -35,13 +35,14 @@ from __future__ import annotations
 import contextlib
 from dataclasses import dataclass, field
 
+from ..exact.algebraic.algebraic_numbers import is_algebraic
+from ..exact.algebraic.tower_numbers import is_tower
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .instants import critical_roots, look_points
 from .joint_instants import joint_look_points
 from .pattern import definition_defects, recognise
-from ..exact.algebraic.algebraic_numbers import is_algebraic
-from ..exact.algebraic.tower_numbers import is_tower
+from .world import IDENTITY, MIRROR
 
 #: How a violation names the statement it contradicts: the paper's ``\\label`` where
 #: the statement has one (``/paper/README.md``), otherwise the algorithm (or the model
@@ -159,7 +160,6 @@ class Checker:
             self._frames_agree(world, i, frame, paths, decision, t)
 
     def _frames_agree(self, world, i, frame, paths, decision, t):
-        from .world import IDENTITY, MIRROR
         mine = _plan(paths, decision)
         for other in (IDENTITY, MIRROR) + tuple(self.frames):
             if other == frame:
@@ -241,7 +241,6 @@ class Checker:
                 self._fresh_look(world, i, t, "")
 
     def _same_centre(self, world, i, t, where: str):
-        from .world import IDENTITY
         rob = world.robots[i]
         d = world.fresh_decision(IDENTITY)      # only its centre is read
         if d.centre != rob.centre:
@@ -251,7 +250,6 @@ class Checker:
                             label=I6_LABEL_OF_ROLE.get(rob.role, I6_OTHER_LABEL))
 
     def _fresh_look(self, world, i, t, where: str):
-        from .world import IDENTITY
         rob = world.robots[i]
         d, plan = world.fresh_plan(IDENTITY)
         own = {i: (rob.role, rob.target)}
@@ -356,7 +354,6 @@ class Checker:
         """I9 inside a piece (one mover) or a joint step: fresh Looks in the world's
         frame, the reflected one (and the extra frames) plan the same movers and leader
         targets (the fresh plans are compared, not the pending moves: that is I3's)."""
-        from .world import IDENTITY, MIRROR
         d0, mine = world.fresh_plan(IDENTITY)
         if d0.status == "undecided":
             self.undecided_fresh += 1

@@ -21,14 +21,16 @@ from __future__ import annotations
 from dataclasses import dataclass
 from fractions import Fraction
 
-from ..geometry.configuration import Configuration
 from ..errors import InputError
 from ..exact import evaluate, fmpq, number_system
 from ..exact.algebraic.algebraic_numbers import is_algebraic
-from ..io.expr import parse_expression
+from ..geometry.configuration import Configuration, from_file
 from ..geometry.levels import levels_of as compute_rings
+from ..io.expr import parse_expression
+from ..io.fileformat import read_config
 from ..paper.family import (concentric_polygons, elect_leader, is_symmetric_family,
                             is_symmetric_polygon, make_asym, preprocess)
+from .algebraic_kernel import kernel_configuration
 
 __all__ = ["PaperDecision", "paper_decision", "configuration_of", "GatheringInputError",
            "read_case"]
@@ -66,7 +68,6 @@ def configuration_of(points) -> Configuration:
     """A kernel configuration of MQ points (rational when they all are), of tower
     numbers, or of K(alpha) numbers."""
     if _algebraic(points):
-        from .algebraic_kernel import kernel_configuration
         return kernel_configuration(points)
     if all(x.is_rational() and y.is_rational() for x, y in points):
         return Configuration.from_points([(x.to_fmpq(), y.to_fmpq()) for x, y in points])
@@ -136,8 +137,6 @@ def _decision(config, ring_data, orientation: int, reading: str) -> PaperDecisio
 def read_case(path):
     """Read a case file (configuration format 1): ``(points as fmpq pairs, name, expect,
     source)``; raises :class:`InputError` with the file location."""
-    from ..io.fileformat import read_config
-    from ..geometry.configuration import from_file
     config = from_file(read_config(path))
     pts = []
     for x, y in config.points:

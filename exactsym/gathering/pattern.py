@@ -178,7 +178,8 @@ class _SortKey:
 def recognise(points, centre, lone: str = "accept", unit=1) -> Pattern:
     """The largest valid partial pattern about ``centre`` (see the module docstring);
     ``unit``: the robot radius in the points' frame (a rational)."""
-    unit2 = fmpq(unit) * fmpq(unit) if not isinstance(unit, fmpq) else unit * unit
+    u = fmpq(unit)
+    unit2 = u * u
     at_centre = [i for i, p in enumerate(points) if p[0] == centre[0] and p[1] == centre[1]]
     if not at_centre:
         return Pattern(centre, None, (), True)
