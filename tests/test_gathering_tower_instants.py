@@ -1,5 +1,5 @@
 """Critical instants that need a nested radical, checked at the instant
-(exactsym.gathering.tower_numbers, polyroots.exact_root_hook): the root is a tower
+(exactsym.exact.algebraic.tower_numbers, roots.exact_root_hook): the root is a tower
 number, the mover's point there has tower coordinates, and the fresh Look runs on them;
 an invariant that fails only at such an instant is caught with the exact witness; an
 exact similarity of the whole scene changes nothing."""
