@@ -3,15 +3,15 @@
 The paper layer (:mod:`.paper_bridge`) reads a snapshot through the kernel
 (:mod:`exactsym.exact`): rationals, multiquadratic numbers, towers, and general number
 fields ``Q(gamma)`` (:class:`~exactsym.exact.field.NumberField`, exact arithmetic modulo
-gamma's minimal polynomial over Q, signs by Arb).  A snapshot taken at a root ``alpha``
-of a cubic or quartic factor (:mod:`~exactsym.exact.algebraic.algebraic_numbers`) holds numbers of ``L =
-K(alpha)``, ``K = Q(sqrt b_1, ..., sqrt b_m)`` the multiquadratic field of every square
-root in the snapshot and in alpha's polynomial ``f``.  :func:`kernel_configuration`
-writes it in one kernel field:
+gamma's minimal polynomial over Q, signs by Arb).  A snapshot taken at a root ``alpha`` of
+a cubic or quartic factor (:mod:`~exactsym.exact.algebraic.algebraic_numbers`) holds
+numbers of ``L = K(alpha)``, ``K = Q(sqrt b_1, ..., sqrt b_m)`` the multiquadratic field
+of every square root in the snapshot and in alpha's polynomial ``f``.
+:func:`kernel_configuration` writes it in one kernel field:
 
 * ``[L:Q] = d 2^m`` (``d = deg f``; ``f`` stays irreducible over every multiquadratic
-  field, :mod:`~exactsym.exact.algebraic.algebraic_numbers`), with the basis ``alpha^i sqrt(s)``, ``s`` running
-  over the ``2^m`` square-free products of the ``b_j``;
+  field, :mod:`~exactsym.exact.algebraic.algebraic_numbers`), with the basis ``alpha^i
+  sqrt(s)``, ``s`` running over the ``2^m`` square-free products of the ``b_j``;
 * ``gamma = alpha + c theta`` (``theta = sum sqrt b_j``, ``c = 0, 1, 2, ...``) is a
   primitive element as soon as its powers ``1, ..., gamma^(D-1)`` are linearly
   independent (an exact rational determinant); ``gamma^D`` in that basis gives its

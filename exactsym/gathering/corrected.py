@@ -298,11 +298,11 @@ def _to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None):
 
     * on the target's ray: the segment;
     * along the mover's own circle about C, the shorter way, to the target's ray, then
-      radially in (every point of the arc has the mover's radius, and the radial part
-      is on the target's ray); the radius is a nested radical when ``|p - C|^2`` is a
-      square in no multiquadratic field (a number of ``tower``, the snapshot's, or of a
-      new run tower: :func:`~exactsym.exact.algebraic.run_tower.sqrt_exact`); the path is left out only when
-      that root cannot be built (the kernel's limits);
+      radially in (every point of the arc has the mover's radius, and the radial part is
+      on the target's ray); the radius is a nested radical when ``|p - C|^2`` is a square
+      in no multiquadratic field (a number of ``tower``, the snapshot's, or of a new run
+      tower: :func:`~exactsym.exact.algebraic.run_tower.sqrt_exact`); the path is left out
+      only when that root cannot be built (the kernel's limits);
     * for h = 2l + 2, 2l + 4, 2l + 6 with h^2 < ``limit2`` (the squared distance of R's
       next robot to C: the mover stays the nearest; the condition does not change on the
       way): radially in to the rational point of the mover's ray just beyond radius h

@@ -37,25 +37,25 @@ the rays and ties of every pair of R about the moving centre of that support, as
 joint step with one mover (:func:`.moving_centre.about_moving_sec`; the roots in that
 stretch).
 
-The list is a superset: a candidate where nothing happens costs a Look, a missed one
-would be a missed check.  :func:`look_points` returns every root's exact point when the
-kernel holds it, and one rational point in each open stretch between consecutive roots
-(before the first, after the last; half way when there is none), strictly inside the
-piece: in a stretch no relation above changes sign, so its Look stands for the whole
-stretch with respect to them.  A root that needs a nested radical is exact too: a number
-of a tower of quadratic extensions (:func:`~exactsym.exact.algebraic.roots.exact_root_hook`,
-:mod:`~exactsym.exact.algebraic.tower_numbers`), and the mover's point there has tower coordinates, on which the
-fresh Look (geometry, pattern, the paper layer) runs unchanged.  A root of an
-irreducible factor of degree 3 or more is exact too, a number of ``K(alpha)``
-(:mod:`~exactsym.exact.algebraic.algebraic_numbers`: the polynomial factored over its coefficients' field K,
-alpha's factor of odd degree or a quartic of group S4 or A4); a root of a quartic
-factor of group D4, C4 or V4 is a nested radical, a tower number again
-(:mod:`~exactsym.exact.algebraic.quartic`, Ferrari over K).  Only the other roots (other even degrees,
-a norm or gcd too large, a radicand whose root needs an integer of more than 160 bits
-that the bounded split of :mod:`~exactsym.exact.mq_closure` cannot tell) are seen on
-both sides only (``sided``).  Not enumerated: relations that involve neither C, nor an SEC (R's SEC
-centre, moving or not, included), a symmetry or a contact (the corrected variant's
-distance profiles, for example).
+The list is a superset: a candidate where nothing happens costs a Look, a missed one would
+be a missed check.  :func:`look_points` returns every root's exact point when the kernel
+holds it, and one rational point in each open stretch between consecutive roots (before
+the first, after the last; half way when there is none), strictly inside the piece: in a
+stretch no relation above changes sign, so its Look stands for the whole stretch with
+respect to them.  A root that needs a nested radical is exact too: a number of a tower of
+quadratic extensions (:func:`~exactsym.exact.algebraic.roots.exact_root_hook`,
+:mod:`~exactsym.exact.algebraic.tower_numbers`), and the mover's point there has tower
+coordinates, on which the fresh Look (geometry, pattern, the paper layer) runs unchanged.
+A root of an irreducible factor of degree 3 or more is exact too, a number of ``K(alpha)``
+(:mod:`~exactsym.exact.algebraic.algebraic_numbers`: the polynomial factored over its
+coefficients' field K, alpha's factor of odd degree or a quartic of group S4 or A4); a
+root of a quartic factor of group D4, C4 or V4 is a nested radical, a tower number again
+(:mod:`~exactsym.exact.algebraic.quartic`, Ferrari over K).  Only the other roots (other
+even degrees, a norm or gcd too large, a radicand whose root needs an integer of more than
+160 bits that the bounded split of :mod:`~exactsym.exact.mq_closure` cannot tell) are seen
+on both sides only (``sided``).  Not enumerated: relations that involve neither C, nor an
+SEC (R's SEC centre, moving or not, included), a symmetry or a contact (the corrected
+variant's distance profiles, for example).
 """
 
 from __future__ import annotations
@@ -411,9 +411,9 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
     before the first instant, the last after the last) and each instant itself when the
     kernel holds it (a nested radical: a point with tower coordinates; a root of a cubic
     or quartic factor: a point of ``K(alpha)``; a nested root re-homed into the piece's
-    run tower first, :func:`.run_home.instant_in`) -- and the number of instants
-    checked only on both sides (the roots :mod:`~exactsym.exact.algebraic.algebraic_numbers` leaves without a
-    value, or that the piece's tower cannot re-home)."""
+    run tower first, :func:`.run_home.instant_in`) -- and the number of instants checked
+    only on both sides (the roots :mod:`~exactsym.exact.algebraic.algebraic_numbers`
+    leaves without a value, or that the piece's tower cannot re-home)."""
     roots = critical_roots(piece, world, mover, centre, sec_r)
     if not roots:             # one stretch: the whole open piece
         half = MQ.rational(fmpq(1, 2))

@@ -18,12 +18,13 @@ Exactness of the "at any instant" checks:
   plans) also at the critical instants inside each piece (:mod:`.instants`): where the
   mover crosses the line through C and another robot, where two distances to C become
   equal, where the SEC's support changes, where a symmetry can appear -- roots of
-  polynomials in the path parameter, isolated exactly (:mod:`~exactsym.exact.algebraic.roots`).  A Look at
-  each instant the kernel holds, and one in each stretch between consecutive instants;
-  an instant that needs a nested radical is checked at the instant too, its point in a
-  tower of quadratic extensions (:mod:`~exactsym.exact.algebraic.tower_numbers`, counted as ``nested``); only a
-  root of a cubic or quartic factor that square roots do not express is seen on both
-  sides only (``sided``);
+  polynomials in the path parameter, isolated exactly
+  (:mod:`~exactsym.exact.algebraic.roots`).  A Look at each instant the kernel holds, and
+  one in each stretch between consecutive instants; an instant that needs a nested radical
+  is checked at the instant too, its point in a tower of quadratic extensions
+  (:mod:`~exactsym.exact.algebraic.tower_numbers`, counted as ``nested``); only a root of
+  a cubic or quartic factor that square roots do not express is seen on both sides only
+  (``sided``);
 * over a step of several robots moving at once (:meth:`Checker.after_step`): I1 by the
   joint motion's exact polynomial, and I3, I4 and I6 at the critical instants of the
   joint motion (:mod:`.joint_instants`) and between them, I9 at its SEC and symmetry

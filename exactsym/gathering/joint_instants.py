@@ -7,7 +7,8 @@ time ``tau`` in [0, 1]: affine in ``tau`` on a segment, rational in it on an arc
 still is a constant motion.  Each relation between robots below is, denominators
 cleared (positive factors: no sign changes), a polynomial in ``tau``
 (:mod:`.joint_relations`); its roots in
-(0, 1) are isolated exactly (:mod:`~exactsym.exact.algebraic.roots`).  Families, each over the relations that
+(0, 1) are isolated exactly (:mod:`~exactsym.exact.algebraic.roots`).  Families, each
+over the relations that
 involve at least one mover (the others do not change during the step):
 
 * ``distance`` -- two robots as far from C (mover-mover, mover-still);
@@ -45,9 +46,11 @@ A superset of the events above: a candidate where nothing happens costs a Look.
 :func:`joint_look_points` gives, as :func:`.instants.look_points` does, each instant
 whose value the kernel holds and one rational instant in each open stretch between
 consecutive instants (strictly inside (0, 1)); an instant that needs a nested radical
-is a point in a tower of quadratic extensions (:mod:`~exactsym.exact.algebraic.tower_numbers`), one at a root of a
-cubic or quartic factor a point of ``K(alpha)`` (:mod:`~exactsym.exact.algebraic.algebraic_numbers`); only the
-roots that module leaves without a value are seen on both sides only (``sided``).  ``invariants.Checker`` checks I3, I4 and I6 at
+is a point in a tower of quadratic extensions
+(:mod:`~exactsym.exact.algebraic.tower_numbers`), one at a root of a cubic or quartic
+factor a point of ``K(alpha)`` (:mod:`~exactsym.exact.algebraic.algebraic_numbers`); only
+the roots that module leaves without a value are seen on both sides only (``sided``).
+``invariants.Checker`` checks I3, I4 and I6 at
 every Look, I9 at those of the ``sec`` and ``symmetry`` instants and beside them.
 """
 
@@ -94,7 +97,8 @@ def _sec(motions: dict, movers, tag: str) -> list:
 
 def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
     """Every critical instant strictly inside the step's interval, as separated
-    :class:`~exactsym.exact.algebraic.roots.Root`\\ s (``pieces``: mover -> the piece it moves along)."""
+    :class:`~exactsym.exact.algebraic.roots.Root`\\ s (``pieces``: mover -> the piece it
+    moves along)."""
     movers = set(pieces)
     motions = {k: motion_of(pieces[k]) if k in movers else still(r.pos)
                for k, r in enumerate(world.robots)}

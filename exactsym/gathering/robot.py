@@ -279,15 +279,15 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1,
 
 def radial_point(centre, p, radius, tower=None):
     """The point at distance ``radius`` from ``centre`` towards ``p``, exactly.
-    ``|p - C|^2`` is rational for a robot that has not slid along an arc (then one
-    square root of a rational); after a slide, with C moved, or for a point caught at a
-    nested-radical instant it is an irrational multiquadratic or a tower number: its
-    root is an MQ when it lies in the multiquadratic closure, else a number of the
-    snapshot's ``tower`` of nested radicals (a new level when it has none there; a new
-    tower when ``tower`` is None: :func:`~exactsym.exact.algebraic.run_tower.sqrt_exact`).  ValueError (the
-    decision is then ``undecided``) when the closure test cannot write a root (an
-    integer of more than 160 bits it cannot split), the tower would exceed its levels,
-    or ``p = C``."""
+    ``|p - C|^2`` is rational for a robot that has not slid along an arc (then one square
+    root of a rational); after a slide, with C moved, or for a point caught at a
+    nested-radical instant it is an irrational multiquadratic or a tower number: its root
+    is an MQ when it lies in the multiquadratic closure, else a number of the snapshot's
+    ``tower`` of nested radicals (a new level when it has none there; a new tower when
+    ``tower`` is None: :func:`~exactsym.exact.algebraic.run_tower.sqrt_exact`).
+    ValueError (the decision is then ``undecided``) when the closure test cannot write a
+    root (an integer of more than 160 bits it cannot split), the tower would exceed its
+    levels, or ``p = C``."""
     v = g.sub(p, centre)
     r2 = g.dot(v, v)
     if r2.is_zero():

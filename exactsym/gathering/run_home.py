@@ -94,13 +94,13 @@ def common_tower(points):
 def instant_in(f, pieces):
     """The exact instant ``f`` (a root of a critical polynomial) as a number of the run's
     tower that ``pieces`` (the movers' pieces) lie in, so that ``piece.at(f)`` mixes no
-    two towers: a nested root of a polynomial with multiquadratic coefficients is a
-    number of its own one-level tower (:mod:`~exactsym.exact.algebraic.tower_numbers`) even when the pieces are
-    in the run's (a radial segment from a nested-radical point, ``x(f) = t (1 + f)``,
-    has ``x(f)^2 = t^2 (1 + f)^2`` with ``t^2`` multiquadratic).  ``f`` unchanged when
-    it is no number of a tower of nested radicals (K(alpha)'s towers are not re-homed,
-    :func:`towers_of`) or no piece lies in a :class:`RunTower`; ValueError when the
-    re-homing needs a square root the tower cannot decide."""
+    two towers: a nested root of a polynomial with multiquadratic coefficients is a number
+    of its own one-level tower (:mod:`~exactsym.exact.algebraic.tower_numbers`) even when
+    the pieces are in the run's (a radial segment from a nested-radical point, ``x(f) = t
+    (1 + f)``, has ``x(f)^2 = t^2 (1 + f)^2`` with ``t^2`` multiquadratic).  ``f``
+    unchanged when it is no number of a tower of nested radicals (K(alpha)'s towers are
+    not re-homed, :func:`towers_of`) or no piece lies in a :class:`RunTower`; ValueError
+    when the re-homing needs a square root the tower cannot decide."""
     target = next((t for t in towers_of(list(pieces)) if is_run_tower(t)), None)
     if target is None or not is_tower(f) or towers_of([(f,)]) in ((), (target,)):
         return f

@@ -1,10 +1,11 @@
 """Exact real roots in (0, 1) of small polynomials with multiquadratic coefficients.
 
-The "any instant" checks (:mod:`.instants`) reduce each event of a motion (two distances
-become equal, the SEC's support changes, a symmetry appears) to a root of a polynomial
-of degree at most 4 in the piece's parameter ``f`` (a segment is linear in ``f``; an arc
-is rational in ``f`` with the denominator ``1 + T^2 f^2``, cleared).  Its coefficients
-are :class:`~exactsym.exact.multiquadratic.MQ` elements.
+The gathering simulator's "any instant" checks (:mod:`exactsym.gathering.instants`) reduce
+each event of a motion (two distances become equal, the SEC's support changes, a symmetry
+appears) to a root of a polynomial of degree at most 4 in the piece's parameter ``f`` (a
+segment is linear in ``f``; an arc is rational in ``f`` with the denominator
+``1 + T^2 f^2``, cleared).  Its coefficients are
+:class:`~exactsym.exact.multiquadratic.MQ` elements.
 
 A root is a :class:`Root`: a rational isolating interval ``(lo, hi)`` holding exactly
 one root of its polynomial (Sturm sequences over the coefficient field, exact signs),

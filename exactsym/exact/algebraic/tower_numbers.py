@@ -1,9 +1,9 @@
 """Nested radicals for the gathering simulator: critical instants held exactly in a tower.
 
-A critical instant of a motion (the gathering simulator's ``instants``) is a root of a polynomial with
-multiquadratic coefficients.  When that root needs a nested radical (a quadratic whose
-discriminant is not a square in any multiquadratic field, or a biquadratic quartic),
-it lives in a tower of quadratic extensions over the multiquadratic field
+A critical instant of a motion (the gathering simulator's ``instants``) is a root of a
+polynomial with multiquadratic coefficients.  When that root needs a nested radical (a
+quadratic whose discriminant is not a square in any multiquadratic field, or a biquadratic
+quartic), it lives in a tower of quadratic extensions over the multiquadratic field
 (:mod:`exactsym.exact.tower`, used read-only).  This module is the small adapter the
 simulator needs on top of it:
 
