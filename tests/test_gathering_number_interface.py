@@ -23,7 +23,7 @@ from exactsym.gathering import geometry as g
 from exactsym.geometry import sec
 
 Q = MQ.rational
-S2 = sqrt_rational(2)
+S2, S3 = sqrt_rational(2), sqrt_rational(3)
 
 
 def _numbers():
@@ -31,11 +31,12 @@ def _numbers():
     mq = S2 + 1
     instant = mq_sqrt_any(1 + S2)                          # sqrt(1 + sqrt 2): own tower
     run = sqrt_exact(1 + S2, RunTower())                   # the same value, a run's tower
-    # the root of 8 f^3 - f - sqrt(2)/4 in (0, 1): a number of K(alpha)
-    alpha = algebraic_root(tuple(MQ.coerce(c) for c in (-S2 / 4, -1, 0, 8)), fmpq(0), fmpq(1))
+    # the root of 8 f^3 - f - sqrt(3)/4 in (0, 1): a number of K(alpha) (a cubic no other
+    # test uses: the levels over K(alpha), at most three, are shared by all its numbers)
+    alpha = algebraic_root(tuple(MQ.coerce(c) for c in (-S3 / 4, -1, 0, 8)), fmpq(0), fmpq(1))
     level = sqrt_over_k_alpha(alpha + 3)                   # sqrt(alpha + 3): a level over it
-    a = next(r.real for r in np.roots([8, 0, -1, -2 ** 0.5 / 4])
-             if abs(r.imag) < 1e-12 and 0 < r.real < 1)   # 8 a^3 - a - sqrt(2)/4 = 0
+    a = next(r.real for r in np.roots([8, 0, -1, -3 ** 0.5 / 4])
+             if abs(r.imag) < 1e-12 and 0 < r.real < 1)   # 8 a^3 - a - sqrt(3)/4 = 0
     return [(mq, 2 ** 0.5 + 1), (instant, (1 + 2 ** 0.5) ** 0.5),
             (run, (1 + 2 ** 0.5) ** 0.5), (alpha, a), (level, (a + 3) ** 0.5)]
 

@@ -25,10 +25,11 @@ from functools import cached_property
 
 import numpy as np
 
-from ..exact.algebraic.interface import motion_number
+from ..exact.algebraic.interface import (float_and_error, motion_number, products_are_large,
+                                         two_products)
 from ..exact.algebraic.norms import negative_instant
 from ..exact.algebraic.polynomials import padd, pmul, pscale, trim
-from ..exact.multiquadratic import MQ, mq, sqrt_rational, sum_of_products
+from ..exact.multiquadratic import MQ, mq, sqrt_rational
 from ..geometry import sec
 from ..geometry.predicates import circumcentre
 
@@ -54,34 +55,16 @@ def scale(p, s):
     return (p[0] * s, p[1] * s)
 
 
-def _fused(a, b, c, d) -> bool:
-    """Are ``a b`` and ``c d`` MQ products big enough to sum over integers first
-    (:func:`~exactsym.exact.multiquadratic.sum_of_products`: the same element, one gcd
-    per term of the sum instead of one per term of each product and of the sum)?"""
-    ta = getattr(a, "terms", None)         # MQ's dictionary (a tower number has none)
-    if ta is None or len(ta) < 2 and len(c.terms if type(c) is MQ else ()) < 2:
-        return False
-    return (type(a) is MQ and type(b) is MQ and type(c) is MQ and type(d) is MQ
-            and len(ta) * len(b.terms) + len(c.terms) * len(d.terms) >= _FUSED)
-
-
-_FUSED = 16
-
-
 def dot(u, v):
-    if _fused(u[0], v[0], u[1], v[1]):
-        return sum_of_products(((1, u[0], v[0]), (1, u[1], v[1])))
-    return u[0] * v[0] + u[1] * v[1]
+    return two_products(u[0], v[0], u[1], v[1], 1)
 
 
 def cross(u, v):
-    if _fused(u[0], v[1], u[1], v[0]):
-        return sum_of_products(((1, u[0], v[1]), (-1, u[1], v[0])))
-    return u[0] * v[1] - u[1] * v[0]
+    return two_products(u[0], v[1], u[1], v[0], -1)
 
 
 def dist2(p, q):
-    if _fused(p[0], q[0], p[1], q[1]):
+    if products_are_large(p[0], q[0], p[1], q[1]):
         key = (p, q)
         out = _DIST2.get(key)
         if out is not None:
@@ -380,26 +363,13 @@ def joint_motion_overlap(piece1, piece2, d2=4):
 # further double operation errs by 2^-53 relatively, a few of them per test); NaN or
 # infinity (overflow) compares False and sends the pair to the exact test.
 
-def _approx(x):
-    terms = getattr(x, "terms", None)
-    if terms is None:
-        # a tower number (nested radical, exact.algebraic.tower_numbers): its Arb ball's centre,
-        # within the ball's radius plus the centre's rounding to a double
-        ball = x.enclosure(64)
-        mid = float(ball.mid())
-        return mid, 2 * (float(ball.rad()) + 2.0 ** -52 * abs(mid)) + 1e-300
-    vals = [float(c) * float(m) ** 0.5 for m, c in terms.items()]
-    s = sum(abs(v) for v in vals)
-    return sum(vals), 2 * (len(vals) + 6) * 2.0 ** -52 * s
-
-
 def approx_points(pts):
     """``(X, Y, E)``: NumPy arrays of the centres' doubles and a bound on the error of
     each coordinate."""
     xs, ys, es = [], [], []
     for p in pts:
         try:
-            (x, ex), (y, ey) = _approx(p[0]), _approx(p[1])
+            (x, ex), (y, ey) = float_and_error(p[0]), float_and_error(p[1])
         except OverflowError:
             x = y = ex = ey = float("nan")
         xs.append(x)
@@ -439,7 +409,7 @@ def farthest_candidates(approx, centre, among) -> list:
     if len(idx) == 0:
         return []
     try:
-        (cx, ex), (cy, ey) = _approx(centre[0]), _approx(centre[1])
+        (cx, ex), (cy, ey) = float_and_error(centre[0]), float_and_error(centre[1])
     except OverflowError:
         return list(among)
     d = np.hypot(X[idx] - cx, Y[idx] - cy)
@@ -467,15 +437,15 @@ def robots_near_piece(piece, approx, d) -> list:
 def _piece_frame(piece):
     """Doubles describing a piece for the filters, with the error bound ``sigma`` of
     its points' coordinates: ``(kind, mx, my, h, ux, uy, cx, cy, r, sigma)``."""
-    (sx, es), (sy, fs) = _approx(piece.start[0]), _approx(piece.start[1])
-    (tx, et), (ty, ft) = _approx(piece.end[0]), _approx(piece.end[1])
+    (sx, es), (sy, fs) = float_and_error(piece.start[0]), float_and_error(piece.start[1])
+    (tx, et), (ty, ft) = float_and_error(piece.end[0]), float_and_error(piece.end[1])
     sigma = es + fs + et + ft
     mx, my = (sx + tx) / 2, (sy + ty) / 2
     h = ((sx - tx) ** 2 + (sy - ty) ** 2) ** 0.5 / 2
     if isinstance(piece, Segment):
         ux, uy = ((tx - sx) / (2 * h), (ty - sy) / (2 * h)) if h > 1e-6 else (0.0, 0.0)
         return ("segment", mx, my, h, ux, uy, 0.0, 0.0, 0.0, sigma)
-    (cx, ec), (cy, fc) = _approx(piece.centre[0]), _approx(piece.centre[1])
+    (cx, ec), (cy, fc) = float_and_error(piece.centre[0]), float_and_error(piece.centre[1])
     r = ((sx - cx) ** 2 + (sy - cy) ** 2) ** 0.5
     return ("arc", mx, my, h, 0.0, 0.0, cx, cy, r, sigma + ec + fc)
 
@@ -517,8 +487,8 @@ def _certainly_far(piece, q, d2) -> bool:
     the doubles cannot tell (or overflow)."""
     try:
         geo = _piece_frame(piece)
-        (qx, eq), (qy, gq) = _approx(q[0]), _approx(q[1])
-        r2, er = _approx(d2)
+        (qx, eq), (qy, gq) = float_and_error(q[0]), float_and_error(q[1])
+        r2, er = float_and_error(d2)
     except OverflowError:
         return False
     r = max(r2 + er, 0.0) ** 0.5 * (1 + 1e-12)
@@ -531,7 +501,7 @@ def maybe_on_layers(approx, centre, unit) -> list:
     robots a pattern about ``centre`` can contain."""
     X, Y, E = approx
     try:
-        (cx, ex), (cy, ey) = _approx(centre[0]), _approx(centre[1])
+        (cx, ex), (cy, ey) = float_and_error(centre[0]), float_and_error(centre[1])
     except OverflowError:
         return list(range(len(X)))
     two = 2.0 * float(unit)

@@ -18,13 +18,16 @@ from typing import Protocol, runtime_checkable
 
 from flint import fmpq
 
-from ..multiquadratic import MQ
+from ..multiquadratic import MQ, sum_of_products
 from ..tower import TowerElement
 from .algebraic_tower import AlgebraicTower
 from .run_tower import RunTower
 
 __all__ = ["ExactNumber", "compare", "is_multiquadratic", "motion_number", "nested_tower",
-           "is_run_tower"]
+           "is_run_tower", "products_are_large", "two_products", "float_and_error"]
+
+#: products of MQ numbers with at least this many pairs of terms are summed over integers
+FUSED_TERMS = 16
 
 
 @runtime_checkable
@@ -78,3 +81,38 @@ def nested_tower(x):
 def is_run_tower(tower) -> bool:
     """Is ``tower`` a run's :class:`~.run_tower.RunTower` (not an instant's own tower)?"""
     return isinstance(tower, RunTower)
+
+
+def products_are_large(a, b, c, d) -> bool:
+    """Are ``a b`` and ``c d`` MQ products big enough to sum over integers first
+    (:func:`~exactsym.exact.multiquadratic.sum_of_products`: the same element, one gcd
+    per term of the sum instead of one per term of each product and of the sum)?"""
+    ta = getattr(a, "terms", None)         # MQ's dictionary (a tower number has none)
+    if ta is None or len(ta) < 2 and len(c.terms if type(c) is MQ else ()) < 2:
+        return False
+    return (type(a) is MQ and type(b) is MQ and type(c) is MQ and type(d) is MQ
+            and len(ta) * len(b.terms) + len(c.terms) * len(d.terms) >= FUSED_TERMS)
+
+
+def two_products(a, b, c, d, sign: int):
+    """``a b + c d`` (``sign`` 1) or ``a b - c d`` (``sign`` -1), exactly: large MQ
+    products summed at once (:func:`products_are_large`)."""
+    if products_are_large(a, b, c, d):
+        return sum_of_products(((1, a, b), (sign, c, d)))
+    return a * b + c * d if sign > 0 else a * b - c * d
+
+
+def float_and_error(x) -> tuple:
+    """``(v, e)``: a double ``v`` and a proven bound ``e`` on ``|v - x|`` (a filter's
+    input: it never decides alone).  An MQ ``c_1 sqrt(m_1) + ... + c_k sqrt(m_k)``
+    evaluated in doubles is within ``(k + 6) 2^-52 S`` of its value, ``S`` the sum of the
+    terms' magnitudes (the bound of ``multiquadratic._float_sign``), doubled; any other
+    number: its Arb ball's centre, within the ball's radius plus the centre's rounding."""
+    terms = getattr(x, "terms", None)
+    if terms is None:
+        ball = x.enclosure(64)
+        mid = float(ball.mid())
+        return mid, 2 * (float(ball.rad()) + 2.0 ** -52 * abs(mid)) + 1e-300
+    vals = [float(c) * float(m) ** 0.5 for m, c in terms.items()]
+    s = sum(abs(v) for v in vals)
+    return sum(vals), 2 * (len(vals) + 6) * 2.0 ** -52 * s
