@@ -8,7 +8,7 @@ from hypothesis import given, settings, strategies as st
 
 from exactsym.exact import multiquadratic as mqm
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
-from exactsym.gathering import polyroots as pr
+from exactsym.exact.algebraic import polynomials as poly, roots as pr
 
 # radicands over the primes of the n = 30 run's last events, and small ones
 PRIMES = (3, 5, 7, 17, 53)
@@ -45,14 +45,14 @@ irr_roots = st.tuples(roots, st.sampled_from([2, 3, 5])).map(
 def _from_roots(rs, lead):
     p = (lead,)
     for r in rs:
-        p = pr.pmul(p, (-r, MQ.rational(1)))
+        p = poly.pmul(p, (-r, MQ.rational(1)))
     return p
 
 
 @settings(max_examples=300, deadline=None)
 @given(st.lists(coeffs, min_size=2, max_size=6))
 def test_filter_clears_only_polynomials_without_roots_inside(p):
-    p = pr.trim(p)
+    p = poly.trim(p)
     if pr.surely_no_root_in_unit(p):
         assert _exact_roots(p) == []
 
@@ -64,7 +64,7 @@ def test_filter_never_clears_a_root_inside(rs, lead, extra):
     # roots at 0 and 1 exactly are divided out by the filter: they are not inside
     p = _from_roots(rs, lead)
     if extra and any(extra):
-        p = pr.pmul(p, pr.padd(tuple(extra), (MQ.rational(0),)))
+        p = poly.pmul(p, poly.padd(tuple(extra), (MQ.rational(0),)))
     inside = [r for r in rs if r.sign() > 0 and (r - 1).sign() < 0]
     if inside:
         assert not pr.surely_no_root_in_unit(p)

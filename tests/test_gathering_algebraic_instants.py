@@ -14,13 +14,14 @@ from hypothesis import given, settings, strategies as st
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
 from exactsym.gathering.algebraic_kernel import kernel_configuration, kernel_field
-from exactsym.gathering.algebraic_tower import is_algebraic_tower
-from exactsym.gathering.algebraic_instants import (algebraic_root, algebraic_sqrt,
-                                                   factor_over_k, is_algebraic)
+from exactsym.exact.algebraic.algebraic_tower import is_algebraic_tower
+from exactsym.exact.algebraic.algebraic_numbers import algebraic_sqrt, is_algebraic
+from exactsym.exact.algebraic.factor import factor_over_k
 from exactsym.gathering.invariants import Checker, Violation
 from exactsym.gathering.joint_instants import joint_look_points
 from exactsym.gathering.pattern import recognise
-from exactsym.gathering.polyroots import mq_sqrt, peval, pmul, roots_in_unit
+from exactsym.exact.algebraic.polynomials import peval, pmul
+from exactsym.exact.algebraic.roots import algebraic_root, mq_sqrt, roots_in_unit
 from exactsym.gathering.robot import Decision, Move, Readings
 from exactsym.gathering.world import IDENTITY, World
 
@@ -399,8 +400,8 @@ def test_k_alpha_does_not_mix_with_a_runs_tower():
     """A robot standing at a nested-radical position (a run's tower number): the cubic
     instant is seen on both sides only (sided), no K(alpha) point is built.  (Positions
     in a run's tower exist once robots can move to nested-radical targets: run_tower.)"""
-    pytest.importorskip("exactsym.gathering.run_tower")
-    from exactsym.gathering.tower_numbers import mq_sqrt_any
+    pytest.importorskip("exactsym.exact.algebraic.run_tower")
+    from exactsym.exact.algebraic.tower_numbers import mq_sqrt_any
     y = mq_sqrt_any(1 + S2)                          # sqrt(1 + sqrt 2): a tower number
     pts, centre, target, k, end1 = _scene()
     seg = g.Segment(pts[0], target)

@@ -12,8 +12,9 @@ from exactsym.gathering import geometry as g
 from exactsym.gathering.corrected import decide_corrected
 from exactsym.gathering.invariants import Checker
 from exactsym.gathering.robot import Readings
-from exactsym.gathering.run_tower import RunTower, home_point, towers_of
-from exactsym.gathering.tower_numbers import is_tower
+from exactsym.exact.algebraic.run_tower import RunTower
+from exactsym.exact.algebraic.tower_numbers import is_tower
+from exactsym.gathering.run_home import home_point, towers_of
 from exactsym.gathering.world import IDENTITY, Frame, World
 
 Q = MQ.rational

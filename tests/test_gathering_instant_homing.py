@@ -13,8 +13,9 @@ from exactsym.gathering.instants import critical_roots, look_points
 from exactsym.gathering.invariants import Checker
 from exactsym.gathering.joint_instants import joint_look_points
 from exactsym.gathering.robot import Readings
-from exactsym.gathering.run_tower import RunTower, instant_in, sqrt_exact, towers_of
-from exactsym.gathering.tower_numbers import is_tower
+from exactsym.exact.algebraic.run_tower import RunTower, sqrt_exact
+from exactsym.exact.algebraic.tower_numbers import is_tower
+from exactsym.gathering.run_home import instant_in, towers_of
 from exactsym.gathering.world import World
 
 Q = MQ.rational

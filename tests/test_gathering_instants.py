@@ -10,10 +10,12 @@ from hypothesis import given, settings, strategies as st
 
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
-from exactsym.gathering.instants import (critical_roots, look_points, mirror_lines,
-                                         motion_of, point_param)
+from exactsym.gathering.instants import critical_roots, look_points
+from exactsym.gathering.motion import motion_of, point_param
+from exactsym.gathering.point_sets import mirror_lines
 from exactsym.gathering.invariants import Checker
-from exactsym.gathering.polyroots import (mq_sqrt, peval, pmul, roots_in_unit, separate)
+from exactsym.exact.algebraic.polynomials import peval, pmul
+from exactsym.exact.algebraic.roots import mq_sqrt, roots_in_unit, separate
 from exactsym.gathering.robot import Readings
 from exactsym.gathering.world import World
 
@@ -433,7 +435,7 @@ def test_a_quadratic_with_no_root_inside_is_skipped_before_its_square_root(cs, d
     """polyroots._none_inside (signs of the ends, the vertex and the discriminant) says
     "none" exactly when Sturm's isolation finds no root of the quadratic in (0, 1): the
     early exit changes no list."""
-    from exactsym.gathering.polyroots import _isolate, _none_inside
+    from exactsym.exact.algebraic.roots import _isolate, _none_inside
     c, b, a = (Q(F(k, den)) for k in cs)
     if rad:
         b = b + S2
@@ -453,7 +455,7 @@ def test_a_quadratic_with_no_root_inside_is_skipped_before_its_square_root(cs, d
 def test_the_quadratic_count_on_ties_at_the_ends_and_double_roots(r1, r2, lead, shift):
     """Roots placed on the ends, equal to each other, or moved by sqrt 2 / 10: the sign
     count agrees with Sturm's isolation (double roots included)."""
-    from exactsym.gathering.polyroots import _isolate, _none_inside
+    from exactsym.exact.algebraic.roots import _isolate, _none_inside
     a = Q(F(lead))
     s = Q(F(r1 + r2)) + (S2 / 10 if shift else Q(F(0)))
     p = (a * Q(F(r1 * r2)), -(a * s), a)
@@ -470,7 +472,7 @@ def test_the_quadratic_count_on_ties_at_the_ends_and_double_roots(r1, r2, lead, 
 def test_gcd_with_a_linear_factor_is_division_free_and_exact(line, cofactor, divisible, rad):
     """polyroots.pgcd with a linear argument (the homogeneous evaluation at its root)
     finds the common factor exactly when Euclid's remainder vanishes."""
-    from exactsym.gathering.polyroots import pdivmod, pgcd, pmul, trim
+    from exactsym.exact.algebraic.polynomials import pdivmod, pgcd, pmul, trim
     lin = (Q(F(line[0])) + (S2 if rad else Q(F(0))), Q(F(line[1])))
     other = trim(tuple(Q(F(k)) for k in cofactor))
     if divisible:
@@ -494,7 +496,7 @@ def test_gcd_with_a_linear_factor_is_division_free_and_exact(line, cofactor, div
 def test_the_pseudo_remainder_gcd_finds_a_planted_common_factor(common, u, v, rad):
     """pgcd(c u, c v) is c up to a factor when u and v are coprime (checked by their
     resultant-free test: their gcd is a constant), and has c's degree."""
-    from exactsym.gathering.polyroots import pgcd, pmul, trim
+    from exactsym.exact.algebraic.polynomials import pgcd, pmul, trim
     def poly(ks, shift=False):
         return trim(tuple(Q(F(k)) + (S2 if shift and i == 0 else Q(F(0)))
                           for i, k in enumerate(ks)))
@@ -514,7 +516,8 @@ def test_the_pseudo_remainder_gcd_finds_a_planted_common_factor(common, u, v, ra
 def test_the_squarefree_filter_never_passes_a_square_factor(u, v, square, rad):
     """polyroots._surely_squarefree proves square-freeness only: never True for u^2 v,
     and squarefree() keeps the same distinct roots whether the filter answers or not."""
-    from exactsym.gathering.polyroots import _surely_squarefree, pgcd, pderiv, pmul, trim
+    from exactsym.exact.algebraic.polynomials import pgcd, pderiv, pmul, trim
+    from exactsym.exact.algebraic.sturm import surely_squarefree as _surely_squarefree
     def poly(ks, shift=False):
         return trim(tuple(Q(F(k)) + (S2 if shift and i == 0 else Q(F(0)))
                           for i, k in enumerate(ks)))

@@ -17,7 +17,7 @@ from hypothesis import given, settings, strategies as st
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
 from exactsym.gathering import joint_instants, joint_symmetry
-from exactsym.gathering.instants import motion_of
+from exactsym.gathering.motion import motion_of
 from exactsym.gathering.invariants import Checker, Violation
 from exactsym.gathering.joint_instants import joint_critical_roots
 from exactsym.gathering.joint_relations import (centroid_motion, circumcentre_motion,
@@ -25,9 +25,9 @@ from exactsym.gathering.joint_relations import (centroid_motion, circumcentre_mo
                                                 still, tie_about)
 from exactsym.gathering.joint_symmetry import image_polys
 from exactsym.gathering.pattern import recognise
-from exactsym.gathering.polyroots import peval
+from exactsym.exact.algebraic.polynomials import peval
 from exactsym.gathering.robot import Decision, Move, Readings
-from exactsym.gathering.tower_numbers import is_tower
+from exactsym.exact.algebraic.tower_numbers import is_tower
 from exactsym.gathering.world import IDENTITY, Frame, World
 
 P = g.point
@@ -164,7 +164,7 @@ def _mirror_diagonal(pts):
 
 def _swap_instant():
     """The arc parameter of (0, 20) on robot 4's arc (the rational rotation's)."""
-    from exactsym.gathering.instants import point_param
+    from exactsym.gathering.motion import point_param
     return point_param(SWAP_PIECES[4], P(0, 20))
 
 
@@ -279,7 +279,7 @@ def test_relations_about_moving_points_have_the_signs_of_their_definitions(p1, p
     pa, pb, pq = p1.at(t), p2.at(t), P(qx, qy)
     if g.cross(g.sub(pb, pa), g.sub(pq, pa)).is_zero():
         return
-    cc, _ = g._circle3(pa, pb, pq)
+    cc, _ = g.circumcircle(pa, pb, pq)
     circ = circumcentre_motion(a, b, q)
     assert (peval(circ.nx, t) / peval(circ.d, t), peval(circ.ny, t) / peval(circ.d, t)) == cc
     mid = midpoint_motion(a, b)

@@ -17,7 +17,8 @@ from exactsym.gathering.joint_instants import (joint_critical_roots, joint_look_
                                                still)
 from exactsym.gathering.joint_symmetry import (centroid_tie, mirror_pair_poly,
                                                rotations_of, symmetry_polys)
-from exactsym.gathering.polyroots import peval, roots_in_unit
+from exactsym.exact.algebraic.polynomials import peval
+from exactsym.exact.algebraic.roots import roots_in_unit
 from exactsym.gathering.robot import Readings
 from exactsym.gathering.world import Frame, World
 

@@ -12,13 +12,15 @@ from hypothesis import assume, given, settings, strategies as st
 
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
-from exactsym.gathering import quartic_instants
-from exactsym.gathering.algebraic_instants import _stable, factor_over_k, is_algebraic
+from exactsym.exact.algebraic import quartic as quartic_instants, roots as root_isolation
+from exactsym.exact.algebraic.algebraic_numbers import is_algebraic
+from exactsym.exact.algebraic.factor import factor_over_k, stable as _stable
 from exactsym.gathering.joint_instants import joint_look_points
-from exactsym.gathering.polyroots import pderiv, peval, pgcd, roots_in_unit
-from exactsym.gathering.quartic_instants import _shift, depressed, quartic_root, resolvent
+from exactsym.exact.algebraic.polynomials import pderiv, peval, pgcd, shift as _shift
+from exactsym.exact.algebraic.roots import roots_in_unit
+from exactsym.exact.algebraic.quartic import depressed, quartic_root, resolvent
 from exactsym.gathering.robot import Readings
-from exactsym.gathering.tower_numbers import is_tower
+from exactsym.exact.algebraic.tower_numbers import is_tower
 from exactsym.gathering.world import World
 
 Q = MQ.rational
@@ -185,7 +187,7 @@ def test_a_d4_distance_tie_of_a_joint_step_is_checked_at_the_instant(monkeypatch
         assert rel(tau) == 0                                  # exactly the tie
         assert rel(points[k - 1].tau) != 0 and rel(points[k + 1].tau) != 0
     # without the Ferrari hook (as before): both ties seen on both sides only
-    monkeypatch.setattr(quartic_instants, "quartic_root", lambda f, lo, hi: None)
+    monkeypatch.setattr(root_isolation, "quartic_root", lambda f, lo, hi: None)
     points, sided = joint_look_points({0: seg, 1: arc}, w)
     assert sided == 2
     assert not any(jp.exact and "as far from C" in jp.where for jp in points)

@@ -12,11 +12,12 @@ from exactsym.exact.mq_closure import decided_sqrt
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import geometry as g
 from exactsym.gathering.invariants import Checker
-from exactsym.gathering.polyroots import roots_in_unit
+from exactsym.exact.algebraic.roots import roots_in_unit
 from exactsym.gathering.robot import Readings, decide, radial_point
-from exactsym.gathering.run_tower import (RunHome, RunTower, common_tower, home,
-                                          home_point, sqrt_exact, towers_of)
-from exactsym.gathering.tower_numbers import is_tower
+from exactsym.exact.algebraic.norms import tower_norm
+from exactsym.exact.algebraic.run_tower import RunTower, home, sqrt_exact
+from exactsym.gathering.run_home import RunHome, common_tower, home_point, towers_of
+from exactsym.exact.algebraic.tower_numbers import is_tower
 from exactsym.gathering.world import IDENTITY, World
 
 Q = MQ.rational
@@ -175,8 +176,8 @@ def test_joint_motion_of_a_tower_piece_is_exact():
     low = g.Segment((Q(-9), Q(-3)), (Q(6), Q(-3)))
     assert g.joint_motion_overlap(seg, low) is None
     gap = g.joint_gap_polynomial(seg, low)
-    assert all(c is not None for c in gap) and len(g._tower_norm(gap)) == 2 * len(gap) - 1
-    assert all(isinstance(c, MQ) for c in g._tower_norm(gap))
+    assert all(c is not None for c in gap) and len(tower_norm(gap)) == 2 * len(gap) - 1
+    assert all(isinstance(c, MQ) for c in tower_norm(gap))
 
 
 def test_a_rational_run_reaches_a_nested_radical_target_and_goes_on():

@@ -387,7 +387,7 @@ def test_I4_fires_inside_a_joint_step_and_holds():
 # -- I3 compares a fresh Look with the plan of the mover's own Look ----------------------
 def test_I3_under_A3_all_asks_for_the_mover_and_its_target():
     from exactsym.gathering.invariants import _names_the_mover
-    from exactsym.gathering.run_tower import RunHome
+    from exactsym.gathering.run_home import RunHome
     home = RunHome()                                # compares the targets
     a, b, c = P(3, -4), P(1, 1), P(5, 5)
     looked = {0: ("MakeAsym", a), 3: ("leader", b)}                # A3 = all: two movers

@@ -13,7 +13,7 @@ from exactsym.exact.multiquadratic import MQ
 from exactsym.gathering import geometry as g
 from exactsym.gathering.instants import critical_roots, look_points
 from exactsym.gathering.invariants import Checker, Violation
-from exactsym.gathering.polyroots import peval
+from exactsym.exact.algebraic.polynomials import peval
 from exactsym.gathering.robot import Readings
 from exactsym.gathering.world import Frame, World
 

@@ -1,5 +1,5 @@
 """Critical instants that need a nested radical, checked at the instant
-(exactsym.gathering.tower_numbers, polyroots.exact_root_hook): the root is a tower
+(exactsym.exact.algebraic.tower_numbers, roots.exact_root_hook): the root is a tower
 number, the mover's point there has tower coordinates, and the fresh Look runs on them;
 an invariant that fails only at such an instant is caught with the exact witness; an
 exact similarity of the whole scene changes nothing."""
@@ -15,9 +15,10 @@ from exactsym.gathering import geometry as g
 from exactsym.gathering.instants import look_points
 from exactsym.gathering.invariants import Checker, Violation
 from exactsym.gathering.pattern import recognise
-from exactsym.gathering.polyroots import mq_sqrt, peval, pmul, roots_in_unit
+from exactsym.exact.algebraic.polynomials import peval, pmul
+from exactsym.exact.algebraic.roots import mq_sqrt, roots_in_unit
 from exactsym.gathering.robot import Decision, Move, Readings
-from exactsym.gathering.tower_numbers import TowerNumber, is_tower, tower_sqrt
+from exactsym.exact.algebraic.tower_numbers import TowerNumber, is_tower, tower_sqrt
 from exactsym.gathering.world import IDENTITY, World
 
 Q = MQ.rational
@@ -209,7 +210,7 @@ def test_numbers_of_two_towers_are_never_declared_different():
     (ValueError: the decision that needs it is undecided) rather than a wrong one."""
     import pytest
     from exactsym.exact.multiquadratic import MQ, sqrt_rational
-    from exactsym.gathering.tower_numbers import mq_sqrt_any
+    from exactsym.exact.algebraic.tower_numbers import mq_sqrt_any
     r = MQ.rational(5) + 4 * sqrt_rational(2)
     a, b = mq_sqrt_any(r), 2 * mq_sqrt_any(r / 4)
     assert a.tower is not b.tower

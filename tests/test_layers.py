@@ -17,10 +17,8 @@ PACKAGE = ROOT / "exactsym"
 #: xfail, so the line must go when its package is mended
 NOT_YET = {
     ("circle", "exact"),
-    ("circle", "gathering"),
     ("circle", "report"),
     ("private", "exact"),
-    ("private", "gathering"),
     ("private", "geometry"),
     ("private", "paper"),
     ("length", "exact"),

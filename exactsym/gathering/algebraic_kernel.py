@@ -3,15 +3,15 @@
 The paper layer (:mod:`.paper_bridge`) reads a snapshot through the kernel
 (:mod:`exactsym.exact`): rationals, multiquadratic numbers, towers, and general number
 fields ``Q(gamma)`` (:class:`~exactsym.exact.field.NumberField`, exact arithmetic modulo
-gamma's minimal polynomial over Q, signs by Arb).  A snapshot taken at a root ``alpha``
-of a cubic or quartic factor (:mod:`.algebraic_instants`) holds numbers of ``L =
-K(alpha)``, ``K = Q(sqrt b_1, ..., sqrt b_m)`` the multiquadratic field of every square
-root in the snapshot and in alpha's polynomial ``f``.  :func:`kernel_configuration`
-writes it in one kernel field:
+gamma's minimal polynomial over Q, signs by Arb).  A snapshot taken at a root ``alpha`` of
+a cubic or quartic factor (:mod:`~exactsym.exact.algebraic.algebraic_numbers`) holds
+numbers of ``L = K(alpha)``, ``K = Q(sqrt b_1, ..., sqrt b_m)`` the multiquadratic field
+of every square root in the snapshot and in alpha's polynomial ``f``.
+:func:`kernel_configuration` writes it in one kernel field:
 
 * ``[L:Q] = d 2^m`` (``d = deg f``; ``f`` stays irreducible over every multiquadratic
-  field, :mod:`.algebraic_instants`), with the basis ``alpha^i sqrt(s)``, ``s`` running
-  over the ``2^m`` square-free products of the ``b_j``;
+  field, :mod:`~exactsym.exact.algebraic.algebraic_numbers`), with the basis ``alpha^i
+  sqrt(s)``, ``s`` running over the ``2^m`` square-free products of the ``b_j``;
 * ``gamma = alpha + c theta`` (``theta = sum sqrt b_j``, ``c = 0, 1, 2, ...``) is a
   primitive element as soon as its powers ``1, ..., gamma^(D-1)`` are linearly
   independent (an exact rational determinant); ``gamma^D`` in that basis gives its
@@ -26,10 +26,12 @@ from __future__ import annotations
 
 from flint import fmpq, fmpq_mat, fmpq_poly
 
+from ..exact.algebraic.algebraic_numbers import AlgebraicNumber, is_algebraic
+from ..exact.algebraic.factor import group_basis
 from ..exact.evaluate import FieldSystem
 from ..exact.field import NumberField
 from ..exact.multiquadratic import MQ
-from .algebraic_instants import AlgebraicNumber, _group_basis, is_algebraic
+from ..geometry.configuration import Configuration
 
 __all__ = ["kernel_field", "kernel_configuration"]
 
@@ -62,7 +64,7 @@ def kernel_field(root, numbers):
     :class:`AlgebraicNumber` of ``root``): the kernel field ``Q(gamma) = L`` and the map
     from them to its elements (exact).  The same root and square roots give the same
     field object (a Look's checks meet one instant several times)."""
-    basis, _ = _group_basis(list(root.f) + [c for x in numbers
+    basis, _ = group_basis(list(root.f) + [c for x in numbers
                                       for c in (x.c if is_algebraic(x) else (x,))])
     cache = root.__dict__.setdefault("_kernel_fields", {})
     if basis not in cache:
@@ -108,7 +110,6 @@ def kernel_configuration(points):
     """A kernel :class:`~exactsym.geometry.configuration.Configuration` of the snapshot ``points``
     (pairs of MQ and :class:`AlgebraicNumber` numbers of one root), in a
     :class:`~exactsym.exact.evaluate.FieldSystem` over ``Q(gamma)``."""
-    from ..geometry.configuration import Configuration
     roots = {x.root for p in points for x in p if is_algebraic(x)}
     if len(roots) != 1:
         raise ValueError("kernel_configuration: the points hold no number of one K(alpha)")

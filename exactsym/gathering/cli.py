@@ -21,6 +21,7 @@ from .invariants import ALL
 from .paper_bridge import GatheringInputError, read_case
 from .robot import READINGS, Readings
 from .schedulers import SCHEDULERS, TraceMismatch
+from .search import search_violation
 from .trace import read_trace, replay, result_dict, same_result, trace_points, write_trace
 
 
@@ -165,7 +166,6 @@ def run(args) -> int:
         return _fail(str(err))
     note = None
     if args.search:
-        from .search import search_violation
         found = search_violation(points, settings)
         if found is not None:
             note = (f"search: a shortest violating schedule found, {len(found.actions)} "

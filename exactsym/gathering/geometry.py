@@ -19,12 +19,19 @@ Predicates (CGAL style: they return bools or small ints and are exact):
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import cached_property
 
-from ..exact.multiquadratic import MQ, mq, sqrt_rational, sum_of_products
-from ..exact.tower import neg as tuple_neg
-from .polyroots import padd, peval, pmul, pscale, trim
+import numpy as np
+
+from ..exact.algebraic.interface import (float_and_error, motion_number, products_are_large,
+                                         two_products)
+from ..exact.algebraic.norms import negative_instant
+from ..exact.algebraic.polynomials import padd, pmul, pscale, trim
+from ..exact.multiquadratic import MQ, mq, sqrt_rational
+from ..geometry import sec
+from ..geometry.predicates import circumcentre
 
 Point = tuple  # (MQ, MQ)
 
@@ -48,53 +55,35 @@ def scale(p, s):
     return (p[0] * s, p[1] * s)
 
 
-def _fused(a, b, c, d) -> bool:
-    """Are ``a b`` and ``c d`` MQ products big enough to sum over integers first
-    (:func:`~exactsym.exact.multiquadratic.sum_of_products`: the same element, one gcd
-    per term of the sum instead of one per term of each product and of the sum)?"""
-    ta = getattr(a, "terms", None)         # MQ's dictionary (a tower number has none)
-    if ta is None or len(ta) < 2 and len(c.terms if type(c) is MQ else ()) < 2:
-        return False
-    return (type(a) is MQ and type(b) is MQ and type(c) is MQ and type(d) is MQ
-            and len(ta) * len(b.terms) + len(c.terms) * len(d.terms) >= _FUSED)
-
-
-_FUSED = 16
-
-
 def dot(u, v):
-    if _fused(u[0], v[0], u[1], v[1]):
-        return sum_of_products(((1, u[0], v[0]), (1, u[1], v[1])))
-    return u[0] * v[0] + u[1] * v[1]
+    return two_products(u[0], v[0], u[1], v[1], 1)
 
 
 def cross(u, v):
-    if _fused(u[0], v[1], u[1], v[0]):
-        return sum_of_products(((1, u[0], v[1]), (-1, u[1], v[0])))
-    return u[0] * v[1] - u[1] * v[0]
+    return two_products(u[0], v[1], u[1], v[0], -1)
 
 
 def dist2(p, q):
-    if _fused(p[0], q[0], p[1], q[1]):
-        key = (id(p), id(q))
-        hit = _DIST2.get(key)
-        if hit is not None and hit[0] is p and hit[1] is q:
-            return hit[2]
+    if products_are_large(p[0], q[0], p[1], q[1]):
+        key = (p, q)
+        out = _DIST2.get(key)
+        if out is not None:
+            return out
         d = sub(p, q)
         out = dot(d, d)
         if len(_DIST2) >= _DIST2_MAX:
             _DIST2.clear()
-        _DIST2[key] = (p, q, out)
+        _DIST2[key] = out
         return out
     d = sub(p, q)
     return dot(d, d)
 
 
-#: dist2 of the same two point objects (a decision measures a robot's distance to the
-#: centre in the recogniser, in R's distances and in the centre rule): remembered by
-#: identity, each entry holding its points (so no id is reused while it is kept); only
-#: for MQ coordinates with several terms (a point is an immutable tuple of numbers that
-#: never change; small ones cost less than the look-up)
+#: dist2 of the same two points (a decision measures a robot's distance to the centre in
+#: the recogniser, in R's distances and in the centre rule): remembered by value, bounded;
+#: only for MQ coordinates with several terms (their hashes are remembered, and a key
+#: met again is usually the same object, found without comparing; small ones cost less
+#: than the look-up)
 _DIST2: dict = {}
 _DIST2_MAX = 1 << 12
 
@@ -283,53 +272,21 @@ def fmt_point(p) -> str:
     return f"({p[0].text()}, {p[1].text()})"
 
 
-# -- the smallest enclosing circle over multiquadratic points -------------------------
-def _circle2(a, b):
-    c = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
-    return c, dist2(c, a)
-
-
-def _circle3(a, b, c):
-    ab, ac = sub(b, a), sub(c, a)
-    d = cross(ab, ac) * 2
-    if d.is_zero():          # collinear: the circle on the farthest pair
-        pairs = [(a, b), (a, c), (b, c)]
-        far = pairs[0]
-        for p in pairs[1:]:
-            if dist2(*p) > dist2(*far):
-                far = p
-        return _circle2(*far)
-    b2, c2 = dot(ab, ab), dot(ac, ac)
-    ux = (b2 * ac[1] - c2 * ab[1]) / d
-    uy = (c2 * ab[0] - b2 * ac[0]) / d
-    centre = (a[0] + ux, a[1] + uy)
+# -- the smallest enclosing circle: the one of exactsym.geometry.sec ------------------
+def circumcircle(a, b, c):
+    """``(centre, radius^2)`` of the circle through three points that are not collinear."""
+    centre = circumcentre(a, b, c)
     return centre, dist2(centre, a)
 
 
 def smallest_enclosing_circle(points) -> tuple:
-    """``(centre, radius^2)`` of the SEC of MQ points (Welzl, iterative move-to-front, in a
-    fixed pseudo-random order; the SEC is unique so the order does not matter)."""
-    import random
-    order = list(range(len(points)))
-    random.Random(len(points)).shuffle(order)
-    pts = [points[i] for i in order]
-
-    def inside(circ, p):
-        return (dist2(circ[0], p) - circ[1]).sign() <= 0
-
-    circ = (pts[0], ZERO)
-    for i in range(1, len(pts)):
-        if inside(circ, pts[i]):
-            continue
-        circ = (pts[i], ZERO)
-        for j in range(i):
-            if inside(circ, pts[j]):
-                continue
-            circ = _circle2(pts[i], pts[j])
-            for k in range(j):
-                if not inside(circ, pts[k]):
-                    circ = _circle3(pts[i], pts[j], pts[k])
-    return circ
+    """``(centre, radius^2)`` of the SEC of the points (distinct; MQ, tower or K(alpha)
+    coordinates): :func:`exactsym.geometry.sec.smallest_enclosing_circle`, the checker's
+    own, so that the simulator and the paper layer it calls agree on one implementation;
+    a rational centre or radius comes back as an MQ."""
+    circle = sec.smallest_enclosing_circle(list(points))
+    x, y = circle.centre
+    return (motion_number(x), motion_number(y)), motion_number(circle.radius_squared)
 
 
 # -- two discs moving at once (simultaneous motion, I1 in continuous time) -------------
@@ -337,7 +294,7 @@ def smallest_enclosing_circle(points) -> tuple:
 # (X(tau), Y(tau)) / W(tau) with multiquadratic coefficients: a segment linearly
 # (W = 1); an arc by the rational rotation of half-angle tangent k*tau, k the tangent of
 # the whole arc's half angle (what ``Arc.at`` does), W = 1 + k^2 tau^2.  Polynomials are
-# coefficient lists, lowest degree first (:mod:`.polyroots`' arithmetic).
+# coefficient lists, lowest degree first (:mod:`~exactsym.exact.algebraic.polynomials`).
 
 
 def piece_motion(piece):
@@ -367,99 +324,6 @@ def joint_gap_polynomial(piece1, piece2, d2=4):
     dy = padd(pmul(y1, w2), pscale(pmul(y2, w1), -ONE))
     ww = pmul(w1, w2)
     return trim(padd(padd(pmul(dx, dx), pmul(dy, dy)), pscale(pmul(ww, ww), -mq(d2))))
-
-
-def _tower_norm(f):
-    """For coefficients in a tower of nested radicals (a run's positions after a
-    nested-radical radial move, :mod:`.run_tower`): the product of ``f``'s conjugates
-    over the tower's levels, top level first (``y_L -> -y_L`` is an automorphism of K_L
-    over K_(L-1), and the product ``f * conj(f)`` has its coefficients in K_(L-1)): MQ
-    coefficients, every real root of ``f`` among its roots.  ``f`` unchanged when its
-    coefficients are MQ."""
-    towers = {id(a.tower): a.tower for a in f if hasattr(a, "tower")}
-    if not towers:
-        return f
-    if len(towers) > 1:
-        raise ValueError("a polynomial over two towers of nested radicals")
-    (tower,) = towers.values()
-    for lev in range(tower.levels, 0, -1):
-        f = trim(pmul(f, [_conjugate_level(a, lev) for a in f]))
-    return f
-
-
-def _conjugate_level(a, lev: int):
-    """``a`` (of level <= ``lev``) with the generator of level ``lev`` negated."""
-    v = getattr(a, "v", None)
-    if type(v) is not tuple or v[0] != lev:
-        return a
-    return a._new((lev, v[1], tuple_neg(v[2])))
-
-
-def _rational_norm(f):
-    """The product of the Galois conjugates of ``f``: rational coefficients, and every
-    real root of ``f`` is one of its roots (over a tower: :func:`_tower_norm` first)."""
-    from ..exact.multiquadratic import _coprime_base
-    f = _tower_norm(f)
-    rads = sorted({m for a in f for m in a.radicands()})
-    for b in _coprime_base(rads):
-        f = trim(pmul(f, [a.conjugate(b) for a in f]))
-    return [a.to_fmpq() for a in f]
-
-
-def _dyadic(x):
-    from flint import fmpq
-    man, exp = x.man_exp()
-    return fmpq(man) * fmpq(2) ** int(exp) if exp >= 0 else fmpq(man, 2 ** int(-exp))
-
-
-def _simplest_between(lo, hi):
-    """The rational with the smallest denominator strictly between ``lo < hi``
-    (continued fractions): short witnesses."""
-    from fractions import Fraction
-    from flint import fmpq
-
-    def inner(a, b):
-        fl = a.numerator // a.denominator
-        if fl + 1 < b:
-            return Fraction(fl + 1)
-        if a == fl:
-            return fl + Fraction(1, int(1 / (b - fl)) + 1)
-        return fl + 1 / inner(1 / (b - fl), 1 / (a - fl))
-    x = inner(Fraction(int(lo.p), int(lo.q)), Fraction(int(hi.p), int(hi.q)))
-    return fmpq(x.numerator, x.denominator)
-
-
-def negative_instant(f):
-    """A rational ``tau`` in [0, 1] (a ``Fraction``, the earliest sample) with
-    ``f(tau) < 0``, or None when ``f >= 0`` on
-    all of [0, 1].  Exact: the real roots of ``f`` lie among those of its rational norm,
-    isolated by certified balls (python-flint's ``complex_roots``: real roots come with
-    an exactly zero imaginary part); between two consecutive roots ``f`` keeps its sign,
-    so one rational sample per gap, evaluated exactly, decides."""
-    from flint import fmpq, fmpq_poly
-    f = trim(f)
-    if not f:
-        return None                                   # f = 0: touching all along
-    samples = [fmpq(0), fmpq(1)]
-    if len(f) > 1:
-        norm = fmpq_poly(_rational_norm(f))
-        bounds = [(fmpq(0), fmpq(0))]
-        for root, _mult in norm.numer().complex_roots():
-            if not (root.imag.is_exact() and root.imag == 0):
-                continue
-            lo, hi = _dyadic(root.real.lower()), _dyadic(root.real.upper())
-            if hi > 0 and lo < 1:
-                bounds.append((lo, hi))
-        bounds.append((fmpq(1), fmpq(1)))
-        bounds.sort()
-        for (_, left), (right, _) in zip(bounds, bounds[1:]):
-            if left < right:
-                samples.append(_simplest_between(left, right))
-    for t in sorted(samples):
-        if 0 <= t <= 1 and peval(f, MQ.rational(t)).sign() < 0:
-            from fractions import Fraction
-            return Fraction(int(t.p), int(t.q))
-    return None
 
 
 def _piece_disc(piece):
@@ -499,27 +363,13 @@ def joint_motion_overlap(piece1, piece2, d2=4):
 # further double operation errs by 2^-53 relatively, a few of them per test); NaN or
 # infinity (overflow) compares False and sends the pair to the exact test.
 
-def _approx(x):
-    terms = getattr(x, "terms", None)
-    if terms is None:
-        # a tower number (nested radical, gathering.tower_numbers): its Arb ball's centre,
-        # within the ball's radius plus the centre's rounding to a double
-        ball = x.enclosure(64)
-        mid = float(ball.mid())
-        return mid, 2 * (float(ball.rad()) + 2.0 ** -52 * abs(mid)) + 1e-300
-    vals = [float(c) * float(m) ** 0.5 for m, c in terms.items()]
-    s = sum(abs(v) for v in vals)
-    return sum(vals), 2 * (len(vals) + 6) * 2.0 ** -52 * s
-
-
 def approx_points(pts):
     """``(X, Y, E)``: NumPy arrays of the centres' doubles and a bound on the error of
     each coordinate."""
-    import numpy as np
     xs, ys, es = [], [], []
     for p in pts:
         try:
-            (x, ex), (y, ey) = _approx(p[0]), _approx(p[1])
+            (x, ex), (y, ey) = float_and_error(p[0]), float_and_error(p[1])
         except OverflowError:
             x = y = ex = ey = float("nan")
         xs.append(x)
@@ -531,7 +381,6 @@ def approx_points(pts):
 def maybe_touching_pairs(pts, unit) -> list:
     """A superset of the pairs ``(i, j)``, ``i < j``, of centres exactly ``2 unit``
     apart: the pairs the doubles cannot separate from ``4 unit^2``."""
-    import numpy as np
     X, Y, E = approx_points(pts)
     four = 4.0 * float(unit) ** 2
     dx, dy = X[:, None] - X[None, :], Y[:, None] - Y[None, :]
@@ -555,13 +404,12 @@ def touching_pairs(pts, unit) -> list:
 def farthest_candidates(approx, centre, among) -> list:
     """The robots of ``among`` that may be the farthest from ``centre`` (a point): every
     robot left out is certainly nearer than one kept (the doubles' error bounds)."""
-    import numpy as np
     X, Y, E = approx
     idx = np.array(list(among), dtype=int)
     if len(idx) == 0:
         return []
     try:
-        (cx, ex), (cy, ey) = _approx(centre[0]), _approx(centre[1])
+        (cx, ex), (cy, ey) = float_and_error(centre[0]), float_and_error(centre[1])
     except OverflowError:
         return list(among)
     d = np.hypot(X[idx] - cx, Y[idx] - cy)
@@ -577,7 +425,6 @@ def robots_near_piece(piece, approx, d) -> list:
     """Indices of the robots that may come within ``d`` (a float) of ``piece``: every
     robot left out is certainly farther than ``d`` from every point of it, by the lower
     bound of :func:`_piece_lower_bound` computed for all robots at once."""
-    import numpy as np
     X, Y, E = approx
     try:
         geo = _piece_frame(piece)
@@ -590,15 +437,15 @@ def robots_near_piece(piece, approx, d) -> list:
 def _piece_frame(piece):
     """Doubles describing a piece for the filters, with the error bound ``sigma`` of
     its points' coordinates: ``(kind, mx, my, h, ux, uy, cx, cy, r, sigma)``."""
-    (sx, es), (sy, fs) = _approx(piece.start[0]), _approx(piece.start[1])
-    (tx, et), (ty, ft) = _approx(piece.end[0]), _approx(piece.end[1])
+    (sx, es), (sy, fs) = float_and_error(piece.start[0]), float_and_error(piece.start[1])
+    (tx, et), (ty, ft) = float_and_error(piece.end[0]), float_and_error(piece.end[1])
     sigma = es + fs + et + ft
     mx, my = (sx + tx) / 2, (sy + ty) / 2
     h = ((sx - tx) ** 2 + (sy - ty) ** 2) ** 0.5 / 2
     if isinstance(piece, Segment):
         ux, uy = ((tx - sx) / (2 * h), (ty - sy) / (2 * h)) if h > 1e-6 else (0.0, 0.0)
         return ("segment", mx, my, h, ux, uy, 0.0, 0.0, 0.0, sigma)
-    (cx, ec), (cy, fc) = _approx(piece.centre[0]), _approx(piece.centre[1])
+    (cx, ec), (cy, fc) = float_and_error(piece.centre[0]), float_and_error(piece.centre[1])
     r = ((sx - cx) ** 2 + (sy - cy) ** 2) ** 0.5
     return ("arc", mx, my, h, 0.0, 0.0, cx, cy, r, sigma + ec + fc)
 
@@ -638,11 +485,10 @@ def _certainly_far(piece, q, d2) -> bool:
     """A filter for :func:`piece_hits`: ``q`` is certainly farther than ``sqrt(d2)``
     from every point of the piece (:func:`_piece_lower_bound` in doubles); False when
     the doubles cannot tell (or overflow)."""
-    import math
     try:
         geo = _piece_frame(piece)
-        (qx, eq), (qy, gq) = _approx(q[0]), _approx(q[1])
-        r2, er = _approx(d2)
+        (qx, eq), (qy, gq) = float_and_error(q[0]), float_and_error(q[1])
+        r2, er = float_and_error(d2)
     except OverflowError:
         return False
     r = max(r2 + er, 0.0) ** 0.5 * (1 + 1e-12)
@@ -653,10 +499,9 @@ def maybe_on_layers(approx, centre, unit) -> list:
     """Indices of the robots that may lie exactly at C or at a distance ``2 L unit`` from
     ``centre`` for an integer L >= 1 (every robot left out certainly does not): the
     robots a pattern about ``centre`` can contain."""
-    import numpy as np
     X, Y, E = approx
     try:
-        (cx, ex), (cy, ey) = _approx(centre[0]), _approx(centre[1])
+        (cx, ex), (cy, ey) = float_and_error(centre[0]), float_and_error(centre[1])
     except OverflowError:
         return list(range(len(X)))
     two = 2.0 * float(unit)

@@ -6,21 +6,21 @@ isolate its roots in (0, 1); most relations have none there.  Building them exac
 products of coefficients of up to 256 terms and thousands of bits; a ball of each
 coefficient, from the balls of the motion and of the points, costs a few Arb operations.
 
-Soundness: every kernel number's ``enclosure`` is a rigorous ball, and interval
-arithmetic keeps the exact value inside every ball it computes.  So when
-:func:`~.polyroots.balls_clear_unit` proves that no polynomial with coefficients in the
-balls has a root in [0, 1], the exact relation has none in (0, 1), and leaving it out
-changes nothing (:func:`~.polyroots.roots_of` reads only roots); likewise a robot proved
-strictly outside a circle (a ball of ``|c - p|^2 - r^2`` above 0) is what the exact test
-``encloses`` would find.  A ball that cannot decide sends the case to the exact code,
-unchanged.
+Soundness: every kernel number's ``enclosure`` is a rigorous ball, and interval arithmetic
+keeps the exact value inside every ball it computes.  So when
+:func:`~exactsym.exact.algebraic.sturm.balls_clear_unit` proves that no polynomial with
+coefficients in the balls has a root in [0, 1], the exact relation has none in (0, 1), and
+leaving it out changes nothing (:func:`~exactsym.exact.algebraic.roots.roots_of` reads
+only roots); likewise a robot proved strictly outside a circle (a ball of ``|c - p|^2 -
+r^2`` above 0) is what the exact test ``encloses`` would find.  A ball that cannot decide
+sends the case to the exact code, unchanged.
 """
 
 from __future__ import annotations
 
 from flint import arb, ctx
 
-from .polyroots import balls_clear_unit
+from ..exact.algebraic.sturm import balls_clear_unit
 
 PREC = 128
 

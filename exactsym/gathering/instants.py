@@ -4,7 +4,7 @@ A robot moves along one piece (segment or arc) while the others stand still.  Wh
 fresh Look sees changes only where some relation between the mover and the others
 changes; each such relation is a polynomial in the piece's parameter ``f`` (``f`` as in
 ``piece.at(f)``; on an arc the rational rotation's parameter, so a point at a rational
-``f`` stays in the field), and the instants are its roots (:mod:`.polyroots`).
+``f`` stays in the field), and the instants are its roots (:mod:`~exactsym.exact.algebraic.roots`).
 
 Families (each root carries a tag naming the family and the robots):
 
@@ -37,25 +37,25 @@ the rays and ties of every pair of R about the moving centre of that support, as
 joint step with one mover (:func:`.moving_centre.about_moving_sec`; the roots in that
 stretch).
 
-The list is a superset: a candidate where nothing happens costs a Look, a missed one
-would be a missed check.  :func:`look_points` returns every root's exact point when the
-kernel holds it, and one rational point in each open stretch between consecutive roots
-(before the first, after the last; half way when there is none), strictly inside the
-piece: in a stretch no relation above changes sign, so its Look stands for the whole
-stretch with respect to them.  A root that needs a nested radical is exact too: a number
-of a tower of quadratic extensions (:func:`.polyroots.exact_root_hook`,
-:mod:`.tower_numbers`), and the mover's point there has tower coordinates, on which the
-fresh Look (geometry, pattern, the paper layer) runs unchanged.  A root of an
-irreducible factor of degree 3 or more is exact too, a number of ``K(alpha)``
-(:mod:`.algebraic_instants`: the polynomial factored over its coefficients' field K,
-alpha's factor of odd degree or a quartic of group S4 or A4); a root of a quartic
-factor of group D4, C4 or V4 is a nested radical, a tower number again
-(:mod:`.quartic_instants`, Ferrari over K).  Only the other roots (other even degrees,
-a norm or gcd too large, a radicand whose root needs an integer of more than 160 bits
-that the bounded split of :mod:`~exactsym.exact.mq_closure` cannot tell) are seen on
-both sides only (``sided``).  Not enumerated: relations that involve neither C, nor an SEC (R's SEC
-centre, moving or not, included), a symmetry or a contact (the corrected variant's
-distance profiles, for example).
+The list is a superset: a candidate where nothing happens costs a Look, a missed one would
+be a missed check.  :func:`look_points` returns every root's exact point when the kernel
+holds it, and one rational point in each open stretch between consecutive roots (before
+the first, after the last; half way when there is none), strictly inside the piece: in a
+stretch no relation above changes sign, so its Look stands for the whole stretch with
+respect to them.  A root that needs a nested radical is exact too: a number of a tower of
+quadratic extensions (:func:`~exactsym.exact.algebraic.roots.exact_root_hook`,
+:mod:`~exactsym.exact.algebraic.tower_numbers`), and the mover's point there has tower
+coordinates, on which the fresh Look (geometry, pattern, the paper layer) runs unchanged.
+A root of an irreducible factor of degree 3 or more is exact too, a number of ``K(alpha)``
+(:mod:`~exactsym.exact.algebraic.algebraic_numbers`: the polynomial factored over its
+coefficients' field K, alpha's factor of odd degree or a quartic of group S4 or A4); a
+root of a quartic factor of group D4, C4 or V4 is a nested radical, a tower number again
+(:mod:`~exactsym.exact.algebraic.quartic`, Ferrari over K).  Only the other roots (other
+even degrees, a norm or gcd too large, a radicand whose root needs an integer of more than
+160 bits that the bounded split of :mod:`~exactsym.exact.mq_closure` cannot tell) are seen
+on both sides only (``sided``).  Not enumerated: relations that involve neither C, nor an
+SEC (R's SEC centre, moving or not, included), a symmetry or a contact (the corrected
+variant's distance profiles, for example).
 """
 
 from __future__ import annotations
@@ -64,158 +64,23 @@ from dataclasses import dataclass
 
 from flint import ctx, fmpq
 
+from ..exact.algebraic.algebraic_numbers import is_algebraic
+from ..exact.algebraic.polynomials import padd, pgcd, pmul, pscale, psub
+from ..exact.algebraic.roots import bracket, roots_in_unit, roots_of
+from ..exact.algebraic.sturm import surely_no_root_in_unit
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from . import instant_balls as B
-from .algebraic_instants import is_algebraic, mixes
+from . import moving_centre
 from .instant_balls import MotionBall
-from .polyroots import (Root, padd, pgcd, pmul, pscale, psub, roots_in_unit,
-                        roots_of, surely_no_root_in_unit, trim)
+from .joint_relations import still as still_motion
+from .joint_symmetry import centroid_tie
+from .motion import (Motion, cross_poly, dist2_poly, dot_poly, may_leave, motion_of,
+                     point_param, reach)
+from .point_sets import centroid, hull_indices, mirror_lines, reflect
+from .run_home import instant_or_none, mixes
 
 ONE = MQ.rational(1)
-
-
-# -- a piece as a rational curve p(f) = N(f) / D(f) ------------------------------------
-@dataclass(frozen=True)
-class Motion:
-    nx: tuple
-    ny: tuple
-    d: tuple
-
-
-def motion_of(piece) -> Motion:
-    if isinstance(piece, g.Segment):
-        s, e = piece.start, piece.end
-        return Motion(trim((s[0], e[0] - s[0])), trim((s[1], e[1] - s[1])), (ONE,))
-    c = piece.centre
-    a = g.sub(piece.start, c)
-    b = g.sub(piece.end, c)
-    r2 = g.dot(a, a)
-    cos_t, sin_t = g.dot(a, b) / r2, g.cross(a, b) / r2
-    T = sin_t / (1 + cos_t)
-    T2 = T * T
-    # c (1 + T^2 f^2) + (1 - T^2 f^2) a + 2 T f J a,  J a = (-a_y, a_x)
-    nx = trim((c[0] + a[0], -2 * T * a[1], T2 * (c[0] - a[0])))
-    ny = trim((c[1] + a[1], 2 * T * a[0], T2 * (c[1] - a[1])))
-    return Motion(nx, ny, (ONE, MQ(), T2))
-
-
-def _rel(m: Motion, x):
-    """``(N - x D)``: D times the vector from ``x`` to the mover."""
-    return psub(m.nx, pscale(m.d, x[0])), psub(m.ny, pscale(m.d, x[1]))
-
-
-def dist2_poly(m: Motion, x, r2) -> tuple:
-    """``D^2 (|p - x|^2 - r2)``."""
-    u, v = _rel(m, x)
-    return psub(padd(pmul(u, u), pmul(v, v)), pscale(pmul(m.d, m.d), r2))
-
-
-def cross_poly(m: Motion, x, w) -> tuple:
-    """``D cross(p - x, w)``: zero where the mover is on the line through x along w."""
-    u, v = _rel(m, x)
-    return psub(pscale(u, w[1]), pscale(v, w[0]))
-
-
-def dot_poly(m: Motion, x, w) -> tuple:
-    u, v = _rel(m, x)
-    return padd(pscale(u, w[0]), pscale(v, w[1]))
-
-
-def point_param(piece, q):
-    """The parameter ``f`` in (0, 1) with ``piece.at(f) == q``, or None."""
-    if isinstance(piece, g.Segment):
-        d, v = g.sub(piece.end, piece.start), g.sub(q, piece.start)
-        if g.dot(d, d).is_zero() or not g.cross(d, v).is_zero():
-            return None
-        f = g.dot(d, v) / g.dot(d, d)
-    else:
-        a, v = g.sub(piece.start, piece.centre), g.sub(q, piece.centre)
-        if g.dot(a, a) != g.dot(v, v) or not piece.contains_direction(v):
-            return None
-        b = g.sub(piece.end, piece.centre)
-        r2 = g.dot(a, a)
-        T = (g.cross(a, b) / r2) / (1 + g.dot(a, b) / r2)
-        u = g.cross(a, v) / (r2 + g.dot(a, v))      # tan of half the angle a -> v
-        f = u / T
-    if f.sign() > 0 and (f - 1).sign() < 0:
-        return f
-    return None
-
-
-# -- static geometry of the others -----------------------------------------------------
-def hull_indices(pts: dict) -> list:
-    """Indices of the vertices of the convex hull of ``{index: point}`` (exact)."""
-    items = sorted(pts.items(), key=lambda kv: (float(kv[1][0]), float(kv[1][1]), kv[0]))
-    # the float key only orders the scan; ties and near-ties are settled below exactly
-    items = _exact_sort(items)
-
-    def turn(o, a, b):
-        return g.cross(g.sub(a, o), g.sub(b, o)).sign()
-
-    def chain(seq):
-        out = []
-        for k, p in seq:
-            while len(out) >= 2 and turn(out[-2][1], out[-1][1], p) <= 0:
-                out.pop()
-            out.append((k, p))
-        return out
-
-    lower, upper = chain(items), chain(items[::-1])
-    return sorted({k for k, _ in lower[:-1] + upper[:-1]} or {k for k, _ in items})
-
-
-def _exact_sort(items):
-    import functools
-
-    def cmp(x, y):
-        s = (x[1][0] - y[1][0]).sign() or (x[1][1] - y[1][1]).sign()
-        return s or (x[0] > y[0]) - (x[0] < y[0])
-    return sorted(items, key=functools.cmp_to_key(cmp))
-
-
-def _reflect(x, z, u):
-    v = g.sub(x, z)
-    k = g.dot(v, u) * 2 / g.dot(u, u)
-    return g.sub(g.add(z, g.scale(u, k)), v)
-
-
-def smallest_distance_group(pts, z) -> list:
-    """The robots of ``pts`` (other than ``z``) at the distance from ``z`` that the fewest
-    share: a symmetry about ``z`` maps the group onto itself, so its first robot's image
-    is one of them (empty when fewer than two robots are not at ``z``)."""
-    others = [p for p in pts if p != z]
-    if len(others) < 2:
-        return []
-    groups: dict = {}
-    for p in others:
-        groups.setdefault(g.dist2(p, z), []).append(p)
-    return min(groups.values(), key=len)
-
-
-def mirror_lines(pts, z) -> list:
-    """Directions ``u`` of the lines through ``z`` in which the point set ``pts`` is its
-    own mirror image (exact; every candidate line is tested on every point)."""
-    group = smallest_distance_group(pts, z)
-    if not group:
-        return []
-    y0 = group[0]
-    have = set(pts)
-    out: list = []
-    for y in group:
-        u = g.sub(y0, z) if y == y0 else g.sub(g.scale(g.add(y0, y), MQ.rational(fmpq(1, 2))), z)
-        if u[0].is_zero() and u[1].is_zero():
-            u = g.quarter(g.sub(y0, z), 1)
-        if any(g.cross(u, w).is_zero() for w in out):
-            continue
-        if all(_reflect(p, z, u) in have for p in pts):
-            out.append(u)
-    return out
-
-
-def _centroid(pts):
-    n = MQ.rational(len(pts))
-    return (sum((p[0] for p in pts), MQ()) / n, sum((p[1] for p in pts), MQ()) / n)
 
 
 # -- the families ------------------------------------------------------------------------
@@ -291,19 +156,11 @@ def _sec_family(m: Motion, static: dict, tag: str, sec=None) -> list:
                 a, b, c = H[x][1], H[y][1], H[z][1]
                 if g.cross(g.sub(b, a), g.sub(c, a)).is_zero():
                     continue
-                cc, r2 = g._circle3(a, b, c)
+                cc, r2 = g.circumcircle(a, b, c)
                 if encloses(cc, r2) and not rootless("dist2", cc, r2):
                     out.append((dist2_poly(m, cc, r2), f"{tag}: the mover on the circle "
                                 f"through robots {H[x][0]}, {H[y][0]}, {H[z][0]}"))
     return out
-
-
-def may_leave(m: Motion, c, r2) -> bool:
-    """Can the mover be strictly outside the circle (c, r2) at some time in [0, 1]?"""
-    e = dist2_poly(m, c, r2)
-    if not e:
-        return False
-    return sum(e, MQ()).sign() > 0 or e[0].sign() > 0 or bool(roots_in_unit(e))
 
 
 def _mover_may_support(m: Motion, static: dict, centre, sec) -> bool:
@@ -333,15 +190,15 @@ def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True, 
         polys.append((dist2_poly(m, centre, MQ()), "symmetry: the mover at C"))
     if not full:
         return polys, params
-    z = _centroid(pts)
+    z = centroid(pts)
     for u in mirror_lines(pts, z):
         polys.append((cross_poly(m, z, u), "symmetry: a mirror line of the others"))
     total = (sum((p[0] for p in pts), MQ()), sum((p[1] for p in pts), MQ()))
     for q_i, q in static.items():
         rest = [p for k, p in static.items() if k != q_i]
-        zq = _centroid(rest)
+        zq = centroid(rest)
         for u in mirror_lines(rest, zq):
-            f = point_param(piece, _reflect(q, zq, u))
+            f = point_param(piece, reflect(q, zq, u))
             if f is not None:
                 params.append((f, f"symmetry: the mirror image of robot {q_i}"))
     # rotations: the centroid of all meets the SEC centre
@@ -384,28 +241,6 @@ def _symmetry_family(piece, m: Motion, static: dict, centre, full: bool = True, 
     return polys, params
 
 
-def _reach(piece, x) -> tuple:
-    """Floats ``(lo, hi)`` with ``lo <= |p - x| <= hi`` for every point p of the piece,
-    widened by a margin far above the floats' error (1e-6 relative, 1e-6 absolute): they
-    only choose which polynomials to build (a layer, a tie or a contact outside the range
-    has no root), never decide an instant."""
-    def f(v):
-        return float(v)
-    if isinstance(piece, g.Segment):
-        a, b = piece.start, piece.end
-        ax, ay, bx, by, qx, qy = (f(a[0]), f(a[1]), f(b[0]), f(b[1]), f(x[0]), f(x[1]))
-        dx, dy = bx - ax, by - ay
-        den = dx * dx + dy * dy
-        t = 0.0 if den == 0 else min(1.0, max(0.0, ((qx - ax) * dx + (qy - ay) * dy) / den))
-        lo = ((ax + t * dx - qx) ** 2 + (ay + t * dy - qy) ** 2) ** 0.5
-        hi = max(((ax - qx) ** 2 + (ay - qy) ** 2) ** 0.5, ((bx - qx) ** 2 + (by - qy) ** 2) ** 0.5)
-    else:
-        d = f(g.dist2(piece.centre, x)) ** 0.5
-        r = f(g.dist2(piece.start, piece.centre)) ** 0.5
-        lo, hi = abs(d - r), d + r
-    return lo * (1 - 1e-6) - 1e-6, hi * (1 + 1e-6) + 1e-6
-
-
 def _about(piece, m: Motion, centre, static: dict, name: str, mover: int = -1,
            groups=()) -> tuple:
     """``(polys, params)``: the ``ray`` and ``distance`` polynomials about ``centre``;
@@ -413,7 +248,7 @@ def _about(piece, m: Motion, centre, static: dict, name: str, mover: int = -1,
     distance), for each of ``groups`` (``[(robots standing still, name)]``) that holds
     k, the ``symmetry`` candidates of :func:`on_circle_candidates` instead."""
     polys, params = [], []
-    lo_c, hi_c = _reach(piece, centre)
+    lo_c, hi_c = reach(piece, centre)
     for k, q in static.items():
         w = g.sub(q, centre)
         if w[0].is_zero() and w[1].is_zero():
@@ -458,8 +293,6 @@ def on_circle_candidates(piece, m: Motion, mover: int, still: dict, q: int, cent
     the last two are exact points (their parameters on the piece).  The centroid tie
     alone can vanish all along too (when the rest's centroid is ``centre``), the exact
     points cannot."""
-    from .joint_relations import still as still_motion
-    from .joint_symmetry import centroid_tie
     motions = {k: still_motion(p) for k, p in still.items()}
     motions[mover] = m
     tie = centroid_tie(motions, sorted(motions), {mover}, mover, q)
@@ -467,9 +300,9 @@ def on_circle_candidates(piece, m: Motion, mover: int, still: dict, q: int, cent
     qp = still[q]
     rest = [p for k, p in still.items() if k != q]
     cands = [(g.sub(g.scale(centre, 2), qp), "a half turn about the centre")]
-    for z, zname in ((_centroid(rest), "the rest's centroid"), (centre, "the centre")):
+    for z, zname in ((centroid(rest), "the rest's centroid"), (centre, "the centre")):
         if rest:
-            cands += [(_reflect(qp, z, u), f"the mirror image in a mirror line through "
+            cands += [(reflect(qp, z, u), f"the mirror image in a mirror line through "
                                            f"{zname}") for u in mirror_lines(rest, z)]
     w = g.sub(qp, centre)
     r2 = g.dot(w, w)
@@ -504,7 +337,7 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
     if centre is not None:
         more, at = _about(piece, m, centre, static, "C", mover, groups)
         polys, about_params = polys + more, about_params + at
-        lo_c, hi_c = _reach(piece, centre)
+        lo_c, hi_c = reach(piece, centre)
         # the pattern: the mover on a layer's circle (|p - C| = 2L), or touching a robot;
         # layer L holds a robot of P only when the inner layers are full: 1 + 3L(L - 1)
         # robots at least (capacity of layer l >= 6l), so no larger L matters
@@ -530,19 +363,17 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
         if mover in rset and (c_r is None or may_leave(m, c_r, r2_r)):
             # the mover can be a support of R's SEC: its centre moves with the mover, on
             # each stretch between two SEC-of-R instants as a joint step's does
-            from .joint_relations import still as still_motion
-            from .moving_centre import about_moving_sec
             sub = {k: still_motion(p) for k, p in sub_r.items()}
             sub[mover] = m
             sec_roots = roots_of((p, t) for p, t in sec_r_polys if p)
             known = {centre, c_r} - {None}
-            more, found = about_moving_sec(sub, {mover}, sec_roots, known)
+            more, found = moving_centre.about_moving_sec(sub, {mover}, sec_roots, known)
             polys += more
             extra += sec_roots + found
         else:
             polys += sec_r_polys
     for k, q in static.items():
-        if _reach(piece, q)[0] <= 2:
+        if reach(piece, q)[0] <= 2:
             polys.append((dist2_poly(m, q, MQ.rational(4)),
                           ("pattern", f"touching robot {k}")))
     for poly, what in _sec_family(m, static, "SEC of all", sec):
@@ -556,26 +387,13 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
         for u in mirror_lines(list(sub_r.values()), centre):
             polys.append((cross_poly(m, centre, u), ("symmetry", "a mirror line of the rest "
                                                      "of R through C")))
-    from .polyroots import _bracket
-    roots = roots_of(polys, [_bracket((), f, ("symmetry", what)) for f, what in sym_params]
-                     + [_bracket((), f, tag) for f, tag in about_params] + extra)
+    roots = roots_of(polys, [bracket((), f, ("symmetry", what)) for f, what in sym_params]
+                     + [bracket((), f, tag) for f, tag in about_params] + extra)
     for r in roots:
         # a rotation or a reflection about that centre can swap the mover with a robot as
         # far from it: the ties are symmetry candidates too (as for a joint step)
         r.tags += [("symmetry", w) for f, w in list(r.tags) if f == "distance"]
     return roots
-
-
-def _homed(f, pieces):
-    """An exact instant in the pieces' run tower (:func:`.run_tower.instant_in`); None
-    (seen on both sides only) when there is none or re-homing it cannot be decided."""
-    if f is None:
-        return None
-    from .run_tower import instant_in
-    try:
-        return instant_in(f, pieces)
-    except ValueError:
-        return None
 
 
 @dataclass(frozen=True)
@@ -593,16 +411,16 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
     before the first instant, the last after the last) and each instant itself when the
     kernel holds it (a nested radical: a point with tower coordinates; a root of a cubic
     or quartic factor: a point of ``K(alpha)``; a nested root re-homed into the piece's
-    run tower first, :func:`.run_tower.instant_in`) -- and the number of instants
-    checked only on both sides (the roots :mod:`.algebraic_instants` leaves without a
-    value, or that the piece's tower cannot re-home)."""
+    run tower first, :func:`.run_home.instant_in`) -- and the number of instants checked
+    only on both sides (the roots :mod:`~exactsym.exact.algebraic.algebraic_numbers`
+    leaves without a value, or that the piece's tower cannot re-home)."""
     roots = critical_roots(piece, world, mover, centre, sec_r)
     if not roots:             # one stretch: the whole open piece
         half = MQ.rational(fmpq(1, 2))
         return [LookPoint(half, piece.at(half), "half way, no critical instant",
                           frozenset(), False)], 0
     out, sided = [], 0
-    # K(alpha)'s numbers do not mix with a run's tower numbers (algebraic_instants.mixes)
+    # K(alpha)'s numbers do not mix with a run's tower numbers (run_home.mixes)
     apart = mixes(world, [piece])
     for k, r in enumerate(roots):
         fams = frozenset(t[0] for t in r.tags)
@@ -610,7 +428,7 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
         if k == 0:
             lo = MQ.rational(r.lo)
             out.append(LookPoint(lo, piece.at(lo), f"just before: {what}", fams, False))
-        f = _homed(r.exact, [piece]) if not (apart and is_algebraic(r.exact)) else None
+        f = instant_or_none(r.exact, [piece]) if not (apart and is_algebraic(r.exact)) else None
         if f is not None:
             out.append(LookPoint(f, piece.at(f), what, fams, True))
         else:
@@ -623,6 +441,4 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
     return out, sided
 
 
-__all__ = ["Motion", "motion_of", "dist2_poly", "cross_poly", "dot_poly", "point_param",
-           "mirror_lines", "hull_indices", "critical_roots", "look_points", "LookPoint",
-           "Root"]
+__all__ = ["critical_roots", "look_points", "LookPoint", "on_circle_candidates"]

@@ -18,12 +18,13 @@ Exactness of the "at any instant" checks:
   plans) also at the critical instants inside each piece (:mod:`.instants`): where the
   mover crosses the line through C and another robot, where two distances to C become
   equal, where the SEC's support changes, where a symmetry can appear -- roots of
-  polynomials in the path parameter, isolated exactly (:mod:`.polyroots`).  A Look at
-  each instant the kernel holds, and one in each stretch between consecutive instants;
-  an instant that needs a nested radical is checked at the instant too, its point in a
-  tower of quadratic extensions (:mod:`.tower_numbers`, counted as ``nested``); only a
-  root of a cubic or quartic factor that square roots do not express is seen on both
-  sides only (``sided``);
+  polynomials in the path parameter, isolated exactly
+  (:mod:`~exactsym.exact.algebraic.roots`).  A Look at each instant the kernel holds, and
+  one in each stretch between consecutive instants; an instant that needs a nested radical
+  is checked at the instant too, its point in a tower of quadratic extensions
+  (:mod:`~exactsym.exact.algebraic.tower_numbers`, counted as ``nested``); only a root of
+  a cubic or quartic factor that square roots do not express is seen on both sides only
+  (``sided``);
 * over a step of several robots moving at once (:meth:`Checker.after_step`): I1 by the
   joint motion's exact polynomial, and I3, I4 and I6 at the critical instants of the
   joint motion (:mod:`.joint_instants`) and between them, I9 at its SEC and symmetry
@@ -35,13 +36,14 @@ from __future__ import annotations
 import contextlib
 from dataclasses import dataclass, field
 
+from ..exact.algebraic.algebraic_numbers import is_algebraic
+from ..exact.algebraic.tower_numbers import is_tower
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .instants import critical_roots, look_points
 from .joint_instants import joint_look_points
 from .pattern import definition_defects, recognise
-from .algebraic_instants import is_algebraic
-from .tower_numbers import is_tower
+from .world import IDENTITY, MIRROR
 
 #: How a violation names the statement it contradicts: the paper's ``\\label`` where
 #: the statement has one (``/paper/README.md``), otherwise the algorithm (or the model
@@ -159,7 +161,6 @@ class Checker:
             self._frames_agree(world, i, frame, paths, decision, t)
 
     def _frames_agree(self, world, i, frame, paths, decision, t):
-        from .world import IDENTITY, MIRROR
         mine = _plan(paths, decision)
         for other in (IDENTITY, MIRROR) + tuple(self.frames):
             if other == frame:
@@ -241,7 +242,6 @@ class Checker:
                 self._fresh_look(world, i, t, "")
 
     def _same_centre(self, world, i, t, where: str):
-        from .world import IDENTITY
         rob = world.robots[i]
         d = world.fresh_decision(IDENTITY)      # only its centre is read
         if d.centre != rob.centre:
@@ -251,7 +251,6 @@ class Checker:
                             label=I6_LABEL_OF_ROLE.get(rob.role, I6_OTHER_LABEL))
 
     def _fresh_look(self, world, i, t, where: str):
-        from .world import IDENTITY
         rob = world.robots[i]
         d, plan = world.fresh_plan(IDENTITY)
         own = {i: (rob.role, rob.target)}
@@ -356,7 +355,6 @@ class Checker:
         """I9 inside a piece (one mover) or a joint step: fresh Looks in the world's
         frame, the reflected one (and the extra frames) plan the same movers and leader
         targets (the fresh plans are compared, not the pending moves: that is I3's)."""
-        from .world import IDENTITY, MIRROR
         d0, mine = world.fresh_plan(IDENTITY)
         if d0.status == "undecided":
             self.undecided_fresh += 1
@@ -446,7 +444,7 @@ def _same_plan(a: dict, b: dict, home) -> bool | None:
     """Same movers, and the same final target for each, except where either plan starts
     with an epsilon move (MakeAsym, Make_SymToAsym): its sense is the mover's own choice
     (reading A8) and a fresh Look during it asks for a further epsilon.  Targets of two
-    towers are compared in the run's (``home``: the world's :class:`.run_tower.RunHome`);
+    towers are compared in the run's (``home``: the world's :class:`.run_home.RunHome`);
     None when that cannot be decided (the Look counts as undecided)."""
     if set(a) != set(b):
         return False

@@ -3,11 +3,12 @@
 :mod:`.instants` lists the instants of one robot's motion while the others stand still.
 In a step (``World.advance_together``) every mover is at ``piece.at(tau)`` at the common
 time ``tau`` in [0, 1]: affine in ``tau`` on a segment, rational in it on an arc
-(:func:`.instants.motion_of`, denominator ``1 + T^2 tau^2 > 0``), and a robot standing
+(:func:`.motion.motion_of`, denominator ``1 + T^2 tau^2 > 0``), and a robot standing
 still is a constant motion.  Each relation between robots below is, denominators
 cleared (positive factors: no sign changes), a polynomial in ``tau``
 (:mod:`.joint_relations`); its roots in
-(0, 1) are isolated exactly (:mod:`.polyroots`).  Families, each over the relations that
+(0, 1) are isolated exactly (:mod:`~exactsym.exact.algebraic.roots`).  Families, each
+over the relations that
 involve at least one mover (the others do not change during the step):
 
 * ``distance`` -- two robots as far from C (mover-mover, mover-still);
@@ -45,9 +46,11 @@ A superset of the events above: a candidate where nothing happens costs a Look.
 :func:`joint_look_points` gives, as :func:`.instants.look_points` does, each instant
 whose value the kernel holds and one rational instant in each open stretch between
 consecutive instants (strictly inside (0, 1)); an instant that needs a nested radical
-is a point in a tower of quadratic extensions (:mod:`.tower_numbers`), one at a root of a
-cubic or quartic factor a point of ``K(alpha)`` (:mod:`.algebraic_instants`); only the
-roots that module leaves without a value are seen on both sides only (``sided``).  ``invariants.Checker`` checks I3, I4 and I6 at
+is a point in a tower of quadratic extensions
+(:mod:`~exactsym.exact.algebraic.tower_numbers`), one at a root of a cubic or quartic
+factor a point of ``K(alpha)`` (:mod:`~exactsym.exact.algebraic.algebraic_numbers`); only
+the roots that module leaves without a value are seen on both sides only (``sided``).
+``invariants.Checker`` checks I3, I4 and I6 at
 every Look, I9 at those of the ``sec`` and ``symmetry`` instants and beside them.
 """
 
@@ -58,15 +61,18 @@ from itertools import combinations
 
 from flint import fmpq
 
+from ..exact.algebraic.algebraic_numbers import is_algebraic
+from ..exact.algebraic.polynomials import pmul, pscale, psub
+from ..exact.algebraic.roots import roots_of
 from ..exact.multiquadratic import MQ
 from . import geometry as g
-from .algebraic_instants import is_algebraic, mixes
-from .instants import _homed, _reach, hull_indices, may_leave, motion_of
+from .motion import may_leave, motion_of, reach
+from .point_sets import hull_indices
 from .joint_relations import (const, contact_poly, incircle_poly, ray_poly, rel, right_poly,
                               sq, still, tie_poly)
 from .joint_symmetry import symmetry_polys
 from .moving_centre import about_moving_sec, pairs_about
-from .polyroots import pmul, pscale, psub, roots_of
+from .run_home import instant_or_none, mixes
 
 
 # -- the families --------------------------------------------------------------------------
@@ -91,7 +97,8 @@ def _sec(motions: dict, movers, tag: str) -> list:
 
 def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
     """Every critical instant strictly inside the step's interval, as separated
-    :class:`.polyroots.Root`\\ s (``pieces``: mover -> the piece it moves along)."""
+    :class:`~exactsym.exact.algebraic.roots.Root`\\ s (``pieces``: mover -> the piece it
+    moves along)."""
     movers = set(pieces)
     motions = {k: motion_of(pieces[k]) if k in movers else still(r.pos)
                for k, r in enumerate(world.robots)}
@@ -102,7 +109,7 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
     for c in sorted(centres, key=lambda p: (str(p[0]), str(p[1]))):
         polys += pairs_about(motions, movers, c, "C")
         for i in movers:
-            lo, hi = _reach(pieces[i], c)
+            lo, hi = reach(pieces[i], c)
             for L in range(1, top + 1):
                 if lo <= 2 * L <= hi:
                     u, v = rel(motions[i], c)
@@ -174,7 +181,7 @@ def joint_look_points(pieces: dict, world, sec_r: bool = False) -> tuple:
         what = "; ".join(sorted({t[1] for t in r.tags}))
         if k == 0:
             out.append(JointPoint(MQ.rational(r.lo), f"just before: {what}", fams, False))
-        tau = _homed(r.exact, pieces.values()) if not (apart and is_algebraic(r.exact)) \
+        tau = instant_or_none(r.exact, pieces.values()) if not (apart and is_algebraic(r.exact)) \
             else None
         if tau is not None:
             out.append(JointPoint(tau, what, fams, True))

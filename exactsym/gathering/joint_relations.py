@@ -1,6 +1,6 @@
 """Relations between robots moving at once, as polynomials in the common time ``tau``.
 
-In a step every mover is at ``p = (X, Y) / D`` (:func:`.instants.motion_of`: ``D = 1``
+In a step every mover is at ``p = (X, Y) / D`` (:func:`.motion.motion_of`: ``D = 1``
 on a segment, ``1 + T^2 tau^2 > 0`` on an arc) and a robot standing still is a constant
 motion (:func:`still`).  Each relation below is a polynomial in ``tau`` with
 multiquadratic coefficients, denominators cleared by positive factors (so its sign is
@@ -9,9 +9,9 @@ the relation's): :mod:`.joint_instants` and :mod:`.joint_symmetry` take their ro
 
 from __future__ import annotations
 
+from ..exact.algebraic.polynomials import padd, pmul, pscale, psub
 from ..exact.multiquadratic import MQ
-from .instants import Motion
-from .polyroots import padd, pmul, pscale, psub
+from .motion import Motion
 
 ONE = MQ.rational(1)
 

@@ -2,7 +2,7 @@
 several robots move at once (spec section 4, "a symmetry appears").
 
 In a step (``World.advance_together``) the movers ``M`` are at ``piece.at(tau)`` at the
-common time ``tau`` (:func:`.instants.motion_of`), the other robots stand still.  Let
+common time ``tau`` (:func:`.motion.motion_of`), the other robots stand still.  Let
 ``X`` be a set of robots whose symmetry the algorithm reads (every robot; R, the robots
 outside the pattern, which the paper layer orders about R's own SEC centre), ``S`` its
 robots standing still, ``M_X`` its movers.  A symmetry ``s`` of X at time ``tau`` (a
@@ -52,13 +52,13 @@ map preserves every distance all along: a symmetry all along, appearing at no in
 
 from __future__ import annotations
 
+from ..exact.algebraic.polynomials import padd, pgcd, pmul, pscale, psub
 from ..exact.multiquadratic import MQ
 from . import geometry as g
-from .instants import (Motion, _centroid, dist2_poly, may_leave, mirror_lines,
-                       smallest_distance_group)
+from .motion import Motion, dist2_poly, may_leave
+from .point_sets import centroid, mirror_lines, smallest_distance_group
 from .joint_relations import (centroid_motion, collinear_poly, const, crossv, diff, dotv,
                               pair_tie, rel, tie_about, tie_poly)
-from .polyroots import padd, pgcd, pmul, pscale, psub
 
 
 def mirror_pair_poly(a: Motion, b: Motion, z, u) -> tuple:
@@ -161,7 +161,7 @@ def symmetry_polys(motions: dict, movers: set, members, name: str,
         return _distinct([(p, ("symmetry", f"{name}: {w}")) for p, w in
                           image_polys(motions, members, set(M), [])])
     S = list(still_pts.values())
-    z = _centroid(S)
+    z = centroid(S)
     out: list = []
 
     def first_usable(rels):

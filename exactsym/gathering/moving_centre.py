@@ -17,11 +17,12 @@ from itertools import combinations
 
 from flint import fmpq
 
+from ..exact.algebraic.polynomials import peval, pscale, psub
+from ..exact.algebraic.roots import roots_in_unit
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .joint_relations import (circumcentre_motion, midpoint_motion, ray_about, ray_poly,
                               seen_from, tie_about, tie_poly)
-from .polyroots import peval, pscale, psub, roots_in_unit
 
 
 def pairs_about(motions: dict, movers, c, name: str) -> list:

@@ -11,7 +11,7 @@ the paper layer's rotation parameters: the same rational rotation about the SEC 
 When the kernel cannot hold the snapshot's numbers (a field over the size limit), the
 decision is ``complete=False``: the simulator then stops as undecided rather than guess.
 A snapshot at a root of a cubic or quartic factor (numbers of K(alpha),
-:mod:`.algebraic_instants`) is written in one kernel field Q(gamma)
+:mod:`~exactsym.exact.algebraic.algebraic_numbers`) is written in one kernel field Q(gamma)
 (:func:`.algebraic_kernel.kernel_configuration`); a square root the paper layer then
 asks for outside that field makes the decision incomplete in the same way.
 """
@@ -21,13 +21,16 @@ from __future__ import annotations
 from dataclasses import dataclass
 from fractions import Fraction
 
-from ..geometry.configuration import Configuration
 from ..errors import InputError
 from ..exact import evaluate, fmpq, number_system
-from ..io.expr import parse_expression
+from ..exact.algebraic.algebraic_numbers import is_algebraic
+from ..geometry.configuration import Configuration, from_file
 from ..geometry.levels import levels_of as compute_rings
+from ..io.expr import parse_expression
+from ..io.fileformat import read_config
 from ..paper.family import (concentric_polygons, elect_leader, is_symmetric_family,
                             is_symmetric_polygon, make_asym, preprocess)
+from .algebraic_kernel import kernel_configuration
 
 __all__ = ["PaperDecision", "paper_decision", "configuration_of", "GatheringInputError",
            "read_case"]
@@ -58,7 +61,6 @@ class PaperDecision:
 
 
 def _algebraic(points) -> bool:
-    from .algebraic_instants import is_algebraic
     return any(is_algebraic(c) for p in points for c in p)
 
 
@@ -66,7 +68,6 @@ def configuration_of(points) -> Configuration:
     """A kernel configuration of MQ points (rational when they all are), of tower
     numbers, or of K(alpha) numbers."""
     if _algebraic(points):
-        from .algebraic_kernel import kernel_configuration
         return kernel_configuration(points)
     if all(x.is_rational() and y.is_rational() for x, y in points):
         return Configuration.from_points([(x.to_fmpq(), y.to_fmpq()) for x, y in points])
@@ -136,8 +137,6 @@ def _decision(config, ring_data, orientation: int, reading: str) -> PaperDecisio
 def read_case(path):
     """Read a case file (configuration format 1): ``(points as fmpq pairs, name, expect,
     source)``; raises :class:`InputError` with the file location."""
-    from ..io.fileformat import read_config
-    from ..geometry.configuration import from_file
     config = from_file(read_config(path))
     pts = []
     for x, y in config.points:

@@ -37,7 +37,7 @@ from ..exact.multiquadratic import MQ, sqrt_rational
 from .geometry import add, angle_key, angle_less, cross, dist2, dot, rotate, scale, sub
 
 
-@lru_cache(maxsize=None)
+@lru_cache(maxsize=256)
 def layer_rotation(L: int) -> tuple[MQ, MQ]:
     """``(cos theta_L, sin theta_L)`` exactly."""
     c = MQ.rational(1 - fmpq(1, 2 * L * L))
@@ -55,7 +55,7 @@ def rotation_power_coefficients(L: int, k: int) -> tuple[fmpq, fmpq]:
     return a, b
 
 
-@lru_cache(maxsize=None)
+@lru_cache(maxsize=256)
 def capacity(L: int) -> int:
     """Largest k with ``k theta_L <= 2 pi`` (layer 0 holds one robot)."""
     if L == 0:
@@ -178,7 +178,8 @@ class _SortKey:
 def recognise(points, centre, lone: str = "accept", unit=1) -> Pattern:
     """The largest valid partial pattern about ``centre`` (see the module docstring);
     ``unit``: the robot radius in the points' frame (a rational)."""
-    unit2 = fmpq(unit) * fmpq(unit) if not isinstance(unit, fmpq) else unit * unit
+    u = fmpq(unit)
+    unit2 = u * u
     at_centre = [i for i, p in enumerate(points) if p[0] == centre[0] and p[1] == centre[1]]
     if not at_centre:
         return Pattern(centre, None, (), True)

@@ -45,7 +45,8 @@ from flint import fmpq
 from . import geometry as g
 from .paper_bridge import paper_decision
 from .pattern import Pattern, recognise, slot
-from .run_tower import snapshot_key, sqrt_exact
+from ..exact.algebraic.run_tower import sqrt_exact
+from .run_home import snapshot_key
 
 READINGS = {
     "A1": ("sec-all", "sec-r"),
@@ -125,7 +126,7 @@ def compute(snapshot, me: int, readings: Readings = Readings(), unit=1):
 def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> Decision:
     """Every robot's answer on ``snapshot`` (see the module docstring).  A snapshot
     whose coordinates come from several towers of nested radicals is first re-homed
-    into one (:func:`.run_tower.common_tower`); a nested-radical target is built in
+    into one (:func:`.run_home.common_tower`); a nested-radical target is built in
     that tower.  Cached per snapshot and per tower: numbers of two towers are never
     compared, not even as cache keys."""
     return _decide(snapshot_key(snapshot), readings, unit)
@@ -133,7 +134,7 @@ def decide(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> De
 
 @lru_cache(maxsize=4096)
 def _decide(key: tuple, readings: Readings, unit) -> Decision:
-    # key: run_tower.snapshot_key (towers and epochs first)
+    # key: run_home.snapshot_key (towers and epochs first)
     towers, _epochs, snapshot = key
     tower = towers[0] if towers else None
     pts = list(snapshot)
@@ -278,15 +279,15 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1,
 
 def radial_point(centre, p, radius, tower=None):
     """The point at distance ``radius`` from ``centre`` towards ``p``, exactly.
-    ``|p - C|^2`` is rational for a robot that has not slid along an arc (then one
-    square root of a rational); after a slide, with C moved, or for a point caught at a
-    nested-radical instant it is an irrational multiquadratic or a tower number: its
-    root is an MQ when it lies in the multiquadratic closure, else a number of the
-    snapshot's ``tower`` of nested radicals (a new level when it has none there; a new
-    tower when ``tower`` is None: :func:`.run_tower.sqrt_exact`).  ValueError (the
-    decision is then ``undecided``) when the closure test cannot write a root (an
-    integer of more than 160 bits it cannot split), the tower would exceed its levels,
-    or ``p = C``."""
+    ``|p - C|^2`` is rational for a robot that has not slid along an arc (then one square
+    root of a rational); after a slide, with C moved, or for a point caught at a
+    nested-radical instant it is an irrational multiquadratic or a tower number: its root
+    is an MQ when it lies in the multiquadratic closure, else a number of the snapshot's
+    ``tower`` of nested radicals (a new level when it has none there; a new tower when
+    ``tower`` is None: :func:`~exactsym.exact.algebraic.run_tower.sqrt_exact`).
+    ValueError (the decision is then ``undecided``) when the closure test cannot write a
+    root (an integer of more than 160 bits it cannot split), the tower would exceed its
+    levels, or ``p = C``."""
     v = g.sub(p, centre)
     r2 = g.dot(v, v)
     if r2.is_zero():

@@ -29,6 +29,8 @@ import sys
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+from ..exact.multiquadratic import MQ
+from . import geometry as g
 from .invariants import Checker, Violation
 from .pattern import recognise
 from .robot import Readings
@@ -211,8 +213,6 @@ def _finish_move(r: _Run, i, rng):
 
 
 def _may_end(w: World, i, stop) -> bool:
-    from ..exact.multiquadratic import MQ
-    from . import geometry as g
     rob = w.robots[i]
     pos = rob.path[0].split(MQ.rational(stop))[0].final if stop else rob.path[0].final
     return (g.dist2(rob.start, pos) - MQ.rational(w.delta) ** 2).sign() >= 0

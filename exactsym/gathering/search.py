@@ -23,7 +23,7 @@ from fractions import Fraction
 from .invariants import Checker, Violation
 from .robot import Readings
 from .schedulers import Result, run
-from .world import IDENTITY, MIRROR, World
+from .world import IDENTITY, MIRROR, Frame, World
 
 
 def _key(world: World):
@@ -50,7 +50,6 @@ def _children(world: World):
 
 def _apply(world: World, act) -> bool:
     """Apply ``act``; False when it is not allowed (a non-rigid stop before delta)."""
-    from .world import Frame
     try:
         if act["a"] == "look":
             world.look(act["robot"], Frame.from_list(act["frame"]))

@@ -3,7 +3,7 @@
 Model (spec section 1; ``docs/gathering.md``): robots are unit discs whose centres are
 exact multiquadratic points, or -- after a radial move whose length is a nested radical
 -- points of the run's one tower of quadratic extensions (``World.home``,
-:mod:`.run_tower`).  A robot is idle, or holds a pending path computed at its
+:mod:`.run_home`).  A robot is idle, or holds a pending path computed at its
 last Look (ASYNC: the path may be stale when it moves).  The adversary's actions are
 plain data (Pactole's demon):
 
@@ -38,11 +38,12 @@ from math import isqrt
 
 from flint import fmpq
 
+from ..exact.algebraic.interface import is_multiquadratic
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .corrected import decide_for
 from .robot import Decision, Readings
-from .run_tower import RunHome
+from .run_home import RunHome
 
 
 @dataclass(frozen=True)
@@ -147,7 +148,7 @@ class World:
         # the run's tower of nested radicals (none until a radial target needs one): every
         # planned path is re-homed into it, so all positions compare in one tower
         self.home = RunHome()
-        self._local = None        # {frame: {id(point): (point, local point)}}
+        self._local = None        # {frame: {point: local point}}
 
     @property
     def n(self) -> int:
@@ -165,11 +166,12 @@ class World:
                            fmpq(frame.unit.numerator, frame.unit.denominator))
 
     def _snapshot(self, frame: Frame) -> tuple:
-        """Every position in ``frame``; a point object already mapped in that frame gives
-        the same local point object again (a point never changes; the map holds it, so
-        its id is not reused).  The robots that stand still during a check's fresh Looks
-        then keep their local points, and with them the numbers' hashes, integer forms
-        and remembered distances (``geometry.dist2``)."""
+        """Every position in ``frame``; a point already mapped in that frame gives the same
+        local point object again (keyed by value: a point of multiquadratic coordinates,
+        whose hash is remembered; a nested-radical point is mapped anew, its numbers not
+        being compared across towers even as keys).  The robots that stand still during
+        a check's fresh Looks then keep their local points, and with them the numbers'
+        hashes, integer forms and remembered distances (``geometry.dist2``)."""
         if self._local is None or len(self._local) > 4:
             self._local = {}
         seen = self._local.get(frame)
@@ -177,10 +179,13 @@ class World:
             seen = self._local[frame] = {}
         out = []
         for p in self.positions():
-            hit = seen.get(id(p))
-            if hit is None or hit[0] is not p:
-                hit = seen[id(p)] = (p, frame.to_local(p))
-            out.append(hit[1])
+            if not (is_multiquadratic(p[0]) and is_multiquadratic(p[1])):
+                out.append(frame.to_local(p))
+                continue
+            local = seen.get(p)
+            if local is None:
+                local = seen[p] = frame.to_local(p)
+            out.append(local)
         return tuple(out)
 
     def snapshot_decision(self, frame: Frame):

@@ -1,10 +1,11 @@
 """Exact real roots in (0, 1) of small polynomials with multiquadratic coefficients.
 
-The "any instant" checks (:mod:`.instants`) reduce each event of a motion (two distances
-become equal, the SEC's support changes, a symmetry appears) to a root of a polynomial
-of degree at most 4 in the piece's parameter ``f`` (a segment is linear in ``f``; an arc
-is rational in ``f`` with the denominator ``1 + T^2 f^2``, cleared).  Its coefficients
-are :class:`~exactsym.exact.multiquadratic.MQ` elements.
+The gathering simulator's "any instant" checks (:mod:`exactsym.gathering.instants`) reduce
+each event of a motion (two distances become equal, the SEC's support changes, a symmetry
+appears) to a root of a polynomial of degree at most 4 in the piece's parameter ``f`` (a
+segment is linear in ``f``; an arc is rational in ``f`` with the denominator
+``1 + T^2 f^2``, cleared).  Its coefficients are
+:class:`~exactsym.exact.multiquadratic.MQ` elements.
 
 A root is a :class:`Root`: a rational isolating interval ``(lo, hi)`` holding exactly
 one root of its polynomial (Sturm sequences over the coefficient field, exact signs),
@@ -14,10 +15,10 @@ field, found by :func:`mq_sqrt`), or -- when it needs a nested radical -- a numb
 tower of quadratic extensions over that field (:mod:`.tower_numbers`): a quadratic
 whose discriminant is a square in no multiquadratic field, or a biquadratic quartic
 ``a f^4 + b f^2 + c`` (:func:`exact_root_hook`); or -- a root of a factor of degree 3
-or more -- a number of ``K(alpha)`` (:mod:`.algebraic_instants`: the polynomial factored
+or more -- a number of ``K(alpha)`` (:mod:`.algebraic_numbers`: the polynomial factored
 over its coefficients' field K, numbers reduced modulo alpha's factor); or -- a root of
 a quartic factor of group D4, C4 or V4 -- a nested radical again, an MQ or a number of a
-RunTower (:mod:`.quartic_instants`, Ferrari over K).  The roots those modules leave
+RunTower (:mod:`.quartic`, Ferrari over K).  The roots those modules leave
 without a value (factors of other even degrees, a root whose square roots cannot be
 decided) stay isolated by rationals only (``sided`` instants).
 
@@ -32,248 +33,20 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from flint import arb, arb_mat, ctx, fmpq
+from flint import fmpq
 
-from ..exact.mq_closure import RATIONAL_BITS, closure_sqrt, decided_sqrt  # noqa: F401
-from ..exact.multiquadratic import MQ, sum_of_products
+from ..mq_closure import closure_sqrt, decided_sqrt
+from ..multiquadratic import MQ
+from .algebraic_numbers import AlgebraicNumber, AlgebraicRoot, is_algebraic
+from .algebraic_tower import is_algebraic_tower, sqrt_over_k_alpha
+from .factor import changes_sign, factor_over_k, stable
+from .polynomials import ONE, ZERO, pdivmod, peval, pgcd, trim
+from .quartic import quartic_root
+from .sturm import costly, squarefree, sturm_chain, surely_no_root_in_unit, variations
 from .tower_numbers import biquadratic_root, is_tower, quadratic_root, tower_sqrt
 
-ZERO = MQ()
-
-
-# -- polynomial arithmetic over MQ ---------------------------------------------------
-def trim(p) -> tuple:
-    p = list(p)
-    while p and p[-1].is_zero():
-        p.pop()
-    return tuple(p)
-
-
-def padd(p, q) -> tuple:
-    n = max(len(p), len(q))
-    return trim((p[i] if i < len(p) else ZERO) + (q[i] if i < len(q) else ZERO)
-                for i in range(n))
-
-
-def psub(p, q) -> tuple:
-    return padd(p, tuple(-c for c in q))
-
-
-def pmul(p, q) -> tuple:
-    if not p or not q:
-        return ()
-    if all(type(c) is MQ for c in p) and all(type(c) is MQ for c in q) and \
-            max(len(c.terms) for c in p) * max(len(c.terms) for c in q) >= 16:
-        # each coefficient a sum of products made canonical once (sum_of_products)
-        return trim(sum_of_products((1, p[i], q[k - i])
-                                    for i in range(max(0, k - len(q) + 1), min(k, len(p) - 1) + 1))
-                    for k in range(len(p) + len(q) - 1))
-    out = [ZERO] * (len(p) + len(q) - 1)
-    for i, a in enumerate(p):
-        if a.is_zero():
-            continue
-        for j, b in enumerate(q):
-            out[i + j] = out[i + j] + a * b
-    return trim(out)
-
-
-def pscale(p, c) -> tuple:
-    return trim(a * c for a in p)
-
-
-def peval(p, x) -> MQ:
-    acc = ZERO
-    for c in reversed(p):
-        acc = acc * x + c
-    return acc
-
-
-def pderiv(p) -> tuple:
-    return trim(c * i for i, c in enumerate(p) if i > 0)
-
-
-def pdivmod(p, q) -> tuple:
-    """Quotient and remainder over the field (``q`` non-zero, trimmed)."""
-    p, q = list(trim(p)), trim(q)
-    lead_inv = 1 / q[-1]
-    quot = [ZERO] * max(len(p) - len(q) + 1, 0)
-    while len(p) >= len(q) and p:
-        k = len(p) - len(q)
-        c = p[-1] * lead_inv
-        quot[k] = c
-        for i, b in enumerate(q):
-            p[i + k] = p[i + k] - c * b
-        p = list(trim(p))
-    return trim(quot), tuple(p)
-
-
-def pgcd(p, q) -> tuple:
-    """A greatest common divisor (up to a non-zero factor; a constant when coprime), by
-    pseudo-remainders and without a division: an inverse of a coefficient with k primes
-    in its radicands is k products of numbers of up to 2^k terms (the corrected variant's
-    n = 30 run spent 30 s of one event there).  Once a remainder is linear, the other
-    polynomial vanishes at its root or the two are coprime."""
-    p, q = trim(p), trim(q)
-    if len(p) < len(q):
-        p, q = q, p
-    while q:
-        if len(q) == 2 and len(p) > 1:
-            return q if _vanishes_at_root(p, q) else (MQ.rational(1),)
-        p, q = q, _pseudo_remainder(p, q)
-    return p
-
-
-def _pseudo_remainder(p, q) -> tuple:
-    """``lc(q)^k p`` modulo ``q`` (``len(p) >= len(q)``), with products only."""
-    r, lead = list(p), q[-1]
-    while len(r) >= len(q) and r:
-        k, top = len(r) - len(q), r[-1]
-        r = [c * lead for c in r]
-        for i, b in enumerate(q):
-            r[i + k] = r[i + k] - top * b
-        r = list(trim(r))
-    return tuple(r)
-
-
-def _vanishes_at_root(p, line) -> bool:
-    """Is ``p`` zero at the root ``-b / a`` of ``line = (b, a)``?  Homogeneously:
-    ``sum_k p_k (-b)^k a^(n-k) == 0`` (n the degree of ``p``, ``a`` non-zero)."""
-    b, a = line
-    n = len(p) - 1
-    acc, pb, pa = ZERO, MQ.rational(1), [MQ.rational(1)]
-    for _ in range(n):
-        pa.append(pa[-1] * a)
-    for k, c in enumerate(p):
-        if not c.is_zero():
-            acc = acc + c * pb * pa[n - k]
-        pb = pb * -b
-    return acc.is_zero()
-
-
-def squarefree(p) -> tuple:
-    """``p`` divided by ``gcd(p, p')``: the same roots, each simple.  Filtered: when an
-    Arb enclosure of the discriminant (the Sylvester determinant of ``p`` and ``p'``)
-    excludes 0, ``p`` is square-free already and no gcd is computed."""
-    if _surely_squarefree(p):
-        return p
-    g = pgcd(p, pderiv(p))
-    return p if len(g) <= 1 else pdivmod(p, g)[0]
-
-
-def _surely_squarefree(p, prec: int = 128) -> bool:
-    """Does a rigorous enclosure of resultant(p, p') exclude 0?  (Balls of the
-    coefficients, :meth:`to_arb`, and ``arb_mat.det``: a proof when True; False says
-    nothing.)"""
-    n = len(p) - 1
-    if n < 2:
-        return True
-    old = ctx.prec
-    ctx.prec = prec
-    try:
-        top = [c.to_arb(prec) for c in reversed(p)]           # highest degree first
-        dtop = [top[k] * (n - k) for k in range(n)]
-        size = 2 * n - 1
-        rows = [[arb(0)] * k + top + [arb(0)] * (size - k - n - 1) for k in range(n - 1)]
-        rows += [[arb(0)] * k + dtop + [arb(0)] * (size - k - n) for k in range(n)]
-        return not arb_mat(rows).det().contains(0)
-    except (AttributeError, TypeError, ValueError):   # coefficients without balls
-        return False
-    finally:
-        ctx.prec = old
-
-
-def _costly(p) -> bool:
-    """Is the exact isolation of ``p`` worth a ball test first: coefficients of several
-    terms (a linear or quadratic polynomial with rational coefficients costs less than
-    the test), or numbers of a tower or of K(alpha)?"""
-    return len(p) > 3 or any(type(c) is not MQ or len(c.terms) > 1 for c in p)
-
-
-def surely_no_root_in_unit(p, prec: int = 128, depth: int = 6) -> bool:
-    """Does a rigorous Arb enclosure prove that ``p`` has no root in the open (0, 1)?
-    A filter (True is a proof, False says nothing).  An exact root at 0 or 1 (``p_0``
-    zero, or the coefficients' sum zero: additions only) is divided out first (by
-    ``f``, by ``f - 1`` synthetically), which keeps the roots inside.  Then each
-    coefficient's ball
-    (``enclosure``, rigorous for every kernel number), then on each of up to 2^depth
-    dyadic pieces X = [a, b] of [0, 1] the ball of p(X) by Horner's rule and by the
-    mean value form p(m) + p'(X)(X - m); a piece is cleared when either excludes 0.
-    Interval arithmetic encloses every value p(x), x in X, so no piece holds a root.
-    The exact isolation (squarefree part, Sturm chain, inverses of coefficients of up
-    to 256 terms) is then not needed: most relations of a motion have no root inside
-    its piece."""
-    p = list(trim(p))
-    while len(p) > 1 and p[0].is_zero():
-        p.pop(0)
-    while len(p) > 1 and sum(p[1:], p[0]).is_zero():
-        q = [p[-1]]                         # p = (f - 1) q: q_k = p_(k+1) + q_(k+1)
-        for c in reversed(p[1:-1]):
-            q.append(c + q[-1])
-        p = q[::-1]
-    if len(p) < 2:
-        return bool(p)
-    old = ctx.prec
-    ctx.prec = prec
-    try:
-        return balls_clear_unit([c.enclosure(prec) for c in p], prec, depth)
-    except (AttributeError, TypeError, ValueError):   # coefficients without balls
-        return False
-    finally:
-        ctx.prec = old
-
-
-def balls_clear_unit(cs, prec: int = 128, depth: int = 6) -> bool:
-    """Do the balls ``cs`` (coefficients, lowest degree first) prove that every
-    polynomial with coefficients in them has no root in the closed [0, 1]?  (The test
-    of :func:`surely_no_root_in_unit`, on balls: a caller may build them without the
-    exact polynomial.)"""
-    if len(cs) < 2:
-        return bool(cs) and not cs[0].contains(0)
-    if not all(c.is_finite() for c in cs):
-        return False
-    old = ctx.prec
-    ctx.prec = prec
-    try:
-        ds = [cs[k] * k for k in range(1, len(cs))]
-
-        def horner(coeffs, x):
-            v = arb(0)
-            for c in reversed(coeffs):
-                v = v * x + c
-            return v
-        at0, at1 = cs[0], horner(cs, arb(1))
-        if (at0 > 0 and at1 < 0) or (at0 < 0 and at1 > 0):
-            return False                    # a sign change: a root inside, surely
-        stack = [(fmpq(0), fmpq(1), 0)]
-        while stack:
-            a, b, d = stack.pop()
-            m = (a + b) / 2
-            x = arb(a).union(arb(b))
-            if not horner(cs, x).contains(0):
-                continue
-            if not (horner(cs, arb(m)) + horner(ds, x) * (x - arb(m))).contains(0):
-                continue
-            if d >= depth:
-                return False
-            stack += [(a, m, d + 1), (m, b, d + 1)]
-        return True
-    finally:
-        ctx.prec = old
-
-
-def sturm_chain(p) -> list:
-    chain = [trim(p), pderiv(p)]
-    while len(chain[-1]) > 1:
-        r = pdivmod(chain[-2], chain[-1])[1]
-        if not r:
-            break
-        chain.append(tuple(-c for c in r))
-    return [c for c in chain if c]
-
-
-def _variations(chain, x) -> int:
-    signs = [s for s in (peval(c, x).sign() for c in chain) if s != 0]
-    return sum(1 for a, b in zip(signs, signs[1:]) if a != b)
+__all__ = ["Root", "roots_in_unit", "roots_of", "separate", "separate_inside", "bracket",
+           "same_root", "exact_root_hook", "algebraic_root", "mq_sqrt"]
 
 
 # -- square roots in the multiquadratic field ------------------------------------------
@@ -284,9 +57,8 @@ def mq_sqrt(x, _depth: int = 0, big_ok: bool = False):
     :data:`RATIONAL_BITS` bits is a miss, except ``x`` itself with ``big_ok``).  For a
     tower number ``x`` (:mod:`.tower_numbers`) the answer is its root in the tower, a new
     level when it has none there (None only when that cannot be decided); for a number
-    of ``K(alpha)`` (:mod:`.algebraic_instants`) its root there or one level over it
+    of ``K(alpha)`` (:mod:`.algebraic_numbers`) its root there or one level over it
     (:mod:`.algebraic_tower`)."""
-    from .algebraic_tower import is_algebraic_tower, sqrt_over_k_alpha
     if is_algebraic(x) or is_algebraic_tower(x):   # K(alpha), or one level over it
         return sqrt_over_k_alpha(x)
     if is_tower(x):                     # a tower number: its root in the tower
@@ -309,9 +81,9 @@ def exact_root_hook(poly, lo, hi):
     factor of its even and odd parts: an arc's denominator ``1 + T^2 f^2`` times a
     relation, for example), whose two factors are solved in turn.  Any other polynomial
     of degree 3 or more is factored over its coefficients' field
-    (:func:`.algebraic_instants.algebraic_root`): a root of a factor of degree 3, 5, ...
+    (:func:`algebraic_root`): a root of a factor of degree 3, 5, ...
     or of a quartic factor of group S4 or A4 is a number of ``K(alpha)``, one of a
-    quartic factor of group D4, C4 or V4 a nested radical (:mod:`.quartic_instants`);
+    quartic factor of group D4, C4 or V4 a nested radical (:mod:`.quartic`);
     None for the rest, whose instants are only seen on both sides (``sided``)."""
     if len(poly) == 2:
         r = _linear_root(poly)
@@ -331,10 +103,39 @@ def exact_root_hook(poly, lo, hi):
                 r = exact_root_hook(factor, lo, hi)
                 if r is not None:
                     return r
-    if len(poly) >= 4:      # factored over K: a root of K(alpha) (algebraic_instants)
-        from .algebraic_instants import algebraic_root
+    if len(poly) >= 4:      # factored over K: a root of K(alpha) (algebraic_numbers)
         return algebraic_root(poly, lo, hi)
     return None
+
+
+def algebraic_root(p, lo, hi):
+    """The root of the square-free ``p`` in ``(lo, hi)`` (rationals, one root of ``p``
+    inside, none at the ends), exact: an MQ (a linear factor over K), the factor's
+    quadratic root (tower numbers, :func:`.tower_numbers.quadratic_root`), or an
+    :class:`AlgebraicNumber` (a factor of odd degree, or a quartic with an S4 or A4 group),
+    or for a quartic of group D4, C4 or V4 a nested radical (an MQ or a tower number,
+    :func:`.quartic.quartic_root`); None otherwise (other even degrees, such a
+    quartic whose root :mod:`.quartic` does not build, a norm too big,
+    coefficients that are not multiquadratic: a run's tower numbers)."""
+    if not all(isinstance(c, MQ) for c in p):
+        return None
+    factors = factor_over_k(trim(p))
+    if factors is None:
+        return None
+    held = [f for f in factors if changes_sign(f, lo, hi)]
+    if len(held) != 1:
+        return None
+    f = held[0]
+    if len(f) == 2:
+        return -f[0]
+    if len(f) == 3:
+        return quadratic_root(f[0], f[1], f[2], lo, hi)
+    if not stable(f):
+        if len(f) == 5:              # D4, C4 or V4: nested square roots (Ferrari over K)
+            return quartic_root(f, lo, hi)
+        return None
+    root = AlgebraicRoot.of(f, fmpq(lo), fmpq(hi))
+    return AlgebraicNumber(root, (ZERO, ONE))
 
 
 # -- roots ---------------------------------------------------------------------------
@@ -388,7 +189,7 @@ def roots_in_unit(poly, tag=None) -> list:
     A polynomial that is identically zero has no isolated roots (the relation holds
     along the whole piece): ``[]``."""
     p = trim(poly)
-    if len(p) <= 1 or (_costly(p) and surely_no_root_in_unit(p)):
+    if len(p) <= 1 or (costly(p) and surely_no_root_in_unit(p)):
         return []
     out: list = []
     if len(p) > 3:
@@ -397,7 +198,7 @@ def roots_in_unit(poly, tag=None) -> list:
     if len(p) == 2:
         r = _linear_root(p)
         if r.sign() > 0 and (r - 1).sign() < 0:
-            out.append(_bracket(p, r, tag))
+            out.append(bracket(p, r, tag))
         return out
     if len(p) == 3:
         c, b, a = p
@@ -408,7 +209,7 @@ def roots_in_unit(poly, tag=None) -> list:
         if root is not None:
             for r in {(-b - root) / (a * 2), (-b + root) / (a * 2)}:
                 if r.sign() > 0 and (r - 1).sign() < 0:
-                    out.append(_bracket(p, r, tag))
+                    out.append(bracket(p, r, tag))
             return out
     # otherwise: Sturm isolation; a rational root met on the way is divided out
     return _isolate(p, fmpq(0), fmpq(1), tag)
@@ -437,7 +238,7 @@ def _none_inside(p) -> bool:
     return True
 
 
-def _bracket(p, r: MQ, tag) -> Root:
+def bracket(p, r: MQ, tag) -> Root:
     """A rational interval around the exact root ``r`` of ``p`` in (0, 1)."""
     lo, hi = fmpq(0), fmpq(1)
     root = Root(p, lo, hi, r, [tag] if tag is not None else [])
@@ -464,7 +265,7 @@ def _isolate(p, lo, hi, tag) -> list:
     stack = [(lo, hi)]
     while stack:
         a, b = stack.pop()
-        n = _variations(chain, a) - _variations(chain, b)
+        n = variations(chain, a) - variations(chain, b)
         if n == 0:
             continue
         if n == 1:
@@ -472,7 +273,7 @@ def _isolate(p, lo, hi, tag) -> list:
             continue
         mid = (a + b) / 2
         if peval(p, mid).is_zero():
-            out.append(_bracket(p, MQ.rational(mid), tag))
+            out.append(bracket(p, MQ.rational(mid), tag))
             out[-1].lo, out[-1].hi = (a + mid) / 2, (mid + b) / 2
             p = pdivmod(p, (MQ.rational(-mid), MQ.rational(1)))[0]
             chain = sturm_chain(p)
@@ -499,7 +300,7 @@ def _exact_in(p, a, b):
     return exact_root_hook(p, a, b)
 
 
-def _same_root(r: Root, s: Root) -> bool:
+def same_root(r: Root, s: Root) -> bool:
     """Do two roots with overlapping intervals coincide?  Exactly: equal exact values; an
     exact value that is a root of the other's polynomial inside its interval (which
     holds one root only); or the gcd of the two polynomials has a root in the overlap."""
@@ -519,20 +320,13 @@ def _same_root(r: Root, s: Root) -> bool:
         # the overlap's end is a rational root of both: then it is the one root of each
         return True
     chain = sturm_chain(squarefree(g))
-    return _variations(chain, lo) - _variations(chain, hi) > 0
-
-
-def is_algebraic(x) -> bool:
-    """A number of ``K(alpha)`` (:mod:`.algebraic_instants`, imported there: it builds
-    on this module's arithmetic)?"""
-    from .algebraic_instants import AlgebraicNumber
-    return isinstance(x, AlgebraicNumber)
+    return variations(chain, lo) - variations(chain, hi) > 0
 
 
 def _comparable(x, y) -> bool:
     """Can ``==`` decide: not two numbers of different towers (their canonical forms
     differ even for equal values; :func:`_same_root` then uses a polynomial), nor of two
-    different roots' fields (:mod:`.algebraic_instants`)."""
+    different roots' fields (:mod:`.algebraic_numbers`)."""
     if is_tower(x) and is_tower(y):
         return x.tower is y.tower
     if is_algebraic(x) and is_algebraic(y):        # two instants' fields: not mixed
@@ -559,7 +353,7 @@ def separate(roots: list, max_rounds: int | None = None) -> list:
             return roots
         a, b = clash
         if (a.hi - a.lo) < fmpq(1, 1 << 24) and (b.hi - b.lo) < fmpq(1, 1 << 24) \
-                and _same_root(a, b):
+                and same_root(a, b):
             keep = a if a.exact is not None or b.exact is None else b
             other = b if keep is a else a
             keep.tags += other.tags

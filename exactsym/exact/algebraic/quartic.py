@@ -1,7 +1,7 @@
 """Critical instants at roots of quartic factors of group D4, C4 or V4: nested radicals.
 
 A critical instant is a real root of a square-free polynomial with multiquadratic
-coefficients (:mod:`.polyroots`); :func:`.algebraic_instants.algebraic_root` factors it
+coefficients (:mod:`.roots`); :func:`.roots.algebraic_root` factors it
 over ``K``, its coefficients' multiquadratic field.  A quartic factor ``f`` whose
 resolvent cubic has a root in ``K`` (Galois group D4, C4 or V4 over ``K``) has roots
 that are nested square roots; this module builds the one in the isolating interval as
@@ -12,7 +12,7 @@ a number of a :class:`~.run_tower.RunTower` (Ferrari's method over ``K``).
 in ``y`` iff ``q^2 = (z - p)(z^2 - 4 r)``, i.e. ``z`` is a root of the resolvent
 ``z^3 - p z^2 - 4 r z + 4 p r - q^2`` (its roots are ``y_1 y_2 + y_3 y_4`` and the
 other two pairings).  Take ``z`` in ``K`` (a linear factor of the resolvent over ``K``,
-:func:`.algebraic_instants.factor_over_k`) and ``t = z - p``; then
+:func:`.factor.factor_over_k`) and ``t = z - p``; then
 ``t = (y_1 + y_2)^2`` for the pairing of ``z``, and with ``s = sqrt t > 0`` the right
 side is ``t (y - q/(2t))^2``, so ``f = g_+ g_-`` with
 
@@ -41,9 +41,9 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from ..exact.multiquadratic import MQ
-from .algebraic_instants import _shift, factor_over_k
-from .polyroots import peval, trim
+from ..multiquadratic import MQ
+from .factor import factor_over_k
+from .polynomials import peval, shift, trim
 from .run_tower import RunTower, sqrt_exact
 from .tower_numbers import is_tower, mq_sqrt_any
 
@@ -56,7 +56,7 @@ ONE = MQ.rational(1)
 def depressed(f) -> tuple:
     """``(p, q, r)``: ``f(y - a_3/4) = y^4 + p y^2 + q y + r`` for the monic quartic
     ``f`` (coefficients lowest degree first)."""
-    g = _shift(f, -f[3] / 4)
+    g = shift(f, -f[3] / 4)
     g = tuple(g) + (ZERO,) * (5 - len(g))
     return g[2], g[1], g[0]
 

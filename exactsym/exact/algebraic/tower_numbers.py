@@ -1,9 +1,9 @@
 """Nested radicals for the gathering simulator: critical instants held exactly in a tower.
 
-A critical instant of a motion (:mod:`.instants`) is a root of a polynomial with
-multiquadratic coefficients.  When that root needs a nested radical (a quadratic whose
-discriminant is not a square in any multiquadratic field, or a biquadratic quartic),
-it lives in a tower of quadratic extensions over the multiquadratic field
+A critical instant of a motion (the gathering simulator's ``instants``) is a root of a
+polynomial with multiquadratic coefficients.  When that root needs a nested radical (a
+quadratic whose discriminant is not a square in any multiquadratic field, or a biquadratic
+quartic), it lives in a tower of quadratic extensions over the multiquadratic field
 (:mod:`exactsym.exact.tower`, used read-only).  This module is the small adapter the
 simulator needs on top of it:
 
@@ -35,7 +35,7 @@ Towers are shared by their first radicand (:func:`tower_of`), so the same instan
 computed twice (a Look's I3 and I9 checks, the snapshot cache) gives equal numbers;
 numbers of two different towers are not compared (:meth:`TowerNumber.__eq__`:
 it raises ValueError, so a decision that would need it is ``undecided``, never wrong;
-callers that must decide equality across towers, :func:`.polyroots._same_root`, use
+callers that must decide equality across towers, :func:`.roots.same_root`, use
 the polynomials instead).
 """
 
@@ -45,9 +45,9 @@ from functools import lru_cache
 
 from flint import fmpz
 
-from ..exact.mq_closure import decided_sqrt
-from ..exact.multiquadratic import MQ
-from ..exact.tower import Tower, TowerElement
+from ..mq_closure import decided_sqrt
+from ..multiquadratic import MQ
+from ..tower import Tower, TowerElement
 
 __all__ = ["TowerNumber", "tower_of", "quadratic_root", "biquadratic_root", "tower_sqrt",
            "is_tower"]

@@ -1,20 +1,15 @@
-"""Critical instants at roots of cubic (and other) factors that square roots do not express.
+"""Numbers of K(alpha): roots of cubic (and other) factors that square roots do not express.
 
-A critical instant of a motion (:mod:`.instants`, :mod:`.joint_instants`) is a real root
+A critical instant of a motion (the gathering simulator's ``instants``) is a real root
 ``alpha`` of a square-free polynomial ``p`` with multiquadratic coefficients, isolated by
-a rational interval (:mod:`.polyroots`).  Linear and quadratic factors, and the quartics
+a rational interval (:mod:`.roots`).  Linear and quadratic factors, and the quartics
 that square roots solve, are exact already (``MQ`` numbers, tower numbers).  This module
 makes the other roots exact: the mover's point at ``tau = alpha`` has coordinates in
 ``K(alpha)``, and the fresh Look runs on them.
 
-**Factoring first.**  :func:`factor_over_k` factors ``p`` into irreducible factors over
-``K = Q(sqrt q : q a prime of p's coefficients)`` by Trager's algorithm: the norm
-``N(x) = prod_sigma sigma(p)(x - s theta)`` over the automorphisms of ``K`` (each flips the
-sign of one ``sqrt q``; ``theta`` = the sum of the ``sqrt q``, a primitive element; the
-shift ``s = 0, 1, 2, ...`` until ``N`` is square-free) is a rational polynomial, python-flint
-factors it over Q, and the gcd over ``K`` of ``p(x - s theta)`` with each rational factor is
-an irreducible factor over ``K`` (Trager 1976, Algebraic factoring and rational function
-integration, valid for any number field).  ``alpha``'s factor ``f`` is the one that changes
+**Factoring first.**  :func:`.factor.factor_over_k` factors ``p`` into irreducible
+factors over ``K = Q(sqrt q : q a prime of p's coefficients)`` (Trager's algorithm).
+``alpha``'s factor ``f`` is the one that changes
 sign on the isolating interval (the interval holds one root of ``p``, a simple one).
 
 **Why reduction modulo f is canonical for every multiquadratic field.**  The gathering code
@@ -32,8 +27,8 @@ non-constant one is never a multiquadratic number, and ``g(alpha) = 0`` iff ``f 
   ``sqrt q`` is not in ``K(alpha)`` and ``[K'(alpha):K'] = 4``; the group over ``K'`` is
   again S4 or A4 (index at most 2), so the argument repeats.
 * quartics with a reducible resolvent (D4, C4, V4): their roots are nested square roots,
-  not numbers of ``K(alpha)`` here; :func:`algebraic_root` hands the factor to
-  :mod:`.quartic_instants` (Ferrari over ``K``: an MQ or a number of a RunTower of at
+  not numbers of ``K(alpha)`` here; :func:`.roots.algebraic_root` hands the factor to
+  :mod:`.quartic` (Ferrari over ``K``: an MQ or a number of a RunTower of at
   most two levels, checked ``f(root) == 0``; None -- ``sided`` -- when it is not built).
 * other even degrees: no exact value (``sided``, as before).
 
@@ -51,214 +46,23 @@ counted as ``skipped``, the Looks just before and after it still running).
 
 from __future__ import annotations
 
-from functools import lru_cache
+from flint import arb, ctx, fmpq
 
-from flint import arb, ctx, fmpq, fmpq_poly, fmpz
+from ..field import FieldElement
+from ..mq_closure import decided_sqrt
+from ..multiquadratic import MQ
+from .factor import factor_over_k
+from .polynomials import ONE, ZERO, padd, pdivmod, peval, pmul, trim
+from .sturm import sturm_chain, variations
 
-from ..exact.field import FieldElement
-from ..exact.multiquadratic import MQ
-from .polyroots import padd as _add, pdivmod as _divmod, peval as _eval, pmul as _mul, \
-    trim as _trim
-
-__all__ = ["AlgebraicNumber", "AlgebraicRoot", "factor_over_k", "algebraic_root",
-           "is_algebraic", "algebraic_sqrt", "algebraic_sqrt_decided", "MAX_NORM_DEGREE"]
-
-ZERO = MQ()
-ONE = MQ.rational(1)
-
-#: The largest degree of the rational norm factored (degree of p times 2^#primes of K).
-MAX_NORM_DEGREE = 96
-#: The largest coefficient size (bits of a rational) of a remainder in a gcd over K.
-GCD_BITS = 20000
-
-
-# -- polynomials over MQ (tuples, lowest degree first; polyroots' arithmetic) -------------
-def _monic(p) -> tuple:
-    inv = 1 / p[-1]
-    return tuple(c * inv for c in p)
-
-
-def _bits(p) -> int:
-    return max((int(c.p).bit_length() + int(c.q).bit_length()
-                for x in p for c in x.terms.values()), default=0)
-
-
-def _gcd(p, q, budget: int | None = None):
-    """The monic gcd over the coefficients' field; None when a remainder's coefficients
-    exceed ``budget`` bits."""
-    p, q = _trim(p), _trim(q)
-    while q:
-        p, q = q, _divmod(p, q)[1]
-        if budget is not None and _bits(q) > budget:
-            return None
-    return _monic(p) if p else p
-
-
-def _shift(p, c) -> tuple:
-    """``p(x + c)`` (Horner)."""
-    acc: tuple = ()
-    for a in reversed(p):
-        acc = _add(_mul(acc, (c, ONE)), (a,))
-    return acc
-
-
-def _group_basis(p) -> tuple:
-    """``(basis, coords)``: squarefree ``b_1, ..., b_d`` independent modulo squares with
-    ``K = Q(sqrt b_1, ..., sqrt b_d)`` (``[K:Q] = 2^d``), and ``coords(m)``: the set of
-    ``j`` with ``m = prod_{j} b_j`` modulo squares, for every radicand ``m`` of ``p``
-    (Gaussian elimination over GF(2) on the primes' exponent vectors).  The automorphism
-    ``sigma_j`` flips the sign of ``sqrt m`` iff ``j`` is in ``coords(m)``."""
-    rads = sorted({m for c in p for m in c.radicands()})
-    primes = sorted({int(q) for m in rads for q, _ in fmpz(m).factor()})
-    bit = {q: 1 << k for k, q in enumerate(primes)}
-
-    def vec(m):
-        return sum(bit[int(q)] for q, e in fmpz(m).factor() if e % 2)
-
-    rows: list = []                 # (vector, pivot, combination of basis indices)
-    basis: list = []
-    for m in rads:
-        v, comb = vec(m), 0
-        for w, piv, c in rows:
-            if v & piv:
-                v, comb = v ^ w, comb ^ c
-        if v:
-            j = len(basis)
-            basis.append(m)
-            rows.append((v, v & -v, comb ^ (1 << j)))
-    coords: dict = {}
-    for m in rads:
-        v, comb = vec(m), 0
-        for w, piv, c in rows:
-            if v & piv:
-                v, comb = v ^ w, comb ^ c
-        coords[m] = comb
-    return tuple(basis), coords
-
-
-def _complete_coords(p, basis, coords: dict) -> None:
-    """Add to ``coords`` every radicand of ``p`` it lacks (products of the basis that
-    ``p``'s own coefficients did not show, met after a shift by ``theta``): the set of
-    ``j`` with ``m * prod_j b_j`` a square."""
-    for m in {m for c in p for m in c.radicands()} - coords.keys():
-        for comb in range(1 << len(basis)):
-            prod = fmpz(m)
-            for j, b in enumerate(basis):
-                if comb >> j & 1:
-                    prod *= b
-            if prod.is_square():
-                coords[m] = comb
-                break
-        else:
-            raise ArithmeticError(f"sqrt({m}) is not in the field of the basis")
-
-
-def _conjugate(x: MQ, j: int, coords: dict) -> MQ:
-    return MQ({m: (-c if m != 1 and coords[m] >> j & 1 else c) for m, c in x.terms.items()})
-
-
-def _rational_poly(p) -> fmpq_poly:
-    return fmpq_poly([c.to_fmpq() for c in p])
-
-
-def _from_rational(h: fmpq_poly) -> tuple:
-    return tuple(MQ.rational(c) for c in h.coeffs())
-
-
-# -- factoring over K = Q(sqrt primes) ---------------------------------------------------------
-@lru_cache(maxsize=512)
-def factor_over_k(p: tuple):
-    """The monic irreducible factors of the square-free ``p`` (MQ coefficients, degree >= 1)
-    over ``K``, the multiquadratic field of its coefficients' primes (Trager's algorithm);
-    None when the norm's degree exceeds :data:`MAX_NORM_DEGREE`, or when ``p`` is
-    reducible over ``K`` and a gcd over ``K`` grows beyond :data:`GCD_BITS` (Euclid's
-    coefficients swell over a number field)."""
-    p = _monic(_trim(p))
-    basis, coords = _group_basis(p)
-    if len(p) - 1 << len(basis) > MAX_NORM_DEGREE:
-        return None
-    if not basis:
-        return tuple(_monic(_from_rational(h)) for h, _ in _rational_poly(p).factor()[1])
-    theta = MQ({b: fmpq(1) for b in basis})            # a primitive element of K
-    for s in range(0, 12):
-        ps = _shift(p, -theta * s) if s else p          # ps(x) = p(x - s theta)
-        coords_s = dict(coords)
-        coords_s.update({b: 1 << j for j, b in enumerate(basis)})
-        norm = ps
-        for j in range(len(basis)):         # the product over the group, one flip at a time
-            _complete_coords(norm, basis, coords_s)
-            norm = _mul(norm, tuple(_conjugate(c, j, coords_s) for c in norm))
-        n = _rational_poly(norm)
-        if n.gcd(n.derivative()).degree() > 0:
-            continue                         # not square-free: another shift
-        factors = n.factor()[1]
-        if len(factors) == 1:                # N(p) irreducible: so is p over K (no gcd)
-            return (p,)
-        out = []
-        for h, _ in factors:
-            g = _gcd(ps, _from_rational(h), GCD_BITS)
-            if g is None:
-                return None
-            if len(g) > 1:
-                out.append(_monic(_shift(g, theta * s)) if s else g)
-        return tuple(out)
-    return None
-
-
-def _changes_sign(f, lo, hi) -> bool:
-    return _eval(f, MQ.rational(lo)).sign() * _eval(f, MQ.rational(hi)).sign() < 0
-
-
-def _stable(f) -> bool:
-    """Is the irreducible ``f`` over K irreducible over every multiquadratic extension
-    of K (module docstring)?"""
-    d = len(f) - 1
-    if d % 2:
-        return True
-    if d == 4:
-        e, dd, c, b = f[3], f[2], f[1], f[0]          # x^4 + e x^3 + dd x^2 + c x + b
-        resolvent = (-(e * e * b - dd * b * 4 + c * c), e * c - b * 4, -dd, ONE)
-        factors = factor_over_k(_trim(resolvent))
-        return factors is not None and len(factors) == 1 and len(factors[0]) == 4
-    return False
-
-
-def algebraic_root(p, lo, hi):
-    """The root of the square-free ``p`` in ``(lo, hi)`` (rationals, one root of ``p``
-    inside, none at the ends), exact: an MQ (a linear factor over K), the factor's
-    quadratic root (tower numbers, :func:`.tower_numbers.quadratic_root`), or an
-    :class:`AlgebraicNumber` (a factor of odd degree, or a quartic with an S4 or A4 group),
-    or for a quartic of group D4, C4 or V4 a nested radical (an MQ or a tower number,
-    :func:`.quartic_instants.quartic_root`); None otherwise (other even degrees, such a
-    quartic whose root :mod:`.quartic_instants` does not build, a norm too big,
-    coefficients that are not multiquadratic: a run's tower numbers)."""
-    if not all(isinstance(c, MQ) for c in p):
-        return None
-    factors = factor_over_k(_trim(p))
-    if factors is None:
-        return None
-    held = [f for f in factors if _changes_sign(f, lo, hi)]
-    if len(held) != 1:
-        return None
-    f = held[0]
-    if len(f) == 2:
-        return -f[0]
-    if len(f) == 3:
-        from .tower_numbers import quadratic_root
-        return quadratic_root(f[0], f[1], f[2], lo, hi)
-    if not _stable(f):
-        if len(f) == 5:              # D4, C4 or V4: nested square roots (Ferrari over K)
-            from .quartic_instants import quartic_root
-            return quartic_root(f, lo, hi)
-        return None
-    root = AlgebraicRoot.of(f, fmpq(lo), fmpq(hi))
-    return AlgebraicNumber(root, (ZERO, ONE))
+__all__ = ["AlgebraicNumber", "AlgebraicRoot", "is_algebraic", "algebraic_sqrt",
+           "algebraic_sqrt_decided"]
 
 
 # -- the number type ------------------------------------------------------------------------
 class AlgebraicRoot:
     """``alpha``: the root of the monic ``f`` (irreducible over every multiquadratic
-    field, :func:`_stable`) in the rational interval ``(lo, hi)``; one object per root
+    field, :func:`.factor.stable`) in the rational interval ``(lo, hi)``; one object per root
     (:meth:`of`), so numbers of the same instant share it."""
 
     _known: dict = {}            # f -> [AlgebraicRoot]
@@ -294,7 +98,7 @@ class AlgebraicRoot:
             return 1
         if v < 0:
             return -1
-        return _eval(self.f, MQ.rational(x)).sign()
+        return peval(self.f, MQ.rational(x)).sign()
 
     def _bisect(self) -> None:
         mid = (self.lo + self.hi) / 2
@@ -328,10 +132,9 @@ class AlgebraicRoot:
         root whatever interval it was isolated by, so texts (witnesses, replays) do not
         depend on the history of refinements."""
         if self._canonical is None:
-            from .polyroots import _variations, sturm_chain
             chain = sturm_chain(self.f)
             lo, hi = fmpq(min(0, self.lo.floor())), fmpq(max(1, self.hi.ceil()))
-            while _variations(chain, MQ.rational(lo)) - _variations(chain, MQ.rational(hi)) > 1:
+            while variations(chain, MQ.rational(lo)) - variations(chain, MQ.rational(hi)) > 1:
                 mid = (lo + hi) / 2
                 while self.lo < mid < self.hi:
                     self._bisect()
@@ -372,9 +175,9 @@ class AlgebraicNumber(FieldElement):
         self.root, self.c, self._hash = root, c, None
 
     def _new(self, c):
-        c = _trim(c)
+        c = trim(c)
         if len(c) > self.root.degree:
-            c = _divmod(c, self.root.f)[1]
+            c = pdivmod(c, self.root.f)[1]
         if len(c) <= 1:
             return c[0] if c else ZERO
         return AlgebraicNumber(self.root, c)
@@ -389,7 +192,7 @@ class AlgebraicNumber(FieldElement):
 
     def __add__(self, other):
         o = self._other(other)
-        return NotImplemented if o is None else self._new(_add(self.c, o))
+        return NotImplemented if o is None else self._new(padd(self.c, o))
 
     __radd__ = __add__
 
@@ -401,14 +204,14 @@ class AlgebraicNumber(FieldElement):
 
     def __sub__(self, other):
         o = self._other(other)
-        return NotImplemented if o is None else self._new(_add(self.c, tuple(-x for x in o)))
+        return NotImplemented if o is None else self._new(padd(self.c, tuple(-x for x in o)))
 
     def __rsub__(self, other):
         return (-self).__add__(other)
 
     def __mul__(self, other):
         o = self._other(other)
-        return NotImplemented if o is None else self._new(_mul(self.c, o))
+        return NotImplemented if o is None else self._new(pmul(self.c, o))
 
     __rmul__ = __mul__
 
@@ -418,9 +221,9 @@ class AlgebraicNumber(FieldElement):
         r0, r1 = self.root.f, self.c
         s0, s1 = (), (ONE,)
         while len(r1) > 1:
-            q, r = _divmod(r0, r1)
+            q, r = pdivmod(r0, r1)
             r0, r1 = r1, r
-            s0, s1 = s1, _add(s0, tuple(-x for x in _mul(q, s1)))
+            s0, s1 = s1, padd(s0, tuple(-x for x in pmul(q, s1)))
         inv = 1 / r1[0]
         return self._new(tuple(x * inv for x in s1))
 
@@ -517,20 +320,6 @@ def is_algebraic(x) -> bool:
     return isinstance(x, AlgebraicNumber)
 
 
-def mixes(world, pieces=()) -> bool:
-    """Would numbers of ``K(alpha)`` meet numbers of another kind (a run's tower of
-    nested radicals) in a fresh Look at an instant of ``pieces``: a robot standing, a
-    pending target or a planned path in such a field?  They do not mix (no common field
-    is built), so such an instant stays ``sided``."""
-    pts = [p for pc in pieces for p in (pc.start, pc.end)]
-    for r in world.robots:
-        pts.append(r.pos)
-        pts += [p for pc in (r.path or ()) for p in (pc.start, pc.end)]
-        if r.target is not None:
-            pts.append(r.target)
-    return any(not isinstance(c, MQ) for p in pts for c in p)
-
-
 def _minpoly(u: AlgebraicNumber) -> tuple:
     """The monic minimal polynomial over K of ``u`` (not in K, so of degree d: alpha's
     factor stays irreducible and K(alpha) has no field strictly between, for d prime or
@@ -572,7 +361,7 @@ def _sqrt_in_k_alpha(u: AlgebraicNumber) -> tuple:
     even = []
     for c in P:
         even += [c, ZERO]
-    factors = factor_over_k(_trim(even))
+    factors = factor_over_k(trim(even))
     if factors is None:
         return None, False
     for h in factors:
@@ -608,7 +397,6 @@ def algebraic_sqrt_decided(x) -> tuple:
     s, decided = _sqrt_in_k_alpha(x)
     odd = x.root.degree % 2 == 1
     if s is None and decided and odd:
-        from ..exact.mq_closure import decided_sqrt
         norm = -_minpoly(x)[0]                     # N(x) = (-1)^d P(0), d odd
         rn, decided = decided_sqrt(norm) if norm.sign() > 0 else (None, True)
         if rn is not None:

@@ -1,16 +1,16 @@
 """Square roots at a K(alpha) instant: one quadratic extension of K(alpha).
 
 At a critical instant that is a root ``alpha`` of a cubic (or other odd-degree) factor
-(:mod:`.algebraic_instants`), a fresh Look may need the square root of a number ``r`` of
+(:mod:`.algebraic_numbers`), a fresh Look may need the square root of a number ``r`` of
 ``K(alpha)``: the mover's radial target ``C + 2L (p - C) / |p - C|``, MakeAsym's move of
-the mover to G_t's circle.  :func:`.algebraic_instants.algebraic_sqrt` finds it when it
+the mover to G_t's circle.  :func:`.algebraic_numbers.algebraic_sqrt` finds it when it
 lies in ``K'(alpha)`` for a multiquadratic ``K'``; otherwise this module adjoins it: a
 :class:`~exactsym.exact.tower.Tower` whose base is ``K(alpha)`` (its numbers MQ or
-:class:`~.algebraic_instants.AlgebraicNumber`) and whose one level is ``y = sqrt(r)``.
+:class:`~.algebraic_numbers.AlgebraicNumber`) and whose one level is ``y = sqrt(r)``.
 
 Soundness of the canonical form ``a + b y`` (``==``, hashing) needs ``r`` to be a
 non-square in ``K'(alpha)`` for *every* multiquadratic ``K'`` (a Look brings new square
-roots of rationals): :func:`.algebraic_instants.algebraic_sqrt_decided` is complete for
+roots of rationals): :func:`.algebraic_numbers.algebraic_sqrt_decided` is complete for
 alpha of odd degree, so a level is built only there and only when that search decided
 "no root".  The tower's own test (:meth:`~exactsym.exact.tower.Tower.root_in`: norms and
 half-sums down to the base, each by that complete base test) is then complete at every
@@ -22,9 +22,9 @@ equal numbers; numbers of two towers are not compared (ValueError, as
 
 from __future__ import annotations
 
-from ..exact.mq_closure import decided_sqrt
-from ..exact.tower import Tower
-from .algebraic_instants import AlgebraicNumber, algebraic_sqrt_decided, is_algebraic
+from ..mq_closure import decided_sqrt
+from ..tower import Tower
+from .algebraic_numbers import AlgebraicNumber, algebraic_sqrt_decided, is_algebraic
 from .tower_numbers import TowerNumber
 
 __all__ = ["AlgebraicTower", "AlgebraicTowerNumber", "is_algebraic_tower",
