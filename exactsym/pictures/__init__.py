@@ -45,13 +45,11 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
     from . import _bridge
     from .draw import figure, matplotlib_modules, save
     matplotlib_modules()            # fail early, naming the extra
-    config = getattr(config_or_analysis, "config", config_or_analysis)
-    if isinstance(config, (str, bytes)) or hasattr(config, "__fspath__"):
-        config = _bridge.load_configuration(config)
-    # an analysis's results are reused (attributes truth, paper, audit when present)
-    reuse = {} if config is config_or_analysis else {
-        key: getattr(config_or_analysis, key, None) for key in ("truth", "paper", "audit")}
-    scene = _bridge.scene_of(config, show_paper=show_paper, show_audit=show_audit, **reuse)
+    subject = config_or_analysis
+    if isinstance(subject, (str, bytes)) or hasattr(subject, "__fspath__"):
+        subject = _bridge.load_configuration(subject)
+    # an analysis's results are drawn (what it lacks is analysed once, _bridge.analysis_of)
+    scene = _bridge.scene_of(subject, show_paper=show_paper, show_audit=show_audit)
     fig = figure(scene, show_paper=show_paper, show_audit=show_audit)
     if path is not None:
         save(fig, path)

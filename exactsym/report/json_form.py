@@ -21,7 +21,8 @@ def report_json(analysis: Analysis, brief: bool = False) -> dict:
     """The JSON object of ``exactsym check --json`` (``docs/cli.md``).  ``brief``: without
     ``sec``, ``levels`` and the paper's ``G`` and ``G_prime`` (their exact texts: seconds
     in a cyclotomic field of degree thousands), for summaries that do not print them."""
-    with no_cycle_collection():        # one small dict per level: nothing cyclic
+    # one small dict per level: nothing cyclic; the texts read the analysis's forms
+    with no_cycle_collection(), analysis.reading():
         return _report_json(analysis, brief)
 
 
