@@ -38,7 +38,8 @@ _C_ITEM = c_make_encoder(None, json.JSONEncoder().default, encode_basestring_asc
 
 
 #: The encoded text of each dict key seen by :func:`_item`, with ``": "`` (a level entry
-#: has the same three or four keys: encoded once, not once per level).
+#: has the same three or four keys: encoded once, not once per level).  Keyed by the key
+#: names the report writes (a fixed set): nothing of one configuration is kept.
 _KEY_TEXT: dict = {}
 
 
