@@ -28,6 +28,7 @@ from .paper.family import DEFAULT_LIMITS, PaperResult, paper_procedure
 from .paper.circle_polygon import level_polygon
 from .paper.polygon import straight_lines
 from .paper.polygon_report import level_section
+from .truth.near_symmetry import NearSymmetry, near_symmetry_hint
 from .truth.symmetry import SymmetryGroup, symmetry_group
 
 #: The parts :func:`analyse` can compute, in the order it computes them.
@@ -93,6 +94,12 @@ class Analysis:
         with self.reading():
             return tuple(line.key for line in
                          straight_lines(level_polygon(self.config, self.levels, k)))
+
+    def near_symmetry(self) -> NearSymmetry | None:
+        """A configuration of a larger group near this one
+        (:func:`exactsym.truth.near_symmetry.near_symmetry_hint`: a hint, never a verdict),
+        made on demand: the text summary shows it, nothing else reads it."""
+        return near_symmetry_hint(self.config)
 
 
 def analyse(config: Configuration, sections=PARTS, options: Options | None = None) -> Analysis:

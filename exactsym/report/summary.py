@@ -1,8 +1,8 @@
 """The text report of ``exactsym check``, for people: a short summary, the per-level
 detail with ``--verbose``, one line per file when several files are checked.
 
-Everything is read from one :class:`~exactsym.analysis.Analysis` (nothing is recomputed
-but the near-symmetry hint, which is not part of the analysis and never a verdict) and
+Everything is read from one :class:`~exactsym.analysis.Analysis` (the near-symmetry hint,
+never a verdict, is made on demand by :meth:`~exactsym.analysis.Analysis.near_symmetry`) and
 from its JSON form (:func:`exactsym.report.json_form.report_json`), so that fields other layers add
 later are shown too: a value is never printed as a Python dict or repr but in words
 (:func:`plain`).  Numbers go through :mod:`exactsym.exact.text_numbers`: exact text, a decimal
@@ -469,9 +469,8 @@ def _trace(paper: dict) -> list[str]:
 
 # ---------------------------------------------------------------- hint, one line
 def _near_symmetry(analysis: Analysis) -> str | None:
-    """The near-symmetry hint (:mod:`exactsym.truth.near_symmetry`), or None."""
-    from ..truth.near_symmetry import near_symmetry_hint
-    found = near_symmetry_hint(analysis.config)
+    """The near-symmetry hint (:meth:`~exactsym.analysis.Analysis.near_symmetry`), or None."""
+    found = analysis.near_symmetry()
     return None if found is None else found.text
 
 
