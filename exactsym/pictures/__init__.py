@@ -17,9 +17,10 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
     """Draw a configuration; save it to ``path`` (``.svg``, ``.png`` or ``.pdf``) when
     given, and return the matplotlib ``Figure``.
 
-    ``config_or_analysis``: a :class:`exactsym.geometry.configuration.Configuration`, a path to
-    a configuration file, or an object with a ``config`` attribute (an analysis: its
-    ``truth``, ``paper`` and ``audit``, when present, are drawn instead of recomputed).
+    ``config_or_analysis``: an :class:`exactsym.analysis.Analysis` (what it holds is drawn;
+    a part it lacks is analysed once), a
+    :class:`exactsym.geometry.configuration.Configuration` or a path to a configuration
+    file (analysed once, with the parts the picture shows).
     ``show_paper``: also draw the lines of symmetry the paper's tests report per level
     (straight: dashed; skew: the pairs the half-turn swaps, dotted) and the paper's
     leader (a square).  ``show_audit``: also draw the witness of each statement of the
