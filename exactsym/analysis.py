@@ -9,18 +9,26 @@
 
 Every command and both renderings of the report (:mod:`exactsym.report.check`: JSON and text)
 read the :class:`Analysis` it returns; nothing appends itself to anything at import.
+
+The work the layers remember per number or vector object (balls, gaps, homogeneous forms
+of directions) is held by one :class:`~exactsym.geometry.analysis_context.AnalysisContext`
+per analysis, made here and kept in the :class:`Analysis` (its report reads the same
+forms): no module keeps anything of one configuration for the next.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 from .audit.statements import audit as run_audit
+from .geometry.analysis_context import AnalysisContext
 from .geometry.configuration import Configuration, no_cycle_collection
 from .geometry.levels import Level, Levels, RationalLevels, levels_of
 from .paper.family import DEFAULT_LIMITS, PaperResult, paper_procedure
-from .paper.homogeneous import forget as forget_directions
+from .paper.circle_polygon import level_polygon
+from .paper.polygon import straight_lines
 from .paper.polygon_report import level_section
+from .truth.near_symmetry import NearSymmetry, near_symmetry_hint
 from .truth.symmetry import SymmetryGroup, symmetry_group
 
 #: The parts :func:`analyse` can compute, in the order it computes them.
@@ -60,7 +68,8 @@ class Analysis:
     ``level_verdicts``: per level, the polygon layer's verdicts (a JSON-ready dict, None
     for the robot at C); ``level_strings``: per level, the CW/ACW strings (None unless
     ``options.strings``); ``paper``: the family layer's result; ``audit``: the audit's
-    JSON-ready dict (:func:`exactsym.audit.statements.audit`)."""
+    JSON-ready dict (:func:`exactsym.audit.statements.audit`); ``context``: the caches the
+    analysis filled, which its report reads (:meth:`reading`)."""
     config: Configuration
     options: Options
     levels: Levels
@@ -69,6 +78,28 @@ class Analysis:
     level_strings: tuple | None = None
     paper: PaperResult | None = None
     audit: dict | None = None
+    context: AnalysisContext = field(default_factory=AnalysisContext, compare=False,
+                                     repr=False)
+
+    def reading(self):
+        """A ``with`` block in which lazy texts of the analysis read its caches (the
+        short texts of directions, :mod:`exactsym.paper.homogeneous`)."""
+        return self.context.active()
+
+    def straight_lines(self, k: int) -> tuple:
+        """The exact keys of the lines of straight symmetry that the CW/ACW strings find
+        on level ``k`` (0-based; ``lemma-straight-sym``, :func:`exactsym.paper.polygon.straight_lines`),
+        made on demand: the pictures draw them, the report only counts them
+        (``lines_by_strings``)."""
+        with self.reading():
+            return tuple(line.key for line in
+                         straight_lines(level_polygon(self.config, self.levels, k)))
+
+    def near_symmetry(self) -> NearSymmetry | None:
+        """A configuration of a larger group near this one
+        (:func:`exactsym.truth.near_symmetry.near_symmetry_hint`: a hint, never a verdict),
+        made on demand: the text summary shows it, nothing else reads it."""
+        return near_symmetry_hint(self.config)
 
 
 def analyse(config: Configuration, sections=PARTS, options: Options | None = None) -> Analysis:
@@ -89,7 +120,6 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
     True
     """
     options = options if options is not None else Options()
-    forget_directions()         # the last configuration's short texts (megabyte vectors)
     wanted = set(sections)
     unknown = wanted - set(PARTS)
     if unknown:
@@ -97,7 +127,8 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
     for part in PARTS[::-1]:
         if part in wanted:
             wanted.update(NEEDS[part])
-    with no_cycle_collection():
+    context = AnalysisContext()         # this configuration's caches, dropped with it
+    with no_cycle_collection(), context.active():
         levels = levels_of(config)
         truth = symmetry_group(config, levels) if "truth" in wanted else None
         if wanted - {"truth"}:
@@ -118,7 +149,8 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
                                                     "limits": limits},
                             group=truth, level_verdicts=verdicts,
                             level_types=types) if "audit" in wanted else None
-    return Analysis(config, options, levels, truth, verdicts, strings, paper, audited)
+    return Analysis(config, options, levels, truth, verdicts, strings, paper, audited,
+                    context)
 
 
 def built_levels(levels: Levels) -> Levels:

@@ -17,7 +17,6 @@ PACKAGE = ROOT / "exactsym"
 #: xfail, so the line must go when its package is mended
 NOT_YET = {
     ("circle", "exact"),
-    ("circle", "report"),
     ("private", "exact"),
     ("private", "geometry"),
     ("private", "paper"),

@@ -135,7 +135,7 @@ def test_no_python_value_on_screen_and_a_decimal_beside_every_irrational_number(
 def test_fields_added_later_are_shown_in_words(monkeypatch):
     """report_text reads the JSON form: a field another layer adds (to a level's paper
     verdict, a discrepancy, the paper, the audit) is shown with --verbose, in words."""
-    import exactsym.report.check as report
+    import exactsym.report.json_form as report
 
     original = report.report_json
 
@@ -226,7 +226,7 @@ def test_the_audit_command_prints_no_python_value(capsys, monkeypatch):
 
 
 def test_the_audit_line_counts_the_statements_checked_when_told(monkeypatch):
-    import exactsym.report.check as report
+    import exactsym.report.json_form as report
     original = report.report_json
 
     def covered(analysis, brief=False):

@@ -19,7 +19,7 @@ from exactsym.paper.circle_polygon import level_polygon
 from exactsym.paper.family import concentric_polygons
 from exactsym.paper.family.concentric import mirror_lines
 from exactsym.paper.filtered import cross_sign, dot_sign
-from exactsym.paper.homogeneous import forget
+from exactsym.geometry.analysis_context import AnalysisContext
 from exactsym.paper.keys import gap_ids
 from exactsym.paper.polygon_report import level_verdicts
 
@@ -70,10 +70,10 @@ def test_family_keys_from_homogeneous_forms(tmp_path, pairs, denominator, shift)
     same with the homogeneous forms recorded as without them."""
     config = mirror_pairs(tmp_path, pairs, denominator, shift)
     levels = built_levels(levels_of(config))
-    forget()
-    rings = concentric_polygons(config, levels)
-    with_forms = [(gap_ids(r.polygon), set(mirror_lines(r.polygon))) for r in rings]
-    forget()            # no forms: the keys are made from p - C itself
+    with AnalysisContext().active():        # the forms are recorded in an analysis's caches
+        rings = concentric_polygons(config, levels)
+        with_forms = [(gap_ids(r.polygon), set(mirror_lines(r.polygon))) for r in rings]
+    # outside an analysis no forms (nor any other cache): the keys are made from p - C itself
     without = [(gap_ids(r.polygon), set(mirror_lines(r.polygon))) for r in rings]
     assert with_forms == without
     assert all(len(lines) == 1 for _, lines in with_forms)   # the x-axis mirror of each pair

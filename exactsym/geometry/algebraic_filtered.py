@@ -30,6 +30,7 @@ from flint import arb, ctx, fmpq
 from ..exact import FieldElement, exact_sorted
 from ..exact.field import PolyElement
 from ..io.exprtree import BinOp, Const, Neg, Pow, Sqrt, Trig
+from .analysis_context import Cache
 from .predicates import PseudoAngle
 from .strings import cyclic_occurrences, cyclic_period
 
@@ -88,7 +89,7 @@ def sum_of_products(pairs):
     return total
 
 
-_BALLS: dict = {}      # id(points) -> (points, xs, ys): the last few point tuples' balls
+_BALLS = Cache("coordinate balls")     # id(points) -> (points, xs, ys): the last few tuples'
 
 
 def coordinate_balls(points, polar=None, specs=None) -> tuple[list, list]:
@@ -101,7 +102,8 @@ def coordinate_balls(points, polar=None, specs=None) -> tuple[list, list]:
     from (``Configuration.specs``), enclosed by :func:`expression_ball` (0.4 ms less per
     coordinate in degree 960); a coordinate whose ball is not finite is enclosed from
     its exact value."""
-    hit = _BALLS.get(id(points))
+    known = _BALLS.table()
+    hit = known.get(id(points))
     if hit is not None and hit[0] is points:
         return hit[1], hit[2]
     xs = ys = None
@@ -133,9 +135,9 @@ def coordinate_balls(points, polar=None, specs=None) -> tuple[list, list]:
         if xs is None:
             xs = [_ball(p[0]) for p in points]
             ys = [_ball(p[1]) for p in points]
-    if len(_BALLS) >= 4:
-        _BALLS.clear()
-    _BALLS[id(points)] = (points, xs, ys)
+    if len(known) >= 4:
+        known.clear()
+    known[id(points)] = (points, xs, ys)
     return xs, ys
 
 
@@ -186,7 +188,7 @@ def overlapping_pairs(xs: list, ys: list) -> list[tuple[int, int]]:
     return pairs
 
 
-_CENTRES: dict = {}    # id(homogeneous) -> (homogeneous, cx ball, cy ball): the audit's
+_CENTRES = Cache("centre balls")    # id(homogeneous) -> (homogeneous, cx, cy balls): the audit's
                        # unions of levels share the whole configuration's centre
 
 
@@ -202,15 +204,16 @@ class Enclosures:
         x, y, d = homogeneous
         self.unit = d == 1
         with ctx.workprec(PREC):
-            hit = _CENTRES.get(id(homogeneous))
+            centres = _CENTRES.table()
+            hit = centres.get(id(homogeneous))
             if hit is not None and hit[0] is homogeneous:
                 cx, cy = hit[1], hit[2]
             else:
                 bd = _ball(d)
                 cx, cy = _ball(x) / bd, _ball(y) / bd
-                if len(_CENTRES) >= 8:
-                    _CENTRES.clear()
-                _CENTRES[id(homogeneous)] = (homogeneous, cx, cy)
+                if len(centres) >= 8:
+                    centres.clear()
+                centres[id(homogeneous)] = (homogeneous, cx, cy)
             xs, ys = balls if balls is not None else coordinate_balls(points)
             self.balls = (xs, ys)
             self.vx = [b - cx for b in xs]

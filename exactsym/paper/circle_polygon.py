@@ -74,6 +74,7 @@ from functools import cached_property, cmp_to_key
 from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
 from ..exact.sparse_cyclotomic import SparseCyclotomic
 from ..exact.tower import TowerElement
+from ..geometry.analysis_context import Cache
 from .filtered import ball, compare_directions
 from .homogeneous import register
 from .inverses import inverse_length, squared_length
@@ -114,7 +115,7 @@ def _circle_chord(u, v):
     return -_dot(u, v)
 
 
-_PAIRS: dict = {}
+_PAIRS = Cache("direction pairs")     # (f, id(u), id(v)) -> (u, v, f(u, v))
 _PAIRS_LIMIT = 1 << 16
 
 
@@ -128,13 +129,14 @@ def _pair_value(f, u, v):
             not isinstance(v[0], FieldElement) and not isinstance(v[1], FieldElement):
         return f(u, v)
     key = (f, id(u), id(v)) if id(u) <= id(v) else (f, id(v), id(u))
-    hit = _PAIRS.get(key)
+    pairs = _PAIRS.table()
+    hit = pairs.get(key)
     if hit is not None and ((hit[0] is u and hit[1] is v) or (hit[0] is v and hit[1] is u)):
         return hit[2]
     value = f(u, v)
-    if len(_PAIRS) >= _PAIRS_LIMIT:
-        _PAIRS.clear()
-    _PAIRS[key] = (u, v, value)
+    if len(pairs) >= _PAIRS_LIMIT:
+        pairs.clear()
+    pairs[key] = (u, v, value)
     return value
 
 

@@ -16,25 +16,27 @@ from __future__ import annotations
 from flint import arb
 
 from ..exact import FieldElement, exact_key, sign
+from ..geometry.analysis_context import Cache
 
 _PREC = 64
-_BALLS: dict = {}
+_BALLS = Cache("paper balls")     # id(x) -> (x, ball)
 _LIMIT = 1 << 14
 
 
 def ball(x) -> arb:
     """An Arb ball containing the exact number ``x`` (cached per object: the entry holds
     the object itself, so an id is never mistaken for another object's)."""
-    hit = _BALLS.get(id(x))
+    balls = _BALLS.table()
+    hit = balls.get(id(x))
     if hit is not None and hit[0] is x:
         return hit[1]
     if isinstance(x, FieldElement):
         b = x.enclosure(_PREC)
     else:
         b = arb(x)
-    if len(_BALLS) >= _LIMIT:
-        _BALLS.clear()
-    _BALLS[id(x)] = (x, b)
+    if len(balls) >= _LIMIT:
+        balls.clear()
+    balls[id(x)] = (x, b)
     return b
 
 

@@ -25,9 +25,10 @@ so these texts are exact; they are only *written* this way, every computation us
 numbers as they are.  :func:`register` records the homogeneous form of a direction
 vector when the paper layer makes it (:func:`homogeneous_of` finds it by the vector
 object: an entry keeps the vector alive, so an id is never mistaken for another's).
-The vectors are megabytes each, so the record holds one configuration's:
-:func:`exactsym.analysis.analyse` calls :func:`forget` first (the report, written after
-the analysis, still reads them).
+The record is a table of the analysis's context
+(:class:`~exactsym.geometry.analysis_context.AnalysisContext`): the vectors are
+megabytes each, and it holds one configuration's, which the report of that analysis
+still reads.  Outside an analysis nothing is recorded: the texts are the usual ones.
 """
 
 from __future__ import annotations
@@ -36,9 +37,10 @@ from ..exact import number_text
 from ..exact.field import PolyElement
 from ..exact.sparse_cyclotomic import SparseCyclotomic
 from ..exact.tower import TowerElement
+from ..geometry.analysis_context import Cache
 from .ratio_keys import rational_ratio
 
-__all__ = ["SHORT_DEGREE", "forget", "register", "homogeneous_of", "scaled", "quotient_text",
+__all__ = ["SHORT_DEGREE", "register", "homogeneous_of", "scaled", "quotient_text",
            "centre_texts", "is_short", "is_short_field", "radius_text", "sec_radius_text",
            "line_direction", "slope_text", "homogeneous_pair"]
 
@@ -47,16 +49,10 @@ SHORT_DEGREE = 512
 
 # id(vector) -> [vector, homogeneous vector or None, function making it]: made when a text
 # first asks (the summary writes few lines: no product per robot on the hot path)
-_FORMS: dict = {}
+_FORMS = Cache("homogeneous forms")
 _LIMIT = 1 << 14
 # id(homogeneous centre) -> [centre, whether its texts are short] (:func:`is_short`)
-_SHORT: dict = {}
-
-
-def forget() -> None:
-    """Drop every recorded form (a new configuration is analysed)."""
-    _FORMS.clear()
-    _SHORT.clear()
+_SHORT = Cache("short centres")
 
 
 def is_short_field(d) -> bool:
@@ -77,15 +73,16 @@ def is_short(homogeneous) -> bool:
     (a rational C is short divided: a centre (1, 1/3) stays "1", "1/3"; decided without
     dividing, :func:`~exactsym.paper.ratio_keys.rational_ratio`).  Decided once per
     centre."""
-    hit = _SHORT.get(id(homogeneous))
+    known = _SHORT.table()
+    hit = known.get(id(homogeneous))
     if hit is not None and hit[0] is homogeneous:
         return hit[1]
     x, y, d = homogeneous
     short = is_short_field(d) and (rational_ratio(x, d) is None or
                                    rational_ratio(y, d) is None)
-    if len(_SHORT) >= _LIMIT:
-        _SHORT.clear()
-    _SHORT[id(homogeneous)] = [homogeneous, short]
+    if len(known) >= _LIMIT:
+        known.clear()
+    known[id(homogeneous)] = [homogeneous, short]
     return short
 
 
@@ -98,7 +95,7 @@ def register(vector, point, homogeneous) -> None:
 
 def scaled(vector, source, k) -> None:
     """``vector == k * source`` for a positive rational k: record its homogeneous form."""
-    hit = _FORMS.get(id(source))
+    hit = _FORMS.table().get(id(source))
     if hit is not None and hit[0] is source:
         def make():
             found = homogeneous_of(source)
@@ -107,14 +104,15 @@ def scaled(vector, source, k) -> None:
 
 
 def _record(vector, make) -> None:
-    if len(_FORMS) >= _LIMIT:
-        _FORMS.clear()
-    _FORMS[id(vector)] = [vector, None, make]
+    forms = _FORMS.table()
+    if len(forms) >= _LIMIT:
+        forms.clear()
+    forms[id(vector)] = [vector, None, make]
 
 
 def homogeneous_of(vector):
     """The homogeneous form of ``vector`` (a positive multiple of it), or None."""
-    hit = _FORMS.get(id(vector))
+    hit = _FORMS.table().get(id(vector))
     if hit is None or hit[0] is not vector:
         return None
     if hit[1] is None and hit[2] is not None:

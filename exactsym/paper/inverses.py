@@ -11,8 +11,9 @@ changes how a key is computed, never its value.
 from __future__ import annotations
 
 from ..exact import FieldElement, exact_key, fmpq
+from ..geometry.analysis_context import Cache
 
-_INVERSES: dict = {}
+_INVERSES = Cache("inverse lengths")     # exact key -> inverse
 _LIMIT = 256
 
 
@@ -26,15 +27,16 @@ def inverse_length(length):
     if not isinstance(length, FieldElement) or length.is_rational():
         return reciprocal(length)
     k = exact_key(length)
-    inv = _INVERSES.get(k)
+    inverses = _INVERSES.table()
+    inv = inverses.get(k)
     if inv is None:
-        if len(_INVERSES) >= _LIMIT:
-            _INVERSES.clear()
-        inv = _INVERSES[k] = reciprocal(length)
+        if len(inverses) >= _LIMIT:
+            inverses.clear()
+        inv = inverses[k] = reciprocal(length)
     return inv
 
 
-_LENGTHS: dict = {}
+_LENGTHS = Cache("squared lengths")     # id(d) -> (d, |d|^2)
 
 
 def squared_length(d):
@@ -44,13 +46,14 @@ def squared_length(d):
     x, y = d
     if not isinstance(x, FieldElement) and not isinstance(y, FieldElement):
         return x * x + y * y
-    hit = _LENGTHS.get(id(d))
+    lengths = _LENGTHS.table()
+    hit = lengths.get(id(d))
     if hit is not None and hit[0] is d:
         return hit[1]
     value = x * x + y * y
-    if len(_LENGTHS) >= 1 << 14:
-        _LENGTHS.clear()
-    _LENGTHS[id(d)] = (d, value)
+    if len(lengths) >= 1 << 14:
+        lengths.clear()
+    lengths[id(d)] = (d, value)
     return value
 
 

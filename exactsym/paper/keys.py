@@ -18,6 +18,7 @@ from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
 from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
 from ..exact.text_numbers import DIGITS, HUGE, LONG, huge_quotient, number, quotient_decimal
+from ..geometry.analysis_context import Cache
 from .homogeneous import homogeneous_pair, line_direction, slope_text
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
@@ -135,11 +136,12 @@ class LineKey:
         if self._value is None:
             # one division per line, not per key object: equal keys have one value
             slot = self._slot()
-            known = _LINE_VALUES.get(slot)
+            values = _LINE_VALUES.table()
+            known = values.get(slot)
             if known is None:
-                if len(_LINE_VALUES) >= _LINE_LIMIT:
-                    _LINE_VALUES.clear()
-                known = _LINE_VALUES[slot] = [ray_value(*self._vector), None]
+                if len(values) >= _LINE_LIMIT:
+                    values.clear()
+                known = values[slot] = [ray_value(*self._vector), None]
             self._value = known[0]
         return self._value
 
@@ -193,7 +195,7 @@ class LineKey:
                 f"({s}, ({number_text(y)})/({number_text(x)}))"
         if self._text is None:
             value = self.value
-            known = _LINE_VALUES.get(self._slot()) if self._vector is not None else None
+            known = _LINE_VALUES.table().get(self._slot()) if self._vector is not None else None
             if known is None or known[0] is not value:     # the text of this very value
                 known = [value, None]
             if known[1] is None:
@@ -300,7 +302,7 @@ class LineKey:
         return f"LineKey({self.value!r})"
 
 
-_LINE_VALUES: dict = {}     # (LineKey, fields) -> [value, text or None]
+_LINE_VALUES = Cache("line values")     # (LineKey, fields) -> [value, text or None]
 
 #: fields from this degree print a line's slope undivided (:attr:`LineKey.text`)
 QUOTIENT_DEGREE = 512
@@ -414,7 +416,7 @@ def bisector_key(polar: bool, a, b) -> LineKey:
     return _product_line(a, b)
 
 
-_PRODUCT_LINES: dict = {}   # (id(a), id(b)) -> (a, b, key): one key per pair of vectors
+_PRODUCT_LINES = Cache("product lines")   # (id(a), id(b)) -> (a, b, key): one per pair
 
 
 def _product_line(a, b) -> LineKey:
@@ -426,13 +428,14 @@ def _product_line(a, b) -> LineKey:
     them, so an id is not reused): the line of a lone vertex, its mirror, is the line of
     its direction, and two keys made apart were equal only by exact products, minutes in
     a tower over the sparse base with a centre of thousands of terms."""
-    hit = _PRODUCT_LINES.get((id(a), id(b)))
+    lines = _PRODUCT_LINES.table()
+    hit = lines.get((id(a), id(b)))
     if hit is not None and hit[0] is a and hit[1] is b:
         return hit[2]
     key = _made_product_line(a, b)
-    if len(_PRODUCT_LINES) >= 1 << 14:
-        _PRODUCT_LINES.clear()
-    _PRODUCT_LINES[(id(a), id(b))] = (a, b, key)
+    if len(lines) >= 1 << 14:
+        lines.clear()
+    lines[(id(a), id(b))] = (a, b, key)
     return key
 
 

@@ -17,9 +17,10 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
     """Draw a configuration; save it to ``path`` (``.svg``, ``.png`` or ``.pdf``) when
     given, and return the matplotlib ``Figure``.
 
-    ``config_or_analysis``: a :class:`exactsym.geometry.configuration.Configuration`, a path to
-    a configuration file, or an object with a ``config`` attribute (an analysis: its
-    ``truth``, ``paper`` and ``audit``, when present, are drawn instead of recomputed).
+    ``config_or_analysis``: an :class:`exactsym.analysis.Analysis` (what it holds is drawn;
+    a part it lacks is analysed once), a
+    :class:`exactsym.geometry.configuration.Configuration` or a path to a configuration
+    file (analysed once, with the parts the picture shows).
     ``show_paper``: also draw the lines of symmetry the paper's tests report per level
     (straight: dashed; skew: the pairs the half-turn swaps, dotted) and the paper's
     leader (a square).  ``show_audit``: also draw the witness of each statement of the
@@ -45,13 +46,11 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
     from . import _bridge
     from .draw import figure, matplotlib_modules, save
     matplotlib_modules()            # fail early, naming the extra
-    config = getattr(config_or_analysis, "config", config_or_analysis)
-    if isinstance(config, (str, bytes)) or hasattr(config, "__fspath__"):
-        config = _bridge.load_configuration(config)
-    # an analysis's results are reused (attributes truth, paper, audit when present)
-    reuse = {} if config is config_or_analysis else {
-        key: getattr(config_or_analysis, key, None) for key in ("truth", "paper", "audit")}
-    scene = _bridge.scene_of(config, show_paper=show_paper, show_audit=show_audit, **reuse)
+    subject = config_or_analysis
+    if isinstance(subject, (str, bytes)) or hasattr(subject, "__fspath__"):
+        subject = _bridge.load_configuration(subject)
+    # an analysis's results are drawn (what it lacks is analysed once, _bridge.analysis_of)
+    scene = _bridge.scene_of(subject, show_paper=show_paper, show_audit=show_audit)
     fig = figure(scene, show_paper=show_paper, show_audit=show_audit)
     if path is not None:
         save(fig, path)

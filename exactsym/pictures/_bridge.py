@@ -1,7 +1,10 @@
-"""The one place where the plot package reads the library: results -> :class:`.scene.Scene`.
+"""The one place where the plot package reads the library: an analysis -> :class:`.scene.Scene`.
 
 Every import from the rest of exactsym is in this module (plus the stable public names
 of :mod:`exactsym.exact`), so that a change of the library's layout touches one file.
+A picture is made from one :class:`~exactsym.analysis.Analysis` only: handed a
+configuration, this module calls :func:`~exactsym.analysis.analyse` once for the parts the
+picture shows, and never the truth, the paper or the audit itself.
 Coordinates become floats here, only for drawing (through the kernel's ``float`` of
 its numbers, and ``arb`` balls for polar points); nothing drawn decides anything.
 """
@@ -10,21 +13,17 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import replace
 
 from flint import arb
 
+from ..analysis import PARTS, analyse
 from ..exact import fmpq
 from ..geometry.configuration import Configuration, load
 from ..errors import InputError
-from ..geometry.levels import levels_of as compute_rings
-from ..truth.symmetry import symmetry_group
-from ..paper import polygon as paper_polygon
-from ..paper.circle_polygon import level_polygon
-from ..paper import family as paper_family
-from ..audit.statements import audit as run_audit
 from .scene import Circle, Line, Paper, PaperLevel, Robot, Rotation, Scene, Witness
 
-__all__ = ["scene_of", "load_configuration", "Configuration", "InputError"]
+__all__ = ["scene_of", "analysis_of", "load_configuration", "Configuration", "InputError"]
 
 #: Up to this many ground-truth mirrors are all drawn; above, only the first (a regular
 #: 1000-gon has 1000: drawn, they would paint a disc).
@@ -62,14 +61,35 @@ def _line_angle(key, polar: bool) -> float:
     return math.atan2(s * _float(q), s) / 2
 
 
-def scene_of(config: Configuration, *, show_paper: bool = False, show_audit: bool = False,
-             truth=None, paper=None, audit=None) -> Scene:
-    """The :class:`Scene` of ``config``: ground truth always, the paper's tests and the
-    audit's witnesses when asked (they run the paper's algorithms: slower).  ``truth``
-    (a SymmetryGroup), ``paper`` (the family layer's PaperResult) and ``audit`` (the
-    audit's dict), when given (say from an analysis), are used instead of recomputed."""
-    ring = compute_rings(config)
-    group = truth if truth is not None else symmetry_group(config, ring)
+#: The parts of an analysis a picture reads -> the field of :class:`~exactsym.analysis.Analysis`
+#: that holds each.
+FIELDS = {"truth": "truth", "polygons": "level_verdicts", "family": "paper", "audit": "audit"}
+
+
+def analysis_of(subject, show_paper: bool = False, show_audit: bool = False):
+    """An analysis of ``subject`` with the parts a picture shows: ``subject`` itself when
+    it has them; else, for a :class:`Configuration` or an analysis lacking some part,
+    :func:`analyse` once for the missing parts (a part ``subject`` holds is kept)."""
+    config = getattr(subject, "config", subject)
+    wanted = {"truth"} | ({"polygons", "family"} if show_paper else set()) | \
+        ({"audit"} if show_audit else set())
+    given = {} if config is subject else \
+        {name: getattr(subject, name, None) for name in ("levels", *FIELDS.values())}
+    missing = [part for part in PARTS if part in wanted and given.get(FIELDS[part]) is None]
+    if given.get("levels") is not None and not missing:
+        return subject
+    fresh = analyse(config, sections=missing)
+    kept = {name: value for name, value in given.items()
+            if value is not None and name != "levels"}
+    return replace(fresh, **kept) if kept else fresh
+
+
+def scene_of(subject, *, show_paper: bool = False, show_audit: bool = False) -> Scene:
+    """The :class:`Scene` of ``subject`` (an analysis or a :class:`Configuration`,
+    :func:`analysis_of`): ground truth always, the paper's tests and the audit's witnesses
+    when asked (they run the paper's algorithms: slower)."""
+    analysis = analysis_of(subject, show_paper, show_audit)
+    config, ring, group = analysis.config, analysis.levels, analysis.truth
     centre_exact = ring.sec.centre
     centre = (_float(centre_exact[0]), _float(centre_exact[1]))
     if config.polar is not None:
@@ -95,17 +115,14 @@ def scene_of(config: Configuration, *, show_paper: bool = False, show_audit: boo
                             else "configuration")
     notes = []
     paper = witnesses = None
-    if show_paper or show_audit:
-        result = paper if paper is not None else paper_family.paper_procedure(config, ring)
-        if show_paper:
-            paper, skipped = _paper(config, ring, result, centre)
-            if skipped:
-                notes.append(f"paper's tests not drawn on {skipped} level(s): past the "
-                             f"first {MAX_PAPER_LEVELS}, or over {MAX_PAPER_VERTICES} "
-                             "vertices")
-        if show_audit:
-            found = audit if audit is not None else run_audit(config, ring, result)
-            witnesses = _witnesses(found["discrepancies"], centre, xy, sec_r)
+    if show_paper:
+        paper, skipped = _paper(analysis, centre)
+        if skipped:
+            notes.append(f"paper's tests not drawn on {skipped} level(s): past the "
+                         f"first {MAX_PAPER_LEVELS}, or over {MAX_PAPER_VERTICES} "
+                         "vertices")
+    if show_audit:
+        witnesses = _witnesses(analysis.audit["discrepancies"], centre, xy, sec_r)
     return Scene(title=title, model=config.model, robots=robots, centre=centre,
                  centre_exact=tuple(centre_exact), sec=sec, levels=levels, group=group.name,
                  rotation=rotation, mirrors=mirrors, mirrors_total=total,
@@ -134,7 +151,10 @@ def _mirrors(group, centre, reach) -> tuple[tuple[Line, ...], int]:
     return tuple(lines), m
 
 
-def _paper(config, ring, result, centre) -> tuple[Paper, int]:
+def _paper(analysis, centre) -> tuple[Paper, int]:
+    """The paper's per-level tests as the analysis found them (its level verdicts: the
+    test run, symmetric, straight, skew) and the family layer's leader."""
+    ring, result = analysis.levels, analysis.paper
     levels, skipped = [], 0
     for k, level in enumerate(ring.levels):
         if ring.levels[k].radius_squared == 0:
@@ -142,21 +162,19 @@ def _paper(config, ring, result, centre) -> tuple[Paper, int]:
         if len(levels) >= MAX_PAPER_LEVELS or len(level.points) > MAX_PAPER_VERTICES:
             skipped += 1
             continue
-        polygon = level_polygon(config, ring, k)
-        check = paper_polygon.check_symmetry(polygon)
+        check = analysis.level_verdicts[k]
         reach = math.sqrt(_float(level.radius_squared))
         # the lines as the strings find them (lemma-straight-sym), when the test reports
         # straight symmetry at all (Check_Symmetry_Even may report skew only)
-        straight = tuple(Line(f"G{k + 1}", centre, _line_angle(line.key, polygon.polar),
-                              reach, "straight", line.key)
-                         for line in paper_polygon.straight_lines(polygon)) \
-            if check.straight else ()
-        labels = polygon.labels
+        straight = tuple(Line(f"G{k + 1}", centre, _line_angle(key, ring.polar),
+                              reach, "straight", key)
+                         for key in analysis.straight_lines(k)) if check["straight"] else ()
+        labels = tuple(level.points)        # the level polygon's vertices, in its order
         n = len(labels)
         pairs = tuple((labels[i], labels[i + n // 2]) for i in range(n // 2)) \
-            if check.skew and n % 2 == 0 else ()
-        levels.append(PaperLevel(k + 1, check.algorithm, check.symmetric, straight,
-                                 check.skew, pairs))
+            if check["skew"] and n % 2 == 0 else ()
+        levels.append(PaperLevel(k + 1, check["check"], check["symmetric"], straight,
+                                 check["skew"], pairs))
     return Paper(tuple(levels), result.leader, result.orderable), skipped
 
 

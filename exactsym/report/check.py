@@ -1,12 +1,14 @@
 """The report of ``exactsym check``: JSON and text rendered from one :class:`Analysis`,
 and the check of a configuration's ``[expect]`` block.
 
-:func:`report_json` returns a JSON-ready dict with the keys of ``docs/cli.md``; exact
-numbers are strings in the configuration syntax.  :func:`report_text` is the summary the
-command prints without ``--json`` (:mod:`exactsym.report.summary`).  Both read the :class:`~exactsym.analysis.Analysis`
-only (nothing is recomputed here).  To add a section: add its part to
-:func:`exactsym.analysis.analyse`, then one block to each of the two functions below, and
-its ``[expect]`` keys to :data:`EXPECTATIONS` and :data:`exactsym.io.fileformat.EXPECT_KEYS`.
+:func:`report_json` (:mod:`exactsym.report.json_form`) returns a JSON-ready dict with the
+keys of ``docs/cli.md``; exact numbers are strings in the configuration syntax.
+:func:`report_text` is the summary the command prints without ``--json``
+(:mod:`exactsym.report.summary`).  Both read the :class:`~exactsym.analysis.Analysis` only
+(nothing is recomputed here).  To add a section: add its part to
+:func:`exactsym.analysis.analyse`, then one block to :func:`report_json` and one to the
+summary, and its ``[expect]`` keys to :data:`EXPECTATIONS` and
+:data:`exactsym.io.fileformat.EXPECT_KEYS`.
 """
 
 from __future__ import annotations
@@ -16,72 +18,11 @@ from json.encoder import c_make_encoder, encode_basestring_ascii
 
 from ..analysis import Analysis, Options, analyse
 from ..geometry.configuration import Configuration, no_cycle_collection
-from ..exact import evaluate, fmpq, number_system
-from ..exact.cyclotomic_text import fast_number_text as number_text   # same strings, faster
+from ..exact import evaluate, number_system
 from ..io.expr import parse_expression
-from ..paper.family_report import paper_json
-from ..paper.homogeneous import centre_texts, radius_text, sec_radius_text
 from ..paper.polygon_report import LabelledVerdict
-from ..truth.report import truth_json
-
-
-def report_json(analysis: Analysis, brief: bool = False) -> dict:
-    """The JSON object of ``exactsym check --json`` (``docs/cli.md``).  ``brief``: without
-    ``sec``, ``levels`` and the paper's ``G`` and ``G_prime`` (their exact texts: seconds
-    in a cyclotomic field of degree thousands), for summaries that do not print them."""
-    with no_cycle_collection():        # one small dict per level: nothing cyclic
-        return _report_json(analysis, brief)
-
-
-def _report_json(analysis: Analysis, brief: bool = False) -> dict:
-    config, levels = analysis.config, analysis.levels
-    report = {"n": config.n}
-    if not brief:
-        # in a field of degree thousands, as quotients of numbers with small
-        # coefficients (paper/homogeneous.py): the divided ones are megabytes each
-        sec = levels.sec
-        centre = centre_texts(sec) or [number_text(c) for c in sec.centre]
-        radius = sec_radius_text(sec, config.points) if not levels.polar else None
-        report["sec"] = {"center": centre,
-                         "radius_squared": radius or number_text(sec.radius_squared)}
-    report["number_field"] = getattr(config.polar_system if levels.polar else config.system,
-                                     "name", "Q")
-    if not brief:
-        report["levels"] = _level_entries(levels.levels, analysis.level_verdicts,
-                                          analysis.level_strings)
-    if analysis.truth is not None:
-        report.update(truth_json(analysis.truth))
-    if analysis.paper is not None:
-        report["paper"] = paper_json(analysis.paper, described=not brief)
-    if analysis.audit is not None:
-        report["audit"] = analysis.audit
-    return report
-
-
-def _radius_text(r2) -> str:
-    return radius_text(r2) or number_text(r2)
-
-
-def _level_entries(levels, verdicts, strings) -> list:
-    """One dict per level: ``radius_squared``, ``points`` and, when computed, the polygon
-    layer's ``paper`` verdict and its ``strings``."""
-    if verdicts is not None and strings is None and len(verdicts) == len(levels):
-        # one pass (100,000 levels on random input)
-        return [{"radius_squared": str(level.radius_squared)
-                 if type(level.radius_squared) is fmpq       # flint writes p/q as we do
-                 else _radius_text(level.radius_squared),
-                 "points": list(level.points), "paper": verdict}
-                for level, verdict in zip(levels, verdicts)]
-    out = [{"radius_squared": str(level.radius_squared)
-            if type(level.radius_squared) is fmpq else _radius_text(level.radius_squared),
-            "points": list(level.points)} for level in levels]
-    if verdicts is not None:
-        strings = strings or (None,) * len(out)
-        for entry, verdict, text in zip(out, verdicts, strings):
-            entry["paper"] = verdict
-            if text is not None:
-                entry["strings"] = text
-    return out
+from .json_form import report_json
+from .summary import summary_text
 
 
 #: A list longer than this is written one item per line (items on one line each, by
@@ -97,7 +38,8 @@ _C_ITEM = c_make_encoder(None, json.JSONEncoder().default, encode_basestring_asc
 
 
 #: The encoded text of each dict key seen by :func:`_item`, with ``": "`` (a level entry
-#: has the same three or four keys: encoded once, not once per level).
+#: has the same three or four keys: encoded once, not once per level).  Keyed by the key
+#: names the report writes (a fixed set): nothing of one configuration is kept.
 _KEY_TEXT: dict = {}
 
 
@@ -226,7 +168,6 @@ def _write(value, pad: str, out: list) -> None:
 def report_text(analysis: Analysis, verbose: bool = False) -> str:
     """The text ``exactsym check`` prints without ``--json``: a summary for people, with
     ``verbose`` the per-level detail (:func:`exactsym.report.summary.summary_text`)."""
-    from .summary import summary_text
     return summary_text(analysis, verbose=verbose)
 
 

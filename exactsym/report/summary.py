@@ -1,9 +1,9 @@
 """The text report of ``exactsym check``, for people: a short summary, the per-level
 detail with ``--verbose``, one line per file when several files are checked.
 
-Everything is read from one :class:`~exactsym.analysis.Analysis` (nothing is recomputed
-but the near-symmetry hint, which is not part of the analysis and never a verdict) and
-from its JSON form (:func:`exactsym.report.check.report_json`), so that fields other layers add
+Everything is read from one :class:`~exactsym.analysis.Analysis` (the near-symmetry hint,
+never a verdict, is made on demand by :meth:`~exactsym.analysis.Analysis.near_symmetry`) and
+from its JSON form (:func:`exactsym.report.json_form.report_json`), so that fields other layers add
 later are shown too: a value is never printed as a Python dict or repr but in words
 (:func:`plain`).  Numbers go through :mod:`exactsym.exact.text_numbers`: exact text, a decimal
 beside every irrational number, long numbers and lists cut.  The paper's words are
@@ -18,6 +18,7 @@ from flint import fmpq
 
 from ..analysis import Analysis
 from ..exact.text_numbers import annotated, approx, is_irrational, listed, number, square_root
+from . import json_form      # called through the module: a test adds fields to the JSON form
 
 __all__ = ["summary_text", "one_line", "plain", "prose", "GLOSSARY_PAGE", "WORDS"]
 
@@ -116,8 +117,7 @@ def _point(p) -> str:
 def summary_text(analysis: Analysis, verbose: bool = False, hint: bool = True) -> str:
     """The report ``exactsym check`` prints (``--verbose``: with the per-level detail,
     the paper's trace and every discrepancy; ``hint``: look for a near symmetry)."""
-    from .check import report_json
-    report = report_json(analysis, brief=not (verbose or analysis.options.strings))
+    report = json_form.report_json(analysis, brief=not (verbose or analysis.options.strings))
     lines = _head(analysis, report)
     if analysis.truth is not None:
         lines += _truth_rows(analysis)
@@ -469,9 +469,8 @@ def _trace(paper: dict) -> list[str]:
 
 # ---------------------------------------------------------------- hint, one line
 def _near_symmetry(analysis: Analysis) -> str | None:
-    """The near-symmetry hint (:mod:`exactsym.truth.near_symmetry`), or None."""
-    from ..truth.near_symmetry import near_symmetry_hint
-    found = near_symmetry_hint(analysis.config)
+    """The near-symmetry hint (:meth:`~exactsym.analysis.Analysis.near_symmetry`), or None."""
+    found = analysis.near_symmetry()
     return None if found is None else found.text
 
 
@@ -500,8 +499,7 @@ def one_line(analysis: Analysis, failures: int = 0) -> str:
         parts.append(truth.name)
         parts.append("orderable" if truth.orderable else "not orderable")
         parts.append(f"leader {truth.leader}" if truth.leader is not None else "no leader")
-    from .check import report_json
-    report = report_json(analysis, brief=True)
+    report = json_form.report_json(analysis, brief=True)
     text = ", ".join(parts)
     if "paper" in report:
         text += "; paper: " + ("orderable" if report["paper"].get("orderable")

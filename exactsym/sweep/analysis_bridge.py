@@ -148,8 +148,8 @@ def analyse(what: str, points, budget: int = 0) -> dict:
 
 
 def _truth(config) -> dict:
-    from ..truth.symmetry import symmetry_group
-    group = symmetry_group(config)
+    from ..analysis import analyse as run_analysis
+    group = run_analysis(config, sections=("truth",)).truth
     return {"failed": [], "applicable": None,
             "truth": {"group": group.name, "orderable": group.orderable}}
 
@@ -194,8 +194,9 @@ def _audit(config) -> dict:
     truth = result["truth"]
     failed, reading, procedure = _split(result["discrepancies"], truth["orderable"])
     _, named = _paper_findings(res)
-    applicable = named | failed | reading | procedure | set(_ALWAYS) | \
-        _audit_hypotheses(config.n, res, result)
+    with analysis.reading():        # the paper's polygons again: the analysis's caches
+        hypotheses = _audit_hypotheses(config.n, res, result)
+    applicable = named | failed | reading | procedure | set(_ALWAYS) | hypotheses
     below = {label for label, least in _MIN_N.items() if config.n < least}
     outside = (failed | reading | procedure) & below
     failed, reading, procedure, applicable = (x - below for x in (failed, reading,

@@ -59,6 +59,7 @@ from ..exact.field import PolyElement
 from ..exact.fused import complex_product, product_sum
 from ..exact.ordering import value_key
 from ..geometry.algebraic_filtered import certified_c1
+from ..geometry.analysis_context import Cache
 from ..geometry.levels import Levels, RationalLevels, levels_of
 from ..geometry.sec import LazyCentre
 from .rays_filtered import filtered_rays, integer_pseudo_angle as _pseudo_angle_of_integers, \
@@ -266,7 +267,7 @@ def _directions(points, centre, integers: bool, homogeneous=None):
     return centre_index, idx, vectors, r2s, keys
 
 
-_ABOUT: dict = {}      # id(point) -> (point, cx, cy, cd, result): see _point_about
+_ABOUT = Cache("truth vectors")      # id(point) -> (point, cx, cy, cd, result): see _point_about
 _ABOUT_LIMIT = 1 << 14
 
 
@@ -277,7 +278,8 @@ def _point_about(point, cx, cy, cd):
     another object's): the audit asks for the groups of many unions of levels about one
     centre, made of the very same point objects, and in a cyclotomic field of degree
     thousands each vector costs products of milliseconds."""
-    hit = _ABOUT.get(id(point))
+    about = _ABOUT.table()
+    hit = about.get(id(point))
     if hit is not None and hit[0] is point and hit[1] is cx and hit[2] is cy \
             and hit[3] is cd:
         return hit[4]
@@ -288,9 +290,9 @@ def _point_about(point, cx, cy, cd):
     else:
         found = ((dx, dy), product_sum([(dx, dx), (dy, dy)]), _Angle(dx, dy))  # no inverse
     if isinstance(dx, FieldElement) or isinstance(dy, FieldElement):
-        if len(_ABOUT) >= _ABOUT_LIMIT:
-            _ABOUT.clear()
-        _ABOUT[id(point)] = (point, cx, cy, cd, found)
+        if len(about) >= _ABOUT_LIMIT:
+            about.clear()
+        about[id(point)] = (point, cx, cy, cd, found)
     return found
 
 
@@ -397,19 +399,20 @@ class _LazyGap(_Angle):
         return self._ball64
 
 
-_BALLS: dict = {}      # id(number) -> (number, 64-bit ball): see _ball64
+_BALLS = Cache("truth balls")      # id(number) -> (number, 64-bit ball): see _ball64
 
 
 def _ball64(x):
     """The 64-bit Arb ball of a coordinate, remembered per object (a vector of
     :func:`_point_about` is shared by many gaps)."""
-    hit = _BALLS.get(id(x))
+    balls = _BALLS.table()
+    hit = balls.get(id(x))
     if hit is not None and hit[0] is x:
         return hit[1]
     ball = x.enclosure(64) if isinstance(x, FieldElement) else arb(x)
-    if len(_BALLS) >= _ABOUT_LIMIT:
-        _BALLS.clear()
-    _BALLS[id(x)] = (x, ball)
+    if len(balls) >= _ABOUT_LIMIT:
+        balls.clear()
+    balls[id(x)] = (x, ball)
     return ball
 
 
@@ -450,7 +453,7 @@ def _sorted_by_value(indices: list, keys) -> list:
     return proposal
 
 
-_GAPS: dict = {}       # (id(u), id(v)) -> (u, v, gap): see _gap
+_GAPS = Cache("truth gaps")       # (id(u), id(v)) -> (u, v, gap): see _gap
 
 
 def _gap(u, v) -> PseudoAngle:
@@ -461,7 +464,8 @@ def _gap(u, v) -> PseudoAngle:
     field = isinstance(u[0], FieldElement) or isinstance(u[1], FieldElement) or \
         isinstance(v[0], FieldElement) or isinstance(v[1], FieldElement)
     if field:
-        hit = _GAPS.get((id(u), id(v)))
+        gaps = _GAPS.table()
+        hit = gaps.get((id(u), id(v)))
         if hit is not None and hit[0] is u and hit[1] is v:
             return hit[2]
     if field:
@@ -471,9 +475,9 @@ def _gap(u, v) -> PseudoAngle:
         k = vx * (ux - uy)
         gap = _Angle(k + uy * (vx + vy), k + ux * (vy - vx))
     if field:
-        if len(_GAPS) >= _ABOUT_LIMIT:
-            _GAPS.clear()
-        _GAPS[(id(u), id(v))] = (u, v, gap)
+        if len(gaps) >= _ABOUT_LIMIT:
+            gaps.clear()
+        gaps[(id(u), id(v))] = (u, v, gap)
     return gap
 
 

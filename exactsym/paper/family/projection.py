@@ -123,7 +123,7 @@ def is_type4(ring: Ring) -> tuple[bool, str]:
     return str(verdict) == "type-4", f"{verdict} ({verdict.reason})"
 
 
-@lru_cache(maxsize=4096)
+@lru_cache(maxsize=4096)     # a bounded function of an int: nothing of a configuration kept
 def could_be_type4(m: int) -> bool:
     """A type 4 polygon has an odd, composite number of vertices (k > 1 mirrors of an odd
     polygon that is not regular: k divides n and 1 < k < n), so at least 9."""

@@ -1,0 +1,77 @@
+"""The JSON form of an :class:`~exactsym.analysis.Analysis`: the object ``exactsym check
+--json`` writes (keys of ``docs/cli.md``; exact numbers are strings in the configuration
+syntax).  Read by both renderings, :mod:`exactsym.report.check` (JSON and the ``[expect]``
+check) and :mod:`exactsym.report.summary` (the text), which is why it sits below both.
+"""
+
+from __future__ import annotations
+
+from ..analysis import Analysis
+from ..geometry.configuration import no_cycle_collection
+from ..exact import fmpq
+from ..exact.cyclotomic_text import fast_number_text as number_text   # same strings, faster
+from ..paper.family_report import paper_json
+from ..paper.homogeneous import centre_texts, radius_text, sec_radius_text
+from ..truth.report import truth_json
+
+__all__ = ["report_json"]
+
+
+def report_json(analysis: Analysis, brief: bool = False) -> dict:
+    """The JSON object of ``exactsym check --json`` (``docs/cli.md``).  ``brief``: without
+    ``sec``, ``levels`` and the paper's ``G`` and ``G_prime`` (their exact texts: seconds
+    in a cyclotomic field of degree thousands), for summaries that do not print them."""
+    # one small dict per level: nothing cyclic; the texts read the analysis's forms
+    with no_cycle_collection(), analysis.reading():
+        return _report_json(analysis, brief)
+
+
+def _report_json(analysis: Analysis, brief: bool = False) -> dict:
+    config, levels = analysis.config, analysis.levels
+    report = {"n": config.n}
+    if not brief:
+        # in a field of degree thousands, as quotients of numbers with small
+        # coefficients (paper/homogeneous.py): the divided ones are megabytes each
+        sec = levels.sec
+        centre = centre_texts(sec) or [number_text(c) for c in sec.centre]
+        radius = sec_radius_text(sec, config.points) if not levels.polar else None
+        report["sec"] = {"center": centre,
+                         "radius_squared": radius or number_text(sec.radius_squared)}
+    report["number_field"] = getattr(config.polar_system if levels.polar else config.system,
+                                     "name", "Q")
+    if not brief:
+        report["levels"] = _level_entries(levels.levels, analysis.level_verdicts,
+                                          analysis.level_strings)
+    if analysis.truth is not None:
+        report.update(truth_json(analysis.truth))
+    if analysis.paper is not None:
+        report["paper"] = paper_json(analysis.paper, described=not brief)
+    if analysis.audit is not None:
+        report["audit"] = analysis.audit
+    return report
+
+
+def _radius_text(r2) -> str:
+    return radius_text(r2) or number_text(r2)
+
+
+def _level_entries(levels, verdicts, strings) -> list:
+    """One dict per level: ``radius_squared``, ``points`` and, when computed, the polygon
+    layer's ``paper`` verdict and its ``strings``."""
+    if verdicts is not None and strings is None and len(verdicts) == len(levels):
+        # one pass (100,000 levels on random input)
+        return [{"radius_squared": str(level.radius_squared)
+                 if type(level.radius_squared) is fmpq       # flint writes p/q as we do
+                 else _radius_text(level.radius_squared),
+                 "points": list(level.points), "paper": verdict}
+                for level, verdict in zip(levels, verdicts)]
+    out = [{"radius_squared": str(level.radius_squared)
+            if type(level.radius_squared) is fmpq else _radius_text(level.radius_squared),
+            "points": list(level.points)} for level in levels]
+    if verdicts is not None:
+        strings = strings or (None,) * len(out)
+        for entry, verdict, text in zip(out, verdicts, strings):
+            entry["paper"] = verdict
+            if text is not None:
+                entry["strings"] = text
+    return out
