@@ -17,14 +17,10 @@ PACKAGE = ROOT / "exactsym"
 #: xfail, so the line must go when its package is mended
 NOT_YET = {
     ("circle", "checker"),
-    ("circle", "exact"),
     ("circle", "gathering"),
     ("circle", "report"),
     ("private", "checker"),
-    ("private", "exact"),
     ("private", "gathering"),
-    ("private", "geometry"),
-    ("private", "paper"),
     ("length", "certify"),
     ("length", "exact"),
     ("length", "paper"),

@@ -33,6 +33,7 @@ from flint import fmpq_poly, fmpz_mat, fmpz_poly, nmod_poly
 
 from .factor import factorization
 from .field import NumberField, PolyElement
+from .inverse import nth_prime
 
 #: primes p = 1 mod M tried for a refutation, and embeddings tried per prime
 REFUTATION_PRIMES = 6
@@ -181,12 +182,11 @@ def _integral_quotient(num: fmpz_poly, den: fmpz_poly, phi: fmpz_poly,
     modulo 62-bit primes (``nmod_poly.xgcd``), combined by the Chinese remainder theorem
     into symmetric residues, the number of primes growing until r^2 == square modulo phi
     exactly (the test decides; the residues only propose)."""
-    from .inverse import _prime
     n = phi.degree()
     residues: list[int] = [0] * n
     modulus, i = 1, 0
     while True:
-        p = _prime(i)
+        p = nth_prime(i)
         i += 1
         phi_p = nmod_poly([int(c) % p for c in phi.coeffs()], p)
         den_p = nmod_poly([int(c) % p for c in den.coeffs()], p)

@@ -548,11 +548,11 @@ def _check_tower_levels(atoms, primes) -> None:
     """FieldTooLargeError before anything is built when the radicands of depth 2 (square
     roots of sums of square roots of rationals) are proved to need more than
     ``tower.MAX_LEVELS`` quadratic levels: that many of them independent modulo squares
-    of the multiquadratic base (:func:`.tower_proof.square_class_rank`, F_p characters).
+    of the multiquadratic base (:func:`.modular.square_class_rank`, F_p characters).
     (Else the tower refuses the level beyond the bound when it would build it, after the
     square-root tests of the levels below: a minute for twelve.)"""
     from .tower import MAX_LEVELS
-    from .tower_proof import square_class_rank
+    from .modular import square_class_rank
     base = MultiquadraticSystem(primes)
     values: list = []
     for atom in atoms:

@@ -15,7 +15,7 @@ from flint import arb, ctx, fmpq, fmpq_poly
 from ..errors import ExpressionError, FieldTooLargeError
 from ..io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 from .field import NumberField, as_fmpq
-from .text import _pi_multiple_text, _sum_text, expression_text, rational_text
+from .text import pi_multiple_text, sum_text, expression_text, rational_text
 
 #: Largest degree of a field built by primitive elements.
 MAX_DEGREE = 256
@@ -56,7 +56,7 @@ def _atom_text(atom) -> str:
     if kind == "sqrt":
         return f"sqrt({rational_text(atom[1])})"
     if kind == "cos":
-        return f"cos({_pi_multiple_text(2 * atom[1])})"
+        return f"cos({pi_multiple_text(2 * atom[1])})"
     return expression_text(atom[1])
 
 
@@ -139,7 +139,7 @@ def general_system(atoms: list):
                     total += arb(w) * _atom_ball(key, prec + 16)
             return total
 
-    theta_text = _sum_text([(w, _atom_text(k)) for w, k in zip(weights, keys) if w != 0])
+    theta_text = sum_text([(w, _atom_text(k)) for w, k in zip(weights, keys) if w != 0])
     field = NumberField(flint_minpoly, enclose, f"Q(theta), degree {poly.degree()}",
                         theta_text=theta_text)
     elements = {}

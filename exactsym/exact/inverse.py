@@ -21,7 +21,9 @@ _FIRST = (1 << 62) + 1
 _SMALL_FIRST = (1 << 31) + 11
 
 
-def _prime(i: int, first: int = _FIRST, found: list | None = None) -> int:
+def nth_prime(i: int, first: int = _FIRST, found: list | None = None) -> int:
+    """The i-th prime from ``first`` on (62-bit primes for multimodular arithmetic),
+    remembered in ``found``."""
     found = _PRIMES if found is None else found
     while len(found) <= i:
         p = found[-1] + 2 if found else first
@@ -35,7 +37,7 @@ _SMALL_PRIMES: list[int] = []
 
 
 def _small_prime(i: int) -> int:
-    return _prime(i, _SMALL_FIRST, _SMALL_PRIMES)
+    return nth_prime(i, _SMALL_FIRST, _SMALL_PRIMES)
 
 
 def _rational_reconstruction(a: int, m: int):
@@ -178,7 +180,7 @@ def _inverse_multimodular(poly: fmpq_poly, minpoly: fmpq_poly) -> fmpq_poly:
     count, target = 0, 4
     i = 0
     while True:
-        p = _prime(i)
+        p = nth_prime(i)
         i += 1
         if lead % p == 0:
             continue

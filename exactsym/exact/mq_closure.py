@@ -20,9 +20,9 @@ from math import gcd, isqrt
 
 from flint import fmpq, fmpz
 
-from .multiquadratic import MQ, _coprime_base, sqrt_rational
-from .tower import TowerElement, _denominator
-from .tower_proof import image, sqrt_mod
+from .multiquadratic import MQ, coprime_base, sqrt_rational
+from .tower import TowerElement, denominator
+from .modular import image, sqrt_mod
 
 __all__ = ["closure_sqrt", "decided_sqrt", "bounded_squarefree_split", "RATIONAL_BITS",
            "SMOOTH_BITS"]
@@ -62,7 +62,7 @@ def closure_sqrt(x, _depth: int = 0, big_ok: bool = False):
         return None
     if x.is_rational():
         return _sqrt_rational(x.to_fmpq(), big_ok)
-    b = max(_coprime_base(x.radicands()))
+    b = max(coprime_base(x.radicands()))
     A = MQ({m: c for m, c in x.terms.items() if m % b})
     B = MQ({m // b: c for m, c in x.terms.items() if m % b == 0})
     n = closure_sqrt(A * A - B * B * b, _depth + 1)
@@ -224,10 +224,10 @@ def _refuted_modulo(y: MQ, primes, free: bool) -> bool:
     closed), and phi(y) = m phi(w)^2: the Legendre symbol of phi(y) is that of m,
     the same for every phi (1 for a root in K itself, m = 1).  Two maps with different
     symbols, or one symbol -1 without ``free``, refute."""
-    denominator = _denominator(y)
+    common = denominator(y)
     choices = _sign_choices(len(primes))
     for q, roots in _split_primes(tuple(primes)):
-        if denominator % q == 0:
+        if common % q == 0:
             continue
         seen = set()
         for signs in choices:

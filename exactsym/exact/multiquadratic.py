@@ -200,7 +200,7 @@ class MQ(FieldElement):
 
     def conjugate(self, base: int) -> "MQ":
         """Image under the automorphism ``sqrt(m) -> -sqrt(m)`` when ``base | m`` an odd
-        number of times in a coprime factorisation (``base`` from :func:`_coprime_base`)."""
+        number of times in a coprime factorisation (``base`` from :func:`coprime_base`)."""
         return MQ({m: (-c if m % base == 0 else c) for m, c in self.terms.items()})
 
     def inverse(self) -> "MQ":
@@ -218,7 +218,7 @@ class MQ(FieldElement):
         num = MQ.rational(1)
         x = self
         while not x.is_rational():
-            base = _coprime_base(x.radicands())
+            base = coprime_base(x.radicands())
             b = next(p for p in base if any(m % p == 0 for m in x.terms if m != 1))
             conj = x.conjugate(b)
             num = num * conj
@@ -573,7 +573,7 @@ def _radicand_product(m1: int, m2: int) -> tuple[int, int]:
 
 @lru_cache(maxsize=1024)
 def _coprime_base_of(radicands: frozenset) -> tuple[int, ...]:
-    return tuple(sorted(_coprime_base([m for m in radicands if m != 1])))
+    return tuple(sorted(coprime_base([m for m in radicands if m != 1])))
 
 
 @lru_cache(maxsize=1024)
@@ -634,7 +634,7 @@ def _dense_integers(A: dict, B: dict, base) -> dict:
     return {radicands[mask]: v for mask, v in enumerate(c) if v}
 
 
-def _coprime_base(radicands) -> list[int]:
+def coprime_base(radicands) -> list[int]:
     """Pairwise coprime integers > 1 whose products give every radicand (gcd refinement)."""
     base: list[int] = []
     for m in radicands:
@@ -652,6 +652,9 @@ def _coprime_base(radicands) -> list[int]:
             else:
                 base.append(x)
     return base
+
+
+_coprime_base = coprime_base     # the name gathering/geometry.py still imports
 
 
 @lru_cache(maxsize=4096)

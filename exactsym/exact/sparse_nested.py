@@ -42,7 +42,7 @@ from math import lcm
 from flint import fmpz
 
 from .factor import factorization
-from .cyclotomic_modular import sparse_image
+from .modular import sparse_image
 from .sparse_context import root_of_unity
 from .tower_proof import sqrt_mod
 

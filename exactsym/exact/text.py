@@ -9,10 +9,7 @@ from __future__ import annotations
 from flint import fmpq
 
 from ..io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
-from .field import FieldElement, as_fmpq
-from .multiquadratic import MQ
-from .sparse_cyclotomic import SparseCyclotomic
-from .tower import TowerElement
+from .field import FieldElement, PolyElement, as_fmpq
 
 
 def rational_text(q) -> str:
@@ -24,7 +21,7 @@ def rational_text(q) -> str:
 _RATIONAL_COS = {1: fmpq(1), 2: fmpq(-1), 3: fmpq(-1, 2), 4: fmpq(0), 6: fmpq(1, 2)}
 
 
-def _pi_multiple_text(q: fmpq) -> str:
+def pi_multiple_text(q: fmpq) -> str:
     sign, p = ("-", -q.p) if q < 0 else ("", q.p)
     head = "pi" if p == 1 else f"{p}*pi"
     return sign + (head if q.q == 1 else f"{head}/{q.q}")
@@ -69,7 +66,7 @@ def _expression(node: Node) -> tuple[str, int]:
     if isinstance(node, Sqrt):
         return f"sqrt({_expression(node.arg)[0]})", _ATOM
     if isinstance(node, Trig):
-        return f"{node.func}({_pi_multiple_text(as_fmpq(node.pi_multiple))})", _ATOM
+        return f"{node.func}({pi_multiple_text(as_fmpq(node.pi_multiple))})", _ATOM
     raise TypeError(type(node).__name__)
 
 
@@ -79,7 +76,7 @@ def expression_text(node: Node) -> str:
     return _expression(node)[0]
 
 
-def _sum_text(terms: list[tuple[fmpq, str]]) -> str:
+def sum_text(terms: list[tuple[fmpq, str]]) -> str:
     """``c1*t1 + c2*t2 ...`` with ``t == ""`` for a constant; ``"0"`` for no term."""
     out = []
     for coeff, term in terms:
@@ -108,8 +105,8 @@ def number_text(x) -> str:
     """The configuration-syntax text of an exact number."""
     if not isinstance(x, FieldElement):
         return rational_text(x)
-    if isinstance(x, (MQ, TowerElement, SparseCyclotomic)):
-        return x.text()
+    if not isinstance(x, PolyElement):
+        return x.text()                 # each other kind writes itself
     if x.is_rational():
         return rational_text(x.rational())
     field = x.field
@@ -126,9 +123,9 @@ def number_text(x) -> str:
             if rational is not None:
                 const += c * rational
             else:
-                terms.append((c, f"cos({_pi_multiple_text(fmpq(2 * k, m))})"))
-        return _sum_text([(const, "")] + terms)
+                terms.append((c, f"cos({pi_multiple_text(fmpq(2 * k, m))})"))
+        return sum_text([(const, "")] + terms)
     theta = f"({field.theta_text})"
     terms = [(coeffs[0], "")] + [(c, theta if k == 1 else f"{theta}^{k}")
                                 for k, c in enumerate(coeffs) if k and c != 0]
-    return _sum_text(terms)
+    return sum_text(terms)

@@ -28,7 +28,7 @@ from flint import arb, ctx, fmpq
 
 from ..exact.field import PolyElement
 from ..exact.field import FieldElement, sign
-from ..exact.tower import TowerElement, _raw
+from ..exact.tower import TowerElement, raw as tower_raw
 from ..exact.tower_proof import tower_images
 from .predicates import enclosure_of
 
@@ -196,7 +196,7 @@ class TowerLevelRadius(_LevelIdentity, TowerElement):
     @property
     def v(self):
         if self._exact is None:
-            self._exact = _raw(self.tower, self.value())
+            self._exact = tower_raw(self.tower, self.value())
         return self._exact
 
     @property
@@ -257,10 +257,10 @@ def tower_ratio_irrational(num, den) -> bool:
             parts.append(len(raws))
             if isinstance(z, TowerLevelRadius) and not z.made:
                 (x, y), (cx, cy, d) = z._p, z._c
-                raws += [_raw(tower, v) for v in (x, y, cx, cy, d)]
+                raws += [tower_raw(tower, v) for v in (x, y, cx, cy, d)]
                 parts[-1] = (parts[-1], True)
             else:
-                raws.append(_raw(tower, z))
+                raws.append(tower_raw(tower, z))
                 parts[-1] = (parts[-1], False)
     except TypeError:                   # two towers: nothing to compare here
         return False

@@ -42,7 +42,7 @@ def _exact_type(u) -> bool:
     return not isinstance(u[0], FieldElement) and not isinstance(u[1], FieldElement)
 
 
-def _ball_sign(b: arb) -> int:
+def ball_sign(b: arb) -> int:
     if b > 0:
         return 1
     if b < 0:
@@ -54,7 +54,7 @@ def cross_sign(u, v) -> int:
     """The exact sign of u_x v_y - u_y v_x."""
     if _exact_type(u) and _exact_type(v):
         return sign(u[0] * v[1] - u[1] * v[0])
-    s = _ball_sign(ball(u[0]) * ball(v[1]) - ball(u[1]) * ball(v[0]))
+    s = ball_sign(ball(u[0]) * ball(v[1]) - ball(u[1]) * ball(v[0]))
     return s if s else sign(u[0] * v[1] - u[1] * v[0])
 
 
@@ -62,7 +62,7 @@ def dot_sign(u, v) -> int:
     """The exact sign of u . v."""
     if _exact_type(u) and _exact_type(v):
         return sign(u[0] * v[0] + u[1] * v[1])
-    s = _ball_sign(ball(u[0]) * ball(v[0]) + ball(u[1]) * ball(v[1]))
+    s = ball_sign(ball(u[0]) * ball(v[0]) + ball(u[1]) * ball(v[1]))
     return s if s else sign(u[0] * v[0] + u[1] * v[1])
 
 

@@ -24,8 +24,8 @@ from ..exact.cyclotomic_modular import product_ratio_irrational
 from ..exact.sparse_cyclotomic import SparseCyclotomic
 from ..exact.tower import TowerElement
 from .filtered import (ball, compare_directions, cross_sign, dot_sign, gap_classes_on_circle,
-                       _ball_sign)
-from .ratio_keys import RatioKey, _largest_field, ball_at, gap_ratio_key, ray_ratio_key
+                       ball_sign)
+from .ratio_keys import RatioKey, largest_field, ball_at, gap_ratio_key, ray_ratio_key
 from .inverses import inverse_length, squared_length
 
 
@@ -472,8 +472,8 @@ def lazy_line_canon(a, b, make):
     if not huge_field(*numbers):
         return None
     ax, ay, bx, by = (ball(v) for v in numbers)
-    sx = _ball_sign(ax * bx - ay * by)
-    sy = _ball_sign(ax * by + ay * bx)
+    sx = ball_sign(ax * bx - ay * by)
+    sy = ball_sign(ax * by + ay * bx)
     if not sx or not sy or not product_ratio_irrational(a, b):
         return None
     made = []
@@ -494,7 +494,7 @@ def lazy_line_canon(a, b, make):
         sq = x * x
         return sq / (sq + y * y)
     return ("line", sx, sy, _DirectionKey(sx, sy, vector, parts, value_ball,
-                                          _largest_field(numbers), (a, b)))
+                                          largest_field(numbers), (a, b)))
 
 
 class _DirectionKey(RatioKey):

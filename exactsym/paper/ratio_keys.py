@@ -19,7 +19,7 @@ from ..exact import FieldElement, exact_key, sign
 from ..exact.cyclotomic_modular import images, quotient_irrational, ratio_irrational
 from ..exact.field import PolyElement
 from ..exact.sparse_cyclotomic import SparseCyclotomic
-from ..exact.tower import TowerElement, _raw as tower_raw, leaf_ratio
+from ..exact.tower import TowerElement, raw as tower_raw, leaf_ratio
 from ..exact.fused import complex_product, cross_is_zero
 from .filtered import ball
 from ..geometry.level_radius import tower_ratio_irrational
@@ -194,7 +194,7 @@ def chord_key(polygon, i: int, j: int) -> OrderedKey:
         # off one circle the key is -sign(u.v) (u.v)^2 / (|u|^2 |v|^2) (_cosine_key):
         # -d |d| / ..., continuous, so a ball of it from the balls of d and the lengths
         return -d * abs(d) / ((ux * ux + uy * uy) * (vx * vx + vy * vy))
-    return OrderedKey(lambda: polygon.chord_key(i, j), value_ball, _largest_field(u + v),
+    return OrderedKey(lambda: polygon.chord_key(i, j), value_ball, largest_field(u + v),
                       (u, v))
 
 
@@ -256,14 +256,14 @@ def ray_ratio_key(x, y):
         def parts():
             xx = x * x
             return xx, xx + y * y
-        return RatioKey(parts, _ratio_ball(x, y), _largest_field((x, y)))
+        return RatioKey(parts, _ratio_ball(x, y), largest_field((x, y)))
     xx = x * x
     length = xx + y * y
     q = rational_ratio(xx, length)
     if q is not None:
         return exact_key(q)
 
-    return RatioKey(lambda: (xx, length), _ratio_ball(x, y), _largest_field((x, y)))
+    return RatioKey(lambda: (xx, length), _ratio_ball(x, y), largest_field((x, y)))
 
 
 def _ratio_ball(x, y):
@@ -275,7 +275,7 @@ def _ratio_ball(x, y):
     return value_ball
 
 
-def _largest_field(numbers):
+def largest_field(numbers):
     """The field a product of ``numbers`` lands in: the largest of their polynomial fields
     (the smaller ones embed into it, :func:`exactsym.exact.field._common`); a sparse
     Q(zeta_N) is larger than any (its context: one per N)."""
@@ -367,7 +367,7 @@ def gap_ratio_key(a, b, c: int, dot_sign: int):
         dot = ax * bx + ay * by
         return s * dot * dot / ((ax * ax + ay * ay) * (bx * bx + by * by))
     return (0 if c > 0 else 2, AngleKey(a, b, dot_sign, parts, value_ball,
-                                        _largest_field(a + b)))
+                                        largest_field(a + b)))
 
 
 __all__ = ["RATIO_KEY_DEGREE", "AngleKey", "OrderedKey", "RatioKey", "big_field", "chord_key",
