@@ -126,7 +126,7 @@ def test_rational_ratio_in_a_tower_needs_no_inverse(data, gens, k):
     """The paper layer's rationality test of num/den in a tower (read off one coordinate
     of the canonical form, checked by one product) agrees with dividing, on rational
     multiples and on random pairs."""
-    from exactsym.paper.ratio_keys import rational_ratio
+    from exactsym.exact.ratio import rational_ratio
     system, values = _values(*gens, "sqrt(3)")
     x, y = (_random_element(system, values, data) for _ in range(2))
     if y == 0:

@@ -130,7 +130,7 @@ def _element_images(x: PolyElement, m: int, p: int, roots) -> tuple | None:
     if isinstance(x, SparseCyclotomic):
         pair = _sparse_images(x, m, p, roots)
     elif getattr(x, "made", True) is False:
-        # a level's squared radius not computed yet (exactsym.geometry.level_radius): its images
+        # a level's squared radius not computed yet (exactsym.exact.level_radius): its images
         # from those of its point and centre
         pair = x.modular_images(m, p, roots, lambda v: _value_images(v, m, p, roots))
     elif int(x.poly.denom()) % p == 0:

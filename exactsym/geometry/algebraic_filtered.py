@@ -27,8 +27,8 @@ from functools import cmp_to_key
 
 from flint import arb, ctx, fmpq
 
-from ..exact import FieldElement, exact_sorted
-from ..exact.field import PolyElement
+from ..exact import exact_sorted, sign as _sign
+from ..exact.fused import product_sum
 from ..io.exprtree import BinOp, Const, Neg, Pow, Sqrt, Trig
 from .predicates import PseudoAngle
 from .strings import cyclic_occurrences, cyclic_period
@@ -72,20 +72,6 @@ def interval_groups(lo: list, hi: list, order: list) -> list[list[int]]:
     if current:
         groups.append(current)
     return groups
-
-
-def sum_of_products(pairs):
-    """``sum(a * b)`` exactly.  In a large cyclotomic field the products are added before
-    one reduction modulo the minimal polynomial (the reduction dominates a product)."""
-    a0 = pairs[0][0]
-    if isinstance(a0, PolyElement) and a0.field.degree >= 64 and all(
-            isinstance(a, PolyElement) and isinstance(b, PolyElement) and
-            a.field is a0.field and b.field is a0.field for a, b in pairs):
-        return PolyElement(a0.field, a0.field.product_sum(pairs))
-    total = pairs[0][0] * pairs[0][1]
-    for a, b in pairs[1:]:
-        total = total + a * b
-    return total
 
 
 _BALLS: dict = {}      # id(points) -> (points, xs, ys): the last few point tuples' balls
@@ -244,7 +230,7 @@ class Enclosures:
         r = self._scaled.get(i)
         if r is None:
             vx, vy = self.vector(i)
-            r = self._scaled[i] = sum_of_products([(vx, vx), (vy, vy)])
+            r = self._scaled[i] = product_sum([(vx, vx), (vy, vy)])
         return r
 
     def angle(self, i: int) -> PseudoAngle:
@@ -307,12 +293,6 @@ class Enclosures:
 
 def _dropped() -> None:
     return None
-
-
-def _sign(x) -> int:
-    if isinstance(x, FieldElement):
-        return x.sign()
-    return (x > 0) - (x < 0)
 
 
 # ---------------------------------------------------------------- levels
@@ -398,7 +378,7 @@ class _Gaps:
         d = self._dot.get(a)
         if d is None:
             (ux, uy), (vx, vy) = self._vectors(a)
-            d = self._dot[a] = sum_of_products([(ux, vx), (uy, vy)])
+            d = self._dot[a] = product_sum([(ux, vx), (uy, vy)])
         return d
 
     def cross(self, a: int):
@@ -406,7 +386,7 @@ class _Gaps:
         c = self._cross.get(a)
         if c is None:
             (ux, uy), (vx, vy) = self._vectors(a)
-            c = self._cross[a] = sum_of_products([(ux, vy), (-uy, vx)])
+            c = self._cross[a] = product_sum([(ux, vy), (-uy, vx)])
         return c
 
     def compare(self, a: int, b: int) -> int:

@@ -15,7 +15,8 @@ from __future__ import annotations
 
 from flint import arb
 
-from ..exact import FieldElement, exact_key, sign
+from ..exact import exact_key, sign
+from ..exact.number import any_algebraic, is_algebraic
 
 _PREC = 64
 _BALLS: dict = {}
@@ -28,7 +29,7 @@ def ball(x) -> arb:
     hit = _BALLS.get(id(x))
     if hit is not None and hit[0] is x:
         return hit[1]
-    if isinstance(x, FieldElement):
+    if is_algebraic(x):
         b = x.enclosure(_PREC)
     else:
         b = arb(x)
@@ -39,7 +40,7 @@ def ball(x) -> arb:
 
 
 def _exact_type(u) -> bool:
-    return not isinstance(u[0], FieldElement) and not isinstance(u[1], FieldElement)
+    return not any_algebraic(u)
 
 
 def ball_sign(b: arb) -> int:

@@ -54,8 +54,8 @@ from flint import arb, ctx
 from ..geometry.configuration import Configuration, no_cycle_collection
 from ..geometry.predicates import PseudoAngle, intern_by_value
 from .isometries import Isometry, Layout, identity, reflection, rotation
-from ..exact import FieldElement, fmpq
-from ..exact.field import PolyElement
+from ..exact import fmpq
+from ..exact.number import all_plain_rational, any_algebraic, enclosure, is_plain_rational, large_dense
 from ..exact.fused import complex_product, product_sum
 from ..exact.ordering import value_key
 from ..geometry.algebraic_filtered import certified_c1
@@ -180,7 +180,7 @@ def sort_by_exact_keys(indices: list[int], keys: Sequence) -> None:
     little more than one exact comparison per element instead of log2(n): a float that
     is off, or equal for unequal keys, only leaves more work to the exact sort.
     """
-    if len(indices) > 64 and isinstance(keys[indices[0]], fmpq):
+    if len(indices) > 64 and is_plain_rational(keys[indices[0]]):
         try:
             approx = [float(keys[i]) for i in indices]      # a filter: the sort below decides
         except (OverflowError, ValueError):
@@ -287,7 +287,7 @@ def _point_about(point, cx, cy, cd):
         found = None
     else:
         found = ((dx, dy), product_sum([(dx, dx), (dy, dy)]), _Angle(dx, dy))  # no inverse
-    if isinstance(dx, FieldElement) or isinstance(dy, FieldElement):
+    if any_algebraic((dx, dy)):
         if len(_ABOUT) >= _ABOUT_LIMIT:
             _ABOUT.clear()
         _ABOUT[id(point)] = (point, cx, cy, cd, found)
@@ -299,8 +299,7 @@ def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=No
     ``integers`` (default: when the points and the centre are ``fmpq``) chooses the
     integer arithmetic of :func:`_directions`; both ways give the same result."""
     if integers is None:
-        integers = isinstance(centre[0], fmpq) and isinstance(centre[1], fmpq) and \
-            isinstance(points[0][0], fmpq)
+        integers = all_plain_rational((centre[0], centre[1], points[0][0]))
     centre_index, idx, vectors, r2s, keys = _directions(points, centre, integers, homogeneous)
     if integers:
         sort_by_exact_keys(idx, keys)
@@ -406,7 +405,7 @@ def _ball64(x):
     hit = _BALLS.get(id(x))
     if hit is not None and hit[0] is x:
         return hit[1]
-    ball = x.enclosure(64) if isinstance(x, FieldElement) else arb(x)
+    ball = enclosure(x, 64)
     if len(_BALLS) >= _ABOUT_LIMIT:
         _BALLS.clear()
     _BALLS[id(x)] = (x, ball)
@@ -458,8 +457,7 @@ def _gap(u, v) -> PseudoAngle:
     three products (Gauss: conj(u) v) instead of four, remembered per pair of vector
     objects when they hold field elements (the vectors of :func:`_point_about` are
     shared by the audit's unions of levels, whose consecutive rays often recur)."""
-    field = isinstance(u[0], FieldElement) or isinstance(u[1], FieldElement) or \
-        isinstance(v[0], FieldElement) or isinstance(v[1], FieldElement)
+    field = any_algebraic((u[0], u[1], v[0], v[1]))
     if field:
         hit = _GAPS.get((id(u), id(v)))
         if hit is not None and hit[0] is u and hit[1] is v:
@@ -523,8 +521,7 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     else:
         points = config.points
         filtered = None
-        if n >= _FILTER_MIN and isinstance(centre[0], fmpq) and isinstance(centre[1], fmpq) \
-                and isinstance(points[0][0], fmpq):
+        if n >= _FILTER_MIN and all_plain_rational((centre[0], centre[1], points[0][0])):
             rank = level_ranks(ring, n)
             if rank is not None:
                 shared = ring.floats       # the floats of these very points, if computed
@@ -663,21 +660,18 @@ def _intern(values, tuples: bool) -> list[int]:
     ``hash(fmpq)`` goes through ``fractions.Fraction`` and costs about 2 us."""
     first = values[0][0] if tuples else values[0]
     ids: dict = {}
-    if isinstance(first, fmpq):
+    if is_plain_rational(first):
         if tuples:
             keys = (tuple([(x.p, x.q) for x in v]) if len(v) > 1 else (v[0].p, v[0].q)
                     for v in values)
         else:
             keys = ((x.p, x.q) for x in values)
-    elif isinstance(first, PolyElement) and first.field.degree >= _KEY_DEGREE:
+    elif large_dense(first):
         # a field of large degree: hashing an element's fmpq coefficients costs ms
         keys = (tuple([value_key(x) for x in v]) if tuples else value_key(v) for v in values)
     else:
         keys = iter(values)
     return [ids.setdefault(key, len(ids)) for key in keys]
-
-
-_KEY_DEGREE = 512       # from this degree radii are interned by value_key, not hash
 
 
 def _rotation_less(a_ids, a_vals, a_start, b_ids, b_vals, b_start) -> bool:
