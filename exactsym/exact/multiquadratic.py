@@ -25,7 +25,7 @@ from math import lcm
 
 from flint import arb, ctx, fmpq, fmpz
 
-from ..io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt
+from ..io.exprtree import Fold, Node, fold
 from .factor import factorization
 from .field import FieldElement
 from .mq_products import (INTEGER_PRODUCT, arb_sign, canonical_terms, coprime_base, float_sign,
@@ -375,16 +375,16 @@ def sqrt_rational(q) -> MQ:
     return MQ({m: fmpq(s, r)})
 
 
-def from_tree(node: Node) -> MQ:
-    """Evaluate an expression tree (:mod:`exactsym.io.exprtree`) built from rationals,
-    ``+ - * /``, integer powers and square roots of non-negative rationals.
-    Raises ``ValueError`` for anything else (``cos``, ``pi``, nested radicals)."""
-    if isinstance(node, Const):
+class _Multiquadratic(Fold):
+    """Values in Q(sqrt a_1, ...): ``ValueError`` for anything else."""
+
+    def const(self, node):
         return MQ.rational(node.value)
-    if isinstance(node, Neg):
-        return -from_tree(node.arg)
-    if isinstance(node, BinOp):
-        a, b = from_tree(node.left), from_tree(node.right)
+
+    def neg(self, node, arg):
+        return -arg
+
+    def binop(self, node, a, b):
         if node.op == "+":
             return a + b
         if node.op == "-":
@@ -394,14 +394,27 @@ def from_tree(node: Node) -> MQ:
         if node.op == "/":
             return a / b
         raise ValueError(f"operator {node.op!r} is not supported")
-    if isinstance(node, Pow):
-        return from_tree(node.base) ** int(node.exponent)
-    if isinstance(node, Sqrt):
-        arg = from_tree(node.arg)
+
+    def power(self, node, base):
+        return base ** int(node.exponent)
+
+    def sqrt(self, node, arg):
         if not arg.is_rational():
             raise ValueError("nested radicals are not multiquadratic")
         return sqrt_rational(arg.to_fmpq())
-    raise ValueError(f"{type(node).__name__} is not multiquadratic")
+
+    def trig(self, node):
+        raise ValueError(f"{type(node).__name__} is not multiquadratic")
+
+    def unknown(self, node):
+        raise ValueError(f"{type(node).__name__} is not multiquadratic")
+
+
+def from_tree(node: Node) -> MQ:
+    """Evaluate an expression tree (:mod:`exactsym.io.exprtree`) built from rationals,
+    ``+ - * /``, integer powers and square roots of non-negative rationals.
+    Raises ``ValueError`` for anything else (``cos``, ``pi``, nested radicals)."""
+    return fold(node, _Multiquadratic())
 
 
 def sum_of_products(items) -> MQ:

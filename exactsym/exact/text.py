@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from flint import fmpq
 
-from ..io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
+from ..io.exprtree import Fold, Node, fold
 from .field import FieldElement, PolyElement, as_fmpq
 
 
@@ -44,14 +44,16 @@ def _rational_level(q: fmpq) -> tuple[str, int]:
     return text, (_PRODUCT if q.q != 1 else _ATOM)
 
 
-def _expression(node: Node) -> tuple[str, int]:
-    """``(text, level)``: the text of ``node`` and how strongly it binds (see ``_SUM``...)."""
-    if isinstance(node, Const):
+class _Texts(Fold):
+    """``(text, level)``: the text of a node and how strongly it binds (see ``_SUM``...)."""
+
+    def const(self, node):
         return _rational_level(as_fmpq(node.value))
-    if isinstance(node, Neg):
-        return "-" + _wrap(_expression(node.arg), _POWER), _NEGATION
-    if isinstance(node, BinOp):
-        left, right = _expression(node.left), _expression(node.right)
+
+    def neg(self, node, arg):
+        return "-" + _wrap(arg, _POWER), _NEGATION
+
+    def binop(self, node, left, right):
         if node.op in "+-":
             # a - b needs b parenthesised when b is a sum; a + b never does, but a negated
             # right operand reads better as a subtraction
@@ -60,20 +62,25 @@ def _expression(node: Node) -> tuple[str, int]:
             return f"{left[0]} {node.op} {_wrap(right, _PRODUCT if node.op == '-' else _SUM)}", _SUM
         # the grammar reads 2*-3 as 2*(-3), but write the parentheses
         return f"{_wrap(left, _PRODUCT)}{node.op}{_wrap(right, _POWER)}", _PRODUCT
-    if isinstance(node, Pow):
+
+    def power(self, node, base):
         exponent = str(node.exponent) if node.exponent >= 0 else f"({node.exponent})"
-        return f"{_wrap(_expression(node.base), _ATOM)}^{exponent}", _POWER
-    if isinstance(node, Sqrt):
-        return f"sqrt({_expression(node.arg)[0]})", _ATOM
-    if isinstance(node, Trig):
+        return f"{_wrap(base, _ATOM)}^{exponent}", _POWER
+
+    def sqrt(self, node, arg):
+        return f"sqrt({arg[0]})", _ATOM
+
+    def trig(self, node):
         return f"{node.func}({pi_multiple_text(as_fmpq(node.pi_multiple))})", _ATOM
-    raise TypeError(type(node).__name__)
+
+
+_TEXTS = _Texts()
 
 
 def expression_text(node: Node) -> str:
     """The text of an expression tree with only the parentheses it needs; it parses back
     (:func:`exactsym.io.expr.parse_expression`) to an expression of the same value."""
-    return _expression(node)[0]
+    return fold(node, _TEXTS)[0]
 
 
 def sum_text(terms: list[tuple[fmpq, str]]) -> str:

@@ -28,8 +28,8 @@ from functools import cmp_to_key
 from flint import arb, ctx, fmpq
 
 from ..exact import exact_sorted, sign as _sign
+from ..exact.balls import expression_ball
 from ..exact.fused import product_sum
-from ..io.exprtree import BinOp, Const, Neg, Pow, Sqrt, Trig
 from .predicates import PseudoAngle
 from .strings import cyclic_occurrences, cyclic_period
 
@@ -84,7 +84,7 @@ def coordinate_balls(points, polar=None, specs=None) -> tuple[list, list]:
     same points, when given in polar form: ``r cos(2 pi t)``, ``r sin(2 pi t)`` are then
     enclosed directly (a cosine in a cyclotomic field of degree 5,760 is a polynomial of
     that degree to evaluate).  ``specs``: the expressions the points were evaluated
-    from (``Configuration.specs``), enclosed by :func:`expression_ball` (0.4 ms less per
+    from (``Configuration.specs``), enclosed by :func:`exactsym.exact.balls.expression_ball` (0.4 ms less per
     coordinate in degree 960); a coordinate whose ball is not finite is enclosed from
     its exact value."""
     hit = _BALLS.get(id(points))
@@ -123,35 +123,6 @@ def coordinate_balls(points, polar=None, specs=None) -> tuple[list, list]:
         _BALLS.clear()
     _BALLS[id(points)] = (points, xs, ys)
     return xs, ys
-
-
-def expression_ball(node) -> arb:
-    """An Arb ball around the exact value of an expression tree (:mod:`exactsym.io.exprtree`),
-    at the current working precision: rigorous, so it may only be wide (cancellation), or
-    not finite (a divisor or radicand whose ball meets zero), never wrong."""
-    if isinstance(node, Const):
-        return arb(fmpq(node.value.numerator, node.value.denominator))
-    if isinstance(node, Neg):
-        return -expression_ball(node.arg)
-    if isinstance(node, BinOp):
-        left, right = expression_ball(node.left), expression_ball(node.right)
-        if node.op == "+":
-            return left + right
-        if node.op == "-":
-            return left - right
-        if node.op == "*":
-            return left * right
-        return left / right
-    if isinstance(node, Pow):
-        base = expression_ball(node.base)
-        return base ** node.exponent if node.exponent >= 0 else 1 / base ** -node.exponent
-    if isinstance(node, Trig):
-        q = fmpq(node.pi_multiple.numerator, node.pi_multiple.denominator)
-        return arb.cos_pi_fmpq(q) if node.func == "cos" else arb.sin_pi_fmpq(q)
-    if isinstance(node, Sqrt):
-        arg = expression_ball(node.arg)
-        return arg.sqrt() if arg > 0 else (arb(0) if arg == 0 else arb("nan"))
-    raise TypeError(f"unknown expression node {type(node).__name__}")
 
 
 def overlapping_pairs(xs: list, ys: list) -> list[tuple[int, int]]:
