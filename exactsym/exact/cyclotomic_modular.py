@@ -20,7 +20,7 @@ from math import gcd
 
 from flint import fmpq, fmpz, nmod_poly
 
-from .factor import factorization
+from .factor import factorization, is_prime
 from .field import PolyElement
 from .modular import sparse_image
 from .sparse_cyclotomic import SparseCyclotomic
@@ -40,7 +40,7 @@ def _embeddings(m: int):
     found = None
     if j is not None:
         k = ((1 << 62) // m) + 1
-        while not fmpz(k * m + 1).is_prime():
+        while not is_prime(k * m + 1):
             k += 1
         p = k * m + 1
         primes = list(factorization(m))

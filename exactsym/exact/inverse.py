@@ -13,6 +13,8 @@ from __future__ import annotations
 
 from flint import fmpq_poly, fmpz, fmpz_poly, nmod_poly
 
+from .factor import is_prime
+
 _PRIMES: list[int] = []
 _FIRST = (1 << 62) + 1
 #: the prime the Newton lift starts from: ``nmod_poly.xgcd`` at degree thousands is about
@@ -27,7 +29,7 @@ def nth_prime(i: int, first: int = _FIRST, found: list | None = None) -> int:
     found = _PRIMES if found is None else found
     while len(found) <= i:
         p = found[-1] + 2 if found else first
-        while not fmpz(p).is_prime():
+        while not is_prime(p):
             p += 2
         found.append(p)
     return found[i]

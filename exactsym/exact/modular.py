@@ -14,8 +14,7 @@ Public names: :func:`image`, :func:`sparse_image`, :func:`sqrt_mod`,
 
 from __future__ import annotations
 
-from flint import fmpz
-
+from .factor import is_prime
 from .multiquadratic import MQ
 
 
@@ -78,7 +77,7 @@ def kummer_split_primes(primes):
     k = 0
     while True:
         k += 1
-        if fmpz(k * m + 1).is_prime():
+        if is_prime(k * m + 1):
             yield k * m + 1
 
 

@@ -20,6 +20,7 @@ from math import gcd, isqrt
 
 from flint import fmpq, fmpz
 
+from .factor import is_prime
 from .multiquadratic import MQ, coprime_base, sqrt_rational
 from .tower import TowerElement, denominator
 from .modular import image, sqrt_mod
@@ -250,7 +251,7 @@ def _split_primes(primes: tuple) -> tuple:
     q = (1 << 31) + 1
     while len(out) < 3:
         q += 2
-        if fmpz(q).is_prime() and all(pow(p, (q - 1) // 2, q) == 1 for p in primes):
+        if is_prime(q) and all(pow(p, (q - 1) // 2, q) == 1 for p in primes):
             out.append((q, tuple(sqrt_mod(p, q) for p in primes)))
     return tuple(out)
 
@@ -332,7 +333,7 @@ def bounded_squarefree_split(n: int, hints: tuple = ()):
                     # a proof for a large prime squared costs up to a second
                     parts[f] = [k, None]
                     continue
-                prime = bool(fmpz(f).is_prime())
+                prime = is_prime(f)
                 if prime or isqrt(f) ** 2 == f:
                     parts[f] = [k, prime]
                 else:
@@ -363,7 +364,7 @@ def bounded_squarefree_split(n: int, hints: tuple = ()):
     for b, (e, prime) in parts.items():
         if e % 2 == 0:
             s *= b ** (e // 2)
-        elif prime or (prime is None and fmpz(b).is_prime()):
+        elif prime or (prime is None and is_prime(b)):
             s, m = s * b ** (e // 2), m * b
         elif isqrt(b) ** 2 == b:
             s *= isqrt(b) ** e

@@ -23,10 +23,10 @@ from __future__ import annotations
 from itertools import chain, islice
 from math import gcd, lcm
 
-from flint import fmpq, fmpz
+from flint import fmpq
 
 from .cyclotomic_sqrt import image_mod, root_of_unity_mod, split_primes
-from .factor import factorization
+from .factor import factorization, is_prime
 from .modular import (character_rows, image, independent_rows, kummer_split_primes, sparse_image,
                       sqrt_mod)
 from .multiquadratic import MQ
@@ -151,7 +151,7 @@ def base_kummer_witness(primes, radicands, limit: int = 1 << 24, signs: int = 16
     reach rank L."""
     def candidates():           # small primes at which every base prime is a square
         for p in range(3, limit, 2):
-            if all(pow(q, (p - 1) // 2, p) == 1 for q in primes) and fmpz(p).is_prime():
+            if all(pow(q, (p - 1) // 2, p) == 1 for q in primes) and is_prime(p):
                 yield p
     kept = independent_rows(character_rows(primes, radicands, limit, signs, candidates()),
                              len(radicands))
@@ -378,7 +378,7 @@ def _kummer_maps(tower):
         for q in factorization(v) if v > 1 else ():
             modulus = lcm(modulus, q)
     k = (1 << 62) // modulus + 1
-    while not fmpz(k * modulus + 1).is_prime():
+    while not is_prime(k * modulus + 1):
         k += 1
     p = k * modulus + 1
     w = root_of_unity_mod(n, p)
