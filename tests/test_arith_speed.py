@@ -7,7 +7,8 @@ from math import gcd
 from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
-from exactsym.exact.multiquadratic import MQ, _coprime_base_of, _dense_product
+from exactsym.exact.multiquadratic import MQ
+from exactsym.exact.mq_products import _coprime_base_of, _dense_product
 
 # pairwise products of these give radicands with shared and coprime factors
 PRIMES = [2, 3, 5, 7, 11, 13]

@@ -122,7 +122,7 @@ def primitive_element_path(monkeypatch):
     """Nested radicals mixed with cos/sin through sympy's primitive element (the kernel now
     writes them in a tower over Q(zeta_M), exact/cyclotomic_tower.py): the square-roots
     irreducibility proofs below are made for such fields."""
-    from exactsym.exact.general import general_system
+    from reference.general import general_system
     monkeypatch.setattr(importlib.import_module("exactsym.exact.evaluate"), "_mixed_system",
                         general_system)
 

@@ -26,12 +26,13 @@ from exactsym.errors import FieldTooLargeError, InputError
 from exactsym.exact import cyclotomic, evaluate, evaluate_all, exact_key, number_text
 from exactsym.exact.cyclotomic_sqrt import _trager_sqrt, field_sqrt, refuted
 from exactsym.exact.cyclotomic_tower import CyclotomicTower
-from exactsym.exact.general import general_system
 from exactsym.exact.tower import TowerElement
 from exactsym.io.expr import MAX_LENGTH, parse_expression
 from exactsym.geometry.levels import levels_of
 from exactsym.truth.symmetry import symmetry_group
 from certificate_checks import rejected as _rejected
+from reference.general import general_system
+from reference.sparse_nested_reading import sparse_nested_system
 
 P = parse_expression
 EVALUATE = importlib.import_module("exactsym.exact.evaluate")
@@ -161,7 +162,7 @@ def test_printed_mixed_numbers_read_back(data, gens):
 def test_base_bound_is_refused_before_any_work(tmp_path):
     """Beyond the dense base the input is refused at once (the sparse tower exists,
     tests/test_sparse_nested_input.py, but is not reached from input: see
-    evaluate._sparse_nested_system)."""
+    tests/reference/sparse_nested_reading.py)."""
     start = time.perf_counter()
     with pytest.raises(FieldTooLargeError, match="above the limit 192"):
         _values("sqrt(1+sqrt(2))", "cos(2*pi/1009)")
@@ -216,7 +217,7 @@ def test_same_verdicts_over_the_sparse_base(tmp_path, rows, monkeypatch):
     path = _file(tmp_path, rows, "c.toml")
     config = load(path)
     dense, dense_levels = symmetry_group(config), levels_of(config)
-    monkeypatch.setattr(EVALUATE, "_mixed_system", EVALUATE._sparse_nested_system)
+    monkeypatch.setattr(EVALUATE, "_mixed_system", sparse_nested_system)
     config = load(path)
     assert type(config.system).__name__ == "SparseNestedSystem"
     sparse, sparse_levels = symmetry_group(config), levels_of(config)

@@ -72,21 +72,22 @@ LARGE = cyclotomic_field(2520)              # degree 576 >= symmetry._KEY_DEGREE
 @settings(max_examples=30, deadline=None)
 @given(st.lists(st.tuples(reals(LARGE), st.booleans()), min_size=1, max_size=6), st.data())
 def test_radii_interned_by_value_key_as_by_hash(values, data):
-    """symmetry._intern in a field of large degree (value_key) gives the ids the hash of
+    """symbols.intern_symbols in a field of large degree (value_key) gives the ids the hash of
     the elements gives: equal ids iff equal radii (single radii and tuples of radii,
     rational elements among them, repeated values)."""
-    from exactsym.truth.symmetry import _KEY_DEGREE, _intern
-    assert LARGE.degree >= _KEY_DEGREE
+    from exactsym.exact.number import LARGE_DEGREE
+    from exactsym.truth.symbols import intern_symbols
+    assert LARGE.degree >= LARGE_DEGREE
     xs = [x if irrational else LARGE(data.draw(st.integers(0, 2))) for x, irrational in values]
     xs += [x + 0 for x in xs[: data.draw(st.integers(0, len(xs)))]]    # equal, other objects
     order = data.draw(st.permutations(range(len(xs))))
     xs = [xs[i] for i in order]
-    singles = _intern(xs, False)
+    singles = intern_symbols(xs, False)
     for i in range(len(xs)):
         for j in range(len(xs)):
             assert (singles[i] == singles[j]) == (xs[i] == xs[j])
     pairs = [(xs[i], xs[(i + 1) % len(xs)]) for i in range(len(xs))]
-    ids = _intern(pairs, True)
+    ids = intern_symbols(pairs, True)
     for i in range(len(pairs)):
         for j in range(len(pairs)):
             assert (ids[i] == ids[j]) == (pairs[i] == pairs[j])

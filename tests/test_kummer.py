@@ -237,7 +237,7 @@ def test_kummer_maps_never_refute_a_rational_ratio(xs, ys, p, q, den):
     irrational; a rational multiple is never 'proved' irrational, and rational_ratio finds
     the multiple exactly (dense Q(zeta_3988) and sparse Q(zeta_3999932) bases)."""
     from exactsym.exact.cyclotomic_modular import quotient_irrational
-    from exactsym.paper.ratio_keys import rational_ratio
+    from exactsym.exact.ratio import rational_ratio
     atoms = ["1", f"cos(2*pi/{den})", "sqrt(145)", f"sqrt(145)*cos(6*pi/{den})"]
     _, values = evaluate_all([parse_expression(e) for e in atoms])
     x = sum((k * v for k, v in zip(xs, values)), fmpq(0))

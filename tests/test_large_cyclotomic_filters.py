@@ -26,15 +26,16 @@ from exactsym.exact.cyclotomic_text import cyclotomic_text, fast_number_text
 from exactsym.exact.text import number_text
 from exactsym.truth.isometries import LazyMatrix
 from exactsym.paper.circle_polygon import CirclePolygon
-from exactsym.paper.keys import (QUOTIENT_DEGREE, bisector_key, complex_product,
-                                 lazy_line_canon, line_canon, line_key)
-from exactsym.paper.ratio_keys import rational_ratio
+from exactsym.exact.number import LARGE_DEGREE
+from exactsym.paper.keys import (bisector_key, complex_product, lazy_line_canon, line_canon,
+                                 line_key)
+from exactsym.exact.ratio import rational_ratio
 from exactsym.truth.symmetry import _directions, symmetry_group
 
-M = 2520                                    # degree 576 >= QUOTIENT_DEGREE
+M = 2520                                    # degree 576 >= LARGE_DEGREE
 BIG = cyclotomic_field(M)
 SMALL = cyclotomic_field(60)                # a subfield (60 | 2520), degree 16
-assert BIG.degree >= QUOTIENT_DEGREE
+assert BIG.degree >= LARGE_DEGREE
 TINY = fmpq(1, 10 ** 30)
 
 turns = st.integers(0, M - 1).map(lambda k: fmpq(k, M))

@@ -1,4 +1,4 @@
-"""A level's squared radius held lazily in a large cyclotomic field (exactsym.geometry.level_radius):
+"""A level's squared radius held lazily in a large cyclotomic field (exactsym.exact.level_radius):
 every answer it gives before its polynomial is computed is the exact number's."""
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from exactsym.exact.field import PolyElement
 from exactsym.geometry.configuration import Configuration
 from exactsym.exact import sign
 from exactsym.exact.evaluate import SparseKummerSystem
-from exactsym.geometry.level_radius import LevelRadius, TowerLevelRadius, tower_ratio_irrational
+from exactsym.exact.level_radius import LevelRadius, TowerLevelRadius, tower_ratio_irrational
 from exactsym.geometry.levels import levels_of
 
 
@@ -118,7 +118,7 @@ def test_tower_radii_answer_as_the_exact_ones(seed):
 def test_tower_ratio_refuted_only_when_irrational(seed):
     """A ratio of radii that tower_ratio_irrational calls irrational is irrational (exact
     quotient); a radius against itself or a rational multiple of its exact value never is."""
-    from exactsym.paper.ratio_keys import rational_ratio
+    from exactsym.exact.ratio import rational_ratio
     levels = levels_of(_sqrt_config(seed, 5))
     lazy = [level.radius_squared for level in levels.levels]
     assume(len(lazy) >= 2 and all(isinstance(r, TowerLevelRadius) for r in lazy))

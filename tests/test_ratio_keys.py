@@ -18,8 +18,9 @@ from exactsym.exact.inverse import inverse_mod
 from exactsym.paper.circle_polygon import CirclePolygon
 from exactsym.paper.keys import (LineKey, ccw_gap_key, gap_ids, hashable_key, line_key,
                                  ray_key)
-from exactsym.paper.ratio_keys import (AngleKey, RATIO_KEY_DEGREE, RatioKey, ball_at,
-                                       rational_ratio, ray_ratio_key)
+from exactsym.exact.number import LARGE_DEGREE, RATIO_KEY_DEGREE
+from exactsym.exact.ratio import rational_ratio
+from exactsym.paper.ratio_keys import AngleKey, RatioKey, ball_at, ray_ratio_key
 
 FIELD = cyclotomic_field(136)
 assert FIELD.degree >= RATIO_KEY_DEGREE
@@ -194,7 +195,7 @@ def test_a_slope_in_a_large_field_is_written_undivided_and_reads_back():
     from exactsym.exact import evaluate, number_system
     from exactsym.paper import keys
     field = cyclotomic_field(1024)                      # degree 512
-    assert field.degree >= keys.QUOTIENT_DEGREE
+    assert field.degree >= LARGE_DEGREE
     u = (cos_turn(field, fmpq(3, 1024)), sin_turn(field, fmpq(3, 1024)))
     key = line_key(False, (u[0] + 2, u[1]))
     text = key.text

@@ -22,7 +22,8 @@ from exactsym.exact.evaluate import dense_degree_limit
 from exactsym.exact.sparse_cyclotomic import SparseCyclotomic
 from exactsym.exact.tower import TowerElement
 from exactsym.paper.family.concentric import ALL_LINES
-from exactsym.paper.homogeneous import SHORT_DEGREE, is_short
+from exactsym.exact.number import LARGE_DEGREE
+from exactsym.paper.homogeneous import is_short
 from exactsym.report.check import report_json
 
 _PAIR = re.compile(r"\((-?1), ")
@@ -91,7 +92,7 @@ def test_short_texts_read_back_as_the_numbers(tmp_path, monkeypatch, make, seed)
     monkeypatch.setattr(expr, "MAX_LENGTH", 10 ** 6)
     config = make(tmp_path, seed)
     if make is _config:
-        assert config.system.field.degree >= SHORT_DEGREE
+        assert config.system.field.degree >= LARGE_DEGREE
     else:
         assert isinstance(config.points[0][0], (SparseCyclotomic, TowerElement))
     analysis = analyse(config, options=Options())

@@ -133,7 +133,7 @@ def test_images_in_f_p_agree_with_the_dense_field(data, m):
     num/den and the dense element it equals to the same residues; so the proofs of
     irrationality hold for it, and a rational ratio is found, never refuted."""
     from exactsym.exact.cyclotomic_modular import images, quotient_irrational
-    from exactsym.paper.ratio_keys import rational_ratio
+    from exactsym.exact.ratio import rational_ratio
     context = sparse_context(m)
     a, b = (_real(_random_terms(data, m), m) for _ in range(2))
     x, y = SparseCyclotomic(context, a), SparseCyclotomic(context, b)

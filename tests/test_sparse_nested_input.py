@@ -2,7 +2,8 @@
 need Q(zeta_2328) of degree 768 as a tower's base): the tower over the sparse Q(zeta_N), each
 nested radical a level proved new by Legendre characters (exact/sparse_nested.py), a
 denestable one read as its multiquadratic root, and its certificates.  Input still refuses
-these (evaluate._sparse_nested_system says why), so every test here swaps that reading in."""
+these (tests/reference/sparse_nested_reading.py says why), so every test here swaps that
+reading in."""
 
 from __future__ import annotations
 
@@ -21,7 +22,7 @@ from exactsym.certify.certificate import make_certificate
 from exactsym.geometry.configuration import load
 from exactsym.errors import InputError
 from exactsym.exact import evaluate, evaluate_all
-from exactsym.exact.evaluate import SparseNestedSystem
+from reference.sparse_nested_reading import SparseNestedSystem, sparse_nested_system
 from exactsym.exact.multiquadratic import MQ
 from exactsym.exact.sparse_tower import SparseKummerTower
 from exactsym.exact.tower import TowerElement
@@ -36,7 +37,7 @@ EVALUATE = importlib.import_module("exactsym.exact.evaluate")
 
 @pytest.fixture(autouse=True)
 def sparse_nested_reading(monkeypatch):
-    monkeypatch.setattr(EVALUATE, "_mixed_system", EVALUATE._sparse_nested_system)
+    monkeypatch.setattr(EVALUATE, "_mixed_system", sparse_nested_system)
 
 
 def _values(*texts):

@@ -312,7 +312,7 @@ def test_a_huge_exact_number_is_sized_without_being_written():
 
 
 def test_a_huge_line_is_written_by_its_decimal_for_the_screen_only():
-    """In a field of degree >= QUOTIENT_DEGREE a line's slope is written as the quotient
+    """In a field of degree >= LARGE_DEGREE a line's slope is written as the quotient
     (Y)/(X) of its doubled direction; when that text would be huge, the summary's texts
     (SCREEN_ONLY, set by a claim record of the text summary) show the slope's decimal and
     the estimated length instead, without writing it; every other reader gets the exact

@@ -18,8 +18,9 @@ from hypothesis import event, given, settings, strategies as st
 from exactsym.geometry.configuration import Configuration, load
 from exactsym.exact import fmpq
 from exactsym.report.check import check_report
-from exactsym.truth.symmetry import (SymmetryGroup, cyclic_period, least_rotation, occurrences,
-                               pseudo_angle, symmetry_group)
+from exactsym.truth.symbols import least_rotation
+from exactsym.truth.symmetry import (SymmetryGroup, cyclic_period, occurrences, pseudo_angle,
+                                     symmetry_group)
 
 from strategies import (RATIONAL_GROUPS, brute_force_group, brute_force_polar_group,
                         near_symmetric_points, near_symmetric_polar_points, polar_configuration,

@@ -126,7 +126,7 @@ def test_rational_ratio_in_a_tower_needs_no_inverse(data, gens, k):
     """The paper layer's rationality test of num/den in a tower (read off one coordinate
     of the canonical form, checked by one product) agrees with dividing, on rational
     multiples and on random pairs."""
-    from exactsym.paper.ratio_keys import rational_ratio
+    from exactsym.exact.ratio import rational_ratio
     system, values = _values(*gens, "sqrt(3)")
     x, y = (_random_element(system, values, data) for _ in range(2))
     if y == 0:
@@ -214,7 +214,7 @@ def test_square_class_rank_is_a_lower_bound_and_exact_here(exponents, squares):
     proved rank never exceeds the true rank (the F_2 rank of the exponent vectors), and
     here reaches it."""
     from exactsym.exact.multiquadratic import sqrt_rational
-    from exactsym.exact.tower_proof import square_class_rank
+    from exactsym.exact.modular import square_class_rank
     gens = [1 + sqrt_rational(p) for p in PRIMES[:5]]
     values = []
     for row, k in zip(exponents, squares):
@@ -318,7 +318,7 @@ def test_base_square_roots_with_the_legendre_filter(y, z):
     (y^2 has its root found, and every Legendre character is 1 on it), and a product it
     refuses has a non-residue image (a character -1)."""
     from exactsym.exact.tower import Tower
-    from exactsym.exact.tower_proof import square_class_rank
+    from exactsym.exact.modular import square_class_rank
     tower = Tower(_BASE)
     x = y * y
     assert square_class_rank(_BASE, [x], tries=2, signs=4) == 0

@@ -58,19 +58,30 @@ def turn_conductor(turn: fmpq, func: str) -> int:
     return lcm(den, 4) if func == "sin" else den
 
 
+class CyclotomicField(NumberField):
+    """Q(zeta_m) with zeta_m = exp(2 pi i / m): a number field that holds the square
+    roots of the integers whose conductor divides m (Gauss sums)."""
+
+    def __init__(self, m: int):
+        def enclose(prec: int):
+            from flint import ctx
+            with ctx.workprec(prec + 16):
+                angle = fmpq(2, m)
+                return acb(arb.cos_pi_fmpq(angle), arb.sin_pi_fmpq(angle))
+
+        super().__init__(fmpq_poly(fmpz_poly.cyclotomic(m)), enclose, f"Q(zeta_{m})",
+                         theta_text=None, conductor=m)
+        self.cyclotomic_order = m
+
+    def sqrt_of_integer(self, m: int) -> FieldElement:
+        if self.conductor % sqrt_conductor(m):
+            raise TypeError("elements of two different number fields do not mix")
+        return sqrt_element(self, fmpq(m))
+
+
 def cyclotomic_field(m: int) -> NumberField:
     """Q(zeta_m) with zeta_m = exp(2 pi i / m)."""
-    minpoly = fmpq_poly(fmpz_poly.cyclotomic(m))
-
-    def enclose(prec: int):
-        from flint import ctx
-        with ctx.workprec(prec + 16):
-            angle = fmpq(2, m)
-            return acb(arb.cos_pi_fmpq(angle), arb.sin_pi_fmpq(angle))
-
-    field = NumberField(minpoly, enclose, f"Q(zeta_{m})", theta_text=None, conductor=m)
-    field.cyclotomic_order = m
-    return field
+    return CyclotomicField(m)
 
 
 def root_of_unity(field: NumberField, k: int) -> FieldElement:

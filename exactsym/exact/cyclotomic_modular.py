@@ -20,10 +20,11 @@ from math import gcd
 
 from flint import fmpq, fmpz, nmod_poly
 
-from .factor import factorization
+from .factor import factorization, is_prime
 from .field import PolyElement
+from .modular import sparse_image
 from .sparse_cyclotomic import SparseCyclotomic
-from .tower import TowerElement, _raw as tower_raw
+from .tower import TowerElement, raw as tower_raw
 
 _EMBEDDINGS: dict = {}     # M -> (p, (w1, w2)) or None
 
@@ -39,7 +40,7 @@ def _embeddings(m: int):
     found = None
     if j is not None:
         k = ((1 << 62) // m) + 1
-        while not fmpz(k * m + 1).is_prime():
+        while not is_prime(k * m + 1):
             k += 1
         p = k * m + 1
         primes = list(factorization(m))
@@ -129,7 +130,7 @@ def _element_images(x: PolyElement, m: int, p: int, roots) -> tuple | None:
     if isinstance(x, SparseCyclotomic):
         pair = _sparse_images(x, m, p, roots)
     elif getattr(x, "made", True) is False:
-        # a level's squared radius not computed yet (exactsym.geometry.level_radius): its images
+        # a level's squared radius not computed yet (exactsym.exact.level_radius): its images
         # from those of its point and centre
         pair = x.modular_images(m, p, roots, lambda v: _value_images(v, m, p, roots))
     elif int(x.poly.denom()) % p == 0:
@@ -168,28 +169,6 @@ def _sparse_images(x: SparseCyclotomic, m: int, p: int, roots) -> tuple | None:
             return None
         pair.append(value)
     return tuple(pair)
-
-
-def sparse_image(x: SparseCyclotomic, p: int, u: int) -> int | None:
-    """The image of ``num / den`` (cosine form) under zeta_N -> u, a primitive N-th root of
-    unity modulo p: cos(2 pi e/N) -> (u^e + u^-e)/2; None when p divides a coefficient's
-    denominator or the denominator maps to 0."""
-    u_inv = pow(u, -1, p)
-    values = []
-    for terms in (x.num, x.den):
-        if terms is None:
-            values.append(2)                # the halves of num and den cancel
-            continue
-        total = 0
-        for e, c in terms.items():
-            q = int(c.q)
-            if q % p == 0:
-                return None
-            total += int(c.p) * pow(q, -1, p) * (pow(u, e, p) + pow(u_inv, e, p))
-        values.append(total % p)
-    if values[1] == 0:
-        return None
-    return values[0] * pow(values[1], -1, p) % p
 
 
 def ratio_irrational(x, y) -> bool:

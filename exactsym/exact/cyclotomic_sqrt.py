@@ -31,34 +31,13 @@ from __future__ import annotations
 
 from flint import fmpq_poly, fmpz_mat, fmpz_poly, nmod_poly
 
-from .factor import factorization
+from .factor import factorization, is_prime
 from .field import NumberField, PolyElement
+from .inverse import nth_prime
 
 #: primes p = 1 mod M tried for a refutation, and embeddings tried per prime
 REFUTATION_PRIMES = 6
 EMBEDDINGS_PER_PRIME = 4
-
-
-def _is_prime(n: int) -> bool:
-    if n < 2:
-        return False
-    for q in (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37):
-        if n % q == 0:
-            return n == q
-    d, s = n - 1, 0
-    while d % 2 == 0:
-        d, s = d // 2, s + 1
-    for a in (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37):   # deterministic below 3.3e24
-        x = pow(a, d, n)
-        if x in (1, n - 1):
-            continue
-        for _ in range(s - 1):
-            x = x * x % n
-            if x == n - 1:
-                break
-        else:
-            return False
-    return True
 
 
 def split_primes(m: int, start: int = 0):
@@ -66,7 +45,7 @@ def split_primes(m: int, start: int = 0):
     k = max(1, start // m)
     while True:
         p = k * m + 1
-        if p > start and p > 2 and _is_prime(p):
+        if p > start and p > 2 and is_prime(p):
             yield p
         k += 1
 
@@ -181,12 +160,11 @@ def _integral_quotient(num: fmpz_poly, den: fmpz_poly, phi: fmpz_poly,
     modulo 62-bit primes (``nmod_poly.xgcd``), combined by the Chinese remainder theorem
     into symmetric residues, the number of primes growing until r^2 == square modulo phi
     exactly (the test decides; the residues only propose)."""
-    from .inverse import _prime
     n = phi.degree()
     residues: list[int] = [0] * n
     modulus, i = 1, 0
     while True:
-        p = _prime(i)
+        p = nth_prime(i)
         i += 1
         phi_p = nmod_poly([int(c) % p for c in phi.coeffs()], p)
         den_p = nmod_poly([int(c) % p for c in den.coeffs()], p)

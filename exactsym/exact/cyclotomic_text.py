@@ -73,7 +73,7 @@ def cyclotomic_text(x: PolyElement) -> str:
                 append(f" + {term}" if c == 1 else f" + {c}*{term}")
             else:
                 append(f" - {term}" if c == -1 else f" - {-c}*{term}")
-    else:                       # |c/den| reduced, as text.py's _sum_text writes it (inline:
+    else:                       # |c/den| reduced, as text.py's sum_text writes it (inline:
         for k in range(1, len(coeffs)):     # the loop runs once per coefficient)
             c = coeffs[k]
             if not c:

@@ -15,8 +15,8 @@ configuration once and picks the smallest machinery that holds them all:
    (turns j/997, or of denominators near 10^6): sums of roots of unity with an exact zero
    test over N's factorisation (:mod:`.sparse_cyclotomic`); square roots whose Gauss sums
    would be long are then quadratic levels over the cosines' field (:mod:`.kummer`).
-(sympy's primitive element, :mod:`.general`, is no longer chosen here; it stays for callers
-that build Q(theta) from atoms.)
+(sympy's primitive element is no longer chosen here: tests/reference/general.py keeps it as
+a differential oracle, with the sparse nested reading that input does not reach yet.)
 
 Every evaluation error a user can cause (division by zero, the root of a
 negative number, a field too large) is an :class:`ExpressionError` carrying the
@@ -34,7 +34,7 @@ from typing import Iterable, Sequence
 from flint import fmpq, fmpz
 
 from ..errors import ExpressionError, FieldTooLargeError
-from ..io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
+from ..io.exprtree import BinOp, Const, Fold, Neg, Node, Pow, Sqrt, Trig, fold
 from . import cyclotomic
 from .field import FieldElement, NumberField, PolyElement, as_fmpq
 from .multiquadratic import MQ, sqrt_rational, squarefree_split
@@ -245,54 +245,6 @@ class SparseKummerSystem(TowerSystem):
         return SparseKummerSystem(self.context.n, self.tower.extended(raw))
 
 
-class SparseNestedSystem(SparseKummerSystem):
-    """Nested radicals of the input with cos/sin whose dense base would pass
-    :data:`.cyclotomic_tower.MAX_BASE_DEGREE` (turns j/97 and sqrt(1 + sqrt(2)): Q(zeta_2328),
-    degree 768): the tower of :class:`SparseKummerSystem`, its rational levels made first
-    (:func:`_sparse_nested_system`, not yet reached from input: see there), then each
-    nested radical a level proved new by characters, added in place
-    (:meth:`~.sparse_tower.SparseKummerTower.adjoin_nested`; FieldTooLargeError when not
-    proved, e.g. a radicand that is a square there)."""
-
-    def __init__(self, conductor: int):
-        super().__init__(conductor)
-        self.denested: dict = {}        # raw radicand -> its root, an MQ (see denest)
-
-    def sqrt(self, x):
-        from .tower import TowerElement, wrap
-        raw = x.v if isinstance(x, TowerElement) else self.coerce(x)
-        if type(raw) is tuple or (isinstance(raw, SparseCyclotomic) and not raw.is_rational()):
-            root = self.denested.get(raw)
-            if root is not None:
-                return sum((c * super(SparseNestedSystem, self).sqrt(fmpq(m))
-                            for m, c in root.terms.items()), self.coerce(0))
-            return wrap(self.tower, self.tower.adjoin_nested(raw))
-        return super().sqrt(x)
-
-    def denest(self, node: Node) -> None:
-        """Before any nested level: when the radicand of the nested radical ``node`` is
-        written with square roots of rationals only and has a root in the multiquadratic
-        closure (:func:`.mq_closure.decided_sqrt`: sqrt(3 + sqrt(5)) = (sqrt(10) +
-        sqrt(2))/2), that root's square roots of rationals are read now and the radical
-        is read as that root (characters cannot prove a square new)."""
-        from .mq_closure import decided_sqrt
-        inner: list = []
-        _collect(node.arg, inner)
-        if any(kind != "sqrt" for kind, *_ in inner):
-            return
-        value = _evaluate(node.arg, MultiquadraticSystem(()))
-        if not isinstance(value, MQ) or value.sign() <= 0:
-            return
-        root, _ = decided_sqrt(value)
-        if root is None:
-            return
-        for m in root.terms:
-            super().sqrt(fmpq(m))
-        from .tower import TowerElement
-        raw = _evaluate(node.arg, self)
-        self.denested[raw.v if isinstance(raw, TowerElement) else self.coerce(raw)] = root
-
-
 class FieldSystem:
     """A number field ``field`` with the atoms (square roots, trig values) it holds."""
 
@@ -419,15 +371,22 @@ class _DeepTrees:
         sys.setrecursionlimit(self.saved)
 
 
-def _evaluate(node: Node, system):
-    """Evaluate ``node`` in ``system`` (RationalSystem raises ValueError on irrational atoms)."""
-    if isinstance(node, Const):
-        return system.coerce(node.value)
-    if isinstance(node, Neg):
-        return -_evaluate(node.arg, system)
-    if isinstance(node, BinOp):
-        left = _evaluate(node.left, system)
-        right = _evaluate(node.right, system)
+class _Evaluation(Fold):
+    """Exact values in ``system`` (RationalSystem raises ValueError on irrational atoms);
+    every error a user can cause an :class:`ExpressionError` at the node's offset."""
+
+    __slots__ = ("system",)
+
+    def __init__(self, system):
+        self.system = system
+
+    def const(self, node):
+        return self.system.coerce(node.value)
+
+    def neg(self, node, arg):
+        return -arg
+
+    def binop(self, node, left, right):
         if node.op == "+":
             return left + right
         if node.op == "-":
@@ -437,19 +396,22 @@ def _evaluate(node: Node, system):
         if right == 0:
             raise ExpressionError("division by zero", offset=node.offset)
         return left / right
-    if isinstance(node, Pow):
-        base = _evaluate(node.base, system)
+
+    def power(self, node, base):
         if node.exponent < 0 and base == 0:
             raise ExpressionError("division by zero (zero to a negative power)", offset=node.offset)
         if _height_bits(base) * abs(node.exponent) > MAX_POWER_BITS:
             raise ExpressionError(f"power too large: the result would need more than "
                                   f"{MAX_POWER_BITS} bits", offset=node.offset)
         return base ** node.exponent
-    if isinstance(node, Trig):
+
+    def trig(self, node):
         turn = as_fmpq(node.pi_multiple) / 2
+        system = self.system
         return system.cos_turn(turn) if node.func == "cos" else system.sin_turn(turn)
-    if isinstance(node, Sqrt):
-        arg = _evaluate(node.arg, system)
+
+    def sqrt(self, node, arg):
+        system = self.system
         if isinstance(system, TowerSystem):
             if arg < 0:
                 raise ExpressionError("square root of a negative number", offset=node.offset)
@@ -463,7 +425,15 @@ def _evaluate(node: Node, system):
         if arg < 0:
             raise ExpressionError("square root of a negative number", offset=node.offset)
         return system.sqrt(arg)
-    raise ExpressionError(f"unknown expression node {type(node).__name__}", offset=node.offset)
+
+    def unknown(self, node):
+        raise ExpressionError(f"unknown expression node {type(node).__name__}",
+                              offset=node.offset)
+
+
+def _evaluate(node: Node, system):
+    """Evaluate ``node`` in ``system`` (RationalSystem raises ValueError on irrational atoms)."""
+    return fold(node, _Evaluation(system))
 
 
 #: the largest phi(M) of a dense Q(zeta_M); cos/sin needing a larger one are sparse sums in
@@ -548,11 +518,11 @@ def _check_tower_levels(atoms, primes) -> None:
     """FieldTooLargeError before anything is built when the radicands of depth 2 (square
     roots of sums of square roots of rationals) are proved to need more than
     ``tower.MAX_LEVELS`` quadratic levels: that many of them independent modulo squares
-    of the multiquadratic base (:func:`.tower_proof.square_class_rank`, F_p characters).
+    of the multiquadratic base (:func:`.modular.square_class_rank`, F_p characters).
     (Else the tower refuses the level beyond the bound when it would build it, after the
     square-root tests of the levels below: a minute for twelve.)"""
     from .tower import MAX_LEVELS
-    from .tower_proof import square_class_rank
+    from .modular import square_class_rank
     base = MultiquadraticSystem(primes)
     values: list = []
     for atom in atoms:
@@ -615,31 +585,10 @@ def _cosine_conductor(atoms) -> int:
 
 def _mixed_system(atoms):
     """Nested radicals mixed with cos/sin: a tower over the dense Q(zeta_M), refused beyond
-    :data:`.cyclotomic_tower.MAX_BASE_DEGREE` (tests swap in ``general.general_system``, the
-    former path, and :func:`_sparse_nested_system`, for differential tests)."""
+    :data:`.cyclotomic_tower.MAX_BASE_DEGREE` (tests swap in the former path, sympy's
+    primitive element, and the sparse nested reading, both in tests/reference/, for
+    differential tests)."""
     return CyclotomicTowerSystem(cyclotomic.lcm(_conductor(atoms), 4))
-
-
-def _sparse_nested_system(atoms):
-    """The cosines' sparse Q(zeta_N) with every square root of a rational among the atoms a
-    Kummer level (or a Gauss sum) first, so that the nested radicals, read later, are the
-    top levels (above them a new root of a rational is refused).
-
-    Not yet reached from input (:func:`_mixed_system` refuses beyond the dense base): on
-    30 random sets of rings with nested radii and turns j/53 to j/999983 it answered 25,
-    24 certified in about a second each, but two robots on two nested radii took a minute
-    to certify, and five sets ran past two minutes (a mirror pair of two such pairs, and
-    four near misses at 10^-30 in the paper layer's exact SEC of the moved
-    configurations: numbers of thousands of terms about an irrational centre).  Tested by swapping it in (tests/test_sparse_nested_input.py);
-    its levels certify (``checker_tower_sparse``)."""
-    system = SparseNestedSystem(_cosine_conductor(atoms))
-    for atom in atoms:
-        if atom[0] == "sqrt":
-            system.sqrt(atom[1])
-    for atom in atoms:
-        if atom[0] == "nested":
-            system.denest(atom[1])
-    return system
 
 
 def _conductor(atoms) -> int:
@@ -669,7 +618,6 @@ def evaluate_all(exprs: Sequence[Node], turns: Sequence[fmpq] = ()):
 
 
 __all__ = ["RationalSystem", "MultiquadraticSystem", "TowerSystem", "CyclotomicTowerSystem",
-           "SparseNestedSystem",
            "SparseCyclotomicSystem", "SparseKummerSystem",
            "FieldSystem", "number_system", "evaluate", "evaluate_all",
            "rational_cos_turn", "rational_sqrt", "normal_turn", "Fraction"]

@@ -79,6 +79,11 @@ class NumberField:
         self._cyclotomic = False     # Phi_M arithmetic (.cyclotomic_reduce), None if not
         self._products: dict = {}    # see product_sum
 
+    def sqrt_of_integer(self, m: int) -> "PolyElement":
+        """The positive square root of the squarefree integer ``m`` in this field; only a
+        cyclotomic field holds one (:class:`.cyclotomic.CyclotomicField`)."""
+        raise TypeError("elements of two different number fields do not mix")
+
     def arithmetic(self):
         """The :class:`CyclotomicArithmetic` of a large cyclotomic field, else None."""
         found = self._cyclotomic
@@ -276,14 +281,9 @@ def _common(x, y):
 
 def _from_multiquadratic(field: NumberField, x) -> "PolyElement":
     """A multiquadratic element written in a cyclotomic field holding its square roots."""
-    if field.conductor is None:
-        raise TypeError("elements of two different number fields do not mix")
-    from .cyclotomic import sqrt_conductor, sqrt_element
     total = field(0)
     for m, c in x.terms.items():
-        if field.conductor % sqrt_conductor(m):
-            raise TypeError("elements of two different number fields do not mix")
-        total = total + c * (sqrt_element(field, fmpq(m)) if m != 1 else field(1))
+        total = total + c * (field.sqrt_of_integer(m) if m != 1 else field(1))
     return total
 
 

@@ -13,6 +13,8 @@ from __future__ import annotations
 
 from flint import fmpq_poly, fmpz, fmpz_poly, nmod_poly
 
+from .factor import is_prime
+
 _PRIMES: list[int] = []
 _FIRST = (1 << 62) + 1
 #: the prime the Newton lift starts from: ``nmod_poly.xgcd`` at degree thousands is about
@@ -21,11 +23,13 @@ _FIRST = (1 << 62) + 1
 _SMALL_FIRST = (1 << 31) + 11
 
 
-def _prime(i: int, first: int = _FIRST, found: list | None = None) -> int:
+def nth_prime(i: int, first: int = _FIRST, found: list | None = None) -> int:
+    """The i-th prime from ``first`` on (62-bit primes for multimodular arithmetic),
+    remembered in ``found``."""
     found = _PRIMES if found is None else found
     while len(found) <= i:
         p = found[-1] + 2 if found else first
-        while not fmpz(p).is_prime():
+        while not is_prime(p):
             p += 2
         found.append(p)
     return found[i]
@@ -35,7 +39,7 @@ _SMALL_PRIMES: list[int] = []
 
 
 def _small_prime(i: int) -> int:
-    return _prime(i, _SMALL_FIRST, _SMALL_PRIMES)
+    return nth_prime(i, _SMALL_FIRST, _SMALL_PRIMES)
 
 
 def _rational_reconstruction(a: int, m: int):
@@ -178,7 +182,7 @@ def _inverse_multimodular(poly: fmpq_poly, minpoly: fmpq_poly) -> fmpq_poly:
     count, target = 0, 4
     i = 0
     while True:
-        p = _prime(i)
+        p = nth_prime(i)
         i += 1
         if lead % p == 0:
             continue

@@ -20,9 +20,10 @@ from math import gcd, isqrt
 
 from flint import fmpq, fmpz
 
-from .multiquadratic import MQ, _coprime_base, sqrt_rational
-from .tower import TowerElement, _denominator
-from .tower_proof import image, sqrt_mod
+from .factor import is_prime
+from .multiquadratic import MQ, coprime_base, sqrt_rational
+from .tower import TowerElement, denominator
+from .modular import image, sqrt_mod
 
 __all__ = ["closure_sqrt", "decided_sqrt", "bounded_squarefree_split", "RATIONAL_BITS",
            "SMOOTH_BITS"]
@@ -62,7 +63,7 @@ def closure_sqrt(x, _depth: int = 0, big_ok: bool = False):
         return None
     if x.is_rational():
         return _sqrt_rational(x.to_fmpq(), big_ok)
-    b = max(_coprime_base(x.radicands()))
+    b = max(coprime_base(x.radicands()))
     A = MQ({m: c for m, c in x.terms.items() if m % b})
     B = MQ({m // b: c for m, c in x.terms.items() if m % b == 0})
     n = closure_sqrt(A * A - B * B * b, _depth + 1)
@@ -224,10 +225,10 @@ def _refuted_modulo(y: MQ, primes, free: bool) -> bool:
     closed), and phi(y) = m phi(w)^2: the Legendre symbol of phi(y) is that of m,
     the same for every phi (1 for a root in K itself, m = 1).  Two maps with different
     symbols, or one symbol -1 without ``free``, refute."""
-    denominator = _denominator(y)
+    common = denominator(y)
     choices = _sign_choices(len(primes))
     for q, roots in _split_primes(tuple(primes)):
-        if denominator % q == 0:
+        if common % q == 0:
             continue
         seen = set()
         for signs in choices:
@@ -250,7 +251,7 @@ def _split_primes(primes: tuple) -> tuple:
     q = (1 << 31) + 1
     while len(out) < 3:
         q += 2
-        if fmpz(q).is_prime() and all(pow(p, (q - 1) // 2, q) == 1 for p in primes):
+        if is_prime(q) and all(pow(p, (q - 1) // 2, q) == 1 for p in primes):
             out.append((q, tuple(sqrt_mod(p, q) for p in primes)))
     return tuple(out)
 
@@ -332,7 +333,7 @@ def bounded_squarefree_split(n: int, hints: tuple = ()):
                     # a proof for a large prime squared costs up to a second
                     parts[f] = [k, None]
                     continue
-                prime = bool(fmpz(f).is_prime())
+                prime = is_prime(f)
                 if prime or isqrt(f) ** 2 == f:
                     parts[f] = [k, prime]
                 else:
@@ -363,7 +364,7 @@ def bounded_squarefree_split(n: int, hints: tuple = ()):
     for b, (e, prime) in parts.items():
         if e % 2 == 0:
             s *= b ** (e // 2)
-        elif prime or (prime is None and fmpz(b).is_prime()):
+        elif prime or (prime is None and is_prime(b)):
             s, m = s * b ** (e // 2), m * b
         elif isqrt(b) ** 2 == b:
             s *= isqrt(b) ** e

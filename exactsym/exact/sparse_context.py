@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from math import gcd
 
-from flint import arb, ctx, fmpq, fmpz
+from flint import arb, ctx, fmpq
 
-from .factor import factorization
+from .factor import factorization, is_prime
 
 _COS_CACHE_LIMIT = 1 << 16
 
@@ -28,10 +28,6 @@ def root_of_unity(n: int, factors, ell: int) -> int:
 
 
 # ---------------------------------------------------------------- the conductor's context
-def _is_prime(n: int) -> bool:
-    return bool(fmpz(n).is_prime())
-
-
 class SparseContext:
     """What every element of Q(zeta_N) shares: N, its factorisation, the cosines met so far,
     and the l-adic embedding used for hashing.
@@ -49,7 +45,7 @@ class SparseContext:
         for p, a in self.factors.items():
             self.phi *= (p - 1) * p ** (a - 1)
         k = (1 << 61) // n + 1
-        while not _is_prime(k * n + 1):
+        while not is_prime(k * n + 1):
             k += 1
         self.ell = ell = k * n + 1
         self.g = g = root_of_unity(n, self.factors, ell)

@@ -41,8 +41,8 @@ from math import lcm
 
 from flint import fmpz
 
-from .factor import factorization
-from .cyclotomic_modular import sparse_image
+from .factor import factorization, is_prime
+from .modular import sparse_image
 from .sparse_context import root_of_unity
 from .tower_proof import sqrt_mod
 
@@ -123,7 +123,7 @@ def _primes(context, count: int, modulus: int, start: int = 1 << 20):
     while found < count:
         l = k * modulus + 1
         k += 1
-        if not fmpz(l).is_prime():
+        if not is_prime(l):
             continue
         found += 1
         yield l, root_of_unity(n, context.factors, l)

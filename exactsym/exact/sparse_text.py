@@ -12,7 +12,7 @@ from math import gcd
 
 from flint import fmpq
 
-from .text import _sum_text
+from .text import rational_text, sum_text
 
 #: cos(2 pi e/N) by the order N/gcd(e, N) of zeta^e, where it is rational
 _RATIONAL_COS = {1: fmpq(1), 2: fmpq(-1), 3: fmpq(-1, 2), 4: fmpq(0), 6: fmpq(1, 2)}
@@ -36,13 +36,12 @@ def _cosine_sum(terms: dict, n: int) -> str:
         p, q = 2 * e // g, n // g
         head = "pi" if p == 1 else f"{p}*pi"
         out.append((c, f"cos({head if q == 1 else f'{head}/{q}'})"))
-    return _sum_text([(const, "")] + out)
+    return sum_text([(const, "")] + out)
 
 
 def sparse_text(x) -> str:
     """The text of a :class:`~.sparse_cyclotomic.SparseCyclotomic`; it parses back to x."""
     if x.is_rational():
-        from .text import rational_text
         return rational_text(x.rational())
     num = _cosine_sum(x.num, x.ctx.n)
     if x.den is None:

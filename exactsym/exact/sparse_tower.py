@@ -13,7 +13,7 @@ There is no square-root test in the sparse base.  A nested radical is a new leve
 Legendre characters prove its radicand no square of the top field (:mod:`.sparse_nested`):
 MakeAsym's radial move (a root of a ratio of squared radii) gets a copy of the tower with
 that level (:meth:`SparseKummerTower.extended`), a nested radical read by
-:func:`.evaluate._sparse_nested_system` (not yet reached from input) extends the tower in
+the sparse nested reading (tests/reference/sparse_nested_reading.py, not yet reached from input) extends the tower in
 place (:meth:`SparseKummerTower.adjoin_nested`, after every root of a rational); a radicand the characters do not settle (it may be a square, e.g. a denesting)
 is refused (FieldTooLargeError, exit 2).  Above a nested level a rational whose root would
 need a new level is refused (rational levels come first, so that
@@ -119,7 +119,7 @@ class SparseKummerTower(CyclotomicTower):
     def adjoin_nested(self, x):
         """The root of x (a positive raw value, not rational) in this tower, extended in
         place by the level sqrt(x) unless x already is a radicand: a nested radical of the
-        input (:class:`.evaluate.SparseNestedSystem`, which reads every root of a rational
+        input (``SparseNestedSystem`` of tests/reference/, which reads every root of a rational
         first).  FieldTooLargeError as :meth:`extended`."""
         root = self._roots.get(x)
         return root if root is not None else self._adjoin_proved(x)

@@ -8,11 +8,8 @@ from __future__ import annotations
 
 from flint import fmpq
 
-from ..io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
-from .field import FieldElement, as_fmpq
-from .multiquadratic import MQ
-from .sparse_cyclotomic import SparseCyclotomic
-from .tower import TowerElement
+from ..io.exprtree import Fold, Node, fold
+from .field import FieldElement, PolyElement, as_fmpq
 
 
 def rational_text(q) -> str:
@@ -24,7 +21,7 @@ def rational_text(q) -> str:
 _RATIONAL_COS = {1: fmpq(1), 2: fmpq(-1), 3: fmpq(-1, 2), 4: fmpq(0), 6: fmpq(1, 2)}
 
 
-def _pi_multiple_text(q: fmpq) -> str:
+def pi_multiple_text(q: fmpq) -> str:
     sign, p = ("-", -q.p) if q < 0 else ("", q.p)
     head = "pi" if p == 1 else f"{p}*pi"
     return sign + (head if q.q == 1 else f"{head}/{q.q}")
@@ -47,14 +44,16 @@ def _rational_level(q: fmpq) -> tuple[str, int]:
     return text, (_PRODUCT if q.q != 1 else _ATOM)
 
 
-def _expression(node: Node) -> tuple[str, int]:
-    """``(text, level)``: the text of ``node`` and how strongly it binds (see ``_SUM``...)."""
-    if isinstance(node, Const):
+class _Texts(Fold):
+    """``(text, level)``: the text of a node and how strongly it binds (see ``_SUM``...)."""
+
+    def const(self, node):
         return _rational_level(as_fmpq(node.value))
-    if isinstance(node, Neg):
-        return "-" + _wrap(_expression(node.arg), _POWER), _NEGATION
-    if isinstance(node, BinOp):
-        left, right = _expression(node.left), _expression(node.right)
+
+    def neg(self, node, arg):
+        return "-" + _wrap(arg, _POWER), _NEGATION
+
+    def binop(self, node, left, right):
         if node.op in "+-":
             # a - b needs b parenthesised when b is a sum; a + b never does, but a negated
             # right operand reads better as a subtraction
@@ -63,23 +62,28 @@ def _expression(node: Node) -> tuple[str, int]:
             return f"{left[0]} {node.op} {_wrap(right, _PRODUCT if node.op == '-' else _SUM)}", _SUM
         # the grammar reads 2*-3 as 2*(-3), but write the parentheses
         return f"{_wrap(left, _PRODUCT)}{node.op}{_wrap(right, _POWER)}", _PRODUCT
-    if isinstance(node, Pow):
+
+    def power(self, node, base):
         exponent = str(node.exponent) if node.exponent >= 0 else f"({node.exponent})"
-        return f"{_wrap(_expression(node.base), _ATOM)}^{exponent}", _POWER
-    if isinstance(node, Sqrt):
-        return f"sqrt({_expression(node.arg)[0]})", _ATOM
-    if isinstance(node, Trig):
-        return f"{node.func}({_pi_multiple_text(as_fmpq(node.pi_multiple))})", _ATOM
-    raise TypeError(type(node).__name__)
+        return f"{_wrap(base, _ATOM)}^{exponent}", _POWER
+
+    def sqrt(self, node, arg):
+        return f"sqrt({arg[0]})", _ATOM
+
+    def trig(self, node):
+        return f"{node.func}({pi_multiple_text(as_fmpq(node.pi_multiple))})", _ATOM
+
+
+_TEXTS = _Texts()
 
 
 def expression_text(node: Node) -> str:
     """The text of an expression tree with only the parentheses it needs; it parses back
     (:func:`exactsym.io.expr.parse_expression`) to an expression of the same value."""
-    return _expression(node)[0]
+    return fold(node, _TEXTS)[0]
 
 
-def _sum_text(terms: list[tuple[fmpq, str]]) -> str:
+def sum_text(terms: list[tuple[fmpq, str]]) -> str:
     """``c1*t1 + c2*t2 ...`` with ``t == ""`` for a constant; ``"0"`` for no term."""
     out = []
     for coeff, term in terms:
@@ -108,8 +112,8 @@ def number_text(x) -> str:
     """The configuration-syntax text of an exact number."""
     if not isinstance(x, FieldElement):
         return rational_text(x)
-    if isinstance(x, (MQ, TowerElement, SparseCyclotomic)):
-        return x.text()
+    if not isinstance(x, PolyElement):
+        return x.text()                 # each other kind writes itself
     if x.is_rational():
         return rational_text(x.rational())
     field = x.field
@@ -126,9 +130,9 @@ def number_text(x) -> str:
             if rational is not None:
                 const += c * rational
             else:
-                terms.append((c, f"cos({_pi_multiple_text(fmpq(2 * k, m))})"))
-        return _sum_text([(const, "")] + terms)
+                terms.append((c, f"cos({pi_multiple_text(fmpq(2 * k, m))})"))
+        return sum_text([(const, "")] + terms)
     theta = f"({field.theta_text})"
     terms = [(coeffs[0], "")] + [(c, theta if k == 1 else f"{theta}^{k}")
                                 for k, c in enumerate(coeffs) if k and c != 0]
-    return _sum_text(terms)
+    return sum_text(terms)

@@ -34,6 +34,7 @@ from math import isqrt, lcm, prod
 from flint import arb, ctx, fmpq, fmpz
 
 from .field import FieldElement
+from .modular import kummer_subset, square_class_rank
 from .multiquadratic import MQ
 from .sparse_cyclotomic import SparseCyclotomic
 
@@ -50,7 +51,7 @@ def level(v) -> int:
     return v[0] if type(v) is tuple else 0
 
 
-def _split(v, lev: int):
+def split(v, lev: int):
     return (v[1], v[2]) if type(v) is tuple and v[0] == lev else (v, _ZERO)
 
 
@@ -91,10 +92,10 @@ def sub(x, y):
 
 
 
-def _denominator(v) -> int:
+def denominator(v) -> int:
     """The least common denominator of the rational coefficients of a raw value."""
     if type(v) is tuple:
-        return lcm(_denominator(v[1]), _denominator(v[2]))
+        return lcm(denominator(v[1]), denominator(v[2]))
     return lcm(*[int(c.q) for c in v.terms.values()]) if v.terms else 1
 
 
@@ -188,7 +189,7 @@ class Tower:
         scales at the end (exact, and the same canonical value and term order)."""
         if type(x) is not tuple or type(y) is not tuple:
             return self._mul(x, y)
-        dx, dy = _denominator(x), _denominator(y)
+        dx, dy = denominator(x), denominator(y)
         if dx == 1 and dy == 1:
             return self._mul(x, y)
         return _scaled(self._mul(_scaled(x, dx), _scaled(y, dy)), fmpq(1, dx * dy))
@@ -291,7 +292,7 @@ class Tower:
             root = self._kummer_root(x, lev)
             if root is not _UNDECIDED:
                 return root
-        a, b = _split(x, lev)
+        a, b = split(x, lev)
         r = self.radicands[lev - 1]
         if _is_zero(b):
             c = self.root_in(a, lev - 1)
@@ -317,13 +318,12 @@ class Tower:
         the recursion below branches twice per level (x or x / r_i a square one level down)
         and took 14 s over nine such levels (twelve nested radicals, MakeAsym's radial
         move), while by Kummer theory only x * prod(r_j : j in S) for the one S that
-        Legendre characters allow can be a square of K_0 (:func:`.tower_proof.kummer_subset`);
+        Legendre characters allow can be a square of K_0 (:func:`.modular.kummer_subset`);
         then x = (w / prod r_j)^2 prod r_j and the root is w prod y_j / prod r_j.
         _UNDECIDED when the characters settle nothing or the levels are not of that kind."""
         radicands = self.radicands[:lev]
         if not all(type(r) is MQ for r in radicands) or not self._in_base([x] + radicands):
             return _UNDECIDED
-        from .tower_proof import kummer_subset
         subset = kummer_subset(self.primes, radicands, x)
         if subset is None:
             return _UNDECIDED
@@ -352,7 +352,6 @@ class Tower:
             # square (the image of a square is a square): the search below branches three
             # ways per prime, and its "no" took 30 s over ten primes (nested radicals of
             # ten square roots, MakeAsym's radial move)
-            from .tower_proof import square_class_rank
             if square_class_rank(self.primes[:k], [x], tries=2, signs=4):
                 return None
         p = self.primes[k - 1]
@@ -478,7 +477,7 @@ def leaf_ratio(num, den):
     num == q den exactly: no inverse is made."""
     while type(den) is tuple:
         lev, a, b = den
-        na, nb = _split(num, lev)
+        na, nb = split(num, lev)
         den, num = (a, na) if not _is_zero(a) else (b, nb)
     if type(num) is tuple:
         return None
@@ -498,7 +497,7 @@ def leaf_ratio(num, den):
     return np_[i] / dp[i]
 
 
-def _raw(tower: Tower, other):
+def raw(tower: Tower, other):
     """``other`` as a raw value of ``tower`` (None for a foreign type)."""
     if isinstance(other, TowerElement):
         if other.tower is not tower:
@@ -532,7 +531,7 @@ class TowerElement(FieldElement):
         return wrap(self.tower, v)
 
     def _bin(self, other, op):
-        o = _raw(self.tower, other)
+        o = raw(self.tower, other)
         return NotImplemented if o is None else self._new(op(self.v, o))
 
     def __add__(self, other):
@@ -561,7 +560,7 @@ class TowerElement(FieldElement):
         return self._new(self.tower.inverse(self.v))
 
     def __truediv__(self, other):
-        o = _raw(self.tower, other)
+        o = raw(self.tower, other)
         if o is None:
             return NotImplemented
         if _is_zero(o):
@@ -569,7 +568,7 @@ class TowerElement(FieldElement):
         return self._new(self.tower.divide(self.v, o))
 
     def __rtruediv__(self, other):
-        o = _raw(self.tower, other)
+        o = raw(self.tower, other)
         return NotImplemented if o is None else self._new(self.tower.divide(o, self.v))
 
     def __pow__(self, k: int):
@@ -595,15 +594,15 @@ class TowerElement(FieldElement):
         return self.tower.sign(self.v)
 
     def __eq__(self, other):
-        o = _raw(self.tower, other)
+        o = raw(self.tower, other)
         return NotImplemented if o is None else self.v == o
 
     def __ne__(self, other):
-        o = _raw(self.tower, other)
+        o = raw(self.tower, other)
         return NotImplemented if o is None else self.v != o
 
     def _cmp(self, other):
-        o = _raw(self.tower, other)
+        o = raw(self.tower, other)
         if o is None:
             return None
         # disjoint balls decide: the exact difference of two numbers whose sparse base

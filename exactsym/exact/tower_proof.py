@@ -23,19 +23,20 @@ from __future__ import annotations
 from itertools import chain, islice
 from math import gcd, lcm
 
-from flint import fmpq, fmpz
+from flint import fmpq
 
-from .cyclotomic_modular import sparse_image
 from .cyclotomic_sqrt import image_mod, root_of_unity_mod, split_primes
-from .factor import factorization
+from .factor import factorization, is_prime
+from .modular import (character_rows, image, independent_rows, kummer_split_primes, sparse_image,
+                      sqrt_mod)
 from .multiquadratic import MQ
-from .tower import Tower, _split, level, sub
+from .tower import Tower, level, split, sub
 
 
 def norm(tower: Tower, x) -> fmpq:
     """N_(K_L/Q)(x) for a raw value of level L (down the tower, then over the base primes)."""
     for lev in range(level(x), 0, -1):
-        a, b = _split(x, lev)
+        a, b = split(x, lev)
         x = sub(tower.mul(a, a), tower.mul(tower.radicands[lev - 1], tower.mul(b, b)))
     for p in tower.primes:
         x = x * MQ({m: (-c if m % p == 0 else c) for m, c in x.terms.items()})
@@ -50,162 +51,6 @@ def _coefficients(x):
         yield from _coefficients(x[2])
 
 
-def image(x, p: int, base: dict, roots: list) -> int:
-    """phi(x) in F_p: sqrt(q) -> base[q] for the base primes, y_j -> roots[j - 1]."""
-    if isinstance(x, MQ):
-        total = 0
-        for m, c in x.terms.items():
-            v = int(c.p) * pow(int(c.q), -1, p)
-            for q, s in base.items():
-                if m % q == 0:
-                    v *= s
-            total += v
-        return total % p
-    lev, a, b = x
-    return (image(a, p, base, roots) + image(b, p, base, roots) * roots[lev - 1]) % p
-
-
-_NON_RESIDUES: dict = {}     # p -> the least quadratic non-residue mod p
-
-
-def sqrt_mod(a: int, p: int):
-    """A square root of a modulo the odd prime p, or None (Tonelli-Shanks; also None when
-    the search shows p composite)."""
-    a %= p
-    if a == 0:
-        return 0
-    if pow(a, (p - 1) // 2, p) != 1:
-        return None
-    q, s = p - 1, 0
-    while q % 2 == 0:
-        q, s = q // 2, s + 1
-    z = _NON_RESIDUES.get(p)
-    if z is None:
-        # the base primes and their products are residues mod a split prime: the search
-        # passes them all, once per prime
-        z = next(z for z in range(2, p) if pow(z, (p - 1) // 2, p) == p - 1)
-        if len(_NON_RESIDUES) >= 1 << 12:
-            _NON_RESIDUES.clear()
-        _NON_RESIDUES[p] = z
-    m, c, t, r = s, pow(z, q, p), pow(a, q, p), pow(a, (q + 1) // 2, p)
-    while t != 1:
-        i, t2 = 0, t
-        while t2 != 1:
-            t2, i = t2 * t2 % p, i + 1
-            if i == m:
-                return None             # p is not prime (a probable prime of ECPP)
-        b = pow(c, 1 << (m - i - 1), p)
-        m, c, t, r = i, b * b % p, t * b * b % p, r * b % p
-    return r
-
-
-def _split_primes(primes):
-    """Primes p = 1 + k M, M = 8 times the odd base primes: p = 1 mod 8 makes 2 a square
-    mod p, and p = 1 mod q with p = 1 mod 4 makes q one (quadratic reciprocity)."""
-    m = 8
-    for q in primes:
-        if q != 2:
-            m *= q
-    k = 0
-    while True:
-        k += 1
-        if fmpz(k * m + 1).is_prime():
-            yield k * m + 1
-
-
-def _character_rows(primes, values, tries: int, signs: int, candidates=None):
-    """Rows of characters of K_0*/K_0*^2 on the non-zero ``values`` (``MQ``), each with its
-    map: ``(p, base, row)``, bit i of row set when value i is a non-residue.  Each ring map
-    phi: K_0 -> F_p (p odd, every base prime a square mod p, no denominator divisible by
-    p: ``base``, a root of each base prime, chooses the map) composed with the Legendre
-    symbol is such a character where phi is a unit: the image of a square is a square (p
-    is unramified, so a root of a p-unit is p-integral).  The primes are ``candidates``
-    (by default :func:`_split_primes`; ``tries`` of them, ``signs`` maps each)."""
-    dens = 1
-    for v in values:
-        for c in v.terms.values():
-            dens *= int(c.q)
-    candidates = _split_primes(primes) if candidates is None else candidates
-    for _, p in zip(range(tries), candidates):
-        if dens % p == 0:
-            continue
-        roots = [sqrt_mod(q, p) for q in primes]
-        if any(r is None for r in roots):
-            continue
-        for choice in range(min(signs, 1 << len(primes))):
-            base = [r if (choice >> k) & 1 == 0 else p - r for k, r in enumerate(roots)]
-            images = [image(v, p, dict(zip(primes, base)), []) for v in values]
-            if any(a == 0 for a in images):
-                continue
-            yield p, base, sum(1 << i for i, a in enumerate(images)
-                               if pow(a, (p - 1) // 2, p) != 1)
-
-
-def _independent_rows(rows, need: int):
-    """The rows (with their maps) that raise the rank over F_2, taken until it is
-    ``need``: ``[(p, base, row), ...]`` (reduced rows)."""
-    basis: list = []                        # row-reduced bit masks over F_2
-    kept = []
-    for p, base, row in rows:
-        for b in basis:
-            row = min(row, row ^ b)
-        if row:
-            basis.append(row)
-            basis.sort(reverse=True)
-            kept.append((p, base, row))
-            if len(basis) == need:
-                break
-    return kept
-
-
-def square_class_rank(primes, values, tries: int = 32, signs: int = 8) -> int:
-    """A proved lower bound on the rank of the classes of the non-zero elements ``values``
-    of K_0 = Q(sqrt q : q in ``primes``) (``MQ``) in K_0*/K_0*^2: at least that many of
-    them are independent (no product of a non-empty subset of those is a square in K_0),
-    so K_0(sqrt v : v in values) has degree at least 2^rank over K_0.  The rank over F_2
-    of a matrix of characters (:func:`_character_rows`) is a lower bound of the rank.
-    Milliseconds: the tower refuses a level beyond its bound with it before any
-    square-root test in a base of 2^k terms."""
-    if not values:
-        return 0
-    return len(_independent_rows(_character_rows(primes, values, tries, signs), len(values)))
-
-
-def kummer_subset(primes, radicands, x, tries: int = 32, signs: int = 8):
-    """Which product of ``radicands`` r_1..r_L (``MQ``, non-zero) can make the non-zero x
-    a square of K_0 (``MQ`` over the base ``primes``): by Kummer theory x is a square of
-    K_0(sqrt r_1, ..., sqrt r_L) iff x * prod(r_j : j in S) is a square of K_0 for some S.
-
-    Each character chi (:func:`_character_rows`) must then satisfy
-    chi(x) = sum(chi(r_j) : j in S) over F_2.  Returns False when that system has no
-    solution (proved: x is no square up there), the tuple S (indices from 0, increasing)
-    when the radicands' characters have full rank L (S is then the only candidate: the
-    caller tests the one product), and None when the characters found within the bounds
-    settle neither."""
-    n = len(radicands)
-    rows: dict = {}                      # pivot bit -> reduced row; bit 0: x, bit j: r_j
-    for _, _, chars in _character_rows(primes, [x] + list(radicands), tries, signs):
-        row = chars
-        for pivot in sorted(rows, reverse=True):
-            if row >> pivot & 1:
-                row ^= rows[pivot]
-        if row == 1:                     # 0 = chi(x) + sum over S: no S satisfies it
-            return False
-        if row:
-            rows[row.bit_length() - 1] = row
-            if len(rows) == n:
-                break
-    else:
-        return None
-    chosen = 0                           # bit j: r_j in S
-    for pivot in sorted(rows):           # back substitution, lowest pivot first
-        row = rows[pivot]
-        # s_pivot = chi(x) + the s_j of the lower bits of its row (all decided already)
-        if (row & 1) ^ ((row & chosen).bit_count() & 1):
-            chosen |= 1 << pivot
-    return tuple(j - 1 for j in range(1, n + 1) if chosen >> j & 1)
-
-
 _MAPS: dict = {}           # id(tower) -> (tower, number of radicands, maps or None)
 
 
@@ -213,7 +58,7 @@ def tower_maps(tower: Tower, tries: int = 128, budget: int = 256):
     """``(p, (base, roots), (base2, roots2))``: two ring maps of the tower's numbers into
     F_p (a sign for each base prime's root, then for each level a root of its radicand's
     image, depth first: at most ``budget`` steps a prime), or None when no prime among
-    ``tries`` of :func:`_split_primes` gives two (a radicand's image a non-residue or 0,
+    ``tries`` of :func:`kummer_split_primes` gives two (a radicand's image a non-residue or 0,
     a denominator divisible by p).  A rational number has one image under every map, so
     two maps that disagree on a number prove it irrational (:func:`tower_images`).
     Remembered per tower and number of levels."""
@@ -225,7 +70,7 @@ def tower_maps(tower: Tower, tries: int = 128, budget: int = 256):
         _MAPS[id(tower)] = (tower, len(tower.radicands), found)
         return found
     found = None
-    primes = _split_primes(tower.primes)
+    primes = kummer_split_primes(tower.primes)
     k, levels = len(tower.primes), len(tower.radicands)
     for _ in range(tries):
         p = next(primes)
@@ -298,7 +143,7 @@ def base_kummer_witness(primes, radicands, limit: int = 1 << 24, signs: int = 16
     odd prime, ``base`` a root mod p of each q, none 0; no denominator of a radicand's
     coefficient divisible by p and no radicand's image 0) whose Legendre characters on the
     ``radicands`` (``MQ``, all in K_0) have rank L = len(radicands) over F_2.  Then no
-    product of a non-empty subset of them is a square of K_0 (:func:`_character_rows`), so
+    product of a non-empty subset of them is a square of K_0 (:func:`character_rows`), so
     by Kummer theory each level of K_0(sqrt r_1, ..., sqrt r_L) is new: the certificate of
     a tower whose radicands all lie in K_0 ("kummer" levels, checker_tower), where a proof
     per level needs a prime at which every lower radicand is a residue (ten nested radicals
@@ -306,9 +151,9 @@ def base_kummer_witness(primes, radicands, limit: int = 1 << 24, signs: int = 16
     reach rank L."""
     def candidates():           # small primes at which every base prime is a square
         for p in range(3, limit, 2):
-            if all(pow(q, (p - 1) // 2, p) == 1 for q in primes) and fmpz(p).is_prime():
+            if all(pow(q, (p - 1) // 2, p) == 1 for q in primes) and is_prime(p):
                 yield p
-    kept = _independent_rows(_character_rows(primes, radicands, limit, signs, candidates()),
+    kept = independent_rows(character_rows(primes, radicands, limit, signs, candidates()),
                              len(radicands))
     return [(p, base) for p, base, _ in kept] if len(kept) == len(radicands) else None
 
@@ -380,7 +225,7 @@ def _cyclotomic_image(x, p: int, w: int, roots: list):
 def _tower_norm_to_base(tower, x):
     """N_(K_L/K_0)(x), a base value (conjugates a^2 - r b^2 down the tower)."""
     for lev in range(level(x), 0, -1):
-        a, b = _split(x, lev)
+        a, b = split(x, lev)
         x = sub(tower.mul(a, a), tower.mul(tower.radicands[lev - 1], tower.mul(b, b)))
     return x
 
@@ -533,7 +378,7 @@ def _kummer_maps(tower):
         for q in factorization(v) if v > 1 else ():
             modulus = lcm(modulus, q)
     k = (1 << 62) // modulus + 1
-    while not fmpz(k * modulus + 1).is_prime():
+    while not is_prime(k * modulus + 1):
         k += 1
     p = k * modulus + 1
     w = root_of_unity_mod(n, p)

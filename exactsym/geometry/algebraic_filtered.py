@@ -27,9 +27,9 @@ from functools import cmp_to_key
 
 from flint import arb, ctx, fmpq
 
-from ..exact import FieldElement, exact_sorted
-from ..exact.field import PolyElement
-from ..io.exprtree import BinOp, Const, Neg, Pow, Sqrt, Trig
+from ..exact import exact_sorted, sign as _sign
+from ..exact.balls import expression_ball
+from ..exact.fused import product_sum
 from .analysis_context import Cache
 from .predicates import PseudoAngle
 from .strings import cyclic_occurrences, cyclic_period
@@ -75,21 +75,7 @@ def interval_groups(lo: list, hi: list, order: list) -> list[list[int]]:
     return groups
 
 
-def sum_of_products(pairs):
-    """``sum(a * b)`` exactly.  In a large cyclotomic field the products are added before
-    one reduction modulo the minimal polynomial (the reduction dominates a product)."""
-    a0 = pairs[0][0]
-    if isinstance(a0, PolyElement) and a0.field.degree >= 64 and all(
-            isinstance(a, PolyElement) and isinstance(b, PolyElement) and
-            a.field is a0.field and b.field is a0.field for a, b in pairs):
-        return PolyElement(a0.field, a0.field.product_sum(pairs))
-    total = pairs[0][0] * pairs[0][1]
-    for a, b in pairs[1:]:
-        total = total + a * b
-    return total
-
-
-_BALLS = Cache("coordinate balls")     # id(points) -> (points, xs, ys): the last few tuples'
+_BALLS = Cache("coordinate balls")     # id(points) -> (points, xs, ys): the last few point tuples' balls
 
 
 def coordinate_balls(points, polar=None, specs=None) -> tuple[list, list]:
@@ -99,7 +85,7 @@ def coordinate_balls(points, polar=None, specs=None) -> tuple[list, list]:
     same points, when given in polar form: ``r cos(2 pi t)``, ``r sin(2 pi t)`` are then
     enclosed directly (a cosine in a cyclotomic field of degree 5,760 is a polynomial of
     that degree to evaluate).  ``specs``: the expressions the points were evaluated
-    from (``Configuration.specs``), enclosed by :func:`expression_ball` (0.4 ms less per
+    from (``Configuration.specs``), enclosed by :func:`exactsym.exact.balls.expression_ball` (0.4 ms less per
     coordinate in degree 960); a coordinate whose ball is not finite is enclosed from
     its exact value."""
     known = _BALLS.table()
@@ -139,35 +125,6 @@ def coordinate_balls(points, polar=None, specs=None) -> tuple[list, list]:
         known.clear()
     known[id(points)] = (points, xs, ys)
     return xs, ys
-
-
-def expression_ball(node) -> arb:
-    """An Arb ball around the exact value of an expression tree (:mod:`exactsym.io.exprtree`),
-    at the current working precision: rigorous, so it may only be wide (cancellation), or
-    not finite (a divisor or radicand whose ball meets zero), never wrong."""
-    if isinstance(node, Const):
-        return arb(fmpq(node.value.numerator, node.value.denominator))
-    if isinstance(node, Neg):
-        return -expression_ball(node.arg)
-    if isinstance(node, BinOp):
-        left, right = expression_ball(node.left), expression_ball(node.right)
-        if node.op == "+":
-            return left + right
-        if node.op == "-":
-            return left - right
-        if node.op == "*":
-            return left * right
-        return left / right
-    if isinstance(node, Pow):
-        base = expression_ball(node.base)
-        return base ** node.exponent if node.exponent >= 0 else 1 / base ** -node.exponent
-    if isinstance(node, Trig):
-        q = fmpq(node.pi_multiple.numerator, node.pi_multiple.denominator)
-        return arb.cos_pi_fmpq(q) if node.func == "cos" else arb.sin_pi_fmpq(q)
-    if isinstance(node, Sqrt):
-        arg = expression_ball(node.arg)
-        return arg.sqrt() if arg > 0 else (arb(0) if arg == 0 else arb("nan"))
-    raise TypeError(f"unknown expression node {type(node).__name__}")
 
 
 def overlapping_pairs(xs: list, ys: list) -> list[tuple[int, int]]:
@@ -247,7 +204,7 @@ class Enclosures:
         r = self._scaled.get(i)
         if r is None:
             vx, vy = self.vector(i)
-            r = self._scaled[i] = sum_of_products([(vx, vx), (vy, vy)])
+            r = self._scaled[i] = product_sum([(vx, vx), (vy, vy)])
         return r
 
     def angle(self, i: int) -> PseudoAngle:
@@ -310,12 +267,6 @@ class Enclosures:
 
 def _dropped() -> None:
     return None
-
-
-def _sign(x) -> int:
-    if isinstance(x, FieldElement):
-        return x.sign()
-    return (x > 0) - (x < 0)
 
 
 # ---------------------------------------------------------------- levels
@@ -401,7 +352,7 @@ class _Gaps:
         d = self._dot.get(a)
         if d is None:
             (ux, uy), (vx, vy) = self._vectors(a)
-            d = self._dot[a] = sum_of_products([(ux, vx), (uy, vy)])
+            d = self._dot[a] = product_sum([(ux, vx), (uy, vy)])
         return d
 
     def cross(self, a: int):
@@ -409,7 +360,7 @@ class _Gaps:
         c = self._cross.get(a)
         if c is None:
             (ux, uy), (vx, vy) = self._vectors(a)
-            c = self._cross[a] = sum_of_products([(ux, vy), (-uy, vx)])
+            c = self._cross[a] = product_sum([(ux, vy), (-uy, vx)])
         return c
 
     def compare(self, a: int, b: int) -> int:

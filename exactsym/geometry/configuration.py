@@ -27,10 +27,10 @@ import numpy as np
 
 from ..io.fileformat import ConfigFile, PlainPoints, PointSpec, read_config
 from ..errors import ExpressionError, InputError, MoveImpossible
-from ..exact import (FieldElement, RationalSystem, evaluate, exact_key, fmpq, normal_turn,
-                    number_system, sign)
+from ..exact import (RationalSystem, evaluate, exact_key, fmpq, normal_turn, number_system,
+                    sign)
+from ..exact.number import dense_field, is_algebraic, is_plain_rational
 from ..io.exprtree import Const, Node
-from ..exact.field import PolyElement
 from .predicates import float_coordinates
 
 
@@ -277,7 +277,7 @@ def _cartesian_of_polar(radii, turns):
     cosines is not built from values)."""
     rational = []
     for r in radii:
-        if isinstance(r, FieldElement):
+        if is_algebraic(r):
             if not r.is_rational():
                 raise NotImplementedError("Cartesian coordinates of moved robots at "
                                           "irrational radii are not built")
@@ -371,12 +371,12 @@ def load(path) -> Configuration:
 
 def _coincident(config: Configuration) -> tuple[int, int] | None:
     """The first two indices of coincident points, or None."""
-    if config.polar is None and config.n >= 64 and isinstance(config.points[0][0], fmpq):
+    if config.polar is None and config.n >= 64 and is_plain_rational(config.points[0][0]):
         candidates = _equal_float_groups(config.points, config.float_points)
         if candidates is not None:
             return _first_coincident(config.points, candidates)
     if config.polar is None and config.n >= 3 and any(
-            isinstance(c, PolyElement) for p in config.points for c in p):
+            dense_field(c) is not None for p in config.points for c in p):
         return _coincident_irrational(config)      # polynomials: hashing them is slow
     seen: dict = {}
     keys = config.polar if config.polar is not None else config.points

@@ -19,12 +19,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .configuration import Configuration, no_cycle_collection
-from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels, sum_of_products
-from ..exact import FieldElement, RationalSystem, exact_key, exact_sorted, fmpq
-from ..exact.field import PolyElement
-from ..exact.tower import TowerElement
-from ..exact.sparse_tower import SparseKummerTower
-from .level_radius import LevelRadius, TowerLevelRadius
+from .algebraic_filtered import Enclosures, coordinate_balls, filtered_levels
+from ..exact import RationalSystem, exact_key, exact_sorted, fmpq
+from ..exact.fused import product_sum
+from ..exact.level_radius import lazy_level_radius, scaled_radius
+from ..exact.number import any_algebraic, is_plain_rational, shares_inverse
 from .predicates import (PseudoAngle, angular_ranks, angular_sort, certified_groups,
                        float_differences, float_squared_norms,
                        sorted_by_value, squared_distance)
@@ -93,10 +92,10 @@ def _levels_of(config: Configuration) -> Levels:
     # many rational points: their floats, converted once, filter the SEC, the levels and
     # (through Levels.floats) the rays
     floats = config.float_points if len(points) >= _FILTER_MIN \
-        and isinstance(points[0][0], fmpq) and isinstance(config.system, RationalSystem) \
+        and is_plain_rational(points[0][0]) and isinstance(config.system, RationalSystem) \
         else None
-    if ALGEBRAIC_FILTER and len(points) >= 3 and floats is None and any(
-            isinstance(c, FieldElement) for p in points for c in p):
+    if ALGEBRAIC_FILTER and len(points) >= 3 and floats is None and any_algebraic(
+            c for p in points for c in p):
         # irrational coordinates: distances and directions decided by certified balls,
         # ties confirmed exactly; each level's exact radius computed when it is read
         balls = coordinate_balls(config.points, _polar_parts(config), config.specs or None)
@@ -108,11 +107,11 @@ def _levels_of(config: Configuration) -> Levels:
                       enclosures=enc)
     circle = smallest_enclosing_circle(points, floats)
     x, y, d = circle.homogeneous
-    if isinstance(d, fmpq) and d == 1:
+    if is_plain_rational(d) and d == 1:
         centre = circle.centre
         cx, cy = centre
         diffs = None
-        if floats is not None and isinstance(cx, fmpq) and isinstance(cy, fmpq):
+        if floats is not None and is_plain_rational(cx) and is_plain_rational(cy):
             diffs = float_differences(points, centre, floats)
         if diffs is None:
             def order_level(members):
@@ -171,7 +170,7 @@ def _group_levels(radii_squared, order_level, approx=None, radius=None):
     ``(points, centre)``, then ``radii_squared`` is only the number of points and each
     squared radius is computed when needed (:class:`RationalLevels`)."""
     n = radii_squared if radius is not None else len(radii_squared)
-    if n >= _FILTER_MIN and (radius is not None or isinstance(radii_squared[0], fmpq)):
+    if n >= _FILTER_MIN and (radius is not None or is_plain_rational(radii_squared[0])):
         levels = _group_rational_levels(n, None if radius is not None else radii_squared,
                                         order_level, approx, radius)
         if levels is not None:
@@ -261,10 +260,6 @@ class RationalLevels(Sequence):
         return None if (rank < 0).any() else rank.tolist()
 
 
-#: fields from this degree hold a level's squared radius lazily (:mod:`.level_radius`)
-LAZY_RADIUS_DEGREE = 512
-
-
 class AlgebraicLevels(RationalLevels):
     """The levels of points with irrational coordinates (:mod:`exactsym.geometry.algebraic_filtered`),
     lazily as :class:`RationalLevels`: a level's exact squared radius
@@ -280,21 +275,15 @@ class AlgebraicLevels(RationalLevels):
 
     def level_radius(self, k: int, i: int):
         """The squared radius of level ``k`` (point ``i``): in a large cyclotomic field a
-        :class:`~exactsym.geometry.level_radius.LevelRadius`, in a tower over the sparse Q(zeta_N) a
-        :class:`~exactsym.geometry.level_radius.TowerLevelRadius`, computed when first read exactly
+        :class:`~exactsym.exact.level_radius.LevelRadius`, in a tower over the sparse Q(zeta_N) a
+        :class:`~exactsym.exact.level_radius.TowerLevelRadius`, computed when first read exactly
         (most readers compare radii: balls, level indices, images in F_p)."""
         enc = self.enclosures
-        if not enc.unit and self.circle is not None and self._d2 is None and \
-                isinstance(enc.homogeneous[2], PolyElement) and \
-                enc.homogeneous[2].field.degree >= LAZY_RADIUS_DEGREE:
-            return LevelRadius(enc.homogeneous[2].field, lambda: self.radius_squared(i),
-                               enc.points[i], self.circle.centre, 1, self, k,
-                               self.circle.homogeneous)
-        if not enc.unit and self.circle is not None and self._d2 is None and \
-                isinstance(enc.homogeneous[2], TowerElement) and \
-                isinstance(enc.homogeneous[2].tower, SparseKummerTower):
-            return TowerLevelRadius(enc.homogeneous[2].tower, lambda: self.radius_squared(i),
-                                    enc.points[i], self.circle.homogeneous, self, k)
+        if not enc.unit and self.circle is not None and self._d2 is None:
+            lazy = lazy_level_radius(enc.homogeneous[2], lambda: self.radius_squared(i),
+                                     enc.points[i], self.circle, self, k)
+            if lazy is not None:
+                return lazy
         return self.radius_squared(i)
 
     def radius_squared(self, i: int):
@@ -302,15 +291,15 @@ class AlgebraicLevels(RationalLevels):
         if enc.unit:
             return enc.scaled_r2(i)
         if self.circle is not None and self._d2 is None and \
-                isinstance(enc.homogeneous[2], (PolyElement, TowerElement)):
+                shares_inverse(enc.homogeneous[2]):
             # |p - C|^2 from the divided centre (one inverse, shared with every reader of
             # the SEC centre), as |p|^2 - 2 p.C + |C|^2 with |C|^2 once: C's coefficients
             # have thousands of bits and p's a few, so p.C costs a third of (p - C)^2
             cx, cy = self.circle.centre
             x, y = enc.points[i]
             if self._cc is None:
-                self._cc = sum_of_products([(cx, cx), (cy, cy)])
-            return sum_of_products([(x, x), (y, y)]) - 2 * sum_of_products(
+                self._cc = product_sum([(cx, cx), (cy, cy)])
+            return product_sum([(x, x), (y, y)]) - 2 * product_sum(
                 [(x, cx), (y, cy)]) + self._cc
         r = enc.scaled_r2(i)
         if self._d2 is None:               # 1 / D^2, one field inverse for all levels
@@ -443,8 +432,7 @@ def mapped_levels(levels: Levels, points, sim, vectors: dict | None = None) -> L
         # (a product by 1 still rewrites a megabyte number in canonical form; a level's
         # radius not computed yet stays so)
         r2 = level.radius_squared
-        mapped.known[k] = r2 if k2 == 1 else r2.scaled(k2, mapped, k) \
-            if isinstance(r2, LevelRadius) else r2 * k2
+        mapped.known[k] = r2 if k2 == 1 else scaled_radius(r2, k2, mapped, k)
     bounds.append(len(points))
     moved_vectors = None
     if vectors and sim.rotation is None and sim.scale == 1:

@@ -18,10 +18,9 @@ from collections.abc import Sequence
 import numpy as np
 from flint import arb, ctx
 
-from ..exact import FieldElement, fmpq, sign
-from ..exact.field import PolyElement
-from ..exact.sparse_cyclotomic import SparseCyclotomic
-from ..exact.tower import TowerElement
+from ..exact import fmpq, sign
+from ..exact.number import (all_plain_rational, costly_inverse, enclosure, is_plain_rational,
+                            reduced, shares_inverse)
 from .predicates import (Point, Turn, circumcentre_homogeneous, midpoint,
                        orientation_homogeneous, squared_distance)
 
@@ -34,7 +33,7 @@ def _reduced(v):
     (1/3, 1/5) of a C7 set translated by it was held as quotients of 28 and 4 cosines, and
     every direction p - C, gap and line of the 98 robots multiplied them (7.5 s of a
     check)."""
-    return v.reduced() if isinstance(v, SparseCyclotomic) else v
+    return reduced(v)
 
 
 class Circle:
@@ -61,7 +60,7 @@ class Circle:
     def centre(self) -> Point:
         if self._centre is None:
             x, y, d = self.homogeneous
-            if isinstance(d, (PolyElement, TowerElement)) and not d.is_rational():
+            if shares_inverse(d) and not d.is_rational():
                 # one field inverse, not two; over a sparse base both coordinates then
                 # share its denominator (sums of the directions p - C do not
                 # cross-multiply two equal ones)
@@ -164,12 +163,12 @@ def _circle(points, support: tuple[int, ...]) -> Circle:
     if len(support) == 2:
         a, b = (points[i] for i in support)
         c = midpoint(a, b)
-        if isinstance(c[0], fmpq) and isinstance(c[1], fmpq):
+        if all_plain_rational(c):
             return Circle(c, squared_distance(c, a), support)
         return Circle(c, None, support, through=a)      # radius computed when read
     a, b, c = (points[i] for i in support)
     x, y, d = circumcentre_homogeneous(a, b, c)
-    if isinstance(d, fmpq):                  # rationals: dividing is cheap, do it now
+    if is_plain_rational(d):                 # rationals: dividing is cheap, do it now
         centre = (x / d, y / d)
         return Circle(centre, squared_distance(centre, a), support)
     return Circle(None, None, support, (x, y, d), a)
@@ -276,8 +275,8 @@ def _exact_contains_all(points, circle: Circle, fx, fy, errors=None) -> bool:
     division-free, but for the support points, which are on the circle by construction.
     A point the filter sees well outside makes the caller fall back to exact Welzl."""
     x, y, d = circle.homogeneous
-    if isinstance(d, fmpq) and d == 1 and circle._radius_squared is not None \
-            and isinstance(x, fmpq) and isinstance(y, fmpq):
+    if is_plain_rational(d) and d == 1 and circle._radius_squared is not None \
+            and is_plain_rational(x) and is_plain_rational(y):
         # rational centre: float() of an fmpq is correctly rounded, no ball needed
         return _float_filtered(points, circle, fx, fy, float(x), float(y),
                                float(circle._radius_squared), 0.0, 0.0, errors)
@@ -315,7 +314,7 @@ def _float_filtered(points, circle, fx, fy, fcx, fcy, fr2, rad, rad2, errors=Non
             # |(e + t)^2 - e^2| <= 2 |e| t + t^2 per coordinate, t the float's error
             err = np.asarray(errors, dtype=float)
             slack += (2 * spread * err + 2 * err * err) * 1.01
-        elif not isinstance(points[0][0], fmpq):     # given floats of algebraic points
+        elif not is_plain_rational(points[0][0]):    # given floats of algebraic points
             slack += 4 * (np.abs(px) + np.abs(py)) * 2.0 ** -40 * (spread + 1)
         if np.any(d2 - slack > fr2):
             return False
@@ -334,7 +333,7 @@ def point_floats(points) -> tuple[list, list, list | None]:
     rational (then ``float`` is correctly rounded and ``errors`` is None), a bound
     ``errors[i]`` on the error of both floats of point i, from 64-bit Arb balls
     (``float`` of an algebraic number is only an approximation)."""
-    if all(isinstance(c, fmpq) for p in points for c in p):
+    if all_plain_rational(c for p in points for c in p):
         return [float(p[0]) for p in points], [float(p[1]) for p in points], None
     return floats_of_balls(*(list(b) for b in zip(*[(_ball(p[0]), _ball(p[1]))
                                                       for p in points])))
@@ -401,13 +400,13 @@ def _rational_centre(homogeneous):
     with radii sqrt(5), sqrt(7), ...: 6.8 s, 1 s)."""
     from fractions import Fraction
     x, y, d = homogeneous
-    if not isinstance(d, (PolyElement, TowerElement, SparseCyclotomic)) or d.is_rational():
+    if not costly_inverse(d):
         return None
     with ctx.workprec(128):
         bd = d.enclosure(128)
         out = []
         for v in (x, y):
-            b = (v.enclosure(128) if isinstance(v, FieldElement) else arb(fmpq(v))) / bd
+            b = enclosure(v, 128) / bd
             if not b.is_finite() or b.rad() > 2.0 ** -80:
                 return None
             man, exp = b.mid().man_exp()

@@ -60,3 +60,51 @@ class Trig(Node):
 
 
 Expr = Node
+
+
+class Fold:
+    """What :func:`fold` calls at each node, bottom-up: each method gets the node (for its
+    operator, constant and offset) and the folded values of its children.  A subclass
+    overrides all six; :meth:`unknown` is called for a node the parser does not make."""
+
+    def const(self, node: Const):
+        raise NotImplementedError
+
+    def neg(self, node: Neg, arg):
+        raise NotImplementedError
+
+    def binop(self, node: BinOp, left, right):
+        raise NotImplementedError
+
+    def power(self, node: Pow, base):
+        raise NotImplementedError
+
+    def sqrt(self, node: Sqrt, arg):
+        raise NotImplementedError
+
+    def trig(self, node: Trig):
+        raise NotImplementedError
+
+    def unknown(self, node: Node):
+        raise TypeError(f"unknown expression node {type(node).__name__}")
+
+
+def fold(node: Node, algebra: Fold):
+    """The one walk over an expression tree: ``node`` evaluated bottom-up in ``algebra``
+    (exact numbers, Arb balls, texts: :mod:`exactsym.exact.evaluate`,
+    :mod:`exactsym.exact.balls`, :mod:`exactsym.exact.text`).  Recursive: callers that
+    read deep trees raise the recursion limit (``evaluate._DeepTrees``)."""
+    kind = type(node)
+    if kind is Const:
+        return algebra.const(node)
+    if kind is BinOp:
+        return algebra.binop(node, fold(node.left, algebra), fold(node.right, algebra))
+    if kind is Neg:
+        return algebra.neg(node, fold(node.arg, algebra))
+    if kind is Pow:
+        return algebra.power(node, fold(node.base, algebra))
+    if kind is Sqrt:
+        return algebra.sqrt(node, fold(node.arg, algebra))
+    if kind is Trig:
+        return algebra.trig(node)
+    return algebra.unknown(node)

@@ -71,9 +71,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import cached_property, cmp_to_key
 
-from ..exact import FieldElement, fmpq, normal_turn, rational_sqrt, sign
-from ..exact.sparse_cyclotomic import SparseCyclotomic
-from ..exact.tower import TowerElement
+from ..exact import fmpq, normal_turn, rational_sqrt, sign
+from ..exact.number import any_algebraic, is_algebraic, is_sparse, tower_of
 from ..geometry.analysis_context import Cache
 from .filtered import ball, compare_directions
 from .homogeneous import register
@@ -125,8 +124,7 @@ def _pair_value(f, u, v):
     in a large number field, and the strings, Theorem 1 and Elect_Leader_Asym's polygons
     G minus v_i read the same chords again).  The entry keeps both vectors, so an id is
     never mistaken for another object's; rational vectors are recomputed (cheap)."""
-    if not isinstance(u[0], FieldElement) and not isinstance(u[1], FieldElement) and \
-            not isinstance(v[0], FieldElement) and not isinstance(v[1], FieldElement):
+    if not any_algebraic((u[0], u[1], v[0], v[1])):
         return f(u, v)
     key = (f, id(u), id(v)) if id(u) <= id(v) else (f, id(v), id(u))
     pairs = _PAIRS.table()
@@ -192,7 +190,7 @@ class CirclePolygon:
         if self.polar or len(self.directions) < 2:     # one vertex: one length
             return True
         dirs = self.directions
-        if any(isinstance(c, FieldElement) for d in dirs for c in d):
+        if any_algebraic(c for d in dirs for c in d):
             # Arb balls of the squared lengths first: disjoint balls prove two lengths
             # differ (the usual answer for a union of levels), without the exact squares
             # (products of degree thousands in a large cyclotomic field, issue 9)
@@ -285,7 +283,7 @@ class CirclePolygon:
 
 def _rational_ratio_root(la, lb):
     """``sqrt(la / lb)`` when it is rational (both rational), else None."""
-    if isinstance(la, FieldElement):
+    if is_algebraic(la):
         if not (la.is_rational() and lb.is_rational()):
             return None
         la, lb = la.rational(), lb.rational()
@@ -339,7 +337,7 @@ def level_polygon(config, rings, level_index: int, cleared: bool = False) -> Cir
         return CirclePolygon(labels, tuple(config.polar[i][1] for i in labels), True)
     pts = config.points
     x, y, den = rings.sec.homogeneous
-    if cleared and isinstance(den, TowerElement):
+    if cleared and tower_of(den) is not None:
         # the homogeneous directions D p - (X, Y) = D (p - C), D > 0: no tower quotient
         # (over the sparse Q(zeta_N) its coordinates are quotients of sums of cosines, and
         # every product of the strings cross-multiplied them: two mirror pairs at turns
@@ -366,7 +364,7 @@ def _cleared(dirs):
     a 4-gon of two mirror pairs at turns j/997 took 6 s per string partition, 0.2 s
     cleared.  (Over a tower of square roots over the sparse base clearing the leaves did
     not help: 17 s per partition, the tower's inverses and products remain.)"""
-    if not all(isinstance(c, SparseCyclotomic) for d in dirs for c in d):
+    if not all(is_sparse(c) for d in dirs for c in d):
         return None
     den = next((c.den for d in dirs for c in d if c.den is not None), None)
     if den is None or not all(c.den is None or c.den == den for d in dirs for c in d):

@@ -15,7 +15,8 @@ from __future__ import annotations
 
 from flint import arb
 
-from ..exact import FieldElement, exact_key, sign
+from ..exact import exact_key, sign
+from ..exact.number import any_algebraic, is_algebraic
 from ..geometry.analysis_context import Cache
 
 _PREC = 64
@@ -30,7 +31,7 @@ def ball(x) -> arb:
     hit = balls.get(id(x))
     if hit is not None and hit[0] is x:
         return hit[1]
-    if isinstance(x, FieldElement):
+    if is_algebraic(x):
         b = x.enclosure(_PREC)
     else:
         b = arb(x)
@@ -41,10 +42,10 @@ def ball(x) -> arb:
 
 
 def _exact_type(u) -> bool:
-    return not isinstance(u[0], FieldElement) and not isinstance(u[1], FieldElement)
+    return not any_algebraic(u)
 
 
-def _ball_sign(b: arb) -> int:
+def ball_sign(b: arb) -> int:
     if b > 0:
         return 1
     if b < 0:
@@ -56,7 +57,7 @@ def cross_sign(u, v) -> int:
     """The exact sign of u_x v_y - u_y v_x."""
     if _exact_type(u) and _exact_type(v):
         return sign(u[0] * v[1] - u[1] * v[0])
-    s = _ball_sign(ball(u[0]) * ball(v[1]) - ball(u[1]) * ball(v[0]))
+    s = ball_sign(ball(u[0]) * ball(v[1]) - ball(u[1]) * ball(v[0]))
     return s if s else sign(u[0] * v[1] - u[1] * v[0])
 
 
@@ -64,7 +65,7 @@ def dot_sign(u, v) -> int:
     """The exact sign of u . v."""
     if _exact_type(u) and _exact_type(v):
         return sign(u[0] * v[0] + u[1] * v[1])
-    s = _ball_sign(ball(u[0]) * ball(v[0]) + ball(u[1]) * ball(v[1]))
+    s = ball_sign(ball(u[0]) * ball(v[0]) + ball(u[1]) * ball(v[1]))
     return s if s else sign(u[0] * v[0] + u[1] * v[1])
 
 

@@ -34,18 +34,14 @@ still reads.  Outside an analysis nothing is recorded: the texts are the usual o
 from __future__ import annotations
 
 from ..exact import number_text
-from ..exact.field import PolyElement
-from ..exact.sparse_cyclotomic import SparseCyclotomic
-from ..exact.tower import TowerElement
+from ..exact.level_radius import level_form
+from ..exact.number import cheap_products, short_texts
+from ..exact.ratio import rational_ratio
 from ..geometry.analysis_context import Cache
-from .ratio_keys import rational_ratio
 
-__all__ = ["SHORT_DEGREE", "register", "homogeneous_of", "scaled", "quotient_text",
+__all__ = ["register", "homogeneous_of", "scaled", "quotient_text",
            "centre_texts", "is_short", "is_short_field", "radius_text", "sec_radius_text",
            "line_direction", "slope_text", "homogeneous_pair"]
-
-#: fields from this degree get the short texts
-SHORT_DEGREE = 512
 
 # id(vector) -> [vector, homogeneous vector or None, function making it]: made when a text
 # first asks (the summary writes few lines: no product per robot on the hot path)
@@ -56,15 +52,13 @@ _SHORT = Cache("short centres")
 
 
 def is_short_field(d) -> bool:
-    """Whether ``d``'s field gets the short texts: a dense field of degree >=
-    :data:`SHORT_DEGREE`, or a tower of square roots over such a field or over the sparse
+    """Whether ``d``'s field gets the short texts (:func:`exactsym.exact.number.short_texts`):
+    a dense field of degree >= ``LARGE_DEGREE``, or a tower of square roots over such a field or over the sparse
     Q(zeta_N) (there a divided coordinate is a quotient of sparse sums per tower
     coefficient: the SEC centre of 31 robots at radii sqrt(k) and turns j/997 wrote 5,000
     characters, its homogeneous X, Y, D a few hundred).  In the sparse Q(zeta_N) itself a
     number is held as such a quotient anyway: the usual texts."""
-    if isinstance(d, PolyElement):
-        return d.field.degree >= SHORT_DEGREE
-    return isinstance(d, TowerElement) and d.tower.degree >= SHORT_DEGREE
+    return short_texts(d)
 
 
 def is_short(homogeneous) -> bool:
@@ -138,7 +132,7 @@ def _expanded(*numbers) -> bool:
     in a tower of square roots costs a tenth of a second to seconds (100 robots at radii
     sqrt(k) and turns j/997 spent 50 s writing lines and radii) and its expanded text is
     longer than the product written out."""
-    return not any(isinstance(c, (SparseCyclotomic, TowerElement)) for c in numbers)
+    return cheap_products(numbers)
 
 
 def _squared_quotient(point, homogeneous, scale=1) -> str:
@@ -156,16 +150,13 @@ def _squared_quotient(point, homogeneous, scale=1) -> str:
 
 
 def radius_text(r2):
-    """The text of a level's squared radius (:class:`~exactsym.geometry.level_radius.LevelRadius`,
+    """The text of a level's squared radius (:class:`~exactsym.exact.level_radius.LevelRadius`,
     which keeps its point and the homogeneous centre) as |D p - (X, Y)|^2 scale / D^2, or
     None."""
-    from ..geometry.level_radius import LevelRadius, TowerLevelRadius
-    if isinstance(r2, TowerLevelRadius):
-        return _squared_quotient(r2._p, r2._c) if is_short(r2._c) else None
-    if not isinstance(r2, LevelRadius) or r2.homogeneous is None \
-            or not is_short(r2.homogeneous):
+    form = level_form(r2)
+    if form is None or not is_short(form[1]):
         return None
-    return _squared_quotient(r2._p, r2.homogeneous, r2.scale)
+    return _squared_quotient(*form)
 
 
 def _forms(factors):

@@ -10,7 +10,8 @@ changes how a key is computed, never its value.
 
 from __future__ import annotations
 
-from ..exact import FieldElement, exact_key, fmpq
+from ..exact import exact_key, fmpq
+from ..exact.number import any_algebraic, is_algebraic
 from ..geometry.analysis_context import Cache
 
 _INVERSES = Cache("inverse lengths")     # exact key -> inverse
@@ -24,7 +25,7 @@ def reciprocal(v):
 
 def inverse_length(length):
     """1/length (``length`` a non-zero exact number), cached when irrational."""
-    if not isinstance(length, FieldElement) or length.is_rational():
+    if not is_algebraic(length) or length.is_rational():
         return reciprocal(length)
     k = exact_key(length)
     inverses = _INVERSES.table()
@@ -44,7 +45,7 @@ def squared_length(d):
     algebraic numbers (the entry keeps the vector, so an id is never mistaken for another
     object's): the keys of one polygon read each vertex's length many times."""
     x, y = d
-    if not isinstance(x, FieldElement) and not isinstance(y, FieldElement):
+    if not any_algebraic(d):
         return x * x + y * y
     lengths = _LENGTHS.table()
     hit = lengths.get(id(d))

@@ -14,7 +14,7 @@ from math import atan2, gcd, pi
 
 from flint import ctx
 
-from ..exact import FieldElement, exact_key, fmpq, normal_turn, sign
+from ..exact import exact_key, fmpq, normal_turn, sign
 from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
 from ..exact.text_numbers import DIGITS, HUGE, LONG, huge_quotient, number, quotient_decimal
@@ -22,11 +22,11 @@ from ..geometry.analysis_context import Cache
 from .homogeneous import homogeneous_pair, line_direction, slope_text
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational
-from ..exact.sparse_cyclotomic import SparseCyclotomic
-from ..exact.tower import TowerElement
+from ..exact.number import (all_plain_rational, any_algebraic, huge_field, is_number, is_sparse,
+                            kummer_tower, largest_field, slow_quotient)
 from .filtered import (ball, compare_directions, cross_sign, dot_sign, gap_classes_on_circle,
-                       _ball_sign)
-from .ratio_keys import RatioKey, _largest_field, ball_at, gap_ratio_key, ray_ratio_key
+                       ball_sign)
+from .ratio_keys import RatioKey, ball_at, gap_ratio_key, ray_ratio_key
 from .inverses import inverse_length, squared_length
 
 
@@ -72,7 +72,7 @@ def ray_key(polar: bool, d, inverse=None):
     if polar:
         return hashable_key(normal_turn(d))
     x, y = d
-    if inverse is None and (isinstance(x, FieldElement) or isinstance(y, FieldElement)):
+    if inverse is None and any_algebraic((x, y)):
         ratio = ray_ratio_key(x, y)          # a polynomial field: no inverse at all
         if ratio is not None:
             return (sign(x), sign(y), ratio)
@@ -90,7 +90,7 @@ def hashable_key(key):
     """A cheap hashable form of an exact key (a number or a tuple of numbers)."""
     if isinstance(key, tuple):
         return tuple(hashable_key(k) for k in key)
-    if isinstance(key, (fmpq, FieldElement)):
+    if is_number(key):
         return exact_key(key)
     return key
 
@@ -181,14 +181,14 @@ class LineKey:
         """The value as :mod:`exactsym.paper.family` prints it (a turn, or ``(sign,
         slope)``), written once per line: in a field of degree thousands the text of a
         slope is a megabyte and the claims print each line several times.  In a field of
-        degree >= :data:`QUOTIENT_DEGREE` the slope is written as the quotient ``(Y)/(X)``
+        degree >= :data:`~exactsym.exact.number.LARGE_DEGREE` the slope is written as the quotient ``(Y)/(X)``
         of the doubled direction, undivided (exact; it reads back as the same number)."""
         if self._text is None and self._value is None:
             short = self._short_text()
             if short is not None:
                 self._text = short
         if self._text is None and self._value is None and self._vector is not None and \
-                _quotient_field(*self._vector):
+                slow_quotient(*self._vector):
             x, y = self._vector
             s = sign(x)
             self._text = f"(0, {sign(y)})" if not s else f"({s}, 0)" if y == 0 else \
@@ -244,7 +244,7 @@ class LineKey:
             return f"({s}, ≈ {quotient_decimal(y, x)} (exact: {len(text)} characters, " \
                 "in --json))"
         if (self._text is None or len(self._text) > HUGE) and self._value is None and \
-                self._vector is not None and _quotient_field(*self._vector):
+                self._vector is not None and slow_quotient(*self._vector):
             x, y = self._vector
             s = sign(x)
             shown = huge_quotient(y, x) if s else None
@@ -252,7 +252,7 @@ class LineKey:
                 return f"({s}, {shown})"
         text = self.text
         if len(text) > LONG and self._value is None and self._vector is not None and \
-                any(isinstance(c, TowerElement) and c.kernel and _kummer_tower(c.tower)
+                any(kummer_tower(c)
                     for c in self._vector) and sign(self._vector[0]):
             # a tower of square roots over a large or sparse cyclotomic field: the undivided
             # quotient's decimal (the division costs seconds there)
@@ -260,7 +260,7 @@ class LineKey:
             return f"({sign(x)}, ≈ {quotient_decimal(y, x)} (exact: {len(text)} " \
                 "characters, in --json))"
         if len(text) > LONG and isinstance(self.value, tuple) and \
-                isinstance(self.value[1], SparseCyclotomic):
+                is_sparse(self.value[1]):
             value = self.value
             # a sum of hundreds of cosines, which the summary would not read back
             return f"({value[0]}, {number(value[1])})"
@@ -275,7 +275,7 @@ class LineKey:
         if key is None:
             return None
         (a, b), prec = key.factors, 64
-        if not any(isinstance(c, TowerElement) and c.kernel and _kummer_tower(c.tower)
+        if not any(kummer_tower(c)
                    for c in a + b):
             return None
         while prec <= 4096:
@@ -303,35 +303,6 @@ class LineKey:
 
 
 _LINE_VALUES = Cache("line values")     # (LineKey, fields) -> [value, text or None]
-
-#: fields from this degree print a line's slope undivided (:attr:`LineKey.text`)
-QUOTIENT_DEGREE = 512
-
-
-def _quotient_field(*numbers) -> bool:
-    """A cyclotomic field of degree >= QUOTIENT_DEGREE, or a tower of square roots of
-    rationals over such a field or over a sparse one (exact/kummer.py): where a slope's
-    division costs seconds or grows its quotient's sums without bound."""
-    return any(getattr(getattr(x, "field", None), "degree", 0) >= QUOTIENT_DEGREE or
-               isinstance(x, TowerElement) and x.kernel and _kummer_tower(x.tower)
-               for x in numbers)
-
-
-def _kummer_tower(tower) -> bool:
-    return getattr(tower, "classes", None) is not None and tower.levels > 0 and \
-        tower.degree >= QUOTIENT_DEGREE
-
-
-def huge_field(*numbers) -> bool:
-    """Whether a number lies in a cyclotomic field of degree >= :data:`QUOTIENT_DEGREE`,
-    in a sparse Q(zeta_N) or in a tower of nested radicals (not the gathering
-    simulator's subclass): there the keys of lines and chords are read from balls and
-    F_p images, and exact products (of megabyte numbers, or of tower numbers of
-    thousands of terms) are made only for equalities."""
-    return _quotient_field(*numbers) or any(
-        isinstance(v, SparseCyclotomic) or isinstance(v, TowerElement) and v.kernel
-        for v in numbers)
-
 
 class _Slope:
     """The slope y/x (x != 0) of a line's doubled direction, ordered without dividing:
@@ -465,7 +436,7 @@ def complex_product(a, b) -> tuple:
 def lazy_line_canon(a, b, make):
     """:func:`line_canon` of the product ``make() == a b`` (complex product of two exact
     vectors) without making it, or None.  Applies when a coordinate lies in a cyclotomic
-    field of degree >= :data:`QUOTIENT_DEGREE`: the signs of the product's coordinates come
+    field of degree >= :data:`~exactsym.exact.number.LARGE_DEGREE`: the signs of the product's coordinates come
     from Arb balls built from the balls of a and b (they decide only when they exclude
     zero), and x^2 / (x^2 + y^2) must be proved irrational by two embeddings into F_p
     (:func:`exactsym.exact.cyclotomic_modular.product_ratio_irrational`); then the key is
@@ -475,8 +446,8 @@ def lazy_line_canon(a, b, make):
     if not huge_field(*numbers):
         return None
     ax, ay, bx, by = (ball(v) for v in numbers)
-    sx = _ball_sign(ax * bx - ay * by)
-    sy = _ball_sign(ax * by + ay * bx)
+    sx = ball_sign(ax * bx - ay * by)
+    sy = ball_sign(ax * by + ay * bx)
     if not sx or not sy or not product_ratio_irrational(a, b):
         return None
     made = []
@@ -497,7 +468,7 @@ def lazy_line_canon(a, b, make):
         sq = x * x
         return sq / (sq + y * y)
     return ("line", sx, sy, _DirectionKey(sx, sy, vector, parts, value_ball,
-                                          _largest_field(numbers), (a, b)))
+                                          largest_field(numbers), (a, b)))
 
 
 class _DirectionKey(RatioKey):
@@ -582,7 +553,7 @@ def integer_directions(dirs):
     division), or None when a coordinate is not an fmpq or the lengths differ."""
     den = 1
     for x, y in dirs:
-        if type(x) is not fmpq or type(y) is not fmpq:
+        if not all_plain_rational((x, y)):
             return None
         qx, qy = int(x.q), int(y.q)
         if den % qx:
@@ -635,7 +606,7 @@ def gap_ids(poly: CirclePolygon) -> list:
             # one circle: the gaps are told apart by the sign of the cross product and
             # the dot product, filtered by balls (exact products only for near ties)
             return [ids.setdefault(t, len(ids)) for t in gap_classes_on_circle(dirs)]
-    if not poly.polar and any(isinstance(c, FieldElement) for d in dirs for c in d):
+    if not poly.polar and any_algebraic(c for d in dirs for c in d):
         # algebraic: the gap keys held undivided (equal iff equal), told apart by balls;
         # exact products only for gaps in one hash cell (a field inverse costs up to a
         # second at degree thousands, tower products a millisecond each)
@@ -683,7 +654,7 @@ def sort_by_angle(dirs: list) -> None:
     vectors by a float proposal whose adjacent pairs are then checked exactly
     (:func:`exactsym.paper.filtered.compare_directions`, a cross product), falling back to an
     exact comparison sort when a check fails: the float only proposes."""
-    if all(type(x) is fmpq and type(y) is fmpq for x, y in dirs):
+    if all_plain_rational(c for d in dirs for c in d):
         dirs.sort(key=angle_order_key)
         return
     try:

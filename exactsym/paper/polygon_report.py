@@ -45,7 +45,8 @@ import json
 
 from dataclasses import dataclass, field
 
-from ..exact import FieldElement, as_fmpq, exact_key, number_text, sign
+from ..exact import as_fmpq, exact_key, number_text, sign
+from ..exact.number import any_algebraic
 from ..geometry.configuration import no_cycle_collection
 from . import polygon as paper
 from .circle_polygon import level_polygon
@@ -160,7 +161,7 @@ def shape_key(polygon):
     depend only on its distances (the strings, Section 3) and on the storage order, so
     polygons with equal keys get equal verdicts, labels taken at the same positions."""
     n, dirs = polygon.n, polygon.directions
-    if not polygon.polar and any(isinstance(c, FieldElement) for d in dirs for c in d):
+    if not polygon.polar and any_algebraic(c for d in dirs for c in d):
         # algebraic: keys equal iff the gap keys are (no inverse of a squared length: in
         # a field of degree thousands an inverse costs a second)
         return (False, n, tuple(gap_equality_key(dirs[k], dirs[(k + 1) % n])

@@ -13,35 +13,17 @@ the cell.  The value is never computed, and no decision reads a ball.
 
 from __future__ import annotations
 
-from flint import arb, ctx, fmpq, fmpq_poly
+from flint import arb, ctx
 
-from ..exact import FieldElement, exact_key, sign
-from ..exact.cyclotomic_modular import images, quotient_irrational, ratio_irrational
-from ..exact.field import PolyElement
-from ..exact.sparse_cyclotomic import SparseCyclotomic
-from ..exact.tower import TowerElement, _raw as tower_raw, leaf_ratio
+from ..exact import exact_key, sign
+from ..exact.cyclotomic_modular import images, ratio_irrational
 from ..exact.fused import complex_product, cross_is_zero
+from ..exact.number import big_field, is_algebraic, largest_field
+from ..exact.ratio import rational_ratio
 from .filtered import ball
-from ..geometry.level_radius import tower_ratio_irrational
 
-#: polynomial fields from this degree get ratio keys: all of them, since an inverse is
-#: slow at degree thousands and also at degree 4 with coefficients of thousands of digits
-#: (a pentagon moved by 10^-1000: fmpq_poly.xgcd, 0.6 s per squared length)
-RATIO_KEY_DEGREE = 2
 _CELLS = 1 << 24           # hash cells: floor(2^24 * value)
 _PREC = 64
-
-
-def big_field(*numbers) -> bool:
-    """Whether one of ``numbers`` lies in a polynomial field of degree >= RATIO_KEY_DEGREE,
-    in a sparse Q(zeta_N) (degree beyond 16,384, where products convolve sums of
-    hundreds of cosines: an exact square costs milliseconds to seconds) or in a tower of
-    nested radicals (an inverse there is a chain of conjugate products down the levels).
-    (Not the gathering simulator's tower numbers, a subclass: its decisions keep their
-    keys.)"""
-    return any(isinstance(x, SparseCyclotomic) or isinstance(x, TowerElement) and x.kernel or
-               isinstance(x, PolyElement) and x.field.degree >= RATIO_KEY_DEGREE
-               for x in numbers)
 
 
 def ball_at(x, prec: int) -> arb:
@@ -49,7 +31,7 @@ def ball_at(x, prec: int) -> arb:
     :func:`exactsym.paper.filtered.ball` are cached per object)."""
     if prec == _PREC:
         return ball(x)
-    if isinstance(x, FieldElement):
+    if is_algebraic(x):
         return x.enclosure(prec)
     with ctx.workprec(prec):
         return arb(x)
@@ -194,53 +176,8 @@ def chord_key(polygon, i: int, j: int) -> OrderedKey:
         # off one circle the key is -sign(u.v) (u.v)^2 / (|u|^2 |v|^2) (_cosine_key):
         # -d |d| / ..., continuous, so a ball of it from the balls of d and the lengths
         return -d * abs(d) / ((ux * ux + uy * uy) * (vx * vx + vy * vy))
-    return OrderedKey(lambda: polygon.chord_key(i, j), value_ball, _largest_field(u + v),
+    return OrderedKey(lambda: polygon.chord_key(i, j), value_ball, largest_field(u + v),
                       (u, v))
-
-
-def _poly(x) -> fmpq_poly:
-    return x.poly if isinstance(x, PolyElement) else fmpq_poly([x])
-
-
-def rational_ratio(num, den):
-    """``num / den`` as an ``fmpq`` when it is rational, else None, without a division
-    in the field: num must be a rational multiple q of den, read off one coefficient
-    and checked on all (``den`` a non-zero element of a polynomial field, or rational).
-    In a sparse Q(zeta_N) (no coefficients to read) the quotient num/den is held
-    undivided and its rationality decided exactly, after the same F_p refutation."""
-    if isinstance(num, SparseCyclotomic) or isinstance(den, SparseCyclotomic):
-        if quotient_irrational(num, den):
-            return None
-        q = num / den
-        return q.rational() if q.is_rational() else None
-    if isinstance(num, TowerElement) or isinstance(den, TowerElement):
-        if tower_ratio_irrational(num, den):     # a level's radius, not made: F_p images
-            return None
-        tower = num.tower if isinstance(num, TowerElement) else den.tower
-        q = leaf_ratio(tower_raw(tower, num), tower_raw(tower, den))
-        if q is not NotImplemented:
-            return q if q is not None and num == den * q else None
-        q = num / den                       # a cyclotomic base: divide
-        return q.rational() if q.is_rational() else None
-    if not isinstance(num, PolyElement) and not isinstance(den, PolyElement):
-        q = num / den                       # multiquadratic numbers (a tower's level 0)
-        return (q.rational() if q.is_rational() else None) if isinstance(q, FieldElement) \
-            else fmpq(q)
-    if quotient_irrational(num, den):   # two maps into F_p disagree: microseconds, where
-        return None                     # a coefficient of 16,000 bits costs 0.1 ms to read
-    n, d = _poly(num), _poly(den)       # (and a level's radius may not be computed yet)
-    if n.is_zero():
-        return fmpq(0)
-    top = d.degree()
-    if n.degree() != top:   # num = q den with q != 0 has den's degree
-        return None
-    i = 0                   # the first non-zero coefficient of d, read by index: the
-    while d[i] == 0:        # coefficient lists of degree thousands cost milliseconds
-        i += 1
-    q = n[i] / d[i]
-    if n[top] != q * d[top]:    # two coefficients refute it before a product of all
-        return None
-    return q if n == q * d else None
 
 
 def ray_ratio_key(x, y):
@@ -256,14 +193,14 @@ def ray_ratio_key(x, y):
         def parts():
             xx = x * x
             return xx, xx + y * y
-        return RatioKey(parts, _ratio_ball(x, y), _largest_field((x, y)))
+        return RatioKey(parts, _ratio_ball(x, y), largest_field((x, y)))
     xx = x * x
     length = xx + y * y
     q = rational_ratio(xx, length)
     if q is not None:
         return exact_key(q)
 
-    return RatioKey(lambda: (xx, length), _ratio_ball(x, y), _largest_field((x, y)))
+    return RatioKey(lambda: (xx, length), _ratio_ball(x, y), largest_field((x, y)))
 
 
 def _ratio_ball(x, y):
@@ -273,21 +210,6 @@ def _ratio_ball(x, y):
         sq = bx * bx
         return sq / (sq + by * by)
     return value_ball
-
-
-def _largest_field(numbers):
-    """The field a product of ``numbers`` lands in: the largest of their polynomial fields
-    (the smaller ones embed into it, :func:`exactsym.exact.field._common`); a sparse
-    Q(zeta_N) is larger than any (its context: one per N)."""
-    best = None
-    for x in numbers:
-        if isinstance(x, SparseCyclotomic):
-            return x.ctx
-        if isinstance(x, TowerElement):
-            return x.tower
-        if isinstance(x, PolyElement) and (best is None or x.field.degree > best.degree):
-            best = x.field
-    return best
 
 
 class AngleKey(RatioKey):
@@ -367,9 +289,7 @@ def gap_ratio_key(a, b, c: int, dot_sign: int):
         dot = ax * bx + ay * by
         return s * dot * dot / ((ax * ax + ay * ay) * (bx * bx + by * by))
     return (0 if c > 0 else 2, AngleKey(a, b, dot_sign, parts, value_ball,
-                                        _largest_field(a + b)))
+                                        largest_field(a + b)))
 
 
-__all__ = ["RATIO_KEY_DEGREE", "AngleKey", "OrderedKey", "RatioKey", "big_field", "chord_key",
-           "gap_ratio_key",
-           "rational_ratio", "ray_ratio_key"]
+__all__ = ["AngleKey", "OrderedKey", "RatioKey", "chord_key", "gap_ratio_key", "ray_ratio_key"]

@@ -30,6 +30,7 @@ from fractions import Fraction
 from ..geometry.configuration import Configuration
 from ..errors import InputError
 from ..exact import fmpq, number_system
+from ..exact.number import all_plain_rational
 from .symmetry import symmetry_group
 
 __all__ = ["NearSymmetry", "near_symmetry_hint", "hint_text"]
@@ -166,7 +167,7 @@ def near_symmetry_hint(config: Configuration, tolerance: float = TOLERANCE
     if config.polar is not None or n < 2 or n > MAX_POINTS:
         return None
     pts = config.points
-    if not all(isinstance(v, fmpq) for p in pts for v in p):
+    if not all_plain_rational(v for p in pts for v in p):
         return None
     group = symmetry_group(config)
     exact_order = _order(group) if group.name != "O2" else math.inf

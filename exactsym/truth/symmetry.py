@@ -54,10 +54,10 @@ from flint import arb, ctx
 from ..geometry.configuration import Configuration, no_cycle_collection
 from ..geometry.predicates import PseudoAngle, intern_by_value
 from .isometries import Isometry, Layout, identity, reflection, rotation
-from ..exact import FieldElement, fmpq
-from ..exact.field import PolyElement
+from ..exact import fmpq
+from ..exact.number import all_plain_rational, any_algebraic, enclosure, is_plain_rational
 from ..exact.fused import complex_product, product_sum
-from ..exact.ordering import value_key
+from .symbols import Symbols, intern_symbols, least_rotation, rotation_less
 from ..geometry.algebraic_filtered import certified_c1
 from ..geometry.analysis_context import Cache
 from ..geometry.levels import Levels, RationalLevels, levels_of
@@ -135,41 +135,6 @@ def pseudo_angle(x, y):
     return 3 + x / (x - y)                  # x >= 0, y < 0: 3 at (0, -)
 
 
-# ---------------------------------------------------------------- strings
-
-def least_rotation(ids: Sequence[int], values: Sequence, candidates: Sequence[int] | None = None
-                   ) -> int:
-    """Booth's algorithm: the least j such that the rotation of the string by j is
-    lexicographically least.  ``ids[i]`` decides equality of symbols (equal ids iff
-    equal symbols), ``values[i]`` their order when they differ.  ``candidates``, when
-    given, must hold every position of the least symbol (it saves a pass over the
-    string when that symbol is unique, the usual case)."""
-    m = len(ids)
-    if m == 0:
-        return 0
-    pool = range(m) if candidates is None else candidates
-    low = min(pool, key=values.__getitem__)
-    if sum(1 for i in pool if ids[i] == ids[low]) == 1:    # a unique least symbol
-        return low
-    s = list(ids) + list(ids)
-    f = [-1] * (2 * m)
-    k = 0
-    for j in range(1, 2 * m):
-        sj = s[j]
-        i = f[j - k - 1]
-        while i != -1 and sj != s[k + i + 1]:
-            if values[j % m] < values[(k + i + 1) % m]:
-                k = j - i - 1
-            i = f[i]
-        if sj != s[k + i + 1]:          # here i == -1
-            if values[j % m] < values[k % m]:
-                k = j
-            f[j - k] = -1
-        else:
-            f[j - k] = i + 1
-    return k % m
-
-
 # ---------------------------------------------------------------- the rays
 
 def sort_by_exact_keys(indices: list[int], keys: Sequence) -> None:
@@ -181,7 +146,7 @@ def sort_by_exact_keys(indices: list[int], keys: Sequence) -> None:
     little more than one exact comparison per element instead of log2(n): a float that
     is off, or equal for unequal keys, only leaves more work to the exact sort.
     """
-    if len(indices) > 64 and isinstance(keys[indices[0]], fmpq):
+    if len(indices) > 64 and is_plain_rational(keys[indices[0]]):
         try:
             approx = [float(keys[i]) for i in indices]      # a filter: the sort below decides
         except (OverflowError, ValueError):
@@ -289,7 +254,7 @@ def _point_about(point, cx, cy, cd):
         found = None
     else:
         found = ((dx, dy), product_sum([(dx, dx), (dy, dy)]), _Angle(dx, dy))  # no inverse
-    if isinstance(dx, FieldElement) or isinstance(dy, FieldElement):
+    if any_algebraic((dx, dy)):
         if len(about) >= _ABOUT_LIMIT:
             about.clear()
         about[id(point)] = (point, cx, cy, cd, found)
@@ -301,8 +266,7 @@ def _cartesian_rays(points, centre, integers: bool | None = None, homogeneous=No
     ``integers`` (default: when the points and the centre are ``fmpq``) chooses the
     integer arithmetic of :func:`_directions`; both ways give the same result."""
     if integers is None:
-        integers = isinstance(centre[0], fmpq) and isinstance(centre[1], fmpq) and \
-            isinstance(points[0][0], fmpq)
+        integers = all_plain_rational((centre[0], centre[1], points[0][0]))
     centre_index, idx, vectors, r2s, keys = _directions(points, centre, integers, homogeneous)
     if integers:
         sort_by_exact_keys(idx, keys)
@@ -409,7 +373,7 @@ def _ball64(x):
     hit = balls.get(id(x))
     if hit is not None and hit[0] is x:
         return hit[1]
-    ball = x.enclosure(64) if isinstance(x, FieldElement) else arb(x)
+    ball = enclosure(x, 64)
     if len(balls) >= _ABOUT_LIMIT:
         balls.clear()
     balls[id(x)] = (x, ball)
@@ -461,8 +425,7 @@ def _gap(u, v) -> PseudoAngle:
     three products (Gauss: conj(u) v) instead of four, remembered per pair of vector
     objects when they hold field elements (the vectors of :func:`_point_about` are
     shared by the audit's unions of levels, whose consecutive rays often recur)."""
-    field = isinstance(u[0], FieldElement) or isinstance(u[1], FieldElement) or \
-        isinstance(v[0], FieldElement) or isinstance(v[1], FieldElement)
+    field = any_algebraic((u[0], u[1], v[0], v[1]))
     if field:
         gaps = _GAPS.table()
         hit = gaps.get((id(u), id(v)))
@@ -527,8 +490,7 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     else:
         points = config.points
         filtered = None
-        if n >= _FILTER_MIN and isinstance(centre[0], fmpq) and isinstance(centre[1], fmpq) \
-                and isinstance(points[0][0], fmpq):
+        if n >= _FILTER_MIN and all_plain_rational((centre[0], centre[1], points[0][0])):
             rank = level_ranks(ring, n)
             if rank is not None:
                 shared = ring.floats       # the floats of these very points, if computed
@@ -544,13 +506,13 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
 
     # symbols, interned: equal ids iff equal symbols; values are compared only lazily
     if filtered is None:
-        ray_ids = _intern(radii, True)
+        ray_ids = intern_symbols(radii, True)
         gap_ids = intern_by_value(gaps) if gaps and isinstance(gaps[0], PseudoAngle) \
-            else _intern(gaps, False)
+            else intern_symbols(gaps, False)
         width = max(gap_ids) + 1
         ccw = [ray_ids[i] * width + gap_ids[i] for i in range(m)]
         cw = [ray_ids[-i % m] * width + gap_ids[(-i - 1) % m] for i in range(m)]
-        ccw_values, cw_values = _Symbols(radii, gaps, False), _Symbols(radii, gaps, True)
+        ccw_values, cw_values = Symbols(radii, gaps, False), Symbols(radii, gaps, True)
         least = ray_ids[radii.index(min(radii))]      # the least symbols are on these rays
     else:                       # ray and gap ids are ranks: symbols compare as their ids
         rid, gid = radii, np.asarray(gap_ids, dtype=np.int64)
@@ -567,7 +529,7 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
         np.flatnonzero(rid == least).tolist()
     s = least_rotation(ccw, ccw_values, rays_least)
     t = least_rotation(cw, cw_values, [-r % m for r in rays_least])
-    use_cw = _rotation_less(cw, cw_values, t, ccw, ccw_values, s)
+    use_cw = rotation_less(cw, cw_values, t, ccw, ccw_values, s)
 
     # rotations: the periods of ccw; reflections: ray i -> ray (j - i) mod m for the j
     # with ccw rotated by j equal to cw.  When the least symbol occurs once in ccw (the
@@ -642,58 +604,6 @@ def _certified_c1(config: Configuration, ring: Levels) -> SymmetryGroup | None:
                          tuple(labelling), labelling[0], layout)
 
 
-class _Symbols:
-    """The symbols ``(radii of ray r, angle to the next ray)`` read counter-clockwise, or
-    clockwise (``(radii of ray -i, angle from ray -i-1 to ray -i)``), made on demand."""
-
-    __slots__ = ("radii", "gaps", "clockwise")
-
-    def __init__(self, radii, gaps, clockwise: bool):
-        self.radii, self.gaps, self.clockwise = radii, gaps, clockwise
-
-    def __getitem__(self, i: int):
-        m = len(self.radii)
-        if self.clockwise:
-            return (self.radii[-i % m], self.gaps[(-i - 1) % m])
-        return (self.radii[i], self.gaps[i])
-
-    def __len__(self) -> int:
-        return len(self.radii)
-
-
-def _intern(values, tuples: bool) -> list[int]:
-    """Small integers, equal iff the values (numbers, or tuples of numbers) are equal.
-    An ``fmpq`` is keyed by its (reduced, hence canonical) numerator and denominator:
-    ``hash(fmpq)`` goes through ``fractions.Fraction`` and costs about 2 us."""
-    first = values[0][0] if tuples else values[0]
-    ids: dict = {}
-    if isinstance(first, fmpq):
-        if tuples:
-            keys = (tuple([(x.p, x.q) for x in v]) if len(v) > 1 else (v[0].p, v[0].q)
-                    for v in values)
-        else:
-            keys = ((x.p, x.q) for x in values)
-    elif isinstance(first, PolyElement) and first.field.degree >= _KEY_DEGREE:
-        # a field of large degree: hashing an element's fmpq coefficients costs ms
-        keys = (tuple([value_key(x) for x in v]) if tuples else value_key(v) for v in values)
-    else:
-        keys = iter(values)
-    return [ids.setdefault(key, len(ids)) for key in keys]
-
-
-_KEY_DEGREE = 512       # from this degree radii are interned by value_key, not hash
-
-
-def _rotation_less(a_ids, a_vals, a_start, b_ids, b_vals, b_start) -> bool:
-    """Is the rotation of string a by ``a_start`` lexicographically less than that of b?"""
-    m = len(a_ids)
-    for d in range(m):
-        i, j = (a_start + d) % m, (b_start + d) % m
-        if a_ids[i] != b_ids[j]:
-            return a_vals[i] < b_vals[j]
-    return False
-
-
 def _is_half_turn(gap, polar: bool) -> bool:
     return gap == (fmpq(1, 2) if polar else 2)
 
@@ -736,6 +646,6 @@ def _leader_on_mirror(rays, ids, values, offset: int) -> int | None:
         return None
     best = fixed[0]
     for r in fixed[1:]:
-        if _rotation_less(ids, values, r, ids, values, best):
+        if rotation_less(ids, values, r, ids, values, best):
             best = r
     return rays[best][0]

@@ -16,11 +16,12 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from .. import polygon as P
-from ...exact import FieldElement, fmpq, rational_sqrt
+from ...exact import rational_sqrt
 from ..circle_polygon import CirclePolygon, polygon_from_directions
 from ..inverses import inverse_length
 from ..homogeneous import scaled as scaled_form
-from ..ratio_keys import big_field, rational_ratio
+from ...exact.number import big_field, rational_value
+from ...exact.ratio import rational_ratio
 from .concentric import Ring, mirror_lines, polygon_name
 
 
@@ -38,11 +39,8 @@ def scale_to(r2_to, r2_from):
         ratio = rational_ratio(r2_to, r2_from)
         return None if ratio is None else rational_sqrt(ratio)
     ratio = r2_to * inverse_length(r2_from)          # cached: no inverse per projection
-    if isinstance(ratio, FieldElement):
-        if not ratio.is_rational():
-            return None
-        ratio = ratio.rational()
-    return rational_sqrt(fmpq(ratio))
+    ratio = rational_value(ratio)
+    return None if ratio is None else rational_sqrt(ratio)
 
 
 def radial_projection(source: Ring, target: Ring, name: str | None = None) -> Projection:

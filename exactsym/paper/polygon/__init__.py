@@ -49,7 +49,8 @@ from .definitions import (is_straight_symmetric, is_skew_symmetric, is_symmetric
                           theorem1_violations)
 from .types import (vertex_palindromes, edge_palindromes, StraightLine, straight_lines,
                     straight_line_count,
-                    is_regular, is_prime, TypeVerdict, polygon_type, vertices_on_line)
+                    is_regular, TypeVerdict, polygon_type, vertices_on_line)
+from ...exact.factor import is_prime
 from .check_symmetry import (CheckResult, check_symmetry_odd, check_symmetry_even, check_symmetry,
                              check_symmetry_odd_reference, check_symmetry_even_reference,
                              check_symmetry_odd_literal)

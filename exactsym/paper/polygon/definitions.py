@@ -5,7 +5,8 @@ Theorem 1 (``theorem1``: the string conditions for asymmetry).
 
 from __future__ import annotations
 
-from ...exact import FieldElement, normal_turn
+from ...exact import normal_turn
+from ...exact.number import any_algebraic
 from ...exact.ordering import value_key
 from ...exact.fused import complex_product
 from ..filtered import ball
@@ -106,7 +107,7 @@ def _vertex_balls(polygon: CirclePolygon):
     """Arb balls of the vertices of a Cartesian polygon on one circle with algebraic
     coordinates (a filter for :func:`definition_mirror_keys`), else None."""
     if polygon.polar or not polygon.one_circle or \
-            not any(isinstance(c, FieldElement) for d in polygon.directions for c in d):
+            not any_algebraic(c for d in polygon.directions for c in d):
         return None
     return [(ball(x), ball(y)) for x, y in polygon.directions]
 

@@ -12,7 +12,7 @@ strings are equal entry by entry, and each entry comparison is exact).
 
 from __future__ import annotations
 
-from ...exact import FieldElement
+from ...exact.number import any_algebraic
 from ...exact.fused import complex_product
 from ..circle_polygon import CirclePolygon
 from ..filtered import ball
@@ -22,7 +22,7 @@ def applies(polygon: CirclePolygon) -> bool:
     """Cartesian, on one circle, algebraic coordinates (else the exact keys are cheap)."""
     if polygon.polar or not polygon.one_circle or polygon.n > 3:
         return False
-    return any(isinstance(c, FieldElement) for d in polygon.directions for c in d)
+    return any_algebraic(c for d in polygon.directions for c in d)
 
 
 def _dot_ball(u, v):

@@ -9,13 +9,14 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from ...exact import FieldElement, fmpq, normal_turn
+from ...exact import fmpq, normal_turn
 from ...geometry.strings import cyclic_period, first_occurrence
 from ..circle_polygon import CirclePolygon
 from ..filtered import circle_gap_tokens, cross_sign, gap_classes_on_circle
 from ..inverses import squared_length
 from . import small
-from ..keys import HALF, ccw_gap_key, huge_field
+from ...exact.number import any_algebraic, huge_field
+from ..keys import HALF, ccw_gap_key
 from ..ratio_keys import chord_key as ordered_chord_key
 
 
@@ -65,7 +66,7 @@ def cw_string(polygon: CirclePolygon, m: int, orientation: int = 1) -> tuple:
 
 def _ordered_chords(polygon: CirclePolygon) -> bool:
     """Whether the strings of ``polygon`` hold :func:`~exactsym.paper.ratio_keys.chord_key`
-    keys: a Cartesian polygon in a huge field (:func:`.keys.huge_field`; off one circle,
+    keys: a Cartesian polygon in a huge field (:func:`exactsym.exact.number.huge_field`; off one circle,
     a radial projection's, each exact key is four products and two inverses in a tower
     over the sparse Q(zeta_N)); decided once per polygon, so that every string of it
     holds one kind of key."""
@@ -179,7 +180,7 @@ def _circle_tokens(polygon: CirclePolygon) -> bool:
     inverse is a dense quotient: two mirror pairs at turns +-2j/997, radii sqrt(k), took
     minutes per string partition."""
     return not polygon.polar and polygon.one_circle and \
-        any(isinstance(c, FieldElement) for d in polygon.directions for c in d)
+        any_algebraic(c for d in polygon.directions for c in d)
 
 
 def canonical(polygon: CirclePolygon, i: int, ccw: bool):

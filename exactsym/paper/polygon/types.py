@@ -173,10 +173,6 @@ def is_regular(polygon: CirclePolygon) -> bool:
     return len(set(gap_ids(polygon))) == 1
 
 
-def is_prime(n: int) -> bool:
-    return n >= 2 and all(n % p for p in range(2, int(n ** 0.5) + 1))
-
-
 class TypeVerdict(str):
     """``"type-0"`` .. ``"type-4"`` or ``"unclassified"``; ``.reason`` says why, ``.lines``
     are the lines of straight symmetry counted (line keys), ``.through`` the number of

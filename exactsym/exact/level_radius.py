@@ -10,7 +10,7 @@ polynomial is computed when first read; before that it answers
 * balls (:meth:`enclosure`) from the balls of p and C: ``(p_x - c_x)^2 + (p_y - c_y)^2``,
   a sum of squares, so no cancellation;
 * its images in F_p (:meth:`modular_images`, for
-  :mod:`exactsym.exact.cyclotomic_modular`'s proofs of irrationality) from the images of
+  :mod:`.cyclotomic_modular`'s proofs of irrationality) from the images of
   p and C: the maps are ring homomorphisms;
 * ``==`` with the squared radius of another level of the same levels: distinct levels
   have distinct radii (the levels group the points by exactly equal distance), so two
@@ -26,13 +26,14 @@ from __future__ import annotations
 
 from flint import arb, ctx, fmpq
 
-from ..exact.field import PolyElement
-from ..exact.field import FieldElement, sign
-from ..exact.tower import TowerElement, _raw
-from ..exact.tower_proof import tower_images
-from .predicates import enclosure_of
+from .field import FieldElement, PolyElement, sign
+from .number import LARGE_DEGREE, enclosure as enclosure_of
+from .sparse_tower import SparseKummerTower
+from .tower import TowerElement, raw as tower_raw
+from .tower_proof import tower_images
 
-__all__ = ["LevelRadius", "TowerLevelRadius"]
+__all__ = ["LevelRadius", "TowerLevelRadius", "lazy_level_radius", "level_form",
+           "scaled_radius", "tower_ratio_irrational"]
 
 
 class _LevelIdentity:
@@ -196,7 +197,7 @@ class TowerLevelRadius(_LevelIdentity, TowerElement):
     @property
     def v(self):
         if self._exact is None:
-            self._exact = _raw(self.tower, self.value())
+            self._exact = tower_raw(self.tower, self.value())
         return self._exact
 
     @property
@@ -257,10 +258,10 @@ def tower_ratio_irrational(num, den) -> bool:
             parts.append(len(raws))
             if isinstance(z, TowerLevelRadius) and not z.made:
                 (x, y), (cx, cy, d) = z._p, z._c
-                raws += [_raw(tower, v) for v in (x, y, cx, cy, d)]
+                raws += [tower_raw(tower, v) for v in (x, y, cx, cy, d)]
                 parts[-1] = (parts[-1], True)
             else:
-                raws.append(_raw(tower, z))
+                raws.append(tower_raw(tower, z))
                 parts[-1] = (parts[-1], False)
     except TypeError:                   # two towers: nothing to compare here
         return False
@@ -283,3 +284,35 @@ def tower_ratio_irrational(num, den) -> bool:
             return False
         quotients.append(a * e * pow(b * c, -1, p) % p)
     return quotients[0] != quotients[1]
+
+
+def lazy_level_radius(d, make, point, circle, owner, index: int):
+    """The squared radius |point - C|^2 of level ``index`` of ``owner`` (C the centre of
+    ``circle``, = (X/D, Y/D) for its ``homogeneous`` (X, Y, D)), held lazily where its exact value
+    is costly: a :class:`LevelRadius` in a dense field of degree >= LARGE_DEGREE, a
+    :class:`TowerLevelRadius` in a tower over the sparse Q(zeta_N); else None (the caller
+    computes it, ``make()``)."""
+    if isinstance(d, PolyElement) and d.field.degree >= LARGE_DEGREE:
+        return LevelRadius(d.field, make, point, circle.centre, 1, owner, index,
+                           circle.homogeneous)
+    if isinstance(d, TowerElement) and isinstance(d.tower, SparseKummerTower):
+        return TowerLevelRadius(d.tower, make, point, circle.homogeneous, owner, index)
+    return None
+
+
+def scaled_radius(r2, k, owner, index: int):
+    """``k`` (a rational) times the squared radius ``r2``, as level ``index`` of
+    ``owner``: a lazy :class:`LevelRadius` stays lazy."""
+    if isinstance(r2, LevelRadius):
+        return r2.scaled(k, owner, index)
+    return r2 * k
+
+
+def level_form(r2):
+    """``(p, (X, Y, D), scale)`` when ``r2`` is a lazy level radius that keeps its point
+    and the centre's homogeneous form, |D p - (X, Y)|^2 scale / D^2; else None."""
+    if isinstance(r2, TowerLevelRadius):
+        return r2._p, r2._c, 1
+    if isinstance(r2, LevelRadius) and r2.homogeneous is not None:
+        return r2._p, r2.homogeneous, r2.scale
+    return None

@@ -1,0 +1,126 @@
+"""The number layer's declared interface (issue 29, docs/numbers.md): the layers above
+exact/ ask :mod:`exactsym.exact.number` instead of testing concrete number classes."""
+
+import ast
+import math
+from pathlib import Path
+
+from flint import fmpq
+from hypothesis import given, settings, strategies as st
+
+from exactsym.exact import number
+from exactsym.exact.factor import is_prime
+from exactsym.exact.cyclotomic import cyclotomic_field, sqrt_element
+from exactsym.exact.multiquadratic import MQ
+
+PACKAGE = Path(__file__).resolve().parents[1] / "exactsym"
+
+#: the concrete number classes (and their fields and towers) of the kernel
+NUMBER_CLASSES = {"fmpq", "fmpz", "Fraction", "MQ", "PolyElement", "FieldElement",
+                  "SparseCyclotomic", "TowerElement", "LevelRadius", "TowerLevelRadius",
+                  "NumberField", "Tower", "CyclotomicTower", "SparseKummerTower",
+                  "SparseContext"}
+#: packages that own numbers (exact/), or check them on their own (certify/, checker/), or
+#: are redesigned apart (gathering/)
+OWNERS = {"exact", "certify", "checker", "gathering"}
+#: the count when the interface was declared (issue 29: 105 before): it may only go down
+LIMIT = 1
+
+
+def _class_checks(package: Path = PACKAGE) -> list[str]:
+    found = []
+    for path in sorted(package.rglob("*.py")):
+        if path.relative_to(package).parts[0] in OWNERS:
+            continue
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.Call) and getattr(node.func, "id", None) == "isinstance" \
+                    and len(node.args) == 2:
+                kinds = node.args[1].elts if isinstance(node.args[1], ast.Tuple) \
+                    else [node.args[1]]
+                names = {getattr(k, "id", None) or getattr(k, "attr", None) for k in kinds}
+                if names & NUMBER_CLASSES:
+                    found.append(f"{path.relative_to(package.parent)}:{node.lineno}")
+    return found
+
+
+def test_few_class_checks_on_numbers_outside_the_number_layer():
+    found = _class_checks()
+    assert len(found) <= LIMIT, "\n".join(found)
+
+
+def test_the_counter_sees_a_class_check(tmp_path):
+    for unit, text in (("paper", "isinstance(x, (int, PolyElement))\nisinstance(x, tower.MQ)\n"
+                                 "isinstance(x, tuple)\n"),
+                       ("exact", "isinstance(x, PolyElement)\n")):
+        (tmp_path / "pkg" / unit).mkdir(parents=True)
+        (tmp_path / "pkg" / unit / "m.py").write_text(text)
+    assert _class_checks(tmp_path / "pkg") == ["pkg/paper/m.py:1", "pkg/paper/m.py:2"]
+
+
+def test_the_questions_answer_for_rationals_and_field_elements():
+    q = fmpq(3, 7)
+    field = cyclotomic_field(8)
+    root = sqrt_element(field, fmpq(2))
+    mq = MQ({2: fmpq(1)})
+    assert number.is_plain_rational(q) and not number.is_algebraic(q)
+    assert number.is_algebraic(root) and number.is_algebraic(mq)
+    assert number.is_number(q) and number.is_number(mq) and not number.is_number((q,))
+    assert number.any_algebraic([q, root]) and not number.any_algebraic([q, q])
+    assert number.all_plain_rational([q, fmpq(1)]) and not number.all_plain_rational([q, mq])
+    assert number.rational_value(q) == q and number.rational_value(root) is None
+    assert number.rational_value(root * root) == 2
+    assert number.sign(-root) == -1 and number.sign(q) == 1
+    assert number.enclosure(root, 64).overlaps(number.enclosure(mq, 64))
+    assert not number.enclosure(root, 64).overlaps(number.enclosure(q, 64))
+    assert number.dense_field(root) is field and number.dense_field(mq) is None
+    assert not number.large_dense(root) and not number.big_field(q, mq)
+    assert number.big_field(root) == (field.degree >= number.RATIO_KEY_DEGREE)
+    assert number.largest_field([q, root, mq]) is field
+
+
+# -- one primality test in the solver: python-flint's, agreeing with the tests it replaced
+
+
+def _trial_division(n: int) -> bool:       # paper/polygon/types.py had this one
+    return n >= 2 and all(n % p for p in range(2, math.isqrt(n) + 1))
+
+
+def _miller_rabin(n: int) -> bool:          # exact/cyclotomic_sqrt.py had this one
+    if n < 2:
+        return False
+    for q in (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37):
+        if n % q == 0:
+            return n == q
+    d, s = n - 1, 0
+    while d % 2 == 0:
+        d, s = d // 2, s + 1
+    for a in (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37):   # deterministic below 3.3e24
+        x = pow(a, d, n)
+        if x in (1, n - 1):
+            continue
+        for _ in range(s - 1):
+            x = x * x % n
+            if x == n - 1:
+                break
+        else:
+            return False
+    return True
+
+
+def test_is_prime_agrees_with_trial_division_below_20000():
+    assert [n for n in range(-5, 20_000) if is_prime(n)] == \
+        [n for n in range(-5, 20_000) if _trial_division(n)]
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.integers(min_value=0, max_value=3 * 10 ** 24))
+def test_is_prime_agrees_with_deterministic_miller_rabin(n):
+    assert is_prime(n) == _miller_rabin(n)
+
+
+def test_is_prime_on_carmichael_numbers_and_strong_pseudoprimes():
+    # 3215031751 is a strong pseudoprime to bases 2, 3, 5, 7; 561, 41041 are Carmichael
+    for n in (561, 41041, 3215031751, 3825123056546413051):
+        assert not is_prime(n) and not _miller_rabin(n)
+    for p in (2, 3, 2 ** 61 - 1, 10 ** 18 + 9):
+        assert is_prime(p) and _miller_rabin(p)
