@@ -452,6 +452,3 @@ def _plain_sum(items) -> MQ:
         t = a * b
         out = out + t if s == 1 else out - t if s == -1 else out + t * s
     return out
-
-
-_coprime_base = coprime_base     # the name gathering/geometry.py still imports

@@ -14,36 +14,14 @@ exactly, decides.
 from __future__ import annotations
 
 from fractions import Fraction
-from math import gcd
 
 from flint import fmpq, fmpq_poly
 
-from ..multiquadratic import MQ
+from ..multiquadratic import MQ, coprime_base
 from ..tower import neg as tuple_neg
 from .polynomials import peval, pmul, trim
 
-__all__ = ["negative_instant", "tower_norm", "rational_norm", "coprime_base"]
-
-
-def coprime_base(radicands) -> list[int]:
-    """Pairwise coprime integers > 1 whose products give every radicand (gcd refinement;
-    the base :meth:`~exactsym.exact.multiquadratic.MQ.conjugate` expects)."""
-    base: list[int] = []
-    for m in radicands:
-        pending = [m]
-        while pending:
-            x = pending.pop()
-            if x == 1:
-                continue
-            for i, b in enumerate(base):
-                g = gcd(x, b)
-                if g > 1:
-                    del base[i]
-                    pending.extend(y for y in (g, b // g, x // g) if y > 1)
-                    break
-            else:
-                base.append(x)
-    return base
+__all__ = ["negative_instant", "tower_norm", "rational_norm"]
 
 
 def tower_norm(f):
