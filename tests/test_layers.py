@@ -13,16 +13,8 @@ ROOT = Path(__file__).resolve().parents[1]
 PACKAGE = ROOT / "exactsym"
 
 
-#: (check, package) pairs that still fail while the redesign of issue 29 goes on: each a strict
-#: xfail, so the line must go when its package is mended
-NOT_YET: set = set()
 UNITS = sorted({p.name for p in (Path(__file__).resolve().parents[1] / "exactsym").iterdir()
                 if p.is_dir() and (p / "__init__.py").exists()})
-
-
-def _mark(check: str):
-    return [pytest.param(u, marks=pytest.mark.xfail(strict=True, reason="issue 29"))
-            if (check, u) in NOT_YET else u for u in UNITS]
 
 
 def _layers() -> dict:
@@ -108,7 +100,7 @@ def test_imports_go_down_the_layers():
     assert not wrong, "\n".join(wrong)
 
 
-@pytest.mark.parametrize("unit", _mark("circle"))
+@pytest.mark.parametrize("unit", UNITS)
 def test_no_import_circle(unit):
     modules = _modules()
     graph = nx.DiGraph()
@@ -122,7 +114,7 @@ def test_no_import_circle(unit):
     assert not circles, circles
 
 
-@pytest.mark.parametrize("unit", _mark("private"))
+@pytest.mark.parametrize("unit", UNITS)
 def test_no_private_name_crosses_a_module(unit):
     modules = _modules()
     crossing = sorted(f"{importer} imports {imported}.{name}"
@@ -132,7 +124,6 @@ def test_no_private_name_crosses_a_module(unit):
     assert not crossing, "\n".join(crossing)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 29: the module table is written last")
 def test_every_module_is_in_the_architecture():
     text = (ROOT / "docs" / "architecture.md").read_text()
     missing = sorted(str(p.relative_to(ROOT)) for p in PACKAGE.rglob("*.py")
@@ -142,7 +133,7 @@ def test_every_module_is_in_the_architecture():
     assert not missing, missing
 
 
-@pytest.mark.parametrize("unit", _mark("length"))
+@pytest.mark.parametrize("unit", UNITS)
 def test_no_module_over_700_lines(unit):
     long = sorted((len(p.read_text().splitlines()), str(p.relative_to(ROOT)))
                   for p in (PACKAGE / unit).rglob("*.py") if len(p.read_text().splitlines()) > 700)

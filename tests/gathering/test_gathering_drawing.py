@@ -18,7 +18,7 @@ from exactsym.gathering.paper_bridge import read_case  # noqa: E402
 from exactsym.gathering.schedulers import run  # noqa: E402
 from exactsym.pictures.run import frame_times, plot_run  # noqa: E402
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 CASE = ROOT / "cases/gathering/obstacle-beside-path.toml"
 NO_I5 = "I1,I2,I3,I4,I6,I7,I8,I9,I10"
 

@@ -62,7 +62,7 @@ def test_the_bound_is_tight_enough_to_be_false_for_a_smaller_one():
 def test_the_shipped_decimal_hexagon_case():
     from pathlib import Path
     from exactsym.geometry.configuration import load
-    config = load(Path(__file__).resolve().parent.parent / "cases/examples/decimal-hexagon.toml")
+    config = load(Path(__file__).resolve().parents[2] / "cases/examples/decimal-hexagon.toml")
     hint = near_symmetry_hint(config)
     assert (hint.exact_group, hint.candidate_group, hint.bound) == ("D2", "D6", Q(5, 10 ** 7))
     assert _proved(config, hint)

@@ -31,7 +31,7 @@ from test_paper_polygon import polar_polygons
 
 symmetry = pytest.importorskip("exactsym.truth.symmetry")
 
-CASES = Path(__file__).resolve().parent.parent / "cases"
+CASES = Path(__file__).resolve().parents[2] / "cases"
 
 #: class of disagreement -> the case file that shows it (relative to cases/).
 KNOWN = {

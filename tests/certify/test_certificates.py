@@ -29,7 +29,7 @@ from exactsym.cli.main import main as cli_main
 from exactsym.geometry.configuration import Configuration, load
 from exactsym.truth.symmetry import symmetry_group
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "cases" / "examples"
 
 

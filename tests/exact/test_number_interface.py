@@ -13,7 +13,7 @@ from exactsym.exact.factor import is_prime
 from exactsym.exact.cyclotomic import cyclotomic_field, sqrt_element
 from exactsym.exact.multiquadratic import MQ
 
-PACKAGE = Path(__file__).resolve().parents[1] / "exactsym"
+PACKAGE = Path(__file__).resolve().parents[2] / "exactsym"
 
 #: the concrete number classes (and their fields and towers) of the kernel
 NUMBER_CLASSES = {"fmpq", "fmpz", "Fraction", "MQ", "PolyElement", "FieldElement",

@@ -28,7 +28,7 @@ from strategies import (RATIONAL_GROUPS, brute_force_group, brute_force_polar_gr
                         shuffled, similarities)
 
 Q = fmpq
-EXAMPLES = Path(__file__).resolve().parent.parent / "cases" / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "cases" / "examples"
 
 
 def group_of(points) -> SymmetryGroup:

@@ -14,7 +14,7 @@ import exactsym
 from exactsym.cli import main as cli
 from exactsym.cli.main import main
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 NINE = "cases/examples/chiral-nine-gon.toml"
 
 

@@ -17,7 +17,7 @@ from exactsym.pictures.run import (Arc, Event, Layer, Move, Run, Segment, Violat
                                write_gif, write_html)
 from exactsym.pictures.run_cli import main
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 SVG = "{http://www.w3.org/2000/svg}"
 
 

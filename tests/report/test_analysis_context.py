@@ -17,7 +17,7 @@ from exactsym.geometry.analysis_context import AnalysisContext, Cache
 from exactsym.geometry.configuration import load
 from exactsym.report.check import json_text, report_json
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "cases" / "examples"
 #: algebraic inputs of three kinds (cyclotomic turns, nested radicals, square roots over
 #: turns): each fills the caches of the truth, the paper layer and the filters

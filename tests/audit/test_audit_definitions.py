@@ -33,7 +33,7 @@ from exactsym.report.check import report_json
 from strategies import (PolarSimilarity, polar_configuration, polar_group_points,
                         rational_group_points, similarities)
 
-CASES = Path(__file__).resolve().parent.parent / "cases"
+CASES = Path(__file__).resolve().parents[2] / "cases"
 
 
 @lru_cache(maxsize=None)

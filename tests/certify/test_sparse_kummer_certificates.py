@@ -26,7 +26,7 @@ from exactsym.exact.kummer import SquareClasses
 from exactsym.exact.sparse_cyclotomic import sparse_context
 from certificate_checks import rejected
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 CASE_997 = ROOT / "cases" / "numbers" / "square-roots-over-turns-997.toml"
 CASE_999983 = ROOT / "cases" / "numbers" / "square-roots-over-turns-999983.toml"
 

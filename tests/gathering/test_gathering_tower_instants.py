@@ -197,7 +197,7 @@ def test_a_run_checks_its_nested_radical_instants_at_the_instant():
     # need nested radicals; before towers they were seen on both sides only (sided 4)
     from pathlib import Path
     from exactsym.gathering.cases import run_case_file
-    case = Path(__file__).resolve().parent.parent / "cases" / "gathering" / \
+    case = Path(__file__).resolve().parents[2] / "cases" / "gathering" / \
         "corrected-obstacle-beside-path.toml"
     run = run_case_file(case)
     assert not run.failures and run.result.outcome == "gathered"

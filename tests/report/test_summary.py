@@ -15,7 +15,7 @@ from exactsym import load
 from exactsym.analysis import Options
 from exactsym.report.summary import one_line, summary_text
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 CASES = sorted(p for p in (ROOT / "cases").rglob("*") if p.suffix in (".toml", ".txt"))
 
 #: What a Python value printed as such looks like (a dict, a list of strings, a repr).

@@ -37,7 +37,7 @@ from exactsym.truth.symmetry import symmetry_group
 from strategies import (PolarSimilarity, polar_configuration, rational_group_points,
                         similarities)
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def ring_orbit(r, k, dihedral, seeds, rotate):

@@ -16,7 +16,7 @@ from exactsym.ledger.model import Evidence, Ledger, Statement
 from exactsym.ledger.sweeps import (SweepError, consistency, import_sweep, load_sweep,
                                     sweep_item)
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 CASE = "cases/discrepancies/family-chiral-c3-ring.toml"
 
 

@@ -22,7 +22,7 @@ from exactsym.certify.certificate import make_certificate
 from exactsym.geometry.configuration import load
 from certificate_checks import rejected
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 _spec = importlib.util.spec_from_file_location("certify_fields", ROOT / "bench" /
                                                "certify_fields.py")
 fields = importlib.util.module_from_spec(_spec)

@@ -22,7 +22,7 @@ from exactsym.ledger.evidence import check_evidence, load_sweep
 from exactsym.ledger.graph import cycles, support
 from exactsym.ledger.model import Evidence, Ledger, Statement, parse_ledger
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 PROOFS = ROOT / "proofs"
 
 

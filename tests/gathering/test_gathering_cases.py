@@ -5,7 +5,7 @@ the case library in tests/test_cases.py (exactsym.report.cases.run_case runs the
 from pathlib import Path
 
 
-CASES = sorted((Path(__file__).resolve().parent.parent / "cases" / "gathering").glob("*.toml"))
+CASES = sorted((Path(__file__).resolve().parents[2] / "cases" / "gathering").glob("*.toml"))
 
 
 def test_there_are_gathering_cases():
@@ -22,7 +22,7 @@ def test_the_ledger_reruns_a_gathering_case(tmp_path):
     """The ledger's evidence check runs the simulator on a case's gather_* claims: a
     false gather_outcome is a mismatch."""
     from exactsym.ledger.analysis_bridge import analyse_case
-    src = Path(__file__).resolve().parent.parent / "cases/gathering/obstacle-beside-path.toml"
+    src = Path(__file__).resolve().parents[2] / "cases/gathering/obstacle-beside-path.toml"
     assert analyse_case(src).expect_failures == ()
     bad = tmp_path / "bad.toml"
     bad.write_text(src.read_text().replace('gather_outcome = "violated"',

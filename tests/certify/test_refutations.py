@@ -15,7 +15,7 @@ from exactsym.certify.certificate import CertificateError
 from exactsym.geometry.configuration import load
 from exactsym.certify.refutation import PREMISES, make_refutation
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 RING = "cases/discrepancies/family-chiral-c3-ring.toml"
 TRIANGLES = "cases/discrepancies/family-c3-two-triangles.toml"
 NONAGON = "cases/polygon/d3-nonagon-type4.toml"

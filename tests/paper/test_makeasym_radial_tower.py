@@ -19,7 +19,7 @@ from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.geometry.levels import levels_of
 from exactsym.paper import family as F
 
-FAMILY = Path(__file__).resolve().parent.parent / "cases" / "family"
+FAMILY = Path(__file__).resolve().parents[2] / "cases" / "family"
 S2 = sqrt_rational(2)
 
 
@@ -126,7 +126,7 @@ def test_each_round_is_checked_against_the_sec_it_started_from():
     from exactsym.geometry.configuration import load
     from exactsym.geometry.levels import levels_of
     from exactsym.paper import family as F
-    config = load(Path(__file__).resolve().parent.parent /
+    config = load(Path(__file__).resolve().parents[2] /
                   "cases/sweeps/roots_12_le6/sweep-MakeAsym.toml")
     res = F.paper_procedure(config, levels_of(config))
     changed = [e["round"] for e in res.trace if "the SEC changed" in e.get("detail", "")]

@@ -25,7 +25,7 @@ from exactsym.checker.dispatch import FORMATS, IRREDUCIBILITY, NUMBER_SYSTEMS, R
 from exactsym.cli.main import main as cli_main
 from exactsym.geometry.configuration import load
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 PACKAGE = ROOT / "exactsym"
 CHECKER = PACKAGE / "checker"
 #: the only modules of exactsym that import the checker: they run it on a certificate

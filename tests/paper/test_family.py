@@ -29,7 +29,7 @@ from exactsym.paper.circle_polygon import polygon_from_directions
 
 from strategies import polar_configuration
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 FAMILY = ROOT / "cases" / "family"
 DISCREPANCIES = ROOT / "cases" / "discrepancies"
 Q = fmpq

@@ -24,7 +24,7 @@ from exactsym.sweep.results import read_records
 from exactsym.sweep.summary import ledger_evidence, summarise, write_cases
 
 FAMILY = "roots:12:<=5"
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _lines(path) -> set:

@@ -26,7 +26,7 @@ from exactsym.gathering.schedulers import run
 from exactsym.gathering.trace import replay, same_result, trace_dict
 from exactsym.gathering.world import Frame
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "bench"))
 from bench_gather import random_config  # noqa: E402
 
