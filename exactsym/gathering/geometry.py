@@ -436,14 +436,25 @@ def robots_near_piece(piece, approx, d) -> list:
 
 def _piece_frame(piece):
     """Doubles describing a piece for the filters, with the error bound ``sigma`` of
-    its points' coordinates: ``(kind, mx, my, h, ux, uy, cx, cy, r, sigma)``."""
+    its points' coordinates: ``(kind, mx, my, h, ux, uy, cx, cy, r, sigma)``.
+
+    A segment's direction ``u`` is kept only when the chord is long beside the errors:
+    ``h > 4 sigma + 2^-40 (|mx| + |my| + h)``.  Then the double chord ``w`` differs from
+    the exact ``e`` by at most ``sigma`` plus its roundings (``2^-52`` of each
+    magnitude), less than ``|e| / 4``, so ``|w/|w| - e/|e|| <= 2 |w - e| / |e| <=
+    2 sigma / h`` up to those roundings, which the ``turn`` slack of
+    :func:`_piece_lower_bound` (``4 dist sigma / h``) and its ``1e-9`` relative term
+    cover.  Otherwise ``u = 0`` and only the disc on the chord bounds the distance.
+    Either way the result is a valid lower bound: the choice decides nothing, it only
+    makes the bound tighter (the fixed ``h > 1e-6`` it replaces ignored ``sigma``)."""
     (sx, es), (sy, fs) = float_and_error(piece.start[0]), float_and_error(piece.start[1])
     (tx, et), (ty, ft) = float_and_error(piece.end[0]), float_and_error(piece.end[1])
     sigma = es + fs + et + ft
     mx, my = (sx + tx) / 2, (sy + ty) / 2
     h = ((sx - tx) ** 2 + (sy - ty) ** 2) ** 0.5 / 2
     if isinstance(piece, Segment):
-        ux, uy = ((tx - sx) / (2 * h), (ty - sy) / (2 * h)) if h > 1e-6 else (0.0, 0.0)
+        long_chord = h > 4 * sigma + 2.0 ** -40 * (abs(mx) + abs(my) + h)
+        ux, uy = ((tx - sx) / (2 * h), (ty - sy) / (2 * h)) if long_chord else (0.0, 0.0)
         return ("segment", mx, my, h, ux, uy, 0.0, 0.0, 0.0, sigma)
     (cx, ec), (cy, fc) = float_and_error(piece.centre[0]), float_and_error(piece.centre[1])
     r = ((sx - cx) ** 2 + (sy - cy) ** 2) ** 0.5

@@ -76,7 +76,7 @@ from .instant_balls import MotionBall
 from .joint_relations import still as still_motion
 from .joint_symmetry import centroid_tie
 from .motion import (Motion, cross_poly, dist2_poly, dot_poly, may_leave, motion_of,
-                     point_param, reach)
+                     point_param, may_be_at, may_come_within)
 from .point_sets import centroid, hull_indices, mirror_lines, reflect
 from .run_home import instant_or_none, mixes
 
@@ -248,15 +248,13 @@ def _about(piece, m: Motion, centre, static: dict, name: str, mover: int = -1,
     distance), for each of ``groups`` (``[(robots standing still, name)]``) that holds
     k, the ``symmetry`` candidates of :func:`on_circle_candidates` instead."""
     polys, params = [], []
-    lo_c, hi_c = reach(piece, centre)
     for k, q in static.items():
         w = g.sub(q, centre)
         if w[0].is_zero() and w[1].is_zero():
             continue
         polys.append((cross_poly(m, centre, w), ("ray", f"on the line through {name} and "
                                                         f"robot {k}")))
-        dq = float(g.dot(w, w)) ** 0.5
-        if lo_c <= dq <= hi_c:
+        if may_be_at(piece, centre, g.dot(w, w)):
             tie = dist2_poly(m, centre, g.dot(w, w))
             if tie:
                 polys.append((tie, ("distance", f"as far from {name} as robot {k}")))
@@ -337,14 +335,13 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
     if centre is not None:
         more, at = _about(piece, m, centre, static, "C", mover, groups)
         polys, about_params = polys + more, about_params + at
-        lo_c, hi_c = reach(piece, centre)
         # the pattern: the mover on a layer's circle (|p - C| = 2L), or touching a robot;
         # layer L holds a robot of P only when the inner layers are full: 1 + 3L(L - 1)
         # robots at least (capacity of layer l >= 6l), so no larger L matters
         n = len(world.robots)
         top = max(L for L in range(1, n + 1) if 1 + 3 * L * (L - 1) < n) if n > 1 else 0
-        for L in range(max(1, int(lo_c / 2)), min(int(hi_c / 2) + 2, top + 1)):
-            if lo_c <= 2 * L <= hi_c:
+        for L in range(1, top + 1):
+            if may_be_at(piece, centre, MQ.rational(4 * L * L)):
                 polys.append((dist2_poly(m, centre, MQ.rational(4 * L * L)),
                               ("pattern", f"on the circle of layer {L}")))
     # the paper layer orders R about R's own SEC centre: when the pattern holds robots,
@@ -373,7 +370,7 @@ def critical_roots(piece, world, mover: int, centre, sec_r: bool = False) -> lis
         else:
             polys += sec_r_polys
     for k, q in static.items():
-        if reach(piece, q)[0] <= 2:
+        if may_come_within(piece, q, MQ.rational(4)):
             polys.append((dist2_poly(m, q, MQ.rational(4)),
                           ("pattern", f"touching robot {k}")))
     for poly, what in _sec_family(m, static, "SEC of all", sec):

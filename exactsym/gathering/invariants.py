@@ -395,11 +395,41 @@ class Checker:
             if defects:
                 raise Violation("I8", t, [i], "; ".join(defects))
         if (rob.role or "").startswith("leader") and self._on("I10"):
-            if i not in pat.robots:
+            if rob.cut:
+                self._cut_progress(world, i, t, pat)
+            elif i not in pat.robots:
                 raise Violation("I10", t, [i], f"leader {i} arrived at "
                                 f"{g.fmt_point(rob.pos)} but is not in the recognised pattern "
                                 f"about {g.fmt_point(centre)}: P did not grow")
         self.in_pattern |= set(pat.robots)
+
+    def _cut_progress(self, world, i, t, pat):
+        """I10 after a leader move the adversary ended early (non-rigid, after at least
+        delta): the progress measure (|R|, the leader's remaining path) decreased when P
+        grew, or when a fresh Look plans the same leader to the same target (the rest of
+        its path: at least delta shorter).  Anything else (another mover, another
+        target) gives no decrease: the adversary could cut every move there
+        (``docs/gathering.md``, "Progress")."""
+        if i in pat.robots:
+            return
+        rob = world.robots[i]
+        d, plan = world.fresh_plan(IDENTITY)
+        if d.status == "undecided":
+            self.undecided_fresh += 1
+            return
+        mine = plan.get(i)
+        try:
+            same = mine is not None and mine[0].startswith("leader") and \
+                world.home.same_point(mine[1], rob.target)
+        except ValueError:
+            self.undecided_fresh += 1
+            return
+        if not same:
+            raise Violation("I10", t, sorted(set(plan) | {i}), f"the adversary ended leader "
+                            f"{i}'s move at {g.fmt_point(rob.pos)}, at least delta along its "
+                            f"path to {g.fmt_point(rob.target)}; a fresh Look there plans "
+                            f"{_plan_text(plan)} ({d.status}): the progress measure "
+                            f"(|R|, the leader's remaining path) does not decrease")
 
 
 def critical_points(piece, centre, world, mover: int) -> list:

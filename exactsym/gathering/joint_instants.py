@@ -66,7 +66,7 @@ from ..exact.algebraic.polynomials import pmul, pscale, psub
 from ..exact.algebraic.roots import roots_of
 from ..exact.multiquadratic import MQ
 from . import geometry as g
-from .motion import may_leave, motion_of, reach
+from .motion import may_be_at, may_leave, motion_of
 from .point_sets import hull_indices
 from .joint_relations import (const, contact_poly, incircle_poly, ray_poly, rel, right_poly,
                               sq, still, tie_poly)
@@ -109,9 +109,8 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
     for c in sorted(centres, key=lambda p: (str(p[0]), str(p[1]))):
         polys += pairs_about(motions, movers, c, "C")
         for i in movers:
-            lo, hi = reach(pieces[i], c)
             for L in range(1, top + 1):
-                if lo <= 2 * L <= hi:
+                if may_be_at(pieces[i], c, MQ.rational(4 * L * L)):
                     u, v = rel(motions[i], c)
                     d2 = pmul(motions[i].d, motions[i].d)
                     polys.append((psub(sq(u, v), pscale(d2, MQ.rational(4 * L * L))),

@@ -13,13 +13,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from flint import arb, ctx
+
 from ..exact.algebraic.polynomials import padd, pmul, pscale, psub, trim
 from ..exact.algebraic.roots import roots_in_unit
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 
 __all__ = ["Motion", "motion_of", "rel", "dist2_poly", "cross_poly", "dot_poly",
-           "point_param", "may_leave", "reach"]
+           "point_param", "may_leave", "may_be_at", "may_come_within", "reach_decided"]
 
 ONE = MQ.rational(1)
 
@@ -99,23 +101,104 @@ def may_leave(m: Motion, c, r2) -> bool:
     return sum(e, MQ()).sign() > 0 or e[0].sign() > 0 or bool(roots_in_unit(e))
 
 
-def reach(piece, x) -> tuple:
-    """Floats ``(lo, hi)`` with ``lo <= |p - x| <= hi`` for every point p of the piece,
-    widened by a margin far above the floats' error (1e-6 relative, 1e-6 absolute): they
-    only choose which polynomials to build (a layer, a tie or a contact outside the range
-    has no root), never decide an instant."""
-    def f(v):
-        return float(v)
+#: Working precision of the reach filters' balls (bits).
+REACH_PREC = 128
+
+
+def may_be_at(piece, x, r2) -> bool:
+    """Can the mover be exactly at squared distance ``r2`` from ``x`` at some instant of
+    ``piece``?  A superset test (False only when it surely is not): a relation left out
+    on False has no root inside the piece.  :func:`reach_decided` says how."""
+    return reach_decided(piece, x, r2, within=False)[0]
+
+
+def may_come_within(piece, x, r2) -> bool:
+    """Can the mover come to squared distance at most ``r2`` from ``x`` on ``piece``?"""
+    return reach_decided(piece, x, r2, within=True)[0]
+
+
+class _Straddle(Exception):
+    """A ball that cannot settle a comparison: the exact numbers must."""
+
+
+def reach_decided(piece, x, r2, within: bool) -> tuple:
+    """``(answer, "ball" | "exact")``: :func:`may_come_within` (``within``) or
+    :func:`may_be_at`, and which arithmetic settled it.
+
+    Segment ``a -> b``: the squared distance to ``x`` is a convex quadratic in the
+    parameter, so over the segment it fills ``[lo2, hi2]``, ``hi2 = max(|a-x|^2,
+    |b-x|^2)``, ``lo2`` at the clamped foot of the perpendicular: ``|a-x|^2`` when
+    ``t = dot(x-a, b-a) <= 0``, ``|b-x|^2`` when ``t >= |b-a|^2``, else ``cross(x-a,
+    b-a)^2 / |b-a|^2``.  Arc about ``c``, radius ``r``: its points lie on the circle,
+    whose distances to ``x`` (``d = |c - x|``) fill ``[|d - r|, d + r]`` (a superset of
+    the arc's); with ``D = d^2``, ``R = r^2``, ``s = D + R - r2``: ``sqrt(r2)`` lies in it
+    iff ``|s| <= 2 sqrt(D R)`` iff ``s^2 <= 4 D R`` (the triangle inequality), and
+    ``|d - r| <= sqrt(r2)`` iff ``s <= 0`` or ``s^2 <= 4 D R``: no square root.
+
+    The filter: the same formulas on Arb balls of the coordinates (``enclosure``, 128
+    bits); interval arithmetic keeps every exact value inside its ball, so a comparison
+    whose gap ball lies on one side of 0 is the exact comparison's answer.  A gap ball
+    that meets 0 (an equality, or too close to tell) raises, and the whole test is done
+    again on the exact numbers.  (The float reach this replaces widened by a fixed 1e-6:
+    no proof covered numbers of large magnitude or a distance within 1e-6 of a layer.)"""
+    try:
+        with ctx.workprec(REACH_PREC):
+            ball = lambda p: (p[0].enclosure(REACH_PREC), p[1].enclosure(REACH_PREC))
+            return _reach(piece, ball, ball(x), r2.enclosure(REACH_PREC), within,
+                          _ball_le, arb(0)), "ball"
+    except _Straddle:
+        return _reach(piece, lambda p: p, x, r2, within, _exact_le, MQ()), "exact"
+
+
+def _reach(piece, conv, x, r2, within, le, zero) -> bool:
     if isinstance(piece, g.Segment):
-        a, b = piece.start, piece.end
-        ax, ay, bx, by, qx, qy = (f(a[0]), f(a[1]), f(b[0]), f(b[1]), f(x[0]), f(x[1]))
-        dx, dy = bx - ax, by - ay
-        den = dx * dx + dy * dy
-        t = 0.0 if den == 0 else min(1.0, max(0.0, ((qx - ax) * dx + (qy - ay) * dy) / den))
-        lo = ((ax + t * dx - qx) ** 2 + (ay + t * dy - qy) ** 2) ** 0.5
-        hi = max(((ax - qx) ** 2 + (ay - qy) ** 2) ** 0.5, ((bx - qx) ** 2 + (by - qy) ** 2) ** 0.5)
-    else:
-        d = f(g.dist2(piece.centre, x)) ** 0.5
-        r = f(g.dist2(piece.start, piece.centre)) ** 0.5
-        lo, hi = abs(d - r), d + r
-    return lo * (1 - 1e-6) - 1e-6, hi * (1 + 1e-6) + 1e-6
+        a, b = conv(piece.start), conv(piece.end)
+        sa, sb = _d2(a, x), _d2(b, x)
+        d, v = _sub(b, a), _sub(x, a)
+        dd, t = _dot(d, d), _dot(v, d)
+        if le(dd, zero):                        # a zero-length piece: one point
+            lo = sa
+        elif le(t, zero):
+            lo = sa
+        elif le(dd, t):
+            lo = sb
+        else:
+            c = _cross(v, d)
+            lo = c * c / dd
+        return le(lo, r2) and (within or le(r2, sa) or le(r2, sb))
+    c = conv(piece.centre)
+    D, R = _d2(c, x), _d2(conv(piece.start), c)
+    s = D + R - r2
+    if within and le(s, zero):
+        return True
+    return le(s * s, 4 * D * R)
+
+
+def _ball_le(u, v) -> bool:
+    gap = v - u
+    if gap >= 0:
+        return True
+    if gap < 0:
+        return False
+    raise _Straddle
+
+
+def _exact_le(u, v) -> bool:
+    return (v - u).sign() >= 0
+
+
+def _sub(p, q):
+    return (p[0] - q[0], p[1] - q[1])
+
+
+def _dot(p, q):
+    return p[0] * q[0] + p[1] * q[1]
+
+
+def _cross(p, q):
+    return p[0] * q[1] - p[1] * q[0]
+
+
+def _d2(p, q):
+    w = _sub(p, q)
+    return _dot(w, w)

@@ -124,6 +124,7 @@ class RobotState:
     target: tuple | None = None                 # final point of the planned path
     centre: tuple | None = None                 # C at the Look (world frame)
     r_set: frozenset = frozenset()              # R at the Look (world indices)
+    cut: bool = False                           # the adversary ended the move early
 
     @property
     def busy(self) -> bool:
@@ -255,7 +256,7 @@ class World:
         if end:
             if (g.dist2(rob.start, rob.pos) - MQ.rational(self.delta) ** 2).sign() < 0:
                 raise ValueError(f"robot {i} cannot be stopped before delta")
-            rob.path = []
+            rob.path, rob.cut = [], bool(rob.path)     # cut: short of the target
         self.log.append(Step(self.events, i, "advance", (done,)))
         if self.checker is not None:
             with self.home.scratch():   # fresh Looks: hypothetical
@@ -265,6 +266,7 @@ class World:
                 with self.home.scratch():   # fresh Looks: hypothetical
                     self.checker.after_arrival(self, i)
             rob.role, rob.kind, rob.look_index, rob.target = None, "", None, None
+            rob.cut = False
 
     def advance_together(self, moves):
         """Several robots move at once: ``moves`` is ``[(robot, stop, end), ...]`` with
@@ -282,7 +284,7 @@ class World:
             if end and self.rigid:
                 raise ValueError("a rigid move cannot be stopped early")
         self.events += 1
-        done = {}
+        done, cut = {}, {}
         for i, stop, end in moves:
             rob = self.robots[i]
             piece = rob.path[0]
@@ -296,9 +298,11 @@ class World:
                         MQ.rational(self.delta) ** 2).sign() < 0:
                 raise ValueError(f"robot {i} cannot be stopped before delta")
             done[i] = (done[i], [] if end else new)
+            cut[i] = end and bool(new)
         for i, (piece, rest) in done.items():
             rob = self.robots[i]
             rob.pos, rob.path = piece.final, rest
+            rob.cut = cut[i]
             self.log.append(Step(self.events, i, "advance", (piece,)))
         if self.checker is not None:
             with self.home.scratch():   # fresh Looks: hypothetical
@@ -318,6 +322,7 @@ class World:
                     with self.home.scratch():   # fresh Looks: hypothetical
                         self.checker.after_arrival(self, i)
                 rob.role, rob.kind, rob.look_index, rob.target = None, "", None, None
+                rob.cut = False
 
     def busy(self) -> list:
         return [i for i, r in enumerate(self.robots) if r.busy]
