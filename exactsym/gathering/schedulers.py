@@ -34,7 +34,7 @@ from . import geometry as g
 from .invariants import Checker, Violation
 from .pattern import recognise
 from .robot import Readings
-from .world import IDENTITY, Frame, World
+from .world import IDENTITY, MIRROR, Frame, World
 
 SCHEDULERS = ("centralised", "fsync", "ssync", "async")
 
@@ -45,7 +45,9 @@ class TraceMismatch(Exception):
 
 @dataclass
 class Result:
-    outcome: str                  # gathered | stalled | violated | not-possible | undecided | max-events
+    # gathered | stalled | violated | not-possible | undecided | undecided-at-budget |
+    # max-events  (docs/gathering.md, "Outcomes")
+    outcome: str
     detail: str
     events: int
     looks: int
@@ -76,6 +78,35 @@ class _Run:
         self.actions: list = []
         self.progress = progress
         self.last_decision = None
+        # exact state key -> (event, number of actions) when it was first seen
+        self.seen: dict = {}
+        self.cycle: str | None = None     # the first fair cycle found: its description
+
+    def note_state(self):
+        """Remember the world's state (nobody busy) and, the first time it is exactly
+        one seen before (``World.state_key``) with every robot having acted (Looked or
+        moved) in between, keep that fair cycle as ``self.cycle``: the adversary could
+        play it forever (the same frames, stops and order: the robots are oblivious and
+        their Compute is a function of the snapshot in the frame), so the run need
+        never gather.  The run goes on (its events stay those of a run without the
+        record); the budget check (:func:`_stall`) reads the proof."""
+        w = self.world
+        if self.cycle is not None or w.busy():
+            return
+        key = w.state_key()
+        if key is None:
+            return
+        if key not in self.seen:
+            self.seen[key] = (w.events, len(self.actions))
+            return
+        event, start = self.seen[key]
+        acted = set()
+        for act in self.actions[start:]:
+            acted |= {act["robot"]} if "robot" in act else {m[0] for m in act["moves"]}
+        if len(acted) == w.n:
+            self.cycle = (f"a cycle: the state after event {w.events} is exactly the state "
+                          f"after event {event} (every centre, nobody busy) and every robot "
+                          "acted in between; the adversary can repeat it forever")
 
     def look(self, i, frame):
         self.actions.append({"a": "look", "robot": i, "frame": frame.as_list()})
@@ -154,7 +185,8 @@ def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Re
 
 
 def _terminal(world: World):
-    """When nobody is busy: "gathered", "not-possible", "undecided" or None (go on)."""
+    """When nobody is busy: "gathered", "not-possible", "undecided", a proved "stalled"
+    (:func:`no_mover_in_any_frame`) or None (go on)."""
     d = _status(world)
     if d.status == "terminated":
         return "gathered", f"all {world.n} robots are in the pattern"
@@ -163,16 +195,50 @@ def _terminal(world: World):
     if d.status == "undecided":
         return "undecided", d.detail
     if d.status == "stay":
-        return "stalled", d.detail
+        return no_mover_in_any_frame(world, d)
     return None
 
 
-def _stall(world: World, idle_rounds: int, leader_free: int):
+def no_mover_in_any_frame(world: World, d=None):
+    """``("stalled", detail)`` when nobody is busy and no robot plans a move in any
+    frame, else None.  A Compute sees the snapshot up to a similarity, so its plan
+    depends on the frame only through the frame's handedness (what I9 checks at every
+    Look against the adversary's frames): a Look in the world's frame and one in the
+    reflected frame stand for every frame.  Both must plan no move with R not empty."""
+    d = d if d is not None else _status(world)
+    if d.status != "stay":
+        return None
+    m = world.fresh_decision(MIRROR)
+    if m.status != "stay":
+        return None
+    return "stalled", (f"no robot plans a move in any frame (the world's and the reflected "
+                       f"one; R not empty): {d.detail}")
+
+
+def _stall(r: _Run, idle_rounds: int, leader_free: int):
+    """After a round, past the budget (two idle rounds in the adversary's frames, or
+    3n + 10 moves without the pattern growing): a proved stall (no mover in any frame,
+    or a fair cycle seen during the run), else "undecided-at-budget": not a proof
+    either way.  Before the budget: None (go on)."""
+    world = r.world
+    r.note_state()
     if idle_rounds >= 2:
-        return "stalled", "a round in which every robot Looked and none moved, R not empty"
+        if not world.busy():
+            proved = no_mover_in_any_frame(world)
+            if proved:
+                return proved
+        if r.cycle is not None:
+            return "stalled", r.cycle
+        return "undecided-at-budget", ("a round in which every robot Looked in the "
+                                       "adversary's frames and none moved, but a Look in the "
+                                       "world's or the reflected frame plans a move")
     if leader_free > 3 * world.n + 10:
-        return "stalled", (f"{leader_free} moves in a row without the pattern growing "
-                           "(MakeAsym / Make_SymToAsym moves repeat: progress, I10)")
+        if r.cycle is not None:
+            return "stalled", r.cycle
+        return "undecided-at-budget", (
+            f"{leader_free} moves in a row without the pattern growing and no state "
+            "repeated (MakeAsym / Make_SymToAsym moves: progress, I10, is not shown; "
+            "neither is a stall)")
     return None
 
 
@@ -195,7 +261,7 @@ def _centralised(r: _Run, rng, reflections):
                 since_growth = 0 if role.startswith("leader") else since_growth + 1
                 break
         idle_rounds = 0 if moved else idle_rounds + 1
-        stall = _stall(w, idle_rounds, since_growth)
+        stall = _stall(r, idle_rounds, since_growth)
         if stall:
             return stall
 
@@ -237,9 +303,9 @@ def _synchronous(r: _Run, rng, reflections, subset: bool):
         if movers:
             grew = any(x.startswith("leader") for x in roles)
             since_growth = 0 if grew else since_growth + 1
-        elif not subset:
-            return "stalled", "every robot Looked and none moved, R not empty"
-        stall = _stall(w, 0, since_growth)
+        # nobody moved in the adversary's frames although a Look in the world's or the
+        # reflected one plans a move (``_terminal``): no proof of a stall, go on
+        stall = _stall(r, 0, since_growth)
         if stall:
             return stall
 
@@ -273,17 +339,15 @@ def _ssync(r, rng, reflections):
 
 def _async(r: _Run, rng, reflections):
     w = r.world
-    since_growth, quiet = 0, 0
+    since_growth = 0
     while True:
         if not w.busy():
+            # a stall is proved by ``_terminal`` (no mover in any frame) or a fair
+            # cycle (``_stall``); a Look that plans nothing in the adversary's frame is
+            # no proof
             end = _terminal(w)
             if end:
                 return end
-            d = _status(w)
-            if d.status != "move":
-                quiet += 1
-                if quiet > 2:
-                    return "stalled", "nobody moves while R is not empty"
         i = rng.randrange(w.n)
         rob = w.robots[i]
         if rob.busy:
@@ -296,7 +360,7 @@ def _async(r: _Run, rng, reflections):
                     since_growth = 0 if grew else since_growth + 1
         else:
             r.look(i, random_frame(rng, reflections))
-        stall = _stall(w, 0, since_growth)
+        stall = _stall(r, 0, since_growth)
         if stall:
             return stall
 

@@ -327,3 +327,20 @@ class World:
     def busy(self) -> list:
         return [i for i, r in enumerate(self.robots) if r.busy]
 
+    def state_key(self):
+        """An exact key of the state the robots' future depends on: every centre and
+        every pending path (the robots are oblivious: nothing else), or None when a
+        number is not multiquadratic (tower numbers of two Looks are not compared, even
+        as keys).  Two equal keys are the same state, exactly: from a repeated state
+        the adversary can repeat its choices forever (the Compute is a pure function of
+        the snapshot in the frame the adversary picks)."""
+        key = []
+        for r in self.robots:
+            nums = list(r.pos)
+            for pc in r.path:
+                nums += [*pc.start, *pc.end] + ([*pc.centre] if isinstance(pc, g.Arc) else [])
+            if not all(is_multiquadratic(x) for x in nums):
+                return None
+            key.append((r.pos, tuple(r.path)))
+        return tuple(key)
+
