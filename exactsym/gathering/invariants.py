@@ -407,7 +407,8 @@ class Checker:
         """I10 after a leader move the adversary ended early (non-rigid, after at least
         delta): the progress measure (|R|, the leader's remaining path) decreased when P
         grew, or when a fresh Look plans the same leader to the same target (the rest of
-        its path: at least delta shorter).  Anything else (another mover, another
+        its path: at least delta shorter; with an epsilon part the same leader, as I3
+        compares plans).  Anything else (another mover, another
         target) gives no decrease: the adversary could cut every move there
         (``docs/gathering.md``, "Progress")."""
         if i in pat.robots:
@@ -417,11 +418,11 @@ class Checker:
         if d.status == "undecided":
             self.undecided_fresh += 1
             return
-        mine = plan.get(i)
-        try:
-            same = mine is not None and mine[0].startswith("leader") and \
-                world.home.same_point(mine[1], rob.target)
-        except ValueError:
+        # the same leader, to the same target where the move is FormGPattern's alone
+        # (a move with an epsilon part, A3 = all, has the mover's own target: I3's rule)
+        same = i in plan and _same_plan({i: plan[i]}, {i: (rob.role, rob.target)},
+                                        world.home)
+        if same is None:
             self.undecided_fresh += 1
             return
         if not same:

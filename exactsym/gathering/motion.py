@@ -6,7 +6,9 @@ rational rotation whose half-angle tangent is ``f`` times that of the whole arc 
 ``Arc.at`` does), ``D = 1 + T^2 f^2``.  A relation between the mover and fixed points (a
 distance, a side of a line) is then a polynomial in ``f`` with exact coefficients
 (:mod:`~exactsym.exact.algebraic.polynomials`) whose roots are the critical instants
-(:mod:`.instants`, :mod:`.joint_instants`).
+(:mod:`.instants`, :mod:`.joint_instants`).  Which relations can have a root at all is
+told by :func:`may_be_at` and :func:`may_come_within`: Arb balls with a proof, the exact
+numbers when a ball cannot tell.
 """
 
 from __future__ import annotations
