@@ -240,6 +240,12 @@ def _system_and_values(exprs: list[Node], owners, turns, source: str):
             spec, slot = owners[index]
             raise _locate(err, spec, slot, source) from None
         raise err.located(source) from None
+    except InputError as err:     # the numbers together need too large a field: the
+        # refusal is of the whole list, located at its first point (docs/format.md
+        # promises file:line:col for every input error)
+        spec = owners[0][0] if owners else None
+        raise err.located(source, getattr(spec, "line", None),
+                          getattr(spec, "column", None)) from None
     if isinstance(system, RationalSystem) and all(type(e) is Const for e in exprs):
         return system, [fmpq(e.value.numerator, e.value.denominator) for e in exprs]
     values = []
