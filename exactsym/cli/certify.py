@@ -26,7 +26,8 @@ def add_certify_arguments(certify) -> None:
 
 
 def add_verify_arguments(verify) -> None:
-    verify.add_argument("certificate", metavar="CERT.json")
+    verify.add_argument("certificate", metavar="CERT.json",
+                        help="a certificate written by exactsym certify")
 
 
 #: cos/sin needing a dense Q(zeta_M) of a larger degree are certified in the sparse Q(zeta_N)
