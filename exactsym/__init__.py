@@ -10,7 +10,7 @@ immutable values.
 * :func:`analyse` -- everything ``exactsym check`` computes, once: the SEC and the levels,
   the ground truth, the paper's verdicts and the audit (:class:`Analysis`);
 * :func:`symmetry_group` -- the ground truth alone (:class:`SymmetryGroup`);
-* :func:`plot` -- a picture (needs the ``plot`` extra, matplotlib);
+* :func:`plot` -- a picture (matplotlib, imported when called);
 * :func:`report_text` / :func:`report_json` -- the two renderings of an analysis;
 * :func:`certify` -- a certificate of the symmetry verdict, checked by the standalone checker;
 * :func:`gather` -- the paper's gathering algorithm, simulated exactly;
@@ -30,6 +30,7 @@ certificate checker) loads nothing else and ``exactsym --version`` stays fast; `
 imports matplotlib only when it is called.
 """
 
+import sys
 from importlib import import_module
 from types import ModuleType
 
@@ -139,8 +140,8 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
 
     ``show_paper`` adds the lines of symmetry the paper's tests report and the paper's
     leader; ``show_audit`` the witness of each statement of the paper that fails here.
-    Raises ``exactsym.pictures.PlotUnavailable`` without matplotlib (the ``plot``
-    extra).  Everything drawn is in ``docs/pictures.md``
+    Raises ``exactsym.pictures.PlotUnavailable`` without matplotlib (a dependency of
+    exactsym).  Everything drawn is in ``docs/pictures.md``
     (:func:`exactsym.pictures.plot` does the work).
 
     >>> import os, tempfile
@@ -168,12 +169,25 @@ class _CallablePackage(ModuleType):
 
 #: package -> the function it is called as
 _CALLS = {__name__ + ".sweep": _sweep, __name__ + ".certify": _certify}
-for _package in (import_module(".sweep", __name__), import_module(".certify", __name__)):
-    _package.__class__ = _CallablePackage       # their __init__ modules import nothing
-del _package
+
+
+class _Package(ModuleType):
+    """``exactsym`` itself: when the import system binds the subpackage ``sweep`` or
+    ``certify`` to it (on their first import, not before: ``import exactsym.checker`` loads
+    nothing else), the subpackage becomes callable."""
+
+    def __setattr__(self, name, value):
+        if isinstance(value, ModuleType) and getattr(value, "__name__", None) in _CALLS:
+            value.__class__ = _CallablePackage
+        super().__setattr__(name, value)
+
+
+sys.modules[__name__].__class__ = _Package
 
 
 def __getattr__(name):
+    if f"{__name__}.{name}" in _CALLS:       # sweep, certify: imported (and made callable)
+        return import_module("." + name, __name__)
     if name in _EXPORTS:
         value = getattr(import_module(_EXPORTS[name], __name__), name)
         globals()[name] = value
@@ -182,4 +196,4 @@ def __getattr__(name):
 
 
 def __dir__():
-    return sorted(set(globals()) | set(_EXPORTS))
+    return sorted(set(globals()) | set(_EXPORTS) | {"certify", "sweep"})
