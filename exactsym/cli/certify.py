@@ -64,6 +64,19 @@ def _certificate(parsed, refutes):
         raise InputError(f"{parsed.source}: cannot certify: {err}") from None
 
 
+def checked_certificate(config) -> dict:
+    """The certificate of ``config``'s verdict as JSON data, accepted by the standalone
+    checker (``exactsym.certify(...)`` of the API); AssertionError if the checker refuses
+    it (the solver's verdict failed the independent check: a bug)."""
+    from .. import checker
+    from ..certify.certificate import make_certificate
+    cert = json.loads(json.dumps(make_certificate(config)))
+    ok, message = checker.verify_certificate(cert)
+    if not ok:
+        raise AssertionError(f"the certificate does not verify: {message} (a bug)")
+    return cert
+
+
 def run_certify(args) -> int:
     from .. import checker
     from ..geometry.configuration import no_cycle_collection
