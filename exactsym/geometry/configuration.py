@@ -267,7 +267,7 @@ def _needs_reading(value) -> bool:
 def _tree(value, index: int, axis: str, source: str) -> Node:
     """The expression tree of one number handed to :meth:`Configuration.from_points`."""
     from fractions import Fraction
-    from flint import fmpz
+    from ..exact import as_fmpq
     from ..io.expr import parse_expression
     from ..io.sympy_trees import is_sympy, tree_of_sympy
     where = f"point {index}, {axis}"
@@ -282,13 +282,11 @@ def _tree(value, index: int, axis: str, source: str) -> Node:
     except ExpressionError as err:
         at = f" (at character {err.offset + 1})" if isinstance(value, str) else ""
         raise InputError(f"{where} = {value!r}: {err.message}{at}", source) from None
-    if isinstance(value, (int, fmpz)):
-        return Const(Fraction(int(value)))
-    if isinstance(value, Fraction):
-        return Const(value)
-    if isinstance(value, fmpq):
-        return Const(Fraction(int(value.p), int(value.q)))
-    raise TypeError(f"{where}: not an exact number: {value!r}")
+    try:
+        q = as_fmpq(value)                  # int, Fraction, fmpz, fmpq
+    except TypeError:
+        raise TypeError(f"{where}: not an exact number: {value!r}") from None
+    return Const(Fraction(int(q.p), int(q.q)))
 
 
 def _read_values(pts: list, source: str):

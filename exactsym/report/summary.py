@@ -17,6 +17,7 @@ import re
 from flint import fmpq
 
 from ..analysis import Analysis
+from ..exact.number import is_plain_rational
 from ..exact.text_numbers import annotated, approx, is_irrational, listed, number, square_root
 from . import json_form      # called through the module: a test adds fields to the JSON form
 
@@ -118,7 +119,7 @@ HUGE_BITS = 10_000
 def _radius(r2) -> str:
     """A radius from its exact square (:func:`square_root`); a huge or tiny rational one by
     its decimal, from the exact value, and the length of the exact text."""
-    if isinstance(r2, fmpq) and max(int(r2.p).bit_length(), int(r2.q).bit_length()) > HUGE_BITS:
+    if is_plain_rational(r2) and max(int(r2.p).bit_length(), int(r2.q).bit_length()) > HUGE_BITS:
         return (f"≈ {approx(r2, sqrt=True)} (exact: sqrt of {len(str(r2)):,} characters, "
                 "in --json)")
     return square_root(r2)
@@ -504,7 +505,7 @@ def _float_friendly(points) -> bool:
     rationals only)."""
     for p in points:
         for x in p:
-            if isinstance(x, fmpq) and x != 0:
+            if is_plain_rational(x) and x != 0:
                 bits = int(abs(x.p)).bit_length() - int(x.q).bit_length()
                 if abs(bits) > FLOAT_BITS:
                     return False
