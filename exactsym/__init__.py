@@ -10,8 +10,13 @@ immutable values.
 * :func:`analyse` -- everything ``exactsym check`` computes, once: the SEC and the levels,
   the ground truth, the paper's verdicts and the audit (:class:`Analysis`);
 * :func:`symmetry_group` -- the ground truth alone (:class:`SymmetryGroup`);
-* :func:`plot` -- a picture (needs the ``plot`` extra, matplotlib);
-* :func:`report_text` / :func:`report_json` -- the two renderings of an analysis.
+* :func:`plot` -- a picture (matplotlib, imported when called);
+* :func:`report_text` / :func:`report_json` -- the two renderings of an analysis;
+* :func:`certify` -- a certificate of the symmetry verdict, checked by the standalone checker;
+* :func:`gather` -- the paper's gathering algorithm, simulated exactly;
+* :func:`sweep` -- a whole family of configurations, summarised;
+* :func:`to_sympy` -- exact numbers, points and configurations out as sympy numbers
+  (``Configuration.from_points`` reads sympy numbers and strings in).
 
 >>> from exactsym import load, analyse, symmetry_group
 >>> a = analyse(load("cases/examples/chiral-nine-gon.toml"))
@@ -25,7 +30,9 @@ certificate checker) loads nothing else and ``exactsym --version`` stays fast; `
 imports matplotlib only when it is called.
 """
 
+import sys
 from importlib import import_module
+from types import ModuleType
 
 from .version import __version__
 
@@ -37,9 +44,87 @@ _EXPORTS = {
     "report_text": ".report.check", "report_json": ".report.check",
     "near_symmetry_hint": ".truth.near_symmetry",
     "InputError": ".errors",
+    "to_sympy": ".geometry.configuration",
 }
 
-__all__ = sorted(_EXPORTS) + ["plot", "__version__"]
+__all__ = sorted(_EXPORTS) + ["certify", "gather", "plot", "sweep", "__version__"]
+
+
+def _config(config_or_path):
+    if isinstance(config_or_path, (str, bytes)) or hasattr(config_or_path, "__fspath__"):
+        from .geometry.configuration import load
+        return load(config_or_path)
+    return config_or_path
+
+
+def _certify(config_or_path) -> dict:
+    """A certificate of the ground truth's verdict (group, orderability) on a
+    configuration (or a file name): a JSON-ready dict that :mod:`exactsym.checker` (the
+    standard library only) has accepted before it is returned (``docs/certificates.md``).
+    Raises ``exactsym.certify.certificate.CertificateError`` when none can be made.
+
+    >>> from exactsym import Configuration, certify      # this function, called as certify
+    >>> from exactsym.checker import verify_certificate
+    >>> cert = certify(Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -1)]))
+    >>> cert["claim"]["group"], cert["claim"]["orderable"], verify_certificate(cert)[0]
+    ('D4', False, True)
+    """
+    from .cli.certify import checked_certificate       # the runner of the checker
+    return checked_certificate(_config(config_or_path))
+
+
+def gather(config_or_path, scheduler: str = "async", seed: int = 0,
+           algorithm: str = "paper", readings=(), max_events: int = 2000):
+    """Simulate GatheringPattern and FormGPattern (``algorithm="corrected"``: the corrected
+    variant, not the paper's) on fat robots at rational points, under the adversarial
+    ``scheduler`` (``centralised``, ``fsync``, ``ssync``, ``async``) drawing its choices
+    from ``seed``, with every invariant I1..I10 checked (``docs/gathering.md``);
+    ``readings``: the readings of the paper's ambiguous lines (``["A3=all"]``).  Returns
+    the run's result: ``outcome`` (``gathered``, ``violated``, ...), ``violation`` (the
+    statement's label, robots and instant) and ``detail``.
+
+    >>> from exactsym import gather
+    >>> run = gather("cases/gathering/obstacle-beside-path.toml", scheduler="centralised",
+    ...              seed=1, readings=["A3=all"])
+    >>> run.outcome, run.label, sorted(run.violation["robots"])
+    ('violated', 'gather-no-obstacle', [0, 1])
+    >>> gather("cases/gathering/corrected-obstacle-beside-path.toml", "centralised", 1,
+    ...        algorithm="corrected").outcome
+    'gathered'
+    """
+    from .gathering.cases import run_settings, settings_of
+    from .gathering.paper_bridge import read_case
+    if isinstance(config_or_path, (str, bytes)) or hasattr(config_or_path, "__fspath__"):
+        points = read_case(config_or_path)[0]
+    else:
+        points = [tuple(p) for p in config_or_path.points]
+    return run_settings(points, settings_of({
+        "gather_scheduler": scheduler, "gather_seed": seed, "gather_algorithm": algorithm,
+        "gather_readings": list(readings), "gather_max_events": max_events}))
+
+
+def _sweep(family: str, out, what: str = "audit", serial: bool = True, workers: int = 2,
+           resume: bool = False):
+    """Run the analysis ``what`` (``truth``, ``paper``, ``audit``, ``gather``) over every
+    configuration of ``family`` (``roots:M:K``, ``grid:N:K``, ...: ``docs/sweeps.md``),
+    recording each in the results file ``out``; ``serial=False`` runs on ``workers`` of a
+    local Dask cluster (the ``sweep`` extra).  Returns the summary: per statement, the
+    configurations where its hypotheses hold, where it fails, and the smallest
+    counterexample.
+
+    >>> import os, tempfile
+    >>> from exactsym import sweep                      # this function, called as sweep
+    >>> s = sweep("roots:6:<=3", os.path.join(tempfile.mkdtemp(), "r.jsonl"), what="truth")
+    >>> s.configurations, s.groups["D3"]
+    (7, 1)
+    """
+    from .sweep import analysis_bridge as bridge
+    from .sweep.engine import SweepOptions, run_sweep
+    from .sweep.families import parse_family
+    from .sweep.summary import summarise
+    run_sweep(parse_family(family, bridge.file_points), what, out, resume,
+              SweepOptions(workers=workers, serial=serial))
+    return summarise(out)
 
 
 def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bool = False):
@@ -49,8 +134,8 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
 
     ``show_paper`` adds the lines of symmetry the paper's tests report and the paper's
     leader; ``show_audit`` the witness of each statement of the paper that fails here.
-    Raises ``exactsym.pictures.PlotUnavailable`` without matplotlib (the ``plot``
-    extra).  Everything drawn is in ``docs/pictures.md``
+    Raises ``exactsym.pictures.PlotUnavailable`` without matplotlib (a dependency of
+    exactsym).  Everything drawn is in ``docs/pictures.md``
     (:func:`exactsym.pictures.plot` does the work).
 
     >>> import os, tempfile
@@ -65,7 +150,38 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
     return draw(config_or_analysis, path, show_paper=show_paper, show_audit=show_audit)
 
 
+class _CallablePackage(ModuleType):
+    """A subpackage that is also the function of its name: ``exactsym.sweep`` and
+    ``exactsym.certify`` are packages (``exactsym.sweep.engine``) and the API's functions
+    (``exactsym.sweep("roots:6:<=3", "r.jsonl")``).  Importing a submodule binds the
+    package to its parent's attribute, so a plain function of the same name would be
+    replaced by the package after the first such import; one object serves both."""
+
+    def __call__(self, *args, **kw):
+        return _CALLS[self.__name__](*args, **kw)
+
+
+#: package -> the function it is called as
+_CALLS = {__name__ + ".sweep": _sweep, __name__ + ".certify": _certify}
+
+
+class _Package(ModuleType):
+    """``exactsym`` itself: when the import system binds the subpackage ``sweep`` or
+    ``certify`` to it (on their first import, not before: ``import exactsym.checker`` loads
+    nothing else), the subpackage becomes callable."""
+
+    def __setattr__(self, name, value):
+        if isinstance(value, ModuleType) and getattr(value, "__name__", None) in _CALLS:
+            value.__class__ = _CallablePackage
+        super().__setattr__(name, value)
+
+
+sys.modules[__name__].__class__ = _Package
+
+
 def __getattr__(name):
+    if f"{__name__}.{name}" in _CALLS:       # sweep, certify: imported (and made callable)
+        return import_module("." + name, __name__)
     if name in _EXPORTS:
         value = getattr(import_module(_EXPORTS[name], __name__), name)
         globals()[name] = value
@@ -74,4 +190,4 @@ def __getattr__(name):
 
 
 def __dir__():
-    return sorted(set(globals()) | set(_EXPORTS))
+    return sorted(set(globals()) | set(_EXPORTS) | {"certify", "sweep"})

@@ -15,7 +15,8 @@ from ..paper.family_report import paper_json
 
 
 def add_arguments(parser) -> None:
-    parser.add_argument("file")
+    parser.add_argument("file", metavar="FILE",
+                        help="configuration file ('-' for standard input)")
     parser.add_argument("--json", action="store_true", help="one JSON object on standard output")
 
 

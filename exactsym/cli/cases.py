@@ -23,7 +23,9 @@ def run(args) -> int:
 
 
 def add_arguments(parser) -> None:
-    parser.add_argument("directory", nargs="?", default="cases", metavar="DIR")
+    parser.add_argument("directory", nargs="?", default="cases", metavar="DIR",
+                        help="the case library: every .toml/.txt file under DIR "
+                             "(default: cases)")
     parser.add_argument("--lemma", metavar="LABEL", help="only the cases tagged with LABEL")
     parser.add_argument("--labels", action="store_true",
                         help="list every known label with the number of cases tagged with it")

@@ -26,7 +26,8 @@ def add_certify_arguments(certify) -> None:
 
 
 def add_verify_arguments(verify) -> None:
-    verify.add_argument("certificate", metavar="CERT.json")
+    verify.add_argument("certificate", metavar="CERT.json",
+                        help="a certificate written by exactsym certify")
 
 
 #: cos/sin needing a dense Q(zeta_M) of a larger degree are certified in the sparse Q(zeta_N)
@@ -61,6 +62,19 @@ def _certificate(parsed, refutes):
         return make()
     except CertificateError as err:
         raise InputError(f"{parsed.source}: cannot certify: {err}") from None
+
+
+def checked_certificate(config) -> dict:
+    """The certificate of ``config``'s verdict as JSON data, accepted by the standalone
+    checker (``exactsym.certify(...)`` of the API); AssertionError if the checker refuses
+    it (the solver's verdict failed the independent check: a bug)."""
+    from .. import checker
+    from ..certify.certificate import make_certificate
+    cert = json.loads(json.dumps(make_certificate(config)))
+    ok, message = checker.verify_certificate(cert)
+    if not ok:
+        raise AssertionError(f"the certificate does not verify: {message} (a bug)")
+    return cert
 
 
 def run_certify(args) -> int:

@@ -130,15 +130,15 @@ COMMANDS = {
     "replay": ("re-run a gathering trace exactly, event for event",
                _deferred("exactsym.gathering.cli", "add_replay_arguments"),
                _deferred("exactsym.gathering.cli", "run_replay")),
-    "ledger": ("the statement ledger (proofs/): grades, dependencies, docs/audit.md; --check "
-               "re-runs the evidence",
+    "ledger": ("the statement ledger (proofs/, in a checkout): grades and dependencies; "
+               "--check re-runs the evidence, --write regenerates docs/audit.md",
                _deferred("exactsym.ledger.cli", "add_arguments"),
                _deferred("exactsym.ledger.cli", "run")),
     "sweep": ("search a whole family of configurations for counterexamples, serially or "
               "on a Dask cluster (exit 1 when some statement fails)",
               _deferred("exactsym.sweep.cli", "add_arguments"),
               _deferred("exactsym.sweep.cli", "run")),
-    "plot": ("draw a configuration (needs the 'plot' extra: matplotlib)",
+    "plot": ("draw a configuration: robots, SEC, levels, mirrors, leader (svg, png or pdf)",
              _deferred("exactsym.pictures.cli", "add_arguments"),
              _deferred("exactsym.pictures.cli", "run")),
 }
@@ -159,7 +159,7 @@ EXAMPLES = {
                "exactsym gather FILE --scheduler async --seed 3 --trace run.json",
                "exactsym gather FILE --search --reading A3=all"],
     "replay": ["exactsym replay run.json"],
-    "ledger": ["exactsym ledger --check --no-write",
+    "ledger": ["exactsym ledger", "exactsym ledger --check", "exactsym ledger --write",
                "exactsym ledger --sweep r12.evidence.json --save roots_12_le6"],
     "sweep": ["exactsym sweep 'roots:12:<=6' --what audit --workers 2 --out r12.jsonl",
               "exactsym sweep 'grid:4:<=4' --what paper --serial --out g4.jsonl --json",
@@ -271,6 +271,9 @@ def _main(argv: list[str] | None) -> int:
     try:
         try:
             words = sys.argv[1:] if argv is None else argv
+            if not words:                   # `exactsym` alone: what it can do
+                build_parser("").print_help()
+                return EXIT_OK
             only = words[0] if words and words[0] in COMMANDS else None
             args = build_parser(only).parse_args(argv)
         except SystemExit as done:          # --help, --version

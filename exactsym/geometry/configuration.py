@@ -91,8 +91,11 @@ class Configuration:
 
     @classmethod
     def from_points(cls, points: Iterable, system=None, **kw) -> "Configuration":
-        """From exact ``(x, y)`` pairs (``fmpq``, ``int``, ``Fraction`` or field elements);
-        raises :class:`~exactsym.errors.InputError` when two points coincide.
+        """From exact ``(x, y)`` pairs: ``int``, ``Fraction``, ``fmpq``, strings the file
+        format reads (``'1/3'``, ``'sqrt(2)/2'``, ``'cos(2*pi/7)'``), sympy numbers (read
+        by walking their trees, :mod:`exactsym.io.sympy_trees`), or elements of one number
+        field with its ``system``.  Raises :class:`~exactsym.errors.InputError` when two
+        points coincide, for a float (not exact) or an unreadable number.
 
         >>> from fractions import Fraction
         >>> square = Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -1)])
@@ -100,16 +103,38 @@ class Configuration:
         (4, (0, 1))
         >>> Configuration.from_points([(0, 0), (Fraction(1, 2), 0)]).points[1]
         (1/2, 0)
+        >>> import sympy
+        >>> c = Configuration.from_points([(sympy.sqrt(2), 0), (0, "sqrt(2)"), ("-1/3", 0)])
+        >>> c.to_sympy()[:2]
+        ((sqrt(2), 0), (0, sqrt(2)))
+        >>> Configuration.from_points([(0.5, 0), (1, 0)])
+        Traceback (most recent call last):
+        ...
+        exactsym.errors.InputError: <memory>: point 0, x = 0.5: a float is not exact; write it as a string ('0.5') or a Fraction
         """
         from ..exact import RationalSystem, as_fmpq
-        pts = []
-        for x, y in points:
-            if system is None:
-                x, y = as_fmpq(x), as_fmpq(y)
-            pts.append((x, y))
+        pts = [tuple(p) for p in points]
+        if system is None and any(_needs_reading(v) for p in pts for v in p):
+            system, pts = _read_values(pts, kw.get("source", "<memory>"))
+        elif system is None:
+            pts = [(as_fmpq(x), as_fmpq(y)) for x, y in pts]
         config = cls(points=pts, system=system or RationalSystem(), **kw)
         check_distinct(config)
         return config
+
+    def to_sympy(self) -> tuple:
+        """The points as pairs of sympy numbers (:func:`to_sympy`)."""
+        return tuple((to_sympy(x), to_sympy(y)) for x, y in self.points)
+
+    def __repr__(self) -> str:
+        what = f"{self.n} {'fat robots' if self.model == 'fat' else 'points'}"
+        name = f" {self.name!r}" if self.name else ""
+        shown = ""
+        if "points" in self.__dict__ and self.n <= 6:      # never computed for a repr
+            texts = [f"({to_text(x)}, {to_text(y)})" for x, y in self.points]
+            if sum(map(len, texts)) <= 120:
+                shown = ": " + ", ".join(texts)
+        return f"<Configuration{name}: {what} from {self.source}{shown}>"
 
     @cached_property
     def system(self):
@@ -211,6 +236,77 @@ class Configuration:
         return new
 
 
+def to_text(x) -> str:
+    """The exact text of a number (the file format's syntax: it reads back)."""
+    from ..exact import number_text
+    return number_text(x)
+
+
+def to_sympy(value):
+    """An exact number, a point or a :class:`Configuration` as sympy numbers, built from
+    the number's exact text (:func:`exactsym.io.sympy_trees.sympy_of_tree`).
+
+    >>> from exactsym import load, to_sympy
+    >>> to_sympy(load("cases/examples/chiral-nine-gon.toml").points[1])
+    (-2, 2*sqrt(3))
+    """
+    from ..io.expr import parse_expression
+    from ..io.sympy_trees import sympy_of_tree
+    if isinstance(value, Configuration):
+        return value.to_sympy()
+    if isinstance(value, tuple):
+        return tuple(to_sympy(v) for v in value)
+    return sympy_of_tree(parse_expression(to_text(value), written=True))
+
+
+def _needs_reading(value) -> bool:
+    from ..io.sympy_trees import is_sympy
+    return isinstance(value, (str, float)) or is_sympy(value)
+
+
+def _tree(value, index: int, axis: str, source: str) -> Node:
+    """The expression tree of one number handed to :meth:`Configuration.from_points`."""
+    from fractions import Fraction
+    from ..exact import as_fmpq
+    from ..io.expr import parse_expression
+    from ..io.sympy_trees import is_sympy, tree_of_sympy
+    where = f"point {index}, {axis}"
+    if isinstance(value, float):
+        raise InputError(f"{where} = {value!r}: a float is not exact; write it as a string "
+                         f"('{value!r}') or a Fraction", source)
+    try:
+        if isinstance(value, str):
+            return parse_expression(value)
+        if is_sympy(value):
+            return tree_of_sympy(value)
+    except ExpressionError as err:
+        at = f" (at character {err.offset + 1})" if isinstance(value, str) else ""
+        raise InputError(f"{where} = {value!r}: {err.message}{at}", source) from None
+    try:
+        q = as_fmpq(value)                  # int, Fraction, fmpz, fmpq
+    except TypeError:
+        raise TypeError(f"{where}: not an exact number: {value!r}") from None
+    return Const(Fraction(int(q.p), int(q.q)))
+
+
+def _read_values(pts: list, source: str):
+    """``(system, points)``: numbers handed to the API evaluated in one number system, as
+    a file's expressions are."""
+    exprs = []
+    for i, p in enumerate(pts):
+        if len(p) != 2:
+            raise InputError(f"point {i}: not an (x, y) pair", source)
+        exprs += [_tree(v, i, axis, source) for v, axis in zip(p, "xy")]
+    try:
+        system = number_system(exprs, ())
+        values = [evaluate(e, system) for e in exprs]
+    except ExpressionError as err:
+        index = getattr(err, "index", None)
+        where = f"point {index // 2}, {'xy'[index % 2]}: " if index is not None else ""
+        raise InputError(where + err.message, source) from None
+    return system, list(zip(values[::2], values[1::2]))
+
+
 def _locate(err: ExpressionError, spec: PointSpec, which: int, source: str) -> InputError:
     column = spec.columns[which] + err.offset if which < len(spec.columns) else spec.column
     return err.located(source, spec.line, column)
@@ -240,6 +336,12 @@ def _system_and_values(exprs: list[Node], owners, turns, source: str):
             spec, slot = owners[index]
             raise _locate(err, spec, slot, source) from None
         raise err.located(source) from None
+    except InputError as err:     # the numbers together need too large a field: the
+        # refusal is of the whole list, located at its first point (docs/format.md
+        # promises file:line:col for every input error)
+        spec = owners[0][0] if owners else None
+        raise err.located(source, getattr(spec, "line", None),
+                          getattr(spec, "column", None)) from None
     if isinstance(system, RationalSystem) and all(type(e) is Const for e in exprs):
         return system, [fmpq(e.value.numerator, e.value.denominator) for e in exprs]
     values = []

@@ -1,9 +1,9 @@
-"""``exactsym ledger [--json] [--check] [--no-write] [--root DIR]`` (also ``python -m
+"""``exactsym ledger [--json] [--check] [--write] [--root DIR]`` (also ``python -m
 exactsym.ledger``).
 
 Loads and validates ``proofs/statements.toml`` (an unknown label exits 2 naming the
-nearest known one), builds the dependency graph, writes ``docs/audit.md`` from it (unless
-``--no-write``), and prints a summary -- or, with ``--json``, ``{"statements": [{"label",
+nearest known one), builds the dependency graph, writes ``docs/audit.md`` from it (only
+with ``--write``: a command that reads should not change the tree), and prints a summary -- or, with ``--json``, ``{"statements": [{"label",
 "kind", "grade", "readings", "uses", "evidence", "rests_on_refuted"}, ...]}``.  Every
 file the evidence names must exist (exit 1 otherwise); ``--check`` also re-runs every
 piece of evidence (exit 1 on any mismatch, each printed on standard error).
@@ -40,20 +40,29 @@ EXIT_OK, EXIT_FALSE, EXIT_INPUT = 0, 1, 2
 
 def find_root(start: Path | None = None) -> Path:
     """The nearest directory at or above ``start`` (default: the working directory)
-    holding proofs/statements.toml, else the source tree this package is in."""
+    holding proofs/statements.toml, else the source tree this package is in (an editable
+    install); raises :class:`InputError` when neither holds it (an installed package
+    outside a checkout has no ledger)."""
     here = (start or Path.cwd()).resolve()
     for d in (here, *here.parents):
         if (d / LEDGER).is_file():
             return d
-    return Path(__file__).resolve().parents[2]
+    tree = Path(__file__).resolve().parents[2]
+    if (tree / LEDGER).is_file():
+        return tree
+    raise InputError(f"no {LEDGER.as_posix()} here or above: run it inside a checkout of "
+                     "exactsym, or name one with --root DIR")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print the ledger as JSON")
     parser.add_argument("--check", action="store_true",
                         help="re-run every piece of evidence (exit 1 on a mismatch)")
+    parser.add_argument("--write", action="store_true",
+                        help="also write docs/audit.md from the ledger (by default nothing "
+                        "is written)")
     parser.add_argument("--no-write", action="store_true",
-                        help="do not write docs/audit.md")
+                        help="write nothing (the default; kept for old scripts)")
     parser.add_argument("--sweep", metavar="EVIDENCE", action="append", default=[],
                         help="a sweep's evidence file (RESULTS.evidence.json): say what it "
                         "finds for each statement and whether the grade agrees")
@@ -135,11 +144,16 @@ def run(args) -> int:
         for p in problems:
             print(f"ledger: {p}", file=sys.stderr)
         return EXIT_FALSE if problems else EXIT_OK
-    if not args.no_write:
+    if args.write and args.no_write:
+        raise InputError("command line: --write and --no-write do not go together")
+    if args.write:
         text = render(ledger, sup, sweep_texts(ledger, root))
         target = root / AUDIT
         if not target.is_file() or target.read_text(encoding="utf-8") != text:
-            target.write_text(text, encoding="utf-8")
+            try:
+                target.write_text(text, encoding="utf-8")
+            except OSError as err:      # a path, a permission, a full disk: exit 2
+                raise InputError(f"cannot write {target}: {err.strerror or err}") from None
     problems = (check_evidence(ledger, root) if args.check
                 else missing_files(ledger, root))
     if args.json:

@@ -45,7 +45,11 @@ def run(args) -> int:
         print(f"exactsym plot: {err}", file=sys.stderr)
         return 2
     except InputError as err:       # the library's: "file:line:col: ..."
-        print(str(err), file=sys.stderr)
+        print(f"exactsym plot: {err}", file=sys.stderr)
+        return 2
+    except OSError as err:          # the picture cannot be written: a path, a permission,
+        # a full disk (reading errors are InputErrors above)
+        print(f"exactsym plot: cannot write {out}: {err.strerror or err}", file=sys.stderr)
         return 2
     print(out)
     return 0

@@ -62,8 +62,8 @@ def matplotlib_modules():
         from matplotlib.figure import Figure
     except ImportError as err:          # pragma: no cover - depends on the environment
         raise PlotUnavailable(
-            "drawing needs matplotlib, which comes with the 'plot' extra: "
-            "pip install 'exactsym[plot]' (or pip install matplotlib)") from err
+            "drawing needs matplotlib, a dependency of exactsym (also the 'plot' extra): "
+            "pip install matplotlib, or from a checkout pip install -e .") from err
     return matplotlib, Figure
 
 

@@ -17,6 +17,7 @@ import re
 from flint import fmpq
 
 from ..analysis import Analysis
+from ..exact.number import is_plain_rational
 from ..exact.text_numbers import annotated, approx, is_irrational, listed, number, square_root
 from . import json_form      # called through the module: a test adds fields to the JSON form
 
@@ -109,6 +110,21 @@ def _short_number(x) -> str:
     return text
 
 
+#: a rational whose numerator or denominator has more bits than this (about 3,000 digits)
+#: has its square root shown by its decimal only: its exact text is long anyway, and
+#: taking square factors out would write integers beyond Python's int-to-text limit
+HUGE_BITS = 10_000
+
+
+def _radius(r2) -> str:
+    """A radius from its exact square (:func:`square_root`); a huge or tiny rational one by
+    its decimal, from the exact value, and the length of the exact text."""
+    if is_plain_rational(r2) and max(int(r2.p).bit_length(), int(r2.q).bit_length()) > HUGE_BITS:
+        return (f"≈ {approx(r2, sqrt=True)} (exact: sqrt of {len(str(r2)):,} characters, "
+                "in --json)")
+    return square_root(r2)
+
+
 def _point(p) -> str:
     return f"({_short_number(p[0])}, {_short_number(p[1])})"
 
@@ -162,7 +178,7 @@ def _head(analysis: Analysis, report: dict) -> list[str]:
         title,
         _row("robots", f"{config.n:,} {kind}; coordinates {field_text}"),
         _row("SEC", f"smallest enclosing circle: centre C = {_point(levels.sec.centre)}, "
-                    f"radius {square_root(levels.sec.radius_squared)}"),
+                    f"radius {_radius(levels.sec.radius_squared)}"),
         _row("levels", f"{t:,} (robots at one distance from C, nearest first), robots on "
                        f"each: {per_level}"),
     ]
@@ -306,7 +322,7 @@ def _detail(analysis: Analysis, report: dict) -> list[str]:
     lines = ["", "levels, nearest first (robots counter-clockwise from the +x ray):"]
     shown = report["levels"][:MAX_LEVELS]
     for k, (entry, level) in enumerate(zip(shown, analysis.levels.levels), 1):
-        lines.append(f"  G{k}  radius {square_root(level.radius_squared)}; "
+        lines.append(f"  G{k}  radius {_radius(level.radius_squared)}; "
                      f"{len(level.points):,} robot{'s' if len(level.points) != 1 else ''}: "
                      f"{listed(entry['points'])}")
         if entry.get("paper") is not None:
@@ -469,9 +485,31 @@ def _trace(paper: dict) -> list[str]:
 
 # ---------------------------------------------------------------- hint, one line
 def _near_symmetry(analysis: Analysis) -> str | None:
-    """The near-symmetry hint (:meth:`~exactsym.analysis.Analysis.near_symmetry`), or None."""
+    """The near-symmetry hint (:meth:`~exactsym.analysis.Analysis.near_symmetry`), or None.
+    The hint proposes its candidate in floats: coordinates beyond their comfortable range
+    (their squares would overflow or vanish) get no hint, the verdict being exact anyway."""
+    if not _float_friendly(analysis.config.points):
+        return None
     found = analysis.near_symmetry()
     return None if found is None else found.text
+
+
+#: coordinates whose magnitude lies outside [2^-FLOAT_BITS, 2^FLOAT_BITS] (or 0) get no
+#: near-symmetry hint: squares and sums of squares of such floats stay finite and normal
+FLOAT_BITS = 480
+
+
+def _float_friendly(points) -> bool:
+    """Whether every rational coordinate is 0 or within 2^+-:data:`FLOAT_BITS` (decided on
+    the exact numerator and denominator; other numbers are left to the hint, which takes
+    rationals only)."""
+    for p in points:
+        for x in p:
+            if is_plain_rational(x) and x != 0:
+                bits = int(abs(x.p)).bit_length() - int(x.q).bit_length()
+                if abs(bits) > FLOAT_BITS:
+                    return False
+    return True
 
 
 def _cut(line: str, width: int) -> str:

@@ -20,7 +20,7 @@ from pathlib import Path
 from . import analysis_bridge as bridge
 from .engine import DEFAULT_TIMEOUT, SweepOptions, run_sweep
 from .families import FamilyError, parse_family
-from .results import ResultsError
+from .results import ResultsError, remove_if_unstarted
 from .summary import ledger_evidence, summarise, summary_json, summary_table, write_cases
 
 __all__ = ["add_arguments", "run", "main"]
@@ -98,7 +98,15 @@ def _run(args) -> int:
                            serial=args.serial, batch_size=args.batch_size,
                            stop_after=args.stop_after, progress=sys.stderr,
                            timeout=args.timeout if args.timeout and args.timeout > 0 else None)
-    sweep = run_sweep(family, args.what, args.out, args.resume, options)
+    fresh = not Path(args.out).exists()
+    try:
+        sweep = run_sweep(family, args.what, args.out, args.resume, options)
+    except BaseException:
+        # a run that could not start (no Dask, no scheduler) leaves no results file
+        # behind: the same command must work once the cause is fixed
+        if fresh:
+            remove_if_unstarted(args.out)
+        raise
     summary = summarise(args.out)
     cases_dir, evidence_path = _paths(args)
     cases = write_cases(summary, cases_dir)

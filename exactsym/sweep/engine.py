@@ -259,7 +259,8 @@ def _require_dask() -> None:
     except ModuleNotFoundError:
         from .families import FamilyError
         raise FamilyError("a sweep on workers needs Dask distributed: pip install "
-                          "'exactsym[sweep]' (or run it with --serial)") from None
+                          "'dask[distributed]' (from a checkout: pip install -e '.[sweep]'), "
+                          "or run it with --serial") from None
 
 
 def _client(options: SweepOptions):

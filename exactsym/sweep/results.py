@@ -188,6 +188,22 @@ def read_records(path) -> Iterator[dict]:
         yield record
 
 
+def remove_if_unstarted(path) -> bool:
+    """Remove ``path`` when it holds a header and no record (a sweep that could not start:
+    no Dask, no scheduler), so that the same command can be run again without
+    ``--resume``; returns whether it was removed."""
+    path = Path(path)
+    try:
+        if not path.is_file() or read_header(path) is None:
+            return False
+        if next(read_records(path), None) is not None:
+            return False
+    except (OSError, EOFError, ValueError):     # unreadable: not ours to remove
+        return False
+    path.unlink()
+    return True
+
+
 def key_of(path, index: int) -> str | None:
     """The key of the record with enumeration index ``index`` (None if absent)."""
     for record in read_records(path):

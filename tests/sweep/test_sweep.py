@@ -377,4 +377,18 @@ def test_workers_without_dask_is_one_line_exit_2(tmp_path, capsys, monkeypatch):
     code = main(["roots:6:<=3", "--what", "truth", "--workers", "2",
                  "--out", str(tmp_path / "w.jsonl")])
     err = capsys.readouterr().err
-    assert code == 2 and "exactsym[sweep]" in err and len(err.strip().splitlines()) == 1
+    assert code == 2 and "'.[sweep]'" in err and len(err.strip().splitlines()) == 1
+
+
+def test_a_sweep_that_cannot_start_leaves_no_results_file(tmp_path, capsys, monkeypatch):
+    """Issue 34: without Dask, ``--workers 2`` exits 2 and writes nothing, so the same
+    command runs once Dask is there (it was refused: "results file exists")."""
+    out = tmp_path / "r.jsonl"
+    command = ["roots:6:<=3", "--what", "truth", "--workers", "2", "--out", str(out)]
+    with monkeypatch.context() as m:
+        m.setitem(sys.modules, "distributed", None)
+        assert main(command) == 2
+    assert not out.exists()
+    capsys.readouterr()
+    assert main(command[:3] + ["--serial", "--out", str(out)]) == 0
+    assert out.exists() and "results file exists" not in capsys.readouterr().err
