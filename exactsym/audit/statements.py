@@ -29,8 +29,9 @@ claim is false on this configuration, in the paper's order, each as
 in effect; ``reading`` and ``rescued_by`` name it and the reading that rescues the paper).
 ``notes`` lists, in the same shape, what is *not* a discrepancy: defects of the literal
 reading of a printed loop (``literal-reading``), failures outside a statement's hypotheses
-(``outside-hypotheses``: ``lem-los-gij``, ``theorem-los-g1n``), GatheringPattern below
-n = 5 (``out-of-scope``), frames that differ only in the sense of an epsilon move
+(``outside-hypotheses``: ``lem-los-gij``, ``theorem-los-g1n``), GatheringPattern, MakeAsym
+and ``lem-vl-move`` below n = 5 (``out-of-scope``), exactsym's repair of a printed line
+that works as printed (``repair``), frames that differ only in the sense of an epsilon move
 (``epsilon-sense``).  ``covered``: the labels evaluated on this configuration, in the
 paper's order.  ``agrees`` is True iff ``discrepancies`` is empty; ``conclusions_agree``
 only looks at the conclusions.  The audit is outside :mod:`exactsym.paper` and may use
@@ -46,6 +47,7 @@ was checked (``docs/interpretations.md``, "Bounds of the family layer").
 from __future__ import annotations
 
 from .groups import SubGroups, group_about_centre
+from .handedness import MIRROR_RUN, frames_agree, other_handedness_findings
 from .levels import level_findings
 from ..geometry.configuration import Configuration, Similarity, no_cycle_collection
 from ..exact import fmpq, number_text
@@ -76,9 +78,13 @@ HYPOTHESIS_MARKED = ("lem-los-gij", "theorem-los-g1n", "obs-gcd", "obs-type-4")
 #: The paper's gathering algorithm is for n >= 5 robots (GatheringPattern's hypothesis).
 GATHERING_MIN_N = 5
 
+#: MakeAsym and the lemma about its run belong to the gathering algorithm: n >= 5 too.
+GATHERING_SCOPED = ("MakeAsym", "lem-vl-move")
+
 #: Kinds of entry: a discrepancy (``agrees`` False) or a note (``notes``: not one).
 DISCREPANCY_KINDS = ("claim", "algorithm", "conclusion", "reading")
-NOTE_KINDS = ("literal-reading", "outside-hypotheses", "out-of-scope", "epsilon-sense")
+NOTE_KINDS = ("literal-reading", "outside-hypotheses", "out-of-scope", "epsilon-sense",
+              "repair")
 
 FRAMES = ("identity", "reflection", "similarity")
 
@@ -111,7 +117,7 @@ CLAIMS = {
                 "are asymmetric",
     "Make_SymToAsym": "moving the leader of a polygon with one line of symmetry makes it "
                       "asymmetric",
-    "ElectLeader": "G_1t is orderable (asymmetric) when G_t is asymmetric",
+    "ElectLeader": "elects a leader v_l from G_1 (G_1t is orderable when G_t is asymmetric)",
     "obs-v-move": "the leader selected through G_it is the same whether v is moving or "
                   "epsilon apart",
     "lem-vl-move": "while v_l moves, no other robot is selected as leader",
@@ -378,12 +384,26 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
         entry = _d(e["statement"], CLAIMS.get(e["statement"], e["statement"]),
                    f"false here: {e['detail']}", witness,
                    kind="claim" if e["algorithm"] == "Section 3" else "algorithm")
-        if e.get("kind") == "literal-reading":
-            notes.append(dict(entry, kind="literal-reading"))
+        if e.get("reading"):
+            entry.update(kind="reading", reading=e["reading"], rescued_by=e.get("rescued_by"))
+        if e["statement"] in GATHERING_SCOPED and n < GATHERING_MIN_N:
+            notes.append(_out_of_scope(entry, n))
+        elif e.get("kind") in ("literal-reading", "repair"):
+            notes.append(dict(entry, kind=e["kind"]))
         elif outside:
             notes.append(dict(entry, kind="outside-hypotheses"))
         else:
             add(entry)
+    # the same algorithms run by an observer of the other handedness (the mirror image)
+    mirror = _mirror_run(config, ring_data, paper, kw) if options.get("invariance", True) \
+        else None
+    if mirror is not None:
+        for d in other_handedness_findings(paper.trace, mirror.trace, CLAIMS):
+            if d["statement"] in GATHERING_SCOPED and n < GATHERING_MIN_N:
+                notes.append(_out_of_scope(d, n))
+                continue
+            covered.add(d["statement"])
+            add(d)
     # theorems
     covered.update(("Psym-Gsym", "Pasym-Pord", "cor-Pasym-Pord"))
     g_sym = F.is_symmetric_family(G)
@@ -414,12 +434,11 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
         if n >= GATHERING_MIN_N:
             conclusions.append(entry)
         else:
-            notes.append(dict(entry, kind="out-of-scope",
-                              truth=entry["truth"] + f"; out of scope: the paper's gathering "
-                              f"algorithm is for n >= {GATHERING_MIN_N} robots (n = {n})"))
+            notes.append(_out_of_scope(entry, n))
     if n >= GATHERING_MIN_N:
         covered.add("GatheringPattern")
-    leader_info, leader_notes = _leader_check(config, ring_data, paper, group, kw, options)
+    leader_info, leader_notes = _leader_check(config, ring_data, paper, group, kw, options,
+                                              mirror)
     conclusions.extend(leader_info)
     notes.extend(leader_notes)
     if paper.complete:
@@ -439,6 +458,11 @@ def _audit(config: Configuration, ring_data: Levels | None = None,
             "truth": {"group": group.name, "orderable": group.orderable,
                       "leader": group.leader, "in_O_S": in_os},
             "bounded": bounded}
+
+
+def _out_of_scope(entry: dict, n: int) -> dict:
+    return dict(entry, kind="out-of-scope", truth=entry["truth"] + f"; out of scope: the "
+                f"paper's gathering algorithm is for n >= {GATHERING_MIN_N} robots (n = {n})")
 
 
 _ORDER = {label: k for k, label in enumerate(STATEMENTS + ALGORITHMS)}
@@ -464,26 +488,42 @@ def _dedupe(items: list) -> list:
     return out
 
 
-def _leader_check(config, ring_data, paper, group, kw, options) -> tuple[list, list]:
+def _mirror_run(config, ring_data, paper, kw) -> F.PaperResult | None:
+    """The paper's procedure on the reflected configuration (lem-vl-move checked, the
+    Section-3 claims not: they do not depend on handedness), or None when it cannot be
+    run exactly."""
+    moved = transformed(config, ring_data, "reflection")
+    try:
+        return F.paper_procedure(moved, _frame_levels(config, ring_data, moved, "reflection",
+                                                      paper.G_rings), **kw,
+                                 claims=False, describe_polygons=False)
+    except (ArithmeticError, NotImplementedError, ValueError):
+        return None
+
+
+def _leader_check(config, ring_data, paper, group, kw, options,
+                  mirror=None) -> tuple[list, list]:
     """``(discrepancies, notes)`` of the conclusions about the leader (see the module
-    docstring; :func:`_frame_difference` for two frames that disagree)."""
+    docstring; :func:`_frame_difference` for two frames that disagree; ``mirror``: the
+    run in the reflected frame, when already made).  A run that stops early is compared
+    on the moves both runs make."""
     out, notes = [], []
-    if not paper.complete:
-        return out, notes
     if group.orderable:
-        if paper.orderable and paper.leader is None:
+        if paper.complete and paper.orderable and paper.leader is None:
             out.append(_d("ElectLeader", "G is orderable but no leader is elected",
                           f"orderable (group {group.name}); a leader exists "
                           f"(e.g. robot {group.leader})", None, kind="conclusion"))
         if not options.get("invariance", True):
             return out, notes
-        base = _actions(paper)
         for frame in FRAMES[1:]:
-            moved = transformed(config, ring_data, frame)
-            res = F.paper_procedure(moved, _frame_levels(config, ring_data, moved, frame,
-                                                         paper.G_rings), **kw,
-                                    claims=False, check_vl=False, describe_polygons=False)
-            if not res.complete or _actions(res) == base:
+            if frame == "reflection" and mirror is not None:
+                res = mirror
+            else:
+                moved = transformed(config, ring_data, frame)
+                res = F.paper_procedure(moved, _frame_levels(config, ring_data, moved, frame,
+                                                             paper.G_rings), **kw,
+                                        claims=False, check_vl=False, describe_polygons=False)
+            if frames_agree(paper, res):
                 continue
             entry, note = _frame_difference(config, paper, res, frame, kw)
             if note is not None:
@@ -493,19 +533,22 @@ def _leader_check(config, ring_data, paper, group, kw, options) -> tuple[list, l
                 if entry["kind"] == "conclusion":
                     break
         return out, notes
-    # not orderable: the first robot made to act must be fixed by every symmetry
-    actor = paper.first_actor
-    if actor is None:
-        return out, notes
-    for g in group.symmetries():
-        if g.permutation[actor] != actor:
-            out.append(_d("MakeAsym" if paper.moves else "ElectLeader",
-                          f"robot {actor} acts first ({'moves' if paper.moves else 'is elected'})",
-                          f"not orderable (group {group.name}); a symmetry maps robot {actor} "
-                          f"to robot {g.permutation[actor]}, so observers disagree on it",
-                          {"symmetry": g.kind, "maps": f"robot {actor} -> robot "
-                           f"{g.permutation[actor]}"}, kind="conclusion"))
-            break
+    # not orderable: the first robot made to act must be fixed by every symmetry, for
+    # either handedness (the reflected run's robots are the same robots)
+    for run in (paper, mirror):
+        actor = None if run is None else run.first_actor
+        if actor is None:
+            continue
+        label = "MakeAsym" if run.moves else "ElectLeader"
+        g = next((g for g in group.symmetries() if g.permutation[actor] != actor), None)
+        if g is None or any(d["statement"] == label for d in out):
+            continue
+        out.append(_d(label, f"robot {actor} acts first ({'moves' if run.moves else 'is elected'})"
+                      + ("" if run is paper else f" for {MIRROR_RUN}"),
+                      f"not orderable (group {group.name}); a symmetry maps robot {actor} "
+                      f"to robot {g.permutation[actor]}, so observers disagree on it",
+                      {"symmetry": g.kind, "maps": f"robot {actor} -> robot "
+                       f"{g.permutation[actor]}"}, kind="conclusion"))
     return out, notes
 
 

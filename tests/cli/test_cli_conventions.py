@@ -72,9 +72,9 @@ def test_several_files_one_line_each_and_the_worst_status(tmp_path, capsys, monk
     assert code == 0 and err == ""
     assert out.splitlines() == [
         f"{NINE}: 9 robots, C3, not orderable, no leader; paper: orderable, leader 6; "
-        "audit: 7 statements false",
+        "audit: 8 statements false",
         f"{pentagon}: 5 robots, D1, not orderable, leader 3; paper: not orderable, "
-        "leader 3; audit: 1 statement false"]
+        "leader 3; audit: 2 statements false"]
 
     code, out, err = run(capsys, "check", NINE, str(false))
     assert code == 1 and len(out.splitlines()) == 2

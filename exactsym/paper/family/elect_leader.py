@@ -47,6 +47,8 @@ def elect_leader_asym_on(trace, alg, line, ring_poly: Ring, target: Ring, orient
     trace_entry(trace, alg, line, [ring_poly.name, target.name], statement, detail,
                 robots=[robot] if robot is not None else None, branch=branch, round=rnd,
                 uses="Elect_Leader_Asym")
+    if printed != robot:
+        printed_line(trace, alg, line, ring_poly, target, printed, robot, rnd)
     if res.tie:
         trace_entry(trace, alg, line, [ring_poly.name],
                     "obs-merg-asym-pair" if len(ring_poly.levels) > 1 else "lem-asym-ord",
@@ -54,6 +56,29 @@ def elect_leader_asym_on(trace, alg, line, ring_poly: Ring, target: Ring, orient
                     f"minimum of the (CW, ACW) tuples is attained at more than one vertex",
                     holds=False, labelling_dependent=True, round=rnd)
     return robot, None
+
+
+def printed_line(trace, alg, line, ring_poly: Ring, target: Ring, printed, robot, rnd) -> None:
+    """The printed line's own result beside exactsym's repair (issue 32).  The printed
+    ``v_l = Elect_Leader_Asym(...)`` is the first vertex of the ordering whose removal
+    leaves an asymmetric polygon; the caller needs a robot of ``target``, which exactsym
+    takes as the first vertex of ``target`` in the ordering.  A defect of the printed
+    algorithm (``holds`` False): it elects nobody, or (ElectLeader, whose output is "a
+    leader vertex v_l from G_1") a robot outside G_1.  Otherwise the repair is exactsym's
+    choice (MakeAsym's own text restricts v_l to G_t: "such that v_l is in G_t"),
+    recorded with ``kind`` "repair", a note."""
+    inside = printed is not None and printed in target.robots
+    defect = printed is None or (alg == "ElectLeader" and not inside)
+    said = "elects nobody (every G \\ v_i is symmetric)" if printed is None else \
+        f"returns robot {printed}" + ("" if inside else f", not a robot of {target.name}")
+    repair = f"the first vertex of {target.name} in the ordering (exactsym's repair)"
+    trace_entry(trace, alg, line, [ring_poly.name, target.name], alg,
+                f"line {line} as printed {said}; {repair} is robot {robot}", holds=False,
+                witness={"printed": printed, "repair": robot},
+                kind=None if defect else "repair", round=rnd,
+                reading=f"literal: line {line} as printed, v_l = Elect_Leader_Asym("
+                f"{ring_poly.name})" if defect else None,
+                rescued_by=repair if defect and robot is not None else None)
 
 
 def line_four(poly: CirclePolygon, check: P.CheckResult, degree: str = "paper"):
@@ -155,10 +180,13 @@ def elect_leader(Gp: Sequence[Ring], trace: list, orientation: int = 1,
                     f"({'asymmetric now' if moved.asymmetric else 'still symmetric'})",
                     robots=[mover] if mover is not None else None, branch=branch, round=rnd,
                     uses="Make_SymToAsym")
-        if not moved.asymmetric and poly.n > 1:
+        if not moved.asymmetric:
+            # a single vertex included: the paper gives it degree one (line 4 calls
+            # Make_SymToAsym), and no epsilon move makes one point asymmetric
             trace_entry(trace, alg, 5, [g1.name], "Make_SymToAsym",
-                        "Make_SymToAsym is meant to make G_1 asymmetric; it is not", holds=False,
-                        round=rnd)
+                        "Make_SymToAsym is meant to make G_1 asymmetric; it is not"
+                        + (" (a single vertex is symmetric wherever it moves)"
+                           if poly.n == 1 else ""), holds=False, round=rnd)
         moved_to = {}
         if mover is not None:
             label = poly.labels[moved.leader]

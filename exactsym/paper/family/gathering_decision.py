@@ -241,7 +241,9 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
                         "the SEC changed during the move (the paper: |G_t| > 3 ensures it does "
                         "not)" + _sense_note(current, new, result, cur_rings), holds=False,
                         round=rnd)
-        if check_vl:
+        if check_vl and gathering:
+            # lem-vl-move is about MakeAsym's run, which GatheringPattern starts only
+            # when G' is in O_A (line 6)
             _check_vl_move(trace, current, new, result, orientation, reading, rnd, limits)
         rnd += 1
         current, cur_rings = new, new_rings
@@ -358,7 +360,9 @@ def _check_vl_move(trace, before: Configuration, after: Configuration, result: M
     sub = paper_procedure(mid, orientation=orientation, reading=reading, max_rounds=1,
                           claims=False, check_vl=False, limits=limits)
     actor = sub.first_actor
-    holds = actor == v or actor is None and sub.leader == v
+    # "no other robot will be selected": nobody acting and nobody elected selects no
+    # other robot either
+    holds = actor == v or actor is None and sub.leader in (None, v)
     trace_entry(trace, "MakeAsym", last["line"], [], "lem-vl-move",
                 f"with robot {v} half way, the procedure's first robot to act is {actor}",
                 robots=[actor] if actor is not None else None, holds=holds, round=rnd)
