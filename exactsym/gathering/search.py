@@ -23,11 +23,8 @@ from fractions import Fraction
 from .invariants import Checker, Violation
 from .robot import Readings
 from .schedulers import Result, run
+from .state_key import state_key
 from .world import IDENTITY, MIRROR, Frame, World
-
-
-def _key(world: World):
-    return tuple((r.pos, tuple(r.path), r.role) for r in world.robots)
 
 
 def _children(world: World):
@@ -73,7 +70,7 @@ def exhaustive(points, settings: dict, max_depth: int = 8, max_nodes: int = 1500
                  Checker(enabled=frozenset(settings["invariants"])),
                  settings.get("algorithm", "paper"))
     queue = deque([(root, [])])
-    seen = {_key(root)}
+    seen = {state_key(root)}
     nodes = 0
     while queue and nodes < max_nodes:
         world, actions = queue.popleft()
@@ -90,7 +87,7 @@ def exhaustive(points, settings: dict, max_depth: int = 8, max_nodes: int = 1500
                 return actions + [act]
             if act["a"] == "look" and not was_busy and not child.robots[act["robot"]].busy:
                 continue                        # the robot stays: nothing changed
-            k = _key(child)
+            k = state_key(child)
             if k in seen:
                 continue
             seen.add(k)
