@@ -112,6 +112,6 @@ def matrix_table(rows: list) -> str:
             for r in rows]
     widths = [max(len(x[k]) for x in [head] + body) for k in range(len(head))]
     fmt = "  ".join(f"{{:{w}}}" for w in widths)
-    lines = [fmt.format(*head), fmt.format(*("-" * w for w in widths))]
+    lines = [fmt.format(*head).rstrip(), fmt.format(*("-" * w for w in widths))]
     lines += [fmt.format(*row).rstrip() for row in body]
     return "\n".join(lines)

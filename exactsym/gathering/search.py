@@ -132,17 +132,19 @@ class _Found(Exception):
         self.actions = actions
 
 
-def _breadth_first(ex: _Explorer, root: World, limit: int):
-    """Layer by layer, each layer ordered by badness; returns the frontier left."""
+def _breadth_first(ex: _Explorer, root: World, share: int):
+    """Layer by layer, each layer ordered by badness, until ``share`` states have been
+    generated (checked before each expansion; an expansion is cut only by the whole
+    budget); returns the frontier left for the best-first phase."""
     layer = [(root, [])]
     while layer:
         if len(layer[0][1]) >= ex.bounds.depth:
             return []
         nxt = []
-        for world, actions in layer:
-            if ex.report.states >= limit or ex.out_of_time():
-                return nxt + [(world, actions)]
-            nxt.extend(ex.expand(world, actions, limit))
+        for k, (world, actions) in enumerate(layer):
+            if ex.report.states >= share or ex.out_of_time():
+                return layer[k:] + nxt
+            nxt.extend(ex.expand(world, actions, ex.bounds.budget))
         nxt.sort(key=lambda wa: badness(wa[0]))
         layer = nxt
     return []

@@ -47,7 +47,10 @@ def shrink(points, settings: dict, actions: list, max_replays: int = 200) -> tup
     """``(shorter actions, replays made)``: a schedule no longer than ``actions`` that
     violates the same invariant, from which no single action can be dropped (when the
     replay budget allows)."""
-    first = replay_actions(points, settings, actions)
+    try:
+        first = replay_actions(points, settings, actions)
+    except TraceMismatch:
+        return list(actions), 1
     if first.outcome != "violated":
         return list(actions), 1
     invariant = first.violation["invariant"]
