@@ -5,12 +5,19 @@ from __future__ import annotations
 
 import copy
 from fractions import Fraction
+from pathlib import Path
 
 import pytest
 
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
-from exactsym.gathering.robot import Readings
+from exactsym.gathering.adversary import FRAMES, children, stop_fractions
+from exactsym.gathering.cli import main
+from exactsym.gathering.invariants import ALL, Checker
+from exactsym.gathering.schedulers import run
+from exactsym.gathering.search import Bounds, search
 from exactsym.gathering.search import exhaustive
+from exactsym.gathering.shrink import replay_actions, shrink
+from exactsym.gathering.robot import Readings
 from exactsym.gathering.state_key import number_key, state_key
 from exactsym.gathering.world import IDENTITY, World
 
@@ -58,16 +65,6 @@ def test_search_over_a_nested_radical_run_does_not_crash(algorithm):
 
 
 # -- the searching adversary ---------------------------------------------------------------
-import json                                                        # noqa: E402
-from pathlib import Path                                           # noqa: E402
-
-from exactsym.gathering.adversary import FRAMES, children, stop_fractions  # noqa: E402
-from exactsym.gathering.cli import main                            # noqa: E402
-from exactsym.gathering.invariants import ALL                      # noqa: E402
-from exactsym.gathering.schedulers import run                      # noqa: E402
-from exactsym.gathering.search import Bounds, search               # noqa: E402
-from exactsym.gathering.shrink import replay_actions, shrink       # noqa: E402
-
 CASES = Path(__file__).resolve().parents[2] / "cases" / "gathering"
 TWO_MOVERS = CASES / "handedness-two-movers-collide.toml"
 ONE_CIRCLE = [(20, 0), (0, 20), (-20, 0), (0, -20), (12, 16)]
@@ -135,8 +132,7 @@ def test_shrinking_drops_the_actions_the_violation_does_not_need():
 def test_a_long_seeded_violation_shrinks():
     settings = {**COLLIDE, "invariants": ["I1", "I3", "I4", "I5", "I6", "I7", "I8", "I10"]}
     res = run(ONE_CIRCLE, "ssync", 6, Readings(), True, None, 50,
-              __import__("exactsym.gathering.invariants", fromlist=["Checker"]).Checker(
-                  enabled=frozenset(settings["invariants"])))
+              Checker(enabled=frozenset(settings["invariants"])))
     assert res.outcome == "violated"
     shrunk, _ = shrink(ONE_CIRCLE, settings, res.actions)
     assert len(shrunk) <= len(res.actions)
