@@ -28,6 +28,8 @@ import time
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+from ..exact.algebraic.interface import is_multiquadratic
+from . import geometry as g
 from .adversary import FRAMES, apply_action, badness, children
 from .invariants import Checker, Violation
 from .robot import Readings
@@ -86,6 +88,34 @@ def root_world(points, settings: dict) -> World:
                  settings.get("algorithm", "paper"))
 
 
+def _points_of(world: World):
+    for rob in world.robots:
+        for p in (rob.pos, rob.start, rob.target, rob.centre):
+            if p is not None:
+                yield p
+        for piece in rob.path:
+            yield from (piece.start, piece.end) + \
+                ((piece.centre,) if isinstance(piece, g.Arc) else ())
+
+
+def fork(world: World) -> World:
+    """A copy of ``world`` that grows on its own (a deep copy: its tower too), sharing
+    what never changes: the multiquadratic numbers of its positions and paths (immutable
+    values), the entries of its path log (frozen, and only drawn) and its table of
+    points mapped into Look frames (a cache keyed by value, multiquadratic points only);
+    a plain deep copy spent half the search's time walking them.  (A ``World.fork`` in
+    world.py would not need to know the table's name.)"""
+    memo = {id(step): step for step in world.log}
+    local = vars(world).get("_local")
+    if local is not None:
+        memo[id(local)] = local
+    for p in _points_of(world):
+        for x in p:
+            if is_multiquadratic(x):
+                memo[id(x)] = x
+    return copy.deepcopy(world, memo)
+
+
 class _Explorer:
     """The shared state of one search: the seen keys, the counters and the bounds."""
 
@@ -109,7 +139,7 @@ class _Explorer:
             if self.report.states >= limit or self.out_of_time():
                 break
             self.report.states += 1
-            child = copy.deepcopy(world)
+            child = fork(world)
             was_busy = act["a"] == "step" or child.robots[act["robot"]].busy
             try:
                 if not apply_action(child, act):
