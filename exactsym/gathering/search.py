@@ -206,11 +206,12 @@ def search(points, settings: dict, bounds: Bounds = Bounds(), frames=FRAMES) -> 
     root = root_world(points, settings)
     ex.seen.add(state_key(root))
     try:
+        report.phase = "breadth-first"
         frontier = _breadth_first(ex, root, max(1, bounds.budget // 2))
         if frontier:
+            report.phase = "best-first"
             _best_first(ex, frontier)
     except _Found as found:
-        report.phase = "best-first" if report.states > bounds.budget // 2 else "breadth-first"
         report.found_length = len(found.actions)
         actions = found.actions
         if bounds.shrink:
@@ -219,6 +220,7 @@ def search(points, settings: dict, bounds: Bounds = Bounds(), frames=FRAMES) -> 
         report.actions = report.result.actions
         report.stopped = "violation"
     else:
+        report.phase = None
         if ex.out_of_time():
             report.stopped = "time"
             report.notes.append("cut by the time bound: not reproducible by seed alone")

@@ -150,3 +150,11 @@ def test_gather_search_flags_and_a_trace_that_replays(tmp_path, capsys):
     assert main(["replay", str(trace), str(TWO_MOVERS)]) == 0
     assert "identical to the recorded run" in capsys.readouterr().out
     assert main(["gather", str(TWO_MOVERS), "--search", "--budget", "0"]) == 2
+
+
+def test_the_best_first_phase_finds_what_a_small_breadth_first_share_misses():
+    """Half of a budget of 160 states is not enough breadth-first (the collision is met
+    after about 137): best-first on the badness score goes on and finds it."""
+    rep = search(ONE_CIRCLE, COLLIDE, Bounds(budget=160, depth=4))
+    assert rep.stopped == "violation" and rep.phase == "best-first"
+    assert rep.result.violation["invariant"] == "I1"
