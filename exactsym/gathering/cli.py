@@ -183,7 +183,7 @@ def _matrix(points, settings, args) -> int:
           + ", ".join(f"{k}={v}" for k, v in settings["readings"].items()) + ")")
     print(matrix_table(rows))
     for r in rows:
-        if r["schedule"]:
+        if r["schedule"] and not r["same_as"]:
             print(f"\n{r['reading']}: {with_decimals(r['detail'])}")
             print("\n".join(schedule_lines(r["schedule"])))
     if other:

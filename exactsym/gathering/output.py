@@ -97,7 +97,8 @@ def _outcome_text(row: dict) -> str:
 
 def _schedule_text(row: dict) -> str:
     if row["schedule"]:
-        return f"{len(row['schedule'])} actions"
+        k = len(row["schedule"])
+        return f"{k} action{'s' if k != 1 else ''}"
     if row["same_as"]:
         return f"(the {row['same_as']} row: the only reading)"
     return f"(seeded run, {row['length']} events)"
