@@ -96,12 +96,15 @@ def _points_of(world: World):
         for piece in rob.path:
             yield from (piece.start, piece.end) + \
                 ((piece.centre,) if isinstance(piece, g.Arc) else ())
+    if world.checker is not None:          # the targets of the last Looks' plans (I3)
+        for plan in world.checker.look_plans.values():
+            yield from (target for _role, target in plan.values())
 
 
 def fork(world: World) -> World:
     """A copy of ``world`` that grows on its own (a deep copy: its tower too), sharing
     what never changes: the multiquadratic numbers of its positions and paths (immutable
-    values), the entries of its path log (frozen, and only drawn) and its table of
+    values: positions, paths, planned targets), the entries of its path log (frozen, and only drawn) and its table of
     points mapped into Look frames (a cache keyed by value, multiquadratic points only);
     a plain deep copy spent half the search's time walking them.  (A ``World.fork`` in
     world.py would not need to know the table's name.)"""
