@@ -13,8 +13,8 @@ never merged (only explored twice).
 
 from __future__ import annotations
 
-from ..exact.multiquadratic import MQ
-from ..exact.tower import TowerElement, key, level
+from ..exact.algebraic.interface import is_multiquadratic, nested_tower
+from ..exact.tower import key, level
 from . import geometry as g
 
 __all__ = ["number_key", "point_key", "piece_key", "state_key"]
@@ -38,10 +38,11 @@ class _Identity:
 def number_key(x):
     """A hashable key equal for two numbers only when they are equal (never ``==`` on
     numbers: plain tuples of integers)."""
-    if isinstance(x, MQ):
+    if is_multiquadratic(x):
         return key(x)
-    if isinstance(x, TowerElement):
-        tower, lev = x.tower, level(x.v)
+    tower = nested_tower(x)              # a nested radical (not a number of K(alpha))
+    if tower is not None:
+        lev = level(x.v)
         signature = (type(tower).__name__, tuple(tower.primes),
                      tuple(key(r) for r in tower.radicands[:lev]))
         return ("tower", signature, key(x.v))
