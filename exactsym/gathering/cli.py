@@ -21,7 +21,9 @@ from .invariants import ALL
 from .paper_bridge import GatheringInputError, read_case
 from .robot import READINGS, Readings
 from .schedulers import SCHEDULERS, TraceMismatch
-from .search import search_violation
+from .output import checks_line, invariant_title, matrix_table, schedule_lines, with_decimals
+from .reading_matrix import differs_from_base, reading_matrix
+from .search import Bounds, search
 from .trace import read_trace, replay, result_dict, same_result, trace_points, write_trace
 
 
@@ -42,7 +44,20 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         "(docs/gathering.md)")
     parser.add_argument("--seed", type=int, default=None)
     parser.add_argument("--search", action="store_true",
-                        help="search the adversary's choices for a shortest violation")
+                        help="search the adversary's choices for a shortest violation "
+                        "(docs/gathering.md, 'The search')")
+    parser.add_argument("--budget", type=int, default=None, metavar="N",
+                        help="--search: states generated at most (default 10000; "
+                        "--readings all: per reading, default 400)")
+    parser.add_argument("--depth", type=int, default=16, metavar="D",
+                        help="--search: adversary actions per schedule at most (default 16)")
+    parser.add_argument("--time", type=float, default=None, metavar="SECONDS",
+                        help="--search: wall-clock bound (default 60; --readings all: "
+                        "per reading, default 30); a search cut by it is not reproducible "
+                        "by its seed alone")
+    parser.add_argument("--readings", choices=("all",), default=None,
+                        help="all: the reading matrix, one row per named reading "
+                        "(docs/interpretations.md)")
     parser.add_argument("--max-events", type=int, default=None)
     parser.add_argument("--invariants", default=None,
                         help="comma-separated invariants to check (default: all, I1..I10)")
@@ -120,8 +135,7 @@ def _text(res, settings) -> str:
              f"{'rigid' if settings['rigid'] else 'non-rigid ' + settings['delta']}, readings "
              + ", ".join(f"{k}={v}" for k, v in settings["readings"].items()),
              f"events: {res.events}, Looks: {res.looks}",
-             "invariant checks: " + ", ".join(f"{k} {v}" for k, v in res.checks.items()
-                                              if k.startswith("I")),
+             "invariant checks: " + checks_line(res.checks),
              f"fresh Looks at and between critical instants: {res.checks.get('instants', 0)}"
              f" ({res.checks.get('nested', 0)} at nested radicals, in a tower; "
              f"{res.checks.get('algebraic', 0)} at roots of cubic or quartic factors; "
@@ -130,14 +144,52 @@ def _text(res, settings) -> str:
              f"{res.checks.get('skipped', 0)}"]
     if res.violation:
         v = res.violation
-        lines.append(f"violation: {v['invariant']} ({v['label']}) at event {v['instant']}, "
-                     f"robots {v['robots']}")
+        lines.append(f"violation: {invariant_title(v['invariant'], v['label'])} at event "
+                     f"{v['instant']}, robots {v['robots']}")
     if res.pattern:
         p = res.pattern
         lines.append(f"final pattern: {p['size']} robots about ({p['centre'][0]}, "
                      f"{p['centre'][1]}), centre robot {p['centre_robot']}, layers "
                      f"{p['layers']}")
-    return "\n".join(lines)
+    return with_decimals("\n".join(lines))
+
+
+def _bounds(args, matrix: bool) -> Bounds:
+    budget = args.budget if args.budget is not None else (400 if matrix else 10_000)
+    seconds = args.time if args.time is not None else (30.0 if matrix else 60.0)
+    if budget < 1 or args.depth < 1 or seconds <= 0:
+        raise ValueError("--budget, --depth and --time need positive values")
+    return Bounds(budget=budget, depth=args.depth, seed=args.seed or 0, seconds=seconds)
+
+
+def _search_note(report) -> str:
+    r = report.as_dict()
+    head = (f"search: {r['states']} states, {r['expanded']} expanded, depth {r['depth']}, "
+            f"{r['seconds']} s, ended by {r['stopped']}")
+    if report.actions is None:
+        return head + "; no violation found: the seeded run follows"
+    return (head + f"; a violating schedule of {r['found_length']} actions ({r['phase']}), "
+            f"shrunk to {r['length']}:\n" + "\n".join(schedule_lines(report.actions)))
+
+
+def _matrix(points, settings, args) -> int:
+    rows = reading_matrix(points, settings, _bounds(args, matrix=True))
+    other = differs_from_base(rows)
+    if args.json:
+        print(json.dumps({"settings": settings, "matrix": rows,
+                          "differs_from_base": [r["reading"] for r in other]}))
+        return 0
+    print(f"reading matrix of {args.file} (base: the case's readings, "
+          + ", ".join(f"{k}={v}" for k, v in settings["readings"].items()) + ")")
+    print(matrix_table(rows))
+    for r in rows:
+        if r["schedule"] and not r["same_as"]:
+            print(f"\n{r['reading']}: {with_decimals(r['detail'])}")
+            print("\n".join(schedule_lines(r["schedule"])))
+    if other:
+        print("\nhint: " + ", ".join(r["reading"] for r in other)
+              + f" end otherwise than the base reading ({rows[0]['outcome']})")
+    return 0
 
 
 def _pictures(points, res, args, name: str) -> int | None:
@@ -164,16 +216,17 @@ def run(args) -> int:
         return _fail(str(err))
     except (ValueError, ZeroDivisionError) as err:
         return _fail(str(err))
-    note = None
+    note, report = None, None
+    try:
+        if args.readings == "all":
+            return _matrix(points, settings, args)
+        bounds = _bounds(args, matrix=False) if args.search else None
+    except ValueError as err:
+        return _fail(str(err))
     if args.search:
-        found = search_violation(points, settings)
-        if found is not None:
-            note = (f"search: a shortest violating schedule found, {len(found.actions)} "
-                    "adversary actions (breadth-first, or the shortest of the random restarts)")
-            res = found
-        else:
-            note = "search: no violation within the bounds; the seeded run follows"
-            res = run_settings(points, settings)
+        report = search(points, settings, bounds)
+        note = _search_note(report)
+        res = report.result if report.result is not None else run_settings(points, settings)
     else:
         res = run_settings(points, settings, progress=not args.json)
     failures = expectation_failures(expect, res)
@@ -184,7 +237,8 @@ def run(args) -> int:
             return _fail(f"cannot write the trace: {err}")
     if args.json:
         out = result_dict(res)
-        out.update(settings=settings, expect_failures=failures, search=note)
+        out.update(settings=settings, expect_failures=failures,
+                   search=None if report is None else report.as_dict())
         print(json.dumps(out))
     else:
         if note:
