@@ -101,7 +101,7 @@ class MultiquadraticSystem:
 
     def sqrt(self, q):
         if isinstance(q, MQ):
-            q = q.rational()
+            q = q.to_fmpq()
         return sqrt_rational(q)
 
 
@@ -421,7 +421,7 @@ class _Evaluation(Fold):
             if arg.sign() < 0:
                 raise ExpressionError("square root of a negative number", offset=node.offset)
             return system.atoms[("nested", node)]
-        arg = arg.rational() if isinstance(arg, FieldElement) else arg
+        arg = arg.to_fmpq() if isinstance(arg, FieldElement) else arg
         if arg < 0:
             raise ExpressionError("square root of a negative number", offset=node.offset)
         return system.sqrt(arg)

@@ -78,7 +78,7 @@ def _rational(v):
     """The rational value of a raw base value of the tower, or None."""
     if type(v) is tuple or not v.is_rational():
         return None
-    return v.rational()
+    return v.to_fmpq()
 
 
 def _rational_image(q, l: int):

@@ -67,7 +67,7 @@ class SparseKummerTower(CyclotomicTower):
         if isinstance(other, SparseCyclotomic):
             return other
         if isinstance(other, MQ) and other.is_rational():
-            return self.const(other.rational())
+            return self.const(other.to_fmpq())
         if isinstance(other, (int, fmpz, fmpq)):
             return self.const(other)
         if isinstance(other, Fraction):
@@ -94,9 +94,9 @@ class SparseKummerTower(CyclotomicTower):
             x = self.coerce_base(x)
             if x is not None and x.is_rational():
                 if self.nested and x not in self._roots and \
-                        self.classes.express(x.rational()) is None and x.rational() > 0:
+                        self.classes.express(x.to_fmpq()) is None and x.to_fmpq() > 0:
                     raise FieldTooLargeError(
-                        f"sqrt({x.rational()}) above a nested radical over the sparse "
+                        f"sqrt({x.to_fmpq()}) above a nested radical over the sparse "
                         f"Q(zeta_{self.conductor}) (no square-root test there)")
                 return self._kummer_sqrt(x)
         return self.base_root(x)
