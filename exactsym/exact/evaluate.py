@@ -34,7 +34,7 @@ from typing import Iterable, Sequence
 from flint import fmpq, fmpz
 
 from ..errors import ExpressionError, FieldTooLargeError
-from ..io.exprtree import BinOp, Const, Fold, Neg, Node, Pow, Sqrt, Trig, fold
+from ..io.exprtree import Fold, Node, fold
 from . import cyclotomic
 from .field import FieldElement, NumberField, PolyElement, as_fmpq
 from .multiquadratic import MQ, sqrt_rational, squarefree_split
@@ -300,43 +300,87 @@ def rational_sqrt(q: fmpq) -> fmpq | None:
 
 
 # ---------------------------------------------------------------- atom collection
-def _rational_value(node: Node) -> fmpq | None:
-    """The value of ``node`` if it is rational without any field work, else None."""
-    try:
-        value = _evaluate(node, RationalSystem())
-    except ValueError:
-        return None
-    return value
+#: a node's rational reading stopped at an irrational atom (RationalSystem's ValueError)
+_IRRATIONAL = object()
 
 
 def _collect(node: Node, atoms: list) -> None:
     """Append the irrational atoms of ``node``: ("sqrt", q), ("cos", turn), ("nested",
-    Sqrt node)."""
-    if isinstance(node, Const):
-        return
-    if isinstance(node, Neg):
-        _collect(node.arg, atoms)
-    elif isinstance(node, BinOp):
-        _collect(node.left, atoms)
-        _collect(node.right, atoms)
-    elif isinstance(node, Pow):
-        _collect(node.base, atoms)
-    elif isinstance(node, Trig):
+    Sqrt node), left to right, a nested radical after the atoms of its radicand; raise
+    the first error found on the way (a square root of a negative rational, or an error
+    reading a radicand in Q: :class:`_Atoms`)."""
+    _, found, error = fold(node, _Atoms())
+    if error is not None:
+        raise error
+    atoms.extend(found)
+
+
+class _Atoms(Fold):
+    """``(value, atoms, error)`` of a node, for :func:`_collect`: ``value`` the node read
+    in Q as :class:`RationalSystem` reads it (an ``fmpq``, :data:`_IRRATIONAL`, or the
+    :class:`ExpressionError` that reading raises first); ``atoms`` its irrational atoms;
+    ``error`` the first error of the collection.  A square root asks its radicand's
+    ``value``: an error there is the collection's error (before any error inside the
+    radicand), an irrational radicand is a nested radical whose own atoms and error
+    count, a rational one an atom when it is no square.  Errors are carried up, not
+    raised, so the first in that order is the one raised."""
+
+    __slots__ = ("rational",)
+
+    def __init__(self):
+        self.rational = _Evaluation(RationalSystem())
+
+    def _read(self, method, node, *values):
+        """``method`` of the rational reading at ``node``, once its children are values."""
+        for value in values:
+            if value is _IRRATIONAL or isinstance(value, ExpressionError):
+                return value
+        try:
+            return method(node, *values)
+        except ValueError:
+            return _IRRATIONAL
+        except ExpressionError as err:
+            return err
+
+    def const(self, node):
+        return self._read(self.rational.const, node), [], None
+
+    def neg(self, node, arg):
+        return self._read(self.rational.neg, node, arg[0]), arg[1], arg[2]
+
+    def binop(self, node, left, right):
+        atoms = left[1]
+        atoms.extend(right[1])
+        return (self._read(self.rational.binop, node, left[0], right[0]), atoms,
+                left[2] if left[2] is not None else right[2])
+
+    def power(self, node, base):
+        return self._read(self.rational.power, node, base[0]), base[1], base[2]
+
+    def trig(self, node):
         turn = fmpq(1, 4) - as_fmpq(node.pi_multiple) / 2 if node.func == "sin" \
             else as_fmpq(node.pi_multiple) / 2
-        if rational_cos_turn(turn) is None:
-            atoms.append(("cos", normal_turn(turn), node.func))
-    elif isinstance(node, Sqrt):
-        q = _rational_value(node.arg)
-        if q is None:
-            _collect(node.arg, atoms)
-            atoms.append(("nested", node))
-        elif q < 0:
-            raise ExpressionError("square root of a negative number", offset=node.offset)
-        elif rational_sqrt(q) is None:
-            atoms.append(("sqrt", q))
-    else:  # pragma: no cover - the parser makes no other nodes
-        raise ExpressionError(f"unknown expression node {type(node).__name__}", offset=node.offset)
+        atoms = [("cos", normal_turn(turn), node.func)] if rational_cos_turn(turn) is None \
+            else []
+        return self._read(self.rational.trig, node), atoms, None
+
+    def sqrt(self, node, arg):
+        q, inner, inner_error = arg
+        value = self._read(self.rational.sqrt, node, q)
+        if isinstance(q, ExpressionError):
+            return value, [], q
+        if q is _IRRATIONAL:
+            inner.append(("nested", node))
+            return value, inner, inner_error
+        if q < 0:
+            return value, [], ExpressionError("square root of a negative number",
+                                              offset=node.offset)
+        return value, [("sqrt", q)] if rational_sqrt(q) is None else [], None
+
+    def unknown(self, node):  # pragma: no cover - the parser makes no other nodes
+        error = ExpressionError(f"unknown expression node {type(node).__name__}",
+                                offset=node.offset)
+        return error, [], error
 
 
 # ---------------------------------------------------------------- evaluation
