@@ -19,7 +19,10 @@ PACKAGE = Path(__file__).resolve().parents[2] / "exactsym"
 NUMBER_CLASSES = {"fmpq", "fmpz", "Fraction", "MQ", "PolyElement", "FieldElement",
                   "SparseCyclotomic", "TowerElement", "LevelRadius", "TowerLevelRadius",
                   "NumberField", "Tower", "CyclotomicTower", "SparseKummerTower",
-                  "SparseContext"}
+                  "SparseContext",
+                  # the motion's (exact/algebraic/)
+                  "TowerNumber", "AlgebraicNumber", "AlgebraicTowerNumber", "AlgebraicRoot",
+                  "AlgebraicTower", "RunTower"}
 #: packages that own numbers (exact/), or check them on their own (certify/, checker/)
 OWNERS = {"exact", "certify", "checker"}
 #: the count in the whole package outside OWNERS (issue 29: 80 before, at most 10 asked;
