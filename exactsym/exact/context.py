@@ -23,8 +23,8 @@ levels built over it) is a ``Cache(name, shared_outside=True)``: in a context it
 context's, so a run gets the roots and levels it built and no other run's; outside any
 context (a test driving the simulator's pieces by hand) one table of the process.
 
-This module sits at the bottom of the layers (exact/), so the number layer's own
-caches (F_p images, tower maps) live here too.
+This module sits in exact/, below every layer that memoises, so the number layer's own
+per-object tables (F_p images of coordinates, a tower's maps into F_p) are Caches too.
 """
 
 from __future__ import annotations
