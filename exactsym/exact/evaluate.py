@@ -300,87 +300,80 @@ def rational_sqrt(q: fmpq) -> fmpq | None:
 
 
 # ---------------------------------------------------------------- atom collection
-#: a node's rational reading stopped at an irrational atom (RationalSystem's ValueError)
-_IRRATIONAL = object()
-
-
 def _collect(node: Node, atoms: list) -> None:
     """Append the irrational atoms of ``node``: ("sqrt", q), ("cos", turn), ("nested",
     Sqrt node), left to right, a nested radical after the atoms of its radicand; raise
-    the first error found on the way (a square root of a negative rational, or an error
-    reading a radicand in Q: :class:`_Atoms`)."""
-    _, found, error = fold(node, _Atoms())
+    the first error found on the way (:class:`_Atoms`)."""
+    found, error = fold(node, _ATOMS)
     if error is not None:
         raise error
-    atoms.extend(found)
+    if found:
+        atoms.extend(found)
+
+
+#: a node without atoms or errors
+_NOTHING = (None, None)
 
 
 class _Atoms(Fold):
-    """``(value, atoms, error)`` of a node, for :func:`_collect`: ``value`` the node read
-    in Q as :class:`RationalSystem` reads it (an ``fmpq``, :data:`_IRRATIONAL`, or the
-    :class:`ExpressionError` that reading raises first); ``atoms`` its irrational atoms;
-    ``error`` the first error of the collection.  A square root asks its radicand's
-    ``value``: an error there is the collection's error (before any error inside the
-    radicand), an irrational radicand is a nested radical whose own atoms and error
-    count, a rational one an atom when it is no square.  Errors are carried up, not
-    raised, so the first in that order is the one raised."""
+    """``(atoms, error)`` of a node, for :func:`_collect`: its irrational atoms (a list, or
+    None for none) and the first error of the collection (or None).  A square root reads
+    its radicand in Q (:class:`RationalSystem`): an error of that reading is the error
+    (before any error inside the radicand); an irrational radicand is a nested radical,
+    whose own atoms and error count; a rational one is an atom when it is no square.
+    Errors are carried up, not raised, so that the first in that order (left before right)
+    is the one :func:`_collect` raises."""
 
-    __slots__ = ("rational",)
-
-    def __init__(self):
-        self.rational = _Evaluation(RationalSystem())
-
-    def _read(self, method, node, *values):
-        """``method`` of the rational reading at ``node``, once its children are values."""
-        for value in values:
-            if value is _IRRATIONAL or isinstance(value, ExpressionError):
-                return value
-        try:
-            return method(node, *values)
-        except ValueError:
-            return _IRRATIONAL
-        except ExpressionError as err:
-            return err
+    __slots__ = ()
 
     def const(self, node):
-        return self._read(self.rational.const, node), [], None
+        return _NOTHING
 
     def neg(self, node, arg):
-        return self._read(self.rational.neg, node, arg[0]), arg[1], arg[2]
-
-    def binop(self, node, left, right):
-        atoms = left[1]
-        atoms.extend(right[1])
-        return (self._read(self.rational.binop, node, left[0], right[0]), atoms,
-                left[2] if left[2] is not None else right[2])
+        return arg
 
     def power(self, node, base):
-        return self._read(self.rational.power, node, base[0]), base[1], base[2]
+        return base
+
+    def binop(self, node, left, right):
+        atoms, error = left
+        if error is not None or right is _NOTHING:
+            return left
+        if atoms is None:
+            return right
+        if right[0]:
+            atoms.extend(right[0])         # left's list: made below this node, used once
+        return atoms, right[1]
 
     def trig(self, node):
         turn = fmpq(1, 4) - as_fmpq(node.pi_multiple) / 2 if node.func == "sin" \
             else as_fmpq(node.pi_multiple) / 2
-        atoms = [("cos", normal_turn(turn), node.func)] if rational_cos_turn(turn) is None \
-            else []
-        return self._read(self.rational.trig, node), atoms, None
+        if rational_cos_turn(turn) is None:
+            return [("cos", normal_turn(turn), node.func)], None
+        return _NOTHING
 
     def sqrt(self, node, arg):
-        q, inner, inner_error = arg
-        value = self._read(self.rational.sqrt, node, q)
-        if isinstance(q, ExpressionError):
-            return value, [], q
-        if q is _IRRATIONAL:
-            inner.append(("nested", node))
-            return value, inner, inner_error
+        try:
+            q = _evaluate(node.arg, RationalSystem())
+        except ValueError:                 # an irrational atom: a nested radical
+            atoms, error = arg
+            if error is not None:
+                return arg
+            atoms = atoms if atoms is not None else []
+            atoms.append(("nested", node))
+            return atoms, None
+        except ExpressionError as err:
+            return None, err
         if q < 0:
-            return value, [], ExpressionError("square root of a negative number",
-                                              offset=node.offset)
-        return value, [("sqrt", q)] if rational_sqrt(q) is None else [], None
+            return None, ExpressionError("square root of a negative number", offset=node.offset)
+        return ([("sqrt", q)], None) if rational_sqrt(q) is None else _NOTHING
 
     def unknown(self, node):  # pragma: no cover - the parser makes no other nodes
-        error = ExpressionError(f"unknown expression node {type(node).__name__}",
-                                offset=node.offset)
-        return error, [], error
+        return None, ExpressionError(f"unknown expression node {type(node).__name__}",
+                                     offset=node.offset)
+
+
+_ATOMS = _Atoms()
 
 
 # ---------------------------------------------------------------- evaluation
