@@ -75,3 +75,38 @@ def test_within_a_run_the_numbers_of_an_instant_share_one_root():
         assert sqrt_over_k_alpha(a + 5) is None
     with AnalysisContext(memo=False).active():
         assert _alpha().root is not a.root
+
+
+#: what a fresh process answers: a new level over the one-level tower of sqrt(1 + sqrt 2)
+TOWER_DECISION = """
+from exactsym.exact.algebraic.tower_numbers import mq_sqrt_any, tower_sqrt
+from exactsym.exact.multiquadratic import sqrt_rational
+y = mq_sqrt_any(1 + sqrt_rational(2))
+print(tower_sqrt(y + 100).tower.levels)
+"""
+
+
+@in_own_context
+def _tower_run(shifts):
+    """A run that adds levels to the one-level tower of sqrt(1 + sqrt 2)."""
+    from exactsym.exact.algebraic.tower_numbers import mq_sqrt_any, tower_sqrt
+    y = mq_sqrt_any(1 + sqrt_rational(2))
+    return [tower_sqrt(y + k) for k in shifts]
+
+
+@in_own_context
+def _tower_decision():
+    from exactsym.exact.algebraic.tower_numbers import mq_sqrt_any, tower_sqrt
+    y = mq_sqrt_any(1 + sqrt_rational(2))
+    return str(tower_sqrt(y + 100).tower.levels)
+
+
+def test_the_levels_over_an_instants_tower_are_the_runs_own():
+    """Before, the instants' one-level towers were a process-wide lru_cache: the levels
+    one run added (at most 12) were every later run's, whose next level then failed."""
+    fresh = subprocess.run([sys.executable, "-c", TOWER_DECISION], capture_output=True,
+                           text=True, check=True).stdout.strip()
+    assert fresh == "2"
+    for _ in range(2):
+        assert [r.v[0] for r in _tower_run(range(1, 12))] == list(range(2, 13))   # new levels
+        assert _tower_decision() == fresh
