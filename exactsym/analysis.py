@@ -11,7 +11,7 @@ Every command and both renderings of the report (:mod:`exactsym.report.check`: J
 read the :class:`Analysis` it returns; nothing appends itself to anything at import.
 
 The work the layers remember per number or vector object (balls, gaps, homogeneous forms
-of directions) is held by one :class:`~exactsym.geometry.analysis_context.AnalysisContext`
+of directions) is held by one :class:`~exactsym.exact.context.AnalysisContext`
 per analysis, made here and kept in the :class:`Analysis` (its report reads the same
 forms): no module keeps anything of one configuration for the next.
 """
@@ -21,7 +21,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 
 from .audit.statements import audit as run_audit
-from .geometry.analysis_context import AnalysisContext
+from .exact.context import AnalysisContext
 from .geometry.configuration import Configuration, no_cycle_collection
 from .geometry.levels import Level, Levels, RationalLevels, levels_of
 from .paper.family import DEFAULT_LIMITS, PaperResult, paper_procedure

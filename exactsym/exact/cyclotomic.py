@@ -107,7 +107,7 @@ def root_of_unity(field: NumberField, k: int) -> FieldElement:
     return field.element(fmpq_poly(coeffs))
 
 
-_RADICAL: dict = {}
+_RADICAL: dict = {}         # m -> (r, Phi_r): by value, a few entries per field seen
 
 
 def _radical_cyclotomic(m: int) -> tuple:
@@ -117,6 +117,8 @@ def _radical_cyclotomic(m: int) -> tuple:
         r = 1
         for p in factorization(m):
             r *= p
+        if len(_RADICAL) >= 256:           # a bound on the memory
+            _RADICAL.clear()
         found = _RADICAL[m] = (r, fmpz_poly.cyclotomic(r))
     return found
 

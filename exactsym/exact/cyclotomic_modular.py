@@ -20,6 +20,7 @@ from math import gcd
 
 from flint import fmpq, fmpz, nmod_poly
 
+from .context import Cache
 from .factor import factorization, is_prime
 from .field import PolyElement
 from .modular import sparse_image
@@ -115,7 +116,9 @@ def images(numbers) -> tuple | None:
     return p, out
 
 
-_IMAGES: dict = {}         # (id(x), M) -> (x, images): a coordinate enters many tests
+#: (id(x), M) -> (x, images): a coordinate enters many tests; a table of the analysis
+#: (:mod:`.context`), so an id names its object only while the analysis keeps both
+_IMAGES = Cache("cyclotomic images mod p")
 _IMAGES_LIMIT = 256
 
 
@@ -123,8 +126,9 @@ def _element_images(x: PolyElement, m: int, p: int, roots) -> tuple | None:
     """The two images of the cyclotomic element ``x`` (embedded in Q(zeta_m)), or None
     when p divides its denominator; remembered by identity (the entry keeps ``x``
     alive, so its id is not reused while cached)."""
+    images = _IMAGES.table()
     key = (id(x), m)
-    found = _IMAGES.get(key)
+    found = images.get(key)
     if found is not None and found[0] is x:
         return found[1]
     if isinstance(x, SparseCyclotomic):
@@ -140,9 +144,9 @@ def _element_images(x: PolyElement, m: int, p: int, roots) -> tuple | None:
         poly = nmod_poly(x.poly.numer(), p)
         step = m // x.field.conductor        # zeta_c = zeta_M^(M/c)
         pair = tuple(int(poly(pow(w, step, p))) * inv % p for w in roots)
-    if len(_IMAGES) >= _IMAGES_LIMIT:
-        _IMAGES.clear()
-    _IMAGES[key] = (x, pair)
+    if len(images) >= _IMAGES_LIMIT:
+        images.clear()
+    images[key] = (x, pair)
     return pair
 
 

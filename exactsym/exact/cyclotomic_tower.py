@@ -93,14 +93,14 @@ class CyclotomicTower(Tower):
         if isinstance(other, PolyElement):
             return self.field(other)            # the field itself or a cyclotomic subfield
         if isinstance(other, MQ):
-            return self.field(other.rational()) if other.is_rational() else self.field(other)
+            return self.field(other.to_fmpq()) if other.is_rational() else self.field(other)
         if isinstance(other, (int, fmpz, fmpq, Fraction)):
             return self.field(other)
         return None
 
     def wrap(self, v):
         if type(v) is not tuple and v.is_rational():
-            return MQ.rational(v.rational())    # rationals are MQ: keys and hashes as rationals
+            return MQ.rational(v.to_fmpq())    # rationals are MQ: keys and hashes as rationals
         return TowerElement(self, v)
 
     def base_root(self, x):
@@ -131,7 +131,7 @@ class CyclotomicTower(Tower):
         root = self._roots.get(x)
         if root is not None:
             return root
-        q = x.rational()
+        q = x.to_fmpq()
         if q <= 0:
             if q < 0:
                 raise ValueError("the square root of a negative number")
@@ -148,7 +148,7 @@ class CyclotomicTower(Tower):
         else:
             rest = q
             for i in levels:
-                rest /= self.radicands[i].rational()
+                rest /= self.radicands[i].to_fmpq()
             root = self._base_sqrt(rest)                          # every factor positive
             for i in levels:
                 root = self.mul(root, (i + 1, self.zero, self.one))
@@ -163,7 +163,7 @@ class CyclotomicTower(Tower):
     def _rational_sqrt(self, x):
         if type(x) is tuple or not x.is_rational():
             return None
-        q = x.rational()
+        q = x.to_fmpq()
         if q < 0:
             return None
         if q == 0:

@@ -34,7 +34,7 @@ from typing import Iterable, Sequence
 from flint import fmpq, fmpz
 
 from ..errors import ExpressionError, FieldTooLargeError
-from ..io.exprtree import BinOp, Const, Fold, Neg, Node, Pow, Sqrt, Trig, fold
+from ..io.exprtree import Fold, Node, fold
 from . import cyclotomic
 from .field import FieldElement, NumberField, PolyElement, as_fmpq
 from .multiquadratic import MQ, sqrt_rational, squarefree_split
@@ -101,7 +101,7 @@ class MultiquadraticSystem:
 
     def sqrt(self, q):
         if isinstance(q, MQ):
-            q = q.rational()
+            q = q.to_fmpq()
         return sqrt_rational(q)
 
 
@@ -300,43 +300,80 @@ def rational_sqrt(q: fmpq) -> fmpq | None:
 
 
 # ---------------------------------------------------------------- atom collection
-def _rational_value(node: Node) -> fmpq | None:
-    """The value of ``node`` if it is rational without any field work, else None."""
-    try:
-        value = _evaluate(node, RationalSystem())
-    except ValueError:
-        return None
-    return value
-
-
 def _collect(node: Node, atoms: list) -> None:
     """Append the irrational atoms of ``node``: ("sqrt", q), ("cos", turn), ("nested",
-    Sqrt node)."""
-    if isinstance(node, Const):
-        return
-    if isinstance(node, Neg):
-        _collect(node.arg, atoms)
-    elif isinstance(node, BinOp):
-        _collect(node.left, atoms)
-        _collect(node.right, atoms)
-    elif isinstance(node, Pow):
-        _collect(node.base, atoms)
-    elif isinstance(node, Trig):
+    Sqrt node), left to right, a nested radical after the atoms of its radicand; raise
+    the first error found on the way (:class:`_Atoms`)."""
+    found, error = fold(node, _ATOMS)
+    if error is not None:
+        raise error
+    if found:
+        atoms.extend(found)
+
+
+#: a node without atoms or errors
+_NOTHING = (None, None)
+
+
+class _Atoms(Fold):
+    """``(atoms, error)`` of a node, for :func:`_collect`: its irrational atoms (a list, or
+    None for none) and the first error of the collection (or None).  A square root reads
+    its radicand in Q (:class:`RationalSystem`): an error of that reading is the error
+    (before any error inside the radicand); an irrational radicand is a nested radical,
+    whose own atoms and error count; a rational one is an atom when it is no square.
+    Errors are carried up, not raised, so that the first in that order (left before right)
+    is the one :func:`_collect` raises."""
+
+    __slots__ = ()
+
+    def const(self, node):
+        return _NOTHING
+
+    def neg(self, node, arg):
+        return arg
+
+    def power(self, node, base):
+        return base
+
+    def binop(self, node, left, right):
+        atoms, error = left
+        if error is not None or right is _NOTHING:
+            return left
+        if atoms is None:
+            return right
+        if right[0]:
+            atoms.extend(right[0])         # left's list: made below this node, used once
+        return atoms, right[1]
+
+    def trig(self, node):
         turn = fmpq(1, 4) - as_fmpq(node.pi_multiple) / 2 if node.func == "sin" \
             else as_fmpq(node.pi_multiple) / 2
         if rational_cos_turn(turn) is None:
-            atoms.append(("cos", normal_turn(turn), node.func))
-    elif isinstance(node, Sqrt):
-        q = _rational_value(node.arg)
-        if q is None:
-            _collect(node.arg, atoms)
+            return [("cos", normal_turn(turn), node.func)], None
+        return _NOTHING
+
+    def sqrt(self, node, arg):
+        try:
+            q = _evaluate(node.arg, RationalSystem())
+        except ValueError:                 # an irrational atom: a nested radical
+            atoms, error = arg
+            if error is not None:
+                return arg
+            atoms = atoms if atoms is not None else []
             atoms.append(("nested", node))
-        elif q < 0:
-            raise ExpressionError("square root of a negative number", offset=node.offset)
-        elif rational_sqrt(q) is None:
-            atoms.append(("sqrt", q))
-    else:  # pragma: no cover - the parser makes no other nodes
-        raise ExpressionError(f"unknown expression node {type(node).__name__}", offset=node.offset)
+            return atoms, None
+        except ExpressionError as err:
+            return None, err
+        if q < 0:
+            return None, ExpressionError("square root of a negative number", offset=node.offset)
+        return ([("sqrt", q)], None) if rational_sqrt(q) is None else _NOTHING
+
+    def unknown(self, node):  # pragma: no cover - the parser makes no other nodes
+        return None, ExpressionError(f"unknown expression node {type(node).__name__}",
+                                     offset=node.offset)
+
+
+_ATOMS = _Atoms()
 
 
 # ---------------------------------------------------------------- evaluation
@@ -421,7 +458,7 @@ class _Evaluation(Fold):
             if arg.sign() < 0:
                 raise ExpressionError("square root of a negative number", offset=node.offset)
             return system.atoms[("nested", node)]
-        arg = arg.rational() if isinstance(arg, FieldElement) else arg
+        arg = arg.to_fmpq() if isinstance(arg, FieldElement) else arg
         if arg < 0:
             raise ExpressionError("square root of a negative number", offset=node.offset)
         return system.sqrt(arg)

@@ -209,12 +209,17 @@ class FieldElement:
     """An exact real algebraic number of the kernel: a :class:`PolyElement` (a polynomial in
     the generator of a :class:`NumberField`) or a multiquadratic element
     (:class:`exactsym.exact.multiquadratic.MQ`).  Both offer ``+ - * / **``, exact
-    comparisons, ``sign()``, ``is_rational()``, ``rational()`` and ``hash``; algorithms only
+    comparisons, ``sign()``, ``is_zero()``, ``is_rational()``, ``to_fmpq()`` and ``hash``
+    (:class:`~.number.ExactNumber`); algorithms only
     ask ``isinstance(x, FieldElement)`` to tell them from ``fmpq``.  The order comparisons
     below read ``self._cmp(other)``: the sign of ``self - other``, or None for a foreign
     type (MQ writes its own)."""
 
     __slots__ = ()
+
+    def is_zero(self) -> bool:
+        """Whether the number is 0 (exactly; a kind with a cheaper test overrides it)."""
+        return self.sign() == 0
 
     def __pow__(self, k: int):
         """Square and multiply; ``self._one()`` is the subclass's 1 (for ``k = 0``)."""
@@ -407,7 +412,37 @@ class PolyElement(FieldElement):
     def is_rational(self) -> bool:
         return self.poly.degree() <= 0
 
-    def rational(self) -> fmpq:
+    def is_zero(self) -> bool:
+        return self.poly.is_zero()
+
+    def text(self) -> str:
+        """The configuration-syntax text: the real part's cosines for a cyclotomic field
+        (rational ones in the constant), else a polynomial in the field's theta."""
+        x = self
+        if x.is_rational():
+            return rational_text(x.to_fmpq())
+        field = x.field
+        coeffs = x.poly.coeffs()
+        if field.conductor is not None:
+            # x = sum c_k zeta^k is real, so x = sum c_k cos(2 pi k / M); the cosines that
+            # are rational (k/M of denominator 1, 2, 3, 4 or 6) join the constant term
+            m = field.conductor
+            const, terms = fmpq(coeffs[0]), []
+            for k, c in enumerate(coeffs):
+                if not k or c == 0:
+                    continue
+                rational = _RATIONAL_COS.get(fmpq(k, m).q)
+                if rational is not None:
+                    const += c * rational
+                else:
+                    terms.append((c, f"cos({pi_multiple_text(fmpq(2 * k, m))})"))
+            return sum_text([(const, "")] + terms)
+        theta = f"({field.theta_text})"
+        terms = [(coeffs[0], "")] + [(c, theta if k == 1 else f"{theta}^{k}")
+                                    for k, c in enumerate(coeffs) if k and c != 0]
+        return sum_text(terms)
+
+    def to_fmpq(self) -> fmpq:
         """The value as ``fmpq``; raises ``ValueError`` when it is irrational."""
         if not self.is_rational():
             raise ValueError("not a rational number")
@@ -452,7 +487,7 @@ class PolyElement(FieldElement):
         h = self._hash
         if h is None:
             poly = self.poly
-            h = self._hash = hash(self.rational()) if poly.degree() <= 0 else \
+            h = self._hash = hash(self.to_fmpq()) if poly.degree() <= 0 else \
                 hash((tuple(int(c) for c in poly.numer().coeffs()), int(poly.denom())))
         return h
 
@@ -484,3 +519,45 @@ class PolyElement(FieldElement):
 
     def __repr__(self):
         return f"PolyElement({self.poly} in {self.field.name})"
+
+
+# -- texts in the configuration syntax (exact/text.py writes the other kinds) --------
+
+def rational_text(q) -> str:
+    q = as_fmpq(q)
+    return str(q.p) if q.q == 1 else f"{q.p}/{q.q}"
+
+
+#: cos(2 pi k/M) by the denominator of k/M, where it is rational
+_RATIONAL_COS = {1: fmpq(1), 2: fmpq(-1), 3: fmpq(-1, 2), 4: fmpq(0), 6: fmpq(1, 2)}
+
+
+def pi_multiple_text(q: fmpq) -> str:
+    sign, p = ("-", -q.p) if q < 0 else ("", q.p)
+    head = "pi" if p == 1 else f"{p}*pi"
+    return sign + (head if q.q == 1 else f"{head}/{q.q}")
+
+
+def sum_text(terms: list[tuple[fmpq, str]]) -> str:
+    """``c1*t1 + c2*t2 ...`` with ``t == ""`` for a constant; ``"0"`` for no term."""
+    out = []
+    for coeff, term in terms:
+        if coeff == 0:
+            continue
+        neg = coeff < 0
+        mag = -coeff if neg else coeff
+        if term == "":
+            body = rational_text(mag)
+        elif mag == 1:
+            body = term
+        elif mag.q == 1:
+            body = f"{mag.p}*{term}"
+        elif mag.p == 1:
+            body = f"{term}/{mag.q}"
+        else:
+            body = f"{mag.p}*{term}/{mag.q}"
+        if not out:
+            out.append(("-" if neg else "") + body)
+        else:
+            out.append((" - " if neg else " + ") + body)
+    return "".join(out) if out else "0"

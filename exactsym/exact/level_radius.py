@@ -70,6 +70,9 @@ class _LevelIdentity:
         result = self.__eq__(other)
         return result if result is NotImplemented else not result
 
+    def is_zero(self) -> bool:
+        return self.sign() == 0          # a ball proves most radii positive
+
 
 class LevelRadius(_LevelIdentity, PolyElement):
     """``scale * |p - C|^2`` (``p``, ``centre`` exact points of one cyclotomic field,
@@ -208,9 +211,9 @@ class TowerLevelRadius(_LevelIdentity, TowerElement):
         value = self.value()
         return value.is_rational() if isinstance(value, FieldElement) else True
 
-    def rational(self):
+    def to_fmpq(self):
         value = self.value()
-        return value.rational() if isinstance(value, FieldElement) else fmpq(value)
+        return value.to_fmpq() if isinstance(value, FieldElement) else fmpq(value)
 
     def enclosure(self, prec: int = 53):
         if self.made:
@@ -223,6 +226,9 @@ class TowerLevelRadius(_LevelIdentity, TowerElement):
             return dx * dx + dy * dy
 
     _number = TowerElement
+
+    def __neg__(self):          # the exact number's negative (not a level's radius)
+        return -TowerElement(self.tower, self.v)
 
     def sign(self) -> int:
         return (not self.made and self._ball_sign()) or sign(self.value())

@@ -58,14 +58,6 @@ def _as_fmpq(x) -> fmpq:
     raise TypeError(f"not a rational: {type(x).__name__}")
 
 
-class _Rational:
-    """``MQ.rational(q)`` builds the element q; ``x.rational()`` is the kernel's name
-    (:class:`~.field.FieldElement`) for the value of a rational element ``x``."""
-
-    def __get__(self, obj, cls):
-        return cls.from_rational if obj is None else obj.to_fmpq
-
-
 def _coerced(other):
     """``other`` as an :class:`MQ` (a rational is coerced), or None for a foreign type."""
     if isinstance(other, MQ):
@@ -103,7 +95,9 @@ class MQ(FieldElement):
         q = _as_fmpq(q)
         return MQ({1: q} if q != 0 else {})
 
-    rational = _Rational()
+    #: ``MQ.rational(q)``: the element q (the value of a rational element is read with
+    #: :meth:`to_fmpq`, the name of the number interface, :class:`~.number.ExactNumber`)
+    rational = from_rational
 
     @staticmethod
     def sqrt(q) -> "MQ":

@@ -3,8 +3,10 @@ system offer, and the questions the layers above ask about a number.
 
 Every exact number of exactsym is a python-flint ``fmpq`` (the rationals) or an element
 of one of the kinds below it (:class:`ExactNumber`: ``MQ``, ``PolyElement``,
-``SparseCyclotomic``, ``TowerElement``, and the lazy level radii).  ``fmpq`` is a C type
-that cannot carry methods, so the questions are functions here that take either; the
+``SparseCyclotomic``, ``TowerElement``, the lazy level radii, and the motion's numbers of
+exact/algebraic/: ``TowerNumber``, ``AlgebraicNumber``, ``AlgebraicTowerNumber``).  ``fmpq``
+is a C type that cannot carry methods, so the questions are functions here that take
+either (:func:`sign`, :func:`rational_value`, :func:`enclosure`); the
 layers above (geometry/, truth/, paper/) ask them instead of testing classes.  Which kind
 holds a configuration's numbers is decided once, by :func:`.evaluate.number_system` (as
 sympy's ``construct_domain`` does); how costly a kind's arithmetic is, and therefore which
@@ -14,7 +16,7 @@ thresholds below, and nowhere else.
 
 from __future__ import annotations
 
-from typing import Protocol
+from typing import Protocol, runtime_checkable
 
 from flint import arb, fmpq
 
@@ -32,6 +34,7 @@ LARGE_DEGREE = 512
 RATIO_KEY_DEGREE = 2
 
 
+@runtime_checkable
 class ExactNumber(Protocol):
     """What every exact number other than ``fmpq`` offers: field arithmetic with ``int``
     and ``fmpq`` operands (``+ - * /``, ``**`` by an integer), exact comparisons and ``==``,
@@ -40,11 +43,14 @@ class ExactNumber(Protocol):
     def sign(self) -> int:
         """-1, 0 or 1, exactly."""
 
+    def is_zero(self) -> bool:
+        """Whether the number is 0 (decided exactly)."""
+
     def is_rational(self) -> bool:
         """Whether the number is rational (decided exactly)."""
 
-    def rational(self) -> fmpq:
-        """The number as an ``fmpq``, when :meth:`is_rational`."""
+    def to_fmpq(self) -> fmpq:
+        """The number as an ``fmpq`` (``ValueError`` when it is not rational)."""
 
     def enclosure(self, prec: int = 53) -> arb:
         """An Arb ball around the value at about ``prec`` bits."""
@@ -110,7 +116,7 @@ def enclosure(x, prec: int = 53) -> arb:
 def rational_value(x):
     """``x`` as an ``fmpq`` when it is rational (decided exactly), else None."""
     if isinstance(x, FieldElement):
-        return x.rational() if x.is_rational() else None
+        return x.to_fmpq() if x.is_rational() else None
     return fmpq(x)
 
 

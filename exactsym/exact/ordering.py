@@ -42,7 +42,7 @@ def exact_key(x):
         return (int(x.p), int(x.q))
     if isinstance(x, MQ):
         if x.is_rational():
-            q = x.rational()
+            q = x.to_fmpq()
             return (int(q.p), int(q.q))
         return (_MULTIQUADRATIC,) + tuple(sorted((m, int(c.p), int(c.q))
                                                  for m, c in x.terms.items()))
@@ -55,7 +55,7 @@ def exact_key(x):
         return (_TOWER, x.tower) + tower_key(x.v)
     if isinstance(x, FieldElement):
         if x.is_rational():
-            q = x.rational()
+            q = x.to_fmpq()
             return (int(q.p), int(q.q))
         return (_IRRATIONAL, x.field) + tuple((int(c.p), int(c.q)) for c in x.poly.coeffs())
     if isinstance(x, int):

@@ -30,7 +30,7 @@ def rational_ratio(num, den):
         if quotient_irrational(num, den):
             return None
         q = num / den
-        return q.rational() if q.is_rational() else None
+        return q.to_fmpq() if q.is_rational() else None
     if isinstance(num, TowerElement) or isinstance(den, TowerElement):
         if tower_ratio_irrational(num, den):     # a level's radius, not made: F_p images
             return None
@@ -39,10 +39,10 @@ def rational_ratio(num, den):
         if q is not NotImplemented:
             return q if q is not None and num == den * q else None
         q = num / den                       # a cyclotomic base: divide
-        return q.rational() if q.is_rational() else None
+        return q.to_fmpq() if q.is_rational() else None
     if not isinstance(num, PolyElement) and not isinstance(den, PolyElement):
         q = num / den                       # multiquadratic numbers (a tower's level 0)
-        return (q.rational() if q.is_rational() else None) if isinstance(q, FieldElement) \
+        return (q.to_fmpq() if q.is_rational() else None) if isinstance(q, FieldElement) \
             else fmpq(q)
     if quotient_irrational(num, den):   # two maps into F_p disagree: microseconds, where
         return None                     # a coefficient of 16,000 bits costs 0.1 ms to read

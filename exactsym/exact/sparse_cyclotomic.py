@@ -195,7 +195,7 @@ class SparseCyclotomic(FieldElement):
         if self.is_zero():
             raise ZeroDivisionError("division by zero")
         if self.is_rational():
-            return self._new(rational_terms(1 / self.rational()))
+            return self._new(rational_terms(1 / self.to_fmpq()))
         den = self.num
         if len(den) == 1 and 0 in den:                       # a rational numerator
             return self._new(scale_terms(self.den or {0: fmpq(1)}, 1 / den[0]))
@@ -210,7 +210,7 @@ class SparseCyclotomic(FieldElement):
         if o is None:
             return NotImplemented
         if o.is_rational():
-            return self / o.rational()
+            return self / o.to_fmpq()
         if self.den is not None and (self.den is o.den or self.den == o.den):
             # (a/d) / (b/d) = a/b: no product of sums (a line's slope y/x, whose
             # coordinates share the denominator of the SEC centre, multiplied a/d by d/b)
@@ -242,7 +242,7 @@ class SparseCyclotomic(FieldElement):
         or a sum of cosines (the SEC centre X/D, the centroid of a translated C7 set: every
         later product multiplied those sums), else itself."""
         if (self.den is not None or len(self.num) > 1) and self.is_rational():
-            return self._new(rational_terms(self.rational()))
+            return self._new(rational_terms(self.to_fmpq()))
         return self
 
     def is_rational(self) -> bool:
@@ -272,7 +272,7 @@ class SparseCyclotomic(FieldElement):
             context.mean_trace(mul_cosines(den, den, context.n))
         return q if cosines_zero(add_terms(num, scale_terms(den, q), -1), context.n) else False
 
-    def rational(self) -> fmpq:
+    def to_fmpq(self) -> fmpq:
         r = self._rational_value()
         if r is None:
             raise ValueError("not a rational number")

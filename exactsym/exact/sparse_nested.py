@@ -29,10 +29,15 @@ at the first prime (two conjugates disagree), a rational non-square times a squa
 about |R| primes; a square is never proved, and costs the whole budget (|R| + 40 primes,
 at most :data:`_PRIMES`) before it is refused.
 
-The certificate (:func:`level_witness`) proves each nested level with one map defined on
-every level below it, which the checker re-runs (``checker_tower_sparse``).
+Input reaches this through MakeAsym's radial move only (:meth:`.sparse_tower.
+SparseKummerTower.extended`, a copy of the configuration's tower): a configuration's own
+tower has rational levels only, so its certificate never holds a nested level.  The
+sparse nested reading that would put nested levels in it, and the certificate writer of
+such a level, are tests/reference/sparse_nested_reading.py (issue 29: code input does not
+reach leaves the package); the checker still verifies such a level (a certificate file
+is input).
 
-Public names: :func:`new_level_proved`, :func:`level_witness`.
+Public names: :func:`new_level_proved`.
 """
 
 from __future__ import annotations
@@ -46,7 +51,7 @@ from .modular import sparse_image
 from .sparse_context import root_of_unity
 from .tower_proof import sqrt_mod
 
-__all__ = ["new_level_proved", "level_witness"]
+__all__ = ["new_level_proved"]
 
 #: primes l = k M + 1 tried at most (and |R| + 40): :data:`_CONJUGATES` embeddings at the
 #: first (they settle a non-square there), two at each later one (they vary the chi(k_m))
@@ -78,7 +83,7 @@ def _rational(v):
     """The rational value of a raw base value of the tower, or None."""
     if type(v) is tuple or not v.is_rational():
         return None
-    return v.rational()
+    return v.to_fmpq()
 
 
 def _rational_image(q, l: int):
@@ -201,32 +206,3 @@ def new_level_proved(tower, x) -> bool:
             elif rhs:
                 return True         # 0 = 1: no subset T makes x prod k_m a square of F
     return False
-
-
-def level_witness(tower, index: int, limit: int):
-    """``(l, w, roots)`` for the certificate of level ``index`` (1-based) of ``tower``, a
-    nested level: l = 1 mod lcm(N, 4, the primes of the rational radicands below; 8 for 2)
-    prime below ``limit``, w a primitive N-th root of unity mod l, ``roots`` a root of the
-    image of each radicand below (all non-zero residues), and the image of the level's
-    radicand a non-residue (``checker_tower_sparse``'s proof).  None when no prime among
-    :data:`_PRIMES` (each with :data:`_CONJUGATES` embeddings) gives one."""
-    radicands = tower.radicands
-    below = range(1, index)
-    split = _split_modulus(tower.context.n, [q for q in (_rational(radicands[j - 1])
-                                                          for j in below) if q is not None])
-    units = _units(tower.context.n, _CONJUGATES)
-    # from k = 1: the checker's Miller-Rabin bound is near 3.3 * 10^24 (a denominator that
-    # l divides makes an image undefined, and the next prime is taken)
-    for l, g in _primes(tower.context, _PRIMES, split, start=1):
-        if l >= limit:
-            return None
-        for u in units:
-            w = pow(g, u, l)
-            embedding = _Embedding(tower.context.n, l, w)
-            roots = _roots_of(embedding, radicands, below)
-            if roots is None:
-                continue
-            image = embedding.value(radicands[index - 1], roots)
-            if image and pow(image, (l - 1) // 2, l) == l - 1:
-                return l, w, [roots[j] for j in below]
-    return None

@@ -12,7 +12,7 @@ from math import gcd
 
 from flint import fmpq
 
-from .text import rational_text, sum_text
+from .field import rational_text, sum_text
 
 #: cos(2 pi e/N) by the order N/gcd(e, N) of zeta^e, where it is rational
 _RATIONAL_COS = {1: fmpq(1), 2: fmpq(-1), 3: fmpq(-1, 2), 4: fmpq(0), 6: fmpq(1, 2)}
@@ -42,7 +42,7 @@ def _cosine_sum(terms: dict, n: int) -> str:
 def sparse_text(x) -> str:
     """The text of a :class:`~.sparse_cyclotomic.SparseCyclotomic`; it parses back to x."""
     if x.is_rational():
-        return rational_text(x.rational())
+        return rational_text(x.to_fmpq())
     num = _cosine_sum(x.num, x.ctx.n)
     if x.den is None:
         return num

@@ -12,10 +12,10 @@ exact, which is all the tower's structural equality and hash ask of its base val
 There is no square-root test in the sparse base.  A nested radical is a new level when
 Legendre characters prove its radicand no square of the top field (:mod:`.sparse_nested`):
 MakeAsym's radial move (a root of a ratio of squared radii) gets a copy of the tower with
-that level (:meth:`SparseKummerTower.extended`), a nested radical read by
-the sparse nested reading (tests/reference/sparse_nested_reading.py, not yet reached from input) extends the tower in
-place (:meth:`SparseKummerTower.adjoin_nested`, after every root of a rational); a radicand the characters do not settle (it may be a square, e.g. a denesting)
-is refused (FieldTooLargeError, exit 2).  Above a nested level a rational whose root would
+that level (:meth:`SparseKummerTower.extended`); a radicand the characters do not settle
+(it may be a square, e.g. a denesting) is refused (FieldTooLargeError, exit 2).  (The
+sparse nested reading, not reached from input, extends a tower in place:
+tests/reference/sparse_nested_reading.py.)  Above a nested level a rational whose root would
 need a new level is refused (rational levels come first, so that
 :class:`.kummer.SquareClasses` still indexes them).  A rational whose class needs a Gauss sum of
 more than :data:`.sparse_cyclotomic.MAX_GAUSS_TERMS` terms (a prime of N near 10^6) is
@@ -67,7 +67,7 @@ class SparseKummerTower(CyclotomicTower):
         if isinstance(other, SparseCyclotomic):
             return other
         if isinstance(other, MQ) and other.is_rational():
-            return self.const(other.rational())
+            return self.const(other.to_fmpq())
         if isinstance(other, (int, fmpz, fmpq)):
             return self.const(other)
         if isinstance(other, Fraction):
@@ -94,9 +94,9 @@ class SparseKummerTower(CyclotomicTower):
             x = self.coerce_base(x)
             if x is not None and x.is_rational():
                 if self.nested and x not in self._roots and \
-                        self.classes.express(x.rational()) is None and x.rational() > 0:
+                        self.classes.express(x.to_fmpq()) is None and x.to_fmpq() > 0:
                     raise FieldTooLargeError(
-                        f"sqrt({x.rational()}) above a nested radical over the sparse "
+                        f"sqrt({x.to_fmpq()}) above a nested radical over the sparse "
                         f"Q(zeta_{self.conductor}) (no square-root test there)")
                 return self._kummer_sqrt(x)
         return self.base_root(x)
@@ -115,14 +115,6 @@ class SparseKummerTower(CyclotomicTower):
         copy._roots = dict(self._roots)
         copy._adjoin_proved(x)
         return copy
-
-    def adjoin_nested(self, x):
-        """The root of x (a positive raw value, not rational) in this tower, extended in
-        place by the level sqrt(x) unless x already is a radicand: a nested radical of the
-        input (``SparseNestedSystem`` of tests/reference/, which reads every root of a rational
-        first).  FieldTooLargeError as :meth:`extended`."""
-        root = self._roots.get(x)
-        return root if root is not None else self._adjoin_proved(x)
 
     def _adjoin_proved(self, x):
         if self.nested >= MAX_LEVELS:

@@ -9,22 +9,7 @@ from __future__ import annotations
 from flint import fmpq
 
 from ..io.exprtree import Fold, Node, fold
-from .field import FieldElement, PolyElement, as_fmpq
-
-
-def rational_text(q) -> str:
-    q = as_fmpq(q)
-    return str(q.p) if q.q == 1 else f"{q.p}/{q.q}"
-
-
-#: cos(2 pi k/M) by the denominator of k/M, where it is rational
-_RATIONAL_COS = {1: fmpq(1), 2: fmpq(-1), 3: fmpq(-1, 2), 4: fmpq(0), 6: fmpq(1, 2)}
-
-
-def pi_multiple_text(q: fmpq) -> str:
-    sign, p = ("-", -q.p) if q < 0 else ("", q.p)
-    head = "pi" if p == 1 else f"{p}*pi"
-    return sign + (head if q.q == 1 else f"{head}/{q.q}")
+from .field import FieldElement, as_fmpq, pi_multiple_text, rational_text
 
 
 # Binding strength of what a string is, loosest first: a sum, a product or quotient, a
@@ -83,56 +68,8 @@ def expression_text(node: Node) -> str:
     return fold(node, _TEXTS)[0]
 
 
-def sum_text(terms: list[tuple[fmpq, str]]) -> str:
-    """``c1*t1 + c2*t2 ...`` with ``t == ""`` for a constant; ``"0"`` for no term."""
-    out = []
-    for coeff, term in terms:
-        if coeff == 0:
-            continue
-        neg = coeff < 0
-        mag = -coeff if neg else coeff
-        if term == "":
-            body = rational_text(mag)
-        elif mag == 1:
-            body = term
-        elif mag.q == 1:
-            body = f"{mag.p}*{term}"
-        elif mag.p == 1:
-            body = f"{term}/{mag.q}"
-        else:
-            body = f"{mag.p}*{term}/{mag.q}"
-        if not out:
-            out.append(("-" if neg else "") + body)
-        else:
-            out.append((" - " if neg else " + ") + body)
-    return "".join(out) if out else "0"
-
-
 def number_text(x) -> str:
     """The configuration-syntax text of an exact number."""
     if not isinstance(x, FieldElement):
         return rational_text(x)
-    if not isinstance(x, PolyElement):
-        return x.text()                 # each other kind writes itself
-    if x.is_rational():
-        return rational_text(x.rational())
-    field = x.field
-    coeffs = x.poly.coeffs()
-    if field.conductor is not None:
-        # x = sum c_k zeta^k is real, so x = sum c_k cos(2 pi k / M); the cosines that
-        # are rational (k/M of denominator 1, 2, 3, 4 or 6) join the constant term
-        m = field.conductor
-        const, terms = fmpq(coeffs[0]), []
-        for k, c in enumerate(coeffs):
-            if not k or c == 0:
-                continue
-            rational = _RATIONAL_COS.get(fmpq(k, m).q)
-            if rational is not None:
-                const += c * rational
-            else:
-                terms.append((c, f"cos({pi_multiple_text(fmpq(2 * k, m))})"))
-        return sum_text([(const, "")] + terms)
-    theta = f"({field.theta_text})"
-    terms = [(coeffs[0], "")] + [(c, theta if k == 1 else f"{theta}^{k}")
-                                for k, c in enumerate(coeffs) if k and c != 0]
-    return sum_text(terms)
+    return x.text()                     # each kind writes itself (ExactNumber.text)

@@ -158,7 +158,7 @@ def square_root(x) -> str:
     ('4', '2*sqrt(2) ≈ 2.82843', 'sqrt(85)/3 ≈ 3.07318')
     """
     if isinstance(x, FieldElement) and x.is_rational():
-        x = x.rational()
+        x = x.to_fmpq()
     if isinstance(x, FieldElement):
         size = _huge_text(x)
         if size is not None:

@@ -236,7 +236,7 @@ class Tower:
     def _divide(self, x, y, cache):
         if type(y) is not tuple:
             if y.is_rational():
-                return self.mul(x, self.const(1 / y.rational()))
+                return self.mul(x, self.const(1 / y.to_fmpq()))
             inv = cache.get(y)
             if inv is None:
                 inv = cache[y] = y.inverse()
@@ -454,7 +454,7 @@ def text(tower: Tower, v) -> str:
     lev, a, b = v
     root = f"sqrt({text(tower, tower.radicands[lev - 1])})"
     if type(b) is not tuple and b.is_rational():
-        c = b.rational()
+        c = b.to_fmpq()
         mag = -c if c < 0 else c
         body = root if mag == 1 else f"{mag.p}*{root}" if mag.q == 1 else \
             f"{root}/{mag.q}" if mag.p == 1 else f"{mag.p}*{root}/{mag.q}"
@@ -489,7 +489,7 @@ def leaf_ratio(num, den):
         if isinstance(den, SparseCyclotomic) and den and \
                 isinstance(num, (SparseCyclotomic, MQ)):
             q = num / den          # a sparse base: a quotient, no inverse; exact test
-            return q.rational() if q.is_rational() else None
+            return q.to_fmpq() if q.is_rational() else None
         return NotImplemented
     i = 0                      # a cyclotomic base: den's first non-zero coefficient
     while dp[i] == 0:
@@ -584,10 +584,13 @@ class TowerElement(FieldElement):
         return self._new(out)
 
     # -- exact comparison -------------------------------------------------------
+    def is_zero(self) -> bool:
+        return False                     # a number of level >= 1 (b != 0) is never zero
+
     def is_rational(self) -> bool:
         return False
 
-    def rational(self) -> fmpq:
+    def to_fmpq(self) -> fmpq:
         raise ValueError("not a rational number")
 
     def sign(self) -> int:

@@ -25,6 +25,7 @@ from math import gcd, lcm
 
 from flint import fmpq
 
+from .context import Cache
 from .cyclotomic_sqrt import image_mod, root_of_unity_mod, split_primes
 from .factor import factorization, is_prime
 from .modular import (character_rows, image, independent_rows, kummer_split_primes, sparse_image,
@@ -51,7 +52,9 @@ def _coefficients(x):
         yield from _coefficients(x[2])
 
 
-_MAPS: dict = {}           # id(tower) -> (tower, number of radicands, maps or None)
+#: id(tower) -> (tower, number of radicands, maps or None): a table of the analysis
+#: (:mod:`.context`), so an id names its tower only while the analysis keeps both
+_MAPS = Cache("tower maps mod p")
 
 
 def tower_maps(tower: Tower, tries: int = 128, budget: int = 256):
@@ -62,12 +65,13 @@ def tower_maps(tower: Tower, tries: int = 128, budget: int = 256):
     a denominator divisible by p).  A rational number has one image under every map, so
     two maps that disagree on a number prove it irrational (:func:`tower_images`).
     Remembered per tower and number of levels."""
-    hit = _MAPS.get(id(tower))
+    table = _MAPS.table()
+    hit = table.get(id(tower))
     if hit is not None and hit[0] is tower and hit[1] == len(tower.radicands):
         return hit[2]
     if getattr(tower, "classes", None) is not None:
         found = _kummer_maps(tower)
-        _MAPS[id(tower)] = (tower, len(tower.radicands), found)
+        table[id(tower)] = (tower, len(tower.radicands), found)
         return found
     found = None
     primes = kummer_split_primes(tower.primes)
@@ -98,9 +102,9 @@ def tower_maps(tower: Tower, tries: int = 128, budget: int = 256):
         if len(maps) == 2:
             found = (p, maps[0], maps[1])
             break
-    if len(_MAPS) > 64:
-        _MAPS.clear()
-    _MAPS[id(tower)] = (tower, len(tower.radicands), found)
+    if len(table) > 64:
+        table.clear()
+    table[id(tower)] = (tower, len(tower.radicands), found)
     return found
 
 
@@ -333,7 +337,7 @@ def legendre_rank_primes(m: int, radicands, limit: int):
     reach it.  Alone (no roots of Psi_m) they prove the radicands independent modulo squares
     of Q(zeta_m) (docs/certificates.md, "Square roots of rationals over the sparse
     Q(zeta_N)")."""
-    values = [int(r.rational().p) * int(r.rational().q) for r in radicands]
+    values = [int(r.to_fmpq().p) * int(r.to_fmpq().q) for r in radicands]
     rows: dict = {}
     out: list = []
     if not values:
@@ -372,7 +376,7 @@ def _kummer_maps(tower):
         return None
     nested = getattr(tower, "nested", 0)
     rational = tower.radicands[:len(tower.radicands) - nested]
-    values = [int(r.rational().p) * int(r.rational().q) for r in rational]
+    values = [int(r.to_fmpq().p) * int(r.to_fmpq().q) for r in rational]
     modulus = lcm(n, 8)
     for v in values:
         for q in factorization(v) if v > 1 else ():
@@ -409,21 +413,24 @@ def _kummer_maps(tower):
     return None
 
 
-_KUMMER_IMAGES: dict = {}  # (id(x), p, w) -> (x, image): coordinates enter many keys
+#: (id(x), p, w) -> (x, image): coordinates enter many keys; a table of the analysis
+#: (:mod:`.context`), so an id names its object only while the analysis keeps both
+_KUMMER_IMAGES = Cache("Kummer images mod p")
 
 
 def _kummer_image(x, p: int, w: int, roots: list):
     """The image of a raw value: zeta_N -> w, y_i -> roots[i - 1]; None at a pole.
     Remembered by identity (the entry keeps x alive, so its id is not reused): a sparse
     base number of hundreds of terms costs as many modular powers."""
+    table = _KUMMER_IMAGES.table()
     key = (id(x), p, w)
-    hit = _KUMMER_IMAGES.get(key)
+    hit = table.get(key)
     if hit is not None and hit[0] is x:
         return hit[1]
     value = _kummer_image_of(x, p, w, roots)
-    if len(_KUMMER_IMAGES) >= 1 << 14:
-        _KUMMER_IMAGES.clear()
-    _KUMMER_IMAGES[key] = (x, value)
+    if len(table) >= 1 << 14:
+        table.clear()
+    table[key] = (x, value)
     return value
 
 
@@ -432,7 +439,7 @@ def _kummer_image_of(x, p: int, w: int, roots: list):
         a, b = _kummer_image(x[1], p, w, roots), _kummer_image(x[2], p, w, roots)
         return None if a is None or b is None else (a + b * roots[x[0] - 1]) % p
     if isinstance(x, MQ):
-        q = x.rational()
+        q = x.to_fmpq()
         return None if int(q.q) % p == 0 else int(q.p) * pow(int(q.q), -1, p) % p
     poly = getattr(x, "poly", None)
     if poly is not None:                     # dense: a polynomial in zeta_N

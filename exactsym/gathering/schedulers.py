@@ -29,6 +29,7 @@ import sys
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+from ..exact.context import in_own_context
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .invariants import Checker, Violation
@@ -146,6 +147,7 @@ def _status(world: World):
     return world.fresh_decision(IDENTITY)
 
 
+@in_own_context         # the run's K(alpha) roots and levels are its own (exact/context.py)
 def run(points, scheduler: str = "async", seed: int = 0, readings: Readings = Readings(),
         rigid: bool = True, delta: Fraction | None = None, max_events: int = 2000,
         checker: Checker | None = None, progress: bool = False, reflections: bool = True,

@@ -30,7 +30,7 @@ from flint import arb, ctx, fmpq
 from ..exact import exact_sorted, sign as _sign
 from ..exact.balls import expression_ball
 from ..exact.fused import product_sum
-from .analysis_context import Cache
+from ..exact.context import Cache
 from .predicates import PseudoAngle
 from .strings import cyclic_occurrences, cyclic_period
 

@@ -383,7 +383,7 @@ def _cartesian_of_polar(radii, turns):
             if not r.is_rational():
                 raise NotImplementedError("Cartesian coordinates of moved robots at "
                                           "irrational radii are not built")
-            r = r.rational()
+            r = r.to_fmpq()
         rational.append(r)
     system = number_system((), turns)
     return system, [(system.coerce(r) * system.cos_turn(t),

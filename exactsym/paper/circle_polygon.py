@@ -73,7 +73,7 @@ from functools import cached_property, cmp_to_key
 
 from ..exact import fmpq, normal_turn, rational_sqrt, sign
 from ..exact.number import any_algebraic, is_algebraic, is_sparse, tower_of
-from ..geometry.analysis_context import Cache
+from ..exact.context import Cache
 from .filtered import ball, compare_directions
 from .homogeneous import register
 from .inverses import inverse_length, squared_length
@@ -286,7 +286,7 @@ def _rational_ratio_root(la, lb):
     if is_algebraic(la):
         if not (la.is_rational() and lb.is_rational()):
             return None
-        la, lb = la.rational(), lb.rational()
+        la, lb = la.to_fmpq(), lb.to_fmpq()
     return rational_sqrt(fmpq(la) / fmpq(lb))
 
 

@@ -17,7 +17,7 @@ from flint import arb
 
 from ..exact import exact_key, sign
 from ..exact.number import any_algebraic, is_algebraic
-from ..geometry.analysis_context import Cache
+from ..exact.context import Cache
 
 _PREC = 64
 _BALLS = Cache("paper balls")     # id(x) -> (x, ball)

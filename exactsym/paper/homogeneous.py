@@ -26,7 +26,7 @@ numbers as they are.  :func:`register` records the homogeneous form of a directi
 vector when the paper layer makes it (:func:`homogeneous_of` finds it by the vector
 object: an entry keeps the vector alive, so an id is never mistaken for another's).
 The record is a table of the analysis's context
-(:class:`~exactsym.geometry.analysis_context.AnalysisContext`): the vectors are
+(:class:`~exactsym.exact.context.AnalysisContext`): the vectors are
 megabytes each, and it holds one configuration's, which the report of that analysis
 still reads.  Outside an analysis nothing is recorded: the texts are the usual ones.
 """
@@ -37,7 +37,7 @@ from ..exact import number_text
 from ..exact.level_radius import level_form
 from ..exact.number import cheap_products, short_texts
 from ..exact.ratio import rational_ratio
-from ..geometry.analysis_context import Cache
+from ..exact.context import Cache
 
 __all__ = ["register", "homogeneous_of", "scaled", "quotient_text",
            "centre_texts", "is_short", "is_short_field", "radius_text", "sec_radius_text",

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from ..exact import exact_key, fmpq
 from ..exact.number import any_algebraic, is_algebraic
-from ..geometry.analysis_context import Cache
+from ..exact.context import Cache
 
 _INVERSES = Cache("inverse lengths")     # exact key -> inverse
 _LIMIT = 256

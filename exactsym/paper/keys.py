@@ -18,7 +18,7 @@ from ..exact import exact_key, fmpq, normal_turn, sign
 from ..exact.fused import complex_product as fused_complex_product, cross_is_zero
 from ..exact.cyclotomic_text import fast_number_text as number_text
 from ..exact.text_numbers import DIGITS, HUGE, LONG, huge_quotient, number, quotient_decimal
-from ..geometry.analysis_context import Cache
+from ..exact.context import Cache
 from .homogeneous import homogeneous_pair, line_direction, slope_text
 from .circle_polygon import CirclePolygon
 from ..exact.cyclotomic_modular import product_ratio_irrational

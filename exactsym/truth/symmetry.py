@@ -59,7 +59,7 @@ from ..exact.number import all_plain_rational, any_algebraic, enclosure, is_plai
 from ..exact.fused import complex_product, product_sum
 from .symbols import Symbols, intern_symbols, least_rotation, rotation_less
 from ..geometry.algebraic_filtered import certified_c1
-from ..geometry.analysis_context import Cache
+from ..exact.context import Cache
 from ..geometry.levels import Levels, RationalLevels, levels_of
 from ..geometry.sec import LazyCentre
 from .rays_filtered import filtered_rays, integer_pseudo_angle as _pseudo_angle_of_integers, \

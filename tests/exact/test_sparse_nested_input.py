@@ -8,7 +8,6 @@ reading in."""
 from __future__ import annotations
 
 import copy
-import importlib
 import json
 import time
 from fractions import Fraction
@@ -22,7 +21,7 @@ from exactsym.certify.certificate import make_certificate
 from exactsym.geometry.configuration import load
 from exactsym.errors import InputError
 from exactsym.exact import evaluate, evaluate_all
-from reference.sparse_nested_reading import SparseNestedSystem, sparse_nested_system
+from reference.sparse_nested_reading import SparseNestedSystem, swap_in
 from exactsym.exact.multiquadratic import MQ
 from exactsym.exact.sparse_tower import SparseKummerTower
 from exactsym.exact.tower import TowerElement
@@ -30,14 +29,15 @@ from exactsym.io.expr import parse_expression
 from exactsym.geometry.levels import levels_of
 from exactsym.truth.symmetry import symmetry_group
 from certificate_checks import rejected
+from exactsym.certify.encoder import CertificateError, Encoder
 
-
-EVALUATE = importlib.import_module("exactsym.exact.evaluate")
+#: the package's own writer of a nested level: it refuses (input does not reach one)
+PACKAGE_NESTED_LEVELS = Encoder._nested_levels
 
 
 @pytest.fixture(autouse=True)
 def sparse_nested_reading(monkeypatch):
-    monkeypatch.setattr(EVALUATE, "_mixed_system", sparse_nested_system)
+    swap_in(monkeypatch)
 
 
 def _values(*texts):
@@ -134,6 +134,15 @@ def test_nested_levels_over_the_sparse_base_certify(tmp_path):
     assert [lev.get("kummer", False) for lev in levels] == [True, False]
     assert levels[1]["radicand"] == [1, "1", "1"]               # 1 + sqrt(2), over level 1
     assert "sparse-cyclotomic" in _tower(cert)["base"]
+
+
+def test_the_package_alone_does_not_certify_a_nested_level(tmp_path, monkeypatch):
+    """Without the reference's writer (tests/reference/sparse_nested_reading.py) the
+    producer refuses a nested level over the sparse base instead of writing it."""
+    monkeypatch.setattr(Encoder, "_nested_levels", PACKAGE_NESTED_LEVELS)
+    rows = _ring("sqrt(1+sqrt(2))", Fraction(1, 97), 7) + _ring("3", Fraction(3, 101), 7)
+    with pytest.raises(CertificateError, match="nested level over the sparse base"):
+        make_certificate(load(_write(tmp_path, "c7.toml", rows)))
 
 
 def test_tampered_nested_level_proofs_are_rejected(tmp_path):

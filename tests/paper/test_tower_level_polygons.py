@@ -19,7 +19,7 @@ from exactsym.paper.circle_polygon import level_polygon
 from exactsym.paper.family import concentric_polygons
 from exactsym.paper.family.concentric import mirror_lines
 from exactsym.paper.filtered import cross_sign, dot_sign
-from exactsym.geometry.analysis_context import AnalysisContext
+from exactsym.exact.context import AnalysisContext
 from exactsym.paper.keys import gap_ids
 from exactsym.paper.polygon_report import level_verdicts
 

@@ -17,7 +17,8 @@ from flint import arb, ctx, fmpq, fmpq_poly
 
 from exactsym.errors import ExpressionError, FieldTooLargeError
 from exactsym.exact.field import NumberField, as_fmpq
-from exactsym.exact.text import pi_multiple_text, sum_text, expression_text, rational_text
+from exactsym.exact.field import sum_text
+from exactsym.exact.text import pi_multiple_text, expression_text, rational_text
 from exactsym.io.exprtree import BinOp, Const, Neg, Node, Pow, Sqrt, Trig
 
 #: Largest degree of a field built by primitive elements.

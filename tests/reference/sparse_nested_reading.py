@@ -1,17 +1,26 @@
 """The sparse nested reading (issue 29: code input does not reach leaves the package): nested
 radicals with cos/sin beyond the dense base read as levels proved new by Legendre
 characters over the sparse Q(zeta_N).  Input refuses these (``evaluate._mixed_system``);
-tests swap this reading in to test it and its certificates, until input reaches it.
-The tower's :meth:`~exactsym.exact.sparse_tower.SparseKummerTower.adjoin_nested` and
-:mod:`exactsym.exact.sparse_nested` stay in the package: the certifier reads them.
+tests swap this reading in to test it and its certificates, until input reaches it
+(:func:`swap_in`): the tower extended in place (:func:`adjoin_nested`) and the certificate
+of a nested level (:func:`nested_levels`, :func:`level_witness`) moved here with it.
+:func:`exactsym.exact.sparse_nested.new_level_proved` stays in the package (MakeAsym's
+radial move reaches it), and so does the checker's test of such a level (a certificate
+file is input).
 """
 
 from __future__ import annotations
 
+import importlib
+
 from flint import fmpq
 
+from exactsym.certify.encoder import CertificateError, Encoder
+from exactsym.certify.primes import MR_LIMIT
 from exactsym.exact.evaluate import (MultiquadraticSystem, SparseKummerSystem, _collect,
                                      _cosine_conductor, _evaluate)
+from exactsym.exact.sparse_nested import (_CONJUGATES, _PRIMES, _Embedding, _primes, _rational,
+                                          _roots_of, _split_modulus, _units)
 from exactsym.exact.mq_closure import decided_sqrt
 from exactsym.exact.multiquadratic import MQ
 from exactsym.exact.sparse_cyclotomic import SparseCyclotomic
@@ -25,8 +34,8 @@ class SparseNestedSystem(SparseKummerSystem):
     degree 768): the tower of :class:`SparseKummerSystem`, its rational levels made first
     (:func:`sparse_nested_system`, not yet reached from input: see there), then each
     nested radical a level proved new by characters, added in place
-    (:meth:`~exactsym.exact.sparse_tower.SparseKummerTower.adjoin_nested`; FieldTooLargeError when not
-    proved, e.g. a radicand that is a square there)."""
+    (:func:`adjoin_nested`; FieldTooLargeError when not proved, e.g. a radicand that is
+    a square there)."""
 
     def __init__(self, conductor: int):
         super().__init__(conductor)
@@ -39,7 +48,7 @@ class SparseNestedSystem(SparseKummerSystem):
             if root is not None:
                 return sum((c * super(SparseNestedSystem, self).sqrt(fmpq(m))
                             for m, c in root.terms.items()), self.coerce(0))
-            return wrap(self.tower, self.tower.adjoin_nested(raw))
+            return wrap(self.tower, adjoin_nested(self.tower, raw))
         return super().sqrt(x)
 
     def denest(self, node: Node) -> None:
@@ -85,3 +94,63 @@ def sparse_nested_system(atoms):
         if atom[0] == "nested":
             system.denest(atom[1])
     return system
+
+
+def swap_in(monkeypatch) -> None:
+    """Read input with this reading and certify its nested levels (a test's fixture)."""
+    # (the module: the package's name ``evaluate`` is the function)
+    monkeypatch.setattr(importlib.import_module("exactsym.exact.evaluate"), "_mixed_system",
+                        sparse_nested_system)
+    monkeypatch.setattr(Encoder, "_nested_levels", nested_levels)
+
+
+def adjoin_nested(tower, x):
+    """The root of x (a positive raw value, not rational) in ``tower`` (a
+    :class:`~exactsym.exact.sparse_tower.SparseKummerTower`), extended in place by the
+    level sqrt(x) unless x already is a radicand: a nested radical of the input (read
+    after every root of a rational).  FieldTooLargeError as ``tower.extended``."""
+    root = tower._roots.get(x)
+    return root if root is not None else tower._adjoin_proved(x)
+
+
+def nested_levels(encoder, tower, levels: list, first: int) -> None:
+    """The certificate's nested levels of ``tower`` above its ``first`` rational ones (the
+    producer's :meth:`~exactsym.certify.encoder.Encoder._nested_levels` when this reading
+    is swapped in): one ring map onto F_l per level (:func:`level_witness`)."""
+    for index in range(first + 1, tower.levels + 1):
+        found = level_witness(tower, index, MR_LIMIT)
+        if found is None:
+            raise CertificateError(f"no prime below {MR_LIMIT} proves level {index} of "
+                                   f"{tower.name} new; cannot certify")
+        l, w, roots = found
+        levels.append({"radicand": encoder._sparse_text(tower.radicands[index - 1]),
+                       "prime": str(l), "zeta": str(w), "roots": [str(t) for t in roots]})
+
+
+def level_witness(tower, index: int, limit: int):
+    """``(l, w, roots)`` for the certificate of level ``index`` (1-based) of ``tower``, a
+    nested level: l = 1 mod lcm(N, 4, the primes of the rational radicands below; 8 for 2)
+    prime below ``limit``, w a primitive N-th root of unity mod l, ``roots`` a root of the
+    image of each radicand below (all non-zero residues), and the image of the level's
+    radicand a non-residue (``checker_tower_sparse``'s proof).  None when no prime among
+    :data:`_PRIMES` (each with :data:`_CONJUGATES` embeddings) gives one."""
+    radicands = tower.radicands
+    below = range(1, index)
+    split = _split_modulus(tower.context.n, [q for q in (_rational(radicands[j - 1])
+                                                          for j in below) if q is not None])
+    units = _units(tower.context.n, _CONJUGATES)
+    # from k = 1: the checker's Miller-Rabin bound is near 3.3 * 10^24 (a denominator that
+    # l divides makes an image undefined, and the next prime is taken)
+    for l, g in _primes(tower.context, _PRIMES, split, start=1):
+        if l >= limit:
+            return None
+        for u in units:
+            w = pow(g, u, l)
+            embedding = _Embedding(tower.context.n, l, w)
+            roots = _roots_of(embedding, radicands, below)
+            if roots is None:
+                continue
+            image = embedding.value(radicands[index - 1], roots)
+            if image and pow(image, (l - 1) // 2, l) == l - 1:
+                return l, w, [roots[j] for j in below]
+    return None

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import exactsym
 from exactsym.analysis import analyse
-from exactsym.geometry.analysis_context import AnalysisContext, Cache
+from exactsym.exact.context import AnalysisContext, Cache
 from exactsym.geometry.configuration import load
 from exactsym.report.check import json_text, report_json
 
@@ -25,10 +25,22 @@ FILES = [EXAMPLES / "big-turns-asymmetric.toml", EXAMPLES / "nested-radical-pent
          EXAMPLES / "square-roots-over-turns-7.toml",
          EXAMPLES / "big-turns-two-heptagons-off-centre.toml"]
 
-#: The number layer (exactsym/exact/) keeps caches of its own that grow with the fields
-#: seen (cyclotomic radicals, embeddings, Kummer images: issue 29, point 1, redesigns
-#: them); every other module dict of the package must stay as it was.
-NUMBER_LAYER = "exactsym.exact."
+#: The module dicts that may grow from one analysis to the next: tables keyed by *value*
+#: (an integer, a pair of integers), never by id(), each bounded (cleared when full) and
+#: holding nothing of a configuration but the fields it names.  Everything else a
+#: computation remembers lives in its AnalysisContext (exactsym/exact/context.py).
+VALUE_KEYED = {
+    # M -> (r, Phi_r), the radical's cyclotomic polynomial: at most 256 entries
+    ("exactsym.exact.cyclotomic", "_RADICAL"),
+    # M -> (p, two primitive M-th roots of unity mod p): at most 17 entries
+    ("exactsym.exact.cyclotomic_modular", "_EMBEDDINGS"),
+    # p -> the least quadratic non-residue mod p: at most 4,096 entries
+    ("exactsym.exact.modular", "_NON_RESIDUES"),
+    # (m1, m2) squarefree radicands -> their gcd: at most 2^20 pairs of integers
+    ("exactsym.exact.mq_products", "_PAIRS"),
+    # N -> the sparse Q(zeta_N)'s tables (one per conductor): at most 65 entries
+    ("exactsym.exact.sparse_context", "_CONTEXTS"),
+}
 
 
 def _modules() -> list:
@@ -48,8 +60,9 @@ def _dict_sizes(modules) -> dict:
 def test_no_module_dict_grows_across_analyses():
     """After a first analysis (tables of constants are filled once), analysing and
     reporting more configurations leaves every module dict of the package as it was,
-    but the number layer's own (:data:`NUMBER_LAYER`): the balls, gaps, vectors and forms
-    of one configuration are its analysis's, dropped with it."""
+    but the few value-keyed bounded tables of :data:`VALUE_KEYED`: the balls, gaps,
+    vectors, forms and F_p images of one configuration are its analysis's, dropped with
+    it."""
     modules = _modules()
     report_json(analyse(load(FILES[0])))
     before = _dict_sizes(modules)
@@ -57,8 +70,20 @@ def test_no_module_dict_grows_across_analyses():
         report_json(analyse(load(path)))
     after = _dict_sizes(modules)
     grown = sorted(k for k, size in after.items()
-                   if size > before.get(k, 0) and not k[0].startswith(NUMBER_LAYER))
+                   if size > before.get(k, 0) and k not in VALUE_KEYED)
     assert grown == []
+
+
+def test_the_value_keyed_tables_are_bounded_and_keyed_by_value():
+    """Each table :data:`VALUE_KEYED` lets grow exists, is cleared when full (its module
+    compares its size with a bound) and is keyed by no ``id()``."""
+    for module_name, name in sorted(VALUE_KEYED):
+        module = importlib.import_module(module_name)
+        assert type(getattr(module, name)) is dict, (module_name, name)
+        source = Path(module.__file__).read_text()
+        assert f"len({name})" in source and f"{name}.clear()" in source, (module_name, name)
+        uses = [line for line in source.splitlines() if name in line]
+        assert not any("id(" in line for line in uses), (module_name, name)
 
 
 def test_the_caches_are_the_analysis_context():

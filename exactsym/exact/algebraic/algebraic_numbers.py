@@ -48,6 +48,7 @@ from __future__ import annotations
 
 from flint import arb, ctx, fmpq
 
+from ..context import Cache
 from ..field import FieldElement
 from ..mq_closure import decided_sqrt
 from ..multiquadratic import MQ
@@ -60,12 +61,16 @@ __all__ = ["AlgebraicNumber", "AlgebraicRoot", "is_algebraic", "algebraic_sqrt",
 
 
 # -- the number type ------------------------------------------------------------------------
+#: f -> [AlgebraicRoot]: one object per root in a run (its context, :mod:`..context`), so
+#: the numbers of an instant share it and the levels over it (at most
+#: :data:`.algebraic_tower.MAX_LEVELS`) are the run's own, never an earlier run's
+_ROOTS = Cache("algebraic roots", shared_outside=True)
+
+
 class AlgebraicRoot:
     """``alpha``: the root of the monic ``f`` (irreducible over every multiquadratic
     field, :func:`.factor.stable`) in the rational interval ``(lo, hi)``; one object per root
-    (:meth:`of`), so numbers of the same instant share it."""
-
-    _known: dict = {}            # f -> [AlgebraicRoot]
+    and run (:meth:`of`), so numbers of the same instant share it."""
 
     def __init__(self, f: tuple, lo: fmpq, hi: fmpq):
         self.f, self.lo, self.hi = f, lo, hi
@@ -75,17 +80,18 @@ class AlgebraicRoot:
 
     @classmethod
     def of(cls, f: tuple, lo: fmpq, hi: fmpq) -> "AlgebraicRoot":
-        for r in cls._known.setdefault(f, []):
+        known = _ROOTS.table()
+        for r in known.setdefault(f, []):
             # (lo, hi) holds one root of f: r's root is in it iff it is the same root
             while not (lo <= r.lo and r.hi <= hi) and not (r.hi <= lo or hi <= r.lo):
                 r._bisect()
             if lo <= r.lo and r.hi <= hi:
                 return r
         root = cls(f, lo, hi)
-        cls._known[f].append(root)
-        if len(cls._known) > 4096:            # a bound on the memory, not on correctness
-            cls._known.clear()
-            cls._known[f] = [root]
+        known[f].append(root)
+        if len(known) > 4096:            # a bound on the memory, not on correctness
+            known.clear()
+            known[f] = [root]
         return root
 
     def _sign_at(self, x: fmpq) -> int:
@@ -307,7 +313,6 @@ class AlgebraicNumber(FieldElement):
     def to_fmpq(self):
         raise ValueError(f"{self.text()} is not rational")
 
-    rational = to_fmpq
 
     def text(self) -> str:
         return f"[{_poly_text(self.c, 'a')}, a = {self.root.text()}]"

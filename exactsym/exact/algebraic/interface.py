@@ -1,4 +1,4 @@
-"""The declared interface of the numbers the motion needs, and the questions about their kind.
+"""The questions the motion asks about the kind of its numbers.
 
 Every number the gathering simulator computes with is one of: a multiquadratic
 :class:`~exactsym.exact.multiquadratic.MQ`; a :class:`~.tower_numbers.TowerNumber` (a
@@ -6,19 +6,19 @@ nested radical: a critical instant's one-level tower, or a run's
 :class:`~.run_tower.RunTower`); an :class:`~.algebraic_numbers.AlgebraicNumber` (a number
 of ``K(alpha)``, alpha a root of a factor that square roots do not express); or an
 :class:`~.algebraic_tower.AlgebraicTowerNumber` (a quadratic level over ``K(alpha)``).
-Each meets :class:`ExactNumber`: field arithmetic, ``sign`` (exact), ``enclosure`` (a
-rigorous Arb ball: filters and drawing only), ``is_zero``, ``is_rational``,
-``to_fmpq``, ``text``.  Code above ``exact/`` calls those and the functions below; it
-asks no ``isinstance`` of a concrete class (sympy's ``Domain``, CGAL's kernel concept).
+Each meets the number layer's one interface, :class:`~exactsym.exact.number.ExactNumber`
+(field arithmetic, ``sign`` (exact), ``enclosure`` (a rigorous Arb ball: filters and
+drawing only), ``is_zero``, ``is_rational``, ``to_fmpq``, ``text``).  Code above ``exact/``
+calls those and the functions below; it asks no ``isinstance`` of a concrete class
+(sympy's ``Domain``, CGAL's kernel concept).
 """
 
 from __future__ import annotations
 
-from typing import Protocol, runtime_checkable
-
 from flint import fmpq
 
 from ..multiquadratic import MQ, sum_of_products
+from ..number import ExactNumber
 from ..tower import TowerElement
 from .algebraic_tower import AlgebraicTower
 from .run_tower import RunTower
@@ -28,29 +28,6 @@ __all__ = ["ExactNumber", "compare", "is_multiquadratic", "motion_number", "nest
 
 #: products of MQ numbers with at least this many pairs of terms are summed over integers
 FUSED_TERMS = 16
-
-
-@runtime_checkable
-class ExactNumber(Protocol):
-    """What every exact number of the motion offers (besides ``+ - * /`` and ``==``)."""
-
-    def sign(self) -> int:
-        """-1, 0 or 1, exactly."""
-
-    def is_zero(self) -> bool:
-        ...
-
-    def is_rational(self) -> bool:
-        ...
-
-    def to_fmpq(self):
-        """The rational value (ValueError when the number is not rational)."""
-
-    def enclosure(self, prec: int = 53):
-        """An Arb ball holding the value (a filter: it never decides alone)."""
-
-    def text(self) -> str:
-        """An expression of the value in the configuration syntax."""
 
 
 def compare(x, y) -> int:

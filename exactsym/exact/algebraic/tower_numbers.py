@@ -31,8 +31,10 @@ then a non-square in every multiquadratic field, and the same check one level do
 fall back to the tower's own test over its base primes (never needed by the simulator's
 runs so far).
 
-Towers are shared by their first radicand (:func:`tower_of`), so the same instant
-computed twice (a Look's I3 and I9 checks, the snapshot cache) gives equal numbers;
+Towers are shared by their first radicand (:func:`tower_of`) within a run (its context,
+:mod:`..context`: the levels a run adds to a tower are that run's, never a later run's),
+so the same instant computed twice (a Look's I3 and I9 checks, the snapshot cache) gives
+equal numbers;
 numbers of two different towers are not compared (:meth:`TowerNumber.__eq__`:
 it raises ValueError, so a decision that would need it is ``undecided``, never wrong;
 callers that must decide equality across towers, :func:`.roots.same_root`, use
@@ -41,10 +43,9 @@ the polynomials instead).
 
 from __future__ import annotations
 
-from functools import lru_cache
-
 from flint import fmpz
 
+from ..context import Cache
 from ..mq_closure import decided_sqrt
 from ..multiquadratic import MQ
 from ..tower import Tower, TowerElement
@@ -111,13 +112,22 @@ def _primes_of(values) -> list:
     return sorted(out)
 
 
-@lru_cache(maxsize=1024)
+#: radicand -> its one-level tower, grown in place by later levels: one per run (before, a
+#: process-wide lru_cache: a later run got the levels, at most 12, of every earlier one)
+_TOWERS = Cache("instant towers", shared_outside=True)
+
+
 def tower_of(radicand: MQ) -> Tower:
     """A one-level tower ``K_0(sqrt(radicand))``, ``K_0`` the multiquadratic field of the
-    radicand's square roots; the same object for the same radicand.  The caller has
-    checked that ``radicand > 0`` has no square root in any multiquadratic field."""
-    tower = Tower(_primes_of([radicand]))
-    tower.adjoin(radicand)           # proved a non-square by the caller: no second test
+    radicand's square roots; the same object for the same radicand in a run.  The caller
+    has checked that ``radicand > 0`` has no square root in any multiquadratic field."""
+    towers = _TOWERS.table()
+    tower = towers.get(radicand)
+    if tower is None:
+        if len(towers) >= 1024:           # a bound on the memory (as the lru_cache was)
+            towers.clear()
+        tower = towers[radicand] = Tower(_primes_of([radicand]))
+        tower.adjoin(radicand)       # proved a non-square by the caller: no second test
     return tower
 
 
