@@ -46,7 +46,7 @@ def _rational(x) -> Fraction | None:
     try:
         if not x.is_rational():
             return None
-        q = x.rational() if hasattr(x, "rational") else x.to_fmpq()
+        q = x.to_fmpq()
     except (ValueError, AttributeError):
         return None
     f = Fraction(int(q.p), int(q.q))

@@ -2,7 +2,7 @@
 
 ``[expect]`` keys read here (validated by :data:`exactsym.io.fileformat.EXPECT_KEYS`):
 
-* ``gather_outcome`` -- gathered | stalled | violated | not-possible | undecided | max-events;
+* ``gather_outcome`` -- gathered | stalled | violated | not-possible | undecided | undecided-at-budget | max-events;
 * ``gather_label`` -- the violated statement's label (``gather-no-obstacle``, ...);
 * ``gather_invariant`` -- the invariant that fires (``I1`` ... ``I10``);
 * ``gather_robots`` -- the robots the violation names (e.g. the colliding pair);

@@ -106,10 +106,9 @@ def fork(world: World) -> World:
     what never changes: the multiquadratic numbers of its positions and paths (immutable
     values: positions, paths, planned targets), the entries of its path log (frozen, and only drawn) and its table of
     points mapped into Look frames (a cache keyed by value, multiquadratic points only);
-    a plain deep copy spent half the search's time walking them.  (A ``World.fork`` in
-    world.py would not need to know the table's name.)"""
+    a plain deep copy spent half the search's time walking them."""
     memo = {id(step): step for step in world.log}
-    local = vars(world).get("_local")
+    local = world.frame_table()
     if local is not None:
         memo[id(local)] = local
     for p in _points_of(world):

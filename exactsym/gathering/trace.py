@@ -88,6 +88,6 @@ def same_result(recorded: dict, res: Result) -> list:
     now = result_dict(res)
     diff = [k for k in ("outcome", "label", "events", "looks", "checks", "violation")
             if recorded.get(k) != now.get(k)]
-    if now["outcome"] == "stopped" and recorded.get("outcome") in ("max-events", "stalled"):
+    if now["outcome"] == "stopped" and recorded.get("outcome") in ("max-events", "stalled", "undecided-at-budget"):
         diff = [k for k in diff if k != "outcome"]   # scheduler-level verdicts, not events
     return diff

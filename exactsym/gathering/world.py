@@ -151,6 +151,10 @@ class World:
         self.home = RunHome()
         self._local = None        # {frame: {point: local point}}
 
+    def frame_table(self):
+        """The table of points mapped into Look frames (keyed by value: a fork may share it)."""
+        return self._local
+
     @property
     def n(self) -> int:
         return len(self.robots)
