@@ -23,7 +23,7 @@ immutable values.
 >>> a.truth.name, a.truth.orderable, a.paper.orderable
 ('C3', False, True)
 >>> sorted({d["statement"] for d in a.audit["discrepancies"]})[:3]
-['GatheringPattern', 'MakeAsym', 'Pasym-Pord']
+['ElectLeader', 'GatheringPattern', 'MakeAsym']
 
 The names are loaded on first use, so that ``import exactsym.checker`` (the standalone
 certificate checker) loads nothing else and ``exactsym --version`` stays fast; ``plot``
