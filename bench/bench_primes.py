@@ -19,7 +19,7 @@ import time
 from flint import fmpz
 
 from exactsym.checker.ext_primes import proved_primes
-from exactsym.certify.primes import PrimalityError, primality_proofs
+from exactsym.certificates.primes import PrimalityError, primality_proofs
 
 
 def _next_prime(n: int) -> int:

@@ -24,10 +24,10 @@ import time
 from itertools import islice
 from pathlib import Path
 
-from exactsym.sweep.canonical import burnside_count, dihedral_permutations, gap_bracelets
-from exactsym.sweep.engine import SweepOptions, run_sweep
-from exactsym.sweep.families import SweepItem, family_items, parse_family
-from exactsym.sweep.job import analyse_batch
+from exactsym.sweeps.canonical import burnside_count, dihedral_permutations, gap_bracelets
+from exactsym.sweeps.engine import SweepOptions, run_sweep
+from exactsym.sweeps.families import SweepItem, family_items, parse_family
+from exactsym.sweeps.job import analyse_batch
 
 FAMILIES = ["roots:12:<=6", "grid:4:<=4", "random:3..6:1:150"]
 WHATS = ["truth", "paper", "audit"]

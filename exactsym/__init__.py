@@ -30,9 +30,7 @@ certificate checker) loads nothing else and ``exactsym --version`` stays fast; `
 imports matplotlib only when it is called.
 """
 
-import sys
 from importlib import import_module
-from types import ModuleType
 
 from .version import __version__
 
@@ -57,13 +55,13 @@ def _config(config_or_path):
     return config_or_path
 
 
-def _certify(config_or_path) -> dict:
+def certify(config_or_path) -> dict:
     """A certificate of the ground truth's verdict (group, orderability) on a
     configuration (or a file name): a JSON-ready dict that :mod:`exactsym.checker` (the
     standard library only) has accepted before it is returned (``docs/certificates.md``).
-    Raises ``exactsym.certify.certificate.CertificateError`` when none can be made.
+    Raises ``exactsym.certificates.certificate.CertificateError`` when none can be made.
 
-    >>> from exactsym import Configuration, certify      # this function, called as certify
+    >>> from exactsym import Configuration, certify
     >>> from exactsym.checker import verify_certificate
     >>> cert = certify(Configuration.from_points([(1, 0), (0, 1), (-1, 0), (0, -1)]))
     >>> cert["claim"]["group"], cert["claim"]["orderable"], verify_certificate(cert)[0]
@@ -103,7 +101,7 @@ def gather(config_or_path, scheduler: str = "async", seed: int = 0,
         "gather_readings": list(readings), "gather_max_events": max_events}))
 
 
-def _sweep(family: str, out, what: str = "audit", serial: bool = True, workers: int = 2,
+def sweep(family: str, out, what: str = "audit", serial: bool = True, workers: int = 2,
            resume: bool = False):
     """Run the analysis ``what`` (``truth``, ``paper``, ``audit``, ``gather``) over every
     configuration of ``family`` (``roots:M:K``, ``grid:N:K``, ...: ``docs/sweeps.md``),
@@ -113,15 +111,15 @@ def _sweep(family: str, out, what: str = "audit", serial: bool = True, workers: 
     counterexample.
 
     >>> import os, tempfile
-    >>> from exactsym import sweep                      # this function, called as sweep
+    >>> from exactsym import sweep
     >>> s = sweep("roots:6:<=3", os.path.join(tempfile.mkdtemp(), "r.jsonl"), what="truth")
     >>> s.configurations, s.groups["D3"]
     (7, 1)
     """
-    from .sweep import analysis_bridge as bridge
-    from .sweep.engine import SweepOptions, run_sweep
-    from .sweep.families import parse_family
-    from .sweep.summary import summarise
+    from .sweeps import analysis_bridge as bridge
+    from .sweeps.engine import SweepOptions, run_sweep
+    from .sweeps.families import parse_family
+    from .sweeps.summary import summarise
     run_sweep(parse_family(family, bridge.file_points), what, out, resume,
               SweepOptions(workers=workers, serial=serial))
     return summarise(out)
@@ -150,38 +148,7 @@ def plot(config_or_analysis, path=None, show_paper: bool = False, show_audit: bo
     return draw(config_or_analysis, path, show_paper=show_paper, show_audit=show_audit)
 
 
-class _CallablePackage(ModuleType):
-    """A subpackage that is also the function of its name: ``exactsym.sweep`` and
-    ``exactsym.certify`` are packages (``exactsym.sweep.engine``) and the API's functions
-    (``exactsym.sweep("roots:6:<=3", "r.jsonl")``).  Importing a submodule binds the
-    package to its parent's attribute, so a plain function of the same name would be
-    replaced by the package after the first such import; one object serves both."""
-
-    def __call__(self, *args, **kw):
-        return _CALLS[self.__name__](*args, **kw)
-
-
-#: package -> the function it is called as
-_CALLS = {__name__ + ".sweep": _sweep, __name__ + ".certify": _certify}
-
-
-class _Package(ModuleType):
-    """``exactsym`` itself: when the import system binds the subpackage ``sweep`` or
-    ``certify`` to it (on their first import, not before: ``import exactsym.checker`` loads
-    nothing else), the subpackage becomes callable."""
-
-    def __setattr__(self, name, value):
-        if isinstance(value, ModuleType) and getattr(value, "__name__", None) in _CALLS:
-            value.__class__ = _CallablePackage
-        super().__setattr__(name, value)
-
-
-sys.modules[__name__].__class__ = _Package
-
-
 def __getattr__(name):
-    if f"{__name__}.{name}" in _CALLS:       # sweep, certify: imported (and made callable)
-        return import_module("." + name, __name__)
     if name in _EXPORTS:
         value = getattr(import_module(_EXPORTS[name], __name__), name)
         globals()[name] = value
@@ -190,4 +157,4 @@ def __getattr__(name):
 
 
 def __dir__():
-    return sorted(set(globals()) | set(_EXPORTS) | {"certify", "sweep"})
+    return sorted(set(globals()) | set(_EXPORTS))

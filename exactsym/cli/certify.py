@@ -22,7 +22,7 @@ def add_certify_arguments(certify) -> None:
                          help="where to write the certificate ('-' for standard output)")
     certify.add_argument("--refutes", metavar="LABEL", default=None,
                          help="write a refutation certificate of LABEL instead "
-                         "(exactsym.certify.refutation)")
+                         "(exactsym.certificates.refutation)")
 
 
 def add_verify_arguments(verify) -> None:
@@ -42,7 +42,7 @@ def _certificate(parsed, refutes):
     :data:`CERTIFY_DENSE_DEGREE` in the sparse field, and if that field refuses the
     numbers (a square root whose Gauss sum is too long) or cannot write them, in the
     field ``check`` uses."""
-    from ..certify.certificate import CertificateError, make_certificate
+    from ..certificates.certificate import CertificateError, make_certificate
     from ..geometry.configuration import from_file
     from ..errors import FieldTooLargeError
     from ..exact.evaluate import dense_degree_limit
@@ -50,7 +50,7 @@ def _certificate(parsed, refutes):
     def make():
         config = from_file(parsed)
         if refutes:
-            from ..certify.refutation import make_refutation
+            from ..certificates.refutation import make_refutation
             return config, make_refutation(config, refutes)
         return config, make_certificate(config)
     try:
@@ -69,7 +69,7 @@ def checked_certificate(config) -> dict:
     checker (``exactsym.certify(...)`` of the API); AssertionError if the checker refuses
     it (the solver's verdict failed the independent check: a bug)."""
     from .. import checker
-    from ..certify.certificate import make_certificate
+    from ..certificates.certificate import make_certificate
     cert = json.loads(json.dumps(make_certificate(config)))
     ok, message = checker.verify_certificate(cert)
     if not ok:

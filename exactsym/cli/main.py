@@ -136,8 +136,8 @@ COMMANDS = {
                _deferred("exactsym.ledger.cli", "run")),
     "sweep": ("search a whole family of configurations for counterexamples, serially or "
               "on a Dask cluster (exit 1 when some statement fails)",
-              _deferred("exactsym.sweep.cli", "add_arguments"),
-              _deferred("exactsym.sweep.cli", "run")),
+              _deferred("exactsym.sweeps.cli", "add_arguments"),
+              _deferred("exactsym.sweeps.cli", "run")),
     "plot": ("draw a configuration: robots, SEC, levels, mirrors, leader (svg, png or pdf)",
              _deferred("exactsym.pictures.cli", "add_arguments"),
              _deferred("exactsym.pictures.cli", "run")),

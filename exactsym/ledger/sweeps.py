@@ -1,6 +1,6 @@
 """Sweep summaries as ledger evidence (issue 13, "feeding the ledger").
 
-A sweep (:mod:`exactsym.sweep`) writes ``RESULTS.evidence.json``: per statement label a
+A sweep (:mod:`exactsym.sweeps`) writes ``RESULTS.evidence.json``: per statement label a
 verdict (``fails`` / ``holds`` / ``vacuous``), the counts and the smallest counterexample
 (``docs/sweeps.md``).  The ledger cites a *committed* copy, ``proofs/sweeps/NAME.json``
 (:func:`import_sweep` writes it: the results file's path dropped, the cited smallest

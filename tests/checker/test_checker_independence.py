@@ -19,8 +19,8 @@ from flint import fmpq, fmpq_poly, fmpz_poly
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certify import certificate, refutation
-from exactsym.certify.encoder import one_sign_change
+from exactsym.certificates import certificate, refutation
+from exactsym.certificates.encoder import one_sign_change
 from exactsym.checker.dispatch import FORMATS, IRREDUCIBILITY, NUMBER_SYSTEMS, REFUTATIONS
 from exactsym.cli.main import main as cli_main
 from exactsym.geometry.configuration import load
@@ -60,7 +60,7 @@ def test_only_the_runners_import_the_checker():
                      p.read_text(), ".".join(p.relative_to(ROOT).parts[:-1]))}
     assert importers == RUNNERS, importers
     probe = "from .. import checker\nfrom ..checker.numbers import psi\nimport json\n"
-    assert _checker_imports(probe, "exactsym.certify") == [
+    assert _checker_imports(probe, "exactsym.certificates") == [
         "exactsym.checker", "exactsym.checker.numbers", "exactsym.checker.numbers.psi"]
 
 
@@ -172,7 +172,7 @@ def test_the_checker_runs_copied_as_a_directory(tmp_path):
 
 # ---------------------------------------------------------------- both sides agree
 def test_psi_solver_and_checker_agree():
-    from exactsym.certify.fields import _psi
+    from exactsym.certificates.fields import _psi
     for m in list(range(3, 300)) + [1155, 4620]:
         assert [int(c) for c in _psi(m).coeffs()] == checker.psi(m), m
         assert [int(c) for c in fmpz_poly.cos_minpoly(m).coeffs()] == checker.psi(m), m

@@ -20,7 +20,7 @@ from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certify.certificate import make_certificate
+from exactsym.certificates.certificate import make_certificate
 from exactsym.geometry.configuration import load
 from exactsym.errors import FieldTooLargeError, InputError
 from exactsym.exact import cyclotomic, evaluate, evaluate_all, exact_key, number_text
@@ -295,7 +295,7 @@ def test_cyclotomic_tower_certificates_are_checked(tmp_path):
 def test_checker_signs_are_exact():
     """The checker's tower signs (A + B y by A, B and A^2 - r B^2) against Arb values."""
     from exactsym.checker.dispatch import number_field
-    from exactsym.certify.encoder import Encoder
+    from exactsym.certificates.encoder import Encoder
     system, values = _values("sqrt(2+cos(2*pi/7))", "cos(2*pi/7)", "sqrt(3+sqrt(2+cos(2*pi/7)))")
     y, c, z = values
     xs = [y - c - 1, 2 * y - 3 * c - 1, z - y - 1, y * z - 3 + c, c - fmpq(1, 2)]

@@ -17,7 +17,7 @@ from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certify.certificate import make_certificate
+from exactsym.certificates.certificate import make_certificate
 from exactsym.geometry.configuration import load
 from exactsym.errors import InputError
 from exactsym.exact import evaluate, evaluate_all
@@ -29,7 +29,7 @@ from exactsym.io.expr import parse_expression
 from exactsym.geometry.levels import levels_of
 from exactsym.truth.symmetry import symmetry_group
 from certificate_checks import rejected
-from exactsym.certify.encoder import CertificateError, Encoder
+from exactsym.certificates.encoder import CertificateError, Encoder
 
 #: the package's own writer of a nested level: it refuses (input does not reach one)
 PACKAGE_NESTED_LEVELS = Encoder._nested_levels

@@ -16,7 +16,7 @@ from flint import fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certify.certificate import make_certificate
+from exactsym.certificates.certificate import make_certificate
 from exactsym.geometry.configuration import load
 from exactsym.errors import FieldTooLargeError, InputError
 from exactsym.exact import evaluate, evaluate_all, exact_key, number_text

@@ -7,7 +7,7 @@ import json
 import pytest
 
 from exactsym import checker
-from exactsym.certify.certificate import make_certificate
+from exactsym.certificates.certificate import make_certificate
 from exactsym.geometry.configuration import load
 from exactsym.errors import InputError
 from exactsym.exact import evaluate, evaluate_all, exact_key

@@ -57,7 +57,7 @@ def test_filtered_ordering_near_tie(monkeypatch):
     give the exact path's ordering, and the certificate checker must accept it."""
     import json
     from exactsym import checker
-    from exactsym.certify.certificate import make_certificate
+    from exactsym.certificates.certificate import make_certificate
     config = _configuration([((5, 0), 1)] * 8, False, [(0, (0, 1))])
     ring = levels_of(config)
     exact = symmetry.symmetry_group(config, ring)
@@ -71,7 +71,7 @@ def test_filtered_ordering_near_tie(monkeypatch):
 def test_default_path_certifies_the_near_tie():
     import json
     from exactsym import checker
-    from exactsym.certify.certificate import make_certificate
+    from exactsym.certificates.certificate import make_certificate
     config = _configuration([((5, 0), 1)] * 8, False, [(0, (0, 1))])
     cert = make_certificate(config)
     assert cert["claim"]["ordering"] == [0, 4, 3, 2, 1]
@@ -342,7 +342,7 @@ def test_large_orderings_pass_the_checker(with_centre):
     import copy
     import json
     from exactsym import checker
-    from exactsym.certify.certificate import make_certificate
+    from exactsym.certificates.certificate import make_certificate
     rnd = random.Random(11)
     points = {(fmpq(rnd.randint(-10 ** 4, 10 ** 4), rnd.randint(1, 30)),
                fmpq(rnd.randint(-10 ** 4, 10 ** 4), rnd.randint(1, 30))) for _ in range(200)}

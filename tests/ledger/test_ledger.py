@@ -338,13 +338,13 @@ def test_uses_contain_every_extracted_ref(ledger):
 # ---------------------------------------------------------------- refutation certificates
 def _refutation(label, case):
     from exactsym.geometry.configuration import load
-    from exactsym.certify.refutation import make_refutation
+    from exactsym.certificates.refutation import make_refutation
     return json.loads(json.dumps(make_refutation(load(ROOT / case), label)))
 
 
 def test_refutation_certificates_verify_and_reject_tampering():
     from exactsym import checker
-    from exactsym.certify.certificate import CertificateError
+    from exactsym.certificates.certificate import CertificateError
     obj = _refutation("Pasym-Pord", "cases/discrepancies/family-chiral-c3-ring.toml")
     ok, why = checker.verify_refutation(obj)
     assert ok and "order 3" in why

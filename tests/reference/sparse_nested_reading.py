@@ -15,8 +15,8 @@ import importlib
 
 from flint import fmpq
 
-from exactsym.certify.encoder import CertificateError, Encoder
-from exactsym.certify.primes import MR_LIMIT
+from exactsym.certificates.encoder import CertificateError, Encoder
+from exactsym.certificates.primes import MR_LIMIT
 from exactsym.exact.evaluate import (MultiquadraticSystem, SparseKummerSystem, _collect,
                                      _cosine_conductor, _evaluate)
 from exactsym.exact.sparse_nested import (_CONJUGATES, _PRIMES, _Embedding, _primes, _rational,
@@ -115,7 +115,7 @@ def adjoin_nested(tower, x):
 
 def nested_levels(encoder, tower, levels: list, first: int) -> None:
     """The certificate's nested levels of ``tower`` above its ``first`` rational ones (the
-    producer's :meth:`~exactsym.certify.encoder.Encoder._nested_levels` when this reading
+    producer's :meth:`~exactsym.certificates.encoder.Encoder._nested_levels` when this reading
     is swapped in): one ring map onto F_l per level (:func:`level_witness`)."""
     for index in range(first + 1, tower.levels + 1):
         found = level_witness(tower, index, MR_LIMIT)

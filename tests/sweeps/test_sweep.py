@@ -15,13 +15,13 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from exactsym.sweep import analysis_bridge as bridge
-from exactsym.sweep import job
-from exactsym.sweep.cli import main
-from exactsym.sweep.engine import SweepOptions, run_sweep
-from exactsym.sweep.families import family_items, parse_family, rank
-from exactsym.sweep.results import read_records
-from exactsym.sweep.summary import ledger_evidence, summarise, write_cases
+from exactsym.sweeps import analysis_bridge as bridge
+from exactsym.sweeps import job
+from exactsym.sweeps.cli import main
+from exactsym.sweeps.engine import SweepOptions, run_sweep
+from exactsym.sweeps.families import family_items, parse_family, rank
+from exactsym.sweeps.results import read_records
+from exactsym.sweeps.summary import ledger_evidence, summarise, write_cases
 
 FAMILY = "roots:12:<=5"
 ROOT = Path(__file__).resolve().parents[2]
@@ -111,7 +111,7 @@ def test_stopped_sweep_resumes_to_the_same_records(serial_run, tmp_path):
 def test_killed_subprocess_resumes_to_the_same_records(serial_run, tmp_path):
     out = tmp_path / "killed.jsonl"
     env = dict(os.environ, PYTHONPATH=str(ROOT))
-    proc = subprocess.Popen([sys.executable, "-m", "exactsym.sweep", FAMILY, "--what", "audit",
+    proc = subprocess.Popen([sys.executable, "-m", "exactsym.sweeps", FAMILY, "--what", "audit",
                              "--serial", "--batch-size", "1", "--out", str(out)],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
     deadline = time.monotonic() + 60
@@ -228,7 +228,7 @@ def test_gather_is_not_applicable_below_five_robots(tmp_path):
 @settings(max_examples=60, deadline=None)
 @given(st.lists(st.integers(0, 60), max_size=80))
 def test_index_set_is_a_set_held_as_intervals(indices):
-    from exactsym.sweep.results import IndexSet
+    from exactsym.sweeps.results import IndexSet
     s, plain = IndexSet(), set()
     for i in indices:
         assert s.add(i) == (i not in plain)
@@ -335,7 +335,7 @@ def test_killed_gzip_sweep_resumes_to_the_same_records(serial_run, tmp_path):
     maybe a torn block), resumed, it holds the same records as the plain serial run."""
     out = tmp_path / "killed.jsonl.gz"
     env = dict(os.environ, PYTHONPATH=str(ROOT))
-    proc = subprocess.Popen([sys.executable, "-m", "exactsym.sweep", FAMILY, "--what", "audit",
+    proc = subprocess.Popen([sys.executable, "-m", "exactsym.sweeps", FAMILY, "--what", "audit",
                              "--serial", "--batch-size", "1", "--out", str(out)],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
     deadline = time.monotonic() + 60

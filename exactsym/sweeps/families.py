@@ -111,7 +111,7 @@ def _fraction(text: str, what: str, family: str) -> Fraction:
 
 def parse_family(text: str, load_points=None) -> Family:
     """Read a family text; ``load_points(path) -> tuple of points`` reads perturb's file
-    (:func:`exactsym.sweep.analysis_bridge.file_points`)."""
+    (:func:`exactsym.sweeps.analysis_bridge.file_points`)."""
     parts = text.split(":")
     kind = parts[0]
     if kind == "roots" and len(parts) in (3, 4):

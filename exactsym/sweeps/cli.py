@@ -2,7 +2,7 @@
 
 Thin: parse, call :func:`.engine.run_sweep` and :mod:`.summary`, print.  The lead wires it
 into ``exactsym`` with :func:`add_arguments` and :func:`run`; :func:`main` is the same
-command on its own (``python -m exactsym.sweep``).
+command on its own (``python -m exactsym.sweeps``).
 
 Exit codes (``docs/cli.md``): 0 done and no statement fails on any configuration
 examined; 1 some statement fails, or some configuration could not be analysed (both named
@@ -139,7 +139,7 @@ def _run(args) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m exactsym.sweep",
+    parser = argparse.ArgumentParser(prog="python -m exactsym.sweeps",
                                      description="Sweep a family of configurations.")
     add_arguments(parser)
     args = parser.parse_args(argv)

@@ -11,10 +11,10 @@ from itertools import combinations, islice
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from exactsym.sweep.canonical import (bracelets, burnside_count, dihedral_permutations,
+from exactsym.sweeps.canonical import (bracelets, burnside_count, dihedral_permutations,
                                       gap_bracelets, gaps_to_positions, orderly_subsets,
                                       square_permutations)
-from exactsym.sweep.families import (FamilyError, family_items, family_size, parse_family)
+from exactsym.sweeps.families import (FamilyError, family_items, family_size, parse_family)
 
 
 def _least_image(perms, cells):

@@ -1,4 +1,4 @@
-"""Elliptic-curve primality certificates (exactsym/certify/elliptic_primes.py) and their check
+"""Elliptic-curve primality certificates (exactsym/certificates/elliptic_primes.py) and their check
 (checker/ext_primes._elliptic): a turn 1/p with p a 100-digit prime whose p - 1 resists now
 certifies; every proof verifies; tampering is caught."""
 
@@ -13,7 +13,7 @@ from flint import fmpz
 from exactsym import checker
 from exactsym.checker.ext_primes import _elliptic, proved_primes
 from exactsym.cli.main import main
-from exactsym.certify.elliptic_primes import MR_LIMIT, elliptic_proofs
+from exactsym.certificates.elliptic_primes import MR_LIMIT, elliptic_proofs
 
 P100 = 10 ** 99 + 289           # p - 1 has 37 bits factored of 329, p + 1 53
 
@@ -54,7 +54,7 @@ def test_the_chain_descends():
 
 
 def test_primes_above_the_digit_limit_are_refused_before_searching(monkeypatch):
-    from exactsym.certify import elliptic_primes
+    from exactsym.certificates import elliptic_primes
 
     def searched(n):
         raise AssertionError("searched")

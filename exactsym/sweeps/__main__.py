@@ -1,4 +1,4 @@
-"""``python -m exactsym.sweep ...`` (the guard matters: Dask's worker processes are
+"""``python -m exactsym.sweeps ...`` (the guard matters: Dask's worker processes are
 spawned and import the main module again)."""
 
 import sys

@@ -31,7 +31,7 @@ def _value(value) -> str:
 def case_text(points, name: str | None = None, notes: str | None = None,
               lemmas=(), expect: dict | None = None) -> str:
     """The TOML text of a configuration: ``points`` as in
-    :class:`exactsym.sweep.families.SweepItem`, ``expect`` the ``[expect]`` block."""
+    :class:`exactsym.sweeps.families.SweepItem`, ``expect`` the ``[expect]`` block."""
     lines = ["format = 1"]
     if name:
         lines.append(f"name = {_string(name)}")

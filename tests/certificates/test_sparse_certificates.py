@@ -13,7 +13,7 @@ from flint import arb, ctx, fmpq
 from hypothesis import given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certify.certificate import make_certificate
+from exactsym.certificates.certificate import make_certificate
 from exactsym.checker.ext_primes import is_prime
 from exactsym.checker.ext_sparse import SparseField, _zero
 from exactsym.geometry.configuration import load
@@ -153,7 +153,7 @@ def test_miller_rabin():
 def test_checker_numbers_agree_with_the_solver(data, m):
     """The checker's cosine-form sums and products (its own code) against the solver's:
     equal numbers, equal residues (hash), the same sign."""
-    from exactsym.certify.encoder import Encoder
+    from exactsym.certificates.encoder import Encoder
     from exactsym.exact.evaluate import SparseCyclotomicSystem
     system = SparseCyclotomicSystem(m)
     field = SparseField({"conductor": str(m),
@@ -202,8 +202,8 @@ def test_certify_writes_moderate_cyclotomic_fields_sparse(tmp_path, capsys):
 def test_certify_falls_back_to_the_dense_field(tmp_path, monkeypatch):
     """When the sparse field cannot write a certificate, certify writes it in the dense
     field check uses (one that verifies)."""
-    import exactsym.certify.certificate as certificate
-    from exactsym.certify.certificate import CertificateError
+    import exactsym.certificates.certificate as certificate
+    from exactsym.certificates.certificate import CertificateError
     from exactsym.cli.certify import _certificate
     from exactsym.exact.evaluate import SparseCyclotomicSystem
     from exactsym.io.fileformat import read_config
@@ -264,7 +264,7 @@ def test_a_conductor_with_two_large_primes():
     """N divisible by two primes above the bound (the full certify factors N many times, about
     10 s: here the field alone): both, and l, are proved, and the checker's field accepts it."""
     from exactsym.checker.ext_primes import proved_primes
-    from exactsym.certify.primes import hashing_prime_factors, primality_proofs
+    from exactsym.certificates.primes import hashing_prime_factors, primality_proofs
     q25 = 7 * 10 ** 24 + 61
     n = 4 * 3 * 5 * 7 * P25 * q25
     context = sparse_context(n)
@@ -340,7 +340,7 @@ def test_composites_claimed_prime_are_rejected(n):
     """A Carmichael number (a^(n-1) = 1 for every a prime to it) or a product of two 20-digit
     primes, with the true factorisation of n - 1 and any witness: never proved."""
     from exactsym.checker.ext_primes import proved_primes
-    from exactsym.certify.primes import primality_proofs
+    from exactsym.certificates.primes import primality_proofs
     factors = _full_factors(n - 1)
     helpers = primality_proofs([q for q, _ in factors])   # the big prime factors of n - 1
     for a in list(range(2, 40)) + [n - 1, 600000787 + 1]:
@@ -383,8 +383,8 @@ def test_certify_refuses_in_one_line_when_p_minus_1_resists(tmp_path, monkeypatc
     effort (here made smaller to keep the test fast; the real bound refuses it in about 2.5 s),
     and no elliptic curve (the search made to fail: tests/test_elliptic_primes.py has the
     success): certify exits 2 with one line naming p; check answers."""
-    from exactsym.certify import elliptic_primes
-    from exactsym.certify import primes as prime_certificates
+    from exactsym.certificates import elliptic_primes
+    from exactsym.certificates import primes as prime_certificates
     from exactsym.cli.main import main
 
     def no_curve(n):
@@ -438,7 +438,7 @@ def test_proofs_are_accepted_exactly_for_primes(n, data):
     the solver's witness is accepted for a prime when F^3 >= n; no witness is accepted for a
     composite."""
     from flint import fmpz
-    from exactsym.certify.primes import _witness
+    from exactsym.certificates.primes import _witness
     if data.draw(st.booleans()):                # primes are rare among random integers
         n = _next_prime(n)
     factors = _full_factors(n - 1)
@@ -464,7 +464,7 @@ def test_medium_primes_and_composites_above_the_bound():
     import random
     from flint import fmpz
     from exactsym.checker.ext_primes import proved_primes
-    from exactsym.certify.primes import primality_proofs
+    from exactsym.certificates.primes import primality_proofs
     rng = random.Random(9)
     for _ in range(12):
         n = rng.randrange(10 ** 24 * 4, 10 ** 40) | 1

@@ -1,4 +1,4 @@
-"""Refutation certificates beyond Pasym-Pord (exactsym.certify.refutation, checker.verify_refutation):
+"""Refutation certificates beyond Pasym-Pord (exactsym.certificates.refutation, checker.verify_refutation):
 every shipped certificate verifies, and every tampering -- a point, the claim, the label,
 a part -- is rejected with a reason."""
 
@@ -11,9 +11,9 @@ from pathlib import Path
 import pytest
 
 from exactsym import checker
-from exactsym.certify.certificate import CertificateError
+from exactsym.certificates.certificate import CertificateError
 from exactsym.geometry.configuration import load
-from exactsym.certify.refutation import PREMISES, make_refutation
+from exactsym.certificates.refutation import PREMISES, make_refutation
 
 ROOT = Path(__file__).resolve().parents[2]
 RING = "cases/discrepancies/family-chiral-c3-ring.toml"

@@ -14,7 +14,7 @@ import json
 import pytest
 
 from exactsym import checker
-from exactsym.certify.certificate import make_certificate
+from exactsym.certificates.certificate import make_certificate
 from exactsym.geometry.configuration import load
 from certificate_checks import rejected as _rejected
 

@@ -24,7 +24,7 @@ from flint import fmpq, fmpz_poly, nmod_poly
 
 from exactsym import checker
 from exactsym.checker.ext_primitive import irreducible_mod
-from exactsym.certify.certificate import CertificateError, make_certificate
+from exactsym.certificates.certificate import CertificateError, make_certificate
 from exactsym.cli.main import main as cli_main
 from exactsym.geometry.configuration import Configuration, load
 from exactsym.truth.symmetry import symmetry_group
@@ -223,7 +223,7 @@ def test_levels_by_balls_compare_only_overlapping_points_exactly():
     point, the centre left out), with exact squared distances asked only for the points
     whose balls meet another's or hold 0."""
     from flint import arb
-    from exactsym.certify.witness import _levels_by_balls
+    from exactsym.certificates.witness import _levels_by_balls
     norms = [Fraction(2), Fraction(5), Fraction(2), Fraction(0), Fraction(7), Fraction(9, 2),
              Fraction(5), Fraction(1, 3)]
     asked = []

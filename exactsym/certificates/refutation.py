@@ -1,7 +1,7 @@
 """Refutation certificates: a statement refuted by facts about symmetries alone.
 
 ``make_refutation(config, label)`` wraps the group certificate of ``config``
-(:func:`exactsym.certify.certificate.make_certificate`) with the label it refutes, and, for the
+(:func:`exactsym.certificates.certificate.make_certificate`) with the label it refutes, and, for the
 statements about the polygons of G_P, group certificates of the parts the premise names
 (a level; a pair of levels; the merged polygon G_ij).  The checker (``verify_refutation``
 of ``exactsym/checker/``, standard library only, run by ``certify`` on what is written here)

@@ -16,7 +16,7 @@ import pytest
 from flint import fmpq
 
 from exactsym import checker
-from exactsym.certify.certificate import make_certificate
+from exactsym.certificates.certificate import make_certificate
 from exactsym.checker.numbers import Invalid
 from exactsym.checker.ext_sparse_tower import SparseKummerTower
 from exactsym.cli.main import main as cli_main

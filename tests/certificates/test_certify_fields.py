@@ -18,7 +18,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from exactsym import checker
-from exactsym.certify.certificate import make_certificate
+from exactsym.certificates.certificate import make_certificate
 from exactsym.geometry.configuration import load
 from certificate_checks import rejected
 
