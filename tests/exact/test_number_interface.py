@@ -23,8 +23,8 @@ NUMBER_CLASSES = {"fmpq", "fmpz", "Fraction", "MQ", "PolyElement", "FieldElement
                   # the motion's (exact/algebraic/)
                   "TowerNumber", "AlgebraicNumber", "AlgebraicTowerNumber", "AlgebraicRoot",
                   "AlgebraicTower", "RunTower"}
-#: packages that own numbers (exact/), or check them on their own (certify/, checker/)
-OWNERS = {"exact", "certify", "checker"}
+#: packages that own numbers (exact/), or check them on their own (certificates/, checker/)
+OWNERS = {"exact", "certificates", "checker"}
 #: the count in the whole package outside OWNERS (issue 29: 80 before, at most 10 asked;
 #: left: two checks that a file's input is rational, gathering/paper_bridge.read_case and
 #: sweep/analysis_bridge): it may only go down
