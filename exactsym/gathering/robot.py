@@ -89,6 +89,11 @@ class Readings:
         return Readings(**kw)
 
 
+class NoRule(ValueError):
+    """The printed FormGPattern has no instruction for this snapshot (a reading made C
+    "occupied" without a robot at C): the leader stays."""
+
+
 @dataclass(frozen=True)
 class Move:
     robot: int
@@ -195,6 +200,10 @@ def _decide(key: tuple, readings: Readings, unit) -> Decision:
         try:
             path = form_pattern_path(current[leader], current, pat, centre, readings, unit,
                                      tower)
+        except NoRule as err:
+            # the algorithm's own gap, not the kernel's: nobody moves (a proved stall when
+            # no frame moves anybody), never "undecided"
+            return Decision("stay", (), centre, pat, None, str(err))
         except ValueError as err:
             return Decision("undecided", (), centre, pat, None, str(err))
         if leader not in moves:
@@ -243,8 +252,8 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1,
     if not occupied(pts, pat, centre, readings.A4, unit):
         return [g.Segment(p, centre)]
     if pat.centre_robot is None:
-        raise ValueError("C is occupied but no robot is centred on it: FormGPattern has "
-                         "no layer to extend")
+        raise NoRule("C is occupied (A4) but no robot is centred on it: FormGPattern has "
+                     "no layer to extend, so the printed algorithm moves nobody")
     l = pat.last_layer
     if pat.last_full():
         return [g.Segment(p, radial_point(centre, p, 2 * (l + 1) * unit, tower))]
@@ -302,7 +311,7 @@ def path_end(path):
     return path[-1].final if path else None
 
 
-__all__ = ["Readings", "READINGS", "Decision", "Move", "compute", "decide",
+__all__ = ["Readings", "READINGS", "Decision", "Move", "NoRule", "compute", "decide",
            "form_pattern_path", "radial_point"]
 
 decide.cache_clear = _decide.cache_clear      # the benchmarks time cold Looks

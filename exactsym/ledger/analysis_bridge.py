@@ -13,7 +13,7 @@ from pathlib import Path
 
 from ..errors import InputError
 
-__all__ = ["CaseAnalysis", "analyse_case"]
+__all__ = ["CaseAnalysis", "analyse_case", "has_leader"]
 
 
 @dataclass(frozen=True)
@@ -45,3 +45,12 @@ def analyse_case(path) -> CaseAnalysis:
         from ..gathering.cases import run_case_file
         failures += run_case_file(path).failures
     return CaseAnalysis(str(path), None, tuple(failures), false, config.n)
+
+
+def has_leader(path) -> bool:
+    """Whether the ground truth elects a leader for the configuration of ``path`` (a
+    reading matrix's "not possible" or stall is then the algorithm's failure)."""
+    from ..analysis import analyse
+    from ..geometry.configuration import load
+    from ..report.check import report_json
+    return report_json(analyse(load(Path(path))))["leader"] is not None

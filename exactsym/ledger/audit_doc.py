@@ -56,6 +56,13 @@ line"): "holds" there is holds-on-cases, never a proof; a failure's smallest
 counterexample is a case file in `cases/sweeps/` that `--check` re-runs. A single robot
 (Pasym-Pord, cor-Pasym-Pord) and fewer than 5 robots (GatheringPattern, MakeAsym) are
 outside the statements' hypotheses and never counted as failures.
+
+A reading matrix (`proofs/gathering/`) is `exactsym gather CASE --readings all` stored for a
+gathering witness: one run per named reading of the paper's algorithm and per handedness,
+each under the adversary search. A statement is graded from its matrices
+(`docs/ledger.md`, "Gathering reading matrices"): refuted when every reading fails on some
+witness -- a reading under which nobody moves, or the run loops, fails; it rescues
+nothing.
 """
 
 
@@ -75,6 +82,8 @@ def _evidence_text(s: Statement, sweeps: dict) -> str:
             parts.append(f"`{e.path}` (sweep: {said})" if said else f"`{e.path}` (sweep)")
         elif e.kind == "witnesses":
             parts.append(f"`{e.path}` ({e.refuted_readings} readings)")
+        elif e.kind == "matrix":
+            parts.append(f"`{e.path}` (reading matrix)")
         else:
             parts.append(f"`{e.path}`")
     return "; ".join(parts) or "--"

@@ -8,6 +8,11 @@ with ``--write``: a command that reads should not change the tree), and prints a
 file the evidence names must exist (exit 1 otherwise); ``--check`` also re-runs every
 piece of evidence (exit 1 on any mismatch, each printed on standard error).
 
+``--write-matrix CASE`` (repeatable) runs the gathering reading matrix of a witness case
+and stores it as ``proofs/gathering/STEM.json``, ready to be cited as
+``{matrix = "proofs/gathering/STEM.json"}`` (:mod:`.gathering_matrices`; seconds to a few
+minutes per case); ``--write-matrix all`` rewrites every matrix the ledger cites.
+
 ``--sweep EVIDENCE.json`` (repeatable) reads a sweep's evidence file and says, for every
 statement of the ledger it reports on, what the sweep found and whether that is
 consistent with the grade (:mod:`.sweeps`; exit 1 if not); ``--save NAME`` then copies it
@@ -27,6 +32,7 @@ from pathlib import Path
 from ..errors import InputError
 from .audit_doc import render
 from .evidence import check_evidence, missing_files
+from .gathering_matrices import MatrixError, compute_matrix, implied_grade, load_matrix
 from .graph import dependency_graph, support
 from .model import load_ledger
 from .sweeps import SweepError, import_sweep, load_sweep, sweep_item
@@ -35,6 +41,7 @@ __all__ = ["add_arguments", "run", "main", "find_root", "ledger_json"]
 
 LEDGER = Path("proofs") / "statements.toml"
 AUDIT = Path("docs") / "audit.md"
+MATRICES = Path("proofs") / "gathering"
 EXIT_OK, EXIT_FALSE, EXIT_INPUT = 0, 1, 2
 
 
@@ -72,6 +79,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--no-cases", action="store_true",
                         help="with --save: copy no case file (a summary cited for what "
                         "holds only)")
+    parser.add_argument("--write-matrix", metavar="CASE", action="append", default=[],
+                        help="run a gathering case's reading matrix and store it in "
+                        "proofs/gathering/ (\"all\": every matrix the ledger cites)")
     parser.add_argument("--root", metavar="DIR", default=None,
                         help="the repository root (default: found from the working "
                         "directory)")
@@ -132,6 +142,36 @@ def sweep_report(ledger, root: Path, paths: list, save: str | None,
     return problems
 
 
+def write_matrices(ledger, root: Path, cases: list) -> int:
+    """``--write-matrix``: store each case's reading matrix; print what each implies."""
+    cited = sorted({e.path for s in ledger.statements for e in s.evidence
+                    if e.kind == "matrix"})
+    if cases == ["all"]:
+        cases = []
+        for path in cited:
+            try:
+                cases.append(root / load_matrix(root / path)["case"])
+            except MatrixError:
+                cases.append(root / "cases" / "gathering" / (Path(path).stem + ".toml"))
+    for case in map(Path, cases):
+        case = case if case.is_absolute() else Path.cwd() / case
+        if not case.is_file():
+            raise InputError("no such case file", str(case))
+        print(f"{case.name}: running the reading matrix ...", file=sys.stderr, flush=True)
+        data = compute_matrix(case.resolve(), root.resolve())
+        target = root / MATRICES / (case.stem + ".json")
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_text(json.dumps(data, indent=1) + "\n", encoding="utf-8")
+        print(f"wrote {target.relative_to(root).as_posix()} ({data['cpu_seconds']} s CPU)")
+    for s in ledger.statements:
+        stored = [load_matrix(root / e.path) for e in s.evidence
+                  if e.kind == "matrix" and (root / e.path).is_file()]
+        if stored:
+            grade, why = implied_grade(stored, s.label)
+            print(f"  {s.label} ({s.grade}): the matrices imply {grade or 'no grade'}: {why}")
+    return EXIT_OK
+
+
 def run(args) -> int:
     root = Path(args.root) if args.root else find_root()
     ledger = load_ledger(root / LEDGER)
@@ -144,6 +184,8 @@ def run(args) -> int:
         for p in problems:
             print(f"ledger: {p}", file=sys.stderr)
         return EXIT_FALSE if problems else EXIT_OK
+    if args.write_matrix:
+        return write_matrices(ledger, root, args.write_matrix)
     if args.write and args.no_write:
         raise InputError("command line: --write and --no-write do not go together")
     if args.write:

@@ -9,7 +9,11 @@
 * a refutation certificate: the standalone checker accepts it, for this label;
 * a sweep summary (:mod:`.sweeps`): well formed, reports on the label, its verdict is
   consistent with the grade, and a failure's smallest case is re-run like an
-  ``audit-false`` case (and has the summary's number of robots).
+  ``audit-false`` case (and has the summary's number of robots);
+* a stored gathering reading matrix (:mod:`.gathering_matrices`): well formed; the grade
+  its statement's matrices imply is no stricter than the ledger's; re-run from its case
+  (those that took at most ``matrix_seconds`` CPU seconds when written; None: all), every
+  row's outcome as stored.
 
 :func:`missing_files` is the cheap part (every file named exists), run on every
 invocation; :func:`check_evidence` runs everything.
@@ -24,6 +28,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
+from .gathering_matrices import MatrixError, grade_problems, load_matrix, rerun_problems
 from .model import Evidence, Ledger
 from .sweeps import SweepError, consistency, load_sweep, needs_case
 
@@ -73,13 +78,15 @@ def _module(path: Path):
 
 def check_evidence(ledger: Ledger, root: Path,
                    analyse: Callable | None = None,
-                   progress: Callable[[str], None] | None = None) -> list[Mismatch]:
+                   progress: Callable[[str], None] | None = None,
+                   matrix_seconds: float | None = None) -> list[Mismatch]:
     """Every mismatch between the ledger's evidence and what re-running it shows."""
     if analyse is None:
         from .analysis_bridge import analyse_case as analyse
     cases: dict[str, object] = {}
     scripts: dict[tuple, str | None] = {}
     witness_result = None
+    matrices: dict[str, dict] = {}
     out = missing_files(ledger, root)
     missing = {(m.label, m.evidence) for m in out}
     for s in ledger.statements:
@@ -158,7 +165,32 @@ def check_evidence(ledger: Ledger, root: Path,
                         cases[case] = analyse(root / case)
                     out.extend(Mismatch(s.label, _describe(e), f"smallest case {case}: {p}")
                                for p in _case_problems(cases[case], s.label, robots))
+            elif e.kind == "matrix":
+                out.extend(Mismatch(s.label, _describe(e), p) for p in
+                           _matrix_problems(e.path, root, matrices, matrix_seconds, progress))
+        stored = [matrices[e.path] for e in s.evidence
+                  if e.kind == "matrix" and isinstance(matrices.get(e.path), dict)]
+        if stored:
+            out.extend(Mismatch(s.label, "matrix evidence", p)
+                       for p in grade_problems(s, stored))
     return out
+
+
+def _matrix_problems(path: str, root: Path, matrices: dict, limit, progress) -> list[str]:
+    """Load (once) and re-run (once, when it is cheap enough) a stored reading matrix."""
+    if path in matrices:
+        return []
+    try:
+        data = load_matrix(root / path)
+    except MatrixError as err:
+        matrices[path] = None
+        return [str(err)]
+    matrices[path] = data
+    if limit is not None and data.get("cpu_seconds", float("inf")) > limit:
+        return []
+    if progress:
+        progress(f"{path} (re-running the reading matrix of {data['case']})")
+    return rerun_problems(data, root)
 
 
 def _case_problems(a, label: str, robots: int | None) -> list[str]:

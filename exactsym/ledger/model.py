@@ -45,7 +45,8 @@ class Evidence:
     text in proofs/), ``script`` (a proofs/*.py whose ``check(*args)`` must not raise),
     ``witnesses`` (proofs/witnesses.py: ``refuted_readings`` readings refute the label),
     ``sweep`` (a sweep summary file, docs/ledger.md), ``certificate`` (a refutation
-    certificate that exactsym.checker.verify_refutation accepts for this label)."""
+    certificate that exactsym.checker.verify_refutation accepts for this label),
+    ``matrix`` (a stored gathering reading matrix, :mod:`.gathering_matrices`)."""
     kind: str
     path: str
     verdict: str | None = None
@@ -210,15 +211,16 @@ def _statement(entry: dict, k: int, source: str) -> Statement:
 def _evidence(e, where: str, source: str) -> Evidence:
     if not isinstance(e, dict):
         raise LedgerError(f"{where}: evidence entries are tables", source)
-    kinds = [k for k in ("case", "proof", "script", "witnesses", "sweep", "certificate")
-             if k in e]
+    kinds = [k for k in ("case", "proof", "script", "witnesses", "sweep", "certificate",
+                         "matrix") if k in e]
     if len(kinds) != 1 or not isinstance(e[kinds[0]], str):
         raise LedgerError(f"{where}: an evidence entry has exactly one of case, proof, "
-                          f"script, witnesses, sweep, certificate (got {sorted(e)})", source)
+                          f"script, witnesses, sweep, certificate, matrix (got {sorted(e)})",
+                          source)
     kind = kinds[0]
     allowed = {"case": {"case", "verdict"}, "proof": {"proof"}, "script": {"script", "args"},
                "witnesses": {"witnesses", "refuted_readings"}, "sweep": {"sweep"},
-               "certificate": {"certificate"}}[kind]
+               "certificate": {"certificate"}, "matrix": {"matrix"}}[kind]
     if set(e) - allowed:
         raise LedgerError(f"{where}: unknown evidence field(s) {sorted(set(e) - allowed)}",
                           source)
