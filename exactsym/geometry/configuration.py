@@ -17,10 +17,13 @@ negative radius) raises :class:`~exactsym.errors.MoveImpossible`, not ``InputErr
 
 from __future__ import annotations
 
+import dataclasses
 import gc
+import math
 from contextlib import contextmanager
 from dataclasses import dataclass
 from functools import cached_property
+from fractions import Fraction
 from typing import Iterable, Mapping, Sequence
 
 import numpy as np
@@ -30,7 +33,7 @@ from ..errors import ExpressionError, InputError, MoveImpossible
 from ..exact import (RationalSystem, evaluate, exact_key, fmpq, normal_turn, number_system,
                     sign)
 from ..exact.number import dense_field, is_algebraic, is_plain_rational
-from ..io.exprtree import Const, Node
+from ..io.exprtree import BinOp, Const, Node
 from .predicates import float_coordinates
 
 
@@ -208,9 +211,21 @@ class Configuration:
         if self.radii is not None and sim.keeps_polar:
             turn = sim.turn if sim.turn is not None else fmpq(0)
             scale = fmpq(sim.scale)
-            return self.with_positions({i: Polar(r * scale, (-t if sim.reflect else t) + turn)
-                                        for i, (r, (_, t)) in enumerate(zip(self.radii,
-                                                                            self.polar))})
+            moved = {i: Polar(r * scale, (-t if sim.reflect else t) + turn)
+                     for i, (r, (_, t)) in enumerate(zip(self.radii, self.polar))}
+            if not (self.specs and all(spec.is_polar for spec in self.specs)):
+                return self.with_positions(moved)
+            # radii written as expressions (sqrt(1499)): the copy's Cartesian points are
+            # evaluated from the same expressions, as the file's are -- the values of
+            # irrational radii alone do not name their field
+            polar = [(p.r * p.r, normal_turn(p.turn) if sign(p.r) != 0 else fmpq(0))
+                     for p in moved.values()]
+            new = self._same(polar=polar, radii=[p.r for p in moved.values()],
+                             polar_system=self.polar_system,
+                             specs=[_polar_spec(spec, scale, sim.reflect, turn)
+                                    for spec in self.specs])
+            _check_move(new)
+            return new
         coerce = self.system.coerce
         if sim.rotation is not None:
             c, s = coerce(sim.rotation[0]), coerce(sim.rotation[1])
@@ -234,6 +249,15 @@ class Configuration:
         new = self._same(points=points, system=self.system)
         _check_move(new)
         return new
+
+
+def _polar_spec(spec: PointSpec, scale, reflect: bool, turn) -> PointSpec:
+    """``spec`` (polar) reflected, turned by ``turn`` and scaled by ``scale`` about the
+    origin: the radius expression times the scale, the turn moved alike."""
+    r = spec.r if scale == 1 else BinOp("*", Const(Fraction(int(scale.p), int(scale.q))),
+                                         spec.r)
+    t = Fraction(int(turn.p), int(turn.q)) + (-spec.turn if reflect else spec.turn)
+    return dataclasses.replace(spec, r=r, turn=t - math.floor(t))
 
 
 def to_text(x) -> str:

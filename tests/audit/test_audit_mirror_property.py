@@ -26,15 +26,6 @@ CASES = Path(__file__).resolve().parents[2] / "cases"
 CASE_DIRS = ("discrepancies", "family", "gathering", "examples", "polygon", "hull")
 PATHS = sorted(str(p.relative_to(CASES)) for d in CASE_DIRS for p in (CASES / d).glob("*.toml"))
 
-#: Cases whose copies exactsym cannot build: polar configurations with a radius that is
-#: an irrational expression of a moved robot (``Configuration.transformed`` keeps such a
-#: configuration polar, but its levels need Cartesian points, which are not built from
-#: values: ``NotImplementedError``).  Not a verdict of the audit; listed, not skipped
-#: silently.
-CANNOT_COPY = {"family/makeasym-radial-move-sparse-tower.toml",
-               "examples/square-roots-over-turns-7.toml"}
-
-
 def labels(config: Configuration) -> tuple:
     """What must not depend on the frame: each finding's statement and kind."""
     return tuple(sorted({(d["statement"], d["kind"]) for d in audit(config)["discrepancies"]}))
@@ -68,8 +59,6 @@ def polar_frames():
 @settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(data=st.data())
 def test_every_case_has_the_same_findings_in_every_frame(path, data):
-    if path in CANNOT_COPY:
-        pytest.skip("exactsym cannot build a copy in another frame (see CANNOT_COPY)")
     config, expected = case(path)
     polar = config.radii is not None
     sim = data.draw(polar_frames() if polar else frames())

@@ -83,3 +83,21 @@ def test_a_polar_file_made_cartesian_keeps_its_points():
     config = load("cases/examples/chiral-nine-gon.toml")
     cart = config.cartesian()
     assert cart.polar is None and cart.points == config.points and cart.n == config.n
+
+
+def test_a_polar_copy_with_irrational_radii_is_built_from_its_expressions():
+    """Issue 32: radii written as square roots (sqrt(1499), sqrt(1511)) at sevenths of a
+    turn: the reflected, turned and scaled copy has Cartesian points (they used to raise
+    NotImplementedError), each at twice its radius, and the same levels and group."""
+    from pathlib import Path
+
+    from exactsym.exact import fmpq as q
+    from exactsym.geometry.configuration import Similarity, load
+    from exactsym.truth.symmetry import symmetry_group
+    path = Path(__file__).resolve().parents[2] / "cases/examples/square-roots-over-turns-7.toml"
+    config = load(path)
+    copy = config.transformed(Similarity(reflect=True, turn=q(1, 7), scale=2))
+    for (x, y), r2 in zip(copy.points, (1499, 1511, 4)):
+        assert x * x + y * y == 4 * r2
+    assert [t for _, t in copy.polar] == [q(0), q(5, 7), q(2, 7)]   # -t + 1/7, mod 1
+    assert symmetry_group(copy).name == symmetry_group(config).name == "C1"
