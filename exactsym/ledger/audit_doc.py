@@ -127,6 +127,15 @@ def render(ledger: Ledger, support: dict[str, Support], sweeps: dict | None = No
                       "| label | kind | grade | what exactsym finds | evidence | rests on |",
                       "| --- | --- | --- | --- | --- | --- |"]
         lines.append(_row(s, support[s.label], sweeps))
+    if ledger.findings:
+        lines += ["", "## Findings without a label of their own", "",
+                  "Facts about the paper that no `\\label` names (`[[finding]]` in the ledger); "
+                  "their evidence is re-run like a statement's.", "",
+                  "| finding | about | lines | what exactsym finds | evidence |",
+                  "| --- | --- | --- | --- | --- |"]
+        lines += [f"| `{f.id}` | {', '.join(f'`{a}`' for a in f.about)} | "
+                  f"{f.lines[0]}-{f.lines[1]} | {_cell(f.claim + ' ' + f.finding)} | "
+                  f"{_cell(_evidence_text(f, sweeps))} |" for f in ledger.findings]
     changed = [s for s in ledger.statements if s.changed]
     if changed:
         lines += ["", "## Changed by the re-grading (issue 10)", ""]

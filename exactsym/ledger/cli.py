@@ -93,7 +93,10 @@ def ledger_json(ledger, sup) -> dict:
          "uses": list(s.uses) + [c for c in s.calls if c not in s.uses],
          "evidence": [e.as_dict() for e in s.evidence],
          "rests_on_refuted": list(sup[s.label].rests_on_refuted)}
-        for s in ledger.statements]}
+        for s in ledger.statements],
+        "findings": [{"id": f.id, "about": list(f.about), "lines": list(f.lines),
+                      "claim": f.claim, "evidence": [e.as_dict() for e in f.evidence]}
+                     for f in ledger.findings]}
 
 
 def sweep_texts(ledger, root: Path) -> dict:
@@ -205,7 +208,8 @@ def run(args) -> int:
         for s in ledger.statements:
             counts[s.grade] = counts.get(s.grade, 0) + 1
         print(f"{len(ledger.statements)} statements: " +
-              ", ".join(f"{k} {v}" for k, v in counts.items()))
+              ", ".join(f"{k} {v}" for k, v in counts.items()) +
+              f"; {len(ledger.findings)} findings without a label")
         resting = [s.label for s in ledger.statements if sup[s.label].rests_on_refuted
                    and s.grade not in ("refuted",)]
         print(f"{len(resting)} not refuted themselves but resting on a refuted statement: "

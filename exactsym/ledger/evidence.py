@@ -53,7 +53,7 @@ def _describe(e: Evidence) -> str:
 
 def missing_files(ledger: Ledger, root: Path) -> list[Mismatch]:
     out = []
-    for s in ledger.statements:
+    for s in (*ledger.statements, *ledger.findings):
         for e in s.evidence:
             if not (root / e.path).is_file():
                 out.append(Mismatch(s.label, _describe(e), "file not found"))
@@ -89,7 +89,7 @@ def check_evidence(ledger: Ledger, root: Path,
     matrices: dict[str, dict] = {}
     out = missing_files(ledger, root)
     missing = {(m.label, m.evidence) for m in out}
-    for s in ledger.statements:
+    for s in (*ledger.statements, *ledger.findings):
         for e in s.evidence:
             if (s.label, _describe(e)) in missing:
                 continue

@@ -4,7 +4,8 @@ Validation: every label of :mod:`exactsym.labels` has exactly one entry and no o
 label appears; ``uses`` and ``calls`` name known labels; ``kind`` and ``grade`` come from
 their sets (grade ``definition`` only for definitions and types); a
 ``refuted-under-reading`` entry says under which readings it fails and which rescues it;
-evidence entries have one of the documented forms.  Every failure is a
+evidence entries have one of the documented forms; a ``[[finding]]`` (a finding with no
+label of its own) has a new id, the labels it is about, and evidence.  Every failure is a
 :class:`LedgerError` (an :class:`~exactsym.errors.InputError`: exit 2) naming the file, the
 entry and, for an unknown label, the nearest known one.
 """
@@ -18,7 +19,7 @@ from pathlib import Path
 from ..errors import InputError
 from ..labels import ALGORITHMS, LABELS, STATEMENTS, unknown_label_message
 
-__all__ = ["GRADES", "KINDS", "EVIDENCE_VERDICTS", "Evidence", "Statement", "Ledger",
+__all__ = ["GRADES", "KINDS", "EVIDENCE_VERDICTS", "Evidence", "Statement", "Finding", "Ledger",
            "LedgerError", "load_ledger", "parse_ledger"]
 
 #: Grades, strongest claim against the paper first.
@@ -85,9 +86,29 @@ class Statement:
 
 
 @dataclass(frozen=True)
+class Finding:
+    """A finding about the paper with no ``\\label`` of its own (``[[finding]]``): ``id``
+    names it, ``about`` lists the labelled statements it concerns; its evidence is
+    re-run like a statement's (case, proof or script)."""
+    id: str
+    about: tuple[str, ...]
+    lines: tuple[int, int]
+    claim: str
+    finding: str
+    evidence: tuple[Evidence, ...]
+    checked_by: str
+
+    @property
+    def label(self) -> str:
+        """The name a mismatch is reported under (its id)."""
+        return self.id
+
+
+@dataclass(frozen=True)
 class Ledger:
     source: str
     statements: tuple[Statement, ...]
+    findings: tuple[Finding, ...] = ()
 
     def by_label(self) -> dict[str, Statement]:
         return {s.label: s for s in self.statements}
@@ -110,7 +131,7 @@ def parse_ledger(text: str, source: str = "<ledger>") -> Ledger:
         raise LedgerError(f"malformed TOML: {err}", source) from None
     if data.get("format") != 1:
         raise LedgerError("format must be 1", source)
-    extra = set(data) - {"format", "statement"}
+    extra = set(data) - {"format", "statement", "finding"}
     if extra:
         raise LedgerError(f"unknown top-level key(s) {sorted(extra)}", source)
     entries = data.get("statement", [])
@@ -125,7 +146,47 @@ def parse_ledger(text: str, source: str = "<ledger>") -> Ledger:
     if missing:
         raise LedgerError(f"no entry for label(s) {', '.join(missing)} (every label of "
                           "exactsym.labels has exactly one entry)", source)
-    return Ledger(source, statements)
+    findings = tuple(_finding(e, k, source) for k, e in enumerate(data.get("finding", []), 1))
+    ids = [f.id for f in findings]
+    if len(set(ids)) != len(ids):
+        raise LedgerError(f"finding ids must be unique (got {ids})", source)
+    return Ledger(source, statements, findings)
+
+
+_FINDING_FIELDS = {"id", "about", "lines", "claim", "finding", "evidence", "checked_by"}
+
+
+def _finding(entry, k: int, source: str) -> Finding:
+    where = f"finding {k}"
+    if not isinstance(entry, dict):
+        raise LedgerError(f"{where}: not a table", source)
+    if set(entry) != _FINDING_FIELDS:
+        raise LedgerError(f"{where}: the fields are exactly {sorted(_FINDING_FIELDS)} (got "
+                          f"{sorted(entry)})", source)
+    fid = entry["id"]
+    if not isinstance(fid, str) or not fid or fid in LABELS \
+            or not all(c.isalnum() or c == "-" for c in fid):
+        raise LedgerError(f"{where}: id must be a new name of letters, digits and '-' (not a "
+                          f"label of the paper): {fid!r}", source)
+    where = f"finding {k} ({fid})"
+    about = tuple(_label(a, f"{where}: about", source)
+                  for a in _strings(entry, "about", where, source))
+    lines = entry["lines"]
+    if not (isinstance(lines, list) and len(lines) == 2 and all(isinstance(x, int)
+                                                                 for x in lines)
+            and 0 < lines[0] <= lines[1]) or not about:
+        raise LedgerError(f"{where}: lines must be [first, last] line numbers and about a "
+                          "non-empty list of labels", source)
+    evidence = tuple(_evidence(e, where, source) for e in entry["evidence"])
+    if not evidence or any(e.kind not in ("case", "proof", "script") or
+                           e.verdict not in (None, "expect") for e in evidence):
+        raise LedgerError(f"{where}: a finding needs evidence: cases (verdict expect), "
+                          "proofs or scripts", source)
+    for key in ("claim", "finding", "checked_by"):
+        if not isinstance(entry[key], str) or not entry[key]:
+            raise LedgerError(f"{where}: {key} must be a non-empty string", source)
+    return Finding(fid, about, (lines[0], lines[1]), entry["claim"], entry["finding"],
+                   evidence, entry["checked_by"])
 
 
 def _label(value, where: str, source: str) -> str:
