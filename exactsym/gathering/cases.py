@@ -24,6 +24,7 @@ from .invariants import ALL, Checker
 from .paper_bridge import read_case
 from .robot import Readings
 from .schedulers import Result, run
+from .start_numbers import certified
 
 #: The keys compared with a run (the others, :data:`SETTING_KEYS`, set the run up).
 CHECKED_KEYS = ("gather_outcome", "gather_label", "gather_invariant", "gather_robots",
@@ -51,12 +52,18 @@ def settings_of(expect: dict) -> dict:
 
 
 def run_settings(points, settings: dict, progress: bool = False) -> Result:
+    """The run ``settings`` describe from ``points``.  From a start beyond the rationals
+    and square roots (nested radicals, numbers of K(alpha): :mod:`.start_numbers`) a
+    ``gathered`` or ``stalled`` that rests on critical instants seen on both sides only
+    is ``undecided`` (:func:`.start_numbers.certified`)."""
     delta = settings.get("delta")
-    return run(points, settings["scheduler"], settings["seed"],
-               Readings(**settings["readings"]), settings["rigid"],
-               None if delta is None else Fraction(delta), settings["max_events"],
-               Checker(enabled=frozenset(settings["invariants"])), progress,
-               algorithm=settings.get("algorithm", "paper"))
+    res = run(points, settings["scheduler"], settings["seed"],
+              Readings(**settings["readings"]), settings["rigid"],
+              None if delta is None else Fraction(delta), settings["max_events"],
+              Checker(enabled=frozenset(settings["invariants"])), progress,
+              algorithm=settings.get("algorithm", "paper"))
+    res = certified(res, points)
+    return res
 
 
 def expectation_failures(expect: dict, res: Result) -> list:

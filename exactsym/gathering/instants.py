@@ -425,7 +425,8 @@ def look_points(piece, world, mover: int, centre, sec_r: bool = False) -> tuple:
         if k == 0:
             lo = MQ.rational(r.lo)
             out.append(LookPoint(lo, piece.at(lo), f"just before: {what}", fams, False))
-        f = instant_or_none(r.exact, [piece]) if not (apart and is_algebraic(r.exact)) else None
+        f = instant_or_none(r.exact, [piece]) if not (apart and is_algebraic(r.exact) and mixes(
+            world, [piece], r.exact)) else None
         if f is not None:
             out.append(LookPoint(f, piece.at(f), what, fams, True))
         else:

@@ -180,8 +180,8 @@ def joint_look_points(pieces: dict, world, sec_r: bool = False) -> tuple:
         what = "; ".join(sorted({t[1] for t in r.tags}))
         if k == 0:
             out.append(JointPoint(MQ.rational(r.lo), f"just before: {what}", fams, False))
-        tau = instant_or_none(r.exact, pieces.values()) if not (apart and is_algebraic(r.exact)) \
-            else None
+        tau = instant_or_none(r.exact, pieces.values()) if not (apart and is_algebraic(r.exact)
+            and mixes(world, pieces.values(), r.exact)) else None
         if tau is not None:
             out.append(JointPoint(tau, what, fams, True))
         else:

@@ -24,6 +24,7 @@ from fractions import Fraction
 from ..errors import InputError
 from ..exact import evaluate, fmpq, number_system
 from ..exact.algebraic.algebraic_numbers import is_algebraic
+from ..exact.algebraic.interface import is_multiquadratic
 from ..geometry.configuration import Configuration, from_file
 from ..geometry.levels import levels_of as compute_rings
 from ..io.expr import parse_expression
@@ -31,6 +32,7 @@ from ..io.fileformat import read_config
 from ..paper.family import (concentric_polygons, elect_leader, is_symmetric_family,
                             is_symmetric_polygon, make_asym, preprocess)
 from .algebraic_kernel import kernel_configuration
+from .start_numbers import start_points
 
 __all__ = ["PaperDecision", "paper_decision", "configuration_of", "GatheringInputError",
            "read_case"]
@@ -135,12 +137,19 @@ def _decision(config, ring_data, orientation: int, reading: str) -> PaperDecisio
 
 
 def read_case(path):
-    """Read a case file (configuration format 1): ``(points as fmpq pairs, name, expect,
-    source)``; raises :class:`InputError` with the file location."""
-    config = from_file(read_config(path))
-    pts = []
-    for x, y in config.points:
-        if not (isinstance(x, fmpq) and isinstance(y, fmpq)):
-            raise InputError("the gathering simulator needs rational coordinates", config.source)
-        pts.append((x, y))
+    """Read a case file (configuration format 1): ``(points, name, expect, source)``.
+    Every start ``check`` accepts is read (its validation first: distinct points, the fat
+    model); rational points as fmpq pairs, others as numbers of the motion's one number
+    system (:func:`.start_numbers.start_points`: square roots, nested radicals, cos/sin of
+    rational turns, within its documented bounds); raises :class:`InputError` with the
+    file location (beyond a bound: the bound named)."""
+    parsed = read_config(path)
+    config = from_file(parsed)
+    if config.radii is None and all(isinstance(x, fmpq) and isinstance(y, fmpq)
+                                    for x, y in config.points):
+        pts = [(x, y) for x, y in config.points]
+    else:
+        pts = start_points(parsed.points, config.source)
+        if all(is_multiquadratic(c) and c.is_rational() for p in pts for c in p):
+            pts = [(x.to_fmpq(), y.to_fmpq()) for x, y in pts]
     return pts, config.name, dict(config.expect), config.source

@@ -23,7 +23,8 @@ import contextlib
 import itertools
 
 from ..errors import FieldTooLargeError
-from ..exact.algebraic.interface import is_multiquadratic, is_run_tower, nested_tower
+from ..exact.algebraic.interface import (algebraic_root_of, is_multiquadratic, is_run_tower,
+                                         nested_tower)
 from ..exact.algebraic.run_tower import RunTower, home, run_tower_for
 from ..exact.algebraic.tower_numbers import is_tower
 from . import geometry as g
@@ -114,11 +115,14 @@ _EPOCHS = itertools.count(1)
 
 
 class RunHome:
-    """The tower of one run (:class:`.world.World`): None until a nested radical
-    appears; every planned path is re-homed into it (:meth:`path`)."""
+    """The tower of one run (:class:`.world.World`): the start's (``points``), else None
+    until a nested radical appears; every planned path is re-homed into it
+    (:meth:`path`)."""
 
-    def __init__(self):
-        self.tower: RunTower | None = None
+    def __init__(self, points=()):
+        # a start of nested radicals (:mod:`.start_numbers`) brings the run's tower along
+        self.tower: RunTower | None = next(
+            (t for t in towers_of(points) if is_run_tower(t)), None)
 
     @contextlib.contextmanager
     def scratch(self):
@@ -165,18 +169,25 @@ class RunHome:
         return 0 if self.tower is None else self.tower.levels
 
 
-def mixes(world, pieces=()) -> bool:
+def mixes(world, pieces=(), instant=None) -> bool:
     """Would numbers of ``K(alpha)`` meet numbers of another kind (a run's tower of
     nested radicals) in a fresh Look at an instant of ``pieces``: a robot standing, a
     pending target or a planned path in such a field?  They do not mix (no common field
-    is built), so such an instant stays ``sided``."""
+    is built), so such an instant stays ``sided``.  With ``instant`` (a number of some
+    ``K(alpha)``): do the world's numbers hold a tower number or a number of another
+    ``K(beta)``?  A start in ``K(alpha)`` (:mod:`.start_numbers`) mixes with its own
+    instants of ``K(alpha)`` (the same root: one field)."""
     pts = [p for pc in pieces for p in (pc.start, pc.end)]
     for r in world.robots:
         pts.append(r.pos)
         pts += [p for pc in (r.path or ()) for p in (pc.start, pc.end)]
         if r.target is not None:
             pts.append(r.target)
-    return any(not is_multiquadratic(c) for p in pts for c in p)
+    if instant is None:
+        return any(not is_multiquadratic(c) for p in pts for c in p)
+    root = algebraic_root_of(instant)
+    return any(not is_multiquadratic(c) and algebraic_root_of(c) is not root
+               for p in pts for c in p)
 
 
 def instant_or_none(f, pieces):

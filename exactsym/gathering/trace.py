@@ -16,6 +16,7 @@ from fractions import Fraction
 from .invariants import ALL, Checker
 from .robot import Readings
 from .schedulers import Result, TraceMismatch, run
+from .start_numbers import certified
 
 FORMAT = "exactsym-gather-trace"
 VERSION = 1
@@ -30,8 +31,17 @@ def result_dict(res: Result) -> dict:
 def trace_dict(points, res: Result, settings: dict, name: str | None = None) -> dict:
     """``name``: what the run is called in pictures (the case file's name)."""
     return {"format": FORMAT, "version": VERSION, "name": name,
-            "points": [[str(Fraction(str(x))), str(Fraction(str(y)))] for x, y in points],
+            "points": [[point_text(x), point_text(y)] for x, y in points],
             "settings": settings, "actions": res.actions, "result": result_dict(res)}
+
+
+def point_text(v) -> str:
+    """A start coordinate as the trace writes it: a rational as a fraction, any other
+    number (an algebraic start, ``start_numbers``) as its exact text."""
+    try:
+        return str(Fraction(str(v)))
+    except ValueError:
+        return v.text()
 
 
 def write_trace(path, points, res: Result, settings: dict, name: str | None = None) -> None:
@@ -60,15 +70,20 @@ def trace_points(data: dict) -> list:
     try:
         return [(Fraction(x), Fraction(y)) for x, y in data["points"]]
     except (ValueError, TypeError, ZeroDivisionError) as err:
-        raise TraceMismatch(f"trace points are not exact rationals ({err})") from None
+        raise TraceMismatch(f"trace points are not exact rationals ({err}); a trace of an "
+                            "algebraic start replays with its file: replay TRACE FILE") from None
 
 
 def replay(data: dict, points=None) -> Result:
     """Re-run the trace's actions; ``points`` (from a configuration file) must equal the
     trace's own points (else :class:`TraceMismatch`)."""
-    own = trace_points(data)
-    if points is not None and [(Fraction(str(x)), Fraction(str(y))) for x, y in points] != own:
-        raise TraceMismatch("the trace was recorded on other starting points than the file's")
+    if points is not None:
+        if [[point_text(x), point_text(y)] for x, y in points] != data["points"]:
+            raise TraceMismatch("the trace was recorded on other starting points than the "
+                                "file's")
+        own = list(points)
+    else:
+        own = trace_points(data)
     s = data["settings"]
     try:
         readings = Readings(**s.get("readings", {}))
@@ -78,9 +93,10 @@ def replay(data: dict, points=None) -> Result:
             raise ValueError(f"unknown algorithm {s.get('algorithm')!r}")
     except (TypeError, ValueError) as err:
         raise TraceMismatch(f"trace settings are unusable ({err})") from None
-    return run(own, readings=readings, rigid=s.get("rigid", True), delta=delta,
-               max_events=int(s.get("max_events", 10 ** 9)), checker=Checker(enabled=enabled),
-               actions=data["actions"], algorithm=s.get("algorithm", "paper"))
+    return certified(run(own, readings=readings, rigid=s.get("rigid", True), delta=delta,
+                         max_events=int(s.get("max_events", 10 ** 9)),
+                         checker=Checker(enabled=enabled), actions=data["actions"],
+                         algorithm=s.get("algorithm", "paper")), own)
 
 
 def same_result(recorded: dict, res: Result) -> list:

@@ -38,7 +38,7 @@ from math import isqrt
 
 from flint import fmpq
 
-from ..exact.algebraic.interface import is_multiquadratic
+from ..exact.algebraic.interface import is_multiquadratic, motion_number
 from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .corrected import decide_for
@@ -138,7 +138,7 @@ class World:
                  delta: Fraction | None = None, checker=None, algorithm: str = "paper"):
         self.algorithm = algorithm
         self.decide = decide_for(algorithm)     # robot.decide or corrected.decide_corrected
-        self.robots = [RobotState((MQ.coerce(x), MQ.coerce(y))) for x, y in points]
+        self.robots = [RobotState((motion_number(x), motion_number(y))) for x, y in points]
         self.readings = readings
         self.rigid = rigid
         self.delta = delta
@@ -148,7 +148,7 @@ class World:
         self.log: list = []       # Step per Look and per advance (what a picture draws)
         # the run's tower of nested radicals (none until a radial target needs one): every
         # planned path is re-homed into it, so all positions compare in one tower
-        self.home = RunHome()
+        self.home = RunHome(self.positions())
         self._local = None        # {frame: {point: local point}}
 
     def frame_table(self):

@@ -51,7 +51,7 @@ from flint import arb, ctx, fmpq
 from ..context import Cache
 from ..field import FieldElement
 from ..mq_closure import decided_sqrt
-from ..multiquadratic import MQ
+from ..multiquadratic import MQ, sum_of_products
 from .factor import factor_over_k
 from .polynomials import ONE, ZERO, padd, pdivmod, peval, pmul, trim
 from .sturm import sturm_chain, variations
@@ -115,6 +115,24 @@ class AlgebraicRoot:
             self.lo = mid
         else:
             self.hi = mid
+
+    def powers(self) -> tuple:
+        """``alpha^k`` for ``k = d, ..., 2d - 2`` in the basis ``1, ..., alpha^(d-1)``
+        (tuples of d MQ coefficients): the reduction of a product modulo ``f`` (monic)
+        as a few products by these fixed, small coefficients."""
+        table = self.__dict__.get("_powers")
+        if table is None:
+            d = self.degree
+            top = [ZERO] * (d - 1) + [ONE]              # alpha^(d-1)
+            table = []
+            for _ in range(d - 1):
+                lead = top[-1]                          # alpha * top, alpha^d = -sum f_i alpha^i
+                top = [ZERO] + top[:-1]
+                if not lead.is_zero():
+                    top = [t - lead * fi for t, fi in zip(top, self.f[:d])]
+                table.append(tuple(top))
+            table = self.__dict__["_powers"] = tuple(table)
+        return table
 
     def ball(self, prec: int) -> arb:
         """An Arb ball holding ``alpha``, of radius below ``2^-prec``."""
@@ -182,8 +200,16 @@ class AlgebraicNumber(FieldElement):
 
     def _new(self, c):
         c = trim(c)
-        if len(c) > self.root.degree:
-            c = pdivmod(c, self.root.f)[1]
+        d = self.root.degree
+        if len(c) > d:
+            if len(c) < 2 * d:      # a product of two reduced numbers: the power table
+                low = list(c[:d])
+                for ck, row in zip(c[d:], self.root.powers()):
+                    if not ck.is_zero():
+                        low = [x if r.is_zero() else x + ck * r for x, r in zip(low, row)]
+                c = trim(low)
+            else:
+                c = pdivmod(c, self.root.f)[1]
         if len(c) <= 1:
             return c[0] if c else ZERO
         return AlgebraicNumber(self.root, c)
@@ -323,6 +349,37 @@ class AlgebraicNumber(FieldElement):
 
 def is_algebraic(x) -> bool:
     return isinstance(x, AlgebraicNumber)
+
+
+def _coefficients(x, root):
+    """``x``'s coefficients in K(alpha) of ``root`` (an MQ: one), or None (another kind,
+    or another root)."""
+    if type(x) is AlgebraicNumber:
+        return x.c if x.root is root else None
+    if type(x) is MQ:
+        return (x,) if x.terms else ()
+    return None
+
+
+def algebraic_two_products(a, b, c, d, sign: int):
+    """``a b + sign c d`` for numbers of one K(alpha) (or MQ), reduced once: each
+    coefficient of the two products summed before one reduction modulo f (the same
+    element as the two products reduced apart); None when the four are not all of one
+    K(alpha) or MQ."""
+    root = a.root if type(a) is AlgebraicNumber else c.root
+    cs = [_coefficients(x, root) for x in (a, b, c, d)]
+    if any(x is None for x in cs):
+        return None
+    pa, pb, pc, pd = cs
+    size = max(len(pa) + len(pb), len(pc) + len(pd)) - 1
+    if size <= 0:
+        return ZERO
+    out = []
+    for k in range(size):
+        items = [(1, pa[i], pb[k - i]) for i in range(len(pa)) if 0 <= k - i < len(pb)]
+        items += [(sign, pc[i], pd[k - i]) for i in range(len(pc)) if 0 <= k - i < len(pd)]
+        out.append(sum_of_products(items) if items else ZERO)
+    return AlgebraicNumber(root, ())._new(out)
 
 
 def _minpoly(u: AlgebraicNumber) -> tuple:

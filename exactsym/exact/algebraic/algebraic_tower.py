@@ -28,7 +28,7 @@ from .algebraic_numbers import AlgebraicNumber, algebraic_sqrt_decided, is_algeb
 from .tower_numbers import TowerNumber
 
 __all__ = ["AlgebraicTower", "AlgebraicTowerNumber", "is_algebraic_tower",
-           "sqrt_over_k_alpha", "MAX_LEVELS"]
+           "sqrt_over_k_alpha", "own_sqrt_over_k_alpha", "MAX_LEVELS"]
 
 #: The largest number of quadratic levels built over one K(alpha).
 MAX_LEVELS = 3
@@ -105,7 +105,8 @@ def sqrt_over_k_alpha(x):
     if x.sign() < 0:
         return None
     root = x.tower.root if is_algebraic_tower(x) else x.root
-    tower = _tower_of(root)
+    # a number of an instant's own tower (own_sqrt_over_k_alpha) grows that tower
+    tower = x.tower if is_algebraic_tower(x) else _tower_of(root)
     v = x.v if is_algebraic_tower(x) else x
     try:
         found = tower.root_in(v, tower.levels)
@@ -117,3 +118,30 @@ def sqrt_over_k_alpha(x):
         return None
     y = tower.wrap(found)
     return -y if y.sign() < 0 else y
+
+
+def own_sqrt_over_k_alpha(x):
+    """The non-negative square root of the number ``x > 0`` of ``K(alpha)`` (alpha of odd
+    degree) in ``K'(alpha)`` when it lies there, else the generator of a one-level tower
+    of its own, ``K(alpha)(sqrt x)`` -- one per radicand and root, as
+    :func:`.tower_numbers.tower_of` gives one per multiquadratic radicand.  For the
+    critical instants of a run whose start is in ``K(alpha)`` (``gathering.start_numbers``):
+    their discriminants would otherwise fill the root's one shared tower
+    (:data:`MAX_LEVELS`) with levels no robot stands on.  Sound as the shared tower: a
+    level only after the complete base test (:func:`algebraic_sqrt_decided`) found no
+    root.  None when ``x <= 0``, alpha's degree is even or the test is undecided."""
+    if not is_algebraic(x) or x.sign() <= 0 or x.root.degree % 2 == 0:
+        return None
+    table = x.root.__dict__.setdefault("_own_towers", {})
+    hit = table.get(x)
+    if hit is not None:
+        return hit
+    root, decided = algebraic_sqrt_decided(x)
+    if root is None:
+        if not decided or len(table) >= 4096:
+            return None
+        tower = AlgebraicTower(x.root)
+        tower.radicands.append(x)                # proved a non-square: the one level
+        root = tower.wrap((1, tower.zero, tower.one))
+    table[x] = root
+    return root

@@ -29,13 +29,14 @@ MAX_NORM_DEGREE = 96
 GCD_BITS = 20000
 
 
-def group_basis(p) -> tuple:
+def group_basis(p, radicands=()) -> tuple:
     """``(basis, coords)``: squarefree ``b_1, ..., b_d`` independent modulo squares with
     ``K = Q(sqrt b_1, ..., sqrt b_d)`` (``[K:Q] = 2^d``), and ``coords(m)``: the set of
     ``j`` with ``m = prod_{j} b_j`` modulo squares, for every radicand ``m`` of ``p``
-    (Gaussian elimination over GF(2) on the primes' exponent vectors).  The automorphism
-    ``sigma_j`` flips the sign of ``sqrt m`` iff ``j`` is in ``coords(m)``."""
-    rads = sorted({m for c in p for m in c.radicands()})
+    (Gaussian elimination over GF(2) on the primes' exponent vectors), and for every
+    one of the extra squarefree ``radicands`` (K then holds their square roots too).  The
+    automorphism ``sigma_j`` flips the sign of ``sqrt m`` iff ``j`` is in ``coords(m)``."""
+    rads = sorted({m for c in p for m in c.radicands()} | {int(r) for r in radicands})
     primes = sorted({int(q) for m in rads for q, _ in fmpz(m).factor()})
     bit = {q: 1 << k for k, q in enumerate(primes)}
 
@@ -94,14 +95,15 @@ def _from_rational(h: fmpq_poly) -> tuple:
 
 # -- factoring over K = Q(sqrt primes) ---------------------------------------------------------
 @lru_cache(maxsize=512)
-def factor_over_k(p: tuple):
+def factor_over_k(p: tuple, radicands: tuple = ()):
     """The monic irreducible factors of the square-free ``p`` (MQ coefficients, degree >= 1)
-    over ``K``, the multiquadratic field of its coefficients' primes (Trager's algorithm);
+    over ``K``, the multiquadratic field of its coefficients' primes and of the square
+    roots of the extra squarefree integers ``radicands`` (Trager's algorithm);
     None when the norm's degree exceeds :data:`MAX_NORM_DEGREE`, or when ``p`` is
     reducible over ``K`` and a gcd over ``K`` grows beyond :data:`GCD_BITS` (Euclid's
     coefficients swell over a number field)."""
     p = monic(trim(p))
-    basis, coords = group_basis(p)
+    basis, coords = group_basis(p, radicands)
     if len(p) - 1 << len(basis) > MAX_NORM_DEGREE:
         return None
     if not basis:

@@ -15,15 +15,18 @@ calls those and the functions below; it asks no ``isinstance`` of a concrete cla
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 from flint import fmpq
 
 from ..multiquadratic import MQ, sum_of_products
 from ..number import ExactNumber
 from ..tower import TowerElement
+from .algebraic_numbers import AlgebraicNumber, algebraic_two_products
 from .algebraic_tower import AlgebraicTower
 from .run_tower import RunTower
 
-__all__ = ["ExactNumber", "compare", "is_multiquadratic", "motion_number", "nested_tower",
+__all__ = ["ExactNumber", "compare", "is_multiquadratic", "algebraic_root_of", "motion_number", "nested_tower",
            "is_run_tower", "products_are_large", "two_products", "float_and_error"]
 
 #: products of MQ numbers with at least this many pairs of terms are summed over integers
@@ -40,10 +43,20 @@ def is_multiquadratic(x) -> bool:
     return isinstance(x, MQ)
 
 
+def algebraic_root_of(x):
+    """The root alpha whose field ``K(alpha)`` holds ``x`` (a number of K(alpha), or of a
+    quadratic level over it), or None (an MQ, a tower number of nested radicals)."""
+    if isinstance(x, AlgebraicNumber):
+        return x.root
+    if isinstance(x, TowerElement) and isinstance(x.tower, AlgebraicTower):
+        return x.tower.root
+    return None
+
+
 def motion_number(x):
     """``x`` as a number of the motion: a rational (``fmpq``, ``int``: what the checker's
     geometry returns for a rational centre) as an MQ, any other number as it is."""
-    return MQ.coerce(x) if isinstance(x, (int, fmpq)) else x
+    return MQ.coerce(x) if isinstance(x, (int, fmpq, Fraction)) else x
 
 
 def nested_tower(x):
@@ -76,6 +89,10 @@ def two_products(a, b, c, d, sign: int):
     products summed at once (:func:`products_are_large`)."""
     if products_are_large(a, b, c, d):
         return sum_of_products(((1, a, b), (sign, c, d)))
+    if type(a) is AlgebraicNumber or type(c) is AlgebraicNumber:
+        fused = algebraic_two_products(a, b, c, d, sign)
+        if fused is not None:
+            return fused
     return a * b + c * d if sign > 0 else a * b - c * d
 
 

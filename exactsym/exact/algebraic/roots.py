@@ -35,10 +35,12 @@ from dataclasses import dataclass, field
 
 from flint import fmpq
 
+from ...errors import FieldTooLargeError
+
 from ..mq_closure import closure_sqrt, decided_sqrt
 from ..multiquadratic import MQ
 from .algebraic_numbers import AlgebraicNumber, AlgebraicRoot, is_algebraic
-from .algebraic_tower import is_algebraic_tower, sqrt_over_k_alpha
+from .algebraic_tower import is_algebraic_tower, own_sqrt_over_k_alpha, sqrt_over_k_alpha
 from .factor import changes_sign, factor_over_k, stable
 from .polynomials import ONE, ZERO, pdivmod, peval, pgcd, trim
 from .quartic import quartic_root
@@ -69,8 +71,40 @@ def mq_sqrt(x, _depth: int = 0, big_ok: bool = False):
 def _disc_root(disc):
     """A discriminant's root in the multiquadratic closure, or None: the complete test
     (:func:`~exactsym.exact.mq_closure.decided_sqrt`, a finite search), not
-    :func:`mq_sqrt`'s, whose recursion can branch thousands of times before it gives up."""
-    return decided_sqrt(disc)[0]
+    :func:`mq_sqrt`'s, whose recursion can branch thousands of times before it gives up.
+    A discriminant of a run whose positions are not multiquadratic (a start in a RunTower
+    or in ``K(alpha)``, ``gathering.start_numbers``): its root in its own field or one
+    level over it (:func:`mq_sqrt`), None when that is not built (the instant is then
+    ``sided``)."""
+    if isinstance(disc, MQ):
+        return decided_sqrt(disc)[0]
+    return _field_sqrt(disc)
+
+
+def _field_sqrt(x):
+    """The non-negative root of a tower number or a number of K(alpha), or None when it
+    is negative or its square root cannot be built or decided."""
+    try:
+        if x.sign() < 0:
+            return None
+        # a discriminant of K(alpha): a one-level tower of its own, as an MQ radicand's
+        return own_sqrt_over_k_alpha(x) if is_algebraic(x) else mq_sqrt(x)
+    except (ValueError, ArithmeticError, FieldTooLargeError):
+        return None
+
+
+def _field_quadratic_root(c, b, a, lo, hi):
+    """The root in ``(lo, hi)`` of ``a f^2 + b f + c`` with coefficients of a tower or of
+    K(alpha) (:func:`_field_sqrt` of the discriminant), or None."""
+    inv = 1 / a
+    bm, cm = b * inv, c * inv
+    y = _field_sqrt(bm * bm - cm * 4)
+    if y is None:
+        return None
+    for r in ((-bm - y) / 2, (-bm + y) / 2):
+        if (r - lo).sign() > 0 and (r - hi).sign() < 0:
+            return r
+    return None
 
 
 def exact_root_hook(poly, lo, hi):
@@ -84,7 +118,16 @@ def exact_root_hook(poly, lo, hi):
     (:func:`algebraic_root`): a root of a factor of degree 3, 5, ...
     or of a quartic factor of group S4 or A4 is a number of ``K(alpha)``, one of a
     quartic factor of group D4, C4 or V4 a nested radical (:mod:`.quartic`);
-    None for the rest, whose instants are only seen on both sides (``sided``)."""
+    None for the rest, whose instants are only seen on both sides (``sided``).
+    Coefficients of a tower or of K(alpha) (a start beyond the multiquadratic field): the
+    linear root, a quadratic's root (:func:`_field_quadratic_root`), else None."""
+    if not all(isinstance(c, MQ) for c in poly):
+        if len(poly) == 2:
+            r = _linear_root(poly)
+            return r if (r - lo).sign() > 0 and (r - hi).sign() < 0 else None
+        if len(poly) == 3:
+            return _field_quadratic_root(poly[0], poly[1], poly[2], lo, hi)
+        return None
     if len(poly) == 2:
         r = _linear_root(poly)
         return r if (r - lo).sign() > 0 and (r - hi).sign() < 0 else None
