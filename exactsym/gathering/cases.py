@@ -11,7 +11,9 @@
 * the run's setting, so the expectation is reproducible: ``gather_scheduler``,
   ``gather_seed``, ``gather_readings`` (``["A3=all", ...]``), ``gather_invariants``
   (the invariants checked; default all), ``gather_max_events``, ``gather_non_rigid``
-  (delta, an expression string; absent: rigid), ``gather_algorithm`` (``paper``, the
+  (delta, an expression string; absent: rigid), ``gather_mid_run`` (true: the points are a
+  state inside a run, robots of a partial pattern touch; not the paper's separated start),
+  ``gather_algorithm`` (``paper``, the
   default, or ``corrected``).
 """
 
@@ -30,7 +32,7 @@ from .start_numbers import certified
 CHECKED_KEYS = ("gather_outcome", "gather_label", "gather_invariant", "gather_robots",
                 "gather_time")
 SETTING_KEYS = ("gather_scheduler", "gather_seed", "gather_readings", "gather_invariants",
-                "gather_max_events", "gather_non_rigid", "gather_algorithm")
+                "gather_max_events", "gather_non_rigid", "gather_algorithm", "gather_mid_run")
 
 
 @dataclass(frozen=True)

@@ -61,6 +61,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--max-events", type=int, default=None)
     parser.add_argument("--invariants", default=None,
                         help="comma-separated invariants to check (default: all, I1..I10)")
+    parser.add_argument("--mid-run", action="store_true",
+                        help="the file is a state inside a run: robots may touch (a partial "
+                        "pattern), not overlap; the paper's hypothesis is a separated start, "
+                        "so a finding from such a state is not a counterexample by itself")
     parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
     parser.add_argument("--trace", metavar="OUT", default=None, help="write the trace here")
     drawing.add_arguments(parser)
@@ -114,7 +118,10 @@ def _settings(args, expect: dict) -> dict:
     return s
 
 
-def _validate_start(points, source) -> None:
+def _validate_start(points, source, mid_run: bool = False) -> None:
+    """The paper's start: at least 5 robots, separated (L1568, L1707-1708).  A mid-run
+    state (``--mid-run``, ``[expect] gather_mid_run``) may have touching robots (a
+    partial pattern), never overlapping ones."""
     n = len(points)
     if n < 5:
         raise GatheringInputError(f"gathering needs at least 5 robots, the file has {n}",
@@ -122,9 +129,15 @@ def _validate_start(points, source) -> None:
     for i in range(n):
         for j in range(i + 1, n):
             dx, dy = points[i][0] - points[j][0], points[i][1] - points[j][1]
-            if dx * dx + dy * dy <= 4:
+            d2 = dx * dx + dy * dy
+            if mid_run and d2 < 4:
+                raise GatheringInputError(f"robots {i} and {j} overlap (centres less than 2 "
+                                          "apart)", source)
+            if not mid_run and d2 <= 4:
                 raise GatheringInputError(f"robots {i} and {j} overlap or touch at the start "
-                                          "(centres at most 2 apart)", source)
+                                          "(centres at most 2 apart; the paper's robots "
+                                          "start separated: a state inside a run, with a "
+                                          "partial pattern, needs --mid-run)", source)
 
 
 def _text(res, settings) -> str:
@@ -210,7 +223,7 @@ def _pictures(points, res, args, name: str) -> int | None:
 def run(args) -> int:
     try:
         points, _name, expect, source = read_case(args.file)
-        _validate_start(points, source)
+        _validate_start(points, source, args.mid_run or expect.get("gather_mid_run", False))
         settings = _settings(args, expect)
     except GatheringInputError as err:
         return _fail(str(err))

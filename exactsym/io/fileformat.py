@@ -65,6 +65,7 @@ EXPECT_KEYS: dict[str, type | tuple] = {
     "gather_robots": list, "gather_time": str, "gather_scheduler": str, "gather_seed": int,
     "gather_readings": list, "gather_invariants": list, "gather_max_events": int,
     "gather_non_rigid": ExpressionText, "gather_algorithm": str,
+    "gather_mid_run": bool,         # the start is a state inside a run (robots may touch)
 }
 
 TOP_LEVEL_KEYS = ("format", "name", "notes", "model", "lemmas", "points", "expect")

@@ -3,8 +3,9 @@
 A ``{matrix = "proofs/gathering/NAME.json"}`` evidence entry names a stored reading matrix:
 ``exactsym gather CASE --readings all --json`` for one witness case (every named reading
 of the paper's algorithm, both handednesses; :mod:`exactsym.gathering.reading_matrix`),
-with the case, the search bounds of each row, whether the ground truth elects a leader at
-the start, and the CPU seconds it took.  ``exactsym ledger --write-matrices`` (re)writes
+with the case, the search bounds of each row, whether the start is the paper's (separated
+robots) or a state inside a run (``gather_mid_run``: counted for no grade), whether the
+ground truth elects a leader at the start, and the CPU seconds it took.  ``exactsym ledger --write-matrices`` (re)writes
 every such file from its case; ``--check`` re-runs them and compares the outcomes.
 
 What a row says about a statement S (:func:`row_verdict`):
@@ -68,11 +69,13 @@ def load_matrix(path) -> dict:
         data = json.loads(Path(path).read_text(encoding="utf-8"))
     except (OSError, ValueError) as err:
         raise MatrixError(f"cannot read {path}: {err}") from None
-    need = {"format", "case", "bounds", "settings", "start_has_leader", "matrix"}
+    need = {"format", "case", "bounds", "settings", "start", "start_has_leader", "matrix"}
     if not isinstance(data, dict) or set(data) - need - {"cpu_seconds"} or need - set(data):
         raise MatrixError(f"{path}: keys must be {sorted(need)} (+ cpu_seconds)")
     if data["format"] != FORMAT:
         raise MatrixError(f"{path}: format must be {FORMAT}")
+    if data["start"] not in ("separated", "mid-run"):
+        raise MatrixError(f"{path}: start must be 'separated' or 'mid-run'")
     for row in data["matrix"]:
         if not isinstance(row, dict) or row.get("outcome") not in _OUTCOMES \
                 or not isinstance(row.get("reading"), str) \
@@ -130,7 +133,10 @@ def _table(matrices: list, statement: str) -> dict:
 
 
 def implied_grade(matrices: list, statement: str) -> tuple[str | None, str]:
-    """``(grade or None, why)`` from the stored matrices of the statement's witnesses."""
+    """``(grade or None, why)`` from the stored matrices of the statement's witnesses.  A
+    matrix run from a state inside a run (``start: mid-run``) does not meet the paper's
+    hypothesis of a separated start: it is shown, never counted."""
+    matrices = [m for m in matrices if m.get("start", "separated") == "separated"]
     table = _table(matrices, statement)
     if not table:
         return None, "no matrix"
@@ -138,14 +144,14 @@ def implied_grade(matrices: list, statement: str) -> tuple[str | None, str]:
     rescuing = [r for r, v in table.items()
                 if len(v) == len(matrices) and all(x == "passes" for x in v)]
     if rescuing:
-        return "refuted-under-reading", f"passes under {', '.join(rescuing)} on every witness"
+        return "refuted-under-reading", f"passes under {'; '.join(rescuing)} on every witness"
     violated = any(_violates(row.get("label"), statement) for m in matrices
                    for row in m["matrix"] if row["outcome"] == "violated")
     open_rows = [r for r, v in table.items() if "fails" not in v]
     if violated and not open_rows:
         return "refuted", f"every one of {len(table)} readings fails on some witness"
     if open_rows:
-        return None, f"no witness settles {', '.join(open_rows)}"
+        return None, f"no witness settles {'; '.join(open_rows)}"
     return None, "the algorithm fails under every reading but no run violates it"
 
 
@@ -183,6 +189,7 @@ def compute_matrix(case_path: Path, root: Path, bounds: dict | None = None) -> d
     cpu = time.process_time() - start
     return {"format": FORMAT, "case": case_path.relative_to(root).as_posix(),
             "bounds": bounds, "settings": settings,
+            "start": "mid-run" if expect.get("gather_mid_run") else "separated",
             "start_has_leader": has_leader(case_path),
             "matrix": [{k: row.get(k) for k in ("reading", "readings", "mirrored", "outcome",
                                                 "label", "invariant", "robots", "length",
@@ -199,6 +206,8 @@ def rerun_problems(stored: dict, root: Path) -> list[str]:
     """Re-run a stored matrix from its case and name every row whose outcome changed."""
     fresh = compute_matrix(root / stored["case"], root, stored["bounds"])
     out = []
+    if fresh["start"] != stored["start"]:
+        out.append(f"the case's start is now {fresh['start']}")
     if fresh["start_has_leader"] != stored["start_has_leader"]:
         out.append(f"the truth now says start_has_leader={fresh['start_has_leader']}")
     if fresh["settings"] != stored["settings"]:

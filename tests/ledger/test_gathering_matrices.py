@@ -106,10 +106,19 @@ def test_stored_matrices_are_well_formed_and_tampering_is_found(tmp_path):
 
 def test_the_ledger_cites_matrices_for_the_gathering_statements():
     ledger = parse_ledger((ROOT / "proofs" / "statements.toml").read_text(encoding="utf-8"))
-    for label in ("gather-no-obstacle", "gather-min-distance", "FormGPattern",
-                  "GatheringPattern"):
+    implied = {"gather-no-obstacle": "refuted", "FormGPattern": "refuted",
+               # the handedness rows under A3=first reach the event limit
+               "GatheringPattern": None,
+               # its one violating witness is a state inside a run: counted for no grade
+               "gather-min-distance": None}
+    for label, grade in implied.items():
         s = ledger.by_label()[label]
         stored = [load_matrix(ROOT / e.path) for e in s.evidence if e.kind == "matrix"]
         assert stored, label
         assert grade_problems(s, stored) == [], label
-        assert implied_grade(stored, label)[0] == "refuted", label
+        assert implied_grade(stored, label)[0] == grade, label
+    pocket = load_matrix(ROOT / "proofs/gathering/pocket-move-out-not-nearest.json")
+    assert pocket["start"] == "mid-run"
+    # counted, the pocket alone would refute gather-min-distance under every reading
+    assert implied_grade([{**pocket, "start": "separated"}], "gather-min-distance")[0] \
+        == "refuted"
