@@ -69,6 +69,13 @@ def _piece(piece, R):
     return R.Arc.through(_xy(piece.centre), _xy(piece.start), _xy(piece.end), piece.sense)
 
 
+def _chord(piece) -> float:
+    """The distance between a piece's ends, from the exact difference (an epsilon move's
+    ends are equal as doubles): for the picture's "too small to draw"."""
+    dx, dy = piece.start[0] - piece.end[0], piece.start[1] - piece.end[1]
+    return math.sqrt(float(dx * dx + dy * dy))
+
+
 def _first_contact(path, other, steps: int = 400) -> float:
     """The first parameter of ``path`` (a picture path) where the distance to ``other``
     is at most 2 (floats: where to draw the collision); 1.0 when none is found."""
@@ -134,7 +141,7 @@ def run_picture(points, res, name: str = "run", model: str = "fat"):
                                   f"{what}", (step.robot,)))
         else:
             path = _piece(step.pieces[0], R)
-            moves.append(R.Move(step.robot, t - 1.0, t, path))
+            moves.append(R.Move(step.robot, t - 1.0, t, path, _chord(step.pieces[0])))
             now[step.robot] = path.end
             events.append(R.Event(t, f"event {step.event}: robot {step.robot} moves",
                                   (step.robot,)))

@@ -75,6 +75,9 @@ class Move:
     start_time: float
     end_time: float
     path: Segment | Arc
+    #: the distance between the move's ends when the simulator knows it better than the
+    #: floats of ``path`` (an epsilon move of 1e-19 has equal float ends); None: from path
+    size: float | None = None
 
 
 @dataclass(frozen=True)
@@ -184,7 +187,8 @@ def run_from_dict(d: dict) -> Run:
     return Run(name=d.get("name", "run"), model=d.get("model", "points"),
                start=tuple(tuple(map(float, p)) for p in d["start"]),
                moves=tuple(Move(int(m["robot"]), float(m["start_time"]), float(m["end_time"]),
-                                path(m["path"])) for m in d.get("moves", ())),
+                                path(m["path"]), m.get("size"))
+                           for m in d.get("moves", ())),
                layers=tuple(Layer(str(x["label"]), tuple(x["centre"]), float(x["radius"]))
                             for x in d.get("layers", ())),
                events=tuple(Event(float(e["time"]), str(e["text"]), tuple(e.get("robots", ())))
@@ -238,9 +242,47 @@ ZOOM_HALF = 5.0
 ZOOM_WHEN = 3.0
 
 
-def _draw_scene(ax, run: Run, t, when: float, half: float, prefix: str, handles: list):
+def time_colour(fraction: float) -> tuple:
+    """The colour of a move by its time in the run (0: first, 1: last): viridis, dark to
+    light, so that order reads in grey too."""
+    matplotlib, _ = matplotlib_modules()
+    return matplotlib.colormaps["viridis"](min(max(fraction, 0.0), 1.0) * 0.85)
+
+
+def _path_length(path) -> float:
+    if isinstance(path, Segment):
+        return math.dist(path.start, path.end)
+    return abs(path.end_angle - path.start_angle) * path.radius
+
+
+def _arrow(ax, path, done: float, colour, half: float, gid: str) -> None:
+    """An arrowhead at the middle of what is travelled, pointing the way the robot went;
+    none on a path too short to show at this scale."""
+    if _path_length(path) * done < 0.02 * half:
+        return
+    s = done / 2
+    a, b = path.at(max(s - 0.01 * done, 0.0)), path.at(s + 0.01 * done)
+    from matplotlib.patches import FancyArrowPatch
+    ax.add_patch(FancyArrowPatch(a, b, arrowstyle="-|>", color=colour, lw=1.2,
+                                 mutation_scale=12, shrinkA=0, shrinkB=0, zorder=4.7,
+                                 gid=gid))
+
+
+def _moves_box(run: Run):
+    """The smallest square (centre, half width) holding every move, or None."""
+    pts = [m.path.at(k / 16) for m in run.moves for k in range(17) if _size(m) > 0]
+    if not pts:
+        return None
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    half = max(max(xs) - min(xs), max(ys) - min(ys)) / 2
+    return ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2), half
+
+
+def _draw_scene(ax, run: Run, t, when: float, half: float, prefix: str, handles: list,
+                hollow: bool = False):
     """Layers, paths, planned paths, robots and the violation into ``ax``; legend
-    handles are appended to ``handles`` when it is not None."""
+    handles are appended to ``handles`` when it is not None; ``hollow``: robots drawn
+    faint, paths above them (a zoom on moves smaller than a robot)."""
     from matplotlib.lines import Line2D
     from matplotlib.patches import Circle as CirclePatch
 
@@ -257,18 +299,23 @@ def _draw_scene(ax, run: Run, t, when: float, half: float, prefix: str, handles:
                 gid=f"{prefix}pattern-centre")
         handle(color=COLOURS["level"], ls=(0, (4, 3)), marker="+", mec="#444444",
                label=f"the pattern's centre C and layers ({len(run.layers)})")
+    total = max(end_time(run), 1e-9)
     for k, m in enumerate(run.moves):
         done = 1.0 if when >= m.end_time else 0.0 if when <= m.start_time else \
             (when - m.start_time) / (m.end_time - m.start_time)
+        colour = time_colour((m.start_time + m.end_time) / 2 / total)
         if t is not None:                   # the whole path, faint, then what is done
             xs, ys = _path_xy(m.path)
-            ax.plot(xs, ys, color=_colour(m.robot), lw=0.8, alpha=0.25, zorder=2)
+            ax.plot(xs, ys, color=colour, lw=0.8, alpha=0.25, zorder=2)
         if done > 0:
             xs, ys = _path_xy(m.path, done)
-            ax.plot(xs, ys, color=_colour(m.robot), lw=1.6, zorder=3,
+            ax.plot(xs, ys, color=colour, lw=1.6, zorder=4.6 if hollow else 3,
                     gid=f"{prefix}path-{m.robot}-{k}")
+            _arrow(ax, m.path, done, colour, half, f"{prefix}arrow-{m.robot}-{k}")
     if run.moves:
-        handle(color="#555555", lw=1.6, label="paths (segments and arcs), one colour per robot")
+        handle(color=time_colour(0.5), lw=1.6, marker=">", ms=5,
+               label="paths (segments and arcs), arrow: direction; colour: time, from "
+                     "the first move (dark) to the last (light)")
     for k, path in enumerate(run.planned):
         xs, ys = _path_xy(path)
         ax.plot(xs, ys, color="#d55e00", lw=1.2, ls=(0, (2, 2)), zorder=2,
@@ -282,7 +329,9 @@ def _draw_scene(ax, run: Run, t, when: float, half: float, prefix: str, handles:
         ax.add_patch(CirclePatch(p, rho, fill=False, ec=_colour(i), lw=0.8, ls=":",
                                  gid=f"{prefix}start-{i}", zorder=3))
         q = position(run, i, when)
-        ax.add_patch(CirclePatch(q, rho, fc=_colour(i), alpha=0.7 if fat else 1.0,
+        # hollow (a zoom on small moves): the paths inside a disc stay visible
+        ax.add_patch(CirclePatch(q, rho, fc=_colour(i), alpha=0.15 if hollow else
+                                 0.7 if fat else 1.0,
                                  ec="#d55e00" if i in hit else "#222222",
                                  lw=2.2 if i in hit else 0.8, gid=f"{prefix}robot-{i}",
                                  zorder=4))
@@ -345,7 +394,9 @@ def draw_run(run: Run, t: float | None = None, prefix: str = ""):
         when = end_time(run) if t is None else t
         handles: list = []
         hit = _draw_scene(ax, run, t, when, half, prefix, handles)
+        zoomed = False
         if hit and run.model == "fat" and half > ZOOM_WHEN * ZOOM_HALF and _close(run, when):
+            zoomed = True
             a, b = run.violation.robots
             pa, pb = _witness(run, when)
             mx, my = (pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2
@@ -363,6 +414,21 @@ def draw_run(run: Run, t: float | None = None, prefix: str = ""):
             ax.add_patch(Rectangle((mx - ZOOM_HALF, my - ZOOM_HALF), 2 * ZOOM_HALF,
                                    2 * ZOOM_HALF, fill=False, ec="#d55e00", lw=0.8,
                                    gid=f"{prefix}zoom-window"))
+        tiny = _tiny_moves(run, half)
+        if tiny:
+            _mark_tiny(fig, ax, run, when, tiny, prefix)
+        box = _moves_box(run)
+        if not zoomed and box is not None and 0 < box[1] < half / (2 * ZOOM_WHEN):
+            _motion_zoom(fig, ax, run, t, when, box, prefix)
+            zoomed = True
+        if not zoomed and run.layers and t is None:
+            outer = max(layer.radius for layer in run.layers) + 2.0
+            if outer < half / ZOOM_WHEN:
+                c = run.layers[0].centre
+                _motion_zoom(fig, ax, run, t, when, (c, outer / 1.3), prefix,
+                             "the pattern at the end", "zoom-pattern-", False)
+        if run.moves:
+            _time_bar(fig, end_time(run), prefix)
         title = run.name if t is None else f"{run.name}: t = {t:g}"
         fig.text(0.01, 0.965, title, fontsize=11, weight="bold", va="top")
         now = [e.text for e in run.events if e.time == when] if t is not None else []
@@ -374,6 +440,76 @@ def draw_run(run: Run, t: float | None = None, prefix: str = ""):
         fig.legend(handles=handles, loc="upper left", bbox_to_anchor=(0.66, 0.9),
                    frameon=False, fontsize=8)
     return fig
+
+
+#: A move shorter than this fraction of the picture cannot be drawn in doubles at all
+#: (its ends round to one point); it is ringed and counted instead.
+TINY = 1e-9
+
+
+def _size(m: Move) -> float:
+    return m.size if m.size is not None else _path_length(m.path)
+
+
+def _tiny_moves(run: Run, half: float) -> dict:
+    """robot -> [sizes] of its moves too small to draw."""
+    out: dict = {}
+    for m in run.moves:
+        if _size(m) < TINY * half:
+            out.setdefault(m.robot, []).append(_size(m))
+    return out
+
+
+def _mark_tiny(fig, ax, run: Run, when: float, tiny: dict, prefix: str) -> None:
+    """Ring each robot whose moves are too small to draw, and say how many and how
+    small under the title."""
+    from matplotlib.patches import Circle as CirclePatch
+    parts = []
+    for robot, sizes in sorted(tiny.items()):
+        q = position(run, robot, when)
+        ax.add_patch(CirclePatch(q, 1.45, fill=False, ec="#d55e00", lw=1.4,
+                                 ls=(0, (1, 1.5)), zorder=4.8, gid=f"{prefix}tiny-{robot}"))
+        parts.append(f"robot {robot}: {len(sizes)} move{'s' if len(sizes) > 1 else ''} of "
+                     f"{max(sizes):.1e} at most")
+    fig.text(0.01, 0.93, "too small to draw (ringed): " + "; ".join(parts), fontsize=8,
+             va="top", color="#d55e00", gid=f"{prefix}tiny-note")
+
+
+def _motion_zoom(fig, ax, run: Run, t, when: float, box, prefix: str,
+                 what: str = "zoom on the moves", gid: str = "zoom-moves-",
+                 hollow: bool = True) -> None:
+    """Every move is small beside the picture (epsilon moves, a short slide): a zoom on
+    the square that holds them, robots faint so the paths show (also: the pattern at the
+    end of a run, small beside the start)."""
+    from matplotlib.patches import Rectangle
+    (mx, my), h = box
+    h = max(h * 1.3, 1e-6)
+    zoom = fig.add_axes((0.68, 0.04, 0.30, 0.40))
+    zoom.set_aspect("equal")
+    zoom.set_xlim(mx - h, mx + h)
+    zoom.set_ylim(my - h, my + h)
+    zoom.set_xticks([])
+    zoom.set_yticks([])
+    for spine in zoom.spines.values():
+        spine.set_edgecolor("#555555")
+    zoom.set_title(f"{what}, {2 * h:.3g} wide", fontsize=8)
+    _draw_scene(zoom, run, t, when, h, f"{prefix}{gid}", None, hollow=hollow)
+    ax.add_patch(Rectangle((mx - h, my - h), 2 * h, 2 * h, fill=False, ec="#555555",
+                           lw=0.8, gid=f"{prefix}{gid}window"))
+
+
+def _time_bar(fig, total: float, prefix: str) -> None:
+    """The colour scale of time: event 0 to the last event."""
+    matplotlib, _ = matplotlib_modules()
+    from matplotlib.cm import ScalarMappable
+    from matplotlib.colors import ListedColormap, Normalize
+    cmap = ListedColormap([time_colour(k / 255) for k in range(256)])
+    cax = fig.add_axes((0.68, 0.58, 0.27, 0.018))
+    bar = fig.colorbar(ScalarMappable(norm=Normalize(0, total), cmap=cmap), cax=cax,
+                       orientation="horizontal")
+    bar.set_label("time: event number of each move", fontsize=8)
+    bar.ax.tick_params(labelsize=7)
+    cax.set_gid(f"{prefix}time-bar")
 
 
 def _save(fig, path_or_buffer, fmt: str) -> None:
