@@ -100,11 +100,14 @@ def level_findings(config, levels, verdicts, types=None) -> tuple[list, list, se
         else:
             covered.add("Check_Symmetry_Even")
             flags = []
+            def yes(flag) -> str:       # words, never Python's True/False, in prose
+                return "yes" if flag else "no"
             if v["straight"] != straight:
-                flags.append(f"'straight symmetric': {v['straight']}, by the definition "
-                             f"{straight}")
+                flags.append(f"'straight symmetric': {yes(v['straight'])}, by the "
+                             f"definition {yes(straight)}")
             if v["skew"] != skew:
-                flags.append(f"'skew symmetric': {v['skew']}, by the definition {skew}")
+                flags.append(f"'skew symmetric': {yes(v['skew'])}, by the definition "
+                             f"{yes(skew)}")
             if straight and not skew and str(v["degree"]) != str(mirrors):
                 flags.append(f"degree {v['degree']}, but {mirrors} line(s) of symmetry")
             if flags:
