@@ -161,8 +161,10 @@ def _draw(fig, scene: Scene, show_paper: bool, show_audit: bool) -> None:
         marker = _rotation_marker(k)
         ax.plot([cx], [cy], marker=marker, ms=11, mfc="white", mec=COLOURS["rotation"],
                 mew=1.6, ls="none", gid="centre", zorder=6)
-        ax.annotate(f"k={k}", (cx, cy), xytext=(8, -12), textcoords="offset points",
+        # on a white box, above the lines through C (the paper's lines meet there)
+        ax.annotate(f"k={k}", (cx, cy), xytext=(9, -14), textcoords="offset points",
                     fontsize=8, color=COLOURS["rotation"], weight="bold",
+                    bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.9),
                     gid="rotation-order", zorder=7)
         legend(Line2D([], [], marker=marker, ms=9, mfc="white", mec=COLOURS["rotation"],
                       mew=1.6, ls="none"),
@@ -264,6 +266,12 @@ def _draw_robots(ax, scene: Scene, fat: bool, legend) -> None:
                       ls="none"), f"leader (truth): robot {scene.leader}")
 
 
+#: The paper's lines, level by level: (colour, dash) -- the paper's hue family, told apart
+#: by shade and dash as well as colour (readable in grey).
+PAPER_LEVEL_STYLES = (("#cc79a7", (0, (5, 3))), ("#8e3b72", (0, (2, 2))),
+                      ("#e69f00", (0, (8, 3, 2, 3))), ("#7a5c00", (0, (1, 3))))
+
+
 def _draw_paper(ax, scene: Scene, legend) -> None:
     from matplotlib.lines import Line2D
     from matplotlib.patches import Rectangle
@@ -271,18 +279,23 @@ def _draw_paper(ax, scene: Scene, legend) -> None:
     paper = scene.paper
     xy = {r.index: r.xy for r in scene.robots}
     any_straight = any_skew = False
-    for level in paper.levels:
+    drawn = [lv for lv in paper.levels if lv.straight]
+    for k, level in enumerate(drawn):
+        # one colour and one dash per level, each named in the legend in words
+        colour, dash = PAPER_LEVEL_STYLES[k % len(PAPER_LEVEL_STYLES)]
         for j, line in enumerate(level.straight):
-            _line(ax, line, color=COLOURS["paper"], lw=1.0, ls=(0, (5, 3)),
+            _line(ax, line, color=colour, lw=1.0, ls=dash,
                   gid=f"paper-line-G{level.level}-{j}", zorder=3)
-            any_straight = True
+        count = len(level.straight)
+        legend(Line2D([], [], color=colour, lw=1.0, ls=dash),
+               f"paper, level G{level.level} ({level.check}): {count} line"
+               f"{'s' if count > 1 else ''} of straight symmetry its test reports")
+        any_straight = True
+    for level in paper.levels:
         for j, (a, b) in enumerate(level.skew_pairs[:24]):
             ax.plot([xy[a][0], xy[b][0]], [xy[a][1], xy[b][1]], color=COLOURS["skew"], lw=1.0,
                     ls=(0, (1, 2)), gid=f"paper-skew-G{level.level}-{j}", zorder=3)
             any_skew = True
-    if any_straight:
-        legend(Line2D([], [], color=COLOURS["paper"], lw=1.0, ls=(0, (5, 3))),
-               "paper: lines of straight symmetry its tests report (per level)")
     if any_skew:
         legend(Line2D([], [], color=COLOURS["skew"], lw=1.0, ls=(0, (1, 2))),
                "paper: skew symmetry reported (a half-turn about C): the vertex pairs i, i + n/2 it would swap")
@@ -320,7 +333,7 @@ def _draw_audit(ax, scene: Scene, legend) -> None:
     order = sorted(range(len(scene.audit)), key=lambda j: priority.get(scene.audit[j].kind, 9))
     for j in order:
         w = scene.audit[j]
-        label = f"{_statements(w.statements)}: {_short(w.text, 100)}"
+        label = f"{_statements(w.statements)}: {_short(w.text, 180)}"
         gid = f"witness-{j}"
         ls = styles[j % len(styles)]
         if w.kind == "rotation":

@@ -282,3 +282,24 @@ def test_an_analysis_is_drawn_from_its_results(tmp_path):
     assert len(_ids(_svg(out), "mirror-")) == 4
     plot(skewed, out)
     assert len(_ids(_svg(out), "mirror-")) == 1
+
+
+def _texts(path) -> str:
+    import xml.etree.ElementTree as ET
+    return " ".join("".join(t.itertext()) for t in ET.parse(path).getroot().iter()
+                    if t.tag.endswith("text"))
+
+
+def test_legends_speak_words_per_level_and_in_full(tmp_path):
+    """Issue 34: the paper's lines get one style per level, named in the legend; no Python
+    value (True/False) in any legend; a finding's text is not cut off mid-word."""
+    out = tmp_path / "gcd.svg"
+    plot(CASES / "family/gcd-9-15-merge.toml", out, show_paper=True)
+    text = _texts(out)
+    assert "level G1 (Check_Symmetry_Odd): 9 lines" in text.replace("\n", " ")
+    assert "level G2 (Check_Symmetry_Odd): 15 lines" in text.replace("\n", " ")
+    d3 = tmp_path / "d3.svg"
+    plot(CASES / "discrepancies/d3-hexagon.toml", d3, show_paper=True, show_audit=True)
+    words = " ".join(_texts(d3).split())
+    assert "True" not in words and "False" not in words
+    assert "by the definition no; degree 15/2, but 3 line(s) of symmetry" in words
