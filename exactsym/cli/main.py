@@ -19,10 +19,7 @@ import sys
 import textwrap
 
 from ..version import __version__
-from ..analysis import Options, analyse
-from ..geometry.configuration import load, no_cycle_collection
 from ..errors import EXIT_BUG, EXIT_FALSE, EXIT_INPUT, EXIT_OK, InputError
-from ..report.check import failed_expectations, report_json, report_text, write_json
 
 
 class _Parser(argparse.ArgumentParser):
@@ -43,6 +40,11 @@ def _check_arguments(parser) -> None:
 
 
 def _check(args) -> int:
+    # imported here, not at the top: `exactsym --version`, `--help` and the other commands
+    # should not pay for the whole analysis (0.3 s of imports)
+    from ..analysis import Options, analyse
+    from ..geometry.configuration import load, no_cycle_collection
+    from ..report.check import failed_expectations, report_json, report_text, write_json
     if len(args.files) > 1:
         return _check_several(args)
     # one pause of the cycle collector for the whole command: each re-enabling after a
@@ -69,6 +71,9 @@ def _check(args) -> int:
 def _check_several(args) -> int:
     """One summary line per file (the full report each with --verbose); the exit status
     is the worst of the files' (a file that cannot be read does not stop the others)."""
+    from ..analysis import Options, analyse
+    from ..geometry.configuration import load
+    from ..report.check import failed_expectations, report_json, report_text
     from ..report.summary import one_line
     worst = EXIT_OK
     for k, path in enumerate(args.files):
@@ -274,7 +279,10 @@ def _main(argv: list[str] | None) -> int:
             if not words:                   # `exactsym` alone: what it can do
                 build_parser("").print_help()
                 return EXIT_OK
-            only = words[0] if words and words[0] in COMMANDS else None
+            # `--version`, `--help` before any command: no command's arguments are built
+            # (building them imports every command's modules: 0.7 s for a version string)
+            only = words[0] if words[0] in COMMANDS else "" if words[0].startswith("-") \
+                else None
             args = build_parser(only).parse_args(argv)
         except SystemExit as done:          # --help, --version
             return done.code if isinstance(done.code, int) else EXIT_OK
