@@ -270,3 +270,20 @@ def test_the_search_forks_worlds_of_an_algebraic_start(tmp_path, capsys):
     assert main(["gather", str(path), "--search", "--budget", "150", "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["outcome"] == "violated" and out["violation"]["invariant"] == "I9"
+
+
+def test_quartics_with_tower_coefficients_have_exact_roots():
+    """A biquadratic and an arc-like cubic ``(f - r)(1 + 2 f^2)`` whose coefficients are
+    numbers of a run's tower (a nested-radical start): exact roots, checked by value."""
+    from exactsym.exact.algebraic.polynomials import pmul
+    from exactsym.exact.algebraic.roots import roots_in_unit
+    from exactsym.exact.algebraic.run_tower import RunTower, sqrt_exact
+    tower = RunTower()
+    t = sqrt_exact(Q(2) + sqrt_rational(2), tower)          # sqrt(2 + sqrt 2), level 1
+    assert nested_tower(t) is tower
+    biquadratic = pmul((-t / 4, Q(0), Q(1)), (Q(1), Q(0), Q(1)))   # (f^2 - t/4)(f^2 + 1)
+    (root,) = roots_in_unit(biquadratic)
+    assert root.exact is not None and (root.exact * root.exact - t / 4).sign() == 0
+    cubic = pmul((-t / 3, Q(1)), (Q(1), Q(0), Q(2)))
+    (root,) = roots_in_unit(cubic)
+    assert root.exact is not None and (root.exact - t / 3).sign() == 0
