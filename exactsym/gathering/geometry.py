@@ -25,7 +25,8 @@ from functools import cached_property
 
 import numpy as np
 
-from ..exact.algebraic.interface import (float_and_error, motion_number, products_are_large,
+from ..exact.algebraic.interface import (float_and_error, is_field_number, motion_number,
+                                         products_are_large,
                                          two_products)
 from ..exact.algebraic.norms import negative_instant
 from ..exact.algebraic.polynomials import padd, pmul, pscale, trim
@@ -64,16 +65,20 @@ def cross(u, v):
 
 
 def dist2(p, q):
-    if products_are_large(p[0], q[0], p[1], q[1]):
+    if products_are_large(p[0], q[0], p[1], q[1]) or is_field_number(p[0]):
         key = (p, q)
-        out = _DIST2.get(key)
+        try:
+            out = _DIST2.get(key)
+        except ValueError:      # equal hashes of numbers of two K(alpha): never compared
+            out, key = None, None
         if out is not None:
             return out
         d = sub(p, q)
         out = dot(d, d)
         if len(_DIST2) >= _DIST2_MAX:
             _DIST2.clear()
-        _DIST2[key] = out
+        if key is not None:
+            _DIST2[key] = out
         return out
     d = sub(p, q)
     return dot(d, d)
@@ -83,7 +88,8 @@ def dist2(p, q):
 #: the recogniser, in R's distances and in the centre rule): remembered by value, bounded;
 #: only for MQ coordinates with several terms (their hashes are remembered, and a key
 #: met again is usually the same object, found without comparing; small ones cost less
-#: than the look-up)
+#: than the look-up) and for numbers of K(alpha) (an algebraic start: a product there is
+#: d^2 MQ products and a reduction)
 _DIST2: dict = {}
 _DIST2_MAX = 1 << 12
 

@@ -201,3 +201,89 @@ def test_a_trace_of_an_algebraic_start_replays_with_its_file(tmp_path, capsys):
     assert "identical" in capsys.readouterr().out
     assert main(["replay", str(trace)]) == 2               # no file: told to give it
     assert "replay TRACE FILE" in capsys.readouterr().err
+
+
+# -- the number layer under such a start -------------------------------------------------------
+def _alpha36():
+    from exactsym.exact.algebraic.algebraic_numbers import AlgebraicNumber
+    root = turn_field([fmpq(1, 36)]).root
+    return root, AlgebraicNumber(root, (Q(0), Q(1)))
+
+
+def test_products_in_k_alpha_reduce_as_the_polynomial_remainder():
+    """The power-table reduction and the fused a*b +- c*d give the remainder modulo f."""
+    import random
+    from exactsym.exact.algebraic.algebraic_numbers import AlgebraicNumber
+    from exactsym.exact.algebraic.interface import two_products
+    from exactsym.exact.algebraic.polynomials import pdivmod, pmul, trim
+    root, _alpha = _alpha36()
+    rng = random.Random(3)
+
+    def rnd():
+        return trim(MQ({1: fmpq(rng.randint(-9, 9), rng.randint(1, 4)),
+                        3: fmpq(rng.randint(-3, 3)), 2: fmpq(rng.randint(-1, 1))})
+                    for _ in range(3))
+    for _ in range(40):
+        a, b, c, d = rnd(), rnd(), rnd(), rnd()
+        x, y, z, w = (AlgebraicNumber(root, p) for p in (a, b, c, d))
+        want = pdivmod(pmul(a, b), root.f)[1]
+        got = x * y
+        assert tuple(getattr(got, "c", (got,) if not got.is_zero() else ())) == want
+        for sign in (1, -1):
+            assert two_products(x, y, z, w, sign) == x * y + (z * w) * sign
+
+
+def test_a_quadratic_with_k_alpha_coefficients_has_an_exact_root():
+    """(f - alpha/4)(f - 1/2 - alpha/8) has two exact roots in (0, 1), numbers of K(alpha)
+    again; f^2 - alpha/4 has the exact root sqrt(alpha)/2 (in K'(alpha), or a number of a
+    one-level tower of its own over K(alpha))."""
+    from exactsym.exact.algebraic.roots import roots_in_unit
+    from exactsym.exact.algebraic.polynomials import pmul
+    _root, alpha = _alpha36()
+    r1, r2 = alpha / 4, alpha / 8 + fmpq(1, 2)
+    p = pmul((-r1, Q(1)), (-r2, Q(1)))
+    exact = sorted((r.exact for r in roots_in_unit(p)), key=lambda v: v.enclosure(60).mid())
+    assert len(exact) == 2 and exact[0] == r1 and exact[1] == r2
+    (only,) = roots_in_unit((-alpha / 4, Q(0), Q(1)))
+    assert only.exact is not None and (only.exact * only.exact - alpha / 4).sign() == 0
+    assert only.exact.sign() > 0
+
+
+def test_a_sided_instant_makes_a_positive_verdict_of_an_algebraic_start_undecided():
+    from exactsym.gathering.schedulers import Result
+    from exactsym.gathering.start_numbers import certified
+    _root, alpha = _alpha36()
+    algebraic = [(alpha * 10, Q(0))] + [(Q(k), Q(0)) for k in range(4)]
+    rational = [(Q(k * 3), Q(0)) for k in range(5)]
+    for outcome, sided, points, want in [
+            ("gathered", 1, algebraic, "undecided"), ("stalled", 2, algebraic, "undecided"),
+            ("gathered", 0, algebraic, "gathered"), ("violated", 1, algebraic, "violated"),
+            ("gathered", 1, rational, "gathered")]:
+        res = Result(outcome, "d", 3, 2, {"sided": sided}, None, {})
+        assert certified(res, points).outcome == want
+
+
+def test_the_search_forks_worlds_of_an_algebraic_start(tmp_path, capsys):
+    """The search deep-copies worlds: numbers of K(alpha) keep their one root (before: a
+    TypeError copying its Arb balls, exit 3), and it finds the I9 violation."""
+    path = _write(tmp_path, "j36.toml", _polar(J36))
+    assert main(["gather", str(path), "--search", "--budget", "150", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["outcome"] == "violated" and out["violation"]["invariant"] == "I9"
+
+
+def test_quartics_with_tower_coefficients_have_exact_roots():
+    """A biquadratic and an arc-like cubic ``(f - r)(1 + 2 f^2)`` whose coefficients are
+    numbers of a run's tower (a nested-radical start): exact roots, checked by value."""
+    from exactsym.exact.algebraic.polynomials import pmul
+    from exactsym.exact.algebraic.roots import roots_in_unit
+    from exactsym.exact.algebraic.run_tower import RunTower, sqrt_exact
+    tower = RunTower()
+    t = sqrt_exact(Q(2) + sqrt_rational(2), tower)          # sqrt(2 + sqrt 2), level 1
+    assert nested_tower(t) is tower
+    biquadratic = pmul((-t / 4, Q(0), Q(1)), (Q(1), Q(0), Q(1)))   # (f^2 - t/4)(f^2 + 1)
+    (root,) = roots_in_unit(biquadratic)
+    assert root.exact is not None and (root.exact * root.exact - t / 4).sign() == 0
+    cubic = pmul((-t / 3, Q(1)), (Q(1), Q(0), Q(2)))
+    (root,) = roots_in_unit(cubic)
+    assert root.exact is not None and (root.exact - t / 3).sign() == 0

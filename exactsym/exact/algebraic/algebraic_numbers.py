@@ -78,6 +78,12 @@ class AlgebraicRoot:
         self._balls: dict = {}
         self._canonical = None
 
+    def __deepcopy__(self, memo):
+        # one object per root: a copied world (the adversary search's forks) keeps it, so
+        # its numbers still compare with every other number of the root (its tables only
+        # refine intervals and add levels that were proved, in any fork, sound for all)
+        return self
+
     @classmethod
     def of(cls, f: tuple, lo: fmpq, hi: fmpq) -> "AlgebraicRoot":
         known = _ROOTS.table()
@@ -197,6 +203,9 @@ class AlgebraicNumber(FieldElement):
 
     def __init__(self, root: AlgebraicRoot, c: tuple):
         self.root, self.c, self._hash = root, c, None
+
+    def __deepcopy__(self, memo):
+        return self                       # immutable, and its root is shared (above)
 
     def _new(self, c):
         c = trim(c)

@@ -41,6 +41,11 @@ class AlgebraicTower(Tower):
         super().__init__(())
         self.root = root
 
+    def __deepcopy__(self, memo):
+        # shared by copies of a world (the search's forks), as its root is: levels are
+        # only added, each proved a non-square over everything below it
+        return self
+
     def coerce_base(self, other):
         if isinstance(other, AlgebraicNumber):
             return other if other.root is self.root else None
@@ -79,6 +84,9 @@ class AlgebraicTowerNumber(TowerNumber):
 
     __ne__ = TowerNumber.__ne__
     __hash__ = TowerNumber.__hash__
+
+    def __deepcopy__(self, memo):
+        return self                       # immutable, its tower shared (above)
 
     def __repr__(self):
         return f"AlgebraicTowerNumber({self.text()!r})"

@@ -26,7 +26,7 @@ from .algebraic_numbers import AlgebraicNumber, algebraic_two_products
 from .algebraic_tower import AlgebraicTower
 from .run_tower import RunTower
 
-__all__ = ["ExactNumber", "compare", "is_multiquadratic", "algebraic_root_of", "motion_number", "nested_tower",
+__all__ = ["ExactNumber", "compare", "is_multiquadratic", "algebraic_root_of", "is_field_number", "motion_number", "nested_tower",
            "is_run_tower", "products_are_large", "two_products", "float_and_error"]
 
 #: products of MQ numbers with at least this many pairs of terms are summed over integers
@@ -41,6 +41,12 @@ def compare(x, y) -> int:
 def is_multiquadratic(x) -> bool:
     """Is ``x`` a multiquadratic number (no tower, no ``K(alpha)``)?"""
     return isinstance(x, MQ)
+
+
+def is_field_number(x) -> bool:
+    """Is ``x`` a number of K(alpha) (polynomial coefficients reduced modulo alpha's
+    factor: costlier products than an MQ's, worth remembering)?"""
+    return type(x) is AlgebraicNumber
 
 
 def algebraic_root_of(x):

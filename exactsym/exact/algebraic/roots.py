@@ -93,6 +93,34 @@ def _field_sqrt(x):
         return None
 
 
+def _field_quartic_root(poly, lo, hi):
+    """A cubic or quartic with coefficients of a tower or of K(alpha): a biquadratic
+    ``a f^4 + b f^2 + c`` (``f = sqrt u``, ``u`` a root of ``a u^2 + b u + c``), or one
+    with a factor ``h(f^2)`` of its even and odd parts (an arc's denominator), each factor
+    of degree at most 2 solved; None otherwise."""
+    if len(poly) == 5 and poly[1].is_zero() and poly[3].is_zero() and lo >= 0:
+        c, _, b, _, a = poly
+        inv = 1 / a
+        bm, cm = b * inv, c * inv
+        y = _field_sqrt(bm * bm - cm * 4)
+        for u in (() if y is None else ((-bm - y) / 2, (-bm + y) / 2)):
+            f = _field_sqrt(u) if u.sign() > 0 else None
+            if f is not None and (f - lo).sign() > 0 and (f - hi).sign() < 0:
+                return f
+        return None
+    even = trim(c if k % 2 == 0 else ZERO for k, c in enumerate(poly))
+    odd = trim(poly[k + 1] if k % 2 == 0 and k + 1 < len(poly) else ZERO
+               for k in range(len(poly) - 1))
+    h = pgcd(even, odd) if odd else ()
+    if 1 < len(h) < len(poly):
+        for factor in (h, pdivmod(poly, h)[0]):
+            if len(factor) <= 3 and changes_sign(factor, lo, hi):
+                r = exact_root_hook(factor, lo, hi)
+                if r is not None:
+                    return r
+    return None
+
+
 def _field_quadratic_root(c, b, a, lo, hi):
     """The root in ``(lo, hi)`` of ``a f^2 + b f + c`` with coefficients of a tower or of
     K(alpha) (:func:`_field_sqrt` of the discriminant), or None."""
@@ -127,6 +155,8 @@ def exact_root_hook(poly, lo, hi):
             return r if (r - lo).sign() > 0 and (r - hi).sign() < 0 else None
         if len(poly) == 3:
             return _field_quadratic_root(poly[0], poly[1], poly[2], lo, hi)
+        if len(poly) in (4, 5):
+            return _field_quartic_root(poly, lo, hi)
         return None
     if len(poly) == 2:
         r = _linear_root(poly)
