@@ -281,8 +281,8 @@ def _main(argv: list[str] | None) -> int:
                 return EXIT_OK
             # `--version`, `--help` before any command: no command's arguments are built
             # (building them imports every command's modules: 0.7 s for a version string)
-            only = words[0] if words[0] in COMMANDS else "" if words[0].startswith("-") \
-                else None
+            only = words[0] if words[0] in COMMANDS else "" if all(
+                w in ("--version", "-h", "--help") for w in words) else None
             args = build_parser(only).parse_args(argv)
         except SystemExit as done:          # --help, --version
             return done.code if isinstance(done.code, int) else EXIT_OK

@@ -62,9 +62,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--invariants", default=None,
                         help="comma-separated invariants to check (default: all, I1..I10)")
     parser.add_argument("--mid-run", action="store_true",
-                        help="the file is a state inside a run: robots may touch (a partial "
-                        "pattern), not overlap; the paper's hypothesis is a separated start, "
-                        "so a finding from such a state is not a counterexample by itself")
+                        help="the file is a state inside a run: robots may touch (as in a "
+                        "partial pattern; any touching pair is accepted), not overlap; the "
+                        "paper's hypothesis is a separated start, so a finding from such a "
+                        "state is not a counterexample by itself")
     parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
     parser.add_argument("--trace", metavar="OUT", default=None, help="write the trace here")
     drawing.add_arguments(parser)
@@ -116,6 +117,11 @@ def _settings(args, expect: dict) -> dict:
             raise ValueError(f"unknown invariants {bad} (the invariants are {', '.join(ALL)})")
         s["invariants"] = inv
     return s
+
+
+MID_RUN_NOTE = ("start: a state inside a run (--mid-run / gather_mid_run: robots may touch); "
+                "the paper's start is separated robots, so a finding from here is not by "
+                "itself a counterexample")
 
 
 def _validate_start(points, source, mid_run: bool = False) -> None:
@@ -223,7 +229,8 @@ def _pictures(points, res, args, name: str) -> int | None:
 def run(args) -> int:
     try:
         points, _name, expect, source = read_case(args.file)
-        _validate_start(points, source, args.mid_run or expect.get("gather_mid_run", False))
+        mid_run = bool(args.mid_run or expect.get("gather_mid_run", False))
+        _validate_start(points, source, mid_run)
         settings = _settings(args, expect)
     except GatheringInputError as err:
         return _fail(str(err))
@@ -251,9 +258,12 @@ def run(args) -> int:
     if args.json:
         out = result_dict(res)
         out.update(settings=settings, expect_failures=failures,
-                   search=None if report is None else report.as_dict())
+                   search=None if report is None else report.as_dict(),
+                   start="mid-run" if mid_run else "separated")
         print(json.dumps(out))
     else:
+        if mid_run:
+            print(MID_RUN_NOTE)
         if note:
             print(note)
         print(_text(res, settings))

@@ -6,7 +6,10 @@ The readings are the switches of :data:`.robot.READINGS` (``docs/interpretations
 switch (the base with that one switch changed), a row for each switch that has a single
 value (it is the base row's reading: not run again), and the two senses of the
 handedness the paper leaves open (every Look in a frame of the plain handedness, or every
-Look mirrored: the run on the configuration's mirror image, robots numbered alike).
+Look mirrored: the run on the configuration's mirror image, robots numbered alike), for
+the base reading and for the other value of A3.  The other rows let the adversary give a
+robot either handedness at each Look (the weak model's frames may change between
+activations; the paper says only that each robot has "its own local coordinate system").
 
 Each row is the adversary search (:func:`.search.search`, the row's share of the budget)
 and, when it finds no violation, the case's seeded scheduler run: its outcome is
@@ -47,6 +50,15 @@ def reading_rows(base: dict) -> list:
                              False))
     for name, frames, mirrored in HANDEDNESS:
         rows.append((name, dict(base), frames, mirrored, False))
+    # a robot keeping one handedness from Look to Look is a reading of the model (L210-214:
+    # "its own local coordinate system"); the rows above allow it to change.  A3 decides
+    # whether an epsilon move loops (in both senses it is a proved cycle, in one sense it is
+    # not an exact repeat), so the fixed handedness is run under both values of A3
+    for value in READINGS["A3"]:
+        if value != base["A3"]:
+            for name, frames, mirrored in HANDEDNESS:
+                rows.append((f"A3={value}, {name}", {**base, "A3": value}, frames, mirrored,
+                             False))
     return rows
 
 

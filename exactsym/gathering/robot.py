@@ -201,16 +201,20 @@ def _decide(key: tuple, readings: Readings, unit) -> Decision:
             path = form_pattern_path(current[leader], current, pat, centre, readings, unit,
                                      tower)
         except NoRule as err:
-            # the algorithm's own gap, not the kernel's: nobody moves (a proved stall when
-            # no frame moves anybody), never "undecided"
-            return Decision("stay", (), centre, pat, None, str(err))
+            # the algorithm's own gap, not the kernel's: the leader has no instruction and
+            # stays (a proved stall when no frame moves anybody), never "undecided"; the
+            # moves MakeAsym or Make_SymToAsym planned this cycle are still made
+            if not moves:
+                return Decision("stay", (), centre, pat, None, str(err))
+            path, detail = [], f"{detail}; the leader stays: {err}"
         except ValueError as err:
             return Decision("undecided", (), centre, pat, None, str(err))
-        if leader not in moves:
-            order.append(leader)
-        moves[leader] = moves.get(leader, []) + path
-        # A3 = all: the leader's path may start with its own epsilon move
-        roles[leader] = "leader+epsilon" if leader in roles else "leader"
+        if path:
+            if leader not in moves:
+                order.append(leader)
+            moves[leader] = moves.get(leader, []) + path
+            # A3 = all: the leader's path may start with its own epsilon move
+            roles[leader] = "leader+epsilon" if leader in roles else "leader"
     if not moves:
         return Decision("stay", (), centre, pat, None,
                         f"the paper elects no leader among the {len(R)} robots of R ({detail})")
@@ -235,13 +239,15 @@ def _paper_move(pm, start, centre_r, pts, R, tower=None):
     return None
 
 
-def occupied(pts, pat: Pattern, centre, reading: str, unit=1) -> bool:
-    """A4: is C occupied?"""
+def occupied(pts, pat: Pattern, centre, reading: str, unit=1, me=None) -> bool:
+    """A4: is C occupied "by other robot" (L1605)?  ``me``: the mover's point, never
+    counted -- a leader half way to C does not occupy C against itself."""
     if reading == "exact":
         return pat.centre_robot is not None
     bound = unit * unit if reading == "covers" else 4 * unit * unit
     return any((g.dist2(p, centre) - bound).sign() < 0 or
-               (reading == "covers" and g.dist2(p, centre) == bound) for p in pts)
+               (reading == "covers" and g.dist2(p, centre) == bound)
+               for p in pts if p is not me)
 
 
 def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1,
@@ -249,7 +255,7 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1,
     """FormGPattern for a leader at ``p`` (see the module docstring); ``unit``: the robot
     radius in this frame; ``tower``: the snapshot's tower of nested radicals, where a
     nested-radical target is built (None: a new one, :func:`radial_point`)."""
-    if not occupied(pts, pat, centre, readings.A4, unit):
+    if not occupied(pts, pat, centre, readings.A4, unit, me=p):
         return [g.Segment(p, centre)]
     if pat.centre_robot is None:
         raise NoRule("C is occupied (A4) but no robot is centred on it: FormGPattern has "

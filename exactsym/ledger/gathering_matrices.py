@@ -19,13 +19,18 @@ What a row says about a statement S (:func:`row_verdict`):
 * ``open`` -- anything else: another statement's violation stops the run first, the
   kernel cannot hold a number (``undecided``), or the event limit (``undecided-at-budget``).
 
-The grade the matrices imply (:func:`implied_grade`): ``refuted`` when every reading fails
-on some witness and some row violates S itself; ``refuted-under-reading`` when some
-reading was run on every witness and passes on each; otherwise none.  :func:`grade_problems` holds the
-ledger to it: the ledger may be stricter, never more lenient.  A ledger grade
-``refuted-under-reading`` against an implied ``refuted`` is allowed only when its rescue
-is a reading of the statement's own scope (what the lemma's words cover), not one of the
-algorithm's readings: a ``rescued_by`` naming a matrix reading that fails is refused.
+The grade the matrices imply (:func:`implied_grade`), reading by whole reading (the
+switches' values, and the handedness when a row fixes one; the rows of single-valued
+switches are copies of the base row and count once per witness): ``refuted`` when every
+reading fails on some witness and some row violates S itself; ``refuted-under-reading``
+when some reading was run on every witness and gathers on each while another violates S;
+``holds-on-cases`` when nothing violates S and some reading gathers everywhere; otherwise
+none.  :func:`grade_problems` holds the ledger to it: the ledger may be stricter (more
+against the paper), never more lenient.  A ledger grade ``refuted-under-reading`` against
+an implied ``refuted`` is allowed only when its rescue is a reading of the statement's own
+scope (what the lemma's words cover), not one of the algorithm's readings: a
+``rescued_by`` naming ("A3=first", "A3: first") a reading under which the algorithm fails
+on a witness is refused.
 """
 
 from __future__ import annotations
@@ -54,7 +59,7 @@ LABELS_OF = {
     "Make_SymToAsym": ("obs-v-move", "Make_SymToAsym"),
 }
 
-_SWITCH = re.compile(r"\b(?:A\d|lone|EL|hand)=[A-Za-z0-9-]+")
+_SWITCH = re.compile(r"\b(A\d|lone|EL|hand)\s*[:=]\s*([A-Za-z0-9-]+)")
 _OUTCOMES = {"violated", "gathered", "stalled", "not-possible", "undecided",
              "undecided-at-budget"}
 
@@ -112,23 +117,31 @@ def reading_name(row: dict) -> str:
     from ..gathering.robot import Readings
     default = Readings().as_dict()
     name = ", ".join(f"{k}={v}" for k, v in row["readings"].items() if default[k] != v)
-    hand = row["reading"] if row["reading"].startswith("hand=") else ""
+    hand = next((t for t in row["reading"].split(", ") if t.startswith("hand=")), "")
     return ", ".join(x for x in (name or "defaults", hand) if x)
 
 
 def _has(row: dict, token: str) -> bool:
     """Whether the row's whole reading includes ``token`` ("A3=first", "hand=plain")."""
     key, _, value = token.partition("=")
-    return row["reading"] == token if key == "hand" else row["readings"].get(key) == value
+    return token in row["reading"].split(", ") if key == "hand" else \
+        row["readings"].get(key) == value
+
+
+def _counted(matrices: list) -> list:
+    """The matrices that meet the paper's hypothesis of a separated start."""
+    return [m for m in matrices if m.get("start", "separated") == "separated"]
 
 
 def _table(matrices: list, statement: str) -> dict:
-    """whole reading -> [verdict on each witness that ran it]."""
+    """whole reading -> [its verdict on each witness that ran it]: one verdict per witness
+    (the rows of single-valued switches are copies of the base row, not more witnesses)."""
     out: dict = {}
     for m in matrices:
-        for row in m["matrix"]:
-            out.setdefault(reading_name(row), []).append(
-                row_verdict(row, statement, m["start_has_leader"]))
+        mine = {reading_name(row): row_verdict(row, statement, m["start_has_leader"])
+                for row in m["matrix"]}
+        for name, verdict in mine.items():
+            out.setdefault(name, []).append(verdict)
     return out
 
 
@@ -136,17 +149,19 @@ def implied_grade(matrices: list, statement: str) -> tuple[str | None, str]:
     """``(grade or None, why)`` from the stored matrices of the statement's witnesses.  A
     matrix run from a state inside a run (``start: mid-run``) does not meet the paper's
     hypothesis of a separated start: it is shown, never counted."""
-    matrices = [m for m in matrices if m.get("start", "separated") == "separated"]
+    matrices = _counted(matrices)
     table = _table(matrices, statement)
     if not table:
         return None, "no matrix"
+    violated = any(_violates(row.get("label"), statement) for m in matrices
+                   for row in m["matrix"] if row["outcome"] == "violated")
     # a rescue must be run, and gather, on every witness
     rescuing = [r for r, v in table.items()
                 if len(v) == len(matrices) and all(x == "passes" for x in v)]
+    if rescuing and not violated:
+        return "holds-on-cases", f"no reading violates it; {'; '.join(rescuing)} gather"
     if rescuing:
         return "refuted-under-reading", f"passes under {'; '.join(rescuing)} on every witness"
-    violated = any(_violates(row.get("label"), statement) for m in matrices
-                   for row in m["matrix"] if row["outcome"] == "violated")
     open_rows = [r for r, v in table.items() if "fails" not in v]
     if violated and not open_rows:
         return "refuted", f"every one of {len(table)} readings fails on some witness"
@@ -155,18 +170,33 @@ def implied_grade(matrices: list, statement: str) -> tuple[str | None, str]:
     return None, "the algorithm fails under every reading but no run violates it"
 
 
+#: How strongly a grade speaks against the paper (the ledger may be stricter than its
+#: matrices, never more lenient).
+_AGAINST = {"refuted": 2, "refuted-under-reading": 1}
+
+
+def _tokens(text: str) -> set:
+    """The readings a text names, as ``K=V``: "A3=first", "A3: first", "A3 = first"."""
+    return {f"{k}={v}" for k, v in _SWITCH.findall(text or "")}
+
+
 def grade_problems(statement, matrices: list) -> list[str]:
     """Why the ledger's grade of ``statement`` is more lenient than its matrices."""
     implied, why = implied_grade(matrices, statement.label)
     grade, out = statement.grade, []
-    if implied == "refuted" and grade not in ("refuted", "refuted-under-reading"):
-        out.append(f"the reading matrix implies refuted ({why}), the ledger says {grade}")
-    if implied == "refuted" and grade == "refuted-under-reading":
-        table = _table(matrices, statement.label)
-        failing = [row for m in matrices for row in m["matrix"]
+    if implied is None:
+        return out
+    need = _AGAINST.get(implied, 0)
+    scope_rescue = implied == "refuted" and grade == "refuted-under-reading"
+    if _AGAINST.get(grade, 0) < need and not scope_rescue:
+        out.append(f"the reading matrix implies {implied} ({why}), the ledger says {grade}")
+    if scope_rescue:
+        counted = _counted(matrices)
+        table = _table(counted, statement.label)
+        failing = [row for m in counted for row in m["matrix"]
                    if "fails" in table[reading_name(row)]]
-        named = sorted({t for t in _SWITCH.findall(statement.rescued_by or "")
-                        if any(_has(row, t) for row in failing)})
+        named = sorted(t for t in _tokens(statement.rescued_by)
+                       if any(_has(row, t) for row in failing))
         if named:
             out.append(f"rescued_by names {', '.join(named)}, under which the algorithm "
                        f"fails on a witness of the matrix ({why})")
@@ -199,7 +229,8 @@ def compute_matrix(case_path: Path, root: Path, bounds: dict | None = None) -> d
 
 
 def _columns(data: dict) -> list:
-    return [(r["reading"], r["outcome"], r.get("label")) for r in data["matrix"]]
+    return [(r["reading"], r["outcome"], r.get("label"), r.get("robots"), r.get("length"))
+            for r in data["matrix"]]
 
 
 def rerun_problems(stored: dict, root: Path) -> list[str]:
@@ -214,8 +245,9 @@ def rerun_problems(stored: dict, root: Path) -> list[str]:
         out.append("the case's settings changed since the matrix was written")
     for old, new in zip(_columns(stored), _columns(fresh)):
         if old != new:
-            out.append(f"row {old[0]}: stored {old[1]} {old[2] or ''}, re-run {new[1]} "
-                       f"{new[2] or ''}".rstrip())
+            out.append(f"row {old[0]}: stored {old[1]} {old[2] or ''} (robots {old[3]}, "
+                       f"length {old[4]}), re-run {new[1]} {new[2] or ''} (robots {new[3]}, "
+                       f"length {new[4]})")
     if len(stored["matrix"]) != len(fresh["matrix"]):
         out.append(f"{len(stored['matrix'])} rows stored, {len(fresh['matrix'])} re-run")
     return out

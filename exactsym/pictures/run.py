@@ -298,7 +298,8 @@ def _draw_scene(ax, run: Run, t, when: float, half: float, prefix: str, handles:
         ax.plot([c[0]], [c[1]], marker="+", ms=8, color="#444444", ls="none", zorder=2,
                 gid=f"{prefix}pattern-centre")
         handle(color=COLOURS["level"], ls=(0, (4, 3)), marker="+", mec="#444444",
-               label=f"the pattern's centre C and layers ({len(run.layers)})")
+               label=f"the pattern's centre C and the layer circles it fills "
+                     f"({len(run.layers)})")
     total = max(end_time(run), 1e-9)
     for k, m in enumerate(run.moves):
         done = 1.0 if when >= m.end_time else 0.0 if when <= m.start_time else \
@@ -467,11 +468,15 @@ def _mark_tiny(fig, ax, run: Run, when: float, tiny: dict, prefix: str) -> None:
     parts = []
     for robot, sizes in sorted(tiny.items()):
         q = position(run, robot, when)
-        ax.add_patch(CirclePatch(q, 1.45, fill=False, ec="#d55e00", lw=1.4,
-                                 ls=(0, (1, 1.5)), zorder=4.8, gid=f"{prefix}tiny-{robot}"))
+        # a dashed double ring: not the dotted start circles
+        for r in (1.35, 1.6):
+            ax.add_patch(CirclePatch(q, r, fill=False, ec="#d55e00", lw=1.2,
+                                     ls=(0, (4, 2)), zorder=4.8,
+                                     gid=f"{prefix}tiny-{robot}" if r == 1.35 else None))
         parts.append(f"robot {robot}: {len(sizes)} move{'s' if len(sizes) > 1 else ''} of "
                      f"{max(sizes):.1e} at most")
-    fig.text(0.01, 0.93, "too small to draw (ringed): " + "; ".join(parts), fontsize=8,
+    fig.text(0.01, 0.93, "too small to draw (dashed double ring): " + "; ".join(parts),
+             fontsize=8,
              va="top", color="#d55e00", gid=f"{prefix}tiny-note")
 
 
@@ -508,6 +513,8 @@ def _time_bar(fig, total: float, prefix: str) -> None:
     bar = fig.colorbar(ScalarMappable(norm=Normalize(0, total), cmap=cmap), cax=cax,
                        orientation="horizontal")
     bar.set_label("time: event number of each move", fontsize=8)
+    from matplotlib.ticker import MaxNLocator
+    bar.ax.xaxis.set_major_locator(MaxNLocator(integer=True))   # events are whole numbers
     bar.ax.tick_params(labelsize=7)
     cax.set_gid(f"{prefix}time-bar")
 

@@ -19,7 +19,7 @@ ONE_CIRCLE = [(20, 0), (0, 20), (-20, 0), (0, -20), (12, 16)]
 
 #: the JSON of ``gather FILE --json`` (docs/gathering.md, "Output and JSON"): pinned
 RUN_KEYS = {"outcome", "label", "detail", "events", "looks", "checks", "violation",
-            "pattern", "settings", "expect_failures", "search"}
+            "pattern", "settings", "expect_failures", "search", "start"}
 SEARCH_KEYS = {"found", "actions", "found_length", "length", "states", "expanded", "depth",
                "stopped", "phase", "seconds", "shrink_replays"}
 ROW_KEYS = {"reading", "readings", "mirrored", "outcome", "label", "invariant", "robots",
@@ -36,9 +36,11 @@ def test_every_named_reading_has_a_row_and_both_handednesses_too():
         for value in values:
             assert f"{switch}={value}" in names or Readings().as_dict()[switch] == value
     assert {"A6=nearer", "A7=largest", "A8=rational-rotation"} <= set(names)
-    assert names[-2:] == ["hand=plain", "hand=mirrored"]
-    assert [r[3] for r in rows[-2:]] == [False, True]         # the mirror image
+    assert names[-4:] == ["hand=plain", "hand=mirrored", "A3=all, hand=plain",
+                          "A3=all, hand=mirrored"]
+    assert [r[3] for r in rows[-4:]] == [False, True, False, True]   # the mirror image
     assert all(not f.reflect for f in rows[-1][2])
+    assert rows[-1][1]["A3"] == "all" and rows[-3][1]["A3"] == "first"
 
 
 def test_the_matrix_finds_the_collision_in_both_handednesses_and_differs(capsys):

@@ -27,7 +27,9 @@ def test_touching_start_needs_mid_run(tmp_path, capsys):
 
 def test_the_case_declares_it_and_overlaps_stay_refused(tmp_path, capsys):
     assert main(["gather", str(CASE), "--json"]) == 0
-    capsys.readouterr()
+    assert '"start": "mid-run"' in capsys.readouterr().out
+    assert main(["gather", str(CASE)]) == 0
+    assert capsys.readouterr().out.startswith("start: a state inside a run")
     text = CASE.read_text(encoding="utf-8").replace('["2", "0"]', '["19/10", "0"]')
     bad = tmp_path / "overlap.toml"
     bad.write_text(text, encoding="utf-8")

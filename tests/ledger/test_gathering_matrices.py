@@ -122,3 +122,32 @@ def test_the_ledger_cites_matrices_for_the_gathering_statements():
     # counted, the pocket alone would refute gather-min-distance under every reading
     assert implied_grade([{**pocket, "start": "separated"}], "gather-min-distance")[0] \
         == "refuted"
+
+
+def test_copies_of_the_base_row_are_one_witness_not_four():
+    """The rows of single-valued switches (A6, A7, A8) repeat the base row: one witness
+    that gathers under its base reading settles that reading once."""
+    S = "gather-no-obstacle"
+    one = _m([("base", "gathered", None), ("A6=nearer", "gathered", None),
+              ("A7=largest", "gathered", None), ("A3=all", "violated", S)])
+    for row in one["matrix"][1:3]:
+        row["readings"] = _readings("base")          # copies: the base's whole reading
+    assert implied_grade([one], S) == ("refuted-under-reading",
+                                       "passes under defaults on every witness")
+    other = _m([("A3=all", "violated", S)])
+    # run on one witness of two, the default reading rescues nothing
+    assert implied_grade([one, other], S)[0] is None
+
+
+def test_leniency_is_refused_for_every_implied_grade():
+    S = "gather-no-obstacle"
+    rescue = _m([("base", "gathered", None), ("A3=all", "violated", S)])
+    [p] = grade_problems(_statement("holds-on-cases"), [rescue])
+    assert "implies refuted-under-reading" in p
+    assert grade_problems(_statement("refuted-under-reading", "its words"), [rescue]) == []
+    everything_gathers = _m([("base", "gathered", None), ("A3=all", "gathered", None)])
+    assert implied_grade([everything_gathers], S)[0] == "holds-on-cases"
+    # the ledger's own notation "A3: first" names the reading too
+    fail_all = _m([("base", "stalled", None), ("A3=all", "violated", S)])
+    for text in ("A3: first", "A3 = first", "A3=first"):
+        assert grade_problems(_statement("refuted-under-reading", text), [fail_all]), text
