@@ -21,7 +21,7 @@ from .invariants import ALL
 from .paper_bridge import GatheringInputError, read_case
 from .robot import READINGS, Readings
 from .schedulers import SCHEDULERS, TraceMismatch
-from .output import checks_line, invariant_title, matrix_table, schedule_lines, with_decimals
+from .output import readings_help, checks_line, invariant_title, matrix_table, schedule_lines, with_decimals
 from .reading_matrix import differs_from_base, reading_matrix
 from .search import Bounds, search
 from .trace import read_trace, replay, result_dict, same_result, trace_points, write_trace
@@ -36,13 +36,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     rig.add_argument("--non-rigid", metavar="DELTA", default=None,
                      help="the adversary may stop a move after DELTA (a rational)")
     parser.add_argument("--reading", action="append", default=None, metavar="A1=...",
-                        help="a reading switch: " + "; ".join(
-                            f"{k}={'|'.join(v)}" for k, v in READINGS.items()))
+                        help="a reading of an ambiguous line of the paper, repeatable "
+                        "(the first value is the default): " + readings_help(READINGS))
     parser.add_argument("--algorithm", choices=("paper", "corrected"), default=None,
                         help="paper: GatheringPattern and FormGPattern as printed (default, "
                         "or the case's gather_algorithm); corrected: a repaired variant "
                         "(docs/gathering.md)")
-    parser.add_argument("--seed", type=int, default=None)
+    parser.add_argument("--seed", type=int, default=None,
+                        help="the random adversary's choices (default: the case's "
+                        "gather_seed, else 0); the same seed, the same run")
     parser.add_argument("--search", action="store_true",
                         help="search the adversary's choices for a shortest violation "
                         "(docs/gathering.md, 'The search')")
@@ -58,11 +60,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--readings", choices=("all",), default=None,
                         help="all: the reading matrix, one row per named reading "
                         "(docs/interpretations.md)")
-    parser.add_argument("--max-events", type=int, default=None)
+    parser.add_argument("--max-events", type=int, default=None, metavar="N",
+                        help="stop the run after N events, outcome max-events (default: "
+                        "the case's gather_max_events, else 2000)")
     parser.add_argument("--invariants", default=None,
                         help="comma-separated invariants to check (default: all, I1..I10)")
     parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
     parser.add_argument("--trace", metavar="OUT", default=None, help="write the trace here")
+    parser.add_argument("--no-expect", action="store_true",
+                        help="ignore the file's [expect] claims: exit 0 whatever the "
+                        "outcome (2 still on an error)")
     drawing.add_arguments(parser)
 
 
@@ -70,12 +77,14 @@ def add_replay_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("trace", help="a trace written by gather --trace")
     parser.add_argument("file", nargs="?", default=None,
                         help="the configuration file the trace must match (optional)")
-    parser.add_argument("--json", action="store_true")
+    parser.add_argument("--json", action="store_true",
+                        help="one JSON object on stdout: the replayed result and the keys "
+                        "where it differs from the recorded one")
     drawing.add_arguments(parser)
 
 
-def _fail(msg: str) -> int:
-    print(f"exactsym gather: {msg}", file=sys.stderr)
+def _fail(msg: str, command: str = "gather") -> int:
+    print(f"exactsym {command}: {msg}", file=sys.stderr)
     return 2
 
 
@@ -192,16 +201,16 @@ def _matrix(points, settings, args) -> int:
     return 0
 
 
-def _pictures(points, res, args, name: str) -> int | None:
+def _pictures(points, res, args, name: str, command: str = "gather") -> int | None:
     """Write the pictures asked for (messages on stderr when --json); 2 on failure."""
     if not drawing.wants_pictures(args):
         return None
     try:
         lines = drawing.write_pictures(points, res, args, name)
     except drawing.PicturesUnavailable as err:
-        return _fail(str(err))
+        return _fail(str(err), command)
     except (OSError, ValueError) as err:
-        return _fail(f"cannot write the pictures: {err}")
+        return _fail(f"cannot write the pictures: {err}", command)
     for line in lines:
         print(f"picture: {line}", file=sys.stderr if args.json else sys.stdout)
     return None
@@ -229,7 +238,7 @@ def run(args) -> int:
         res = report.result if report.result is not None else run_settings(points, settings)
     else:
         res = run_settings(points, settings, progress=not args.json)
-    failures = expectation_failures(expect, res)
+    failures = [] if args.no_expect else expectation_failures(expect, res)
     if args.trace:
         try:
             write_trace(args.trace, points, res, settings, Path(args.file).name)
@@ -261,10 +270,8 @@ def run_replay(args) -> int:
         if args.file is not None:
             points = read_case(args.file)[0]
         res = replay(data, points)
-    except TraceMismatch as err:
-        return _fail(str(err))
-    except GatheringInputError as err:
-        return _fail(str(err))
+    except (TraceMismatch, GatheringInputError) as err:
+        return _fail(str(err), "replay")
     diff = same_result(data["result"], res)
     if args.json:
         print(json.dumps({"replayed": result_dict(res), "differs_on": diff}))
@@ -275,7 +282,7 @@ def run_replay(args) -> int:
         print("identical to the recorded run" if not diff else
               f"DIFFERS from the recorded run on: {', '.join(diff)}")
     failed = _pictures(points if points is not None else trace_points(data), res, args,
-                       data.get("name") or Path(args.trace).name)
+                       data.get("name") or Path(args.trace).name, "replay")
     if failed:
         return failed
     return 1 if diff else 0
