@@ -152,9 +152,14 @@ def _symmetry_witness(group: SymmetryGroup, robots) -> dict | None:
     else:
         what = ("mirror through C" if g.turn is None else
                 f"mirror in the line at {number_text(g.turn)} turn through C")
-    out = {"symmetry": what, "group": group.name}
+    turn = g.turn if g.turn is not None else \
+        (fmpq(1, group.rotations) if g.kind == "rotation" else None)
+    # the data beside the words: the kind, its turn as an exact text, the robots
+    out = {"symmetry": what, "group": group.name, "isometry": g.kind,
+           "turn": None if turn is None else number_text(turn)}
     if moved is not None:
         out["maps"] = f"robot {robots[moved]} -> robot {robots[perm[moved]]}"
+        out["robot_map"] = {"from": robots[moved], "to": robots[perm[moved]]}   # "maps" as data
     return out
 
 
@@ -548,7 +553,9 @@ def _leader_check(config, ring_data, paper, group, kw, options,
                       f"not orderable (group {group.name}); a symmetry maps robot {actor} "
                       f"to robot {g.permutation[actor]}, so observers disagree on it",
                       {"symmetry": g.kind, "maps": f"robot {actor} -> robot "
-                       f"{g.permutation[actor]}"}, kind="conclusion"))
+                       f"{g.permutation[actor]}",
+                       "robot_map": {"from": actor, "to": g.permutation[actor]}},
+                      kind="conclusion"))
     return out, notes
 
 

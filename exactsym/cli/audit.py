@@ -12,6 +12,16 @@ from ..analysis import analyse
 from ..geometry.configuration import load
 from ..errors import EXIT_FALSE, EXIT_OK
 from ..paper.family_report import paper_json
+from ..version import json_head
+
+#: a witness's keys that repeat its words as data (docs/json.md): not printed twice
+DATA_KEYS = ("robot_map", "isometry", "turn", "lines")
+
+
+def _words(witness):
+    if not isinstance(witness, dict):
+        return witness
+    return {k: v for k, v in witness.items() if k not in DATA_KEYS}
 
 
 def add_arguments(parser) -> None:
@@ -25,7 +35,8 @@ def run(args) -> int:
     analysis = analyse(config, sections=("audit",))
     res, result = analysis.paper, analysis.audit
     if args.json:
-        print(json.dumps({"paper": paper_json(res), "audit": result}, indent=2))
+        print(json.dumps({**json_head("exactsym-audit", config.source, config.name),
+                          "paper": paper_json(res), "audit": result}, indent=2))
     else:
         from ..report.summary import plain, prose      # words on screen, never Python values
         truth = result["truth"]
@@ -47,7 +58,7 @@ def run(args) -> int:
                 print(f"    under the reading: {prose(d['reading'])}; rescued by: "
                       f"{prose(d['rescued_by'])}")
             if d.get("witness"):
-                print(f"    witness: {plain(d['witness'])}")
+                print(f"    witness: {plain(_words(d['witness']))}")
         for d in result.get("notes", []):
             print(f"  note: {d['statement']} ({d['kind']}): {prose(d['truth'])}")
     if not result["agrees"]:

@@ -24,6 +24,7 @@ from .schedulers import SCHEDULERS, TraceMismatch
 from .output import readings_help, checks_line, invariant_title, matrix_table, schedule_lines, with_decimals
 from .reading_matrix import differs_from_base, reading_matrix
 from .search import Bounds, search
+from ..version import json_head
 from .trace import read_trace, replay, result_dict, same_result, trace_points, write_trace
 
 
@@ -181,11 +182,12 @@ def _search_note(report) -> str:
             f"shrunk to {r['length']}:\n" + "\n".join(schedule_lines(report.actions)))
 
 
-def _matrix(points, settings, args) -> int:
+def _matrix(points, settings, args, name) -> int:
     rows = reading_matrix(points, settings, _bounds(args, matrix=True))
     other = differs_from_base(rows)
     if args.json:
-        print(json.dumps({"settings": settings, "matrix": rows,
+        print(json.dumps({**json_head("exactsym-gather-readings", args.file, name),
+                          "settings": settings, "matrix": rows,
                           "differs_from_base": [r["reading"] for r in other]}))
         return 0
     print(f"reading matrix of {args.file} (base: the case's readings, "
@@ -218,7 +220,7 @@ def _pictures(points, res, args, name: str, command: str = "gather") -> int | No
 
 def run(args) -> int:
     try:
-        points, _name, expect, source = read_case(args.file)
+        points, name, expect, source = read_case(args.file)
         _validate_start(points, source)
         settings = _settings(args, expect)
     except GatheringInputError as err:
@@ -228,7 +230,7 @@ def run(args) -> int:
     note, report = None, None
     try:
         if args.readings == "all":
-            return _matrix(points, settings, args)
+            return _matrix(points, settings, args, name)
         bounds = _bounds(args, matrix=False) if args.search else None
     except ValueError as err:
         return _fail(str(err))
@@ -245,7 +247,8 @@ def run(args) -> int:
         except OSError as err:
             return _fail(f"cannot write the trace: {err}")
     if args.json:
-        out = result_dict(res)
+        out = json_head("exactsym-gather", args.file, name)
+        out.update(result_dict(res))
         out.update(settings=settings, expect_failures=failures,
                    search=None if report is None else report.as_dict())
         print(json.dumps(out))
@@ -274,7 +277,8 @@ def run_replay(args) -> int:
         return _fail(str(err), "replay")
     diff = same_result(data["result"], res)
     if args.json:
-        print(json.dumps({"replayed": result_dict(res), "differs_on": diff}))
+        print(json.dumps({**json_head("exactsym-replay", args.trace, data.get("name")),
+                          "replayed": result_dict(res), "differs_on": diff}))
     else:
         print(f"replayed {len(data['actions'])} actions: outcome {res.outcome}"
               + (f" ({res.label})" if res.label else "")

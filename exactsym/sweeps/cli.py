@@ -22,6 +22,7 @@ from .engine import DEFAULT_TIMEOUT, SweepOptions, run_sweep
 from .families import FamilyError, parse_family
 from .results import ResultsError, remove_if_unstarted
 from .summary import ledger_evidence, summarise, summary_json, summary_table, write_cases
+from ..version import json_head
 
 __all__ = ["add_arguments", "run", "main"]
 
@@ -113,7 +114,8 @@ def _run(args) -> int:
     evidence = ledger_evidence(summary, cases, str(args.out))
     evidence_path.write_text(json.dumps(evidence, indent=1) + "\n", encoding="utf-8")
     if args.json:
-        data = summary_json(summary, cases)
+        data = json_head("exactsym-sweep", str(args.out), args.family)
+        data.update(summary_json(summary, cases))
         data.update(complete=sweep.complete, new=sweep.new, skipped=sweep.skipped,
                     seconds=round(sweep.seconds, 3), workers=sweep.workers,
                     utilisation=None if sweep.utilisation is None else
