@@ -49,6 +49,7 @@ from __future__ import annotations
 from .groups import SubGroups, group_about_centre
 from .handedness import MIRROR_RUN, frames_agree, other_handedness_findings
 from .levels import level_findings
+from .result import AuditResult
 from ..geometry.configuration import Configuration, Similarity, no_cycle_collection
 from ..exact import fmpq, number_text
 from ..labels import ALGORITHMS, STATEMENTS
@@ -232,10 +233,11 @@ def _d(statement, says, truth, witness=None, kind="claim") -> dict:
 def audit(config: Configuration, ring_data: Levels | None = None,
           paper: F.PaperResult | None = None, options: dict | None = None,
           group: SymmetryGroup | None = None, level_verdicts: tuple | None = None,
-          level_types: tuple | None = None) -> dict:
+          level_types: tuple | None = None) -> AuditResult:
     """See :func:`_audit` (run with the cyclic garbage collector paused)."""
     with no_cycle_collection():
-        return _audit(config, ring_data, paper, options, group, level_verdicts, level_types)
+        return AuditResult.from_dict(_audit(config, ring_data, paper, options, group,
+                                            level_verdicts, level_types))
 
 
 def _audit(config: Configuration, ring_data: Levels | None = None,

@@ -36,22 +36,22 @@ def run(args) -> int:
     res, result = analysis.paper, analysis.audit
     if args.json:
         print(json.dumps({**json_head("exactsym-audit", config.source, config.name),
-                          "paper": paper_json(res), "audit": result}, indent=2))
+                          "paper": paper_json(res), "audit": result.as_dict()}, indent=2))
     else:
         from ..report.summary import plain, prose      # words on screen, never Python values
-        truth = result["truth"]
-        print(f"truth: group {truth['group']}, "
-              f"{'orderable' if truth['orderable'] else 'not orderable'}, leader "
-              f"{plain(truth['leader'])}")
+        truth = result.truth
+        print(f"truth: group {truth.group}, "
+              f"{'orderable' if truth.orderable else 'not orderable'}, leader "
+              f"{plain(truth.leader)}")
         print(f"paper: {'orderable' if res.orderable else 'not orderable'}, leader "
               f"{plain(res.leader)}, moves {plain([m['robot'] for m in res.moves])}")
-        covered = result.get("covered", [])
-        if result["agrees"]:
+        covered = result.covered
+        if result.agrees:
             print(f"audit: the paper agrees: no statement is false here; {len(covered)} "
                   "covered: " + ", ".join(covered))
         else:
             print(f"audit: {len(covered)} statements covered: " + ", ".join(covered))
-        for d in result["discrepancies"]:
+        for d in result.discrepancies:
             print(f"- {d['statement']} ({d['kind']})\n    says:  {prose(d['says'])}\n"
                   f"    truth: {prose(d['truth'])}")
             if d.get("rescued_by"):
@@ -59,11 +59,11 @@ def run(args) -> int:
                       f"{prose(d['rescued_by'])}")
             if d.get("witness"):
                 print(f"    witness: {plain(_words(d['witness']))}")
-        for d in result.get("notes", []):
+        for d in result.notes:
             print(f"  note: {d['statement']} ({d['kind']}): {prose(d['truth'])}")
-    if not result["agrees"]:
-        print(f"{config.source}: the audit finds {len(result['discrepancies'])} "
-              f"discrepancy(ies); the first: {result['discrepancies'][0]['statement']}",
+    if not result.agrees:
+        print(f"{config.source}: the audit finds {len(result.discrepancies)} "
+              f"discrepancy(ies); the first: {result.discrepancies[0]['statement']}",
               file=sys.stderr)
         return EXIT_FALSE
     return EXIT_OK

@@ -50,7 +50,7 @@ def _report_json(analysis: Analysis, brief: bool = False) -> dict:
     if analysis.paper is not None:
         report["paper"] = paper_json(analysis.paper, described=not brief)
     if analysis.audit is not None:
-        report["audit"] = analysis.audit
+        report["audit"] = analysis.audit.as_dict()
     return report
 
 
