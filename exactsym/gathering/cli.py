@@ -22,7 +22,8 @@ from .paper_bridge import GatheringInputError, read_case
 from .robot import READINGS, Readings
 from .schedulers import SCHEDULERS, TraceMismatch
 from .output import readings_help, checks_line, invariant_title, matrix_table, schedule_lines, with_decimals
-from .reading_matrix import differs_from_base, reading_matrix
+from .reading_matrix import differs_from_base, reading_matrix, reading_rows
+from ..progress import Progress, ticking
 from .search import Bounds, search
 from ..version import json_head
 from .trace import read_trace, replay, result_dict, same_result, trace_points, write_trace
@@ -183,7 +184,13 @@ def _search_note(report) -> str:
 
 
 def _matrix(points, settings, args, name) -> int:
-    rows = reading_matrix(points, settings, _bounds(args, matrix=True))
+    bounds = _bounds(args, matrix=True)
+    with Progress("gather --readings all", total=len(list(reading_rows(settings["readings"]))),
+                  unit=" readings") as bar:
+        def step(done, _total, name):
+            bar.done, bar.note = done, name
+            bar.draw(force=True)
+        rows = reading_matrix(points, settings, bounds, progress=step)
     other = differs_from_base(rows)
     if args.json:
         print(json.dumps({**json_head("exactsym-gather-readings", args.file, name),
@@ -208,7 +215,8 @@ def _pictures(points, res, args, name: str, command: str = "gather") -> int | No
     if not drawing.wants_pictures(args):
         return None
     try:
-        lines = drawing.write_pictures(points, res, args, name)
+        with ticking("pictures"):
+            lines = drawing.write_pictures(points, res, args, name)
     except drawing.PicturesUnavailable as err:
         return _fail(str(err), command)
     except (OSError, ValueError) as err:
@@ -235,11 +243,13 @@ def run(args) -> int:
     except ValueError as err:
         return _fail(str(err))
     if args.search:
-        report = search(points, settings, bounds)
+        with ticking("gather --search", bounds.seconds, timed=True):
+            report = search(points, settings, bounds)
         note = _search_note(report)
         res = report.result if report.result is not None else run_settings(points, settings)
     else:
-        res = run_settings(points, settings, progress=not args.json)
+        with ticking("gather"):         # on a terminal only; the run reports nothing
+            res = run_settings(points, settings)
     failures = [] if args.no_expect else expectation_failures(expect, res)
     if args.trace:
         try:
