@@ -21,7 +21,8 @@ from .invariants import ALL
 from .paper_bridge import GatheringInputError, read_case
 from .robot import READINGS, Readings
 from .schedulers import SCHEDULERS, TraceMismatch
-from .output import readings_help, checks_line, invariant_title, matrix_table, schedule_lines, with_decimals
+from .output import (checks_line, invariant_title, matrix_table, readings_help, schedule_lines,
+                     with_decimals)
 from .reading_matrix import differs_from_base, reading_matrix, reading_rows
 from ..progress import Progress, ticking
 from .search import Bounds, search
