@@ -22,7 +22,7 @@ immutable values.
 >>> a = analyse(load("cases/examples/chiral-nine-gon.toml"))
 >>> a.truth.name, a.truth.orderable, a.paper.orderable
 ('C3', False, True)
->>> sorted({d["statement"] for d in a.audit["discrepancies"]})[:3]
+>>> sorted({d["statement"] for d in a.audit.discrepancies})[:3]
 ['ElectLeader', 'GatheringPattern', 'MakeAsym']
 
 The names are loaded on first use, so that ``import exactsym.checker`` (the standalone

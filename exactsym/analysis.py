@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
+from .audit.result import AuditResult
 from .audit.statements import audit as run_audit
 from .exact.context import AnalysisContext
 from .geometry.configuration import Configuration, no_cycle_collection
@@ -68,7 +69,8 @@ class Analysis:
     ``level_verdicts``: per level, the polygon layer's verdicts (a JSON-ready dict, None
     for the robot at C); ``level_strings``: per level, the CW/ACW strings (None unless
     ``options.strings``); ``paper``: the family layer's result; ``audit``: the audit's
-    JSON-ready dict (:func:`exactsym.audit.statements.audit`); ``context``: the caches the
+    :class:`~exactsym.audit.result.AuditResult` (:func:`exactsym.audit.statements.audit`;
+    ``.as_dict()``: its JSON); ``context``: the caches the
     analysis filled, which its report reads (:meth:`reading`)."""
     config: Configuration
     options: Options
@@ -77,7 +79,7 @@ class Analysis:
     level_verdicts: tuple | None = None
     level_strings: tuple | None = None
     paper: PaperResult | None = None
-    audit: dict | None = None
+    audit: AuditResult | None = None
     context: AnalysisContext = field(default_factory=AnalysisContext, compare=False,
                                      repr=False)
 
@@ -108,9 +110,9 @@ def analyse(config: Configuration, sections=PARTS, options: Options | None = Non
 
     >>> from exactsym import analyse, load, report_text
     >>> a = analyse(load("cases/discrepancies/d3-hexagon.toml"))
-    >>> a.truth.name, a.truth.mirrors, a.truth.orderable, a.audit["agrees"]
+    >>> a.truth.name, a.truth.mirrors, a.truth.orderable, a.audit.agrees
     ('D3', 3, False, False)
-    >>> [d["statement"] for d in a.audit["discrepancies"]]
+    >>> [d["statement"] for d in a.audit.discrepancies]
     ['obs-exh-poly', 'Check_Symmetry_Even']
     >>> [len(level.points) for level in a.levels.levels]
     [6]

@@ -18,12 +18,13 @@ def test_parts_asked_for_and_what_they_need_are_computed_and_nothing_else():
     levels_only = analyse(config, sections=())
     assert (levels_only.truth, levels_only.level_verdicts, levels_only.paper,
             levels_only.audit) == (None, None, None, None)
-    assert set(report_json(levels_only)) == {"n", "sec", "levels", "number_field"}
+    assert set(report_json(levels_only)) == {"format", "schema_version", "file", "name", "n",
+                                             "sec", "levels", "number_field"}
     audited = analyse(config, sections=("audit",))
     assert audited.truth is not None and audited.paper is not None
     assert audited.level_verdicts is not None        # the audit covers the per-level statements
     assert audited.level_strings is None
-    assert audited.audit["truth"]["group"] == audited.truth.name
+    assert audited.audit.truth.group == audited.truth.name
 
 
 def test_the_whole_analysis_equals_its_parts():

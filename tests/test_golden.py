@@ -39,18 +39,24 @@ def test_every_case_has_a_golden_file_and_no_golden_file_is_stale():
 @pytest.mark.parametrize("path", _case_files(), ids=lambda p: str(p.relative_to(CASES)))
 def test_check_json_matches_golden(path, capsys):
     code = main(["check", "--json", str(path)])
-    out = capsys.readouterr().out
+    out = json.loads(capsys.readouterr().out)
     assert code == 0
-    assert json.loads(out) == json.loads(_golden(path).read_text(encoding="utf-8"))
+    golden = json.loads(_golden(path).read_text(encoding="utf-8"))
+    # "file" is the path as given: the golden files were written from the checkout's root
+    assert out.pop("file") == str(path)
+    assert golden.pop("file") == path.relative_to(ROOT).as_posix()
+    assert out == golden
 
 
 if __name__ == "__main__":   # regenerate: python tests/test_golden.py
     import contextlib
     import io
+    import os
+    os.chdir(ROOT)                      # "file": the path from the checkout's root
     for case in _case_files():
         buffer = io.StringIO()
         with contextlib.redirect_stdout(buffer):
-            if main(["check", "--json", str(case)]) != 0:
+            if main(["check", "--json", case.relative_to(ROOT).as_posix()]) != 0:
                 sys.exit(f"{case}: check failed")
         target = _golden(case)
         target.parent.mkdir(parents=True, exist_ok=True)

@@ -49,6 +49,7 @@ from __future__ import annotations
 from .groups import SubGroups, group_about_centre
 from .handedness import MIRROR_RUN, frames_agree, other_handedness_findings
 from .levels import level_findings
+from .result import AuditResult
 from ..geometry.configuration import Configuration, Similarity, no_cycle_collection
 from ..exact import fmpq, number_text
 from ..labels import ALGORITHMS, STATEMENTS
@@ -152,9 +153,14 @@ def _symmetry_witness(group: SymmetryGroup, robots) -> dict | None:
     else:
         what = ("mirror through C" if g.turn is None else
                 f"mirror in the line at {number_text(g.turn)} turn through C")
-    out = {"symmetry": what, "group": group.name}
+    turn = g.turn if g.turn is not None else \
+        (fmpq(1, group.rotations) if g.kind == "rotation" else None)
+    # the data beside the words: the kind, its turn as an exact text, the robots
+    out = {"symmetry": what, "group": group.name, "isometry": g.kind,
+           "turn": None if turn is None else number_text(turn)}
     if moved is not None:
         out["maps"] = f"robot {robots[moved]} -> robot {robots[perm[moved]]}"
+        out["robot_map"] = {"from": robots[moved], "to": robots[perm[moved]]}   # "maps" as data
     return out
 
 
@@ -227,10 +233,11 @@ def _d(statement, says, truth, witness=None, kind="claim") -> dict:
 def audit(config: Configuration, ring_data: Levels | None = None,
           paper: F.PaperResult | None = None, options: dict | None = None,
           group: SymmetryGroup | None = None, level_verdicts: tuple | None = None,
-          level_types: tuple | None = None) -> dict:
+          level_types: tuple | None = None) -> AuditResult:
     """See :func:`_audit` (run with the cyclic garbage collector paused)."""
     with no_cycle_collection():
-        return _audit(config, ring_data, paper, options, group, level_verdicts, level_types)
+        return AuditResult.from_dict(_audit(config, ring_data, paper, options, group,
+                                            level_verdicts, level_types))
 
 
 def _audit(config: Configuration, ring_data: Levels | None = None,
@@ -548,7 +555,9 @@ def _leader_check(config, ring_data, paper, group, kw, options,
                       f"not orderable (group {group.name}); a symmetry maps robot {actor} "
                       f"to robot {g.permutation[actor]}, so observers disagree on it",
                       {"symmetry": g.kind, "maps": f"robot {actor} -> robot "
-                       f"{g.permutation[actor]}"}, kind="conclusion"))
+                       f"{g.permutation[actor]}",
+                       "robot_map": {"from": actor, "to": g.permutation[actor]}},
+                      kind="conclusion"))
     return out, notes
 
 

@@ -21,9 +21,12 @@ from .invariants import ALL
 from .paper_bridge import GatheringInputError, read_case
 from .robot import READINGS, Readings
 from .schedulers import SCHEDULERS, TraceMismatch
-from .output import checks_line, invariant_title, matrix_table, schedule_lines, with_decimals
-from .reading_matrix import differs_from_base, reading_matrix
+from .output import (checks_line, invariant_title, matrix_table, readings_help, schedule_lines,
+                     with_decimals)
+from .reading_matrix import differs_from_base, reading_matrix, reading_rows
+from ..progress import Progress, ticking
 from .search import Bounds, search
+from ..version import json_head
 from .trace import read_trace, replay, result_dict, same_result, trace_points, write_trace
 
 
@@ -36,13 +39,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     rig.add_argument("--non-rigid", metavar="DELTA", default=None,
                      help="the adversary may stop a move after DELTA (a rational)")
     parser.add_argument("--reading", action="append", default=None, metavar="A1=...",
-                        help="a reading switch: " + "; ".join(
-                            f"{k}={'|'.join(v)}" for k, v in READINGS.items()))
+                        help="a reading of an ambiguous line of the paper, repeatable "
+                        "(the first value is the default): " + readings_help(READINGS))
     parser.add_argument("--algorithm", choices=("paper", "corrected"), default=None,
                         help="paper: GatheringPattern and FormGPattern as printed (default, "
                         "or the case's gather_algorithm); corrected: a repaired variant "
                         "(docs/gathering.md)")
-    parser.add_argument("--seed", type=int, default=None)
+    parser.add_argument("--seed", type=int, default=None,
+                        help="the random adversary's choices (default: the case's "
+                        "gather_seed, else 0); the same seed, the same run")
     parser.add_argument("--search", action="store_true",
                         help="search the adversary's choices for a shortest violation "
                         "(docs/gathering.md, 'The search')")
@@ -58,7 +63,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--readings", choices=("all",), default=None,
                         help="all: the reading matrix, one row per named reading "
                         "(docs/interpretations.md)")
-    parser.add_argument("--max-events", type=int, default=None)
+    parser.add_argument("--max-events", type=int, default=None, metavar="N",
+                        help="stop the run after N events, outcome max-events (default: "
+                        "the case's gather_max_events, else 2000)")
     parser.add_argument("--invariants", default=None,
                         help="comma-separated invariants to check (default: all, I1..I10)")
     parser.add_argument("--mid-run", action="store_true",
@@ -68,6 +75,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         "state is not a counterexample by itself")
     parser.add_argument("--json", action="store_true", help="one JSON object on stdout")
     parser.add_argument("--trace", metavar="OUT", default=None, help="write the trace here")
+    parser.add_argument("--no-expect", action="store_true",
+                        help="ignore the file's [expect] claims: exit 0 whatever the "
+                        "outcome (2 still on an error)")
     drawing.add_arguments(parser)
 
 
@@ -75,12 +85,14 @@ def add_replay_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("trace", help="a trace written by gather --trace")
     parser.add_argument("file", nargs="?", default=None,
                         help="the configuration file the trace must match (optional)")
-    parser.add_argument("--json", action="store_true")
+    parser.add_argument("--json", action="store_true",
+                        help="one JSON object on stdout: the replayed result and the keys "
+                        "where it differs from the recorded one")
     drawing.add_arguments(parser)
 
 
-def _fail(msg: str) -> int:
-    print(f"exactsym gather: {msg}", file=sys.stderr)
+def _fail(msg: str, command: str = "gather") -> int:
+    print(f"exactsym {command}: {msg}", file=sys.stderr)
     return 2
 
 
@@ -191,11 +203,18 @@ def _search_note(report) -> str:
             f"shrunk to {r['length']}:\n" + "\n".join(schedule_lines(report.actions)))
 
 
-def _matrix(points, settings, args) -> int:
-    rows = reading_matrix(points, settings, _bounds(args, matrix=True))
+def _matrix(points, settings, args, name) -> int:
+    bounds = _bounds(args, matrix=True)
+    with Progress("gather --readings all", total=len(list(reading_rows(settings["readings"]))),
+                  unit=" readings") as bar:
+        def step(done, _total, name):
+            bar.done, bar.note = done, name
+            bar.draw(force=True)
+        rows = reading_matrix(points, settings, bounds, progress=step)
     other = differs_from_base(rows)
     if args.json:
-        print(json.dumps({"settings": settings, "matrix": rows,
+        print(json.dumps({**json_head("exactsym-gather-readings", args.file, name),
+                          "settings": settings, "matrix": rows,
                           "differs_from_base": [r["reading"] for r in other]}))
         return 0
     print(f"reading matrix of {args.file} (base: the case's readings, "
@@ -211,16 +230,17 @@ def _matrix(points, settings, args) -> int:
     return 0
 
 
-def _pictures(points, res, args, name: str) -> int | None:
+def _pictures(points, res, args, name: str, command: str = "gather") -> int | None:
     """Write the pictures asked for (messages on stderr when --json); 2 on failure."""
     if not drawing.wants_pictures(args):
         return None
     try:
-        lines = drawing.write_pictures(points, res, args, name)
+        with ticking("pictures"):
+            lines = drawing.write_pictures(points, res, args, name)
     except drawing.PicturesUnavailable as err:
-        return _fail(str(err))
+        return _fail(str(err), command)
     except (OSError, ValueError) as err:
-        return _fail(f"cannot write the pictures: {err}")
+        return _fail(f"cannot write the pictures: {err}", command)
     for line in lines:
         print(f"picture: {line}", file=sys.stderr if args.json else sys.stdout)
     return None
@@ -228,7 +248,7 @@ def _pictures(points, res, args, name: str) -> int | None:
 
 def run(args) -> int:
     try:
-        points, _name, expect, source = read_case(args.file)
+        points, name, expect, source = read_case(args.file)
         mid_run = bool(args.mid_run or expect.get("gather_mid_run", False))
         _validate_start(points, source, mid_run)
         settings = _settings(args, expect)
@@ -239,24 +259,27 @@ def run(args) -> int:
     note, report = None, None
     try:
         if args.readings == "all":
-            return _matrix(points, settings, args)
+            return _matrix(points, settings, args, name)
         bounds = _bounds(args, matrix=False) if args.search else None
     except ValueError as err:
         return _fail(str(err))
     if args.search:
-        report = search(points, settings, bounds)
+        with ticking("gather --search", bounds.seconds, timed=True):
+            report = search(points, settings, bounds)
         note = _search_note(report)
         res = report.result if report.result is not None else run_settings(points, settings)
     else:
-        res = run_settings(points, settings, progress=not args.json)
-    failures = expectation_failures(expect, res)
+        with ticking("gather"):         # on a terminal only; the run reports nothing
+            res = run_settings(points, settings)
+    failures = [] if args.no_expect else expectation_failures(expect, res)
     if args.trace:
         try:
             write_trace(args.trace, points, res, settings, Path(args.file).name)
         except OSError as err:
             return _fail(f"cannot write the trace: {err}")
     if args.json:
-        out = result_dict(res)
+        out = json_head("exactsym-gather", args.file, name)
+        out.update(result_dict(res))
         out.update(settings=settings, expect_failures=failures,
                    search=None if report is None else report.as_dict(),
                    start="mid-run" if mid_run else "separated")
@@ -284,13 +307,12 @@ def run_replay(args) -> int:
         if args.file is not None:
             points = read_case(args.file)[0]
         res = replay(data, points)
-    except TraceMismatch as err:
-        return _fail(str(err))
-    except GatheringInputError as err:
-        return _fail(str(err))
+    except (TraceMismatch, GatheringInputError) as err:
+        return _fail(str(err), "replay")
     diff = same_result(data["result"], res)
     if args.json:
-        print(json.dumps({"replayed": result_dict(res), "differs_on": diff}))
+        print(json.dumps({**json_head("exactsym-replay", args.trace, data.get("name")),
+                          "replayed": result_dict(res), "differs_on": diff}))
     else:
         print(f"replayed {len(data['actions'])} actions: outcome {res.outcome}"
               + (f" ({res.label})" if res.label else "")
@@ -298,7 +320,7 @@ def run_replay(args) -> int:
         print("identical to the recorded run" if not diff else
               f"DIFFERS from the recorded run on: {', '.join(diff)}")
     failed = _pictures(points if points is not None else trace_points(data), res, args,
-                       data.get("name") or Path(args.trace).name)
+                       data.get("name") or Path(args.trace).name, "replay")
     if failed:
         return failed
     return 1 if diff else 0

@@ -11,8 +11,8 @@ from decimal import Context, Decimal
 
 from .invariants import LABELS
 
-__all__ = ["NAMES", "invariant_title", "with_decimals", "schedule_lines", "matrix_table",
-           "checks_line"]
+__all__ = ["NAMES", "READING_WORDS", "readings_help", "invariant_title", "with_decimals",
+           "schedule_lines", "matrix_table", "checks_line"]
 
 #: a short name per invariant (the spec's section 4 table, docs/gathering.md)
 NAMES = {
@@ -27,6 +27,33 @@ NAMES = {
     "I9": "no chirality",
     "I10": "progress",
 }
+
+#: each reading switch of an ambiguous line of the paper in words, its values first the
+#: default (docs/gathering.md's table; ``robot.READINGS`` holds the values)
+READING_WORDS = {
+    "A1": "the centre C: sec-all, the SEC of every robot; sec-r, the SEC of R (literal)",
+    "A3": "several moves named in one procedure: first, only the first this cycle; all, "
+          "every named move, then the leader's FormGPattern, in one cycle",
+    "A4": "'C is not occupied': exact, no centre at C; covers, no disc covers C; within2, "
+          "no centre within 2",
+    "A5": "the path to a slot of a layer not full: radial-arc, radially to radius 2l then "
+          "along that circle; straight, one segment; arc-radial, along the mover's circle "
+          "then radially in",
+    "A6": "slide direction: nearer, the nearer chain end (a tie: counter-clockwise)",
+    "A7": "the last layer: largest, the largest occupied layer",
+    "A8": "epsilon moves: rational-rotation, rational rotations about the SEC centre of R, "
+          "sense chosen by the mover",
+    "lone": "Definition 1's 'at least 1': accept or reject a lone robot in a new layer",
+    "EL": "Elect_Leader_Asym's tuples {CW, ACW}: literal, ordered pairs in the observer's "
+          "handedness; unordered, sorted pairs (the same in both handednesses)",
+}
+
+
+def readings_help(readings: dict) -> str:
+    """The help of ``--reading``: each switch ``KEY=v1|v2`` and its meaning in words."""
+    return "; ".join(f"{k}={'|'.join(v)} ({READING_WORDS.get(k, '')})"
+                     for k, v in readings.items())
+
 
 #: a rational with more than 12 digits in all
 _LONG = re.compile(r"(?<![\w.])(-?\d+)/(\d+)(?![\w.])")

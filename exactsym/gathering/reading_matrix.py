@@ -96,14 +96,19 @@ def _row(points, settings: dict, name, readings, frames, mirrored, bounds: Bound
     return out
 
 
-def reading_matrix(points, settings: dict, bounds: Bounds = Bounds(budget=400)) -> list:
+def reading_matrix(points, settings: dict, bounds: Bounds = Bounds(budget=400),
+                   progress=None) -> list:
     """One dict per row of :func:`reading_rows` (keys: ``reading``, ``readings``,
     ``mirrored``, ``outcome``, ``label``, ``invariant``, ``robots``, ``schedule`` (the
     violating actions, or None), ``length`` (actions of the schedule, or events of the
     seeded run), ``detail``, ``search`` (:meth:`.search.SearchReport.as_dict`),
-    ``same_as`` (for a single-valued switch: ``"base"``)); ``bounds`` apply per row."""
+    ``same_as`` (for a single-valued switch: ``"base"``)); ``bounds`` apply per row;
+    ``progress``: called with ``(done, total, name)`` before each row."""
     rows, base_row = [], None
-    for name, readings, frames, mirrored, same in reading_rows(settings["readings"]):
+    table = list(reading_rows(settings["readings"]))
+    for k, (name, readings, frames, mirrored, same) in enumerate(table):
+        if progress is not None:
+            progress(k, len(table), name)
         if same:
             rows.append({**base_row, "reading": name, "same_as": "base"})
             continue

@@ -31,6 +31,7 @@ from pathlib import Path
 
 from ..errors import InputError
 from .audit_doc import render
+from ..progress import Progress
 from .evidence import check_evidence, missing_files
 from .gathering_matrices import MatrixError, compute_matrix, implied_grade, load_matrix
 from .graph import dependency_graph, support
@@ -199,8 +200,7 @@ def run(args) -> int:
                 target.write_text(text, encoding="utf-8")
             except OSError as err:      # a path, a permission, a full disk: exit 2
                 raise InputError(f"cannot write {target}: {err.strerror or err}") from None
-    problems = (check_evidence(ledger, root) if args.check
-                else missing_files(ledger, root))
+    problems = (_checked(ledger, root) if args.check else missing_files(ledger, root))
     if args.json:
         print(json.dumps(ledger_json(ledger, sup), indent=2))
     else:
@@ -219,6 +219,13 @@ def run(args) -> int:
     for p in problems:
         print(f"ledger: {p}", file=sys.stderr)
     return EXIT_FALSE if problems else EXIT_OK
+
+
+def _checked(ledger, root: Path) -> list:
+    """``check_evidence`` with a progress bar on stderr (one step per case file re-run)."""
+    cases = {e.path for s in ledger.statements for e in s.evidence if e.kind == "case"}
+    with Progress("ledger --check", total=len(cases), unit=" cases") as bar:
+        return check_evidence(ledger, root, progress=lambda path: bar.update(note=path))
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -13,6 +13,7 @@ from ..exact.cyclotomic_text import fast_number_text as number_text   # same str
 from ..paper.family_report import paper_json
 from ..paper.homogeneous import centre_texts, radius_text, sec_radius_text
 from ..truth.report import truth_json
+from ..version import json_head
 
 __all__ = ["report_json"]
 
@@ -28,7 +29,9 @@ def report_json(analysis: Analysis, brief: bool = False) -> dict:
 
 def _report_json(analysis: Analysis, brief: bool = False) -> dict:
     config, levels = analysis.config, analysis.levels
-    report = {"n": config.n}
+    # format, schema_version, file, name first (docs/json.md); the rest as before
+    report = json_head("exactsym-check", config.source, config.name)
+    report["n"] = config.n
     if not brief:
         # in a field of degree thousands, as quotients of numbers with small
         # coefficients (paper/homogeneous.py): the divided ones are megabytes each
@@ -47,7 +50,7 @@ def _report_json(analysis: Analysis, brief: bool = False) -> dict:
     if analysis.paper is not None:
         report["paper"] = paper_json(analysis.paper, described=not brief)
     if analysis.audit is not None:
-        report["audit"] = analysis.audit
+        report["audit"] = analysis.audit.as_dict()
     return report
 
 

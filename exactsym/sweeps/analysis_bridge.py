@@ -191,8 +191,8 @@ def _audit(config) -> dict:
     from ..analysis import analyse as run_analysis
     analysis = run_analysis(config, sections=("audit",))
     res, result = analysis.paper, analysis.audit
-    truth = result["truth"]
-    failed, reading, procedure = _split(result["discrepancies"], truth["orderable"])
+    truth = result.truth
+    failed, reading, procedure = _split(result.discrepancies, truth.orderable)
     _, named = _paper_findings(res)
     with analysis.reading():        # the paper's polygons again: the analysis's caches
         hypotheses = _audit_hypotheses(config.n, res, result)
@@ -204,7 +204,7 @@ def _audit(config) -> dict:
     return {"failed": sorted(failed), "applicable": sorted(applicable),
             "outside": sorted(outside), "reading": sorted(reading),
             "procedure": sorted(procedure),
-            "truth": {"group": truth["group"], "orderable": truth["orderable"]},
+            "truth": {"group": truth.group, "orderable": truth.orderable},
             "paper": _paper_summary(res)}
 
 
@@ -235,12 +235,12 @@ def _split(discrepancies, orderable: bool) -> tuple[set, set, set]:
 def _audit_hypotheses(n: int, res, result) -> set:
     """The audit's own statements whose hypotheses hold (module docstring)."""
     from ..paper import family as F
-    truth = result["truth"]
+    truth = result.truth
     out = set()
-    if n > 1 and truth["in_O_S"]:
+    if n > 1 and truth.in_O_S:
         out.add("lemma-sym-ord")
     G = res.G_rings
-    if any(not F.is_symmetric_polygon(g) for g in G) or (truth["orderable"] and res.complete):
+    if any(not F.is_symmetric_polygon(g) for g in G) or (truth.orderable and res.complete):
         out.add("lem-asym-ord")
     pairs, _ = F.select_pairs(G, F.DEFAULT_LIMITS)
     for i, j in pairs:
@@ -298,7 +298,7 @@ def discrepancy_text(what: str, points, label: str) -> str:
                             sections=("audit",) if what == "audit" else ("family",))
     res = analysis.paper
     if what == "audit":
-        found = [d for d in analysis.audit["discrepancies"] if d["statement"] == label]
+        found = [d for d in analysis.audit.discrepancies if d["statement"] == label]
         return " ".join(f"says: {d['says']}; truth: {d['truth']}." for d in found[:2])
     if what == "paper":
         found = [e for e in res.trace if e.get("statement") == label and e.get("holds") is False]

@@ -13,15 +13,18 @@ is missing); 3 an internal error.
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import json
+import os
 import sys
 from pathlib import Path
 
 from . import analysis_bridge as bridge
 from .engine import DEFAULT_TIMEOUT, SweepOptions, run_sweep
-from .families import FamilyError, parse_family
+from .families import FamilyError, family_size, parse_family
 from .results import ResultsError, remove_if_unstarted
 from .summary import ledger_evidence, summarise, summary_json, summary_table, write_cases
+from ..version import json_head
 
 __all__ = ["add_arguments", "run", "main"]
 
@@ -36,8 +39,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--what", choices=bridge.WHATS, default="audit",
                         help="the analysis run on each configuration (default audit)")
     where = parser.add_mutually_exclusive_group()
-    where.add_argument("--workers", type=int, default=2, metavar="N",
-                       help="workers of a local Dask cluster (default 2)")
+    where.add_argument("--workers", type=int, default=None, metavar="N",
+                       help="workers of a local Dask cluster (default: in this process on "
+                       "2 cores or fewer or below 1,000 configurations, else a cluster of "
+                       "one worker per core, at most 8: docs/sweeps.md)")
     where.add_argument("--scheduler", metavar="ADDRESS",
                        help="an existing Dask scheduler, e.g. tcp://host:8786")
     where.add_argument("--serial", action="store_true",
@@ -60,6 +65,25 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              f"(default {DEFAULT_TIMEOUT:g}; 0: no limit)")
     parser.add_argument("--stop-after", type=int, metavar="N",
                         help="stop after N new results, as an interrupted sweep would")
+
+
+#: Below this many configurations a local cluster's start (2 to 3 s) costs more than its
+#: workers save; on 2 cores the workers share the cores with the scheduler and each other
+#: (docs/sweeps.md, "When workers pay off": 136 configurations took 1.9 s serially and
+#: 4.0 s on 2 workers, 2,432 took 36.9 s and 35.3 s)
+CLUSTER_MIN = 1000
+MAX_DEFAULT_WORKERS = 8
+
+
+def _where(args, family) -> tuple[bool, int]:
+    """``(serial, workers)``: what the command line says, else the measured default."""
+    if args.serial or args.scheduler or args.workers is not None:
+        return args.serial, args.workers or 2
+    cores = os.cpu_count() or 1
+    if cores <= 2 or family_size(family) < CLUSTER_MIN or \
+            importlib.util.find_spec("distributed") is None:
+        return True, 1
+    return False, min(cores, MAX_DEFAULT_WORKERS)
 
 
 def _paths(args) -> tuple[Path, Path]:
@@ -94,8 +118,9 @@ def _run(args) -> int:
                           "perturb: of a Cartesian file inside it")
     if family.kind == "gather" and args.what != "gather":
         raise FamilyError("a gather: family is swept with --what gather")
-    options = SweepOptions(workers=args.workers or 2, scheduler=args.scheduler,
-                           serial=args.serial, batch_size=args.batch_size,
+    serial, workers = _where(args, family)
+    options = SweepOptions(workers=workers, scheduler=args.scheduler,
+                           serial=serial, batch_size=args.batch_size,
                            stop_after=args.stop_after, progress=sys.stderr,
                            timeout=args.timeout if args.timeout and args.timeout > 0 else None)
     fresh = not Path(args.out).exists()
@@ -113,7 +138,8 @@ def _run(args) -> int:
     evidence = ledger_evidence(summary, cases, str(args.out))
     evidence_path.write_text(json.dumps(evidence, indent=1) + "\n", encoding="utf-8")
     if args.json:
-        data = summary_json(summary, cases)
+        data = json_head("exactsym-sweep", str(args.out), args.family)
+        data.update(summary_json(summary, cases))
         data.update(complete=sweep.complete, new=sweep.new, skipped=sweep.skipped,
                     seconds=round(sweep.seconds, 3), workers=sweep.workers,
                     utilisation=None if sweep.utilisation is None else

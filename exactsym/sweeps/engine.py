@@ -27,6 +27,7 @@ from dataclasses import dataclass, replace
 from itertools import islice
 from typing import Iterator, TextIO
 
+from ..progress import Progress
 from .analysis_bridge import warm_up
 from .families import (ENUMERATION, Family, SweepItem, can_jump, family_items,
                        family_size)
@@ -101,43 +102,26 @@ def timed_batch(items: list, what: str, budget: int = 0, timeout: float | None =
 
 
 class _Progress:
-    """One line on stderr: done/total, rate, ETA, failures; redrawn in place on a
-    terminal, else printed every ten seconds."""
+    """The sweep's progress bar on stderr (:class:`exactsym.progress.Progress`): done/total,
+    rate, time left, failures; on a terminal only (a log or a pipe gets nothing)."""
 
     def __init__(self, stream, total: int, done_before: int, label: str):
-        self.stream, self.total, self.before, self.label = stream, total, done_before, label
+        self.stream = stream
+        self.bar = Progress(label, total, done=done_before, stream=stream, unit=" conf") \
+            if stream is not None else None
         self.start = self.last = time.monotonic()
-        self.tty = bool(stream and getattr(stream, "isatty", lambda: False)())
 
     def show(self, new: int, failing: int, errors: int, final: bool = False) -> None:
-        if self.stream is None:
+        if self.bar is None:
             return
-        now = time.monotonic()
-        if not final and now - self.last < (0.5 if self.tty else 10.0):
-            return
-        self.last = now
-        elapsed = max(now - self.start, 1e-9)
-        rate = new / elapsed
-        done = self.before + new
-        left = max(self.total - done, 0)
-        eta = _duration(left / rate) if rate > 0 and not final else "-"
-        pct = f"{100 * done / self.total:5.1f}%" if self.total else ""
-        text = (f"{self.label}: {done:,}/{self.total:,} {pct}  {rate:,.1f} conf/s  "
-                f"ETA {eta}  failing {failing:,}  errors {errors:,}")
-        if self.tty:
-            self.stream.write("\r" + text + ("\n" if final else ""))
-        else:
-            self.stream.write(text + "\n")
-        self.stream.flush()
-
-
-def _duration(seconds: float) -> str:
-    seconds = int(seconds)
-    if seconds < 120:
-        return f"{seconds}s"
-    if seconds < 7200:
-        return f"{seconds // 60}m{seconds % 60:02d}s"
-    return f"{seconds // 3600}h{seconds // 60 % 60:02d}m"
+        if self.bar.start < self.start:          # the rate from the cluster's start on
+            self.bar.start = self.start
+        self.bar.done = self.bar.before + new
+        rate = new / max(time.monotonic() - self.start, 1e-9)
+        self.bar.note = f"{rate:,.1f} conf/s, failing {failing:,}, errors {errors:,}"
+        self.bar.draw(force=final)
+        if final:
+            self.bar.close()
 
 
 def _todo(family: Family, done: IndexSet, prefix_key: str | None) -> Iterator[SweepItem]:

@@ -32,6 +32,8 @@ from bisect import bisect_right
 from pathlib import Path
 from typing import Iterator
 
+from ..version import SCHEMA_VERSION
+
 __all__ = ["FORMAT", "ResultsError", "IndexSet", "header", "open_for_append",
            "read_records", "read_header", "record_line", "key_of"]
 
@@ -84,7 +86,10 @@ class IndexSet:
 
 
 def header(family: str, what: str, enumeration: int) -> dict:
-    return {"sweep": {"format": FORMAT, "family": family, "what": what,
+    """The first line; ``format`` and ``schema_version`` beside ``sweep`` (docs/json.md:
+    ``sweep.format`` is the results file's own version, read by ``--resume``)."""
+    return {"format": "exactsym-sweep-results", "schema_version": SCHEMA_VERSION,
+            "sweep": {"format": FORMAT, "family": family, "what": what,
                       "enumeration": enumeration}}
 
 

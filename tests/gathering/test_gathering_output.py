@@ -26,6 +26,8 @@ ROW_KEYS = {"reading", "readings", "mirrored", "outcome", "label", "invariant", 
             "schedule", "length", "detail", "search", "same_as"}
 MATRIX_KEYS = {"settings", "matrix", "differs_from_base"}
 VIOLATION_KEYS = {"invariant", "label", "instant", "robots", "witness"}
+#: the keys every JSON output begins with (docs/json.md)
+HEAD_KEYS = {"format", "schema_version", "file", "name"}
 
 
 def test_every_named_reading_has_a_row_and_both_handednesses_too():
@@ -70,12 +72,12 @@ def test_the_matrix_finds_the_collision_in_both_handednesses_and_differs(capsys)
 def test_gather_json_keys_are_pinned(capsys):
     assert main(["gather", str(TWO_MOVERS), "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert set(data) == RUN_KEYS and data["search"] is None
+    assert set(data) == RUN_KEYS | HEAD_KEYS and data["search"] is None
     assert set(data["violation"]) >= VIOLATION_KEYS
     assert main(["gather", str(TWO_MOVERS), "--json", "--search", "--budget", "200",
                  "--depth", "3"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert set(data) == RUN_KEYS and set(data["search"]) == SEARCH_KEYS
+    assert set(data) == RUN_KEYS | HEAD_KEYS and set(data["search"]) == SEARCH_KEYS
     assert data["search"]["found"] and data["search"]["length"] == 3
 
 
@@ -83,7 +85,7 @@ def test_gather_readings_all(capsys):
     assert main(["gather", str(TWO_MOVERS), "--readings", "all", "--budget", "40",
                  "--depth", "3", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert set(data) == MATRIX_KEYS and all(set(r) == ROW_KEYS for r in data["matrix"])
+    assert set(data) == MATRIX_KEYS | HEAD_KEYS and all(set(r) == ROW_KEYS for r in data["matrix"])
     assert main(["gather", str(TWO_MOVERS), "--readings", "all", "--budget", "40",
                  "--depth", "3"]) == 0
     out = capsys.readouterr().out

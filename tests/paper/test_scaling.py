@@ -203,4 +203,5 @@ def test_check_audit_with_the_pipeline_group_is_the_audit_on_its_own(tmp_path, n
     report = check_report(config)
     assert report["group"] == "C1"
     ring_data = levels_of(config)
-    assert report["audit"] == audit(config, ring_data, F.paper_procedure(config, ring_data))
+    assert report["audit"] == audit(config, ring_data,
+                                    F.paper_procedure(config, ring_data)).as_dict()

@@ -274,11 +274,11 @@ def test_the_audit_line_counts_every_instance_and_lists_one_witness():
     config = Configuration.from_points(sorted(points))
     full = analyse(config)
     one = analyse(config, options=Options(listed=1))
-    disc = [d for d in full.audit["discrepancies"] if d["statement"] == "obs-merg-asym-pair"]
+    disc = [d for d in full.audit.discrepancies if d["statement"] == "obs-merg-asym-pair"]
     counted = [d["witness"] for d in disc if "failures" in (d["witness"] or {})]
     assert len(counted) == 1 and counted[0]["failures"] > counted[0]["listed"] == 8
     failures = counted[0]["failures"]
-    assert len([d for d in one.audit["discrepancies"]
+    assert len([d for d in one.audit.discrepancies
                 if d["statement"] == "obs-merg-asym-pair"]) == 2    # one listed, one count
     text = summary_text(full)
     assert summary_text(one) == text

@@ -15,8 +15,8 @@ from typing import Iterable, Sequence
 from ..circle_polygon import CirclePolygon
 from .concentric import (ALL_LINES, SCREEN_ONLY, Ring, common_lines, first_shown, has_lines,
                          intersect_lines, is_odd, is_symmetric_family, is_symmetric_pair,
-                         is_symmetric_polygon, line_text, lines_text, new_ring, polygon_name,
-                         robot_count)
+                         is_symmetric_polygon, line_text, lines_data, lines_text, new_ring,
+                         polygon_name, robot_count)
 from .find_asymmetry import find_asymmetry_pair
 from ..keys import sort_by_angle
 from .limits import DEFAULT_LIMITS, END_LEVELS, Limits, WorkBudgetExceeded
@@ -219,6 +219,7 @@ def obs_merg_asym_pair(rec: _Record, a: Ring, b: Ring, common, proj, polar: bool
                      f"{gij.name} has {lines_text(gij, polar)}" + coincidence_note(proj)
                      + (f"; reading: {SMALL_LEVEL_READING}" if small else ""),
                      lambda: {"G_ij lines": lines_text(gij, polar),
+                              "lines": lines_data(gij, polar),
                               **({"reading": SMALL_LEVEL_READING} if small else {})})
 
 

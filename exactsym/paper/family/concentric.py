@@ -292,6 +292,17 @@ def line_text(key) -> str:
     return key.screen_text() if SCREEN_ONLY.get() else key.text
 
 
+def lines_data(ring_or_lines, polar: bool) -> dict:
+    """The lines of :func:`lines_text` as data: ``{"unit": "turns" or "doubled-angle
+    rays", "values": [exact texts, all of them]}`` (``values`` null for every line)."""
+    lines = ring_or_lines.lines if isinstance(ring_or_lines, Ring) else ring_or_lines
+    unit = "turns" if polar else "doubled-angle rays"
+    if lines is ALL_LINES:
+        return {"unit": unit, "values": None}
+    return {"unit": unit,
+            "values": [k.text for k in sorted(lines, key=lambda k: k.display_key())]}
+
+
 def lines_text(ring_or_lines, polar: bool) -> str:
     lines = ring_or_lines.lines if isinstance(ring_or_lines, Ring) else ring_or_lines
     if lines is ALL_LINES:
