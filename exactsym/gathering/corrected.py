@@ -71,10 +71,10 @@ from functools import lru_cache
 from flint import fmpq
 
 from . import geometry as g
-from .corrected_choice import SortKey, distinct_after, keeps_a_leader, profile, \
-    profile_compare
-from .corrected_paths import layer_one_point, outward_point, path_is_clear, \
-    paths_to_centre, to_slot_paths
+from .corrected_choice import SortKey, distinct_after, keeps_a_leader, no_leader, \
+    profile, profile_compare
+from .corrected_paths import layer_one_point, outward_point, path_blockers, \
+    path_is_clear, paths_to_centre, to_slot_paths
 from .pattern import Pattern, capacity, recognise, slot
 from .robot import Decision, Move, Readings, decide, radial_point
 from .run_home import snapshot_key
@@ -153,6 +153,15 @@ def choose_centre(pts, readings: Readings, unit, approx=None):
     if any(f is None for _, f in scored):               # a complete pattern
         k = next(k for k, f in scored if f is None)
         return pts[k], sizes[k], tuple(cands), "C: the complete pattern's centre"
+    # the candidate at the SEC centre of all: the first robot went there (M = 1 above),
+    # and the SEC stays while the robots that fix it stand still (they are the farthest
+    # from C, and move last)
+    sec, _ = g.smallest_enclosing_circle(list(pts))
+    at_sec = [k for k in cands if pts[k] == sec]
+    if at_sec:
+        k = at_sec[0]
+        return pts[k], sizes[k], tuple(cands), (f"C: robot {k}, at the SEC centre, the "
+                                                f"centre of {M} robots")
     best = scored[0]
     for item in scored[1:]:
         if (item[1] - best[1]).sign() < 0:
@@ -170,6 +179,13 @@ def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> boo
     of the module docstring).  ``cands`` empty (M = 1): the SEC must not need the
     mover."""
     stay = [j for j in R if j != mover]
+    if cands:
+        # C is the robot at the SEC centre and the mover is no support of the SEC: its
+        # path (distance to C never above the SEC radius) leaves the SEC, hence C, as is
+        sec, r2 = g.smallest_enclosing_circle(list(pts))
+        if sec == centre and (g.dist2(pts[mover], centre) - r2).sign() < 0 and \
+                all((g.dist2(p.final, centre) - r2).sign() <= 0 for p in pieces):
+            return True
     fc = _far2(pts, centre, R, approx)                # f(C) now: never grows (radii fall)
     if not cands:
         # C is the SEC centre of all; a mover strictly inside the SEC is in no support
@@ -208,12 +224,13 @@ def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> boo
     return True
 
 
-def _target(p, centre, pat, pts, unit, stay, tower=None):
+def _target(p, centre, pat, pts, unit, stay, tower=None, inside=False):
     """``(target, layer, kind)``: C, a new layer's radial point, or a chain end's slot;
-    target None on an exact tie.  The slot: while the pattern has at most 4 robots (its
-    centre is not unique), the end slot farther from the robots that stay (so that C
-    stays the centre, point 1), then the nearer in angle; else the nearer in angle (the
-    larger dot product with the mover's direction)."""
+    target None on an exact tie.  The slot: the nearer in angle (the larger dot product
+    with the mover's direction); but while the pattern has at most 4 robots (its centre
+    is not unique) and C is not kept by the SEC (``inside`` False: C is not at the SEC
+    centre, or the mover may change the SEC), first the end slot farther from the robots
+    that stay (so that C stays the centre, point 1)."""
     if pat.centre_robot is None:
         return centre, 0, "centre"
     l = pat.last_layer
@@ -236,7 +253,7 @@ def _target(p, centre, pat, pts, unit, stay, tower=None):
     s_cw = slot(centre, pts[chain[0]], l, -1)
     if s_ccw == s_cw:
         return s_ccw, l, "slot"
-    if len(pat.robots) <= 4 and stay:
+    if len(pat.robots) <= 4 and stay and not inside:
         c = (_far2(pts, s_ccw, stay) - _far2(pts, s_cw, stay)).sign()
         if c:
             return (s_ccw if c > 0 else s_cw), l, "slot"
@@ -267,7 +284,7 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
     centre, pat, cands, detail = choose_centre(pts, readings, unit, approx)
     if centre is None:
         sec, _ = g.smallest_enclosing_circle(pts)
-        return Decision("stay", (), sec, recognise(pts, sec, readings.lone, unit), None, detail)
+        return _stay(pts, sec, recognise(pts, sec, readings.lone, unit), detail)
     members = pat.robots
     R = [i for i in range(len(pts)) if i not in members]
     if not R:
@@ -279,16 +296,29 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
             return clear
     near = min(d.values(), key=SortKey)
     tied = [i for i in R if d[i] == near]
+    sec, rho2 = g.smallest_enclosing_circle(pts)
+    # C kept by the SEC for a mover strictly inside it (corrected._keeps_centre)
+    inside = {i: sec == centre and (d[i] - rho2).sign() < 0 for i in R}
     options = []
     try:
         for i in tied:
             stay = [j for j in R if j != i]
-            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower)
+            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower, inside[i])
             if target is not None:
                 options.append((g.dist2(pts[i], target), i, target, l, kind))
     except ValueError as err:           # a radial point the field cannot hold
         return Decision("undecided", (), centre, pat, None, str(err))
     options.sort(key=lambda o: SortKey(o[0]))
+    if readings.lone == "reject" and options and pat.centre_robot is not None and \
+            pat.last_full():
+        # Def. 1 read literally: every robot of a layer touches one of its layer, so a
+        # layer can only start with two robots arriving at once -- no one-at-a-time move
+        # makes P grow past a full layer (and for n = 8, 20, 38, ... no pattern exists)
+        return Decision("not-possible", (), centre, pat, None,
+                        "corrected: under lone=reject (Def. 1 read literally) the next "
+                        "robot would start a layer alone, which no valid pattern holds; "
+                        "the variant builds the lone=accept pattern "
+                        "(docs/gathering-corrected.md)")
     # never into a symmetric configuration while robots are left to move
     # (corrected_choice.keeps_a_leader): decided before any path, by the target alone
     blocked = []
@@ -330,14 +360,32 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
     if chosen is None and blocked and len(tied) == 1:
         return _step_aside(pts, centre, tied[0], R, d, unit, cands, pat, approx, tower,
                            detail)
+    if chosen is None and len(tied) == 1 and len(options) == 1 and inside[tied[0]]:
+        around = _around_blocked(options[0], pts, centre, R, d, unit, cands, pat, approx,
+                                 tower, inside, detail)
+        if around is not None:
+            return around
     if chosen is None:
         if blocked:
             why = (f"every move of robots {sorted(o[1] for o in blocked)} ends in a "
                    f"symmetric configuration; {why}")
-        return Decision("stay", (), centre, pat, None,
-                        f"corrected: {why} for the nearest robots {tied} ({detail})")
+        return _stay(pts, centre, pat,
+                     f"corrected: {why} for the nearest robots {tied} ({detail})")
     i, path = chosen
     return Decision("move", (Move(i, path, "leader"),), centre, pat, i, detail)
+
+
+def _stay(pts, centre, pat, why):
+    """No move: ``stay``, or ``not-possible`` when the ground truth finds the snapshot
+    symmetric (no leader: the tie that stops the variant is one of a symmetry, which no
+    algorithm without chirality breaks against an adversary that activates symmetric
+    robots together; ``docs/gathering-corrected.md``)."""
+    group = no_leader(pts)
+    if group is not None:
+        return Decision("not-possible", (), centre, pat, None,
+                        f"no leader: the configuration has the symmetry group {group} "
+                        f"(ground truth); {why}")
+    return Decision("stay", (), centre, pat, None, why)
 
 
 def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail):
@@ -354,13 +402,64 @@ def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail):
                         "corrected: the kernel cannot build the way out")
     path = (g.Segment(pts[m], target),)
     if path_is_clear(path, pts, m, unit * unit, frozenset(), approx) and \
-            _keeps_centre(path, pts, m, centre, cands, R, pat, approx):
+            _keeps_centre(path, pts, m, centre, cands, R, pat, approx) and \
+            keeps_a_leader(pts, m, target):
         return Decision("move", (Move(m, path, "asym"),), centre, pat, None,
                         f"corrected: robot {m}'s move would end in a symmetric "
                         f"configuration; it moves out to the next robot's distance ({detail})")
     return Decision("stay", (), centre, pat, None,
                     f"corrected: robot {m}'s move would end in a symmetric configuration "
                     f"and its way out is not clear ({detail})")
+
+
+def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, inside,
+                    detail):
+    """The nearest robot m alone has a target but every path of its list (all of them,
+    whatever its rank among R) comes within 2 of some robot: the nearest robot x of R
+    that blocks none of m's paths moves instead (role ``asym``), when its own path is
+    clear, keeps C and ends with a leader.  m's paths stay blocked while x moves (their
+    blockers stand still), and x stays the nearest such robot, so a fresh Look on x's
+    way plans x again; once x is the nearest of R it is planned as the leader, to the
+    same target.  None when there is no such x (or it has no clear path)."""
+    _dist, m, target, l, kind = option
+    unit2 = unit * unit
+    if kind == "centre":
+        paths = list(paths_to_centre(pts[m], centre, pts, m, unit2))
+        allowed = frozenset(j for j in R if j != m and g.dist2(pts[j], centre) == 4 * unit2)
+    elif kind == "new-layer":
+        paths = [[g.Segment(pts[m], target)]]
+        allowed = pat.robots
+    else:
+        paths = list(to_slot_paths(pts[m], centre, target, l, unit, None, tower))
+        allowed = pat.robots
+    blockers = set()
+    for path in paths:
+        by = path_blockers(path, pts, m, unit2, allowed, approx)
+        if not by:
+            return None                 # blocked by keeping C only: no stable choice
+        blockers |= by
+    free = [j for j in R if j != m and j not in blockers]
+    if not free:
+        return None
+    near = min((d[j] for j in free), key=SortKey)
+    first = [j for j in free if d[j] == near]
+    if len(first) != 1:
+        return None
+    x = first[0]
+    stay = [j for j in R if j != x]
+    try:
+        t, lx, kx = _target(pts[x], centre, pat, pts, unit, stay, tower, inside[x])
+    except ValueError:
+        return None
+    if t is None or not keeps_a_leader(pts, x, t):
+        return None
+    path = _first_path((None, x, t, lx, kx), pts, centre, cands, R, unit, pat, False, approx,
+                       tower)
+    if path is None:
+        return None
+    return Decision("move", (Move(x, path, "asym"),), centre, pat, None,
+                    f"corrected: every path of the nearest robot {m} is blocked; robot {x}, "
+                    f"the nearest robot blocking none of them, moves ({detail})")
 
 
 def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
@@ -383,7 +482,8 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
         return Decision("undecided", (), centre, pat, None, str(err))
     path = [g.Segment(pts[j], target)]
     if path_is_clear(path, pts, j, unit2, frozenset(), approx) and \
-            _keeps_centre(path, pts, j, centre, cands, R, pat, approx):
+            _keeps_centre(path, pts, j, centre, cands, R, pat, approx) and \
+            keeps_a_leader(pts, j, target):
         return Decision("move", (Move(j, tuple(path), "clear"),), centre, pat, None,
                         f"corrected: robot {j} clears C (robots {close} within 2 of it)")
     return Decision("stay", (), centre, pat, None,

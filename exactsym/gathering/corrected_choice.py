@@ -32,6 +32,17 @@ def keeps_a_leader(pts, mover, target) -> bool | None:
         return None
 
 
+def no_leader(pts) -> str | None:
+    """The ground truth's group name (``"D2"``, ``"C3"``, ...) when the configuration
+    ``pts`` is not orderable (no leader can be elected without chirality), else None
+    (also when the kernel cannot hold the numbers)."""
+    try:
+        group = symmetry_group(configuration_of(list(pts)))
+    except (InputError, ArithmeticError, NotImplementedError, ValueError):
+        return None
+    return None if group.orderable else group.name
+
+
 class SortKey:
     """Sort key of exact numbers."""
     __slots__ = ("x",)

@@ -97,6 +97,29 @@ def path_is_clear(pieces, pts, mover, unit2, allowed=frozenset(), approx=None) -
     return True
 
 
+def path_blockers(pieces, pts, mover, unit2, allowed=frozenset(), approx=None) -> set:
+    """The robots that make the path not clear (:func:`path_is_clear` asks whether this
+    set is empty)."""
+    d2 = 4 * unit2
+    last = len(pieces) - 1
+    out = set()
+    for k, piece in enumerate(pieces):
+        near = range(len(pts)) if approx is None else \
+            g.robots_near_piece(piece, approx, 2 * float(unit2) ** 0.5)
+        for j in near:
+            if j == mover or j in out:
+                continue
+            q = pts[j]
+            if k == last and j in allowed and isinstance(piece, g.Segment) and \
+                    g.dist2(piece.end, q) == d2:
+                if g.piece_hits(piece, q, d2):
+                    out.add(j)
+                continue
+            if piece_within(piece, q, d2):
+                out.add(j)
+    return out
+
+
 def rotate_about(centre, p, t, sense):
     """``p`` turned about ``centre`` by the rational rotation of half-angle tangent ``t``."""
     den = 1 + t * t
@@ -118,9 +141,30 @@ def paths_to_centre(p, centre, pts, mover, unit2):
     if 0 in senses or len(senses) != 1:
         senses = {1, -1}
     for t in DETOUR_TANGENTS:
-        for sense in sorted(senses):
-            q = rotate_about(centre, p, t, sense)
+        turned = [(sense, rotate_about(centre, p, t, sense)) for sense in senses]
+        if len(turned) == 2:
+            # both senses: the one whose turned point is farther from its nearest robot
+            # first (a choice by distances alone, the same in a mirrored frame); equal:
+            # neither (choosing would need a handedness)
+            room = [min((g.dist2(q, r) for j, r in enumerate(pts) if j != mover),
+                        key=_Key) for _, q in turned]
+            c = (room[0] - room[1]).sign()
+            if c == 0:
+                continue
+            if c < 0:
+                turned.reverse()
+        for sense, q in turned:
             yield g.arc_path(centre, p, q, sense) + [g.Segment(q, centre)]
+
+
+class _Key:
+    __slots__ = ("x",)
+
+    def __init__(self, x):
+        self.x = x
+
+    def __lt__(self, other):
+        return (self.x - other.x).sign() < 0
 
 
 def ray_direction(centre, p):
