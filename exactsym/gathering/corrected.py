@@ -224,13 +224,12 @@ def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> boo
     return True
 
 
-def _target(p, centre, pat, pts, unit, stay, tower=None, inside=False):
+def _target(p, centre, pat, pts, unit, stay, tower=None):
     """``(target, layer, kind)``: C, a new layer's radial point, or a chain end's slot;
-    target None on an exact tie.  The slot: the nearer in angle (the larger dot product
-    with the mover's direction); but while the pattern has at most 4 robots (its centre
-    is not unique) and C is not kept by the SEC (``inside`` False: C is not at the SEC
-    centre, or the mover may change the SEC), first the end slot farther from the robots
-    that stay (so that C stays the centre, point 1)."""
+    target None on an exact tie.  The slot: while the pattern has at most 4 robots (its
+    centre is not unique), the end slot farther from the robots that stay (so that C
+    stays the centre when the SEC moves at the end, point 1), then the nearer in angle;
+    else the nearer in angle (the larger dot product with the mover's direction)."""
     if pat.centre_robot is None:
         return centre, 0, "centre"
     l = pat.last_layer
@@ -253,7 +252,7 @@ def _target(p, centre, pat, pts, unit, stay, tower=None, inside=False):
     s_cw = slot(centre, pts[chain[0]], l, -1)
     if s_ccw == s_cw:
         return s_ccw, l, "slot"
-    if len(pat.robots) <= 4 and stay and not inside:
+    if len(pat.robots) <= 4 and stay:
         c = (_far2(pts, s_ccw, stay) - _far2(pts, s_cw, stay)).sign()
         if c:
             return (s_ccw if c > 0 else s_cw), l, "slot"
@@ -303,7 +302,7 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
     try:
         for i in tied:
             stay = [j for j in R if j != i]
-            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower, inside[i])
+            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower)
             if target is not None:
                 options.append((g.dist2(pts[i], target), i, target, l, kind))
     except ValueError as err:           # a radial point the field cannot hold
@@ -360,7 +359,8 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
     if chosen is None and blocked and len(tied) == 1:
         return _step_aside(pts, centre, tied[0], R, d, unit, cands, pat, approx, tower,
                            detail)
-    if chosen is None and len(tied) == 1 and len(options) == 1 and inside[tied[0]]:
+    if chosen is None and len(tied) == 1 and len(options) == 1 and inside[tied[0]] and \
+            len(pat.robots) > 4:
         around = _around_blocked(options[0], pts, centre, R, d, unit, cands, pat, approx,
                                  tower, inside, detail)
         if around is not None:
@@ -446,9 +446,11 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
     if len(first) != 1:
         return None
     x = first[0]
+    if not inside[x]:
+        return None                     # x would move the SEC, hence C
     stay = [j for j in R if j != x]
     try:
-        t, lx, kx = _target(pts[x], centre, pat, pts, unit, stay, tower, inside[x])
+        t, lx, kx = _target(pts[x], centre, pat, pts, unit, stay, tower)
     except ValueError:
         return None
     if t is None or not keeps_a_leader(pts, x, t):
