@@ -407,9 +407,8 @@ def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail):
         return Decision("move", (Move(m, path, "asym"),), centre, pat, None,
                         f"corrected: robot {m}'s move would end in a symmetric "
                         f"configuration; it moves out to the next robot's distance ({detail})")
-    return Decision("stay", (), centre, pat, None,
-                    f"corrected: robot {m}'s move would end in a symmetric configuration "
-                    f"and its way out is not clear ({detail})")
+    return _stay(pts, centre, pat, f"corrected: robot {m}'s move would end in a symmetric "
+                                   f"configuration and its way out is not clear ({detail})")
 
 
 def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, inside,
@@ -467,16 +466,27 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
 def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
     """Nobody is at C but two or more robots are within 2 of it: C cannot be taken.  The
     farthest of them from C moves radially out to distance 2 (then it is in layer 1
-    once the nearest reaches C).  A tie for the farthest: stay."""
+    once the nearest reaches C).  A tie for the farthest: the smallest distance profile;
+    equal profiles: stay."""
     unit2 = unit * unit
     close = [j for j in R if (d[j] - 4 * unit2).sign() < 0]
     if len(close) < 2:
         return None
     far = max((d[j] for j in close), key=SortKey)
     top = [j for j in close if d[j] == far]
-    if len(top) > 1 or pts[top[0]] == centre:
-        return Decision("stay", (), centre, pat, None,
-                        f"corrected: robots {top} tie to clear C")
+    if len(top) > 1:
+        # the smallest distance profile (no handedness; once it moves out it is the
+        # farthest alone); equal profiles: no choice
+        profiles = {j: profile(pts, j) for j in top}
+        least = top[0]
+        for j in top[1:]:
+            if profile_compare(profiles[j], profiles[least]) < 0:
+                least = j
+        if sum(1 for j in top if profile_compare(profiles[j], profiles[least]) == 0) > 1:
+            return _stay(pts, centre, pat, f"corrected: robots {top} tie to clear C")
+        top = [least]
+    if pts[top[0]] == centre:
+        return _stay(pts, centre, pat, f"corrected: robots {top} tie to clear C")
     j = top[0]
     try:
         target = radial_point(centre, pts[j], 2 * unit, tower)
@@ -488,8 +498,8 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
             keeps_a_leader(pts, j, target):
         return Decision("move", (Move(j, tuple(path), "clear"),), centre, pat, None,
                         f"corrected: robot {j} clears C (robots {close} within 2 of it)")
-    return Decision("stay", (), centre, pat, None,
-                    f"corrected: robot {j} cannot clear C (robots {close} within 2 of it)")
+    return _stay(pts, centre, pat,
+                 f"corrected: robot {j} cannot clear C (robots {close} within 2 of it)")
 
 
 def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower=None):
