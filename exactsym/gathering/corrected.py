@@ -38,46 +38,48 @@ products, never by a sense of rotation of the observer's frame).
    one nearer to the mover in angle (the larger dot product; a tie: stay).  Robots
    within 2 of an empty C other than the nearest: the farthest of them first moves
    radially out to distance 2 (C cannot be taken while two robots are that close).
-5. **Collision-free paths** (distances to C never grow, so I4 holds along the path):
-   to C: the segment, or else a detour -- an arc about C on the mover's circle by a
-   rational rotation (tan of the half angle 1/16, 1/8, ..., 1; the sense away from the
-   blocking robot, both senses when robots block on both sides), then the segment to C;
-   to a point of a layer: the paths of :func:`_to_slot_paths` (along the mover's own
-   circle then radially in; a segment to the target's ray outside the layer then
-   radially in; the straight segment), each of which a fresh Look finds again from any
-   of its points.  The paper's path along the layer's own circle is not used: a mover
-   there beside a chain of one robot makes two chains tie, and P shrinks while it
-   moves.  The first path free of every other robot (closer than 2 nowhere, touching
-   allowed) that keeps C is taken; none: stay.
-6. **The final robots**: no leader election at all -- the rule above is the same for
+5. **Clear paths** (:mod:`.corrected_paths`; distances to C never grow, so I4 holds
+   along the path): to C the segment, or a detour (an arc about C on the mover's circle
+   by a rational rotation, then the segment); to a point of a layer the paths of
+   :func:`.corrected_paths.to_slot_paths`, each of which a fresh Look finds again from
+   any of its points.  A path is taken only when it is clear
+   (:func:`.corrected_paths.path_is_clear`): every other robot strictly farther than 2
+   from every point, except that the final point may touch robots of P (or, for the
+   target C, the robots at distance 2 of it) -- so two robots come to touch only at an
+   arrival, and no graze makes a transient pattern whose centre is not C (issue 31).
+   The first clear path that keeps C is taken; none: stay.
+6. **Never into a symmetric configuration** (:mod:`.corrected_choice`): a move whose
+   completion the ground truth finds symmetric while robots are left to move is not
+   made (decided before any path, by the target and the robots that stand still: the
+   same all along the move).  When the nearest robot alone is so blocked it steps
+   aside: radially out to the distance of R's next robot (role ``asym``), where the
+   tie-break leaves it out.
+7. **The final robots**: no leader election at all -- the rule above is the same for
    two or three robots left as for many (nearest to C, ties by the slot geometry), so
    an asymmetric triangle of three (where the paper's Elect_Leader_Asym elects nobody)
    is no obstacle.
 
-What it does not handle (the sweep shows where): exact ties (equidistant robots with
-the same slot distance, a mover on the bisector of its two slots), a radial move into a
-new layer that is blocked, and a tie of the centre rule with no allowed mover.
+What it does not handle (``docs/gathering-corrected.md``): exact ties that only a
+handedness could break (a tie of the centre rule; several nearest robots all of whose
+moves end symmetric), a path blocked with no alternative, a symmetric start.
 """
 
 from __future__ import annotations
 
 from functools import lru_cache
-from math import isqrt
 
 from flint import fmpq
 
-from ..exact.multiquadratic import MQ, sqrt_rational
 from . import geometry as g
+from .corrected_choice import SortKey, distinct_after, keeps_a_leader, no_leader, \
+    profile, profile_compare
+from .corrected_paths import layer_one_point, outward_point, path_blockers, \
+    path_is_clear, paths_to_centre, to_slot_paths
 from .pattern import Pattern, capacity, recognise, slot
 from .robot import Decision, Move, Readings, decide, radial_point
-from ..exact.algebraic.run_tower import sqrt_exact
 from .run_home import snapshot_key
 
 ALGORITHMS = ("paper", "corrected")
-
-#: tan(angle / 2) of the detour rotations tried, smallest first.
-DETOUR_TANGENTS = tuple(fmpq(1, 2 ** k) for k in range(4, -1, -1))
-
 
 def _pattern_sizes(pts, readings, unit, approx):
     """``(M, {k: pattern})``: the largest size M of the pattern about a robot's position,
@@ -151,6 +153,15 @@ def choose_centre(pts, readings: Readings, unit, approx=None):
     if any(f is None for _, f in scored):               # a complete pattern
         k = next(k for k, f in scored if f is None)
         return pts[k], sizes[k], tuple(cands), "C: the complete pattern's centre"
+    # the candidate at the SEC centre of all: the first robot went there (M = 1 above),
+    # and the SEC stays while the robots that fix it stand still (they are the farthest
+    # from C, and move last)
+    sec, _ = g.smallest_enclosing_circle(list(pts))
+    at_sec = [k for k in cands if pts[k] == sec]
+    if at_sec:
+        k = at_sec[0]
+        return pts[k], sizes[k], tuple(cands), (f"C: robot {k}, at the SEC centre, the "
+                                                f"centre of {M} robots")
     best = scored[0]
     for item in scored[1:]:
         if (item[1] - best[1]).sign() < 0:
@@ -163,25 +174,18 @@ def choose_centre(pts, readings: Readings, unit, approx=None):
     return pts[k], sizes[k], tuple(cands), f"C: robot {k}, the centre of {M} robots"
 
 
-def _free(pieces, pts, mover, unit2, approx=None) -> bool:
-    """No robot but the mover comes closer than 2 to the path.  ``approx``
-    (:func:`.geometry.approx_points` of ``pts``): a certified filter leaves out the
-    robots certainly far from a piece; the others are tested exactly."""
-    d2 = 4 * unit2
-    for piece in pieces:
-        near = range(len(pts)) if approx is None else \
-            g.robots_near_piece(piece, approx, 2 * float(unit2) ** 0.5)
-        for j in near:
-            if j != mover and g.piece_hits(piece, pts[j], d2):
-                return False
-    return True
-
-
 def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> bool:
     """C cannot change while ``mover`` follows ``pieces``, nor at its arrival (point 3
     of the module docstring).  ``cands`` empty (M = 1): the SEC must not need the
     mover."""
     stay = [j for j in R if j != mover]
+    if cands:
+        # C is the robot at the SEC centre and the mover is no support of the SEC: its
+        # path (distance to C never above the SEC radius) leaves the SEC, hence C, as is
+        sec, r2 = g.smallest_enclosing_circle(list(pts))
+        if sec == centre and (g.dist2(pts[mover], centre) - r2).sign() < 0 and \
+                all((g.dist2(p.final, centre) - r2).sign() <= 0 for p in pieces):
+            return True
     fc = _far2(pts, centre, R, approx)                # f(C) now: never grows (radii fall)
     if not cands:
         # C is the SEC centre of all; a mover strictly inside the SEC is in no support
@@ -220,154 +224,24 @@ def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> boo
     return True
 
 
-def _rotate_about(centre, p, t, sense):
-    den = 1 + t * t
-    c, s = (1 - t * t) / den, 2 * t / den
-    return g.add(centre, g.rotate(g.sub(p, centre), MQ.rational(c), MQ.rational(s * sense)))
-
-
-def _paths_to_centre(p, centre, pts, mover, unit2):
-    """The segment to C, then detours: an arc about C on the mover's circle, then the
-    segment (senses away from the robots that block the segment)."""
-    yield [g.Segment(p, centre)]
-    v = g.sub(p, centre)
-    senses = set()
-    for j, q in enumerate(pts):
-        if j != mover and g.piece_hits(g.Segment(p, centre), q, 4 * unit2):
-            side = g.cross(v, g.sub(q, centre)).sign()     # the blocker's side of the ray
-            senses.add(-side if side else 0)
-    if 0 in senses or len(senses) != 1:
-        senses = {1, -1}
-    for t in DETOUR_TANGENTS:
-        for sense in sorted(senses):
-            q = _rotate_about(centre, p, t, sense)
-            yield g.arc_path(centre, p, q, sense) + [g.Segment(q, centre)]
-
-
-def _ray_direction(centre, p):
-    """The primitive integer direction of the ray from C through ``p`` (the same from
-    every point of the ray), or None when C is irrational or the slope is."""
-    v = g.sub(p, centre)
-    if not (centre[0].is_rational() and centre[1].is_rational()):
-        return None
-    if v[1].is_zero():
-        return (1 if v[0].sign() > 0 else -1, 0)
-    ratio = v[0] / v[1]
-    if not ratio.is_rational():
-        return None
-    q = ratio.to_fmpq()
-    e = (int(q.p), int(q.q))
-    if (v[1].sign() < 0) == (e[1] > 0):
-        e = (-e[0], -e[1])
-    return e
-
-
-def _layer_one_point(centre, p, unit, tower=None):
-    """The point of layer 1 on the mover's ray: by the ray's integer direction when it has
-    one (so a robot stopped on its way finds the same point), else by its radius (a
-    nested radical when ``|p - C|^2`` is irrational: a point of the snapshot's
-    ``tower``, :func:`.robot.radial_point`)."""
-    e = _ray_direction(centre, p)
-    if e is None:
-        return radial_point(centre, p, 2 * unit, tower)
-    k = sqrt_rational(fmpq(1, e[0] * e[0] + e[1] * e[1])) * (2 * unit)
-    return (centre[0] + k * e[0], centre[1] + k * e[1])
-
-
-def _ray_point(centre, p, h):
-    """A rational point on the ray from C through ``p`` at distance at least ``h``, less
-    than 1/8 beyond (the first of ``C + e m/den``, ``e`` the ray's primitive integer
-    direction, ``den = 8 (isqrt|e|^2 + 1)``, m = 1, 2, ...), found alike from every point
-    of the ray; None when C is irrational or the ray's slope is."""
-    e = _ray_direction(centre, p)
-    if e is None:
-        return None
-    e2 = e[0] * e[0] + e[1] * e[1]
-    den = 8 * (isqrt(e2) + 1)                       # steps of |e|/den < 1/8 along the ray
-    need = den * den * fmpq(h) * fmpq(h) / e2       # m^2 >= den^2 h^2 / |e|^2
-    m = max(1, isqrt(int(need.p) // int(need.q)))
-    while m * m < need:
-        m += 1
-    k = fmpq(m, den)
-    return (centre[0] + k * e[0], centre[1] + k * e[1])
-
-
-def _to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None):
-    """Paths to a point of layer l (``|target - C| = 2l unit``) that the mover finds
-    again from any point of them (so a fresh Look on the way plans the same target):
-
-    * on the target's ray: the segment;
-    * along the mover's own circle about C, the shorter way, to the target's ray, then
-      radially in (every point of the arc has the mover's radius, and the radial part is
-      on the target's ray); the radius is a nested radical when ``|p - C|^2`` is a square
-      in no multiquadratic field (a number of ``tower``, the snapshot's, or of a new run
-      tower: :func:`~exactsym.exact.algebraic.run_tower.sqrt_exact`); the path is left out
-      only when that root cannot be built (the kernel's limits);
-    * for h = 2l + 2, 2l + 4, 2l + 6 with h^2 < ``limit2`` (the squared distance of R's
-      next robot to C: the mover stays the nearest; the condition does not change on the
-      way): radially in to the rational point of the mover's ray just beyond radius h
-      (:func:`_ray_point`, the same from every point of the ray), along that circle to
-      the target's ray, radially in; then the segment to the target's ray at radius h
-      and radially in (a point of the segment finds the same path);
-    * the segment to the target.
-
-    The mover's distance to C stays below ``limit2`` along them (I4)."""
-    v = g.sub(p, centre)
-    w = g.sub(target, centre)                          # |w| = 2l unit
-    if g.cross(v, w).is_zero() and g.dot(v, w).sign() > 0:
-        yield [g.Segment(p, target)]                   # already on the target's ray
-        return
-    r2 = g.dot(v, v)
-    two_l = 2 * l * unit
-    rho = _radius(r2, tower)
-    if rho is not None:
-        b = g.add(centre, g.scale(w, rho / two_l))
-        sense = 1 if g.cross(v, w).sign() > 0 else -1
-        yield g.arc_path(centre, p, b, sense) + [g.Segment(b, target)]
-    for h in (two_l + 2 * unit, two_l + 4 * unit, two_l + 6 * unit):
-        if limit2 is not None and (limit2 - h * h).sign() <= 0:
-            continue            # I4: the mover stays strictly nearer to C than R's others
-        a = _ray_point(centre, p, h)
-        if a is not None and (r2 - g.dist2(a, centre)).sign() >= 0:
-            ra = sqrt_rational(g.dist2(a, centre).to_fmpq())
-            b = g.add(centre, g.scale(w, ra / two_l))
-            sense = 1 if g.cross(v, w).sign() > 0 else -1
-            pieces = ([g.Segment(p, a)] if a != p else []) + g.arc_path(centre, a, b, sense)
-            yield pieces + [g.Segment(b, target)]
-        b = g.add(centre, g.scale(w, fmpq(h) / two_l))
-        yield [g.Segment(p, b), g.Segment(b, target)]
-    yield [g.Segment(p, target)]
-
-
-def _radius(r2, tower):
-    """The non-negative root of the squared radius ``r2``: rational, multiquadratic or
-    nested (``tower``'s); None when the kernel cannot build it."""
-    if r2.is_rational():
-        return sqrt_rational(r2.to_fmpq())
-    try:
-        return sqrt_exact(r2, tower)
-    except ValueError:
-        return None
-
-
 def _target(p, centre, pat, pts, unit, stay, tower=None):
     """``(target, layer, kind)``: C, a new layer's radial point, or a chain end's slot;
     target None on an exact tie.  The slot: while the pattern has at most 4 robots (its
     centre is not unique), the end slot farther from the robots that stay (so that C
-    stays the centre, point 1), then the nearer in angle; else the nearer in angle (the
-    larger dot product with the mover's direction)."""
+    stays the centre when the SEC moves at the end, point 1), then the nearer in angle;
+    else the nearer in angle (the larger dot product with the mover's direction)."""
     if pat.centre_robot is None:
         return centre, 0, "centre"
     l = pat.last_layer
     v = g.sub(p, centre)
     if pat.last_full():
         if l == 0:
-            return _layer_one_point(centre, p, unit, tower), 1, "new-layer"
+            return layer_one_point(centre, p, unit, tower), 1, "new-layer"
         # a lone robot starts layer l + 1 on the ray of the robot of layer l nearest in
         # angle (a point that does not depend on where the mover is on its way)
         ring = pat.layers[-1]
         dots = [(g.dot(v, g.sub(pts[k], centre)), k) for k in ring]
-        top = max((d for d, _ in dots), key=_Key)
+        top = max((d for d, _ in dots), key=SortKey)
         nearest = [k for d, k in dots if d == top]
         if len(nearest) > 1:
             return None, l + 1, "slot"
@@ -387,30 +261,6 @@ def _target(p, centre, pat, pts, unit, stay, tower=None):
     if c == 0:
         return None, l, "slot"
     return (s_ccw if c > 0 else s_cw), l, "slot"
-
-
-def _profile(pts, i):
-    """The squared distances from robot i to the others, sorted: a tie-break that needs
-    no handedness (equal profiles: no choice without asymmetry)."""
-    return sorted((g.dist2(pts[i], q) for j, q in enumerate(pts) if j != i), key=_Key)
-
-
-def _distinct_after(pts, option, R) -> bool:
-    """After ``option`` = (robot, path) is made, do the other robots of R have pairwise
-    different distance profiles?"""
-    i, path = option
-    after = list(pts)
-    after[i] = path[-1].final
-    rest = [_profile(after, j) for j in R if j != i]
-    return all(_profile_less(a, b) != 0 for k, a in enumerate(rest) for b in rest[k + 1:])
-
-
-def _profile_less(a, b) -> int:
-    for x, y in zip(a, b):
-        c = (x - y).sign()
-        if c:
-            return c
-    return 0
 
 
 def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq(1)) -> Decision:
@@ -433,7 +283,7 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
     centre, pat, cands, detail = choose_centre(pts, readings, unit, approx)
     if centre is None:
         sec, _ = g.smallest_enclosing_circle(pts)
-        return Decision("stay", (), sec, recognise(pts, sec, readings.lone, unit), None, detail)
+        return _stay(pts, sec, recognise(pts, sec, readings.lone, unit), detail)
     members = pat.robots
     R = [i for i in range(len(pts)) if i not in members]
     if not R:
@@ -443,8 +293,11 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
         clear = _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower)
         if clear is not None:
             return clear
-    near = min(d.values(), key=_Key)
+    near = min(d.values(), key=SortKey)
     tied = [i for i in R if d[i] == near]
+    sec, rho2 = g.smallest_enclosing_circle(pts)
+    # C kept by the SEC for a mover strictly inside it (corrected._keeps_centre)
+    inside = {i: sec == centre and (d[i] - rho2).sign() < 0 for i in R}
     options = []
     try:
         for i in tied:
@@ -454,8 +307,30 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
                 options.append((g.dist2(pts[i], target), i, target, l, kind))
     except ValueError as err:           # a radial point the field cannot hold
         return Decision("undecided", (), centre, pat, None, str(err))
-    options.sort(key=lambda o: _Key(o[0]))
-    chosen, why = None, "a tie" if tied and not options else "no collision-free path that keeps C"
+    options.sort(key=lambda o: SortKey(o[0]))
+    if readings.lone == "reject" and options and pat.centre_robot is not None and \
+            pat.last_full():
+        # Def. 1 read literally: every robot of a layer touches one of its layer, so a
+        # layer can only start with two robots arriving at once -- no one-at-a-time move
+        # makes P grow past a full layer (and for n = 8, 20, 38, ... no pattern exists)
+        return Decision("not-possible", (), centre, pat, None,
+                        "corrected: under lone=reject (Def. 1 read literally) the next "
+                        "robot would start a layer alone, which no valid pattern holds; "
+                        "the variant builds the lone=accept pattern "
+                        "(docs/gathering-corrected.md)")
+    # never into a symmetric configuration while robots are left to move
+    # (corrected_choice.keeps_a_leader): decided before any path, by the target alone
+    blocked = []
+    if len(R) > 1:
+        kept = []
+        for o in options:
+            leader = keeps_a_leader(pts, o[1], o[2])
+            if leader is None:
+                return Decision("undecided", (), centre, pat, None,
+                                "corrected: the symmetry test cannot hold the numbers")
+            (kept if leader else blocked).append(o)
+        options = kept
+    chosen, why = None, "a tie" if tied and not options else "no clear path that keeps C"
     k = 0
     while k < len(options) and chosen is None:
         group = [o for o in options[k:] if o[0] == options[k][0]]
@@ -467,86 +342,192 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
             # the smallest profile of distances to the others; equal profiles: stay
             # ... preferring a mover after whose move the robots left in R still have
             # pairwise different profiles (ties can still be broken then)
-            breakable = [f for f in found if _distinct_after(pts, f, R)]
+            breakable = [f for f in found if distinct_after(pts, f, R)]
             found = breakable or found
-            profiles = {f[0]: _profile(pts, f[0]) for f in found}
+            profiles = {f[0]: profile(pts, f[0]) for f in found}
             best = found[0]
             for f in found[1:]:
-                if _profile_less(profiles[f[0]], profiles[best[0]]) < 0:
+                if profile_compare(profiles[f[0]], profiles[best[0]]) < 0:
                     best = f
-            if sum(1 for f in found if _profile_less(profiles[f[0]],
-                                                     profiles[best[0]]) == 0) > 1:
+            if sum(1 for f in found if profile_compare(profiles[f[0]],
+                                                       profiles[best[0]]) == 0) > 1:
                 why = f"robots {[f[0] for f in found]} tie (no asymmetry is used)"
                 break
             found = [best]
         if found:
             chosen = found[0]
+    if chosen is None and blocked and len(tied) == 1:
+        return _step_aside(pts, centre, tied[0], R, d, unit, cands, pat, approx, tower,
+                           detail)
+    if chosen is None and len(tied) == 1 and len(options) == 1 and inside[tied[0]] and \
+            len(pat.robots) > 4:
+        around = _around_blocked(options[0], pts, centre, R, d, unit, cands, pat, approx,
+                                 tower, inside, detail)
+        if around is not None:
+            return around
     if chosen is None:
-        return Decision("stay", (), centre, pat, None,
-                        f"corrected: {why} for the nearest robots {tied} ({detail})")
+        if blocked:
+            why = (f"every move of robots {sorted(o[1] for o in blocked)} ends in a "
+                   f"symmetric configuration; {why}")
+        return _stay(pts, centre, pat,
+                     f"corrected: {why} for the nearest robots {tied} ({detail})")
     i, path = chosen
     return Decision("move", (Move(i, path, "leader"),), centre, pat, i, detail)
+
+
+def _stay(pts, centre, pat, why):
+    """No move: ``stay``, or ``not-possible`` when the ground truth finds the snapshot
+    symmetric (no leader: the tie that stops the variant is one of a symmetry, which no
+    algorithm without chirality breaks against an adversary that activates symmetric
+    robots together; ``docs/gathering-corrected.md``)."""
+    group = no_leader(pts)
+    if group is not None:
+        return Decision("not-possible", (), centre, pat, None,
+                        f"no leader: the configuration has the symmetry group {group} "
+                        f"(ground truth); {why}")
+    return Decision("stay", (), centre, pat, None, why)
+
+
+def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail):
+    """The nearest robot ``m`` alone, and its move ends in a symmetric configuration: it
+    moves radially out to the distance of R's next robot (role ``asym``), where it ties
+    with that robot and the tie-break leaves it out (its target, hence the symmetric
+    completion, is the same from every point of its ray).  Stay when the way out is not
+    clear or does not keep C."""
+    rest = [d[j] for j in R if j != m]
+    nxt = min(rest, key=SortKey)
+    target = outward_point(centre, pts[m], nxt, tower)
+    if target is None:
+        return Decision("undecided", (), centre, pat, None,
+                        "corrected: the kernel cannot build the way out")
+    path = (g.Segment(pts[m], target),)
+    if path_is_clear(path, pts, m, unit * unit, frozenset(), approx) and \
+            _keeps_centre(path, pts, m, centre, cands, R, pat, approx) and \
+            keeps_a_leader(pts, m, target):
+        return Decision("move", (Move(m, path, "asym"),), centre, pat, None,
+                        f"corrected: robot {m}'s move would end in a symmetric "
+                        f"configuration; it moves out to the next robot's distance ({detail})")
+    return _stay(pts, centre, pat, f"corrected: robot {m}'s move would end in a symmetric "
+                                   f"configuration and its way out is not clear ({detail})")
+
+
+def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, inside,
+                    detail):
+    """The nearest robot m alone has a target but every path of its list (all of them,
+    whatever its rank among R) comes within 2 of some robot: the nearest robot x of R
+    that blocks none of m's paths moves instead (role ``asym``), when its own path is
+    clear, keeps C and ends with a leader.  m's paths stay blocked while x moves (their
+    blockers stand still), and x stays the nearest such robot, so a fresh Look on x's
+    way plans x again; once x is the nearest of R it is planned as the leader, to the
+    same target.  None when there is no such x (or it has no clear path)."""
+    _dist, m, target, l, kind = option
+    unit2 = unit * unit
+    if kind == "centre":
+        paths = list(paths_to_centre(pts[m], centre, pts, m, unit2))
+        allowed = frozenset(j for j in R if j != m and g.dist2(pts[j], centre) == 4 * unit2)
+    elif kind == "new-layer":
+        paths = [[g.Segment(pts[m], target)]]
+        allowed = pat.robots
+    else:
+        paths = list(to_slot_paths(pts[m], centre, target, l, unit, None, tower))
+        allowed = pat.robots
+    blockers = set()
+    for path in paths:
+        by = path_blockers(path, pts, m, unit2, allowed, approx)
+        if not by:
+            return None                 # blocked by keeping C only: no stable choice
+        blockers |= by
+    free = [j for j in R if j != m and j not in blockers]
+    if not free:
+        return None
+    near = min((d[j] for j in free), key=SortKey)
+    first = [j for j in free if d[j] == near]
+    if len(first) != 1:
+        return None
+    x = first[0]
+    if not inside[x]:
+        return None                     # x would move the SEC, hence C
+    stay = [j for j in R if j != x]
+    try:
+        t, lx, kx = _target(pts[x], centre, pat, pts, unit, stay, tower)
+    except ValueError:
+        return None
+    if t is None or not keeps_a_leader(pts, x, t):
+        return None
+    path = _first_path((None, x, t, lx, kx), pts, centre, cands, R, unit, pat, False, approx,
+                       tower)
+    if path is None:
+        return None
+    return Decision("move", (Move(x, path, "asym"),), centre, pat, None,
+                    f"corrected: every path of the nearest robot {m} is blocked; robot {x}, "
+                    f"the nearest robot blocking none of them, moves ({detail})")
 
 
 def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
     """Nobody is at C but two or more robots are within 2 of it: C cannot be taken.  The
     farthest of them from C moves radially out to distance 2 (then it is in layer 1
-    once the nearest reaches C).  A tie for the farthest: stay."""
+    once the nearest reaches C).  A tie for the farthest: the smallest distance profile;
+    equal profiles: stay."""
     unit2 = unit * unit
     close = [j for j in R if (d[j] - 4 * unit2).sign() < 0]
     if len(close) < 2:
         return None
-    far = max((d[j] for j in close), key=_Key)
+    far = max((d[j] for j in close), key=SortKey)
     top = [j for j in close if d[j] == far]
-    if len(top) > 1 or pts[top[0]] == centre:
-        return Decision("stay", (), centre, pat, None,
-                        f"corrected: robots {top} tie to clear C")
+    if len(top) > 1:
+        # the smallest distance profile (no handedness; once it moves out it is the
+        # farthest alone); equal profiles: no choice
+        profiles = {j: profile(pts, j) for j in top}
+        least = top[0]
+        for j in top[1:]:
+            if profile_compare(profiles[j], profiles[least]) < 0:
+                least = j
+        if sum(1 for j in top if profile_compare(profiles[j], profiles[least]) == 0) > 1:
+            return _stay(pts, centre, pat, f"corrected: robots {top} tie to clear C")
+        top = [least]
+    if pts[top[0]] == centre:
+        return _stay(pts, centre, pat, f"corrected: robots {top} tie to clear C")
     j = top[0]
     try:
         target = radial_point(centre, pts[j], 2 * unit, tower)
     except ValueError as err:
         return Decision("undecided", (), centre, pat, None, str(err))
     path = [g.Segment(pts[j], target)]
-    if _free(path, pts, j, unit2, approx) and \
-            _keeps_centre(path, pts, j, centre, cands, R, pat, approx):
+    if path_is_clear(path, pts, j, unit2, frozenset(), approx) and \
+            _keeps_centre(path, pts, j, centre, cands, R, pat, approx) and \
+            keeps_a_leader(pts, j, target):
         return Decision("move", (Move(j, tuple(path), "clear"),), centre, pat, None,
                         f"corrected: robot {j} clears C (robots {close} within 2 of it)")
-    return Decision("stay", (), centre, pat, None,
-                    f"corrected: robot {j} cannot clear C (robots {close} within 2 of it)")
+    return _stay(pts, centre, pat,
+                 f"corrected: robot {j} cannot clear C (robots {close} within 2 of it)")
 
 
 def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower=None):
-    """The first free path of ``option`` = (dist, robot, target, layer, kind) that keeps
-    C, as a tuple of pieces; None.  ``tower``: the snapshot's tower of nested radicals
-    (the own-circle path's radius, :func:`_to_slot_paths`)."""
+    """The first clear path of ``option`` = (dist, robot, target, layer, kind) that keeps
+    C, as a tuple of pieces; None.  Clear (:func:`.corrected_paths.path_is_clear`): no
+    robot within 2 anywhere, except that the final point may touch the robots of P (a
+    slot) or the robots at distance 2 of an empty C (the target C)."""
     _dist, i, target, l, kind = option
     unit2 = unit * unit
     if kind == "centre":
-        paths = _paths_to_centre(pts[i], centre, pts, i, unit2)
+        paths = paths_to_centre(pts[i], centre, pts, i, unit2)
+        allowed = frozenset(j for j in R if j != i and g.dist2(pts[j], centre) == 4 * unit2)
     elif kind == "new-layer":
         paths = iter([[g.Segment(pts[i], target)]])
+        allowed = pat.robots
     else:
         others = [g.dist2(pts[j], centre) for j in R if j != i]
-        limit2 = min(others, key=_Key) if others else None
-        paths = _to_slot_paths(pts[i], centre, target, l, unit, limit2, tower)
+        limit2 = min(others, key=SortKey) if others else None
+        paths = to_slot_paths(pts[i], centre, target, l, unit, limit2, tower)
+        allowed = pat.robots
     for path in paths:
         if not path or (tied_start and isinstance(path[0], g.Arc)):
             continue                    # tied at the Look: the first piece must go in (I4)
-        if _free(path, pts, i, unit2, approx) and \
+        if path_is_clear(path, pts, i, unit2, allowed, approx) and \
                 _keeps_centre(path, pts, i, centre, cands, R, pat, approx):
             return tuple(path)
     return None
 
-
-class _Key:
-    """Sort key of exact numbers."""
-    __slots__ = ("x",)
-
-    def __init__(self, x):
-        self.x = x
-
-    def __lt__(self, other):
-        return (self.x - other.x).sign() < 0
 
 
 def decide_for(algorithm: str):

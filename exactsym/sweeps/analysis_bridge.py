@@ -44,7 +44,7 @@ __all__ = ["analyse", "warm_up", "discrepancy_text", "expect_block", "check_case
            "statement_labels", "WHATS",
            "BridgeInputError"]
 
-WHATS = ("truth", "paper", "audit", "gather")
+WHATS = ("truth", "paper", "audit", "gather", "gather-corrected")
 
 #: The conclusions the audit reports besides the statements (``exactsym.audit.statements``).
 _AUDIT_CONCLUSIONS = ("GatheringPattern", "ElectLeader", "MakeAsym")
@@ -113,7 +113,7 @@ def warm_up(what: str) -> None:
     from ..audit import statements  # noqa: F401
     from ..truth import symmetry  # noqa: F401
     from ..paper import family  # noqa: F401
-    if what == "gather":
+    if what in ("gather", "gather-corrected"):
         from ..gathering import cases  # noqa: F401
 
 
@@ -144,6 +144,8 @@ def analyse(what: str, points, budget: int = 0) -> dict:
             return _audit(config)
         if what == "gather":
             return _gather(config, budget)
+        if what == "gather-corrected":
+            return _gather(config, budget, "corrected")
     raise ValueError(f"unknown analysis {what!r}")
 
 
@@ -267,11 +269,14 @@ def _separated(points):
     return [(x * s, y * s) for x, y in points]
 
 
-def _gather(config, budget: int) -> dict:
-    """One run of the paper's algorithm (reference readings, seeded ASYNC scheduler,
-    every invariant on) from ``config``, at most ``budget`` events (default 2000).
-    Failed labels: the violated statement, or ``gathering-within-budget`` when the run
-    neither gathered nor violated anything.  Fewer than 5 robots: not applicable."""
+def _gather(config, budget: int, algorithm: str = "paper") -> dict:
+    """One run of the paper's algorithm (``algorithm`` "paper"; "corrected": the
+    corrected variant, ``--what gather-corrected``) (reference readings, seeded ASYNC
+    scheduler, every invariant on) from ``config``, at most ``budget`` events (default
+    2000).  Failed labels: the violated statement, or ``gathering-within-budget`` when
+    the run neither gathered nor violated anything (for the corrected variant, a
+    ``not-possible`` run on a start the ground truth finds symmetric is no failure: it
+    is recorded with the group).  Fewer than 5 robots: not applicable."""
     from ..exact import fmpq
     from ..gathering.cases import run_settings, settings_of
     if config.n < 5:
@@ -282,12 +287,17 @@ def _gather(config, budget: int) -> dict:
         raise BridgeInputError("the gathering simulator needs rational Cartesian "
                                "coordinates (use grid: or random: families)")
     points = _separated([tuple(p) for p in config.points])
-    res = run_settings(points, settings_of({"gather_max_events": budget or 2000}))
-    failed = [res.label] if res.label else \
-        ([] if res.outcome == "gathered" else ["gathering-within-budget"])
-    return {"failed": failed, "applicable": None,
-            "gather": {"outcome": res.outcome, "gathered": res.outcome == "gathered",
-                       "steps": res.events}}
+    res = run_settings(points, settings_of({"gather_max_events": budget or 2000,
+                                            "gather_algorithm": algorithm}))
+    ok = res.outcome == "gathered"
+    out = {"outcome": res.outcome, "gathered": ok, "steps": res.events}
+    if algorithm == "corrected":
+        from ..truth.symmetry import symmetry_group
+        group = symmetry_group(config)         # scaling by _separated keeps the group
+        out["group"] = group.name
+        ok = ok or (res.outcome == "not-possible" and not group.orderable)
+    failed = [res.label] if res.label else ([] if ok else ["gathering-within-budget"])
+    return {"failed": failed, "applicable": None, "gather": out}
 
 
 # ---------------------------------------------------------------- case files

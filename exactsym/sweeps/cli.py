@@ -1,4 +1,4 @@
-"""``exactsym sweep FAMILY --what truth|paper|audit|gather --out RESULTS``: the command.
+"""``exactsym sweep FAMILY --what truth|paper|audit|gather|gather-corrected --out RESULTS``: the command.
 
 Thin: parse, call :func:`.engine.run_sweep` and :mod:`.summary`, print.  The lead wires it
 into ``exactsym`` with :func:`add_arguments` and :func:`run`; :func:`main` is the same
@@ -116,8 +116,8 @@ def _run(args) -> int:
         # the simulator starts from rational Cartesian points; roots of unity are not
         raise FamilyError("gather: starts from rational points: use grid:, random: or "
                           "perturb: of a Cartesian file inside it")
-    if family.kind == "gather" and args.what != "gather":
-        raise FamilyError("a gather: family is swept with --what gather")
+    if family.kind == "gather" and args.what not in ("gather", "gather-corrected"):
+        raise FamilyError("a gather: family is swept with --what gather or gather-corrected")
     serial, workers = _where(args, family)
     options = SweepOptions(workers=workers, scheduler=args.scheduler,
                            serial=serial, batch_size=args.batch_size,

@@ -136,13 +136,18 @@ def test_the_algorithms_are_separate():
         decide_for("fixed")
 
 
-def test_a_tie_no_handedness_can_break_stays():
+def test_a_tie_no_handedness_can_break_is_not_possible():
     """Robots 0 and 1 are the nearest to C, mirror images about the line through C and
-    the three others: no choice without a handedness."""
+    the three others: no choice without a handedness; the ground truth finds the
+    configuration symmetric (D1), so the variant says gathering is not possible, and
+    why (before: "stay")."""
     pts = tuple((MQ.rational(x), MQ.rational(y)) for x, y in
                 [(3, 4), (3, -4), (-10, 0), (10, 0), (-6, 0)])
     d = decide_corrected(pts)
-    assert d.status == "stay" and "tie" in d.detail
+    assert d.status == "not-possible" and "D1" in d.detail and "tie" in d.detail
+    # one robot off the mirror: a leader exists, and the variant moves
+    moved = pts[:4] + ((MQ.rational(-6), MQ.rational(1)),)
+    assert decide_corrected(moved).status == "move"
 
 
 def test_the_touching_filter_agrees_with_the_exact_test_and_the_recogniser():

@@ -113,12 +113,12 @@ def test_a_corrected_run_goes_on_in_one_tower():
 
 
 def test_the_own_circle_path_at_a_nested_radius():
-    """corrected._to_slot_paths: the path along the mover's own circle, then radially in,
+    """corrected_paths.to_slot_paths: the path along the mover's own circle, then radially in,
     also when |p - C|^2 = 52 + 2 sqrt 2 is a square in no multiquadratic field (before,
     that option needed a rational squared radius and was left out): every point of the
     arc is at that distance from C, the arc ends on the target's ray, then the segment
     to the target."""
-    from exactsym.gathering.corrected import _to_slot_paths
+    from exactsym.gathering.corrected_paths import to_slot_paths as _to_slot_paths
     p, target = NESTED[4], (Q(2), Q(0))                  # a slot of layer 1 on the x axis
     run = RunTower()
     paths = list(_to_slot_paths(p, ORIGIN, target, 1, 1, None, run))

@@ -1,0 +1,281 @@
+"""The corrected variant's paths (``--algorithm corrected``, ``docs/gathering-corrected.md``):
+the candidate paths to C and to a slot, the radial points they need, and the clearance
+test every path must pass.
+
+**Clearance (no graze).**  A path is *clear* (:func:`path_is_clear`) when every robot
+other than the mover stays strictly farther than 2 from every point of it, except that
+the final point may touch (distance exactly 2) the robots of ``allowed`` -- the robots of
+P next to the mover's slot, or the robots at distance 2 of an empty C.  Before
+(issue 31) touching anywhere was allowed: a path to C that grazed a robot B made the
+mover and B a two-robot pattern whose centre is not C at that instant (I6), and a Look
+there ended in an overlap.  With clearance, two robots come to touch only when a mover
+arrives at its target (``proofs/gathering-corrected.md``, lemma "contacts").  Every
+final piece is a segment; along a segment the squared distance to a robot is a convex
+quadratic, so a touch at the end with no overlap on the segment (``piece_hits`` false)
+is a touch at the end only (the quadratic's derivative there is <= 0).
+
+Each path can be found again from any of its points (a fresh Look on the way plans the
+same target, I3): ``docs/gathering.md``, "The corrected variant".
+"""
+
+from __future__ import annotations
+
+from math import isqrt
+
+from flint import fmpq
+
+from ..exact.algebraic.run_tower import sqrt_exact
+from ..exact.multiquadratic import MQ, sqrt_rational
+from . import geometry as g
+from .robot import radial_point
+
+#: tan(angle / 2) of the detour rotations tried, smallest first.
+DETOUR_TANGENTS = tuple(fmpq(1, 2 ** k) for k in range(4, -1, -1))
+
+
+def segment_within(a, b, q, d2) -> bool:
+    """Does some point of segment ``ab`` lie at squared distance ``<= d2`` from ``q``
+    (touching included; :func:`.geometry.segment_min_dist2_less` is the strict test)?"""
+    ab = g.sub(b, a)
+    aq = g.sub(q, a)
+    t_num = g.dot(aq, ab)
+    den = g.dot(ab, ab)
+    if den.is_zero() or t_num.sign() <= 0:
+        return (g.dist2(a, q) - d2).sign() <= 0
+    if (t_num - den).sign() >= 0:
+        return (g.dist2(b, q) - d2).sign() <= 0
+    return (g.dot(aq, aq) * den - t_num * t_num - d2 * den).sign() <= 0
+
+
+def arc_within(arc, q, d2) -> bool:
+    """Does some point of ``arc`` lie at squared distance ``<= d2`` from ``q``?  The
+    nearest point of the circle to ``q`` is its radial projection; the arc holds it when
+    it holds that direction (:meth:`.geometry.Arc.contains_direction`), else an end is
+    the nearest: (rho - |w|)^2 <= d2 iff r2 + w2 - d2 <= 2 rho |w|."""
+    if (g.dist2(arc.start, q) - d2).sign() <= 0 or (g.dist2(arc.end, q) - d2).sign() <= 0:
+        return True
+    w = g.sub(q, arc.centre)
+    if w[0].is_zero() and w[1].is_zero():
+        return False
+    if not arc.contains_direction(w):
+        return False
+    r2 = g.dist2(arc.start, arc.centre)
+    w2 = g.dot(w, w)
+    lhs = r2 + w2 - d2
+    if lhs.sign() <= 0:
+        return True
+    return (lhs * lhs - 4 * r2 * w2).sign() <= 0
+
+
+def piece_within(piece, q, d2) -> bool:
+    if isinstance(piece, g.Segment):
+        return segment_within(piece.start, piece.end, q, d2)
+    return arc_within(piece, q, d2)
+
+
+def path_is_clear(pieces, pts, mover, unit2, allowed=frozenset(), approx=None) -> bool:
+    """Every robot but the mover stays strictly farther than 2 from the path, except that
+    robots of ``allowed`` may touch its final point (and only there: the last piece is a
+    segment, see the module docstring).  ``approx`` (:func:`.geometry.approx_points`): a
+    certified filter leaves out the robots certainly farther than 2 from a piece."""
+    d2 = 4 * unit2
+    last = len(pieces) - 1
+    for k, piece in enumerate(pieces):
+        near = range(len(pts)) if approx is None else \
+            g.robots_near_piece(piece, approx, 2 * float(unit2) ** 0.5)
+        for j in near:
+            if j == mover:
+                continue
+            q = pts[j]
+            if k == last and j in allowed and isinstance(piece, g.Segment) and \
+                    g.dist2(piece.end, q) == d2:
+                if g.piece_hits(piece, q, d2):
+                    return False                 # closer than 2 before the end
+                continue                         # convex: touches at the end only
+            if piece_within(piece, q, d2):
+                return False
+    return True
+
+
+def path_blockers(pieces, pts, mover, unit2, allowed=frozenset(), approx=None) -> set:
+    """The robots that make the path not clear (:func:`path_is_clear` asks whether this
+    set is empty)."""
+    d2 = 4 * unit2
+    last = len(pieces) - 1
+    out = set()
+    for k, piece in enumerate(pieces):
+        near = range(len(pts)) if approx is None else \
+            g.robots_near_piece(piece, approx, 2 * float(unit2) ** 0.5)
+        for j in near:
+            if j == mover or j in out:
+                continue
+            q = pts[j]
+            if k == last and j in allowed and isinstance(piece, g.Segment) and \
+                    g.dist2(piece.end, q) == d2:
+                if g.piece_hits(piece, q, d2):
+                    out.add(j)
+                continue
+            if piece_within(piece, q, d2):
+                out.add(j)
+    return out
+
+
+def rotate_about(centre, p, t, sense):
+    """``p`` turned about ``centre`` by the rational rotation of half-angle tangent ``t``."""
+    den = 1 + t * t
+    c, s = (1 - t * t) / den, 2 * t / den
+    return g.add(centre, g.rotate(g.sub(p, centre), MQ.rational(c), MQ.rational(s * sense)))
+
+
+def paths_to_centre(p, centre, pts, mover, unit2):
+    """The segment to C, then detours: an arc about C on the mover's circle, then the
+    segment (senses away from the robots that block the segment)."""
+    yield [g.Segment(p, centre)]
+    v = g.sub(p, centre)
+    senses = set()
+    for j, q in enumerate(pts):
+        if j != mover and segment_within(p, centre, q, 4 * unit2) and \
+                g.dist2(centre, q) != 4 * unit2:
+            side = g.cross(v, g.sub(q, centre)).sign()     # the blocker's side of the ray
+            senses.add(-side if side else 0)
+    if 0 in senses or len(senses) != 1:
+        senses = {1, -1}
+    for t in DETOUR_TANGENTS:
+        turned = [(sense, rotate_about(centre, p, t, sense)) for sense in senses]
+        if len(turned) == 2:
+            # both senses: the one whose turned point is farther from its nearest robot
+            # first (a choice by distances alone, the same in a mirrored frame); equal:
+            # neither (choosing would need a handedness)
+            room = [min((g.dist2(q, r) for j, r in enumerate(pts) if j != mover),
+                        key=_Key) for _, q in turned]
+            c = (room[0] - room[1]).sign()
+            if c == 0:
+                continue
+            if c < 0:
+                turned.reverse()
+        for sense, q in turned:
+            yield g.arc_path(centre, p, q, sense) + [g.Segment(q, centre)]
+
+
+class _Key:
+    __slots__ = ("x",)
+
+    def __init__(self, x):
+        self.x = x
+
+    def __lt__(self, other):
+        return (self.x - other.x).sign() < 0
+
+
+def ray_direction(centre, p):
+    """The primitive integer direction of the ray from C through ``p`` (the same from
+    every point of the ray), or None when C is irrational or the slope is."""
+    v = g.sub(p, centre)
+    if not (centre[0].is_rational() and centre[1].is_rational()):
+        return None
+    if v[1].is_zero():
+        return (1 if v[0].sign() > 0 else -1, 0)
+    ratio = v[0] / v[1]
+    if not ratio.is_rational():
+        return None
+    q = ratio.to_fmpq()
+    e = (int(q.p), int(q.q))
+    if (v[1].sign() < 0) == (e[1] > 0):
+        e = (-e[0], -e[1])
+    return e
+
+
+def layer_one_point(centre, p, unit, tower=None):
+    """The point of layer 1 on the mover's ray: by the ray's integer direction when it has
+    one (so a robot stopped on its way finds the same point), else by its radius (a
+    nested radical when ``|p - C|^2`` is irrational: a point of the snapshot's
+    ``tower``, :func:`.robot.radial_point`)."""
+    e = ray_direction(centre, p)
+    if e is None:
+        return radial_point(centre, p, 2 * unit, tower)
+    k = sqrt_rational(fmpq(1, e[0] * e[0] + e[1] * e[1])) * (2 * unit)
+    return (centre[0] + k * e[0], centre[1] + k * e[1])
+
+
+def ray_point(centre, p, h):
+    """A rational point on the ray from C through ``p`` at distance at least ``h``, less
+    than 1/8 beyond (the first of ``C + e m/den``, ``e`` the ray's primitive integer
+    direction, ``den = 8 (isqrt|e|^2 + 1)``, m = 1, 2, ...), found alike from every point
+    of the ray; None when C is irrational or the ray's slope is."""
+    e = ray_direction(centre, p)
+    if e is None:
+        return None
+    e2 = e[0] * e[0] + e[1] * e[1]
+    den = 8 * (isqrt(e2) + 1)                       # steps of |e|/den < 1/8 along the ray
+    need = den * den * fmpq(h) * fmpq(h) / e2       # m^2 >= den^2 h^2 / |e|^2
+    m = max(1, isqrt(int(need.p) // int(need.q)))
+    while m * m < need:
+        m += 1
+    k = fmpq(m, den)
+    return (centre[0] + k * e[0], centre[1] + k * e[1])
+
+
+def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None):
+    """Paths to a point of layer l (``|target - C| = 2l unit``) that the mover finds
+    again from any point of them (so a fresh Look on the way plans the same target):
+
+    * on the target's ray: the segment;
+    * along the mover's own circle about C, the shorter way, to the target's ray, then
+      radially in (the radius a nested radical when ``|p - C|^2`` is a square in no
+      multiquadratic field: a number of ``tower`` or of a new run tower); left out only
+      when that root cannot be built (the kernel's limits);
+    * for h = 2l + 2, 2l + 4, 2l + 6 with h^2 < ``limit2`` (the squared distance of R's
+      next robot to C: the mover stays the nearest): radially in to the rational point
+      of the mover's ray just beyond radius h (:func:`ray_point`), along that circle to
+      the target's ray, radially in; then the segment to the target's ray at radius h
+      and radially in;
+    * the segment to the target.
+
+    The mover's distance to C stays below ``limit2`` along them (I4)."""
+    v = g.sub(p, centre)
+    w = g.sub(target, centre)                          # |w| = 2l unit
+    if g.cross(v, w).is_zero() and g.dot(v, w).sign() > 0:
+        yield [g.Segment(p, target)]                   # already on the target's ray
+        return
+    r2 = g.dot(v, v)
+    two_l = 2 * l * unit
+    rho = radius_of(r2, tower)
+    if rho is not None:
+        b = g.add(centre, g.scale(w, rho / two_l))
+        sense = 1 if g.cross(v, w).sign() > 0 else -1
+        yield g.arc_path(centre, p, b, sense) + [g.Segment(b, target)]
+    for h in (two_l + 2 * unit, two_l + 4 * unit, two_l + 6 * unit):
+        if limit2 is not None and (limit2 - h * h).sign() <= 0:
+            continue            # I4: the mover stays strictly nearer to C than R's others
+        a = ray_point(centre, p, h)
+        if a is not None and (r2 - g.dist2(a, centre)).sign() >= 0:
+            ra = sqrt_rational(g.dist2(a, centre).to_fmpq())
+            b = g.add(centre, g.scale(w, ra / two_l))
+            sense = 1 if g.cross(v, w).sign() > 0 else -1
+            pieces = ([g.Segment(p, a)] if a != p else []) + g.arc_path(centre, a, b, sense)
+            yield pieces + [g.Segment(b, target)]
+        b = g.add(centre, g.scale(w, fmpq(h) / two_l))
+        yield [g.Segment(p, b), g.Segment(b, target)]
+    yield [g.Segment(p, target)]
+
+
+def radius_of(r2, tower):
+    """The non-negative root of the squared radius ``r2``: rational, multiquadratic or
+    nested (``tower``'s); None when the kernel cannot build it."""
+    if r2.is_rational():
+        return sqrt_rational(r2.to_fmpq())
+    try:
+        return sqrt_exact(r2, tower)
+    except ValueError:
+        return None
+
+
+def outward_point(centre, p, r2_to, tower=None):
+    """The point of the ray from C through ``p`` at squared distance ``r2_to`` from C
+    (the symmetry-avoiding move of ``corrected.decide_corrected``: out to the next
+    robot's distance); None when the kernel cannot build the roots."""
+    v = g.sub(p, centre)
+    rho, here = radius_of(r2_to, tower), radius_of(g.dot(v, v), tower)
+    if rho is None or here is None:
+        return None
+    return g.add(centre, g.scale(v, rho / here))
