@@ -99,6 +99,15 @@ IDENTITY = Frame()
 MIRROR = Frame(reflect=True)
 
 
+def stop_instant(stop):
+    """The exact parameter of a stop strictly inside (0, 1), or None (the piece's end):
+    a Fraction becomes a rational MQ; an exact number (``.sign()``) stays itself."""
+    if stop is None:
+        return None
+    f = stop if hasattr(stop, "sign") else MQ.rational(stop)
+    return f if f.sign() > 0 and (f - 1).sign() < 0 else None
+
+
 @dataclass(frozen=True)
 class Step:
     """One entry of a run's path log: at event ``event`` robot ``robot`` Looked
@@ -240,9 +249,12 @@ class World:
                 self.checker.after_look(self, i, frame, d, paths)
         return d
 
-    def advance(self, i: int, stop: Fraction | None = None, end: bool = False):
+    def advance(self, i: int, stop=None, end: bool = False):
         """Robot ``i`` moves along its current piece (to ``stop`` of it, or to its end);
-        ``end`` stops the whole move there (non-rigid only)."""
+        ``end`` stops the whole move there (non-rigid only).  ``stop``: None (the piece's
+        end), a rational fraction, or an exact instant of the piece (an irrational
+        critical instant, :mod:`.stops`: a multiquadratic number or a number of the
+        run's tower), in (0, 1) -- outside it, the piece's end."""
         rob = self.robots[i]
         if not rob.busy:
             raise ValueError(f"robot {i} has no pending move")
@@ -250,8 +262,9 @@ class World:
             raise ValueError("a rigid move cannot be stopped early")
         self.events += 1
         piece = rob.path[0]
-        if stop is not None and 0 < stop < 1:
-            done, rest = piece.split(MQ.rational(stop))
+        f = stop_instant(stop)
+        if f is not None:
+            done, rest = piece.split(f)
             rob.path[0] = rest
         else:
             done = piece
@@ -292,8 +305,9 @@ class World:
         for i, stop, end in moves:
             rob = self.robots[i]
             piece = rob.path[0]
-            if stop is not None and 0 < stop < 1:
-                done[i], rest = piece.split(MQ.rational(stop))
+            f = stop_instant(stop)
+            if f is not None:
+                done[i], rest = piece.split(f)
                 new = list(rob.path)
                 new[0] = rest
             else:
