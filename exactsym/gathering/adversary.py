@@ -6,15 +6,17 @@ At a state the adversary may (spec section 1; ``docs/gathering.md``, "The search
   and a rotated and scaled frame of each handedness whose origin is elsewhere (a frame
   in which nothing lines up with the axes: a decision that depends on more than the
   handedness flips there);
-* move one busy robot along its current piece to the piece's end or to a stop point at
-  and between the critical instants of that motion that the simulator already computes
-  (:func:`.instants.look_points`: contacts and grazes, distance ties, SEC changes,
-  symmetry instants, the pattern's circles) -- every instant it holds as a rational, and
-  one rational point just before and just after each instant (an irrational instant
-  cannot be a stop: a stop is a rational fraction of the piece, as a trace records it);
+* move one busy robot along its current piece to the piece's end or to a stop at and
+  between the critical instants of that motion that the simulator already computes
+  (:func:`.stops.piece_stops` over :func:`.instants.critical_roots`: contacts and
+  grazes, distance ties, SEC changes, symmetry instants, the pattern's circles) -- every
+  instant whose exact value the kernel holds, rational or irrational (a quadratic
+  irrational, a nested radical: a trace records it as the k-th instant of the motion
+  with an isolating interval), and the simplest rational point of each stretch between
+  two instants;
 * move several busy robots at once (ASYNC interleavings: all of them, and every pair)
   over one common interval, to their pieces' ends or to a stop at and between the
-  critical instants of the joint motion (:func:`.joint_instants.joint_look_points`);
+  critical instants of the joint motion (:func:`.joint_instants.joint_critical_roots`);
 * non-rigid: end a move at any of those stops, once delta is covered.
 
 Actions are the plain dicts of a trace (:mod:`.trace`), so a found schedule replays.

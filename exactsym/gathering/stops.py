@@ -36,7 +36,8 @@ from math import floor
 from flint import fmpq
 
 from ..exact.algebraic.algebraic_numbers import is_algebraic
-from ..exact.algebraic.interface import float_and_error, is_multiquadratic
+from ..exact.algebraic.interface import float_and_error
+from ..exact.algebraic.tower_numbers import is_tower
 from . import geometry as g
 from .instants import critical_roots
 from .joint_instants import joint_critical_roots
@@ -106,9 +107,10 @@ def instant_stop(roots, k: int) -> dict:
             "value": f"{value:.12g}"}
 
 
-#: (motion key) -> its critical instants, when every exact value is multiquadratic (a
-#: value in no tower: valid in every copy of the world, :func:`.search.fork`); the
-#: search offers the stops of a state and then applies each in a copy of it
+#: (motion key) -> its critical instants, when no exact value is a number of the run's
+#: tower (a multiquadratic number or one of K(alpha) is valid in every copy of the world,
+#: :func:`.search.fork`; a tower number belongs to its copy's tower); the search offers
+#: the stops of a state and then applies each in a copy of it
 _ROOTS: dict = {}
 _ROOTS_MAX = 256
 
@@ -138,7 +140,7 @@ def motion_roots(world, movers) -> list:
     else:
         roots = joint_critical_roots({i: world.robots[i].path[0] for i in movers}, world,
                                      sec_r)
-    if all(r.exact is None or is_multiquadratic(r.exact) for r in roots):
+    if not any(is_tower(r.exact) for r in roots):
         if len(_ROOTS) >= _ROOTS_MAX:
             _ROOTS.clear()
         _ROOTS[key] = roots

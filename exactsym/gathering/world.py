@@ -11,7 +11,8 @@ plain data (Pactole's demon):
   similarity, reflections included), runs :func:`.robot.decide` on it and keeps its own
   path, mapped back to the world's frame;
 * ``advance(i, stop, end)`` -- robot i moves along the current piece of its path to the
-  piece's end, or to the rational fraction ``stop`` of it (non-rigid); ``end``: the
+  piece's end, or to ``stop`` of it: a rational fraction, or an exact critical instant
+  of the motion, irrational ones included (:mod:`.stops`); ``end``: the
   adversary ends the move there (non-rigid, allowed once the straight distance from the
   move's start is at least delta, which is never more than the distance travelled);
 * ``step([(i, stop, end), ...])`` -- several robots move at once over one common time

@@ -13,6 +13,7 @@ import pytest
 
 from exactsym.gathering.adversary import apply_action, stop_fractions
 from exactsym.gathering.invariants import Checker, Violation
+from exactsym.gathering.output import schedule_lines
 from exactsym.gathering.schedulers import TraceMismatch, run
 from exactsym.gathering.state_key import point_key
 from exactsym.gathering.stops import motion_roots, resolve, simplest_between
@@ -141,3 +142,11 @@ def test_simplest_between():
         assert a < q < b
         assert all(not (a < Fraction(p, d) < b) for d in range(1, q.denominator)
                    for p in range(d + 1))
+
+
+def test_a_schedule_names_an_exact_stop_readably():
+    points, i = IRRATIONAL[0]
+    stop = _irrational_stops(_looked(points, i), i)[0]
+    lines = schedule_lines([{"a": "advance", "robot": i, "stop": stop, "end": False}])
+    assert f"robot {i} moves to critical instant {stop['instant']} of its motion" in lines[0]
+    assert stop["value"] in lines[0] and "{" not in lines[0]
