@@ -1,7 +1,11 @@
 """Where the adversary may stop a mover: rational points and exact critical instants.
 
 The model lets the adversary stop a moving robot anywhere on its piece (spec section 1;
-``docs/gathering.md``, "Stops").  A trace names a stop in one of two ways:
+``docs/gathering.md``, "Stops"): the paper's robots act asynchronously under CORDA
+("the movement of the robots is not instantaneous. While in motion, a robot may be
+observed by other robots", L200-208), so a Look may happen with a mover at any point of
+its path -- at a graze, where ``gather-no-obstacle`` is tight, or at a tie, where
+``obs-v-move``'s fresh Look can change.  A trace names a stop in one of two ways:
 
 * a **rational fraction** of the piece, a string (``"3/7"``): the point ``piece.at(f)``
   (on an arc, the rational rotation's parameter, so the point stays in the field);
