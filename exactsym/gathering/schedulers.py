@@ -1,7 +1,8 @@
 """Schedulers (the adversary's policies) and the run loop.
 
 Every scheduler produces a sequence of adversary actions (:mod:`.world`): ``look`` with a
-frame, ``advance`` with an optional stop fraction and end flag.  The run records them;
+frame, ``advance`` with an optional stop (a fraction, or an exact critical instant:
+:mod:`.stops`) and end flag.  The run records them;
 :func:`replay` feeds a recorded sequence back, so a run is reproduced event for event.
 
 * ``centralised`` -- one robot at a time, atomically: it Looks and completes its move;
