@@ -6,15 +6,17 @@ At a state the adversary may (spec section 1; ``docs/gathering.md``, "The search
   and a rotated and scaled frame of each handedness whose origin is elsewhere (a frame
   in which nothing lines up with the axes: a decision that depends on more than the
   handedness flips there);
-* move one busy robot along its current piece to the piece's end or to a stop point at
-  and between the critical instants of that motion that the simulator already computes
-  (:func:`.instants.look_points`: contacts and grazes, distance ties, SEC changes,
-  symmetry instants, the pattern's circles) -- every instant it holds as a rational, and
-  one rational point just before and just after each instant (an irrational instant
-  cannot be a stop: a stop is a rational fraction of the piece, as a trace records it);
+* move one busy robot along its current piece to the piece's end or to a stop at and
+  between the critical instants of that motion that the simulator already computes
+  (:func:`.stops.piece_stops` over :func:`.instants.critical_roots`: contacts and
+  grazes, distance ties, SEC changes, symmetry instants, the pattern's circles) -- every
+  instant whose exact value the kernel holds, rational or irrational (a quadratic
+  irrational, a nested radical: a trace records it as the k-th instant of the motion
+  with an isolating interval), and the simplest rational point of each stretch between
+  two instants;
 * move several busy robots at once (ASYNC interleavings: all of them, and every pair)
   over one common interval, to their pieces' ends or to a stop at and between the
-  critical instants of the joint motion (:func:`.joint_instants.joint_look_points`);
+  critical instants of the joint motion (:func:`.joint_instants.joint_critical_roots`);
 * non-rigid: end a move at any of those stops, once delta is covered.
 
 Actions are the plain dicts of a trace (:mod:`.trace`), so a found schedule replays.
@@ -27,8 +29,7 @@ from itertools import combinations
 
 from ..exact.algebraic.interface import float_and_error
 from . import geometry as g
-from .instants import look_points
-from .joint_instants import joint_look_points
+from .stops import piece_stops, resolve
 from .world import IDENTITY, MIRROR, Frame, World
 
 __all__ = ["FRAMES", "children", "apply_action", "badness", "stop_fractions"]
@@ -41,39 +42,22 @@ FRAMES = (IDENTITY, MIRROR,
 HALF = Fraction(1, 2)
 
 
-def _rational(x) -> Fraction | None:
-    """``x`` (an instant in (0, 1)) as a Fraction, or None when it is not rational."""
-    try:
-        if not x.is_rational():
-            return None
-        q = x.to_fmpq()
-    except (ValueError, AttributeError):
-        return None
-    f = Fraction(int(q.p), int(q.q))
-    return f if 0 < f < 1 else None
-
-
 def stop_fractions(world: World, i: int) -> list:
-    """The rational stop points strictly inside robot ``i``'s current piece, in order:
-    at and between the piece's critical instants (1/2 when it has none)."""
-    rob = world.robots[i]
+    """The stops strictly inside robot ``i``'s current piece, in order
+    (:func:`.stops.piece_stops`: one simple rational in each stretch between its
+    critical instants, and each instant a stop can be -- a rational as a string, an
+    irrational one as its trace record); 1/2 alone when the kernel cannot hold them."""
     try:
-        points, _sided = look_points(rob.path[0], world, i, rob.centre,
-                                     world.readings.A1 == "sec-r")
+        return piece_stops(world, [i])
     except (ValueError, ArithmeticError):
-        return [HALF]                 # the kernel cannot hold the instants: a plain stop
-    out = sorted({f for f in (_rational(lp.f) for lp in points) if f is not None})
-    return out or [HALF]
+        return [str(HALF)]
 
 
 def _joint_stops(world: World, group) -> list:
-    pieces = {i: world.robots[i].path[0] for i in group}
     try:
-        points, _sided = joint_look_points(pieces, world, world.readings.A1 == "sec-r")
+        return piece_stops(world, list(group))
     except (ValueError, ArithmeticError):
-        return [HALF]
-    out = sorted({f for f in (_rational(jp.tau) for jp in points) if f is not None})
-    return out or [HALF]
+        return [str(HALF)]
 
 
 def children(world: World, frames=FRAMES, joint: bool = True):
@@ -84,15 +68,14 @@ def children(world: World, frames=FRAMES, joint: bool = True):
         groups = [tuple(busy)] + ([c for c in combinations(busy, 2)] if len(busy) > 2 else [])
         for group in groups:
             for stop in [None] + _joint_stops(world, group):
-                s = None if stop is None else str(stop)
-                yield {"a": "step", "moves": [[i, s, False] for i in group]}
+                yield {"a": "step", "moves": [[i, stop, False] for i in group]}
     for i, rob in enumerate(world.robots):
         if rob.busy:
             yield {"a": "advance", "robot": i, "stop": None, "end": False}
             for stop in stop_fractions(world, i):
-                yield {"a": "advance", "robot": i, "stop": str(stop), "end": False}
+                yield {"a": "advance", "robot": i, "stop": stop, "end": False}
                 if not world.rigid:
-                    yield {"a": "advance", "robot": i, "stop": str(stop), "end": True}
+                    yield {"a": "advance", "robot": i, "stop": stop, "end": True}
         else:
             for frame in frames:
                 yield {"a": "look", "robot": i, "frame": frame.as_list()}
@@ -105,11 +88,12 @@ def apply_action(world: World, act) -> bool:
         if act["a"] == "look":
             world.look(act["robot"], Frame.from_list(act["frame"]))
         elif act["a"] == "step":
-            world.advance_together([(i, None if stop is None else Fraction(stop), end)
+            movers = [i for i, _stop, _end in act["moves"]]
+            world.advance_together([(i, resolve(world, movers, stop), end)
                                     for i, stop, end in act["moves"]])
         else:
-            stop = None if act["stop"] is None else Fraction(act["stop"])
-            world.advance(act["robot"], stop, act["end"])
+            world.advance(act["robot"], resolve(world, [act["robot"]], act["stop"]),
+                          act["end"])
     except ValueError:
         return False
     return True

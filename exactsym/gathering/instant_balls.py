@@ -2,7 +2,9 @@
 
 The critical instants (:mod:`.instants`) build one polynomial per relation (the mover on
 the circle on a diameter, a right angle, the circle through three hull robots, ...) and
-isolate its roots in (0, 1); most relations have none there.  Building them exactly is
+isolate its roots in (0, 1); most relations have none there.  A joint step's in-circle
+determinants (:mod:`.joint_instants`, four robots on one circle) likewise
+(:func:`incircle_clear`).  Building them exactly is
 products of coefficients of up to 256 terms and thousands of bits; a ball of each
 coefficient, from the balls of the motion and of the points, costs a few Arb operations.
 
@@ -84,6 +86,30 @@ def circle3_ball(a, b, c):
         b2, c2 = abx * abx + aby * aby, acx * acx + acy * acy
         ux, uy = (b2 * acy - c2 * aby) / d, (c2 * abx - b2 * acx) / d
         return (a[0] + ux, a[1] + uy), ux * ux + uy * uy
+
+
+def incircle_clear(balls) -> bool:
+    """Does the in-circle determinant of four moving points
+    (:func:`.joint_relations.incircle_poly`; ``balls``: their :class:`MotionBall` objects)
+    surely have no root in (0, 1)?  The same rows and expansion, on balls."""
+    with ctx.workprec(PREC):
+        rows = [(_mul(b.nx, b.d), _mul(b.ny, b.d), _add(_mul(b.nx, b.nx), _mul(b.ny, b.ny)),
+                 _mul(b.d, b.d)) for b in balls]
+        return balls_clear_unit(_det(rows), PREC)
+
+
+def _det(rows) -> list:
+    if len(rows) == 1:
+        return rows[0][0]
+    out: list = []
+    for j in range(len(rows)):
+        term = _mul(rows[0][j], _det([r[:j] + r[j + 1:] for r in rows[1:]]))
+        out = _add(out, term) if j % 2 == 0 else _add(out, [-c for c in term])
+    return out
+
+
+def _add(p, q) -> list:
+    return [_at(p, k) + _at(q, k) for k in range(max(len(p), len(q)))]
 
 
 def _at(p, k):

@@ -66,6 +66,7 @@ from ..exact.algebraic.polynomials import pmul, pscale, psub
 from ..exact.algebraic.roots import roots_of
 from ..exact.multiquadratic import MQ
 from . import geometry as g
+from .instant_balls import MotionBall, incircle_clear
 from .motion import may_be_at, may_leave, motion_of
 from .point_sets import hull_indices
 from .joint_relations import (const, contact_poly, incircle_poly, ray_poly, rel, right_poly,
@@ -88,11 +89,25 @@ def _sec(motions: dict, movers, tag: str) -> list:
                 out.append((right_poly(motions[q], motions[a], motions[b]),
                             ("sec", f"{tag}: robot {q} on the circle on the diameter "
                                     f"{a}-{b}")))
+    balls = _balls(motions, cand)
     for quad in combinations(cand, 4):
         if set(quad) & movers:
+            # balls first (:mod:`.instant_balls`): a determinant they prove rootless in
+            # the interval is left out, as its exact roots would be (none)
+            if balls is not None and incircle_clear([balls[k] for k in quad]):
+                continue
             out.append((incircle_poly([motions[k] for k in quad]),
                         ("sec", f"{tag}: robots {', '.join(map(str, quad))} on one circle")))
     return out
+
+
+def _balls(motions: dict, cand) -> dict | None:
+    """The :class:`.instant_balls.MotionBall` of each candidate, or None (numbers
+    without balls: every relation is built exactly)."""
+    try:
+        return {k: MotionBall(motions[k]) for k in cand}
+    except (AttributeError, TypeError, ValueError):
+        return None
 
 
 def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:

@@ -91,6 +91,9 @@ def _frame_text(frame) -> str:
 
 def _stop_text(stop, end) -> str:
     where = "to the end of its piece" if stop is None else f"to {stop} of its piece"
+    if isinstance(stop, dict):         # an exact critical instant (gathering/stops.py)
+        where = (f"to critical instant {stop['instant']} of its motion (about "
+                 f"{stop['value']}, in ({stop['lo']}, {stop['hi']}))")
     return where + (", and the adversary ends the move there" if end else "")
 
 

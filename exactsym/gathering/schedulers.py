@@ -1,7 +1,8 @@
 """Schedulers (the adversary's policies) and the run loop.
 
 Every scheduler produces a sequence of adversary actions (:mod:`.world`): ``look`` with a
-frame, ``advance`` with an optional stop fraction and end flag.  The run records them;
+frame, ``advance`` with an optional stop (a fraction, or an exact critical instant:
+:mod:`.stops`) and end flag.  The run records them;
 :func:`replay` feeds a recorded sequence back, so a run is reproduced event for event.
 
 * ``centralised`` -- one robot at a time, atomically: it Looks and completes its move;
@@ -35,6 +36,7 @@ from . import geometry as g
 from .invariants import Checker, Violation
 from .pattern import recognise
 from .robot import Readings
+from .stops import resolve, stop_record
 from .world import IDENTITY, MIRROR, Frame, World
 
 SCHEDULERS = ("centralised", "fsync", "ssync", "async")
@@ -116,18 +118,24 @@ class _Run:
         return self.last_decision
 
     def advance(self, i, stop=None, end=False):
-        self.actions.append({"a": "advance", "robot": i,
-                             "stop": None if stop is None else str(stop), "end": end})
-        self.world.advance(i, stop, end)
+        """``stop``: None, a rational fraction, or an exact instant's trace record
+        (:mod:`.stops`, resolved against the current state)."""
+        value = resolve(self.world, [i], stop)
+        self.actions.append({"a": "advance", "robot": i, "stop": stop_record(stop),
+                             "end": end})
+        self.world.advance(i, value, end)
         self._tick()
 
     def step(self, moves):
-        """Robots move at once (``[(robot, stop, end)]``); one robot: an ``advance``."""
+        """Robots move at once (``[(robot, stop, end)]``); one robot: an ``advance``.
+        An exact instant's record names an instant of the joint motion of them all."""
         if len(moves) == 1:
             return self.advance(*moves[0])
+        movers = [i for i, _stop, _end in moves]
+        values = [(i, resolve(self.world, movers, stop), end) for i, stop, end in moves]
         self.actions.append({"a": "step", "moves": [
-            [i, None if stop is None else str(stop), end] for i, stop, end in moves]})
-        self.world.advance_together(moves)
+            [i, stop_record(stop), end] for i, stop, end in moves]})
+        self.world.advance_together(values)
         self._tick()
 
     def _tick(self):
@@ -383,12 +391,9 @@ def _replay(r: _Run, actions):
             if act["a"] == "look":
                 r.look(int(act["robot"]), Frame.from_list(act["frame"]))
             elif act["a"] == "advance":
-                stop = act.get("stop")
-                r.advance(int(act["robot"]), None if stop is None else Fraction(stop),
-                          bool(act.get("end", False)))
+                r.advance(int(act["robot"]), act.get("stop"), bool(act.get("end", False)))
             elif act["a"] == "step":
-                r.step([(int(i), None if stop is None else Fraction(stop), bool(end))
-                        for i, stop, end in act["moves"]])
+                r.step([(int(i), stop, bool(end)) for i, stop, end in act["moves"]])
             else:
                 raise TraceMismatch(f"action {k}: unknown kind {act['a']!r}")
         except (ValueError, IndexError, KeyError, TypeError) as err:

@@ -2,7 +2,9 @@
 
 A trace holds the starting points (exact rationals as strings), the run's settings
 (scheduler, seed, readings, rigidity, the invariants checked), every adversary action in
-order (``look`` with its frame, ``advance`` with its stop fraction and end flag) and the
+order (``look`` with its frame, ``advance`` with its stop -- a fraction, or an exact
+critical instant recorded by its index and an isolating interval, :mod:`.stops` -- and
+end flag, ``step`` with one such triple per mover) and the
 result the run reported.  :func:`replay` applies the actions to the same points and
 returns the new result; :func:`same_result` says whether the two agree event for event
 (outcome, number of events and Looks, invariant counts, violation).

@@ -11,7 +11,8 @@ plain data (Pactole's demon):
   similarity, reflections included), runs :func:`.robot.decide` on it and keeps its own
   path, mapped back to the world's frame;
 * ``advance(i, stop, end)`` -- robot i moves along the current piece of its path to the
-  piece's end, or to the rational fraction ``stop`` of it (non-rigid); ``end``: the
+  piece's end, or to ``stop`` of it: a rational fraction, or an exact critical instant
+  of the motion, irrational ones included (:mod:`.stops`); ``end``: the
   adversary ends the move there (non-rigid, allowed once the straight distance from the
   move's start is at least delta, which is never more than the distance travelled);
 * ``step([(i, stop, end), ...])`` -- several robots move at once over one common time
@@ -97,6 +98,15 @@ class Frame:
 
 IDENTITY = Frame()
 MIRROR = Frame(reflect=True)
+
+
+def stop_instant(stop):
+    """The exact parameter of a stop strictly inside (0, 1), or None (the piece's end):
+    a Fraction becomes a rational MQ; an exact number (``.sign()``) stays itself."""
+    if stop is None:
+        return None
+    f = stop if hasattr(stop, "sign") else MQ.rational(stop)
+    return f if f.sign() > 0 and (f - 1).sign() < 0 else None
 
 
 @dataclass(frozen=True)
@@ -240,9 +250,12 @@ class World:
                 self.checker.after_look(self, i, frame, d, paths)
         return d
 
-    def advance(self, i: int, stop: Fraction | None = None, end: bool = False):
+    def advance(self, i: int, stop=None, end: bool = False):
         """Robot ``i`` moves along its current piece (to ``stop`` of it, or to its end);
-        ``end`` stops the whole move there (non-rigid only)."""
+        ``end`` stops the whole move there (non-rigid only).  ``stop``: None (the piece's
+        end), a rational fraction, or an exact instant of the piece (an irrational
+        critical instant, :mod:`.stops`: a multiquadratic number or a number of the
+        run's tower), in (0, 1) -- outside it, the piece's end."""
         rob = self.robots[i]
         if not rob.busy:
             raise ValueError(f"robot {i} has no pending move")
@@ -250,8 +263,9 @@ class World:
             raise ValueError("a rigid move cannot be stopped early")
         self.events += 1
         piece = rob.path[0]
-        if stop is not None and 0 < stop < 1:
-            done, rest = piece.split(MQ.rational(stop))
+        f = stop_instant(stop)
+        if f is not None:
+            done, rest = piece.split(f)
             rob.path[0] = rest
         else:
             done = piece
@@ -292,8 +306,9 @@ class World:
         for i, stop, end in moves:
             rob = self.robots[i]
             piece = rob.path[0]
-            if stop is not None and 0 < stop < 1:
-                done[i], rest = piece.split(MQ.rational(stop))
+            f = stop_instant(stop)
+            if f is not None:
+                done[i], rest = piece.split(f)
                 new = list(rob.path)
                 new[0] = rest
             else:
