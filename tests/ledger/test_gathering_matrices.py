@@ -106,22 +106,31 @@ def test_stored_matrices_are_well_formed_and_tampering_is_found(tmp_path):
 
 def test_the_ledger_cites_matrices_for_the_gathering_statements():
     ledger = parse_ledger((ROOT / "proofs" / "statements.toml").read_text(encoding="utf-8"))
-    implied = {"gather-no-obstacle": "refuted", "FormGPattern": "refuted",
-               # the handedness rows under A3=first reach the event limit
-               "GatheringPattern": None,
-               # its one violating witness is a state inside a run: counted for no grade
-               "gather-min-distance": None}
-    for label, grade in implied.items():
+    fixed_hand_first = "defaults, hand=plain; defaults, hand=mirrored"
+    for label in ("gather-no-obstacle", "FormGPattern", "GatheringPattern",
+                  "gather-min-distance"):
         s = ledger.by_label()[label]
         stored = [load_matrix(ROOT / e.path) for e in s.evidence if e.kind == "matrix"]
         assert stored, label
         assert grade_problems(s, stored) == [], label
-        assert implied_grade(stored, label)[0] == grade, label
+        grade, why = implied_grade(stored, label)
+        # with A3=first and one fixed handedness the runs reach the event limit (no exact
+        # repeat: docs/interpretations.md), so the matrices alone imply no grade ...
+        assert grade is None and why.endswith(fixed_hand_first), (label, why)
+        if label == "gather-min-distance":
+            continue        # its one violating witness is a state inside a run (below)
+        # ... and those two rows are all that is open: without them, refuted
+        cut = [{**m, "matrix": [r for r in m["matrix"] if "hand=" not in r["reading"]
+                                or r["readings"]["A3"] != "first"]} for m in stored]
+        assert implied_grade(cut, label)[0] == "refuted", label
     pocket = load_matrix(ROOT / "proofs/gathering/pocket-move-out-not-nearest.json")
     assert pocket["start"] == "mid-run"
-    # counted, the pocket alone would refute gather-min-distance under every reading
-    assert implied_grade([{**pocket, "start": "separated"}], "gather-min-distance")[0] \
-        == "refuted"
+    # counted (and without the two fixed-handedness A3=first rows), the pocket alone would
+    # refute gather-min-distance under every reading
+    rows = [r for r in pocket["matrix"]
+            if "hand=" not in r["reading"] or r["readings"]["A3"] != "first"]
+    assert implied_grade([{**pocket, "start": "separated", "matrix": rows}],
+                         "gather-min-distance")[0] == "refuted"
 
 
 def test_copies_of_the_base_row_are_one_witness_not_four():
