@@ -96,6 +96,8 @@ class Violation(Exception):
         self.instant = instant
         self.robots = tuple(robots)
         self.witness = witness
+        # robot -> its centre when the check fired (:func:`_located`), exact
+        self.positions: dict = {}
         super().__init__(f"{invariant} ({self.label}) violated at event {instant}, robots "
                          f"{list(self.robots)}: {witness}")
 
@@ -104,6 +106,9 @@ class Violation(Exception):
                "robots": list(self.robots), "witness": self.witness}
         if self.time is not None:
             out["time"] = self.time.text()
+        if self.positions:
+            out["positions"] = {str(r): [c.text() for c in p]
+                                for r, p in sorted(self.positions.items())}
         return out
 
 
@@ -139,22 +144,25 @@ class Checker:
         if self._on("I2"):
             busy = world.busy()
             if len(busy) > 1:
-                raise Violation("I2", t, busy, f"robots {busy} have pending moves at once "
-                                f"(robot {i} has just Looked)")
+                raise _located(world, Violation(
+                    "I2", t, busy, f"robots {busy} have pending moves at once "
+                                f"(robot {i} has just Looked)"))
         if not mine:
             return
         self.look_plans[i] = _plan(paths, decision)
         if self._on("I7") and i in self.in_pattern:
-            raise Violation("I7", t, [i], f"robot {i} was in the pattern and plans a move")
+            raise _located(world, Violation(
+                "I7", t, [i], f"robot {i} was in the pattern and plans a move"))
         if self._on("I5"):
             for k, rob in enumerate(world.robots):
                 if k == i:
                     continue
                 for piece in mine:
                     if g.piece_hits(piece, rob.pos):
-                        raise Violation("I5", t, [i, k], f"the planned path of robot {i} "
+                        raise _located(world, Violation(
+                            "I5", t, [i, k], f"the planned path of robot {i} "
                                         f"{_piece_text(piece)} passes within 2 of robot {k} at "
-                                        f"{g.fmt_point(rob.pos)}")
+                                        f"{g.fmt_point(rob.pos)}"))
         if self._on("I4") and (world.robots[i].role or "").startswith("leader"):
             self._nearest(world, i, t, strict=False)
         if self._on("I9"):
@@ -171,9 +179,9 @@ class Checker:
                 self.undecided_fresh += 1
                 continue
             if not agree:
-                raise Violation("I9", t, sorted(set(mine) | set(theirs)),
+                raise _located(world, Violation("I9", t, sorted(set(mine) | set(theirs)),
                                 f"a Look in frame {frame.as_list()} plans {_plan_text(mine)}, "
-                                f"one in frame {other.as_list()} plans {_plan_text(theirs)}")
+                                f"one in frame {other.as_list()} plans {_plan_text(theirs)}"))
 
     def _nearest(self, world, i, t, strict: bool, where: str = ""):
         """The lemma: the mover's distance to C is the minimum over R (at the Look a tie is
@@ -185,9 +193,10 @@ class Checker:
                 continue
             d_k = g.dist2(world.robots[k].pos, rob.centre)
             if (d_i - d_k).sign() > (-1 if strict else 0):
-                raise Violation("I4", t, [i, k], f"moving robot {i} is at squared distance "
+                raise _located(world, Violation(
+                    "I4", t, [i, k], f"moving robot {i} is at squared distance "
                                 f"{d_i.text()} from C = {g.fmt_point(rob.centre)}, robot {k} "
-                                f"of R at {d_k.text()}{where}")
+                                f"of R at {d_k.text()}{where}"))
 
     # -- after an advance ----------------------------------------------------------------
     def after_advance(self, world, i, piece):
@@ -196,9 +205,12 @@ class Checker:
         if self._on("I1"):
             for k, other in enumerate(world.robots):
                 if k != i and g.piece_hits(piece, other.pos):
-                    raise Violation("I1", t, sorted((i, k)), f"robot {i} moving "
-                                    f"{_piece_text(piece)} comes closer than 2 to robot {k} "
-                                    f"at {g.fmt_point(other.pos)}")
+                    # along the piece: the robot standing still (the mover's piece is in
+                    # the prose; its point of closest approach is not computed)
+                    raise _located(world, Violation(
+                        "I1", t, sorted((i, k)), f"robot {i} moving {_piece_text(piece)} "
+                        f"comes closer than 2 to robot {k} at {g.fmt_point(other.pos)}"),
+                        {k: other.pos})
         if (rob.role or "").startswith("leader") and self._on("I4"):
             self._nearest(world, i, t, strict=True)
         if self._on("I6") and rob.centre is not None:
@@ -245,10 +257,11 @@ class Checker:
         rob = world.robots[i]
         d = world.fresh_decision(IDENTITY)      # only its centre is read
         if d.centre != rob.centre:
-            raise Violation("I6", t, [i], f"C moved from {g.fmt_point(rob.centre)} to "
+            raise _located(world, Violation(
+                "I6", t, [i], f"C moved from {g.fmt_point(rob.centre)} to "
                             f"{g.fmt_point(d.centre)} while robot {i} moves ({rob.role} "
                             f"move), robot {i} at {g.fmt_point(rob.pos)}{where}",
-                            label=I6_LABEL_OF_ROLE.get(rob.role, I6_OTHER_LABEL))
+                            label=I6_LABEL_OF_ROLE.get(rob.role, I6_OTHER_LABEL)))
 
     def _fresh_look(self, world, i, t, where: str):
         rob = world.robots[i]
@@ -261,11 +274,11 @@ class Checker:
             self.undecided_fresh += 1
             return
         if not agree:
-            raise Violation("I3", t, sorted(set(plan) | {i}),
+            raise _located(world, Violation("I3", t, sorted(set(plan) | {i}),
                             f"robot {i} is on its way to {g.fmt_point(rob.target)}; a fresh "
                             f"Look with robot {i} at {g.fmt_point(rob.pos)}{where} plans "
                             f"{_plan_text(plan)} ({d.status}: {d.detail})",
-                            label=i3_label(rob.role, rob.kind))
+                            label=i3_label(rob.role, rob.kind)))
 
     # -- after a step of several robots ---------------------------------------------------
     def after_step(self, world, pieces: dict):
@@ -288,20 +301,21 @@ class Checker:
         for i in movers:
             for k, other in enumerate(world.robots):
                 if k not in pieces and g.piece_hits(pieces[i], other.pos):
-                    raise Violation("I1", t, sorted((i, k)), f"robot {i} moving "
-                                    f"{_piece_text(pieces[i])} comes closer than 2 to robot "
-                                    f"{k} at {g.fmt_point(other.pos)}")
+                    raise _located(world, Violation(
+                        "I1", t, sorted((i, k)), f"robot {i} moving {_piece_text(pieces[i])} "
+                        f"comes closer than 2 to robot {k} at {g.fmt_point(other.pos)}"),
+                        {k: other.pos})
         for x, i in enumerate(movers):
             for k in movers[x + 1:]:
                 tau = g.joint_motion_overlap(pieces[i], pieces[k])
                 if tau is not None:
                     p, q = pieces[i].at(MQ.rational(tau)), pieces[k].at(MQ.rational(tau))
-                    raise Violation("I1", t, [i, k], f"robots {i} and {k} move at once "
-                                    f"(robot {i} {_piece_text(pieces[i])}, robot {k} "
-                                    f"{_piece_text(pieces[k])}); at time {tau} of the "
-                                    f"interval robot {i} is at {g.fmt_point(p)}, robot {k} "
-                                    f"at {g.fmt_point(q)}: squared distance "
-                                    f"{g.dist2(p, q).text()} < 4")
+                    raise _located(world, Violation(
+                        "I1", t, [i, k], f"robots {i} and {k} move at once (robot {i} "
+                        f"{_piece_text(pieces[i])}, robot {k} {_piece_text(pieces[k])}); at "
+                        f"time {tau} of the interval robot {i} is at {g.fmt_point(p)}, robot "
+                        f"{k} at {g.fmt_point(q)}: squared distance {g.dist2(p, q).text()} "
+                        f"< 4"), {i: p, k: q})
 
     def _joint_instants(self, world, pieces: dict):
         """A fresh Look (I3), C unchanged (I6) and the leader strictly nearest (I4) at
@@ -370,11 +384,11 @@ class Checker:
                                for i in movers)
                 moving = (f"robot {movers[0]} moves" if len(movers) == 1 else
                           f"robots {list(movers)} move at once")
-                raise Violation("I9", t, sorted(set(mine) | set(theirs)),
+                raise _located(world, Violation("I9", t, sorted(set(mine) | set(theirs)),
                                 f"{moving}; with {at}{where} a "
                                 f"fresh Look in the world's frame plans {_plan_text(mine)}, "
                                 f"one in frame {other.as_list()} plans "
-                                f"{_plan_text(theirs)}")
+                                f"{_plan_text(theirs)}"))
 
 
     # -- after an arrival ----------------------------------------------------------------
@@ -390,17 +404,18 @@ class Checker:
             lost = self.in_pattern - set(pat.robots) - {i}
             defects = definition_defects(pts, pat, world.readings.lone)
             if lost:
-                raise Violation("I8", t, sorted(lost), f"robots {sorted(lost)} were in the "
-                                f"pattern and are no longer (C = {g.fmt_point(centre)})")
+                raise _located(world, Violation(
+                    "I8", t, sorted(lost), f"robots {sorted(lost)} were in the "
+                                f"pattern and are no longer (C = {g.fmt_point(centre)})"))
             if defects:
-                raise Violation("I8", t, [i], "; ".join(defects))
+                raise _located(world, Violation("I8", t, [i], "; ".join(defects)))
         if (rob.role or "").startswith("leader") and self._on("I10"):
             if rob.cut:
                 self._cut_progress(world, i, t, pat)
             elif i not in pat.robots:
-                raise Violation("I10", t, [i], f"leader {i} arrived at "
+                raise _located(world, Violation("I10", t, [i], f"leader {i} arrived at "
                                 f"{g.fmt_point(rob.pos)} but is not in the recognised pattern "
-                                f"about {g.fmt_point(centre)}: P did not grow")
+                                f"about {g.fmt_point(centre)}: P did not grow"))
         self.in_pattern |= set(pat.robots)
 
     def _cut_progress(self, world, i, t, pat):
@@ -426,11 +441,12 @@ class Checker:
             self.undecided_fresh += 1
             return
         if not same:
-            raise Violation("I10", t, sorted(set(plan) | {i}), f"the adversary ended leader "
+            raise _located(world, Violation(
+                "I10", t, sorted(set(plan) | {i}), f"the adversary ended leader "
                             f"{i}'s move at {g.fmt_point(rob.pos)}, at least delta along its "
                             f"path to {g.fmt_point(rob.target)}; a fresh Look there plans "
                             f"{_plan_text(plan)} ({d.status}): the progress measure "
-                            f"(|R|, the leader's remaining path) does not decrease")
+                            f"(|R|, the leader's remaining path) does not decrease"))
 
 
 def critical_points(piece, centre, world, mover: int) -> list:
@@ -448,6 +464,16 @@ def critical_points(piece, centre, world, mover: int) -> list:
             if fam in ("ray", "distance"):
                 out.append((what, piece.at(r.exact)))
     return out
+
+
+def _located(world, v: Violation, where: dict | None = None) -> Violation:
+    """``v`` with the named robots' centres as data (issue 34: witnesses as data beside
+    the prose): where they are when the check fires -- at the Look, at the critical
+    instant ``v.time`` inside the piece or step (the checker has put the movers there), or
+    at the event's end; ``where`` gives them when the world does not hold them."""
+    v.positions = dict(where) if where is not None else \
+        {r: world.robots[r].pos for r in v.robots}
+    return v
 
 
 @contextlib.contextmanager
