@@ -12,7 +12,7 @@ same statements (issue 32: no robot frame is special).
 
 from __future__ import annotations
 
-__all__ = ["other_handedness_findings", "frames_agree", "MIRROR_RUN"]
+__all__ = ["other_handedness_findings", "frames_agree", "decided_without_tie", "MIRROR_RUN"]
 
 MIRROR_RUN = "an observer of the other handedness (the mirror image: turn -> -turn)"
 
@@ -63,3 +63,12 @@ def frames_agree(a, b) -> bool:
         return ma == mb and a.leader == b.leader
     k = min(len(ma), len(mb))
     return ma[:k] == mb[:k] and (k > 0 or a.complete == b.complete)
+
+
+def decided_without_tie(run) -> bool:
+    """The run (``PaperResult``) chose every leader without a tie: no choice depended on
+    how the observer labels the vertices (a tied lexicographic minimum is taken at the
+    first vertex from the observer's +x ray, which a rotation of the frame changes).  A
+    reading whose runs agree only through such a tie does not rescue a statement: the
+    agreement would not survive a rotated frame."""
+    return run.complete and not any(e.get("labelling_dependent") for e in run.trace)

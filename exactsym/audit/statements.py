@@ -47,7 +47,7 @@ was checked (``docs/interpretations.md``, "Bounds of the family layer").
 from __future__ import annotations
 
 from .groups import SubGroups, group_about_centre
-from .handedness import MIRROR_RUN, frames_agree, other_handedness_findings
+from .handedness import MIRROR_RUN, decided_without_tie, frames_agree, other_handedness_findings
 from .levels import level_findings
 from .result import AuditResult
 from ..geometry.configuration import Configuration, Similarity, no_cycle_collection
@@ -624,7 +624,7 @@ def _frame_difference(config: Configuration, paper: F.PaperResult, res: F.PaperR
             uf = _procedure(where, frame, kw, reading="unordered")
         except (ArithmeticError, NotImplementedError, ValueError):
             u0 = uf = None
-        if u0 is not None and u0.complete and uf.complete and _actions(u0) == _actions(uf):
+        if u0 and decided_without_tie(u0) and decided_without_tie(uf) and _actions(u0) == _actions(uf):
             d = _difference_entry("Elect_Leader_Asym", first, second, frame, continued,
                                   kind="reading")
             d["reading"] = "literal: the ordered pair (CW, ACW) of Elect_Leader_Asym"

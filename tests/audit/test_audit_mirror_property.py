@@ -99,3 +99,18 @@ def test_random_polar_configurations_have_the_same_findings_in_every_frame(point
     config = polar_configuration(points)
     moved = polar_configuration([sim(p) for p in points])
     assert labels(moved) == labels(config)
+
+
+@pytest.mark.parametrize("reflect", [False, True])
+@pytest.mark.parametrize("turn", [fmpq(1, 3), fmpq(2, 3)])
+def test_a_rescue_that_rests_on_a_tie_is_no_rescue(reflect, turn):
+    """asym-pair-large: under the unordered reading of Elect_Leader_Asym both handednesses
+    tie on G(1,2,3) and take the first vertex from the observer's +x ray; rotated by 1/3
+    turn the tied choices happened to agree, and the audit called the frame difference
+    Elect_Leader_Asym's reading instead of lem-asym-ord's conclusion.  A reading whose runs
+    agree only through a tie rescues nothing, in every frame (found by this file's
+    property on a random draw)."""
+    config, expected = case("family/asym-pair-large.toml")
+    copy = config.transformed(Similarity(reflect=reflect, turn=turn, scale=1))
+    assert labels(copy) == expected
+    assert ("lem-asym-ord", "conclusion") in expected
