@@ -27,6 +27,12 @@ from ..exact.multiquadratic import MQ, sqrt_rational
 from . import geometry as g
 from .robot import radial_point
 
+#: How far beyond 2l + 2, 2l + 4, 2l + 6 (in robot radii) the detours to a slot turn:
+#: the circle of radius exactly 2l + 2 touches every robot of layer l it passes, so a
+#: detour on it is never clear; 1/16 keeps it clear of them, as the rational points
+#: "less than 1/8 beyond" did before (issue 31), and is the same in every frame.
+DETOUR_MARGIN = fmpq(1, 16)
+
 #: tan(angle / 2) of the detour rotations tried, smallest first.
 DETOUR_TANGENTS = tuple(fmpq(1, 2 ** k) for k in range(4, -1, -1))
 
@@ -245,8 +251,9 @@ def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
       when that root cannot be built (the kernel's limits);
     * for h = 2l + 2, 2l + 4, 2l + 6 with h^2 < ``limit2`` (the squared distance of R's
       next robot to C: the mover stays the nearest): radially in to the point of the
-      mover's ray at distance h (:func:`ray_point`), along that circle to the target's
-      ray, radially in; then the segment to the target's ray at radius h and radially in;
+      mover's ray at distance h + 1/16 (:data:`DETOUR_MARGIN` robot radii beyond h,
+      :func:`ray_point`), along that circle to the target's ray, radially in; then the
+      segment to the target's ray at radius h and radially in;
     * the segment to the target.
 
     Every point and radius is built from distances and directions from C, so the paths
@@ -278,9 +285,10 @@ def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
     for h in (two_l + 2 * unit, two_l + 4 * unit, two_l + 6 * unit):
         if limit2 is not None and (limit2 - h * h).sign() <= 0:
             continue            # I4: the mover stays strictly nearer to C than R's others
-        if rho is not None and (r2 - h * h).sign() >= 0:
-            a = ray_point(centre, p, h, rho)
-            b = g.add(centre, g.scale(w, fmpq(h) / two_l))
+        hd = h + DETOUR_MARGIN * unit   # beyond h: a circle of radius 2l + 2 touches layer l
+        if rho is not None and (r2 - hd * hd).sign() >= 0:
+            a = ray_point(centre, p, hd, rho)
+            b = g.add(centre, g.scale(w, fmpq(hd) / two_l))
             for sense in senses:
                 pieces = ([g.Segment(p, a)] if a != p else []) + \
                     g.arc_path(centre, a, b, sense)

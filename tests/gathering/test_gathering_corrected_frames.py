@@ -142,10 +142,10 @@ def test_random_starts_plan_the_same_in_every_frame(data, n, t, s, reflect, tx, 
 
 
 def test_the_detour_point_is_at_the_same_distance_in_every_frame():
-    """The point where a path to a slot leaves the mover's ray is at distance exactly h
-    from C (2l + 2 for a slot of layer l), whatever the ray's integer direction: before
-    (issue 31) its radius was the first m |e| / (8 (isqrt|e|^2 + 1)) >= h, which moved
-    with the frame."""
+    """The point where a path to a slot leaves the mover's ray is at distance exactly
+    h + 1/16 from C (h = 2l + 2, 2l + 4, 2l + 6 for a slot of layer l), whatever the
+    ray's integer direction: before (issue 31) its radius was the first
+    m |e| / (8 (isqrt|e|^2 + 1)) >= h, which moved with the frame."""
     zero = (MQ.rational(0), MQ.rational(0))
     target = (MQ.rational(2), MQ.rational(0))
     for p in [(F(-3), F(7)), (F(-33, 5), F(44, 5)), (F(-7), F(-24)), (F(9), F(10))]:
@@ -156,7 +156,9 @@ def test_the_detour_point_is_at_the_same_distance_in_every_frame():
                     isinstance(path[1], g.Arc):
                 radii.add(g.dist2(path[0].end, zero).to_fmpq())
         r2 = p[0] ** 2 + p[1] ** 2
-        assert radii == {fmpq(h * h) for h in (4, 6, 8) if h * h < r2}, (p, radii)
+        want = [F(65, 16), F(97, 16), F(129, 16)]          # 2l + 2, 4, 6 and 1/16
+        assert radii == {fmpq(h.numerator ** 2, h.denominator ** 2) for h in want
+                         if h * h <= r2}, (p, radii)
 
 
 def test_an_opposite_target_turns_by_distances_not_by_the_frame():
