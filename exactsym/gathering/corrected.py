@@ -429,7 +429,7 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
         paths = [[g.Segment(pts[m], target)]]
         allowed = pat.robots
     else:
-        paths = list(to_slot_paths(pts[m], centre, target, l, unit, None, tower))
+        paths = list(to_slot_paths(pts[m], centre, target, l, unit, None, tower, pts, m))
         allowed = pat.robots
     blockers = set()
     for path in paths:
@@ -518,7 +518,7 @@ def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, to
     else:
         others = [g.dist2(pts[j], centre) for j in R if j != i]
         limit2 = min(others, key=SortKey) if others else None
-        paths = to_slot_paths(pts[i], centre, target, l, unit, limit2, tower)
+        paths = to_slot_paths(pts[i], centre, target, l, unit, limit2, tower, pts, i)
         allowed = pat.robots
     for path in paths:
         if not path or (tied_start and isinstance(path[0], g.Arc)):

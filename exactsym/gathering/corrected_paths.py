@@ -20,14 +20,18 @@ same target, I3): ``docs/gathering.md``, "The corrected variant".
 
 from __future__ import annotations
 
-from math import isqrt
-
 from flint import fmpq
 
 from ..exact.algebraic.run_tower import sqrt_exact
 from ..exact.multiquadratic import MQ, sqrt_rational
 from . import geometry as g
 from .robot import radial_point
+
+#: How far beyond 2l + 2, 2l + 4, 2l + 6 (in robot radii) the detours to a slot turn:
+#: the circle of radius exactly 2l + 2 touches every robot of layer l it passes, so a
+#: detour on it is never clear; 1/16 keeps it clear of them, as the rational points
+#: "less than 1/8 beyond" did before (issue 31), and is the same in every frame.
+DETOUR_MARGIN = fmpq(1, 16)
 
 #: tan(angle / 2) of the detour rotations tried, smallest first.
 DETOUR_TANGENTS = tuple(fmpq(1, 2 ** k) for k in range(4, -1, -1))
@@ -169,7 +173,10 @@ class _Key:
 
 def ray_direction(centre, p):
     """The primitive integer direction of the ray from C through ``p`` (the same from
-    every point of the ray), or None when C is irrational or the slope is."""
+    every point of the ray), or None when C is irrational or the slope is.  Used only to
+    *write* the point of layer 1 (:func:`layer_one_point`), whose place does not depend
+    on it; never to place a point (issue 31: a radius built from it depends on the
+    frame)."""
     v = g.sub(p, centre)
     if not (centre[0].is_rational() and centre[1].is_rational()):
         return None
@@ -186,10 +193,12 @@ def ray_direction(centre, p):
 
 
 def layer_one_point(centre, p, unit, tower=None):
-    """The point of layer 1 on the mover's ray: by the ray's integer direction when it has
-    one (so a robot stopped on its way finds the same point), else by its radius (a
-    nested radical when ``|p - C|^2`` is irrational: a point of the snapshot's
-    ``tower``, :func:`.robot.radial_point`)."""
+    """The point of layer 1 on the mover's ray, ``C + 2 unit (p - C) / |p - C|``: the same
+    point in every frame (its distance to C is 2 unit, its direction that of the ray).
+    Written with the ray's integer direction when it has one (its square root is then
+    that of a rational, whatever ``|p - C|^2`` is), else by its radius (a nested radical
+    when ``|p - C|^2`` is irrational: a point of the snapshot's ``tower``,
+    :func:`.robot.radial_point`)."""
     e = ray_direction(centre, p)
     if e is None:
         return radial_point(centre, p, 2 * unit, tower)
@@ -197,25 +206,41 @@ def layer_one_point(centre, p, unit, tower=None):
     return (centre[0] + k * e[0], centre[1] + k * e[1])
 
 
-def ray_point(centre, p, h):
-    """A rational point on the ray from C through ``p`` at distance at least ``h``, less
-    than 1/8 beyond (the first of ``C + e m/den``, ``e`` the ray's primitive integer
-    direction, ``den = 8 (isqrt|e|^2 + 1)``, m = 1, 2, ...), found alike from every point
-    of the ray; None when C is irrational or the ray's slope is."""
-    e = ray_direction(centre, p)
-    if e is None:
-        return None
-    e2 = e[0] * e[0] + e[1] * e[1]
-    den = 8 * (isqrt(e2) + 1)                       # steps of |e|/den < 1/8 along the ray
-    need = den * den * fmpq(h) * fmpq(h) / e2       # m^2 >= den^2 h^2 / |e|^2
-    m = max(1, isqrt(int(need.p) // int(need.q)))
-    while m * m < need:
-        m += 1
-    k = fmpq(m, den)
-    return (centre[0] + k * e[0], centre[1] + k * e[1])
+def ray_point(centre, p, h, rho):
+    """The point of the ray from C through ``p`` at distance exactly ``h`` from C (``rho
+    = |p - C|``, exact): ``C + (p - C) h / rho``.  Found alike from every point of the
+    ray and in every frame (a distance and a direction; issue 31: the earlier rational
+    point just beyond h, built from the ray's integer direction in the observer's
+    coordinates, had a radius that changed with the frame)."""
+    return g.add(centre, g.scale(g.sub(p, centre), h / rho))
 
 
-def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None):
+def tie_senses(p, centre, target, pts, mover):
+    """The senses of the arcs from ``p`` to the target's ray when that ray is opposite
+    to the mover's (both ways equally long: choosing by the observer's clockwise would be
+    a handedness): the sense whose quarter point ``Q = C + sense * quarter(p - C)``
+    (scaled to the target's radius) has the lexicographically larger sorted squared
+    distances to the other robots first -- a choice by distances alone, the same in a
+    mirrored frame; equal: none (no handedness is used)."""
+    w = g.sub(target, centre)
+    keys = {}
+    for sense in (1, -1):
+        # quarter(p - C, sense) has the direction of -quarter(w, sense): p is opposite
+        q = g.sub(centre, g.quarter(w, sense))
+        keys[sense] = sorted((g.dist2(q, r) for j, r in enumerate(pts) if j != mover),
+                             key=_Key)
+    c = 0
+    for x, y in zip(keys[1], keys[-1]):
+        c = (x - y).sign()
+        if c:
+            break
+    if c == 0:
+        return ()
+    return (1, -1) if c > 0 else (-1, 1)
+
+
+def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
+                  mover=None):
     """Paths to a point of layer l (``|target - C| = 2l unit``) that the mover finds
     again from any point of them (so a fresh Look on the way plans the same target):
 
@@ -225,35 +250,49 @@ def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None):
       multiquadratic field: a number of ``tower`` or of a new run tower); left out only
       when that root cannot be built (the kernel's limits);
     * for h = 2l + 2, 2l + 4, 2l + 6 with h^2 < ``limit2`` (the squared distance of R's
-      next robot to C: the mover stays the nearest): radially in to the rational point
-      of the mover's ray just beyond radius h (:func:`ray_point`), along that circle to
-      the target's ray, radially in; then the segment to the target's ray at radius h
-      and radially in;
+      next robot to C: the mover stays the nearest): radially in to the point of the
+      mover's ray at distance h + 1/16 (:data:`DETOUR_MARGIN` robot radii beyond h,
+      :func:`ray_point`), along that circle to the target's ray, radially in; then the
+      segment to the target's ray at radius h and radially in;
     * the segment to the target.
 
-    The mover's distance to C stays below ``limit2`` along them (I4)."""
+    Every point and radius is built from distances and directions from C, so the paths
+    are the same in every frame (issue 31).  The arcs go the shorter way (the sign of
+    ``cross(v, w)``, which a reflection flips together with the arcs' sense); when the
+    target's ray is opposite to the mover's both ways are equally long, and the order of
+    the two senses is :func:`tie_senses`'s (distances only; none on a tie, and none
+    without ``pts``).  The mover's distance to C stays below ``limit2`` along them
+    (I4)."""
     v = g.sub(p, centre)
     w = g.sub(target, centre)                          # |w| = 2l unit
     if g.cross(v, w).is_zero() and g.dot(v, w).sign() > 0:
         yield [g.Segment(p, target)]                   # already on the target's ray
         return
+    side = g.cross(v, w).sign()
+    if side:
+        senses = (side,)
+    elif pts is None:
+        senses = ()
+    else:
+        senses = tie_senses(p, centre, target, pts, mover)
     r2 = g.dot(v, v)
     two_l = 2 * l * unit
     rho = radius_of(r2, tower)
     if rho is not None:
         b = g.add(centre, g.scale(w, rho / two_l))
-        sense = 1 if g.cross(v, w).sign() > 0 else -1
-        yield g.arc_path(centre, p, b, sense) + [g.Segment(b, target)]
+        for sense in senses:
+            yield g.arc_path(centre, p, b, sense) + [g.Segment(b, target)]
     for h in (two_l + 2 * unit, two_l + 4 * unit, two_l + 6 * unit):
         if limit2 is not None and (limit2 - h * h).sign() <= 0:
             continue            # I4: the mover stays strictly nearer to C than R's others
-        a = ray_point(centre, p, h)
-        if a is not None and (r2 - g.dist2(a, centre)).sign() >= 0:
-            ra = sqrt_rational(g.dist2(a, centre).to_fmpq())
-            b = g.add(centre, g.scale(w, ra / two_l))
-            sense = 1 if g.cross(v, w).sign() > 0 else -1
-            pieces = ([g.Segment(p, a)] if a != p else []) + g.arc_path(centre, a, b, sense)
-            yield pieces + [g.Segment(b, target)]
+        hd = h + DETOUR_MARGIN * unit   # beyond h: a circle of radius 2l + 2 touches layer l
+        if rho is not None and (r2 - hd * hd).sign() >= 0:
+            a = ray_point(centre, p, hd, rho)
+            b = g.add(centre, g.scale(w, fmpq(hd) / two_l))
+            for sense in senses:
+                pieces = ([g.Segment(p, a)] if a != p else []) + \
+                    g.arc_path(centre, a, b, sense)
+                yield pieces + [g.Segment(b, target)]
         b = g.add(centre, g.scale(w, fmpq(h) / two_l))
         yield [g.Segment(p, b), g.Segment(b, target)]
     yield [g.Segment(p, target)]
