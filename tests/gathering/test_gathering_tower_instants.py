@@ -194,16 +194,16 @@ def test_decided_sqrt_finds_every_root_in_a_larger_field(coeffs, m):
 
 def test_a_run_checks_its_nested_radical_instants_at_the_instant():
     # the corrected variant's detour (an arc, then a segment) meets instants that need
-    # nested radicals; before towers they were seen on both sides only (sided 4).  Two
-    # since its paths keep clear of every robot and its slots are chosen as in
-    # docs/gathering-corrected.md (issue 31; four before: the run's later paths differ)
+    # nested radicals; before towers they were seen on both sides only (sided 4).  The
+    # count follows the variant's paths (issue 31): four with the detour points built from
+    # distances to C (the frame fix; two with the integer-direction points before it)
     from pathlib import Path
     from exactsym.gathering.cases import run_case_file
     case = Path(__file__).resolve().parents[2] / "cases" / "gathering" / \
         "corrected-obstacle-beside-path.toml"
     run = run_case_file(case)
     assert not run.failures and run.result.outcome == "gathered"
-    assert run.result.checks["nested"] == 2 and run.result.checks["sided"] == 0
+    assert run.result.checks["nested"] == 4 and run.result.checks["sided"] == 0
 
 
 def test_numbers_of_two_towers_are_never_declared_different():
