@@ -511,6 +511,40 @@ def _joint_key(checker, world, full_pieces: dict, sec_r: bool) -> tuple:
             if checker.frames else ())
 
 
+#: (the whole joint motion and the state before it) -> its look points, when none is a
+#: number of the run's tower (each copy of the world, :func:`.search.fork`, owns its tower)
+_POINTS: dict = {}
+_POINTS_MAX = 512
+
+
+def _whole_motion_points(world, pieces: dict, before: dict, sec_r: bool) -> tuple:
+    """:func:`.joint_instants.joint_look_points` of the whole pieces, computed on the
+    state before the step (every mover at its piece's start, its whole path pending):
+    the same for every stop of the motion, so computed once for them all."""
+    rob = world.robots
+    key = (tuple((point_key(r.pos) if k not in pieces else None,
+                  tuple(piece_key(pc) for pc in (before[k][1] if k in pieces else r.path)),
+                  None if r.target is None else point_key(r.target),
+                  None if r.centre is None else point_key(r.centre), tuple(sorted(r.r_set)))
+                 for k, r in enumerate(rob)), tuple(sorted(pieces)), world.readings, sec_r)
+    got = _POINTS.get(key)
+    if got is not None:
+        return got
+    after = {i: (rob[i].pos, rob[i].path) for i in pieces}
+    try:
+        for i in pieces:
+            rob[i].pos, rob[i].path = before[i][0], before[i][1]
+        got = joint_look_points(pieces, world, sec_r)
+    finally:
+        for i in pieces:
+            rob[i].pos, rob[i].path = after[i]
+    if not any(is_tower(jp.tau) for jp in got[0]):
+        if len(_POINTS) >= _POINTS_MAX:
+            _POINTS.clear()
+        _POINTS[key] = got
+    return got
+
+
 def _covered_points(world, full, sec_r: bool):
     """``(points, sided, scale)`` for a joint step that moved every mover from the start
     of its piece ``full[0][i]`` to the common stop ``full[1]`` (None: the pieces' ends):
@@ -522,8 +556,8 @@ def _covered_points(world, full, sec_r: bool):
     whole motion's point there.  None when a stretch of the step holds no such point
     (the stop inside the first stretch, or inside an instant's isolating interval) or a
     comparison fails: the caller computes the step's own instants."""
-    pieces, f = full
-    points, sided = joint_look_points(pieces, world, sec_r)
+    pieces, f, before = full
+    points, sided = _whole_motion_points(world, pieces, before, sec_r)
     if f is None:
         return points, sided, (lambda tau: tau)
     try:
