@@ -9,7 +9,10 @@ n = 12).
    n = 8, 10, 12 robots (``bench_gather.random_config``), every invariant on, default
    readings; and the same under A3 = all with I2 and I9 off (several robots move at
    once: joint steps, the costliest states; budget 2,000 unless ``--full``).  Target:
-   under 60 s CPU each.
+   under 60 s CPU each.  Joint steps: n = 12, budget 2,000, 79.1 s before the stops of a
+   joint motion shared its instants and verdicts (``invariants._covered_points``), 7.7 s
+   after; with the budget of 10,000 the search goes deeper into states whose paper-layer
+   decisions need K(alpha) inverses, and still takes several minutes at n = 12.
 2. One exact event at n = 30 (a Look with its invariant checks, or an advance along a
    piece with its checks at every critical instant): the median CPU time over an ASYNC
    run with every invariant on (``schedulers.run``, at most 300 events), against the

@@ -36,6 +36,8 @@ from __future__ import annotations
 import contextlib
 from dataclasses import dataclass, field
 
+from flint import fmpq
+
 from ..exact.algebraic.algebraic_numbers import is_algebraic
 from ..exact.algebraic.tower_numbers import is_tower
 from ..exact.multiquadratic import MQ
@@ -43,6 +45,7 @@ from . import geometry as g
 from .instants import critical_roots, look_points
 from .joint_instants import joint_look_points
 from .pattern import definition_defects, recognise
+from .state_key import piece_key, point_key
 from .world import IDENTITY, MIRROR
 
 #: How a violation names the statement it contradicts: the paper's ``\\label`` where
@@ -281,7 +284,7 @@ class Checker:
                             label=i3_label(rob.role, rob.kind)))
 
     # -- after a step of several robots ---------------------------------------------------
-    def after_step(self, world, pieces: dict):
+    def after_step(self, world, pieces: dict, full=None):
         """One interval of simultaneous motion (``World.advance_together``; the world's
         positions are already the step's end).  I1, exact: each mover's piece against
         every robot standing still, each two movers by their joint motion
@@ -290,7 +293,7 @@ class Checker:
         critical instants of the joint motion (:mod:`.joint_instants`): every mover
         where it is at each instant (the step's end is checked by ``after_advance``)."""
         self._joint_collision(world, pieces)
-        self._joint_instants(world, pieces)
+        self._joint_instants(world, pieces, full)
 
     def _joint_collision(self, world, pieces: dict):
         if "I1" not in self.enabled:
@@ -317,7 +320,7 @@ class Checker:
                         f"{k} at {g.fmt_point(q)}: squared distance {g.dist2(p, q).text()} "
                         f"< 4"), {i: p, k: q})
 
-    def _joint_instants(self, world, pieces: dict):
+    def _joint_instants(self, world, pieces: dict, full=None):
         """A fresh Look (I3), C unchanged (I6) and the leader strictly nearest (I4) at
         each critical instant of the joint motion that the kernel holds and at one
         rational instant in each stretch between: all movers moved to that instant.  At
@@ -337,17 +340,38 @@ class Checker:
             return
         t = world.events
         ends = {i: rob[i].pos for i in movers}
-        points, sided = joint_look_points(pieces, world, world.readings.A1 == "sec-r")
+        sec_r = world.readings.A1 == "sec-r"
+        shared = None if full is None or not REUSE_JOINT else \
+            _covered_points(world, full, sec_r)
+        if shared is None:
+            points, sided = joint_look_points(pieces, world, sec_r)
+            motion, scale = None, None
+        else:
+            points, sided, scale = shared
+            motion = _joint_key(self, world, full[0], sec_r)
         self.counts["sided"] += sided
         self.counts["nested"] += sum(1 for jp in points if is_tower(jp.tau))
         self.counts["algebraic"] += sum(1 for jp in points if is_algebraic(jp.tau))
         try:
-            for jp in points:
-                for i in movers:
-                    rob[i].pos = pieces[i].at(jp.tau)
+            for index, jp in enumerate(points):
+                done = None if motion is None else _VERDICTS.get((motion, index))
+                if done is not None:          # this instant of this motion passed before
+                    for name, k in done[0]:
+                        self.counts[name] += k
+                    self.undecided_fresh += done[1]
+                    continue
+                before = (dict(self.counts), self.undecided_fresh)
+                if motion is None:
+                    for i in movers:
+                        rob[i].pos = pieces[i].at(jp.tau)
+                    tau = jp.tau
+                else:
+                    for i in movers:
+                        rob[i].pos = full[0][i].at(jp.tau)
+                    tau = scale(jp.tau)       # the time of the (shorter) step itself
                 self.counts["instants"] += 1
-                where = f" (time {jp.tau.text()} of the step: {jp.where})"
-                with _at_time(jp.tau):
+                where = f" (time {tau.text()} of the step: {jp.where})"
+                with _at_time(tau):
                     for i in looked:
                         if i4 and (rob[i].role or "").startswith("leader"):
                             self.counts["I4"] += 1
@@ -361,6 +385,14 @@ class Checker:
                     if i9 and jp.families & {"sec", "symmetry"}:
                         self.counts["I9"] += 1
                         self._mirror_look(world, movers, t, where)
+                if motion is not None:        # passed: a sibling stop reuses it
+                    if len(_VERDICTS) >= _VERDICTS_MAX:
+                        _VERDICTS.clear()
+                    _VERDICTS[(motion, index)] = (
+                        tuple((name, k - before[0].get(name, 0))
+                              for name, k in self.counts.items()
+                              if k != before[0].get(name, 0)),
+                        self.undecided_fresh - before[1])
         finally:
             for i in movers:
                 rob[i].pos = ends[i]
@@ -447,6 +479,103 @@ class Checker:
                             f"path to {g.fmt_point(rob.target)}; a fresh Look there plans "
                             f"{_plan_text(plan)} ({d.status}): the progress measure "
                             f"(|R|, the leader's remaining path) does not decrease"))
+
+
+#: a joint step checks the instants of the whole joint motion that it covers, each
+#: verdict shared with the sibling stops of the same motion (``_VERDICTS``); False: every
+#: step's own instants, checked anew (the reference the tests compare with)
+REUSE_JOINT = True
+#: (joint motion key, index of an instant among the motion's look points) -> the counts
+#: and undecided Looks its checks added, when they all passed (a failure is never
+#: stored: it is checked again, with the stop's own time in its text)
+_VERDICTS: dict = {}
+_VERDICTS_MAX = 20_000
+
+
+def _joint_key(checker, world, full_pieces: dict, sec_r: bool) -> tuple:
+    """Everything the checks at an instant of a joint motion read: the robots standing
+    still, each mover's whole piece, role, kind, C, R, target and last plan, the
+    readings and the checker's switches (exact keys: :mod:`.state_key`, never ``==``)."""
+    def plan_key(plan):
+        return None if plan is None else tuple(
+            (k, role, point_key(target)) for k, (role, target) in sorted(plan.items()))
+    movers = sorted(full_pieces)
+    rob = world.robots
+    return (tuple(None if k in full_pieces else point_key(r.pos) for k, r in enumerate(rob)),
+            tuple((i, piece_key(full_pieces[i]), rob[i].role, rob[i].kind,
+                   None if rob[i].centre is None else point_key(rob[i].centre),
+                   tuple(sorted(rob[i].r_set)),
+                   None if rob[i].target is None else point_key(rob[i].target),
+                   plan_key(checker.look_plans.get(i))) for i in movers),
+            world.readings, sec_r, checker.enabled, tuple(f.as_list() for f in checker.frames)
+            if checker.frames else ())
+
+
+#: (the whole joint motion and the state before it) -> its look points, when none is a
+#: number of the run's tower (each copy of the world, :func:`.search.fork`, owns its tower)
+_POINTS: dict = {}
+_POINTS_MAX = 512
+
+
+def _whole_motion_points(world, pieces: dict, before: dict, sec_r: bool) -> tuple:
+    """:func:`.joint_instants.joint_look_points` of the whole pieces, computed on the
+    state before the step (every mover at its piece's start, its whole path pending):
+    the same for every stop of the motion, so computed once for them all."""
+    rob = world.robots
+    key = (tuple((point_key(r.pos) if k not in pieces else None,
+                  tuple(piece_key(pc) for pc in (before[k][1] if k in pieces else r.path)),
+                  None if r.target is None else point_key(r.target),
+                  None if r.centre is None else point_key(r.centre), tuple(sorted(r.r_set)))
+                 for k, r in enumerate(rob)), tuple(sorted(pieces)), world.readings, sec_r)
+    got = _POINTS.get(key)
+    if got is not None:
+        return got
+    after = {i: (rob[i].pos, rob[i].path) for i in pieces}
+    try:
+        for i in pieces:
+            rob[i].pos, rob[i].path = before[i][0], before[i][1]
+        got = joint_look_points(pieces, world, sec_r)
+    finally:
+        for i in pieces:
+            rob[i].pos, rob[i].path = after[i]
+    if not any(is_tower(jp.tau) for jp in got[0]):
+        if len(_POINTS) >= _POINTS_MAX:
+            _POINTS.clear()
+        _POINTS[key] = got
+    return got
+
+
+def _covered_points(world, full, sec_r: bool):
+    """``(points, sided, scale)`` for a joint step that moved every mover from the start
+    of its piece ``full[0][i]`` to the common stop ``full[1]`` (None: the pieces' ends):
+    the look points of the whole motion (:func:`.joint_instants.joint_look_points`) that
+    lie before the stop, and ``scale`` mapping the whole motion's time to the step's.
+    A piece's prefix moves along the piece's own parametrisation (``split(f)``:
+    ``prefix.at(s) = piece.at(f s)``, segment and arc alike), so the step's instants are
+    the whole motion's before ``f`` and each stretch between them is sampled by the
+    whole motion's point there.  None when a stretch of the step holds no such point
+    (the stop inside the first stretch, or inside an instant's isolating interval) or a
+    comparison fails: the caller computes the step's own instants."""
+    pieces, f, before = full
+    points, sided = _whole_motion_points(world, pieces, before, sec_r)
+    if f is None:
+        return points, sided, (lambda tau: tau)
+    try:
+        kept = [jp for jp in points if (jp.tau - f).sign() < 0]
+    except (TypeError, ValueError, ArithmeticError):
+        return None
+    if not kept or kept[-1].exact:
+        return None
+    after = points[len(kept):len(kept) + 1]
+    if after and not after[0].exact and after[0].where.startswith("just after"):
+        return None               # an instant not held: is it before the stop?
+    held = sum(1 for jp in kept if jp.exact)
+    sided_kept = sum(1 for jp in kept if jp.where.startswith("just after")) - held
+    if getattr(f, "is_rational", lambda: False)():
+        q = f.to_fmpq()
+        inv = MQ.rational(fmpq(q.q, q.p))
+        return kept, sided_kept, (lambda tau: tau * inv)
+    return kept, sided_kept, (lambda tau: tau / f)
 
 
 def critical_points(piece, centre, world, mover: int) -> list:

@@ -45,6 +45,7 @@ from . import geometry as g
 from .corrected import decide_for
 from .robot import Decision, Readings
 from .run_home import RunHome
+from .state_key import number_key
 
 
 @dataclass(frozen=True)
@@ -303,6 +304,8 @@ class World:
                 raise ValueError("a rigid move cannot be stopped early")
         self.events += 1
         done, cut = {}, {}
+        whole = {i: self.robots[i].path[0] for i, _, _ in moves}
+        before = {i: (self.robots[i].pos, list(self.robots[i].path)) for i in whole}
         for i, stop, end in moves:
             rob = self.robots[i]
             piece = rob.path[0]
@@ -325,7 +328,8 @@ class World:
             self.log.append(Step(self.events, i, "advance", (piece,)))
         if self.checker is not None:
             with self.home.scratch():   # fresh Looks: hypothetical
-                self.checker.after_step(self, {i: d for i, (d, _) in done.items()})
+                self.checker.after_step(self, {i: d for i, (d, _) in done.items()},
+                                        _common_stop(whole, before, moves))
         if self.checker is not None:
             # the other invariants at the interval's end, a real instant: a zero-length
             # piece there (each mover's own piece would be checked against the others'
@@ -363,3 +367,16 @@ class World:
             key.append((r.pos, tuple(r.path)))
         return tuple(key)
 
+
+def _common_stop(whole: dict, before: dict, moves) -> tuple | None:
+    """``(pieces, f, before)`` (``before``: each mover's position and path before the
+    step) when every mover of a step stops at the same instant ``f`` of its
+    whole piece (None: the pieces' ends), so that the step is the joint motion of the
+    whole pieces up to ``f`` (:meth:`.invariants.Checker.after_step` checks its instants
+    there); None otherwise."""
+    stops = [stop_instant(stop) for _i, stop, _end in moves]
+    if all(s is None for s in stops):
+        return whole, None, before
+    if any(s is None for s in stops):
+        return None
+    return (whole, stops[0], before) if len({number_key(s) for s in stops}) == 1 else None
