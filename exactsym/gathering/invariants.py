@@ -495,7 +495,8 @@ _VERDICTS_MAX = 20_000
 def _joint_key(checker, world, full_pieces: dict, sec_r: bool) -> tuple:
     """Everything the checks at an instant of a joint motion read: the robots standing
     still, each mover's whole piece, role, kind, C, R, target and last plan, the
-    readings and the checker's switches (exact keys: :mod:`.state_key`, never ``==``)."""
+    readings, the checker's switches and the deciding function (exact keys:
+    :mod:`.state_key`, never ``==``)."""
     def plan_key(plan):
         return None if plan is None else tuple(
             (k, role, point_key(target)) for k, (role, target) in sorted(plan.items()))
@@ -508,7 +509,10 @@ def _joint_key(checker, world, full_pieces: dict, sec_r: bool) -> tuple:
                    None if rob[i].target is None else point_key(rob[i].target),
                    plan_key(checker.look_plans.get(i))) for i in movers),
             world.readings, sec_r, checker.enabled, tuple(f.as_list() for f in checker.frames)
-            if checker.frames else ())
+            if checker.frames else (),
+            # the algorithm deciding (the paper's, the corrected variant, a test's stub):
+            # a verdict of one is never another's
+            world.decide)
 
 
 #: (the whole joint motion and the state before it) -> its look points, when none is a
