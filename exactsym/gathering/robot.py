@@ -259,7 +259,7 @@ def form_pattern_path(p, pts, pat: Pattern, centre, readings: Readings, unit=1,
         return [g.Segment(p, centre)]
     if pat.centre_robot is None:
         raise NoRule("C is occupied (A4) but no robot is centred on it: FormGPattern has "
-                     "no layer to extend, so the printed algorithm moves nobody")
+                     "no layer to extend, so the printed algorithm gives the leader no move")
     l = pat.last_layer
     if pat.last_full():
         return [g.Segment(p, radial_point(centre, p, 2 * (l + 1) * unit, tower))]

@@ -5,8 +5,9 @@ A ``{matrix = "proofs/gathering/NAME.json"}`` evidence entry names a stored read
 of the paper's algorithm, both handednesses; :mod:`exactsym.gathering.reading_matrix`),
 with the case, the search bounds of each row, whether the start is the paper's (separated
 robots) or a state inside a run (``gather_mid_run``: counted for no grade), whether the
-ground truth elects a leader at the start, and the CPU seconds it took.  ``exactsym ledger --write-matrices`` (re)writes
-every such file from its case; ``--check`` re-runs them and compares the outcomes.
+ground truth elects a leader at the start, and the CPU seconds it took.  ``exactsym
+ledger --write-matrix CASE`` (``all``: every matrix the ledger cites) writes such a file from
+its case; ``--check`` re-runs them and compares the outcomes.
 
 What a row says about a statement S (:func:`row_verdict`):
 

@@ -1,5 +1,6 @@
-"""A reading under which the printed FormGPattern has no instruction moves nobody: the run
-is a proved stall (the algorithm's failure), never "undecided" (the kernel's limit)."""
+"""A reading under which the printed FormGPattern has no instruction gives the leader no
+move (what else is planned is still made): the run ends in a proved stall or cycle (the
+algorithm's failure), never "undecided" (the kernel's limit)."""
 
 from pathlib import Path
 
