@@ -34,7 +34,7 @@ from typing import Iterable, Sequence
 from flint import fmpq, fmpz
 
 from ..errors import ExpressionError, FieldTooLargeError
-from ..io.exprtree import Fold, Node, fold
+from ..io.exprtree import FieldFold, Fold, Node, fold
 from . import cyclotomic
 from .field import FieldElement, NumberField, PolyElement, as_fmpq
 from .multiquadratic import MQ, sqrt_rational, squarefree_split
@@ -408,7 +408,7 @@ class _DeepTrees:
         sys.setrecursionlimit(self.saved)
 
 
-class _Evaluation(Fold):
+class _Evaluation(FieldFold):
     """Exact values in ``system`` (RationalSystem raises ValueError on irrational atoms);
     every error a user can cause an :class:`ExpressionError` at the node's offset."""
 
@@ -420,19 +420,8 @@ class _Evaluation(Fold):
     def const(self, node):
         return self.system.coerce(node.value)
 
-    def neg(self, node, arg):
-        return -arg
-
-    def binop(self, node, left, right):
-        if node.op == "+":
-            return left + right
-        if node.op == "-":
-            return left - right
-        if node.op == "*":
-            return left * right
-        if right == 0:
-            raise ExpressionError("division by zero", offset=node.offset)
-        return left / right
+    def zero_division(self, node):
+        return ExpressionError("division by zero", offset=node.offset)
 
     def power(self, node, base):
         if node.exponent < 0 and base == 0:

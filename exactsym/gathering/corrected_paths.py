@@ -77,6 +77,13 @@ def piece_within(piece, q, d2) -> bool:
     return arc_within(piece, q, d2)
 
 
+def _filter_radius(unit2) -> float:
+    """2 robot radii as a float no smaller than the exact value (rounded up by a relative
+    1e-12, far above sqrt's rounding): the filter may only keep too many robots, never
+    leave out one the exact test would find within 2."""
+    return 2 * float(unit2) ** 0.5 * (1 + 1e-12)
+
+
 def path_is_clear(pieces, pts, mover, unit2, allowed=frozenset(), approx=None) -> bool:
     """Every robot but the mover stays strictly farther than 2 from the path, except that
     robots of ``allowed`` may touch its final point (and only there: the last piece is a
@@ -86,7 +93,7 @@ def path_is_clear(pieces, pts, mover, unit2, allowed=frozenset(), approx=None) -
     last = len(pieces) - 1
     for k, piece in enumerate(pieces):
         near = range(len(pts)) if approx is None else \
-            g.robots_near_piece(piece, approx, 2 * float(unit2) ** 0.5)
+            g.robots_near_piece(piece, approx, _filter_radius(unit2))
         for j in near:
             if j == mover:
                 continue
@@ -109,7 +116,7 @@ def path_blockers(pieces, pts, mover, unit2, allowed=frozenset(), approx=None) -
     out = set()
     for k, piece in enumerate(pieces):
         near = range(len(pts)) if approx is None else \
-            g.robots_near_piece(piece, approx, 2 * float(unit2) ** 0.5)
+            g.robots_near_piece(piece, approx, _filter_radius(unit2))
         for j in near:
             if j == mover or j in out:
                 continue

@@ -37,7 +37,7 @@ from ..exact.algebraic.interface import is_multiquadratic, motion_number, nested
 from ..exact.algebraic.run_tower import RunTower, sqrt_exact
 from ..exact.algebraic.turns import TurnBoundError, turn_field
 from ..exact.multiquadratic import MQ
-from ..io.exprtree import Const, Fold, Node, Trig, fold
+from ..io.exprtree import Const, FieldFold, Node, Trig, fold
 
 __all__ = ["start_points", "certified", "MAX_START_LEVELS", "StartBoundError"]
 
@@ -59,7 +59,7 @@ def _is_algebraic(x) -> bool:
     return not is_multiquadratic(x) and nested_tower(x) is None
 
 
-class _MotionNumbers(Fold):
+class _MotionNumbers(FieldFold):
     """Each node folded into a number of the motion (see the module docstring)."""
 
     def __init__(self, turns, tower: RunTower):
@@ -70,19 +70,8 @@ class _MotionNumbers(Fold):
         v = node.value
         return MQ.rational(fmpq(v.numerator, v.denominator))
 
-    def neg(self, node, arg):
-        return -arg
-
-    def binop(self, node, left, right):
-        if node.op == "+":
-            return left + right
-        if node.op == "-":
-            return left - right
-        if node.op == "*":
-            return left * right
-        if right == 0:
-            raise StartBoundError("division by zero", node.offset)
-        return left / right
+    def zero_division(self, node):
+        return StartBoundError("division by zero", node.offset)
 
     def power(self, node, base):
         k = abs(node.exponent)

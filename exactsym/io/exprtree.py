@@ -89,6 +89,29 @@ class Fold:
         raise TypeError(f"unknown expression node {type(node).__name__}")
 
 
+class FieldFold(Fold):
+    """A fold into a field of exact numbers: negation and the four operations as the
+    numbers define them; a division by an exact zero raises :meth:`zero_division`'s
+    error (the caller's own, located at the node)."""
+
+    def neg(self, node: Neg, arg):
+        return -arg
+
+    def binop(self, node: BinOp, left, right):
+        if node.op == "+":
+            return left + right
+        if node.op == "-":
+            return left - right
+        if node.op == "*":
+            return left * right
+        if right == 0:
+            raise self.zero_division(node)
+        return left / right
+
+    def zero_division(self, node: BinOp) -> Exception:
+        return ZeroDivisionError("division by zero")
+
+
 def fold(node: Node, algebra: Fold):
     """The one walk over an expression tree: ``node`` evaluated bottom-up in ``algebra``
     (exact numbers, Arb balls, texts: :mod:`exactsym.exact.evaluate`,
