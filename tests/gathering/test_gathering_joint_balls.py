@@ -4,7 +4,7 @@ interval, so the critical instants are those of the exact computation, one for o
 
 from fractions import Fraction as F
 
-from hypothesis import given, settings, strategies as st
+from hypothesis import assume, given, settings, strategies as st
 
 from exactsym.exact.algebraic.roots import roots_in_unit
 from exactsym.exact.multiquadratic import MQ
@@ -32,6 +32,9 @@ def _piece(a, b, arc: bool, centre):
 @given(st.lists(pt, min_size=4, max_size=4), st.lists(pt, min_size=2, max_size=2),
        st.booleans(), pt)
 def test_a_cleared_in_circle_relation_has_no_root_inside(points, ends, arc, centre):
+    # an arc about its own start point is no motion (radius 0: the simulator never makes
+    # one, and its half-angle tangent divides by zero)
+    assume(not arc or tuple(centre) != tuple(points[0]))
     motions = [motion_of(_piece(points[0], ends[0], arc, centre)),
                motion_of(_piece(points[1], ends[1], False, centre))]
     motions += [motion_of(g.Segment(g.point(*p), g.point(*p))) for p in points[2:]]
