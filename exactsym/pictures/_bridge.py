@@ -188,14 +188,24 @@ def _ccw_angle(centre, a, b) -> float:
     return math.atan2(ax * by - ay * bx, ax * bx + ay * by) % (2 * math.pi)
 
 
+def _robot_map(w: dict) -> tuple[int, int] | None:
+    """The witness's robot pair: the audit's ``robot_map`` data, else its ``maps``
+    sentence (written by audits before ``robot_map`` existed, e.g. a stored JSON)."""
+    data = w.get("robot_map")
+    if isinstance(data, dict) and "from" in data and "to" in data:
+        return int(data["from"]), int(data["to"])
+    sentence = _MAPS.search(str(w.get("maps", "")))
+    return (int(sentence.group(1)), int(sentence.group(2))) if sentence else None
+
+
 def _witness(d: dict, centre, xy, reach) -> tuple:
     """``(kind, robots, levels, angle, line, text)`` of one discrepancy's witness (the
     audit's dicts: ``maps`` "robot a -> robot b" with ``symmetry``; ``leaders``;
     ``pair`` of level names; ``line`` as a turn)."""
     w = d.get("witness") or {}
-    maps = _MAPS.search(str(w.get("maps", "")))
-    if maps:
-        a, b = int(maps.group(1)), int(maps.group(2))
+    pair = _robot_map(w)
+    if pair:
+        a, b = pair
         what = str(w.get("symmetry", ""))
         if what.startswith(("mirror", "reflection")):
             mx, my = (xy[a][0] + xy[b][0]) / 2 - centre[0], (xy[a][1] + xy[b][1]) / 2 - centre[1]

@@ -303,3 +303,18 @@ def test_legends_speak_words_per_level_and_in_full(tmp_path):
     words = " ".join(_texts(d3).split())
     assert "True" not in words and "False" not in words
     assert "by the definition no; degree 15/2, but 3 line(s) of symmetry" in words
+
+
+def test_witness_robots_are_read_from_the_robot_map_data_not_the_sentence():
+    """The audit's ``robot_map`` decides which robots the witness joins; a ``maps``
+    sentence that says otherwise (or is missing) is not read when the data is there."""
+    from exactsym.pictures._bridge import _witness
+    xy = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)]
+    data = {"statement": "s", "witness": {"symmetry": "rotation by 1/4 turn",
+                                          "robot_map": {"from": 1, "to": 2},
+                                          "maps": "robot 0 -> robot 3"}}
+    kind, robots, _, angle, _, text = _witness(data, (0.0, 0.0), xy, 1.0)
+    assert (kind, robots) == ("rotation", (1, 2))
+    assert angle == pytest.approx(math.pi / 2) and text.endswith("robot 1 -> 2")
+    old = {"statement": "s", "witness": {"symmetry": "rotation", "maps": "robot 0 -> robot 3"}}
+    assert _witness(old, (0.0, 0.0), xy, 1.0)[1] == (0, 3)
