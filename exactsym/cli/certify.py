@@ -19,11 +19,15 @@ from ..version import json_head
 
 def add_certify_arguments(certify) -> None:
     certify.add_argument("file", help="configuration file ('-' for standard input)")
-    certify.add_argument("-o", "--output", required=True, metavar="CERT.json",
-                         help="where to write the certificate ('-' for standard output)")
+    certify.add_argument("-o", "--output", default=None, metavar="CERT.json",
+                         help="where to write the certificate ('-' for standard output); "
+                         "required unless --coq is given")
     certify.add_argument("--refutes", metavar="LABEL", default=None,
                          help="write a refutation certificate of LABEL instead "
                          "(exactsym.certificates.refutation)")
+    certify.add_argument("--coq", metavar="OUT.v", default=None,
+                         help="with --refutes: also write the refutation as a Coq file "
+                         "that coqc checks on its own (exactsym.certificates.coq_refutation)")
 
 
 def add_verify_arguments(verify) -> None:
@@ -82,6 +86,10 @@ def run_certify(args) -> int:
     from .. import checker
     from ..geometry.configuration import no_cycle_collection
     from ..io.fileformat import read_config
+    if args.output is None and not args.coq:
+        raise InputError("certify needs -o CERT.json (or --coq OUT.v with --refutes)")
+    if args.coq and not args.refutes:
+        raise InputError("--coq needs --refutes LABEL: only refutations are written for Coq")
     with no_cycle_collection():
         parsed = read_config(args.file)
     config, cert = _certificate(parsed, args.refutes)
@@ -92,8 +100,12 @@ def run_certify(args) -> int:
               "please report it with the input file", file=sys.stderr)
         return EXIT_BUG
     # the keys every JSON output begins with (docs/json.md); the checker reads none of them
+    if args.coq:
+        _write_coq(json.loads(json.dumps(cert)), args.coq)
     cert = {**json_head(cert["format"], config.source, config.name), **cert}
     text = json.dumps(cert, separators=(",", ":")) + "\n"
+    if args.output is None:
+        return EXIT_OK
     if args.output == "-":
         sys.stdout.write(text)
     else:
@@ -105,6 +117,21 @@ def run_certify(args) -> int:
                 from None
         print(f"{args.output}: certificate of {config.source}: {message}")
     return EXIT_OK
+
+
+def _write_coq(refutation: dict, path: str) -> None:
+    """The refutation as a Coq file (docs/certificates.md, "Coq")."""
+    from ..certificates.coq_refutation import CoqExportError, coq_refutation
+    try:
+        text = coq_refutation(refutation)
+    except CoqExportError as err:
+        raise InputError(f"cannot write the refutation for Coq: {err}") from None
+    try:
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(text)
+    except OSError as err:
+        raise InputError(f"{path}: cannot write the Coq file: {err.strerror}") from None
+    print(f"{path}: Coq refutation of {refutation['label']} (check it with coqc)")
 
 
 def run_verify(args) -> int:

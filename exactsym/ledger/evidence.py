@@ -7,6 +7,9 @@
 * witnesses: ``proofs/witnesses.py`` refutes the label under exactly ``refuted_readings``
   readings;
 * a refutation certificate: the standalone checker accepts it, for this label;
+* a Coq refutation: the file is what ``exactsym ledger --export-coq`` writes from the
+  statement's certificate, and ``coqc`` accepts it (when no ``coqc`` is installed, that
+  run is skipped and said once on standard error);
 * a sweep summary (:mod:`.sweeps`): well formed, reports on the label, its verdict is
   consistent with the grade, and a failure's smallest case is re-run like an
   ``audit-false`` case (and has the summary's number of robots);
@@ -87,6 +90,7 @@ def check_evidence(ledger: Ledger, root: Path,
     scripts: dict[tuple, str | None] = {}
     witness_result = None
     matrices: dict[str, dict] = {}
+    coq_state: dict = {}
     out = missing_files(ledger, root)
     missing = {(m.label, m.evidence) for m in out}
     for s in (*ledger.statements, *ledger.findings):
@@ -165,6 +169,9 @@ def check_evidence(ledger: Ledger, root: Path,
                         cases[case] = analyse(root / case)
                     out.extend(Mismatch(s.label, _describe(e), f"smallest case {case}: {p}")
                                for p in _case_problems(cases[case], s.label, robots))
+            elif e.kind == "coq":
+                out.extend(Mismatch(s.label, _describe(e), p)
+                           for p in _coq_problems(s, path, root, coq_state, progress))
             elif e.kind == "matrix":
                 out.extend(Mismatch(s.label, _describe(e), p) for p in
                            _matrix_problems(e.path, root, matrices, matrix_seconds, progress))
@@ -174,6 +181,36 @@ def check_evidence(ledger: Ledger, root: Path,
             out.extend(Mismatch(s.label, "matrix evidence", p)
                        for p in grade_problems(s, stored))
     return out
+
+
+def _coq_problems(s, path: Path, root: Path, state: dict, progress) -> list[str]:
+    """Why the Coq refutation at ``path`` is not the checked export of the statement's
+    certificate."""
+    from ..certificates.coq_refutation import CoqExportError, coq_refutation, coqc_accepts
+    certs = [e.path for e in s.evidence if e.kind == "certificate"]
+    if len(certs) != 1:
+        return ["a Coq refutation needs exactly one certificate evidence to be written from"]
+    if s.grade not in ("refuted", "refuted-under-reading"):
+        return [f"a Coq refutation of a statement graded {s.grade!r}"]
+    try:
+        text = coq_refutation(json.loads((root / certs[0]).read_text(encoding="utf-8")),
+                              s.claim)
+    except (OSError, ValueError, KeyError, CoqExportError) as err:
+        return [f"cannot be written from {certs[0]}: {err}"]
+    if path.read_text(encoding="utf-8") != text:
+        return [f"differs from the export of {certs[0]} (exactsym ledger --export-coq)"]
+    if state.get("absent"):
+        return []
+    if progress:
+        progress(f"{path.name} (coqc)")
+    try:
+        ok, messages, seconds = coqc_accepts(text, path.name)
+    except CoqExportError as err:
+        state["absent"] = True
+        print(f"exactsym ledger: the Coq refutations are not run: {err}", file=sys.stderr)
+        return []
+    state[path.name] = seconds
+    return [] if ok else [f"coqc rejects it: {messages[-300:]}"]
 
 
 def _matrix_problems(path: str, root: Path, matrices: dict, limit, progress) -> list[str]:
