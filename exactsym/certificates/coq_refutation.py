@@ -1,30 +1,39 @@
 """Refutations that Coq re-checks (issue 35; docs/certificates.md, "Coq").
 
-``coq_refutation(refutation)`` turns a refutation certificate of
-:mod:`.refutation` (``certify --refutes LABEL``) into one self-contained Coq file: the
-library ``proofs/coq/Exactsym.v`` (the paper's definitions as decision procedures, each
-citing its \\label) inlined, the configuration as exact rationals, and one theorem stating
-in the paper's terms that the configuration meets the statement's hypotheses and that its
-conclusion is false, proved by ``vm_compute`` (and, for "not orderable", by the library's
-theorem ``not_orderable_by_candidates``).  ``coqc FILE.v`` accepting it is the check;
-nothing of exactsym is trusted by it.
+``coq_refutation(refutation)`` turns a refutation certificate of :mod:`.refutation`
+(``certify --refutes LABEL``) into one self-contained Coq file: the library
+``proofs/coq/Exactsym.v`` (the paper's definitions as decision procedures, each citing its
+\\label) inlined, the configuration as exact rationals, and one theorem stating in the
+paper's terms that the configuration meets the statement's hypotheses and that its
+conclusion is false, proved by ``vm_compute`` (and by the library's theorems
+``not_orderable_by_candidates`` and ``printed_loop_never_ends``).  ``coqc FILE.v``
+accepting it is the check; nothing of exactsym is trusted by it.
+``coq_refutation_of_points(label, points, source)`` does the same for the statements
+about CW/ACW strings and the paper's algorithms (:data:`CASE_STATEMENTS`), which the
+Python checker does not certify, from a configuration's points.
 
-Scope: the statements of :data:`STATEMENTS` on rational polar configurations (every
-shipped refutation certificate is one).  Which levels of P the theorem names is read from
-the certificate's parts; Coq recomputes the levels from P itself, so a wrong part makes
-the file fail, not pass.
+Scope: rational polar configurations (every shipped witness used is one).  Which levels
+the theorem names is read from the certificate's parts (or, for a family, is the inner
+and the outer level); Coq recomputes the levels from P itself, so a wrong part makes the
+file fail, not pass.
 """
 
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from pathlib import Path
 
-__all__ = ["CoqExportError", "STATEMENTS", "coq_file_name", "coq_refutation", "coqc_accepts",
-           "library_text", "theorem_name"]
+__all__ = ["CoqExportError", "STATEMENTS", "CASE_STATEMENTS", "coq_file_name",
+           "coq_refutation", "coq_refutation_of_points", "coqc_accepts", "library_text",
+           "source_of", "theorem_name"]
 
 #: The library every exported file inlines, in the source tree (issue 35: one copy).
 LIBRARY = Path(__file__).resolve().parents[2] / "proofs" / "coq" / "Exactsym.v"
+
+_VM = "vm_compute; reflexivity"
+_ORDER = "apply not_orderable_by_candidates; vm_compute; reflexivity"
+_LOOP = "intros fuel; apply printed_loop_never_ends; vm_compute; reflexivity"
 
 
 class CoqExportError(ValueError):
@@ -32,62 +41,108 @@ class CoqExportError(ValueError):
     outside the exporter's scope)."""
 
 
-#: label -> (the paper's words, the names the theorem needs besides P, its hypotheses
-#: (Coq boolean terms, each ``= true``), the negated conclusion (a Coq proposition)).
-#: ``Gi``/``Gj``/``G`` are levels of P named by the certificate's parts.
+def _s(words, names, hypotheses, conclusion, reading=None, note=None) -> dict:
+    """One statement: the paper's words, the levels it names besides P, its hypotheses
+    (Coq booleans, each ``= true``), the negated conclusion (Coq propositions, each with
+    its tactic), the reading it is refuted under (refuted-under-reading), a note."""
+    return {"words": words, "names": names, "hypotheses": hypotheses,
+            "conclusion": conclusion, "reading": reading, "note": note}
+
+
+_PAIR = ["existsb (Qeq_bool rGi) (radii P)", "existsb (Qeq_bool rGj) (radii P)",
+         "negb (Qeq_bool rGi rGj)", "polygon Gi", "polygon Gj", "asymmetric_pair Gi Gj"]
+
+#: The statements refuted from a refutation certificate (the checker's labels).
 STATEMENTS = {
-    "Pasym-Pord": (
+    "Pasym-Pord": _s(
         "Theorem Pasym-Pord, 'if': P is orderable if P is in O_A.",
-        (), ["Nat.leb 2 (length P)", "in_O_A P"], "~ orderable P"),
-    "lem-asym-ord": (
+        (), ["Nat.leb 2 (length P)", "in_O_A P"], [("~ orderable P", _ORDER)]),
+    "lem-asym-ord": _s(
         "Lemma lem-asym-ord: an asymmetric polygon is orderable.",
-        (), ["polygon P", "asymmetric_polygon P"], "~ orderable P"),
-    "cor-Pasym-Pord": (
+        (), ["polygon P", "asymmetric_polygon P"], [("~ orderable P", _ORDER)]),
+    "cor-Pasym-Pord": _s(
         "Corollary cor-Pasym-Pord, 'if': P is orderable if calG_P is in O_A.",
-        (), ["forallb polygon (polygons P)", "calG_in_O_A (polygons P)"], "~ orderable P"),
-    "lem-one-pair-asym-ord": (
+        (), ["forallb polygon (polygons P)", "calG_in_O_A (polygons P)"],
+        [("~ orderable P", _ORDER)]),
+    "lem-one-pair-asym-ord": _s(
         "Lemma lem-one-pair-asym-ord: if calG contains at least one asymmetric polygon "
         "then calG is orderable.",
         ("G",), ["existsb (Qeq_bool rG) (radii P)", "polygon G", "asymmetric_polygon G"],
-        "~ orderable P"),
-    "lem-asym-pair-ord": (
+        [("~ orderable P", _ORDER)]),
+    "lem-asym-pair-ord": _s(
         "Lemma lem-asym-pair-ord: an asymmetric pair is orderable.",
-        ("Gi", "Gj"), ["existsb (Qeq_bool rGi) (radii P)", "existsb (Qeq_bool rGj) (radii P)",
-                       "negb (Qeq_bool rGi rGj)", "polygon Gi", "polygon Gj",
-                       "asymmetric_pair Gi Gj"], "~ orderable (Gi ++ Gj)"),
-    "lem-all-pair-asym-ord": (
+        ("Gi", "Gj"), _PAIR, [("~ orderable (Gi ++ Gj)", _ORDER)]),
+    "lem-all-pair-asym-ord": _s(
         "Lemma lem-all-pair-asym-ord: if there exists an asymmetric pair in calG, then "
         "calG is orderable.",
-        ("Gi", "Gj"), ["existsb (Qeq_bool rGi) (radii P)", "existsb (Qeq_bool rGj) (radii P)",
-                       "negb (Qeq_bool rGi rGj)", "polygon Gi", "polygon Gj",
-                       "asymmetric_pair Gi Gj"], "~ orderable P"),
-    "obs-merg-asym-pair": (
+        ("Gi", "Gj"), _PAIR, [("~ orderable P", _ORDER)]),
+    "obs-merg-asym-pair": _s(
         "Observation obs-merg-asym-pair: if <G_i, G_j> is an asymmetric pair, then the "
         "polygon G_ij is asymmetric.",
-        ("Gi", "Gj"), ["existsb (Qeq_bool rGi) (radii P)", "existsb (Qeq_bool rGj) (radii P)",
-                       "Qlt_bool rGi rGj", "polygon Gi", "polygon Gj",
-                       "asymmetric_pair Gi Gj", "polygon (merged Gi Gj)"],
-        "asymmetric_polygon (merged Gi Gj) = false"),
-    "lemma-sym-regular": (
+        ("Gi", "Gj"), _PAIR[:2] + ["Qlt_bool rGi rGj"] + _PAIR[3:] + ["polygon (merged Gi Gj)"],
+        [("asymmetric_polygon (merged Gi Gj) = false", _VM)],
+        note="G_i is the inner polygon (i < j); G_ij its vertices projected radially onto "
+             "G_j's circle, with G_j ([polygon] also checks that no projected vertex falls "
+             "on a vertex of G_j)."),
+    "lemma-sym-regular": _s(
         "Lemma lemma-sym-regular: if a polygon G is convex and has more than one line of "
         "symmetry such that each line of symmetry passes through at least one vertex of G, "
         "then G is regular.",
         (), ["polygon P", "negb (is_symmetry half_turn P)", "Nat.leb 2 (length (mirrors P))",
-             "forallb (through_vertex P) (mirrors P)"], "regular P = false"),
-    "obs-exh-poly": (
+             "forallb (through_vertex P) (mirrors P)"], [("regular P = false", _VM)],
+        note="No half-turn: otherwise every line through C is a line of skew symmetry, and "
+             "one misses every vertex; so the lines of symmetry are exactly the mirrors, "
+             "under either reading of 'line of symmetry'."),
+    "obs-exh-poly": _s(
         "Observation obs-exh-poly: the above characterization (types 0-4) of straight "
         "symmetric polygons is exhaustive.",
-        (), ["polygon P", "straight_symmetric P"], "some_type P = false"),
+        (), ["polygon P", "straight_symmetric P"], [("some_type P = false", _VM)]),
 }
 
-#: What each hypothesis list reads as, for the file's comment (informative).
-_NOTES = {
-    "lemma-sym-regular": "No half-turn: otherwise every line through C is a line of skew "
-                         "symmetry, and one misses every vertex; so the lines of symmetry "
-                         "are exactly the mirrors, under either reading of 'line of symmetry'.",
-    "obs-merg-asym-pair": "G_i is the inner polygon (i < j); G_ij its vertices projected "
-                          "radially onto G_j's circle, with G_j ([polygon] also checks that "
-                          "no projected vertex falls on a vertex of G_j).",
+#: The statements refuted from a configuration's points (no Python certificate).
+CASE_STATEMENTS = {
+    "obs-asymmetric-polygon": _s(
+        "Theorem obs-asymmetric-polygon (Theorem 1): a polygon G is asymmetric if and only "
+        "if (1) CW_vi <> ACW_vi, (2) CW_vi <> CW_vj and (3) CW_vi <> ACW_vj for all i <> j.",
+        (), ["polygon P", "asymmetric_polygon P"], [("theorem1_conditions P = false", _VM)],
+        note="'Only if' fails: P is asymmetric and a condition fails."),
+    "obs-asymmetric-polygon-1.1": _s(
+        "Theorem 1.1: Theorem 1 with (2) ACW_vi <> ACW_vj and (3) ACW_vi <> CW_vj.",
+        (), ["polygon P", "asymmetric_polygon P"], [("theorem1_1_conditions P = false", _VM)],
+        note="'Only if' fails: P is asymmetric and a condition fails."),
+    "Check_Symmetry_Even": _s(
+        "Algorithm Check_Symmetry_Even(G): reports whether the even polygon G is straight "
+        "or skew symmetric and its degree of symmetry (0 if asymmetric).",
+        (), ["polygon P", "Nat.even (length P)", "asymmetric_polygon P"],
+        [("even_reports_straight P = true", _VM),
+         ("forall fuel, printed_loop fuel P 1 = false", _LOOP)],
+        note="Under the evident reading (i++ after every vertex) it reports 'G is straight "
+             "symmetric' for an asymmetric polygon; as printed (i++ in the else branch "
+             "only) its loop never ends on it, whatever the labelling."),
+    "Check_Symmetry_Odd": _s(
+        "Algorithm Check_Symmetry_Odd(G): reports the degree of symmetry of the odd polygon "
+        "G (0 if asymmetric).",
+        (), ["polygon P", "Nat.odd (length P)"],
+        [("forall fuel, printed_loop fuel P 1 = false", _LOOP)],
+        reading="literal: i++ in the else branch, as printed (with i++ after every vertex "
+                "it is correct: proofs/check_symmetry_odd.md)",
+        note="As printed its loop never ends on P (no report), whatever the labelling."),
+    "Elect_Leader_Asym": _s(
+        "Algorithm Elect_Leader_Asym(G): elects a leader vertex v_l of the asymmetric "
+        "polygon G such that G \\ v_l is asymmetric.",
+        (), ["polygon P", "asymmetric_polygon P"], [("leader_candidates P = []", _VM)],
+        note="Every G \\ v is symmetric: 'while G \\ v_i is symmetric: i++' runs past v_n "
+             "and elects nobody, whatever the ordering."),
+    "ElectLeader": _s(
+        "Algorithm ElectLeader(calG): given calG with G_t asymmetric, elects a leader v_l of "
+        "G_1 such that G_1 \\ v_l is asymmetric.",
+        ("G1", "Gt"), ["existsb (Qeq_bool rG1) (radii P)", "existsb (Qeq_bool rGt) (radii P)",
+                       "forallb (fun r => Qle_bool rG1 r) (radii P)",
+                       "forallb (fun r => Qle_bool r rGt) (radii P)",
+                       "polygon Gt", "asymmetric_polygon Gt", "polygon G1"],
+        [("leader_candidates G1 = []", _VM)],
+        note="G_1 is the inner polygon, G_t the outer one; every G_1 \\ v is symmetric, so "
+             "Elect_Leader_Asym(G_1) elects nobody."),
 }
 
 
@@ -102,6 +157,11 @@ def library_text() -> str:
 
 def theorem_name(label: str) -> str:
     return "refutes_" + "".join(c if c.isalnum() else "_" for c in label)
+
+
+def coq_file_name(label: str) -> str:
+    """The file name of a label's Coq refutation (a Coq module name: no '-')."""
+    return "".join(c if c.isalnum() else "_" for c in label) + ".v"
 
 
 def _q(value) -> str:
@@ -138,27 +198,18 @@ def _level_radii(refutation: dict, names: tuple) -> dict:
     return dict(zip(names, radii))
 
 
-def coq_refutation(refutation: dict, statement: str | None = None) -> str:
-    """The Coq file refuting ``refutation["label"]`` on its configuration.  ``statement``
-    (the ledger's claim) is quoted in the header when given."""
-    label = refutation.get("label")
-    if label not in STATEMENTS:
-        raise CoqExportError(f"no Coq statement for {label!r} (exported: "
-                             f"{', '.join(sorted(STATEMENTS))})")
-    words, names, hypotheses, negated = STATEMENTS[label]
-    cert = refutation["certificate"]
-    points = _points(cert["configuration"])
-    levels = _level_radii(refutation, names)
-    source = (cert.get("source") or {}).get("file") or refutation.get("source", {}).get("file")
+def _file(label: str, spec: dict, points: list, levels: dict, source: str | None,
+          statement: str | None) -> str:
+    """The Coq file: header, library, configuration, theorem."""
     out = [f"(* Refutation of {label}, checked by Coq: `coqc` on this file alone.",
-           f"   The paper: {words}"]
+           f"   The paper: {spec['words']}"]
     if statement:
         out.append(f"   The ledger (proofs/statements.toml): {statement}")
-    if source:
-        out.append(f"   The configuration: {source}.")
-    out += ["   Written by `exactsym certify --refutes` (exactsym/certificates/coq_refutation.py)",
-            "   from its refutation certificate; the library below is proofs/coq/Exactsym.v,",
-            "   inlined: it holds every definition the theorem uses. *)", ""]
+    if spec["reading"]:
+        out.append(f"   Refuted under the reading: {spec['reading']}.")
+    out += ["   Written by exactsym (exactsym/certificates/coq_refutation.py); the library",
+            "   below is proofs/coq/Exactsym.v, inlined: it holds every definition used.",
+            f"   source: {source or '-'} *)", ""]
     out.append(library_text().rstrip())
     out += ["", "(* ================================================= the configuration *)", "",
             "(* P: (squared distance from C, turn) of each point. *)",
@@ -168,31 +219,67 @@ def coq_refutation(refutation: dict, statement: str | None = None) -> str:
         out.append(f"Definition r{name} : Q := {_q(r)}.")
         out.append(f"Definition {name} : list pt := level P r{name}.")
     out.append("")
-    if label in _NOTES:
-        out.append(f"(* {_NOTES[label]} *)")
-    hypotheses = ["distinct P", "sec_centred P", *hypotheses]
-    claim = " /\\\n  ".join([f"{h} = true" for h in hypotheses] + [negated])
-    tactic = "apply not_orderable_by_candidates; vm_compute; reflexivity" \
-        if negated.startswith("~ orderable") else "vm_compute; reflexivity"
-    splits = ["vm_compute; reflexivity"] * len(hypotheses) + [tactic]
+    if spec["note"]:
+        out.append(f"(* {spec['note']} *)")
+    hypotheses = ["distinct P", "sec_centred P", *spec["hypotheses"]]
+    conjuncts = [(f"{h} = true", _VM) for h in hypotheses] + list(spec["conclusion"])
+    claim = " /\\\n  ".join(f"({p})" if p.startswith("forall") else p for p, _ in conjuncts)
     out += [f"(* P is a set about C, the centre of its SEC (T1); the hypotheses of {label}",
             "   hold and its conclusion is false. *)",
             f"Theorem {theorem_name(label)} :\n  {claim}.", "Proof."]
-    out += [f"  split; [{t} |]." for t in splits[:-1]] + [f"  {splits[-1]}."]
+    out += [f"  split; [{t} |]." for _, t in conjuncts[:-1]] + [f"  {conjuncts[-1][1]}."]
     out += ["Qed.", "", f"Print Assumptions {theorem_name(label)}.", ""]
     return "\n".join(out)
 
 
-def coq_file_name(label: str) -> str:
-    """The file name of a label's Coq refutation (a Coq module name: no '-')."""
-    return "".join(c if c.isalnum() else "_" for c in label) + ".v"
+def coq_refutation(refutation: dict, statement: str | None = None,
+                   source: str | None = None) -> str:
+    """The Coq file refuting ``refutation["label"]`` on its configuration.  ``statement``
+    (the ledger's claim) is quoted in the header when given; ``source`` names where the
+    configuration came from (default: the certificate's source file, if any)."""
+    label = refutation.get("label")
+    if label not in STATEMENTS:
+        raise CoqExportError(f"no Coq statement for {label!r} from a certificate (exported: "
+                             f"{', '.join(sorted(STATEMENTS))})")
+    spec = STATEMENTS[label]
+    cert = refutation["certificate"]
+    points = _points(cert["configuration"])
+    levels = _level_radii(refutation, spec["names"])
+    source = source or (cert.get("source") or {}).get("file")
+    return _file(label, spec, points, levels, source, statement)
+
+
+def coq_refutation_of_points(label: str, points, source: str | None = None,
+                             statement: str | None = None) -> str:
+    """The Coq file refuting ``label`` (one of :data:`CASE_STATEMENTS`) on the rational
+    polar configuration ``points``: ``(r2, turn)`` pairs about the SEC centre."""
+    if label not in CASE_STATEMENTS:
+        raise CoqExportError(f"no Coq statement for {label!r} from a configuration "
+                             f"(exported: {', '.join(sorted(CASE_STATEMENTS))})")
+    try:
+        points = [(Fraction(str(r)), Fraction(str(t))) for r, t in points]
+    except (ValueError, TypeError) as err:
+        raise CoqExportError(f"a coordinate is not rational: {err}") from None
+    spec = CASE_STATEMENTS[label]
+    radii = sorted({r for r, _ in points if r > 0})
+    levels = {"G1": radii[0], "Gt": radii[-1]} if spec["names"] == ("G1", "Gt") and radii \
+        else {}
+    return _file(label, spec, points, levels, source, statement)
+
+
+def source_of(text: str) -> str | None:
+    """The ``source:`` a Coq refutation names in its header (None for '-')."""
+    found = re.search(r"^   source: (\S+) \*\)$", text, re.M)
+    return found.group(1) if found and found.group(1) != "-" else None
 
 
 def coqc_accepts(text: str, name: str = "Refutation.v",
                  coqc: str | None = None) -> tuple[bool, str, float]:
     """``(accepted, coqc's messages, seconds)``: run ``coqc`` on ``text`` alone in a
-    fresh temporary directory (nothing else on its load path).  Raises
-    :class:`CoqExportError` when no ``coqc`` is installed."""
+    fresh temporary directory (nothing else on its load path); accepted means coqc exits
+    0 and prints nothing but ``Print Assumptions``'s "Closed under the global context" (no
+    axiom, no other output).
+    Raises :class:`CoqExportError` when no ``coqc`` is installed."""
     import shutil
     import subprocess
     import tempfile
@@ -208,5 +295,5 @@ def coqc_accepts(text: str, name: str = "Refutation.v",
                              text=True, timeout=600)
         seconds = time.perf_counter() - start
     messages = (run.stdout + run.stderr).strip()
-    accepted = run.returncode == 0 and "Closed under the global context" in messages
+    accepted = run.returncode == 0 and messages == "Closed under the global context"
     return accepted, messages, seconds

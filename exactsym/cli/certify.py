@@ -92,6 +92,9 @@ def run_certify(args) -> int:
         raise InputError("--coq needs --refutes LABEL: only refutations are written for Coq")
     with no_cycle_collection():
         parsed = read_config(args.file)
+    from ..certificates.coq_refutation import CASE_STATEMENTS
+    if args.coq and args.refutes in CASE_STATEMENTS:
+        return _coq_only(parsed, args)
     config, cert = _certificate(parsed, args.refutes)
     verify = checker.verify_refutation if args.refutes else checker.verify_certificate
     ok, message = verify(json.loads(json.dumps(cert)))
@@ -126,12 +129,37 @@ def _write_coq(refutation: dict, path: str) -> None:
         text = coq_refutation(refutation)
     except CoqExportError as err:
         raise InputError(f"cannot write the refutation for Coq: {err}") from None
+    _write_text(path, text)
+    print(f"{path}: Coq refutation of {refutation['label']} (check it with coqc)")
+
+
+def _coq_only(parsed, args) -> int:
+    """A statement about CW/ACW strings or an algorithm: no certificate for the Python
+    checker, the Coq file only (coqc is its check)."""
+    from ..certificates.coq_refutation import CoqExportError, coq_refutation_of_points
+    from ..geometry.configuration import from_file
+    if args.output is not None:
+        raise InputError(f"{args.refutes} has no certificate for the Python checker: give "
+                         "--coq OUT.v without -o")
+    config = from_file(parsed)
+    if config.polar is None:
+        raise InputError(f"{config.source}: cannot write the refutation for Coq: only "
+                         "rational polar configurations are exported")
+    try:
+        text = coq_refutation_of_points(args.refutes, config.polar, config.source)
+    except CoqExportError as err:
+        raise InputError(f"cannot write the refutation for Coq: {err}") from None
+    _write_text(args.coq, text)
+    print(f"{args.coq}: Coq refutation of {args.refutes} (not checked here: run coqc on it)")
+    return EXIT_OK
+
+
+def _write_text(path: str, text: str) -> None:
     try:
         with open(path, "w", encoding="utf-8") as fh:
             fh.write(text)
     except OSError as err:
         raise InputError(f"{path}: cannot write the Coq file: {err.strerror}") from None
-    print(f"{path}: Coq refutation of {refutation['label']} (check it with coqc)")
 
 
 def run_verify(args) -> int:

@@ -37,7 +37,7 @@ from pathlib import Path
 from ..errors import InputError
 from .audit_doc import render
 from ..progress import Progress
-from .evidence import check_evidence, missing_files
+from .evidence import check_evidence, coq_export, missing_files
 from .gathering_matrices import MatrixError, compute_matrix, implied_grade, load_matrix
 from .graph import dependency_graph, support
 from .model import load_ledger
@@ -185,18 +185,20 @@ def write_matrices(ledger, root: Path, cases: list) -> int:
 
 
 def export_coq(ledger, root: Path, out: Path) -> int:
-    """``--export-coq DIR``: each refuted statement's certificate as a Coq file."""
-    from ..certificates.coq_refutation import CoqExportError, coq_file_name, coq_refutation
+    """``--export-coq DIR``: each refuted statement's certificate as a Coq file, and each
+    Coq refutation the ledger cites from a case (its source read from the cited file)."""
+    from ..certificates.coq_refutation import STATEMENTS, CoqExportError, coq_file_name
     out.mkdir(parents=True, exist_ok=True)
     for s in ledger.statements:
-        certs = [e.path for e in s.evidence if e.kind == "certificate"]
-        if not s.grade.startswith("refuted") or len(certs) != 1:
+        cited = [e.path for e in s.evidence if e.kind == "coq"]
+        if not s.grade.startswith("refuted") or not (s.label in STATEMENTS or cited):
             continue
+        current = (root / cited[0]).read_text(encoding="utf-8") \
+            if cited and (root / cited[0]).is_file() else None
         try:
-            text = coq_refutation(json.loads((root / certs[0]).read_text(encoding="utf-8")),
-                                  s.claim)
+            text = coq_export(s, root, current)
         except (OSError, ValueError, CoqExportError) as err:
-            raise InputError(f"{certs[0]}: cannot write it for Coq: {err}") from None
+            raise InputError(f"{s.label}: cannot write it for Coq: {err}") from None
         (out / coq_file_name(s.label)).write_text(text, encoding="utf-8")
         print(f"wrote {(out / coq_file_name(s.label)).as_posix()} ({s.label})")
     return EXIT_OK

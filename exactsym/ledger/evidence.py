@@ -35,7 +35,7 @@ from .gathering_matrices import MatrixError, grade_problems, load_matrix, rerun_
 from .model import Evidence, Ledger
 from .sweeps import SweepError, consistency, load_sweep, needs_case
 
-__all__ = ["Mismatch", "missing_files", "check_evidence", "load_sweep"]
+__all__ = ["Mismatch", "missing_files", "check_evidence", "coq_export", "load_sweep"]
 
 
 @dataclass(frozen=True)
@@ -183,22 +183,49 @@ def check_evidence(ledger: Ledger, root: Path,
     return out
 
 
+def coq_export(s, root: Path, current: str | None = None) -> str:
+    """The Coq refutation of statement ``s``: from its one certificate evidence, or, for
+    a statement about CW/ACW strings or an algorithm, from the case that ``current`` (the
+    file as it stands) names as its source.  Raises ``CoqExportError``."""
+    from ..certificates.coq_refutation import (CASE_STATEMENTS, STATEMENTS, CoqExportError,
+                                               coq_refutation, coq_refutation_of_points,
+                                               source_of)
+    certs = [e.path for e in s.evidence if e.kind == "certificate"]
+    if s.label in STATEMENTS:
+        if len(certs) != 1:
+            raise CoqExportError("needs exactly one certificate evidence to be written from")
+        return coq_refutation(json.loads((root / certs[0]).read_text(encoding="utf-8")),
+                              s.claim, source=certs[0])
+    if s.label not in CASE_STATEMENTS:
+        raise CoqExportError(f"no Coq statement for {s.label}")
+    source = source_of(current or "")
+    if not source or not (root / source).is_file():
+        raise CoqExportError(f"the file names no source case that exists ({source})")
+    from ..geometry.configuration import from_file
+    from ..io.fileformat import read_config
+    config = from_file(read_config(str(root / source)))
+    if config.polar is None:
+        raise CoqExportError(f"{source}: not a rational polar configuration")
+    return coq_refutation_of_points(s.label, config.polar, source, s.claim)
+
+
 def _coq_problems(s, path: Path, root: Path, state: dict, progress) -> list[str]:
     """Why the Coq refutation at ``path`` is not the checked export of the statement's
-    certificate."""
-    from ..certificates.coq_refutation import CoqExportError, coq_refutation, coqc_accepts
-    certs = [e.path for e in s.evidence if e.kind == "certificate"]
-    if len(certs) != 1:
-        return ["a Coq refutation needs exactly one certificate evidence to be written from"]
+    certificate (or source case)."""
+    from ..certificates.coq_refutation import (CASE_STATEMENTS, STATEMENTS, CoqExportError,
+                                               coqc_accepts)
     if s.grade not in ("refuted", "refuted-under-reading"):
         return [f"a Coq refutation of a statement graded {s.grade!r}"]
+    spec = STATEMENTS.get(s.label) or CASE_STATEMENTS.get(s.label) or {}
+    if (spec.get("reading") is not None) != (s.grade == "refuted-under-reading"):
+        return [f"the Coq statement's reading does not fit the grade {s.grade!r}"]
+    current = path.read_text(encoding="utf-8")
     try:
-        text = coq_refutation(json.loads((root / certs[0]).read_text(encoding="utf-8")),
-                              s.claim)
+        text = coq_export(s, root, current)
     except (OSError, ValueError, KeyError, CoqExportError) as err:
-        return [f"cannot be written from {certs[0]}: {err}"]
-    if path.read_text(encoding="utf-8") != text:
-        return [f"differs from the export of {certs[0]} (exactsym ledger --export-coq)"]
+        return [f"cannot be written: {err}"]
+    if current != text:
+        return ["differs from its fresh export (exactsym ledger --export-coq)"]
     if state.get("absent"):
         return []
     if progress:

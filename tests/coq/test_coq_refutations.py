@@ -21,7 +21,9 @@ from pathlib import Path
 import pytest
 
 from exactsym.certificates.coq_refutation import (
-    STATEMENTS, CoqExportError, coq_file_name, coq_refutation, coqc_accepts, library_text)
+    CASE_STATEMENTS, STATEMENTS, CoqExportError, coq_file_name, coq_refutation,
+    coq_refutation_of_points, coqc_accepts, library_text, source_of)
+from exactsym.ledger.evidence import coq_export
 from exactsym.ledger.model import load_ledger
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -30,17 +32,19 @@ COQC = shutil.which("coqc")
 needs_coqc = pytest.mark.skipif(COQC is None, reason="coqc is not installed (apt-get install "
                                 "coq): the Coq refutations are not run")
 ALL = os.environ.get("EXACTSYM_COQ_ALL") == "1"
-REPRESENTATIVE = ("Pasym-Pord", "obs-merg-asym-pair", "obs-exh-poly")
+REPRESENTATIVE = ("Pasym-Pord", "obs-merg-asym-pair", "Check_Symmetry_Even")
+SPECS = {**STATEMENTS, **CASE_STATEMENTS}
 
 
 def _ledger_coq() -> dict:
-    """label -> (certificate path, Coq file path) of every statement with coq evidence."""
+    """label -> (certificate paths, Coq file paths, statement) of every statement with
+    coq evidence."""
     out = {}
     for s in load_ledger(ROOT / "proofs" / "statements.toml").statements:
         coq = [e.path for e in s.evidence if e.kind == "coq"]
         certs = [e.path for e in s.evidence if e.kind == "certificate"]
         if coq:
-            out[s.label] = (certs, coq, s.claim, s.grade)
+            out[s.label] = (certs, coq, s)
     return out
 
 
@@ -49,8 +53,8 @@ RUN = sorted(LEDGER) if ALL else list(REPRESENTATIVE)
 
 
 def _export(label: str) -> str:
-    certs, _, claim, _ = LEDGER[label]
-    return coq_refutation(json.loads((ROOT / certs[0]).read_text()), claim)
+    _, coq, s = LEDGER[label]
+    return coq_export(s, ROOT, (ROOT / coq[0]).read_text())
 
 
 # ------------------------------------------------------------------ no coqc needed
@@ -61,10 +65,13 @@ def test_every_certified_refutation_is_exported_and_cited():
     ledger = load_ledger(ROOT / "proofs" / "statements.toml")
     certified = {s.label for s in ledger.statements if s.grade.startswith("refuted")
                  and any(e.kind == "certificate" for e in s.evidence)}
-    assert certified == set(LEDGER) == set(STATEMENTS)
-    for label, (certs, coq, _, grade) in LEDGER.items():
-        assert grade.startswith("refuted") and len(certs) == 1
+    assert certified == set(STATEMENTS) and set(LEDGER) == set(SPECS)
+    for label, (certs, coq, s) in LEDGER.items():
+        assert s.grade.startswith("refuted") and len(certs) == (label in STATEMENTS)
+        assert (SPECS[label]["reading"] is not None) == (s.grade == "refuted-under-reading")
         assert coq == [f"proofs/coq/refutations/{coq_file_name(label)}"]
+        source = source_of((ROOT / coq[0]).read_text())
+        assert source == (certs[0] if certs else source) and (ROOT / source).is_file()
         assert (ROOT / coq[0]).read_text() == _export(label), label
     assert sorted(p.name for p in EXPORTS.glob("*.v")) == sorted(
         coq_file_name(x) for x in LEDGER)
@@ -77,7 +84,9 @@ def test_the_library_is_inlined_and_the_theorem_states_the_label():
         assert "Require Import Exactsym" not in text      # self-contained
         theorem = re.search(r"Theorem (\w+) :\n(.*?)\.\nProof\.", text, re.S)
         assert theorem and theorem.group(1) == "refutes_" + re.sub(r"\W", "_", label)
-        assert theorem.group(2).rstrip().endswith(STATEMENTS[label][3])
+        last = SPECS[label]["conclusion"][-1][0]
+        assert theorem.group(2).rstrip().endswith(f"({last})" if last.startswith("forall")
+                                                  else last)
         assert "Admitted" not in text and "Axiom" not in text
 
 
@@ -85,6 +94,10 @@ def test_outside_the_scope_is_an_error():
     obj = json.loads((ROOT / LEDGER["Pasym-Pord"][0][0]).read_text())
     with pytest.raises(CoqExportError, match="no Coq statement"):
         coq_refutation({**obj, "label": "Psym-Gsym"})
+    with pytest.raises(CoqExportError, match="no Coq statement"):
+        coq_refutation_of_points("Pasym-Pord", [("1", "0")])
+    with pytest.raises(CoqExportError, match="not rational"):
+        coq_refutation_of_points("Elect_Leader_Asym", [("1", "sqrt(2)")])
     cartesian = json.loads(json.dumps(obj))
     cartesian["certificate"]["configuration"]["coordinates"] = "cartesian"
     with pytest.raises(CoqExportError, match="rational polar"):
@@ -124,28 +137,50 @@ def test_coqc_accepts_the_export(label):
     assert messages == "Closed under the global context"     # no axiom, nothing admitted
 
 
+_LAST = re.compile(r"(  Pt )\(Qmake (\d+) (\d+)\) \(Qmake (\d+) (\d+)\)(\]\.\n)")
+
+
 def _moved(text: str) -> str:
-    """The first point of P turned by 1/97 of a turn."""
-    point = re.compile(r"(Definition P : list pt := \[\n  Pt \(Qmake \d+ \d+\) )"
-                       r"\(Qmake (\d+) (\d+)\)")
-    found = point.search(text)
-    turn = Fraction(int(found.group(2)), int(found.group(3))) + Fraction(1, 97)
-    return point.sub(lambda m: f"{m.group(1)}(Qmake {turn.numerator} {turn.denominator})",
-                     text, count=1)
+    """The last point of P turned by 1/97 of a turn."""
+    def turn(m):
+        t = Fraction(int(m.group(4)), int(m.group(5))) + Fraction(1, 97)
+        return (f"{m.group(1)}(Qmake {m.group(2)} {m.group(3)}) "
+                f"(Qmake {t.numerator} {t.denominator}){m.group(6)}")
+    return _LAST.sub(turn, text, count=1)
+
+
+def _pushed_out(text: str) -> str:
+    """The last point of P moved outwards, to 4 times the largest squared distance: C is
+    no longer the centre of the SEC."""
+    top = max(Fraction(int(a), int(b)) for a, b in
+              re.findall(r"  Pt \(Qmake (\d+) (\d+)\)", text.split("Definition P :")[1]))
+    def out(m):
+        r = 4 * top
+        return (f"{m.group(1)}(Qmake {r.numerator} {r.denominator}) "
+                f"(Qmake {m.group(4)} {m.group(5)}){m.group(6)}")
+    return _LAST.sub(out, text, count=1)
+
+
+#: Statements whose witnesses are open sets: any scalene triangle has no leader, so a
+#: turn by 1/97 keeps the refutation (and coqc must still accept it).
+_OPEN = {"Elect_Leader_Asym", "ElectLeader"}
 
 
 def _flipped(text: str, label: str) -> str:
-    negated = STATEMENTS[label][3]
-    claim = negated[2:] if negated.startswith("~ ") else negated.replace("= false", "= true")
-    i = text.rindex(negated)
-    return text[:i] + claim + text[i + len(negated):]
+    """The theorem's last conjunct (a false conclusion of the paper) negated."""
+    last = SPECS[label]["conclusion"][-1][0]
+    shown = f"({last})" if last.startswith("forall") else last
+    i = text.rindex(shown + ".\nProof.")
+    return text[:i] + f"~ ({last})" + text[i + len(shown):]
 
 
 @needs_coqc
 @pytest.mark.parametrize("label", RUN)
 def test_a_tampered_export_is_rejected(label):
     text = _export(label)
-    assert not _accepted(_moved(text)), "a moved point passed"
+    assert _moved(text) != text and _pushed_out(text) != text
+    assert not _accepted(_pushed_out(text)), "a point moved off the SEC passed"
+    assert _accepted(_moved(text)) == (label in _OPEN), "a moved point"
     assert not _accepted(_flipped(text, label)), "the flipped claim passed"
     if label != RUN[0]:
         return                          # the axiom is one more coqc run: once is enough
@@ -198,3 +233,27 @@ def test_certify_coq_needs_refutes(tmp_path):
                          timeout=300)
     assert run.returncode == 2 and "--refutes" in run.stderr
     assert not (tmp_path / "X.v").exists()
+
+
+def test_ledger_export_coq_writes_the_stored_files(tmp_path):
+    run = subprocess.run([sys.executable, "-m", "exactsym", "ledger", "--root", str(ROOT),
+                          "--export-coq", str(tmp_path)], capture_output=True, text=True,
+                         timeout=300)
+    assert run.returncode == 0, run.stderr
+    written = {p.name: p.read_text() for p in tmp_path.glob("*.v")}
+    assert written == {p.name: p.read_text() for p in EXPORTS.glob("*.v")}
+
+
+def test_a_statement_about_strings_is_written_from_its_case_only(tmp_path):
+    """certify writes the Coq file alone (no Python certificate), naming the case."""
+    case = "cases/discrepancies/scalene-triangle.toml"
+    out = tmp_path / "E.v"
+    run = subprocess.run([sys.executable, "-m", "exactsym", "certify", "--refutes",
+                          "Elect_Leader_Asym", case, "--coq", str(out)], cwd=ROOT,
+                         capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    assert source_of(out.read_text()) == case
+    run = subprocess.run([sys.executable, "-m", "exactsym", "certify", "--refutes",
+                          "Elect_Leader_Asym", case, "--coq", str(out), "-o", "-"], cwd=ROOT,
+                         capture_output=True, text=True, timeout=300)
+    assert run.returncode == 2 and "no certificate" in run.stderr

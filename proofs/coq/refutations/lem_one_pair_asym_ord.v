@@ -1,10 +1,9 @@
 (* Refutation of lem-one-pair-asym-ord, checked by Coq: `coqc` on this file alone.
    The paper: Lemma lem-one-pair-asym-ord: if calG contains at least one asymmetric polygon then calG is orderable.
    The ledger (proofs/statements.toml): If G contains an asymmetric polygon, G is orderable.
-   The configuration: cases/discrepancies/family-chiral-c3-ring.toml.
-   Written by `exactsym certify --refutes` (exactsym/certificates/coq_refutation.py)
-   from its refutation certificate; the library below is proofs/coq/Exactsym.v,
-   inlined: it holds every definition the theorem uses. *)
+   Written by exactsym (exactsym/certificates/coq_refutation.py); the library
+   below is proofs/coq/Exactsym.v, inlined: it holds every definition used.
+   source: proofs/certificates/lem-one-pair-asym-ord-chiral-c3-ring.json *)
 
 (* Exactsym.v -- the definitions of Gan Chaudhuri and Mukhopadhyaya, "Leader Election and
    Gathering for Asynchronous Transparent Fat Robots without Chirality", that exactsym's
@@ -32,7 +31,7 @@
    facts (a symmetry exists) and "not orderable" do not: the latter is a Coq theorem
    ([not_orderable_by_candidates]) from the definition of def-orderable-set below. *)
 
-From Coq Require Import QArith ZArith List Bool.
+From Coq Require Import QArith ZArith List Bool Lia.
 Import ListNotations.
 Open Scope Q_scope.
 
@@ -264,6 +263,126 @@ Definition type4 (G : list pt) : bool :=
   Nat.ltb 1 (length (mirrors G)) && Nat.ltb (length (mirrors G)) (length G).
 Definition some_type (G : list pt) : bool :=
   type0 G || type1 G || type2 G || type3 G || type4 G.
+
+(* ------------------------------------------------------------------ CW and ACW strings *)
+
+(* Before lemma-straight-sym: for a point m of a convex polygon G, "the vertices are labeled
+   starting from the vertex next (clockwise) to m up to the previous vertex of m, as v_1,
+   ..., v_n" and CW_m = (|m v_1|, ..., |m v_n|), ACW_m = (|m v_n|, ..., |m v_1|).  Here m
+   is a vertex (n = k - 1).  Turns grow counter-clockwise, so the clockwise gap from m to v
+   is frac(turn m - turn v).  Two vertices at angular gap g on a circle of radius R are
+   2R sin(pi g) apart; sin is increasing on [0, pi/2] and sin(pi g) = sin(pi (1 - g)), so
+   on one circle a distance is given by, and gives, [chord m v] = min(g, 1 - g). *)
+Fixpoint insert_by (k : pt -> Q) (x : pt) (l : list pt) : list pt :=
+  match l with
+  | [] => [x]
+  | y :: rest => if Qle_bool (k x) (k y) then x :: l else y :: insert_by k x rest
+  end.
+Definition sort_by (k : pt -> Q) (l : list pt) : list pt := fold_right (insert_by k) [] l.
+
+Definition clockwise_from (G : list pt) (m : pt) : list pt :=
+  sort_by (fun v => frac (turn m - turn v)) (filter (fun v => negb (peq v m)) G).
+Definition chord (m v : pt) : Q :=
+  let g := frac (turn m - turn v) in if Qle_bool g (1 # 2) then g else 1 - g.
+Definition CW (G : list pt) (m : pt) : list Q := map (chord m) (clockwise_from G m).
+Definition ACW (G : list pt) (m : pt) : list Q := rev (CW G m).
+
+Fixpoint qlist_eqb (a b : list Q) : bool :=
+  match a, b with
+  | [], [] => true
+  | x :: a', y :: b' => Qeq_bool x y && qlist_eqb a' b'
+  | _, _ => false
+  end.
+
+(* CW_v = ACW_v. *)
+Definition cw_sym (G : list pt) (v : pt) : bool := qlist_eqb (CW G v) (ACW G v).
+
+(* obs-asymmetric-polygon (Theorem 1), conditions for 1 <= i, j <= n, i <> j (distinct
+   vertices are distinct points): (1) CW_vi <> ACW_vi; (2) CW_vi <> CW_vj;
+   (3) CW_vi <> ACW_vj.  Theorem 1.1: (2) ACW_vi <> ACW_vj; (3) ACW_vi <> CW_vj. *)
+Definition all_pairs (G : list pt) (differ : pt -> pt -> bool) : bool :=
+  forallb (fun v => forallb (fun w => peq v w || differ v w) G) G.
+Definition theorem1_conditions (G : list pt) : bool :=
+  forallb (fun v => negb (cw_sym G v)) G &&
+  all_pairs G (fun v w => negb (qlist_eqb (CW G v) (CW G w))) &&
+  all_pairs G (fun v w => negb (qlist_eqb (CW G v) (ACW G w))).
+Definition theorem1_1_conditions (G : list pt) : bool :=
+  forallb (fun v => negb (cw_sym G v)) G &&
+  all_pairs G (fun v w => negb (qlist_eqb (ACW G v) (ACW G w))) &&
+  all_pairs G (fun v w => negb (qlist_eqb (ACW G v) (CW G w))).
+
+(* ------------------------------------------------------------------ the paper's algorithms *)
+
+(* The loop of Check_Symmetry_Odd and Check_Symmetry_Even AS PRINTED: "while i <= n:
+   compute CW_vi and ACW_vi; if CW_vi = ACW_vi then deg_sym++ else (...; i++)".  Only i
+   decides whether it ends; [printed_loop fuel G i] is true iff it ends within [fuel]
+   passes, the vertices v_1, ..., v_n listed in G's order. *)
+Definition vertex (G : list pt) (i : nat) : pt := nth (i - 1)%nat G (Pt 0 0).
+Fixpoint printed_loop (fuel : nat) (G : list pt) (i : nat) : bool :=
+  match fuel with
+  | O => false
+  | S f => if Nat.ltb (length G) i then true
+           else if cw_sym G (vertex G i) then printed_loop f G i
+           else printed_loop f G (S i)
+  end.
+
+(* Check_Symmetry_Even read with i++ after every vertex (the evident reading): returns
+   (st_sym, sk_sym, deg_sym).  It reports "G is straight symmetric" iff deg_sym > 0 and
+   st_sym, "G is skew symmetric" iff deg_sym > 0 and sk_sym, the degree deg_sym/2, and
+   "G is asymmetric" iff deg_sym = 0.  [seen] holds v_1 .. v_(i-1). *)
+Fixpoint check_even_loop (G seen todo : list pt) (st sk : bool) (deg : nat)
+  : bool * bool * nat :=
+  match todo with
+  | [] => (st, sk, deg)
+  | v :: rest =>
+    if cw_sym G v then check_even_loop G (seen ++ [v]) rest true sk (S deg)
+    else let hits := length (filter (fun w => qlist_eqb (CW G v) (CW G w) ||
+                                              qlist_eqb (CW G v) (ACW G w) ||
+                                              qlist_eqb (ACW G v) (CW G w)) seen) in
+         check_even_loop G (seen ++ [v]) rest st (sk || Nat.ltb 0 hits) (deg + hits)
+  end.
+Definition check_symmetry_even (G : list pt) : bool * bool * nat :=
+  check_even_loop G [] G false false 0.
+Definition even_reports_straight (G : list pt) : bool :=
+  match check_symmetry_even G with (st, _, deg) => Nat.ltb 0 deg && st end.
+
+(* Elect_Leader_Asym: after the ordering, "i = 1; while G \ v_i is symmetric: i++;
+   v_l = v_i".  It elects a vertex v with G \ v asymmetric, or none when there is no such
+   vertex (the loop runs past v_n), whatever the ordering. *)
+Definition remove_vertex (G : list pt) (v : pt) : list pt := filter (fun w => negb (peq w v)) G.
+Definition leader_candidates (G : list pt) : list pt :=
+  filter (fun v => negb (symmetric_conf (remove_vertex G v))) G.
+
+(* The printed loop never ends once it reaches a vertex with CW = ACW. *)
+Lemma printed_loop_stuck : forall G i, Nat.ltb (length G) i = false ->
+  cw_sym G (vertex G i) = true -> forall fuel, printed_loop fuel G i = false.
+Proof.
+  intros G i Hi Hc fuel. induction fuel as [|f IH]; simpl; [reflexivity|].
+  rewrite Hi, Hc. exact IH.
+Qed.
+
+Lemma printed_loop_reaches : forall G k i, (i + k <= length G)%nat ->
+  cw_sym G (vertex G (i + k)) = true -> forall fuel, printed_loop fuel G i = false.
+Proof.
+  intros G k. induction k as [|k IH]; intros i Hle Hc fuel.
+  - rewrite Nat.add_0_r in *. apply printed_loop_stuck; [apply Nat.ltb_ge; exact Hle | exact Hc].
+  - destruct fuel as [|f]; simpl; [reflexivity|].
+    assert (Hi : Nat.ltb (length G) i = false) by (apply Nat.ltb_ge; lia).
+    rewrite Hi. destruct (cw_sym G (vertex G i)) eqn:E.
+    + apply printed_loop_stuck; assumption.
+    + apply IH; [lia | replace (S i + k)%nat with (i + S k)%nat by lia; exact Hc].
+Qed.
+
+(* So, as printed, Check_Symmetry_Odd and Check_Symmetry_Even never end on a polygon with
+   a vertex whose CW = ACW, whatever the labelling v_1, ..., v_n (any order of G). *)
+Theorem printed_loop_never_ends : forall G, existsb (cw_sym G) G = true ->
+  forall fuel, printed_loop fuel G 1 = false.
+Proof.
+  intros G H fuel. apply existsb_exists in H. destruct H as [v [Hin Hv]].
+  destruct (In_nth G v (Pt 0 0) Hin) as [k [Hk Hnth]].
+  apply (printed_loop_reaches G k 1); [lia|].
+  unfold vertex. replace (1 + k - 1)%nat with k by lia. rewrite Hnth. exact Hv.
+Qed.
 
 (* ------------------------------------------------------------------ not orderable: a theorem *)
 
