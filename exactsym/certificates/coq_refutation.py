@@ -214,6 +214,7 @@ def _file(label: str, spec: dict, points: list, levels: dict, source: str | None
     out += ["", "(* ================================================= the configuration *)", "",
             "(* P: (squared distance from C, turn) of each point. *)",
             "Definition P : list pt := ["]
+    points = [(r, t % 1 if r else Fraction(0)) for r, t in points]     # canonical
     out.append(";\n".join(f"  Pt {_q(r)} {_q(t)}" for r, t in points) + "].")
     for name, r in levels.items():
         out.append(f"Definition r{name} : Q := {_q(r)}.")
@@ -221,11 +222,11 @@ def _file(label: str, spec: dict, points: list, levels: dict, source: str | None
     out.append("")
     if spec["note"]:
         out.append(f"(* {spec['note']} *)")
-    hypotheses = ["distinct P", "sec_centred P", *spec["hypotheses"]]
+    hypotheses = ["canonical P", "distinct P", "sec_centred P", *spec["hypotheses"]]
     conjuncts = [(f"{h} = true", _VM) for h in hypotheses] + list(spec["conclusion"])
     claim = " /\\\n  ".join(f"({p})" if p.startswith("forall") else p for p, _ in conjuncts)
-    out += [f"(* P is a set about C, the centre of its SEC (T1); the hypotheses of {label}",
-            "   hold and its conclusion is false. *)",
+    out += [f"(* P is a set written canonically about C, the centre of its SEC (T1); the",
+            f"   hypotheses of {label} hold and its conclusion is false. *)",
             f"Theorem {theorem_name(label)} :\n  {claim}.", "Proof."]
     out += [f"  split; [{t} |]." for _, t in conjuncts[:-1]] + [f"  {conjuncts[-1][1]}."]
     out += ["Qed.", "", f"Print Assumptions {theorem_name(label)}.", ""]

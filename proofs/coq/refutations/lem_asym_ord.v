@@ -29,7 +29,11 @@
         it, so a symmetry of the polygon fixes C).
    Negative facts ("no line of symmetry", "asymmetric") rest on (T1)-(T3); positive
    facts (a symmetry exists) and "not orderable" do not: the latter is a Coq theorem
-   ([not_orderable_by_candidates]) from the definition of def-orderable-set below. *)
+   ([not_orderable_by_candidates]) from the definition of def-orderable-set below, which
+   is shown satisfiable ([one_point_orderable]).  It reads "g moves p" as "the canonical
+   form of g(p) is another term than p" for P written canonically ([canonical P]): that
+   two canonical terms are two points is trusted (lowest terms and the representative of
+   a turn in [0, 1) are unique); the converse is proved ([canon_peq]). *)
 
 From Coq Require Import QArith ZArith List Bool Lia.
 Import ListNotations.
@@ -144,16 +148,33 @@ Definition symmetric_conf (P : list pt) : bool :=
   Nat.eqb (length P) 1 || straight_symmetric P || skew_symmetric P.
 Definition in_O_A (P : list pt) : bool := negb (symmetric_conf P).
 
+(* Coordinates are written canonically: the squared distance in lowest terms and, off C,
+   the turn in [0, 1) in lowest terms (at C the turn 0).  Two canonical points are one
+   point iff they are the same term (Qred gives the one lowest-terms form of a rational,
+   frac the one representative in [0, 1) of a turn), so a point moved by g is one whose
+   canonical image differs from it as a term.  [canonical P]: P is written so. *)
+Definition canon (p : pt) : pt :=
+  if Qeq_bool (r2 p) 0 then Pt 0 0 else Pt (Qred (r2 p)) (Qred (frac (turn p))).
+Definition q_eqb (x y : Q) : bool := Z.eqb (Qnum x) (Qnum y) && Pos.eqb (Qden x) (Qden y).
+Definition pt_eqb (p q : pt) : bool := q_eqb (r2 p) (r2 q) && q_eqb (turn p) (turn q).
+Definition canonical (P : list pt) : bool := forallb (fun p => pt_eqb (canon p) p) P.
+
+(* The coordinates of the points after the change of coordinates g, written canonically. *)
+Definition image (g : iso) (p : pt) : pt := canon (act g p).
+
 (* def-orderable-set: "a deterministic algorithm which produces a unique ordering of the
    points of P, such that the ordering is same irrespective of the choice of origin and
    coordinate system".  An algorithm [order] reads a set (lists of one set give one
-   answer), orders the points of P, and commutes with every change of coordinates among
+   answer), lists every point of P, and commutes with every change of coordinates among
    the isometries about C (requiring fewer coordinate changes makes "orderable" easier to
-   meet, so "not orderable" below is the stronger claim). *)
+   meet, so "not orderable" below is the stronger claim).  Not vacuous: when no isometry
+   about C other than the identity on P maps P onto itself, [order] may send the image of
+   P under any g to the images, in a fixed order, of P's points (well defined because g
+   is then determined on P), and any other set to itself. *)
 Definition orderable (P : list pt) : Prop :=
   exists order : list pt -> list pt,
     (forall A B, same_set A B = true -> order A = order B) /\
-    (forall g, order (map (act g) P) = map (act g) (order P)) /\
+    (forall g, order (map (image g) P) = map (image g) (order P)) /\
     (forall p, In p P -> In p (order P)).
 
 (* ------------------------------------------------------------------ polygons of G_P *)
@@ -386,16 +407,9 @@ Qed.
 
 (* ------------------------------------------------------------------ not orderable: a theorem *)
 
-Lemma teq_refl : forall t, teq t t = true.
+Lemma pt_eqb_refl : forall p, pt_eqb p p = true.
 Proof.
-  intros [n d]. unfold teq, integral, Qminus, Qplus, Qopp. simpl.
-  replace (n * Z.pos d + - n * Z.pos d)%Z with 0%Z by ring. reflexivity.
-Qed.
-
-Lemma peq_refl : forall p, peq p p = true.
-Proof.
-  intros p. unfold peq. rewrite teq_refl, orb_true_r, andb_true_r.
-  apply Qeq_bool_iff. reflexivity.
+  intros [[a b] [c d]]. unfold pt_eqb, q_eqb. simpl. now rewrite !Z.eqb_refl, !Pos.eqb_refl.
 Qed.
 
 Lemma map_fixed : forall (f : pt -> pt) l, map f l = l -> forall x, In x l -> f x = x.
@@ -407,25 +421,161 @@ Qed.
 (* lemma-sym-ord's argument, proved: a symmetry g of P that moves a point of P leaves no
    ordering invariant, since describing P in the coordinates moved by g gives P again. *)
 Theorem not_orderable : forall P g p,
-  same_set (map (act g) P) P = true -> In p P -> peq (act g p) p = false -> ~ orderable P.
+  same_set (map (image g) P) P = true -> In p P -> pt_eqb (image g p) p = false ->
+  ~ orderable P.
 Proof.
   intros P g p Hset Hp Hmove [order [Hsame [Hcov Hall]]].
   pose proof (Hsame _ _ Hset) as E. rewrite Hcov in E.
   pose proof (map_fixed _ _ E p (Hall p Hp)) as Fix.
-  rewrite Fix, peq_refl in Hmove. discriminate.
+  rewrite Fix, pt_eqb_refl in Hmove. discriminate.
 Qed.
 
 (* The same from a search over the candidates: no trust in (T2) is needed here, only that
-   the candidate found is a symmetry (checked) moving a point (checked). *)
+   the candidate found maps P onto itself (checked) and moves a point of P (checked; P
+   canonical, checked in every exported theorem, makes "moves" mean a different point). *)
 Definition not_orderable_dec (P : list pt) : bool :=
-  existsb (fun g => same_set (map (act g) P) P && moves g P) (candidates P).
+  existsb (fun g => same_set (map (image g) P) P &&
+                    existsb (fun p => negb (pt_eqb (image g p) p)) P) (candidates P).
 
 Theorem not_orderable_by_candidates : forall P, not_orderable_dec P = true -> ~ orderable P.
 Proof.
   intros P H. unfold not_orderable_dec in H. apply existsb_exists in H.
   destruct H as [g [_ H]]. apply andb_true_iff in H. destruct H as [Hset Hmoves].
-  unfold moves in Hmoves. apply existsb_exists in Hmoves. destruct Hmoves as [p [Hp Hm]].
-  apply (not_orderable P g p Hset Hp). destruct (peq (act g p) p); [discriminate | reflexivity].
+  apply existsb_exists in Hmoves. destruct Hmoves as [p [Hp Hm]].
+  apply (not_orderable P g p Hset Hp). destruct (pt_eqb (image g p) p); [discriminate | reflexivity].
+Qed.
+
+(* ------------------------------------------------------------------ orderable is not vacuous *)
+
+(* [canon] gives one term per point ([canon_peq]: one point, one canonical form), and
+   def-orderable-set as written above can be met: one point off C is orderable
+   ([one_point_orderable]).  (A definition no set meets would make every "not orderable"
+   above empty.) *)
+Lemma divides_transfer : forall n d n' d', (0 < d)%Z -> (0 < d')%Z ->
+  (n * d' = n' * d)%Z -> (d | n)%Z -> (d' | n')%Z.
+Proof.
+  intros n d n' d' Hd Hd' H [k Hk]. exists k. subst n.
+  apply (Z.mul_reg_r _ _ d); [lia|]. rewrite <- H. ring.
+Qed.
+
+Lemma integral_Qeq : forall q q', q == q' -> integral q = integral q'.
+Proof.
+  intros [n d] [n' d'] H. unfold Qeq in H; simpl in H. unfold integral; simpl.
+  destruct (Z.eqb_spec (n mod Z.pos d) 0) as [E|E];
+  destruct (Z.eqb_spec (n' mod Z.pos d') 0) as [E'|E']; try reflexivity; exfalso.
+  - apply E'. apply Z.mod_divide; [lia|]. apply Z.mod_divide in E; [|lia].
+    apply (divides_transfer n (Z.pos d)); auto; lia.
+  - apply E. apply Z.mod_divide; [lia|]. apply Z.mod_divide in E'; [|lia].
+    apply (divides_transfer n' (Z.pos d')); auto; lia.
+Qed.
+
+Lemma frac_teq : forall t t', teq t t' = true -> frac t == frac t'.
+Proof.
+  intros [a b] [c d] H. unfold teq, integral in H. simpl in H.
+  apply Z.eqb_eq in H. apply Z.mod_divide in H; [|lia]. destruct H as [k Hk].
+  unfold frac, Qeq; simpl.
+  pose proof (Z.div_mod a (Z.pos b) ltac:(lia)) as Ha.
+  pose proof (Z.div_mod c (Z.pos d) ltac:(lia)) as Hc.
+  pose proof (Z.mod_pos_bound a (Z.pos b) ltac:(lia)) as Ba.
+  pose proof (Z.mod_pos_bound c (Z.pos d) ltac:(lia)) as Bc.
+  set (u := (a mod Z.pos b)%Z) in *. set (w := (c mod Z.pos d)%Z) in *.
+  set (q1 := (a / Z.pos b)%Z) in *. set (q2 := (c / Z.pos d)%Z) in *.
+  assert (M : (u * Z.pos d - w * Z.pos b = (k - q1 + q2) * (Z.pos b * Z.pos d))%Z).
+  { rewrite Pos2Z.inj_mul in Hk. nia. }
+  assert (X1 : (0 <= u * Z.pos d < Z.pos b * Z.pos d)%Z) by nia.
+  assert (X2 : (0 <= w * Z.pos b < Z.pos b * Z.pos d)%Z) by nia.
+  revert M X1 X2. generalize (Z.pos b * Z.pos d)%Z (u * Z.pos d)%Z (w * Z.pos b)%Z
+    (k - q1 + q2)%Z. intros P X Y m M X1 X2.
+  assert (m = 0)%Z.
+  { destruct (Z.lt_trichotomy m 0) as [L|[L|L]]; [|exact L|]; exfalso.
+    - assert (m * P <= - P)%Z by nia. lia.
+    - assert (P <= m * P)%Z by nia. lia. }
+  subst m. lia.
+Qed.
+
+Lemma canon_peq : forall x y, peq x y = true -> canon x = canon y.
+Proof.
+  intros [rx tx] [ry ty] H. unfold peq in H; simpl in H.
+  apply andb_true_iff in H. destruct H as [Hr Ht]. apply Qeq_bool_iff in Hr.
+  unfold canon; cbn [r2 turn].
+  destruct (Qeq_bool rx 0) eqn:Ex; destruct (Qeq_bool ry 0) eqn:Ey; try reflexivity.
+  - apply Qeq_bool_iff in Ex. apply Qeq_bool_neq in Ey. exfalso. apply Ey. rewrite <- Hr. exact Ex.
+  - apply Qeq_bool_iff in Ey. apply Qeq_bool_neq in Ex. exfalso. apply Ex. rewrite Hr. exact Ey.
+  - f_equal; apply Qred_complete; [exact Hr | apply frac_teq; exact Ht].
+Qed.
+
+Lemma pt_eqb_eq : forall p q, pt_eqb p q = true -> p = q.
+Proof.
+  intros [[a b] [c d]] [[a' b'] [c' d']] H. unfold pt_eqb, q_eqb in H; simpl in H.
+  repeat rewrite andb_true_iff in H.
+  destruct H as [[H1 H2] [H3 H4]].
+  apply Z.eqb_eq in H1, H3. apply Pos.eqb_eq in H2, H4. subst. reflexivity.
+Qed.
+
+Lemma frac_frac : forall t, frac (frac t) == frac t.
+Proof. intros [a b]. unfold frac; simpl. rewrite Z.mod_mod by lia. reflexivity. Qed.
+
+Lemma canon_canon : forall q, canon (canon q) = canon q.
+Proof.
+  intros [r t]. destruct (Qeq_bool r 0) eqn:E.
+  - assert (H : canon (Pt r t) = Pt 0 0) by (unfold canon; cbn [r2]; rewrite E; reflexivity).
+    rewrite H. reflexivity.
+  - assert (H : canon (Pt r t) = Pt (Qred r) (Qred (frac t)))
+      by (unfold canon; cbn [r2]; rewrite E; reflexivity).
+    rewrite H. unfold canon at 1; cbn [r2 turn].
+    assert (Hr : Qeq_bool (Qred r) 0 = false).
+    { apply Qeq_bool_neq in E. destruct (Qeq_bool (Qred r) 0) eqn:F; [|reflexivity].
+      exfalso. apply E. apply Qeq_bool_iff in F. rewrite <- (Qred_correct r). exact F. }
+    rewrite Hr, (Qred_complete _ _ (Qred_correct r)). f_equal. apply Qred_complete.
+    rewrite <- (frac_frac t) at 2. apply frac_teq.
+    unfold teq. rewrite (integral_Qeq _ 0); [reflexivity|].
+    rewrite Qred_correct. ring.
+Qed.
+
+(* def-orderable-set is not vacuous: one point off C is orderable. *)
+Definition order_one (A : list pt) : list pt :=
+  match A with
+  | [] => []
+  | a :: _ => if forallb (fun z => pt_eqb (canon z) (canon a)) A then [canon a] else []
+  end.
+
+Lemma mem_canon : forall x A, mem x A = true -> exists z, In z A /\ canon x = canon z.
+Proof.
+  intros x A H. apply existsb_exists in H. destruct H as [z [Hz Hp]].
+  exists z. split; [exact Hz | apply canon_peq; exact Hp].
+Qed.
+
+Lemma order_one_set : forall A B, same_set A B = true -> order_one A = order_one B.
+Proof.
+  intros A B H. unfold same_set in H. apply andb_true_iff in H. destruct H as [HA HB].
+  rewrite forallb_forall in HA, HB.
+  destruct A as [|a A']; destruct B as [|b B']; try reflexivity.
+  - discriminate (HB b (or_introl eq_refl)).
+  - discriminate (HA a (or_introl eq_refl)).
+  - unfold order_one.
+    destruct (forallb (fun z => pt_eqb (canon z) (canon a)) (a :: A')) eqn:SA;
+    destruct (forallb (fun z => pt_eqb (canon z) (canon b)) (b :: B')) eqn:SB;
+    try reflexivity; rewrite forallb_forall in *.
+    + destruct (mem_canon b (a :: A') (HB b (or_introl eq_refl))) as [z [Hz Ez]].
+      pose proof (pt_eqb_eq _ _ (SA z Hz)). congruence.
+    + exfalso. revert SB. apply not_false_iff_true. apply forallb_forall. intros w Hw.
+      destruct (mem_canon w (a :: A') (HB w Hw)) as [z [Hz Ez]].
+      destruct (mem_canon b (a :: A') (HB b (or_introl eq_refl))) as [z' [Hz' Ez']].
+      rewrite Ez, Ez', (pt_eqb_eq _ _ (SA z Hz)), (pt_eqb_eq _ _ (SA z' Hz')).
+      apply pt_eqb_refl.
+    + exfalso. revert SA. apply not_false_iff_true. apply forallb_forall. intros w Hw.
+      destruct (mem_canon w (b :: B') (HA w Hw)) as [z [Hz Ez]].
+      destruct (mem_canon a (b :: B') (HA a (or_introl eq_refl))) as [z' [Hz' Ez']].
+      rewrite Ez, Ez', (pt_eqb_eq _ _ (SB z Hz)), (pt_eqb_eq _ _ (SB z' Hz')).
+      apply pt_eqb_refl.
+Qed.
+
+Theorem one_point_orderable : orderable [Pt 1 0].
+Proof.
+  exists order_one. split; [exact order_one_set|]. split.
+  - intros g. unfold order_one at 1. simpl. rewrite pt_eqb_refl. simpl.
+    unfold image. rewrite canon_canon. reflexivity.
+  - intros p [<-|[]]. simpl. left. reflexivity.
 Qed.
 
 (* ================================================= the configuration *)
@@ -442,15 +592,17 @@ Definition P : list pt := [
   Pt (Qmake 1 1) (Qmake 23 30);
   Pt (Qmake 1 1) (Qmake 11 12)].
 
-(* P is a set about C, the centre of its SEC (T1); the hypotheses of lem-asym-ord
-   hold and its conclusion is false. *)
+(* P is a set written canonically about C, the centre of its SEC (T1); the
+   hypotheses of lem-asym-ord hold and its conclusion is false. *)
 Theorem refutes_lem_asym_ord :
+  canonical P = true /\
   distinct P = true /\
   sec_centred P = true /\
   polygon P = true /\
   asymmetric_polygon P = true /\
   ~ orderable P.
 Proof.
+  split; [vm_compute; reflexivity |].
   split; [vm_compute; reflexivity |].
   split; [vm_compute; reflexivity |].
   split; [vm_compute; reflexivity |].
