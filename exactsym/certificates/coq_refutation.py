@@ -143,6 +143,18 @@ CASE_STATEMENTS = {
         [("leader_candidates G1 = []", _VM)],
         note="G_1 is the inner polygon, G_t the outer one; every G_1 \\ v is symmetric, so "
              "Elect_Leader_Asym(G_1) elects nobody."),
+    "Make_SymToAsym": _s(
+        "Algorithm Make_SymToAsym(G): for a convex polygon G with degree of symmetry one, "
+        "its line of symmetry through a single vertex or two vertices, moving the leader "
+        "v_l epsilon to its right on the circle makes G asymmetric.",
+        ("G1",), ["existsb (Qeq_bool rG1) (radii P)",
+                  "forallb (fun r => Qle_bool rG1 r) (radii P)",
+                  "Nat.eqb (length G1) 1", "symmetric_polygon G1"],
+        [("forall eps : Q, symmetric_polygon (map (fun v => Pt (r2 v) (turn v - eps)) G1) "
+          "= true", "intros eps; vm_compute; reflexivity")],
+        note="G_1 is one robot: symmetric, its one line of symmetry through C and its vertex "
+             "(the paper's note after def-asymmetric-poly), so ElectLeader calls "
+             "Make_SymToAsym on it; moved by any epsilon it is again one point: symmetric."),
 }
 
 
@@ -263,8 +275,8 @@ def coq_refutation_of_points(label: str, points, source: str | None = None,
         raise CoqExportError(f"a coordinate is not rational: {err}") from None
     spec = CASE_STATEMENTS[label]
     radii = sorted({r for r, _ in points if r > 0})
-    levels = {"G1": radii[0], "Gt": radii[-1]} if spec["names"] == ("G1", "Gt") and radii \
-        else {}
+    ends = {"G1": radii[0], "Gt": radii[-1]} if radii else {}
+    levels = {name: ends[name] for name in spec["names"] if name in ends}
     return _file(label, spec, points, levels, source, statement)
 
 

@@ -161,9 +161,10 @@ def _pushed_out(text: str) -> str:
     return _LAST.sub(out, text, count=1)
 
 
-#: Statements whose witnesses are open sets: any scalene triangle has no leader, so a
-#: turn by 1/97 keeps the refutation (and coqc must still accept it).
-_OPEN = {"Elect_Leader_Asym", "ElectLeader"}
+#: Statements whose witnesses are open sets: any scalene triangle has no leader, any
+#: one-robot G_1 stays symmetric, so a turn by 1/97 keeps the refutation (and coqc must
+#: still accept it).
+_OPEN = {"Elect_Leader_Asym", "ElectLeader", "Make_SymToAsym"}
 
 
 def _flipped(text: str, label: str) -> str:
