@@ -143,6 +143,20 @@ CASE_STATEMENTS = {
         [("leader_candidates G1 = []", _VM)],
         note="G_1 is the inner polygon, G_t the outer one; every G_1 \\ v is symmetric, so "
              "Elect_Leader_Asym(G_1) elects nobody."),
+    "Elect_Leader_Sym": _s(
+        "Algorithm Elect_Leader_Sym(G): elects a leader of a symmetric convex polygon G "
+        "whose degree of symmetry is one, its line through a single vertex or two vertices "
+        "(else reports that leader election is not possible).",
+        (), ["polygon P", "Nat.even (length P)", "negb (is_symmetry half_turn P)",
+             "Nat.eqb (length (mirrors P)) 1",
+             "forallb (fun s => Nat.eqb (fixed_vertices P s) 2) (mirrors P)"],
+        [("elect_leader_sym_even_refuses P = true", _VM)],
+        reading="degree as Check_Symmetry_Even reports it (deg_sym/2, its loop read with "
+                "i++ after every vertex); with the degree read as the number of mirrors it "
+                "elects (proofs/short_proofs.md)",
+        note="One line of symmetry (one mirror, no half-turn: no skew line), through two "
+             "vertices; Check_Symmetry_Even reports degree 2, so the algorithm reports "
+             "'Leader Election is not possible for G'."),
     "Make_SymToAsym": _s(
         "Algorithm Make_SymToAsym(G): for a convex polygon G with degree of symmetry one, "
         "its line of symmetry through a single vertex or two vertices, moving the leader "

@@ -367,6 +367,14 @@ Definition check_symmetry_even (G : list pt) : bool * bool * nat :=
 Definition even_reports_straight (G : list pt) : bool :=
   match check_symmetry_even G with (st, _, deg) => Nat.ltb 0 deg && st end.
 
+(* Elect_Leader_Sym, n even: "Call Check_Symmetry_Even(G); if degree of symmetry of G > 1:
+   Report 'Leader Election is not possible for G'", the degree being the deg_sym/2 that
+   Check_Symmetry_Even reports (one reading of the ledger's entry). *)
+Definition even_reported_degree (G : list pt) : nat :=
+  match check_symmetry_even G with (_, _, deg) => Nat.div deg 2 end.
+Definition elect_leader_sym_even_refuses (G : list pt) : bool :=
+  Nat.ltb 1 (even_reported_degree G).
+
 (* Elect_Leader_Asym: after the ordering, "i = 1; while G \ v_i is symmetric: i++;
    v_l = v_i".  It elects a vertex v with G \ v asymmetric, or none when there is no such
    vertex (the loop runs past v_n), whatever the ordering. *)
