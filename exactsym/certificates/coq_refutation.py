@@ -110,6 +110,17 @@ CASE_STATEMENTS = {
         "Theorem 1.1: Theorem 1 with (2) ACW_vi <> ACW_vj and (3) ACW_vi <> CW_vj.",
         (), ["polygon P", "asymmetric_polygon P"], [("theorem1_1_conditions P = false", _VM)],
         note="'Only if' fails: P is asymmetric and a condition fails."),
+    "lemma-straight-sym": _s(
+        "Lemma lemma-straight-sym: let G be a straight symmetric polygon; a straight line L "
+        "is a line of straight symmetry for G iff CW_m = ACW_m or CW_m' = ACW_m' (m, m' where "
+        "L meets G).",
+        (), ["polygon P", "straight_symmetric P"],
+        [("existsb (fun m => cw_sym P m && negb (is_symmetry (Mirror (2 * turn m)) P)) P "
+          "= true", _VM)],
+        reading="or: either end suffices (as printed), with m a vertex and L the line "
+                "through m and C (the other readings need an end on an edge: not exported)",
+        note="'If' fails: a vertex m has CW_m = ACW_m, yet the line through m and C (the "
+             "reflection Mirror (2 turn m)) does not map P onto itself."),
     "Check_Symmetry_Even": _s(
         "Algorithm Check_Symmetry_Even(G): reports whether the even polygon G is straight "
         "or skew symmetric and its degree of symmetry (0 if asymmetric).",
