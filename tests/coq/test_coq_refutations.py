@@ -3,7 +3,8 @@
 Every test that runs ``coqc`` skips, saying why, when it is not installed (Debian: ``apt-get
 install coq``; ``.ci/run`` installs it when it can).  A ``coqc`` run takes about 1.4 s: by
 default the library, three representative exports (a configuration in O_A; a pair of
-polygons; a polygon's types) and their tampered versions are run; ``EXACTSYM_COQ_ALL=1``
+polygons; an algorithm, with the proof that its printed loop never ends) and their
+tampered versions are run; ``EXACTSYM_COQ_ALL=1``
 (set by ``.ci/run``) runs every exported file and tampers with each.
 """
 
@@ -260,3 +261,10 @@ def test_a_statement_about_strings_is_written_from_its_case_only(tmp_path):
                           "Elect_Leader_Asym", case, "--coq", str(out), "-o", "-"], cwd=ROOT,
                          capture_output=True, text=True, timeout=300)
     assert run.returncode == 2 and "no certificate" in run.stderr
+
+
+def test_certify_needs_an_output():
+    run = subprocess.run([sys.executable, "-m", "exactsym", "certify",
+                          str(ROOT / "cases/discrepancies/d3-hexagon.toml")],
+                         capture_output=True, text=True, timeout=300)
+    assert run.returncode == 2 and "-o CERT.json" in run.stderr
