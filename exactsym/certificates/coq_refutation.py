@@ -110,6 +110,15 @@ CASE_STATEMENTS = {
         "Theorem 1.1: Theorem 1 with (2) ACW_vi <> ACW_vj and (3) ACW_vi <> CW_vj.",
         (), ["polygon P", "asymmetric_polygon P"], [("theorem1_1_conditions P = false", _VM)],
         note="'Only if' fails: P is asymmetric and a condition fails."),
+    "Psym-Gsym": _s(
+        "Theorem Psym-Gsym: P is in O_S iff calG_P is in O_S (all polygons have a common "
+        "line of symmetry, def-sym-calG).",
+        (), ["forallb polygon (polygons P)", "calG_symmetric (polygons P)"],
+        [("in_O_A P = true", _VM)],
+        reading="mixed: a common line may be straight for one polygon and skew for another "
+                "(the other readings have other witnesses: not exported)",
+        note="calG_P is symmetric: one line through C is a mirror of some polygons and a "
+             "skew line (the half-turn) of the others; yet P is in O_A."),
     "lemma-straight-sym": _s(
         "Lemma lemma-straight-sym: let G be a straight symmetric polygon; a straight line L "
         "is a line of straight symmetry for G iff CW_m = ACW_m or CW_m' = ACW_m' (m, m' where "
