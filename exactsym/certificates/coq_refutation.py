@@ -82,8 +82,7 @@ STATEMENTS = {
         ("Gi", "Gj"), _PAIR[:2] + ["Qlt_bool rGi rGj"] + _PAIR[3:] + ["polygon (merged Gi Gj)"],
         [("asymmetric_polygon (merged Gi Gj) = false", _VM)],
         note="G_i is the inner polygon (i < j); G_ij its vertices projected radially onto "
-             "G_j's circle, with G_j ([polygon] also checks that no projected vertex falls "
-             "on a vertex of G_j)."),
+             "G_j's circle, with G_j."),
     "lemma-sym-regular": _s(
         "Lemma lemma-sym-regular: if a polygon G is convex and has more than one line of "
         "symmetry such that each line of symmetry passes through at least one vertex of G, "
@@ -110,6 +109,28 @@ CASE_STATEMENTS = {
         "Theorem 1.1: Theorem 1 with (2) ACW_vi <> ACW_vj and (3) ACW_vi <> CW_vj.",
         (), ["polygon P", "asymmetric_polygon P"], [("theorem1_1_conditions P = false", _VM)],
         note="'Only if' fails: P is asymmetric and a condition fails."),
+    "obs-gcd": _s(
+        "Observation obs-gcd: if the odd polygons G_i, G_j (n_i, n_j vertices) have one "
+        "common line of symmetry, then <G_i, G_j> has gcd(n_i, n_j) common lines of symmetry.",
+        ("G1", "G2"), ["polygon G1", "polygon G2", "Nat.odd (length G1)", "Nat.odd (length G2)",
+                       "symmetric_pair G1 G2"],
+        [("Nat.eqb (length (filter (line_of_symmetry G2) (mirrors G1))) "
+          "(Nat.gcd (length G1) (length G2)) = false", _VM)],
+        note="Odd polygons have no half-turn, so their common lines are the mirrors of G_1 "
+             "that are lines of symmetry of G_2; their number is not gcd(n_1, n_2)."),
+    "lem-los-gij": _s(
+        "Lemma lem-los-gij: for odd n_i, n_j, n_i not dividing n_j or n_j not dividing n_i, "
+        "gcd(n_i, n_j) > 1 and a common line of symmetry, a line of symmetry for G_ij is a "
+        "common line of symmetry for <G_i, G_j>.",
+        ("G1", "G2"), ["polygon G1", "polygon G2", "Nat.odd (length G1)", "Nat.odd (length G2)",
+                       "negb (Nat.eqb (Nat.modulo (length G2) (length G1)) 0) || "
+                       "negb (Nat.eqb (Nat.modulo (length G1) (length G2)) 0)",
+                       "Nat.ltb 1 (Nat.gcd (length G1) (length G2))", "symmetric_pair G1 G2",
+                       "polygon (merged G1 G2)"],
+        [("existsb (fun s => negb (line_of_symmetry G1 s && line_of_symmetry G2 s)) "
+          "(mirrors (merged G1 G2)) = true", _VM)],
+        note="G_12: G_1 projected onto G_2's circle, with G_2 (shared rays once); one of its "
+             "mirrors is not a line of symmetry of both."),
     "Psym-Gsym": _s(
         "Theorem Psym-Gsym: P is in O_S iff calG_P is in O_S (all polygons have a common "
         "line of symmetry, def-sym-calG).",
@@ -310,6 +331,8 @@ def coq_refutation_of_points(label: str, points, source: str | None = None,
     spec = CASE_STATEMENTS[label]
     radii = sorted({r for r, _ in points if r > 0})
     ends = {"G1": radii[0], "Gt": radii[-1]} if radii else {}
+    if len(radii) > 1:
+        ends["G2"] = radii[1]
     levels = {name: ends[name] for name in spec["names"] if name in ends}
     return _file(label, spec, points, levels, source, statement)
 

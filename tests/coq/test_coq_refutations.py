@@ -144,12 +144,16 @@ _LAST = re.compile(r"(  Pt )\(Qmake (\d+) (\d+)\) \(Qmake (\d+) (\d+)\)(\]\.\n)"
 
 
 def _moved(text: str) -> str:
-    """The last point of P turned by 1/97 of a turn."""
-    def turn(m):
-        t = Fraction(int(m.group(4)), int(m.group(5))) + Fraction(1, 97)
-        return (f"{m.group(1)}(Qmake {m.group(2)} {m.group(3)}) "
-                f"(Qmake {t.numerator} {t.denominator}){m.group(6)}")
-    return _LAST.sub(turn, text, count=1)
+    """Every point of P turned by its own small angle (point i by (i + 1)^2/997 of a
+    turn): no symmetry survives such a move, while an open set of witnesses does."""
+    head, rest = text.split("Definition P : list pt := [\n", 1)
+    block, tail = rest.split("].\n", 1)
+    moved = []
+    for i, line in enumerate(block.split(";\n")):
+        m = re.fullmatch(r"(  Pt \(Qmake \d+ \d+\) )\(Qmake (\d+) (\d+)\)", line)
+        t = Fraction(int(m.group(2)), int(m.group(3))) + Fraction((i + 1) ** 2, 997)
+        moved.append(f"{m.group(1)}(Qmake {t.numerator} {t.denominator})")
+    return f"{head}Definition P : list pt := [\n" + ";\n".join(moved) + "].\n" + tail
 
 
 def _pushed_out(text: str) -> str:
@@ -165,8 +169,8 @@ def _pushed_out(text: str) -> str:
 
 
 #: Statements whose witnesses are open sets: any scalene triangle has no leader, any
-#: one-robot G_1 stays symmetric, so a turn by 1/97 keeps the refutation (and coqc must
-#: still accept it).
+#: one-robot G_1 stays symmetric, so small turns keep the refutation (and coqc must still
+#: accept it).
 _OPEN = {"Elect_Leader_Asym", "ElectLeader", "Make_SymToAsym"}
 
 

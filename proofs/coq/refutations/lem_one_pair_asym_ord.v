@@ -230,11 +230,12 @@ Definition calG_in_O_A (Gs : list (list pt)) : bool := negb (calG_symmetric Gs).
 
 (* Before obs-merg-asym-pair: "the vertices of G_i are projected radially on the
    circumference of the enclosing circle of G_j (i < j).  Construct a polygon G_ij with
-   the full set of vertices on the circle." *)
+   the full set of vertices on the circle."  A projected vertex on a vertex of G_j is one
+   vertex of G_ij. *)
 Definition merged (Gi Gj : list pt) : list pt :=
   match Gj with
   | [] => Gi
-  | v :: _ => map (fun p => Pt (r2 v) (turn p)) Gi ++ Gj
+  | v :: _ => filter (fun p => negb (mem p Gj)) (map (fun p => Pt (r2 v) (turn p)) Gi) ++ Gj
   end.
 
 (* ------------------------------------------------------------------ regular polygons, types *)

@@ -230,11 +230,12 @@ Definition calG_in_O_A (Gs : list (list pt)) : bool := negb (calG_symmetric Gs).
 
 (* Before obs-merg-asym-pair: "the vertices of G_i are projected radially on the
    circumference of the enclosing circle of G_j (i < j).  Construct a polygon G_ij with
-   the full set of vertices on the circle." *)
+   the full set of vertices on the circle."  A projected vertex on a vertex of G_j is one
+   vertex of G_ij. *)
 Definition merged (Gi Gj : list pt) : list pt :=
   match Gj with
   | [] => Gi
-  | v :: _ => map (fun p => Pt (r2 v) (turn p)) Gi ++ Gj
+  | v :: _ => filter (fun p => negb (mem p Gj)) (map (fun p => Pt (r2 v) (turn p)) Gi) ++ Gj
   end.
 
 (* ------------------------------------------------------------------ regular polygons, types *)
@@ -601,7 +602,7 @@ Definition Gi : list pt := level P rGi.
 Definition rGj : Q := (Qmake 4 1).
 Definition Gj : list pt := level P rGj.
 
-(* G_i is the inner polygon (i < j); G_ij its vertices projected radially onto G_j's circle, with G_j ([polygon] also checks that no projected vertex falls on a vertex of G_j). *)
+(* G_i is the inner polygon (i < j); G_ij its vertices projected radially onto G_j's circle, with G_j. *)
 (* P is a set written canonically about C, the centre of its SEC (T1); the
    hypotheses of obs-merg-asym-pair hold and its conclusion is false. *)
 Theorem refutes_obs_merg_asym_pair :
