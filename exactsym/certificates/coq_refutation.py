@@ -131,6 +131,13 @@ CASE_STATEMENTS = {
           "(mirrors (merged G1 G2)) = true", _VM)],
         note="G_12: G_1 projected onto G_2's circle, with G_2 (shared rays once); one of its "
              "mirrors is not a line of symmetry of both."),
+    "obs-type-4": _s(
+        "Observation obs-type-4: if n_i and n_j are odd, <G_i, G_j> has a common line of "
+        "symmetry; additionally, if gcd(n_i, n_j) > 1, then G_ij is a type 4 polygon.",
+        ("G1", "G2"), ["polygon G1", "polygon G2", "Nat.odd (length G1)", "Nat.odd (length G2)",
+                       "symmetric_pair G1 G2", "Nat.ltb 1 (Nat.gcd (length G1) (length G2))"],
+        [("type4 (merged G1 G2) = false", _VM)],
+        note="G_12: G_1 projected onto G_2's circle, with G_2 (shared rays once)."),
     "Psym-Gsym": _s(
         "Theorem Psym-Gsym: P is in O_S iff calG_P is in O_S (all polygons have a common "
         "line of symmetry, def-sym-calG).",
