@@ -187,10 +187,11 @@ CASE_STATEMENTS = {
         ("G1", "Gt"), ["existsb (Qeq_bool rG1) (radii P)", "existsb (Qeq_bool rGt) (radii P)",
                        "forallb (fun r => Qle_bool rG1 r) (radii P)",
                        "forallb (fun r => Qle_bool r rGt) (radii P)",
-                       "polygon Gt", "asymmetric_polygon Gt", "polygon G1"],
+                       "polygon Gt", "asymmetric_polygon Gt", "polygon G1",
+                       "asymmetric_polygon G1"],
         [("leader_candidates G1 = []", _VM)],
-        note="G_1 is the inner polygon, G_t the outer one; every G_1 \\ v is symmetric, so "
-             "Elect_Leader_Asym(G_1) elects nobody."),
+        note="G_1 is the inner polygon, G_t the outer one; G_1 is asymmetric, so ElectLeader "
+             "calls Elect_Leader_Asym(G_1), and every G_1 \\ v is symmetric: it elects nobody."),
     "Elect_Leader_Sym": _s(
         "Algorithm Elect_Leader_Sym(G): elects a leader of a symmetric convex polygon G "
         "whose degree of symmetry is one, its line through a single vertex or two vertices "

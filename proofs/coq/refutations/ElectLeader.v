@@ -603,7 +603,7 @@ Definition G1 : list pt := level P rG1.
 Definition rGt : Q := (Qmake 4 1).
 Definition Gt : list pt := level P rGt.
 
-(* G_1 is the inner polygon, G_t the outer one; every G_1 \ v is symmetric, so Elect_Leader_Asym(G_1) elects nobody. *)
+(* G_1 is the inner polygon, G_t the outer one; G_1 is asymmetric, so ElectLeader calls Elect_Leader_Asym(G_1), and every G_1 \ v is symmetric: it elects nobody. *)
 (* P is a set written canonically about C, the centre of its SEC (T1); the
    hypotheses of ElectLeader hold and its conclusion is false. *)
 Theorem refutes_ElectLeader :
@@ -617,8 +617,10 @@ Theorem refutes_ElectLeader :
   polygon Gt = true /\
   asymmetric_polygon Gt = true /\
   polygon G1 = true /\
+  asymmetric_polygon G1 = true /\
   leader_candidates G1 = [].
 Proof.
+  split; [vm_compute; reflexivity |].
   split; [vm_compute; reflexivity |].
   split; [vm_compute; reflexivity |].
   split; [vm_compute; reflexivity |].
