@@ -19,11 +19,15 @@ from ..version import json_head
 
 def add_certify_arguments(certify) -> None:
     certify.add_argument("file", help="configuration file ('-' for standard input)")
-    certify.add_argument("-o", "--output", required=True, metavar="CERT.json",
-                         help="where to write the certificate ('-' for standard output)")
+    certify.add_argument("-o", "--output", default=None, metavar="CERT.json",
+                         help="where to write the certificate ('-' for standard output); "
+                         "required unless --coq is given")
     certify.add_argument("--refutes", metavar="LABEL", default=None,
                          help="write a refutation certificate of LABEL instead "
                          "(exactsym.certificates.refutation)")
+    certify.add_argument("--coq", metavar="OUT.v", default=None,
+                         help="with --refutes: also write the refutation as a Coq file "
+                         "that coqc checks on its own (exactsym.certificates.coq_refutation)")
 
 
 def add_verify_arguments(verify) -> None:
@@ -82,8 +86,15 @@ def run_certify(args) -> int:
     from .. import checker
     from ..geometry.configuration import no_cycle_collection
     from ..io.fileformat import read_config
+    if args.output is None and not args.coq:
+        raise InputError("certify needs -o CERT.json (or --coq OUT.v with --refutes)")
+    if args.coq and not args.refutes:
+        raise InputError("--coq needs --refutes LABEL: only refutations are written for Coq")
     with no_cycle_collection():
         parsed = read_config(args.file)
+    from ..certificates.coq_refutation import CASE_STATEMENTS
+    if args.coq and args.refutes in CASE_STATEMENTS:
+        return _coq_only(parsed, args)
     config, cert = _certificate(parsed, args.refutes)
     verify = checker.verify_refutation if args.refutes else checker.verify_certificate
     ok, message = verify(json.loads(json.dumps(cert)))
@@ -92,8 +103,12 @@ def run_certify(args) -> int:
               "please report it with the input file", file=sys.stderr)
         return EXIT_BUG
     # the keys every JSON output begins with (docs/json.md); the checker reads none of them
+    if args.coq:
+        _write_coq(json.loads(json.dumps(cert)), args.coq)
     cert = {**json_head(cert["format"], config.source, config.name), **cert}
     text = json.dumps(cert, separators=(",", ":")) + "\n"
+    if args.output is None:
+        return EXIT_OK
     if args.output == "-":
         sys.stdout.write(text)
     else:
@@ -105,6 +120,46 @@ def run_certify(args) -> int:
                 from None
         print(f"{args.output}: certificate of {config.source}: {message}")
     return EXIT_OK
+
+
+def _write_coq(refutation: dict, path: str) -> None:
+    """The refutation as a Coq file (docs/certificates.md, "Coq")."""
+    from ..certificates.coq_refutation import CoqExportError, coq_refutation
+    try:
+        text = coq_refutation(refutation)
+    except CoqExportError as err:
+        raise InputError(f"cannot write the refutation for Coq: {err}") from None
+    _write_text(path, text)
+    print(f"{path}: Coq refutation of {refutation['label']} (check it with coqc)")
+
+
+def _coq_only(parsed, args) -> int:
+    """A statement about CW/ACW strings or an algorithm: no certificate for the Python
+    checker, the Coq file only (coqc is its check)."""
+    from ..certificates.coq_refutation import CoqExportError, coq_refutation_of_points
+    from ..geometry.configuration import from_file
+    if args.output is not None:
+        raise InputError(f"{args.refutes} has no certificate for the Python checker: give "
+                         "--coq OUT.v without -o")
+    config = from_file(parsed)
+    if config.polar is None:
+        raise InputError(f"{config.source}: cannot write the refutation for Coq: only "
+                         "rational polar configurations are exported")
+    try:
+        text = coq_refutation_of_points(args.refutes, config.polar, config.source)
+    except CoqExportError as err:
+        raise InputError(f"cannot write the refutation for Coq: {err}") from None
+    _write_text(args.coq, text)
+    print(f"{args.coq}: Coq refutation of {args.refutes} (not checked here: run coqc on it)")
+    return EXIT_OK
+
+
+def _write_text(path: str, text: str) -> None:
+    try:
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(text)
+    except OSError as err:
+        raise InputError(f"{path}: cannot write the Coq file: {err.strerror}") from None
 
 
 def run_verify(args) -> int:

@@ -84,6 +84,8 @@ def _evidence_text(s: Statement, sweeps: dict) -> str:
             parts.append(f"`{e.path}` ({e.refuted_readings} readings)")
         elif e.kind == "matrix":
             parts.append(f"`{e.path}` (reading matrix)")
+        elif e.kind == "coq":
+            parts.append(f"`{e.path}` (Coq-checked: coqc accepts it)")
         else:
             parts.append(f"`{e.path}`")
     return "; ".join(parts) or "--"
@@ -120,6 +122,13 @@ def render(ledger: Ledger, support: dict[str, Support], sweeps: dict | None = No
              and support[s.label].rests_only_on_proved and s.grade == "proved"]
     lines += ["", "Proved and resting only on proved statements and definitions: " +
               (", ".join(f"`{x}`" for x in sound) or "none") + ".", ""]
+    refuted = [s for s in ledger.statements if s.grade.startswith("refuted")]
+    coq = [s.label for s in refuted if any(e.kind == "coq" for e in s.evidence)]
+    lines += [f"Refutations checked by Coq ({len(coq)} of {len(refuted)} refuted or refuted "
+              "under a reading; each a file `proofs/coq/refutations/*.v` that `coqc` accepts "
+              "on its own, trusting Coq's kernel and the library `proofs/coq/Exactsym.v` "
+              "and none of exactsym's code; `docs/certificates.md`, \"Coq\"): "
+              + (", ".join(f"`{x}`" for x in coq) or "none") + ".", ""]
     starts = {label: title for title, label in HEADINGS}
     for s in ledger.statements:
         if s.label in starts:

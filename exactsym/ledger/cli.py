@@ -13,6 +13,11 @@ and stores it as ``proofs/gathering/STEM.json``, ready to be cited as
 ``{matrix = "proofs/gathering/STEM.json"}`` (:mod:`.gathering_matrices`; seconds to a few
 minutes per case); ``--write-matrix all`` rewrites every matrix the ledger cites.
 
+``--export-coq DIR`` writes, for every refuted statement with a refutation certificate, its
+refutation as a Coq file ``DIR/LABEL.v`` (``-`` as ``_``) that ``coqc`` checks on its own
+(:mod:`exactsym.certificates.coq_refutation`); ``proofs/coq/refutations/`` holds them, cited
+as ``{coq = ...}`` evidence.
+
 ``--sweep EVIDENCE.json`` (repeatable) reads a sweep's evidence file and says, for every
 statement of the ledger it reports on, what the sweep found and whether that is
 consistent with the grade (:mod:`.sweeps`; exit 1 if not); ``--save NAME`` then copies it
@@ -32,7 +37,7 @@ from pathlib import Path
 from ..errors import InputError
 from .audit_doc import render
 from ..progress import Progress
-from .evidence import check_evidence, missing_files
+from .evidence import check_evidence, coq_export, missing_files
 from .gathering_matrices import MatrixError, compute_matrix, implied_grade, load_matrix
 from .graph import dependency_graph, support
 from .model import load_ledger
@@ -83,6 +88,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--write-matrix", metavar="CASE", action="append", default=[],
                         help="run a gathering case's reading matrix and store it in "
                         "proofs/gathering/ (\"all\": every matrix the ledger cites)")
+    parser.add_argument("--export-coq", metavar="DIR", default=None,
+                        help="write each refutation certificate of the ledger as a Coq "
+                        "file DIR/LABEL.v that coqc checks on its own")
     parser.add_argument("--root", metavar="DIR", default=None,
                         help="the repository root (default: found from the working "
                         "directory)")
@@ -176,6 +184,26 @@ def write_matrices(ledger, root: Path, cases: list) -> int:
     return EXIT_OK
 
 
+def export_coq(ledger, root: Path, out: Path) -> int:
+    """``--export-coq DIR``: each refuted statement's certificate as a Coq file, and each
+    Coq refutation the ledger cites from a case (its source read from the cited file)."""
+    from ..certificates.coq_refutation import STATEMENTS, CoqExportError, coq_file_name
+    out.mkdir(parents=True, exist_ok=True)
+    for s in ledger.statements:
+        cited = [e.path for e in s.evidence if e.kind == "coq"]
+        if not s.grade.startswith("refuted") or not (s.label in STATEMENTS or cited):
+            continue
+        current = (root / cited[0]).read_text(encoding="utf-8") \
+            if cited and (root / cited[0]).is_file() else None
+        try:
+            text = coq_export(s, root, current)
+        except (OSError, ValueError, CoqExportError) as err:
+            raise InputError(f"{s.label}: cannot write it for Coq: {err}") from None
+        (out / coq_file_name(s.label)).write_text(text, encoding="utf-8")
+        print(f"wrote {(out / coq_file_name(s.label)).as_posix()} ({s.label})")
+    return EXIT_OK
+
+
 def run(args) -> int:
     root = Path(args.root) if args.root else find_root()
     ledger = load_ledger(root / LEDGER)
@@ -190,6 +218,8 @@ def run(args) -> int:
         return EXIT_FALSE if problems else EXIT_OK
     if args.write_matrix:
         return write_matrices(ledger, root, args.write_matrix)
+    if args.export_coq:
+        return export_coq(ledger, root, Path(args.export_coq))
     if args.write and args.no_write:
         raise InputError("command line: --write and --no-write do not go together")
     if args.write:

@@ -7,6 +7,9 @@
 * witnesses: ``proofs/witnesses.py`` refutes the label under exactly ``refuted_readings``
   readings;
 * a refutation certificate: the standalone checker accepts it, for this label;
+* a Coq refutation: the file is what ``exactsym ledger --export-coq`` writes from the
+  statement's certificate, and ``coqc`` accepts it (when no ``coqc`` is installed, that
+  run is skipped and said once on standard error);
 * a sweep summary (:mod:`.sweeps`): well formed, reports on the label, its verdict is
   consistent with the grade, and a failure's smallest case is re-run like an
   ``audit-false`` case (and has the summary's number of robots);
@@ -32,7 +35,7 @@ from .gathering_matrices import MatrixError, grade_problems, load_matrix, rerun_
 from .model import Evidence, Ledger
 from .sweeps import SweepError, consistency, load_sweep, needs_case
 
-__all__ = ["Mismatch", "missing_files", "check_evidence", "load_sweep"]
+__all__ = ["Mismatch", "missing_files", "check_evidence", "coq_export", "load_sweep"]
 
 
 @dataclass(frozen=True)
@@ -87,6 +90,7 @@ def check_evidence(ledger: Ledger, root: Path,
     scripts: dict[tuple, str | None] = {}
     witness_result = None
     matrices: dict[str, dict] = {}
+    coq_state: dict = {}
     out = missing_files(ledger, root)
     missing = {(m.label, m.evidence) for m in out}
     for s in (*ledger.statements, *ledger.findings):
@@ -165,6 +169,9 @@ def check_evidence(ledger: Ledger, root: Path,
                         cases[case] = analyse(root / case)
                     out.extend(Mismatch(s.label, _describe(e), f"smallest case {case}: {p}")
                                for p in _case_problems(cases[case], s.label, robots))
+            elif e.kind == "coq":
+                out.extend(Mismatch(s.label, _describe(e), p)
+                           for p in _coq_problems(s, path, root, coq_state, progress))
             elif e.kind == "matrix":
                 out.extend(Mismatch(s.label, _describe(e), p) for p in
                            _matrix_problems(e.path, root, matrices, matrix_seconds, progress))
@@ -174,6 +181,63 @@ def check_evidence(ledger: Ledger, root: Path,
             out.extend(Mismatch(s.label, "matrix evidence", p)
                        for p in grade_problems(s, stored))
     return out
+
+
+def coq_export(s, root: Path, current: str | None = None) -> str:
+    """The Coq refutation of statement ``s``: from its one certificate evidence, or, for
+    a statement about CW/ACW strings or an algorithm, from the case that ``current`` (the
+    file as it stands) names as its source.  Raises ``CoqExportError``."""
+    from ..certificates.coq_refutation import (CASE_STATEMENTS, STATEMENTS, CoqExportError,
+                                               coq_refutation, coq_refutation_of_points,
+                                               source_of)
+    certs = [e.path for e in s.evidence if e.kind == "certificate"]
+    if s.label in STATEMENTS:
+        if len(certs) != 1:
+            raise CoqExportError("needs exactly one certificate evidence to be written from")
+        return coq_refutation(json.loads((root / certs[0]).read_text(encoding="utf-8")),
+                              s.claim, source=certs[0])
+    if s.label not in CASE_STATEMENTS:
+        raise CoqExportError(f"no Coq statement for {s.label}")
+    source = source_of(current or "")
+    if not source or not (root / source).is_file():
+        raise CoqExportError(f"the file names no source case that exists ({source})")
+    from ..geometry.configuration import from_file
+    from ..io.fileformat import read_config
+    config = from_file(read_config(str(root / source)))
+    if config.polar is None:
+        raise CoqExportError(f"{source}: not a rational polar configuration")
+    return coq_refutation_of_points(s.label, config.polar, source, s.claim)
+
+
+def _coq_problems(s, path: Path, root: Path, state: dict, progress) -> list[str]:
+    """Why the Coq refutation at ``path`` is not the checked export of the statement's
+    certificate (or source case)."""
+    from ..certificates.coq_refutation import (CASE_STATEMENTS, STATEMENTS, CoqExportError,
+                                               coqc_accepts)
+    if s.grade not in ("refuted", "refuted-under-reading"):
+        return [f"a Coq refutation of a statement graded {s.grade!r}"]
+    spec = STATEMENTS.get(s.label) or CASE_STATEMENTS.get(s.label) or {}
+    if spec.get("reading") is None and s.grade == "refuted-under-reading":
+        return ["a statement refuted under a reading needs the reading in its Coq file"]
+    current = path.read_text(encoding="utf-8")
+    try:
+        text = coq_export(s, root, current)
+    except (OSError, ValueError, KeyError, CoqExportError) as err:
+        return [f"cannot be written: {err}"]
+    if current != text:
+        return ["differs from its fresh export (exactsym ledger --export-coq)"]
+    if state.get("absent"):
+        return []
+    if progress:
+        progress(f"{path.name} (coqc)")
+    try:
+        ok, messages, seconds = coqc_accepts(text, path.name)
+    except CoqExportError as err:
+        state["absent"] = True
+        print(f"exactsym ledger: the Coq refutations are not run: {err}", file=sys.stderr)
+        return []
+    state[path.name] = seconds
+    return [] if ok else [f"coqc rejects it: {messages[-300:]}"]
 
 
 def _matrix_problems(path: str, root: Path, matrices: dict, limit, progress) -> list[str]:

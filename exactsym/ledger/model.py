@@ -47,7 +47,9 @@ class Evidence:
     ``witnesses`` (proofs/witnesses.py: ``refuted_readings`` readings refute the label),
     ``sweep`` (a sweep summary file, docs/ledger.md), ``certificate`` (a refutation
     certificate that exactsym.checker.verify_refutation accepts for this label),
-    ``matrix`` (a stored gathering reading matrix, :mod:`.gathering_matrices`)."""
+    ``matrix`` (a stored gathering reading matrix, :mod:`.gathering_matrices`), ``coq``
+    (the statement's refutation as a Coq file, written from its certificate, that
+    ``coqc`` accepts: the refutation is Coq-checked)."""
     kind: str
     path: str
     verdict: str | None = None
@@ -273,15 +275,15 @@ def _evidence(e, where: str, source: str) -> Evidence:
     if not isinstance(e, dict):
         raise LedgerError(f"{where}: evidence entries are tables", source)
     kinds = [k for k in ("case", "proof", "script", "witnesses", "sweep", "certificate",
-                         "matrix") if k in e]
+                         "matrix", "coq") if k in e]
     if len(kinds) != 1 or not isinstance(e[kinds[0]], str):
         raise LedgerError(f"{where}: an evidence entry has exactly one of case, proof, "
-                          f"script, witnesses, sweep, certificate, matrix (got {sorted(e)})",
+                          f"script, witnesses, sweep, certificate, matrix, coq (got {sorted(e)})",
                           source)
     kind = kinds[0]
     allowed = {"case": {"case", "verdict"}, "proof": {"proof"}, "script": {"script", "args"},
                "witnesses": {"witnesses", "refuted_readings"}, "sweep": {"sweep"},
-               "certificate": {"certificate"}, "matrix": {"matrix"}}[kind]
+               "certificate": {"certificate"}, "matrix": {"matrix"}, "coq": {"coq"}}[kind]
     if set(e) - allowed:
         raise LedgerError(f"{where}: unknown evidence field(s) {sorted(set(e) - allowed)}",
                           source)

@@ -1,0 +1,94 @@
+"""The Coq library's decisions against exactsym's ground truth (issue 35).
+
+The library ``proofs/coq/Exactsym.v`` is the trusted base of the Coq refutations; its
+negative facts rest on (T1)-(T3) of its header.  Here one ``coqc`` run evaluates, on every
+rational polar configuration of ``cases/`` (up to 12 points), whether C is the SEC centre,
+the number of rotations and of mirrors among its candidate symmetries, and O_A; each must
+agree with :func:`exactsym.symmetry_group` and exactsym's certificate (exact, and
+independent of the library; the group only where the origin is the SEC centre), and stay
+the same after a rotation, a mirror image and a scale of the configuration.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+
+from exactsym.certificates.certificate import make_certificate
+from exactsym.certificates.coq_refutation import library_text
+from exactsym.geometry.configuration import from_file
+from exactsym.io.fileformat import read_config
+from exactsym.truth.symmetry import symmetry_group
+
+ROOT = Path(__file__).resolve().parents[2]
+COQC = shutil.which("coqc")
+
+
+def _polar_cases() -> list:
+    out = []
+    for path in sorted((ROOT / "cases").rglob("*.toml")):
+        try:
+            config = from_file(read_config(str(path)))
+        except Exception:                       # not a configuration file (or unreadable)
+            continue
+        if config.polar is not None and 3 <= config.n <= 12:
+            points = [(Fraction(str(r)), Fraction(str(t))) for r, t in config.polar]
+            # exactsym's certificate stays polar iff the origin is the SEC centre
+            centred = make_certificate(config)["configuration"]["coordinates"] == "polar"
+            out.append((path.relative_to(ROOT).as_posix(), points, symmetry_group(config),
+                        centred))
+    return out
+
+
+def _q(f: Fraction) -> str:
+    return f"(Qmake ({f.numerator}) {f.denominator})"
+
+
+def _variants(points):
+    """The configuration, turned by 3/11, mirrored, and scaled by 4 (squared: 16)."""
+    yield points
+    yield [(r, t + Fraction(3, 11)) for r, t in points]
+    yield [(r, -t) for r, t in points]
+    yield [(16 * r, t) for r, t in points]
+
+
+@pytest.mark.skipif(COQC is None, reason="coqc is not installed (apt-get install coq): the "
+                    "Coq library is not evaluated")
+def test_the_library_decides_groups_as_the_ground_truth(tmp_path):
+    cases = _polar_cases()
+    assert len(cases) >= 20
+    lines = [library_text(), "Definition rotations (P : list pt) : nat :=",
+             "  length (filter (fun g => match g with Rot _ => true | _ => false end) "
+             "(symmetries P)).", ""]
+    expected = []
+    for k, (_, points, group, centred) in enumerate(cases):
+        for j, variant in enumerate(_variants(points)):
+            name = f"P{k}_{j}"
+            lines.append(f"Definition {name} : list pt := ["
+                         + "; ".join(f"Pt {_q(r)} {_q(t)}" for r, t in variant) + "].")
+            lines.append(f"Eval vm_compute in (sec_centred {name}, rotations {name}, "
+                         f"length (mirrors {name}), in_O_A {name}).")
+            rotations = group.rotations
+            mirrors = group.mirrors
+            in_o_a = not (group.name.startswith("D") and not group.orderable
+                          or rotations % 2 == 0)
+            expected.append((k, j, centred, rotations, mirrors, in_o_a))
+    (tmp_path / "Agree.v").write_text("\n".join(lines) + "\n")
+    run = subprocess.run([COQC, "-q", "Agree.v"], cwd=tmp_path, capture_output=True,
+                         text=True, timeout=900)
+    assert run.returncode == 0, run.stderr[-2000:]
+    got = re.findall(r"= \((true|false), (\d+)%nat, (\d+)%nat, (true|false)\)", run.stdout)
+    assert len(got) == len(expected)
+    assert sum(1 for e in expected if e[2]) >= 80
+    for (sec, rot, mir, oa), (k, j, centred, rotations, mirrors, in_o_a) in zip(got, expected):
+        where = f"{cases[k][0]} (variant {j})"
+        assert (sec == "true") == centred, where
+        if not centred:
+            continue                    # the library's candidates are about the origin
+        assert (int(rot), int(mir)) == (rotations, mirrors), where
+        assert (oa == "true") == in_o_a, where
