@@ -29,7 +29,7 @@ from ..geometry.predicates import PseudoAngle
 from ..geometry.sec import Circle
 
 __all__ = ["POLAR_FRAMES", "CARTESIAN_FRAMES", "FRAME_TEXT", "transformed", "frame_levels",
-           "mapped_rational_levels"]
+           "mapped_rational_levels", "reflected_frame", "slim"]
 
 #: The frames the paper is recomputed in: polar configurations about C stay polar.
 POLAR_FRAMES = {"reflection": Similarity(reflect=True),
@@ -84,6 +84,18 @@ def frame_levels(config: Configuration, ring_data: Levels, moved: Configuration,
     return mapped_levels(ring_data, moved.points, sim, vectors)
 
 
+def slim(result):
+    """A frame's :class:`~exactsym.paper.family.PaperResult` without its polygons (``G_rings``
+    and the described G, G'): the audit compares a frame's actions and trace only, and on
+    a million robots a frame's polygons are gigabytes held while the next frame runs."""
+    from dataclasses import replace
+    return replace(result, G_rings=(), described=_nothing)
+
+
+def _nothing() -> tuple:
+    return [], []
+
+
 def _linear(sim: Similarity):
     """The linear part of ``sim`` (no ``turn``) as a function of (x, y)."""
     c, s = sim.rotation if sim.rotation is not None else (None, None)
@@ -102,13 +114,22 @@ def _linear(sim: Similarity):
 
 def mapped_rational_levels(config: Configuration, ring_data: Levels, moved: Configuration,
                            sim: Similarity) -> Levels | None:
+    """See :func:`_mapped` (without the starts)."""
+    found = _mapped(config, ring_data, moved, sim)
+    return None if found is None else found[0]
+
+
+def _mapped(config: Configuration, ring_data: Levels, moved: Configuration,
+            sim: Similarity) -> tuple | None:
     """The levels of ``moved`` = ``config`` under ``sim`` (robot indices kept), read from
     ``ring_data`` (see the module docstring), or None unless the SEC centre of
     ``ring_data`` is rational (homogeneous D = 1), its levels are built (a tuple, as
     :func:`exactsym.analysis.built_levels` leaves them), every robot is on one level,
     ``sim`` has no ``turn`` and both configurations' coordinates are plain rationals.
     ``Levels.vectors`` of the result holds the copy's vector S(p) - S(C) of every robot
-    (taken by the family layer's polygons)."""
+    (taken by the family layer's polygons).  Returns ``(levels, starts)``: ``starts[k]``,
+    for a level of several robots, where the copy's order starts in the first frame's
+    order (reversed under a reflection)."""
     lv = ring_data.levels
     circle = ring_data.sec
     x, y, d = circle.homogeneous
@@ -140,30 +161,99 @@ def mapped_rational_levels(config: Configuration, ring_data: Levels, moved: Conf
         vectors = {i: (px - ncx, py - ncy) for i, (px, py) in enumerate(moved.points)}
     new = object.__new__
     built = []
-    for level in lv:
+    starts = {}
+    for k, level in enumerate(lv):
         members = level.points
         if len(members) > 1:
-            members = _counter_clockwise(members, vectors, sim.reflect)
+            members, starts[k] = _counter_clockwise(members, vectors, sim.reflect)
         r2 = level.radius_squared
         out = new(Level)                # Level(r2 * k2, members) without the frozen __init__
         fields = out.__dict__
         fields["radius_squared"] = r2 if k2 == 1 else r2 * k2
         fields["points"] = members
         built.append(out)
-    return Levels(sec, tuple(built), False, vectors=(moved.points, vectors))
+    return Levels(sec, tuple(built), False, vectors=(moved.points, vectors)), starts
 
 
-def _counter_clockwise(members: tuple, vectors: dict, reflect: bool) -> tuple:
+def _counter_clockwise(members: tuple, vectors: dict, reflect: bool) -> tuple[tuple, int]:
     """A level's robots (counter-clockwise in the first frame) counter-clockwise from the
     copy's +x ray: the cyclic order reversed by a reflection, then started at the robot
-    of least pseudo-angle (exact)."""
+    of least angle.  Counter-clockwise, the angles in [0, 1) turn increase from that robot
+    on, so the half-planes (upper with the +x ray: angle below half a turn; lower) run
+    upper... lower...: when both occur the start is the one robot of the upper half after
+    one of the lower (signs only); else the least exact pseudo-angle.  Returns the order
+    and where it starts in ``order`` (None: the robot at C, the level kept)."""
     order = members[::-1] if reflect else members
-    start, least = 0, None
-    for k, i in enumerate(order):
-        v = vectors[i]
-        if v[0] == 0 and v[1] == 0:         # the robot at C (a level of its own)
-            return members
-        angle = PseudoAngle(*v)
-        if least is None or angle < least:
-            start, least = k, angle
-    return tuple(order[start:]) + tuple(order[:start])
+    lower = []
+    for i in order:
+        vx, vy = vectors[i]
+        if vy == 0 and vx == 0:            # the robot at C (a level of its own)
+            return members, None
+        lower.append(vy < 0 or (vy == 0 and vx < 0))
+    starts = [k for k in range(len(order)) if lower[k - 1] and not lower[k]]
+    if len(starts) == 1:
+        start = starts[0]
+    else:                                   # every robot in one half-plane
+        start, least = 0, None
+        for k, i in enumerate(order):
+            angle = PseudoAngle(*vectors[i])
+            if least is None or angle < least:
+                start, least = k, angle
+    return tuple(order[start:]) + tuple(order[:start]), start
+
+
+def reflected_frame(config: Configuration, ring_data: Levels, moved: Configuration,
+                    rings) -> tuple:
+    """``(levels, polygons)`` of the reflected copy ``moved`` (x, y) -> (x, -y) of ``config``:
+    the levels as :func:`frame_levels` maps them, and the polygons of its levels of two or
+    more robots as the paper's procedure takes them (``level_polygons``; None where a
+    level has one robot), or ``(frame_levels(...), None)`` off the rational path.
+
+    A polygon's vertices are the level's robots counter-clockwise in the copy, its
+    directions the copy's vectors, its integer vectors those of the first frame's polygon
+    (``rings``: the paper's G) with y negated -- what
+    :func:`exactsym.paper.keys.integer_directions` of the copy's directions gives (the same
+    denominators) -- and its gap ids those of the first frame's polygon in the copy's
+    order (a reflection keeps every angle), renumbered in order of occurrence as
+    :func:`exactsym.paper.keys.gap_ids` numbers them: not computed again."""
+    sim = CARTESIAN_FRAMES["reflection"]
+    found = None
+    if not ring_data.polar and moved.polar is None and ring_data.enclosures is None:
+        found = _mapped(config, ring_data, moved, sim)
+    if found is None:
+        return frame_levels(config, ring_data, moved, "reflection", rings), None
+    levels, starts = found
+    vectors = levels.vectors[1]
+    from ..paper.circle_polygon import CirclePolygon
+    first = {}
+    for ring in rings:
+        poly = ring.polygon
+        if poly is not None and not poly.polar and len(ring.robots) > 1:
+            first[ring.levels[0] - 1] = poly.__dict__
+    out = []
+    new = object.__new__
+    for k, level in enumerate(levels.levels):
+        robots = level.points
+        m = len(robots)
+        if m < 2:
+            out.append(None)
+            continue
+        poly = new(CirclePolygon)
+        fields = poly.__dict__
+        fields.update(labels=robots, directions=tuple([vectors[i] for i in robots]),
+                      polar=False, one_circle=True)
+        known, start = first.get(k), starts.get(k)
+        ints = None if known is None else known.get("integer_vectors")
+        if ints is not None and start is not None and len(ints) == m:
+            # the copy's vertex j is the first frame's vertex m - 1 - (start + j) mod m
+            where = [m - 1 - (start + j) % m for j in range(m)]
+            fields["integer_vectors"] = [(ints[t][0], -ints[t][1]) for t in where]
+            gaps = known.get("gap_ids")
+            if gaps is not None:
+                # the copy's gap from vertex j to j + 1 is the first frame's gap from
+                # its vertex where[j + 1] to where[j] = where[j + 1] + 1
+                ids: dict = {}
+                fields["gap_ids"] = [ids.setdefault(gaps[where[(j + 1) % m]], len(ids))
+                                     for j in range(m)]
+        out.append(poly)
+    return levels, out

@@ -46,7 +46,7 @@ was checked (``docs/interpretations.md``, "Bounds of the family layer").
 
 from __future__ import annotations
 
-from .frames import FRAME_TEXT, frame_levels, transformed
+from .frames import FRAME_TEXT, frame_levels, reflected_frame, slim, transformed
 from .groups import SubGroups, group_about_centre
 from .handedness import MIRROR_RUN, decided_without_tie, frames_agree, other_handedness_findings
 from .levels import level_findings
@@ -451,9 +451,9 @@ def _mirror_run(config, ring_data, paper, kw) -> F.PaperResult | None:
     run exactly."""
     moved = transformed(config, ring_data, "reflection")
     try:
-        return F.paper_procedure(moved, frame_levels(config, ring_data, moved, "reflection",
-                                                      paper.G_rings), **kw,
-                                 claims=False, describe_polygons=False)
+        levels, polygons = reflected_frame(config, ring_data, moved, paper.G_rings)
+        return slim(F.paper_procedure(moved, levels, **kw, level_polygons=polygons,
+                                      claims=False, describe_polygons=False))
     except (ArithmeticError, NotImplementedError, ValueError):
         return None
 
@@ -477,9 +477,10 @@ def _leader_check(config, ring_data, paper, group, kw, options,
                 res = mirror
             else:
                 moved = transformed(config, ring_data, frame)
-                res = F.paper_procedure(moved, frame_levels(config, ring_data, moved, frame,
-                                                             paper.G_rings), **kw,
-                                        claims=False, check_vl=False, describe_polygons=False)
+                res = slim(F.paper_procedure(moved, frame_levels(config, ring_data, moved,
+                                                                  frame, paper.G_rings), **kw,
+                                             claims=False, check_vl=False,
+                                             describe_polygons=False))
             if frames_agree(paper, res):
                 continue
             entry, note = _frame_difference(config, paper, res, frame, kw)

@@ -57,7 +57,9 @@ def _check(args) -> int:
                                                    listed=1 if summary else None,
                                                    screen=summary))
         # the JSON report (every exact text) only when printed or read by [expect]
-        report = report_json(analysis) if args.json or config.expect else None
+        # printed and not read again: the levels' entries are made as they are written
+        report = report_json(analysis, streamed=not config.expect) \
+            if args.json or config.expect else None
         if args.json:
             write_json(report, sys.stdout, compact=args.compact)
         else:

@@ -594,14 +594,23 @@ def integer_gap_key(a, b) -> tuple:
 
 def gap_ids(poly: CirclePolygon) -> list:
     """Small integers, equal iff the counter-clockwise gaps between consecutive vertices
-    are equal (exact)."""
+    are equal (exact), numbered in order of first occurrence.  Of integer directions
+    (:func:`polygon_integer_directions`) computed once per polygon and kept in its
+    ``__dict__`` (``"gap_ids"``; the polygon layer's combinatorial key stores the same
+    list, and the family layer's polygon of a level takes it: issue 33, one gap key per
+    edge); the list is shared: do not modify it."""
     n, dirs = poly.n, poly.directions
     ids: dict = {}
     if not poly.polar and n > 1:
+        cached = poly.__dict__.get("gap_ids")
+        if cached is not None:
+            return cached
         u = polygon_integer_directions(poly)
         if u is not None:
-            return [ids.setdefault(integer_gap_key(u[i], u[(i + 1) % n]), len(ids))
-                    for i in range(n)]
+            out = poly.__dict__["gap_ids"] = [
+                ids.setdefault(integer_gap_key(u[i], u[(i + 1) % n]), len(ids))
+                for i in range(n)]
+            return out
         if poly.one_circle:
             # one circle: the gaps are told apart by the sign of the cross product and
             # the dot product, filtered by balls (exact products only for near ties)

@@ -68,7 +68,11 @@ def combinatorial_key(polygon: CirclePolygon):
     if not polygon.polar:
         vectors = polygon_integer_directions(polygon)
         if vectors is not None:
-            return _integer_key(vectors)
+            key = _integer_key(vectors)
+            # its gaps are gap_ids' (interned in order of occurrence): kept for the
+            # family layer's polygon of this level (issue 33: one gap key per edge)
+            polygon.__dict__.setdefault("gap_ids", list(key[2]))
+            return key
     return _exact_key(polygon)
 
 

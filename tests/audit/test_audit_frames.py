@@ -115,3 +115,34 @@ def test_no_mapping_off_the_rational_path():
     lazy = type(ring)(ring.sec, list(ring.levels), False)
     from exactsym.audit.frames import CARTESIAN_FRAMES
     assert mapped_rational_levels(config, lazy, moved, CARTESIAN_FRAMES["similarity"]) is None
+
+
+@settings(max_examples=40, deadline=None)
+@given(rational_sets())
+def test_the_reflected_polygons_carry_the_recomputed_keys(config):
+    """The reflected copy's polygons (:func:`exactsym.audit.frames.reflected_frame`) take
+    the first frame's integer vectors and gap ids: they equal those computed from the
+    copy's own directions, and the paper's mirror run on them equals the run from
+    scratch."""
+    from exactsym.audit.frames import reflected_frame
+    from exactsym.paper.circle_polygon import CirclePolygon
+    from exactsym.paper.keys import gap_ids, integer_directions
+    ring = built_levels(levels_of(config))
+    paper = paper_procedure(config, ring)
+    moved = transformed(config, ring, "reflection")
+    levels, polygons = reflected_frame(config, ring, moved, paper.G_rings)
+    assert polygons is not None and len(polygons) == len(levels.levels)
+    for level, poly in zip(levels.levels, polygons):
+        if len(level.points) < 2:
+            assert poly is None
+            continue
+        assert poly.labels == level.points
+        fresh = CirclePolygon(level.points, poly.directions, False)
+        assert poly.__dict__.get("integer_vectors") == integer_directions(poly.directions)
+        if "gap_ids" in poly.__dict__:
+            assert poly.__dict__["gap_ids"] == gap_ids(fresh)
+    kw = dict(claims=False, describe_polygons=False)
+    a = paper_procedure(moved, levels, level_polygons=polygons, **kw)
+    b = paper_procedure(moved, levels_of(moved), **kw)
+    assert (a.leader, a.orderable, a.moves, a.trace) == (b.leader, b.orderable, b.moves,
+                                                         b.trace)
