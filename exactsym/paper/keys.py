@@ -10,7 +10,7 @@ turn of the line in [0, 1/2), or the ray of its doubled angle (``lemma-LOS-Passe
 from __future__ import annotations
 
 from functools import cmp_to_key
-from math import atan2, gcd, pi
+from math import atan2, gcd, lcm, pi
 
 from flint import ctx
 
@@ -550,17 +550,16 @@ def bisector_line(polar: bool, a, b):
 def integer_directions(dirs):
     """Rational direction vectors of one length, times one positive integer: int pairs
     of one length (rays, lines and angles unchanged; cheap exact arithmetic without
-    division), or None when a coordinate is not an fmpq or the lengths differ."""
-    den = 1
+    division), or None when a coordinate is not an fmpq or the lengths differ.  The
+    integer is the least common multiple of the coordinates' denominators."""
+    parts = []
     for x, y in dirs:
-        if not all_plain_rational((x, y)):
-            return None
-        qx, qy = int(x.q), int(y.q)
-        if den % qx:
-            den = den // gcd(den, qx) * qx
-        if den % qy:
-            den = den // gcd(den, qy) * qy
-    out = [(int(x.p) * (den // int(x.q)), int(y.p) * (den // int(y.q))) for x, y in dirs]
+        if type(x) is not fmpq or type(y) is not fmpq:
+            if not all_plain_rational((x, y)):      # (an fmpq subclass is one too)
+                return None
+        parts.append((int(x.p), int(x.q), int(y.p), int(y.q)))
+    den = lcm(*[q for _, qx, _, qy in parts for q in (qx, qy)])
+    out = [(px * (den // qx), py * (den // qy)) for px, qx, py, qy in parts]
     x0, y0 = out[0]
     r2 = x0 * x0 + y0 * y0
     for x, y in out:
