@@ -21,7 +21,7 @@ from ..geometry.configuration import Configuration, no_cycle_collection
 from ..exact import evaluate, number_system
 from ..io.expr import parse_expression
 from ..paper.polygon_report import LabelledVerdict
-from .json_form import LevelEntries, report_json
+from .json_form import JSONText, LevelEntries, report_json
 from .summary import summary_text
 
 
@@ -187,8 +187,8 @@ def _write_items(items, pad: str, out) -> None:
     out.append("[\n" + inner)
     chunk = []
     first = True
-    for item in items:
-        chunk.append(_item(item))
+    for item in (items.json_items() if isinstance(items, LevelEntries) else items):
+        chunk.append(item if type(item) is JSONText else _item(item))
         if len(chunk) == _CHUNK:
             out.append(("" if first else sep) + sep.join(chunk))
             first, chunk = False, []

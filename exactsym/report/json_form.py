@@ -6,6 +6,8 @@ check) and :mod:`exactsym.report.summary` (the text), which is why it sits below
 
 from __future__ import annotations
 
+from json.encoder import encode_basestring_ascii
+
 from ..analysis import Analysis
 from ..geometry.configuration import no_cycle_collection
 from ..exact import fmpq
@@ -15,7 +17,7 @@ from ..paper.homogeneous import centre_texts, radius_text, sec_radius_text
 from ..truth.report import truth_json
 from ..version import json_head
 
-__all__ = ["report_json", "LevelEntries"]
+__all__ = ["report_json", "LevelEntries", "JSONText"]
 
 
 def report_json(analysis: Analysis, brief: bool = False, streamed: bool = False) -> dict:
@@ -55,6 +57,34 @@ class LevelEntries:
 
     def as_list(self) -> list:
         return _level_entries(self.levels, self.verdicts, self.strings)
+
+    def json_items(self):
+        """The entries as the writer takes them: a level of one robot whose verdict is
+        made when read (:class:`~exactsym.paper.polygon_report.SingleVerdicts` with a JSON
+        template) as its JSON text (a :class:`JSONText`, the text the writer makes of its
+        entry), without making the verdict; every other level as its entry."""
+        verdicts = self.verdicts
+        parts = getattr(getattr(verdicts, "relabelled", None), "json_parts", None)
+        if parts is None or self.strings is not None or len(verdicts) != len(self.levels):
+            yield from self
+            return
+        items, levels = verdicts.items, self.levels
+        step = 4096
+        for start in range(0, len(levels), step):
+            stop = start + step
+            for level, x in zip(levels[start:stop], items[start:stop]):
+                if type(x) is int:
+                    r2 = level.radius_squared
+                    r2 = str(r2) if type(r2) is fmpq else _radius_text(r2)
+                    yield JSONText(f'{{"radius_squared": {encode_basestring_ascii(r2)}, '
+                                   f'"points": [{x!r}], "paper": {str(x).join(parts)}}}')
+                else:
+                    yield _level_entries((level,), (x,), None)[0]
+
+
+class JSONText(str):
+    """The JSON text of one item of a streamed list (:meth:`LevelEntries.json_items`)."""
+    __slots__ = ()
 
 
 def _report_json(analysis: Analysis, brief: bool = False, streamed: bool = False) -> dict:

@@ -107,7 +107,10 @@ def test_streamed_levels_write_the_same_bytes(monkeypatch, tmp_path):
     monkeypatch.setattr(report_module, "_CHUNK", 7)
     rnd = random.Random(3)
     pts = {(rnd.randint(-999, 999), rnd.randint(-999, 999)) for _ in range(LONG_LIST + 40)}
+    inner = {(x, y) for x, y in pts if x * x + y * y < 990 ** 2} - {(0, 0)}
     for text in ("".join(f"{x}/7 {y}/3\n" for x, y in sorted(pts)),
+                 # a robot at the SEC centre (its level has no verdict) among single robots
+                 "0 0\n1000 0\n-1000 0\n" + "".join(f"{x} {y}/3\n" for x, y in sorted(inner)),
                  "0 0\n1 0\n0 1\n-1 -1\n"):
         path = tmp_path / "c.txt"
         path.write_text(text)
