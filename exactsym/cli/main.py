@@ -320,10 +320,12 @@ def entry() -> None:
     global _KEPT
     _KEPT = []
     code = main()
-    # the command's output is complete: end the process without freeing what it built
-    # one object at a time (a check of 100,000 robots holds millions of small objects,
-    # and freeing them cost a tenth of the command; at a million, seconds).  Only the
-    # command's own entry point does this; main() returns as any function does.
+    if not _KEPT:           # not a check of one file: end as usual (atexit handlers run)
+        sys.exit(code)
+    # a check's output is complete: end the process without freeing what it built one
+    # object at a time (a check of 100,000 robots holds millions of small objects, and
+    # freeing them cost a tenth of the command; at a million, seconds).  Only `check`
+    # of one file, from the command's own entry point; main() returns as any function.
     for stream in (sys.stdout, sys.stderr):
         try:
             stream.flush()
