@@ -320,7 +320,9 @@ def entry() -> None:
     global _KEPT
     _KEPT = []
     code = main()
-    if not _KEPT:           # not a check of one file: end as usual (atexit handlers run)
+    if not _KEPT or sys.getprofile() is not None or sys.gettrace() is not None:
+        # not a check of one file, or under a profiler or a coverage tracer (which write
+        # their data at exit): end as usual, atexit handlers run
         sys.exit(code)
     # a check's output is complete: end the process without freeing what it built one
     # object at a time (a check of 100,000 robots holds millions of small objects, and
