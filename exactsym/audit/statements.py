@@ -46,14 +46,15 @@ was checked (``docs/interpretations.md``, "Bounds of the family layer").
 
 from __future__ import annotations
 
+from .frames import FRAME_TEXT, frame_levels, reflected_frame, slim, transformed
 from .groups import SubGroups, group_about_centre
 from .handedness import MIRROR_RUN, decided_without_tie, frames_agree, other_handedness_findings
 from .levels import level_findings
 from .result import AuditResult
-from ..geometry.configuration import Configuration, Similarity, no_cycle_collection
+from ..geometry.configuration import Configuration, no_cycle_collection
 from ..exact import fmpq, number_text
 from ..labels import ALGORITHMS, STATEMENTS
-from ..geometry.levels import Levels, levels_of, mapped_levels
+from ..geometry.levels import Levels, levels_of
 from ..paper import family as F
 from ..paper.polygon_report import level_section
 from ..truth.symmetry import SymmetryGroup, symmetry_group
@@ -162,57 +163,6 @@ def _symmetry_witness(group: SymmetryGroup, robots) -> dict | None:
         out["maps"] = f"robot {robots[moved]} -> robot {robots[perm[moved]]}"
         out["robot_map"] = {"from": robots[moved], "to": robots[perm[moved]]}   # "maps" as data
     return out
-
-
-# ---------------------------------------------------------------- transformed inputs
-#: The frames the paper is recomputed in: polar configurations about C stay polar.
-POLAR_FRAMES = {"reflection": Similarity(reflect=True),
-                "similarity": Similarity(turn=fmpq(1, 7), scale=2)}
-CARTESIAN_FRAMES = {"reflection": Similarity(reflect=True),
-                    "similarity": Similarity(rotation=(fmpq(3, 5), fmpq(4, 5)), scale=2,
-                                             shift=(fmpq(1, 3), fmpq(-1, 2)))}
-
-
-def transformed(config: Configuration, ring_data: Levels, frame: str) -> Configuration:
-    """``config`` in another coordinate system, robot indices unchanged.
-
-    Polar configurations (about C): ``reflection`` turn -> -turn; ``similarity`` turn ->
-    turn + 1/7, r -> 2r (both keep the configuration polar: its Cartesian coordinates are
-    never built).  Otherwise: ``reflection`` (x, y) -> (x, -y); ``similarity`` the
-    rotation (3/5, 4/5), the scale 2 and the translation (1/3, -1/2), all exact."""
-    if frame == "identity":
-        return config
-    if ring_data.polar and config.radii is not None:
-        return config.transformed(POLAR_FRAMES[frame])
-    cartesian = config.cartesian() if config.polar is not None else config
-    return cartesian.transformed(CARTESIAN_FRAMES[frame])
-
-
-def _frame_levels(config: Configuration, ring_data: Levels, moved: Configuration,
-                  frame: str, rings=()) -> Levels | None:
-    """The levels of ``moved`` (``config`` in ``frame``, from :func:`transformed`) mapped
-    from ``ring_data`` (the levels of ``config``) along the frame's similarity (the SEC,
-    the levels and their radii are ground truth, not the paper's:
-    :func:`exactsym.geometry.levels.mapped_levels`), or None (then the paper's procedure computes
-    them)."""
-    enc = ring_data.enclosures
-    if ring_data.polar or moved.polar is not None or enc is None \
-            or len(enc.points) != config.n \
-            or not all(a is b for a, b in zip(enc.points, config.points)):
-        return None
-    # the vectors p - C of the paper's own polygons (``rings``: G as Rings), mapped
-    vectors = {label[0]: d for ring in rings if ring.polygon is not None
-               and not ring.polygon.polar and len(ring.robots) == 1
-               for label, d in zip(ring.polygon.labels, ring.polygon.directions)}
-    return mapped_levels(ring_data, moved.points, CARTESIAN_FRAMES[frame], vectors)
-
-
-FRAME_TEXT = {
-    "identity": "the file's coordinates",
-    "reflection": "reflected (x, y) -> (x, -y) (polar: turn -> -turn)",
-    "similarity": "rotated (3/5, 4/5), scaled by 2, translated by (1/3, -1/2) "
-                  "(polar: turn + 1/7, r -> 2r)",
-}
 
 
 def _actions(res: F.PaperResult) -> tuple:
@@ -501,9 +451,9 @@ def _mirror_run(config, ring_data, paper, kw) -> F.PaperResult | None:
     run exactly."""
     moved = transformed(config, ring_data, "reflection")
     try:
-        return F.paper_procedure(moved, _frame_levels(config, ring_data, moved, "reflection",
-                                                      paper.G_rings), **kw,
-                                 claims=False, describe_polygons=False)
+        levels, polygons = reflected_frame(config, ring_data, moved, paper.G_rings)
+        return slim(F.paper_procedure(moved, levels, **kw, level_polygons=polygons,
+                                      claims=False, describe_polygons=False))
     except (ArithmeticError, NotImplementedError, ValueError):
         return None
 
@@ -527,9 +477,10 @@ def _leader_check(config, ring_data, paper, group, kw, options,
                 res = mirror
             else:
                 moved = transformed(config, ring_data, frame)
-                res = F.paper_procedure(moved, _frame_levels(config, ring_data, moved, frame,
-                                                             paper.G_rings), **kw,
-                                        claims=False, check_vl=False, describe_polygons=False)
+                res = slim(F.paper_procedure(moved, frame_levels(config, ring_data, moved,
+                                                                  frame, paper.G_rings), **kw,
+                                             claims=False, check_vl=False,
+                                             describe_polygons=False))
             if frames_agree(paper, res):
                 continue
             entry, note = _frame_difference(config, paper, res, frame, kw)

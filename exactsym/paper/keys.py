@@ -10,7 +10,7 @@ turn of the line in [0, 1/2), or the ray of its doubled angle (``lemma-LOS-Passe
 from __future__ import annotations
 
 from functools import cmp_to_key
-from math import atan2, gcd, pi
+from math import atan2, gcd, lcm, pi
 
 from flint import ctx
 
@@ -550,17 +550,16 @@ def bisector_line(polar: bool, a, b):
 def integer_directions(dirs):
     """Rational direction vectors of one length, times one positive integer: int pairs
     of one length (rays, lines and angles unchanged; cheap exact arithmetic without
-    division), or None when a coordinate is not an fmpq or the lengths differ."""
-    den = 1
+    division), or None when a coordinate is not an fmpq or the lengths differ.  The
+    integer is the least common multiple of the coordinates' denominators."""
+    parts = []
     for x, y in dirs:
-        if not all_plain_rational((x, y)):
-            return None
-        qx, qy = int(x.q), int(y.q)
-        if den % qx:
-            den = den // gcd(den, qx) * qx
-        if den % qy:
-            den = den // gcd(den, qy) * qy
-    out = [(int(x.p) * (den // int(x.q)), int(y.p) * (den // int(y.q))) for x, y in dirs]
+        if type(x) is not fmpq or type(y) is not fmpq:
+            if not all_plain_rational((x, y)):      # (an fmpq subclass is one too)
+                return None
+        parts.append((int(x.p), int(x.q), int(y.p), int(y.q)))
+    den = lcm(*[q for _, qx, _, qy in parts for q in (qx, qy)])
+    out = [(px * (den // qx), py * (den // qy)) for px, qx, py, qy in parts]
     x0, y0 = out[0]
     r2 = x0 * x0 + y0 * y0
     for x, y in out:
@@ -594,14 +593,23 @@ def integer_gap_key(a, b) -> tuple:
 
 def gap_ids(poly: CirclePolygon) -> list:
     """Small integers, equal iff the counter-clockwise gaps between consecutive vertices
-    are equal (exact)."""
+    are equal (exact), numbered in order of first occurrence.  Of integer directions
+    (:func:`polygon_integer_directions`) computed once per polygon and kept in its
+    ``__dict__`` (``"gap_ids"``; the polygon layer's combinatorial key stores the same
+    list, and the family layer's polygon of a level takes it: issue 33, one gap key per
+    edge); the list is shared: do not modify it."""
     n, dirs = poly.n, poly.directions
     ids: dict = {}
     if not poly.polar and n > 1:
+        cached = poly.__dict__.get("gap_ids")
+        if cached is not None:
+            return cached
         u = polygon_integer_directions(poly)
         if u is not None:
-            return [ids.setdefault(integer_gap_key(u[i], u[(i + 1) % n]), len(ids))
-                    for i in range(n)]
+            out = poly.__dict__["gap_ids"] = [
+                ids.setdefault(integer_gap_key(u[i], u[(i + 1) % n]), len(ids))
+                for i in range(n)]
+            return out
         if poly.one_circle:
             # one circle: the gaps are told apart by the sign of the cross product and
             # the dot product, filtered by balls (exact products only for near ties)

@@ -42,6 +42,7 @@ axes), or ``{"omitted": reason}`` above :data:`STRING_LIMIT` vertices.
 from __future__ import annotations
 
 import json
+from collections.abc import Sequence
 
 from dataclasses import dataclass, field
 
@@ -231,6 +232,7 @@ def _single_relabeller(verdict: dict, label):
         if definition is not None:
             out["definition"] = dict(definition)
         return out
+    relabelled.json_parts = parts       # the JSON text of relabelled(x): str(x).join(parts)
     return relabelled
 
 
@@ -360,7 +362,7 @@ def _level_section(config, levels, strings: bool) -> LevelSection:
                 single = (_single_relabeller(verdict, polygon.labels[0]), facts)
             if single[0] is not None:
                 polygons.append(None)
-                verdicts.append(single[0](level.points[0]))
+                verdicts.append(level.points[0])    # made when read (SingleVerdicts)
                 types.append(single[1])
                 continue
         polygon = level_polygon(config, levels, index, cleared=True)
@@ -369,5 +371,49 @@ def _level_section(config, levels, strings: bool) -> LevelSection:
         verdicts.append(verdict)
         types.append(facts)
         texts.append(level_strings(polygon) if strings else None)
-    return LevelSection(tuple(verdicts), tuple(texts) if strings else None, tuple(types),
+    made = tuple(verdicts) if single is None or single[0] is None \
+        else SingleVerdicts(verdicts, single[0])
+    return LevelSection(made, tuple(texts) if strings else None, tuple(types),
                         tuple(polygons))
+
+
+class SingleVerdicts(Sequence):
+    """The per-level verdicts of :func:`level_section` as a read-only sequence equal to the
+    tuple of them (``==``; pickled as that tuple): the verdict of a level of one robot
+    (every level of a random configuration), the one single-vertex verdict relabelled to
+    its robot, is made when it is read (a million levels held a million dicts: issue 33);
+    the others are held.  ``items[k]``: level k's verdict, or its robot (an int);
+    ``relabelled.json_parts``: the JSON text of the verdict of robot x is
+    ``str(x).join(json_parts)`` (None: no template, :class:`LabelledVerdict`)."""
+
+    __slots__ = ("items", "relabelled")
+
+    def __init__(self, items: list, relabelled):
+        self.items, self.relabelled = items, relabelled
+
+    def __len__(self) -> int:
+        return len(self.items)
+
+    def __getitem__(self, k):
+        if isinstance(k, slice):
+            relabelled = self.relabelled
+            return tuple([relabelled(x) if type(x) is int else x for x in self.items[k]])
+        x = self.items[k]
+        return self.relabelled(x) if type(x) is int else x
+
+    def __iter__(self):
+        relabelled = self.relabelled
+        return (relabelled(x) if type(x) is int else x for x in self.items)
+
+    def __eq__(self, other):
+        if isinstance(other, (tuple, SingleVerdicts)):
+            return len(self) == len(other) and all(a == b for a, b in zip(self, other))
+        return NotImplemented
+
+    __hash__ = None
+
+    def __repr__(self) -> str:
+        return repr(tuple(self))
+
+    def __reduce__(self):
+        return (tuple, (tuple(self),))

@@ -21,7 +21,7 @@ from ..geometry.configuration import Configuration, no_cycle_collection
 from ..exact import evaluate, number_system
 from ..io.expr import parse_expression
 from ..paper.polygon_report import LabelledVerdict
-from .json_form import report_json
+from .json_form import JSONText, LevelEntries, report_json
 from .summary import summary_text
 
 
@@ -104,13 +104,20 @@ def write_json(report: dict, stream, compact: bool = False) -> None:
     in a cyclotomic field of degree thousands the text is gigabytes, and joining it, then
     encoding it for printing, held two more copies of it."""
     if compact:
-        stream.write(json.dumps(report) + "\n")
+        stream.write(json.dumps(report, default=_as_list) + "\n")
         return
     sink = _Sink(stream)
     with no_cycle_collection():
         _write(report, "", sink)
     sink.append("\n")
     sink.flush()
+
+
+def _as_list(value) -> list:
+    """The list a streamed part of a report stands for (``json.dumps``'s ``default``)."""
+    if isinstance(value, LevelEntries):
+        return value.as_list()
+    raise TypeError(f"Object of type {type(value).__name__} is not JSON serializable")
 
 
 class _Sink:
@@ -144,15 +151,17 @@ def _write(value, pad: str, out: list) -> None:
             _write(item, inner, out)
             sep = ",\n"
         out.append("\n" + pad + "}")
+    elif isinstance(value, LevelEntries):
+        if len(value) > LONG_LIST:
+            _write_items(value, pad, out)
+        else:
+            _write(value.as_list(), pad, out)
     elif isinstance(value, list) and len(value) > LONG_LIST:
         if set(map(type, value)) <= _SCALARS or all(not isinstance(x, (dict, list))
                                                      for x in value):
             out.append(_item(value))
         else:
-            # three pieces: the items' text (tens of megabytes) is not copied once more
-            out.append("[\n" + inner)
-            out.append((",\n" + inner).join(map(_item, value)))
-            out.append("\n" + pad + "]")
+            _write_items(value, pad, out)
     elif isinstance(value, list) and value:
         out.append("[")
         sep = "\n"
@@ -163,6 +172,29 @@ def _write(value, pad: str, out: list) -> None:
         out.append("\n" + pad + "]")
     else:
         out.append(json.dumps(value))
+
+
+#: Items of a long list joined into one piece of text (then handed to the stream).
+_CHUNK = 2048
+
+
+def _write_items(items, pad: str, out) -> None:
+    """A long list (or :class:`~exactsym.report.json_form.LevelEntries`) of containers,
+    one item per line: joined by pieces of :data:`_CHUNK` items, so that the text of a
+    million levels is never one string (issue 33)."""
+    inner = pad + "  "
+    sep = ",\n" + inner
+    out.append("[\n" + inner)
+    chunk = []
+    first = True
+    for item in (items.json_items() if isinstance(items, LevelEntries) else items):
+        chunk.append(item if type(item) is JSONText else _item(item))
+        if len(chunk) == _CHUNK:
+            out.append(("" if first else sep) + sep.join(chunk))
+            first, chunk = False, []
+    if chunk:
+        out.append(("" if first else sep) + sep.join(chunk))
+    out.append("\n" + pad + "]")
 
 
 def report_text(analysis: Analysis, verbose: bool = False) -> str:

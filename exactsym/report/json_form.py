@@ -6,6 +6,8 @@ check) and :mod:`exactsym.report.summary` (the text), which is why it sits below
 
 from __future__ import annotations
 
+from json.encoder import encode_basestring_ascii
+
 from ..analysis import Analysis
 from ..geometry.configuration import no_cycle_collection
 from ..exact import fmpq
@@ -15,19 +17,77 @@ from ..paper.homogeneous import centre_texts, radius_text, sec_radius_text
 from ..truth.report import truth_json
 from ..version import json_head
 
-__all__ = ["report_json"]
+__all__ = ["report_json", "LevelEntries", "JSONText"]
 
 
-def report_json(analysis: Analysis, brief: bool = False) -> dict:
+def report_json(analysis: Analysis, brief: bool = False, streamed: bool = False) -> dict:
     """The JSON object of ``exactsym check --json`` (``docs/cli.md``).  ``brief``: without
     ``sec``, ``levels`` and the paper's ``G`` and ``G_prime`` (their exact texts: seconds
-    in a cyclotomic field of degree thousands), for summaries that do not print them."""
+    in a cyclotomic field of degree thousands), for summaries that do not print them.
+    ``streamed``: ``levels`` is a :class:`LevelEntries`, whose entries are made as the
+    writer (:func:`exactsym.report.check.write_json`) reads them, not a list of them all
+    (a million levels held a million dicts: issue 33)."""
     # one small dict per level: nothing cyclic; the texts read the analysis's forms
     with no_cycle_collection(), analysis.reading():
-        return _report_json(analysis, brief)
+        return _report_json(analysis, brief, streamed)
 
 
-def _report_json(analysis: Analysis, brief: bool = False) -> dict:
+class LevelEntries:
+    """The ``levels`` of a report, one entry (the dict :func:`_level_entries` makes) per
+    level, made when iterated: as many as the levels (``len``), each equal to the list
+    entry; iterating again makes them again.  Read by the JSON writer, which writes it
+    as the list it stands for."""
+
+    __slots__ = ("levels", "verdicts", "strings")
+
+    def __init__(self, levels, verdicts, strings):
+        self.levels, self.verdicts, self.strings = levels, verdicts, strings
+
+    def __len__(self) -> int:
+        return len(self.levels)
+
+    def __iter__(self):
+        levels, verdicts, strings = self.levels, self.verdicts, self.strings
+        step = 4096
+        for start in range(0, len(levels), step):
+            stop = start + step
+            yield from _level_entries(
+                levels[start:stop], None if verdicts is None else verdicts[start:stop],
+                None if strings is None else strings[start:stop])
+
+    def as_list(self) -> list:
+        return _level_entries(self.levels, self.verdicts, self.strings)
+
+    def json_items(self):
+        """The entries as the writer takes them: a level of one robot whose verdict is
+        made when read (:class:`~exactsym.paper.polygon_report.SingleVerdicts` with a JSON
+        template) as its JSON text (a :class:`JSONText`, the text the writer makes of its
+        entry), without making the verdict; every other level as its entry."""
+        verdicts = self.verdicts
+        parts = getattr(getattr(verdicts, "relabelled", None), "json_parts", None)
+        if parts is None or self.strings is not None or len(verdicts) != len(self.levels):
+            yield from self
+            return
+        items, levels = verdicts.items, self.levels
+        step = 4096
+        for start in range(0, len(levels), step):
+            stop = start + step
+            for level, x in zip(levels[start:stop], items[start:stop]):
+                if type(x) is int:
+                    r2 = level.radius_squared
+                    r2 = str(r2) if type(r2) is fmpq else _radius_text(r2)
+                    yield JSONText(f'{{"radius_squared": {encode_basestring_ascii(r2)}, '
+                                   f'"points": [{x!r}], "paper": {str(x).join(parts)}}}')
+                else:
+                    yield _level_entries((level,), (x,), None)[0]
+
+
+class JSONText(str):
+    """The JSON text of one item of a streamed list (:meth:`LevelEntries.json_items`)."""
+    __slots__ = ()
+
+
+def _report_json(analysis: Analysis, brief: bool = False, streamed: bool = False) -> dict:
     config, levels = analysis.config, analysis.levels
     # format, schema_version, file, name first (docs/json.md); the rest as before
     report = json_head("exactsym-check", config.source, config.name)
@@ -43,8 +103,8 @@ def _report_json(analysis: Analysis, brief: bool = False) -> dict:
     report["number_field"] = getattr(config.polar_system if levels.polar else config.system,
                                      "name", "Q")
     if not brief:
-        report["levels"] = _level_entries(levels.levels, analysis.level_verdicts,
-                                          analysis.level_strings)
+        report["levels"] = (LevelEntries if streamed else _level_entries)(
+            levels.levels, analysis.level_verdicts, analysis.level_strings)
     if analysis.truth is not None:
         report.update(truth_json(analysis.truth))
     if analysis.paper is not None:

@@ -64,3 +64,31 @@ def test_cartesian_configuration_with_other_centre():
     report = check_report(config)
     paper = report["levels"][-1]["paper"]
     assert paper["type"] == "type-0" and paper["lines_by_strings"] == 4
+
+
+def test_single_robot_verdicts_are_made_when_read():
+    """Levels of one robot (random input): the verdicts are a SingleVerdicts sequence,
+    equal to the tuple of the verdicts each level's polygon gets on its own, item by item,
+    by slices and as a whole; pickled as that tuple."""
+    import pickle
+    import random
+    from exactsym.analysis import built_levels
+    from exactsym.geometry.configuration import from_file
+    from exactsym.geometry.levels import levels_of
+    from exactsym.io.fileformat import parse_config_text
+    from exactsym.paper.circle_polygon import level_polygon
+    from exactsym.paper.polygon_report import SingleVerdicts, level_section, level_verdicts
+    rnd = random.Random(11)
+    pts = {(rnd.randint(-500, 500), rnd.randint(-500, 500)) for _ in range(40)}
+    pts |= {(3, 4), (-3, -4), (4, -3), (-4, 3)}        # one level of four robots
+    text = "".join(f"{x}/3 {y}/7\n" for x, y in sorted(pts))
+    config = from_file(parse_config_text(text, "<test>", "txt"))
+    levels = built_levels(levels_of(config))
+    section = level_section(config, levels)
+    assert isinstance(section.verdicts, SingleVerdicts)
+    want = tuple(level_verdicts(level_polygon(config, levels, k))
+                 for k in range(len(levels.levels)))
+    assert tuple(section.verdicts) == want and section.verdicts == want
+    assert section.verdicts[3:9] == want[3:9] and section.verdicts[-1] == want[-1]
+    assert any(len(level.points) > 1 for level in levels.levels)
+    assert pickle.loads(pickle.dumps(section.verdicts)) == want

@@ -55,3 +55,72 @@ def test_written_by_pieces_the_same_text(monkeypatch):
     compact = io.StringIO()
     report_module.write_json(report, compact, compact=True)
     assert compact.getvalue() == json_text(report, compact=True) + "\n"
+
+
+def _old_json_text(report: dict) -> str:
+    """The writer as it was before the levels were streamed (issue 33): every long list of
+    containers joined into one string; the reference the streamed text must equal."""
+    from exactsym.report.check import _item, _SCALARS
+
+    def write(value, pad, out):
+        inner = pad + "  "
+        if isinstance(value, dict) and value:
+            out.append("{")
+            sep = "\n"
+            for key, item in value.items():
+                out.append(sep + inner + json.dumps(str(key)) + ": ")
+                write(item, inner, out)
+                sep = ",\n"
+            out.append("\n" + pad + "}")
+        elif isinstance(value, list) and len(value) > LONG_LIST:
+            if set(map(type, value)) <= _SCALARS:
+                out.append(_item(value))
+            else:
+                out.append("[\n" + inner + (",\n" + inner).join(map(_item, value))
+                           + "\n" + pad + "]")
+        elif isinstance(value, list) and value:
+            out.append("[")
+            sep = "\n"
+            for item in value:
+                out.append(sep + inner)
+                write(item, inner, out)
+                sep = ",\n"
+            out.append("\n" + pad + "]")
+        else:
+            out.append(json.dumps(value))
+    out: list = []
+    write(report, "", out)
+    return "".join(out)
+
+
+def test_streamed_levels_write_the_same_bytes(monkeypatch, tmp_path):
+    """``check --json`` makes the levels' entries as it writes them
+    (:class:`exactsym.report.json_form.LevelEntries`), joined by pieces of ``_CHUNK``
+    items (here 7, so that the pieces' seams fall inside the list): the text is the one
+    the former writer made from the whole list, byte for byte, in both layouts; with a
+    short list too."""
+    import io
+    import random
+    import exactsym.report.check as report_module
+    from exactsym.analysis import analyse
+    from exactsym.report.json_form import LevelEntries, report_json
+    monkeypatch.setattr(report_module, "_CHUNK", 7)
+    rnd = random.Random(3)
+    pts = {(rnd.randint(-999, 999), rnd.randint(-999, 999)) for _ in range(LONG_LIST + 40)}
+    inner = {(x, y) for x, y in pts if x * x + y * y < 990 ** 2} - {(0, 0)}
+    for text in ("".join(f"{x}/7 {y}/3\n" for x, y in sorted(pts)),
+                 # a robot at the SEC centre (its level has no verdict) among single robots
+                 "0 0\n1000 0\n-1000 0\n" + "".join(f"{x} {y}/3\n" for x, y in sorted(inner)),
+                 "0 0\n1 0\n0 1\n-1 -1\n"):
+        path = tmp_path / "c.txt"
+        path.write_text(text)
+        analysis = analyse(load(path))
+        whole = report_json(analysis)
+        streamed = report_json(analysis, streamed=True)
+        assert isinstance(streamed["levels"], LevelEntries)
+        assert list(streamed["levels"]) == whole["levels"]
+        for compact in (False, True):
+            out = io.StringIO()
+            report_module.write_json(streamed, out, compact=compact)
+            want = json.dumps(whole) if compact else _old_json_text(whole)
+            assert out.getvalue() == want + "\n"

@@ -160,8 +160,9 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
                 poly = new_polygon(CirclePolygon)
                 poly.__dict__.update(labels=labels, directions=built.directions,
                                      polar=polar, one_circle=True)
-                if "integer_vectors" in built.__dict__:
-                    poly.__dict__["integer_vectors"] = built.__dict__["integer_vectors"]
+                for kept in ("integer_vectors", "gap_ids"):     # computed once per level
+                    if kept in built.__dict__:
+                        poly.__dict__[kept] = built.__dict__[kept]
                 out.append(new_ring(f"G{k + 1}", poly, level.radius_squared, (k + 1,),
                                     robots, robots))
                 continue
