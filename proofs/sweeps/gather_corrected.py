@@ -12,7 +12,7 @@ generic frames, stops at and between every critical instant, joint steps, non-ri
 after delta = 1/4), then the seeded non-rigid ASYNC run to its end (EVENTS events at most).
 
     python proofs/sweeps/gather_corrected.py run [--chunk N] [--until SECONDS] [NAME ...]
-    python proofs/sweeps/gather_corrected.py table [--docs FILE] [--findings FILE]
+    python proofs/sweeps/gather_corrected.py table [--docs FILE] [--findings FILE] [--cases DIR]
 
 ``run`` sweeps the chunks round-robin, N new configurations of each at a time (resumable:
 each chunk's results file is appended to, and a killed run loses at most one batch), until
@@ -21,7 +21,8 @@ every chunk is complete or SECONDS have passed.  ``table`` writes
 run, gathered, no leader, not possible with a leader, violations, stalls, undecided,
 other, errors, median events; events against n), prints the tables, rewrites the
 generated section of ``docs/gathering-corrected.md`` (``--docs``) and appends every start
-that counts against the claim (point list + family) to ``--findings``.
+that counts against the claim (point list + family) to ``--findings`` and copies the
+smallest start of each failing class to ``--cases`` (``cases/sweeps/gather_corrected/``).
 ``check()`` (the ledger's script evidence) verifies the JSON against the results files.
 """
 
@@ -76,8 +77,11 @@ def planned(family: str) -> int:
 def sweep_chunk(name: str, family: str, count: int) -> dict:
     """Run ``exactsym sweep`` on one chunk for ``count`` more configurations."""
     out = _out(name)
+    # paths relative to the checkout (the command runs there): the evidence file and the
+    # case files name them, and no path of the machine goes into the tree
     cmd = [sys.executable, "-m", "exactsym.sweeps", _family(family), "--what",
-           "gather-corrected", "--serial", "--out", str(out), "--stop-after", str(count),
+           "gather-corrected", "--serial", "--out", str(out.relative_to(ROOT)),
+           "--stop-after", str(count),
            "--timeout", "900", "--json"]
     if out.exists():
         cmd.append("--resume")
@@ -212,6 +216,31 @@ def findings(data: dict, path: Path) -> int:
     return len(lines)
 
 
+def smallest_cases(data: dict, directory: Path) -> list[Path]:
+    """Copy the smallest start of each failing class over every chunk (fewest robots,
+    then smallest denominators, then smallest size, then key: the sweep's order) from the
+    chunks' case files (``exactsym sweep --cases``) to ``directory``."""
+    best: dict = {}
+    for r in data["chunks"]:
+        evidence = RESULTS / f"{r['chunk']}.evidence.json"
+        if not r["ran"] or not evidence.exists():
+            continue
+        for item in json.loads(evidence.read_text(encoding="utf-8"))["evidence"]:
+            small = item.get("smallest")
+            if not small or not small.get("case"):
+                continue
+            rank = (small["robots"], small["denominator"], small["size"], small["key"])
+            if item["statement"] not in best or rank < best[item["statement"]][0]:
+                best[item["statement"]] = (rank, ROOT / small["case"])
+    directory.mkdir(parents=True, exist_ok=True)
+    out = []
+    for label, (_rank, case) in sorted(best.items()):
+        target = directory / case.name
+        target.write_text(case.read_text(encoding="utf-8"), encoding="utf-8")
+        out.append(target)
+    return out
+
+
 def check() -> None:
     """The committed summary is what the committed results files say."""
     saved = json.loads(SUMMARY.read_text(encoding="utf-8"))
@@ -230,6 +259,8 @@ def main() -> None:
     t = sub.add_parser("table")
     t.add_argument("--docs", type=Path, default=None)
     t.add_argument("--findings", type=Path, default=None)
+    t.add_argument("--cases", type=Path, default=None,
+                   help="copy the smallest start of each failing class here")
     args = ap.parse_args()
     if args.command == "run":
         run(args.names, args.chunk, args.until)
@@ -242,6 +273,9 @@ def main() -> None:
         write_docs(args.docs, data)
     if args.findings:
         print(f"{findings(data, args.findings)} finding(s) appended to {args.findings}")
+    if args.cases:
+        for path in smallest_cases(data, args.cases):
+            print(f"case: {path}")
 
 
 if __name__ == "__main__":
