@@ -86,6 +86,8 @@ def _evidence_text(s: Statement, sweeps: dict) -> str:
             parts.append(f"`{e.path}` (reading matrix)")
         elif e.kind == "coq":
             parts.append(f"`{e.path}` (Coq-checked: coqc accepts it)")
+        elif e.kind == "gather_sweep":
+            parts.append(f"`{e.path}` (gathering sweep)")
         else:
             parts.append(f"`{e.path}`")
     return "; ".join(parts) or "--"
@@ -145,6 +147,16 @@ def render(ledger: Ledger, support: dict[str, Support], sweeps: dict | None = No
         lines += [f"| `{f.id}` | {', '.join(f'`{a}`' for a in f.about)} | "
                   f"{f.lines[0]}-{f.lines[1]} | {_cell(f.claim + ' ' + f.finding)} | "
                   f"{_cell(_evidence_text(f, sweeps))} |" for f in ledger.findings]
+    if ledger.claims:
+        lines += ["", "## exactsym's own claims", "",
+                  "Statements of exactsym's, not the paper's (`[[claim]]` in the ledger): the "
+                  "corrected gathering algorithm (issue 31). Their grade must follow from "
+                  "their evidence, re-run like a statement's.", "",
+                  "| claim | about | grade | claim and what exactsym finds | evidence |",
+                  "| --- | --- | --- | --- | --- |"]
+        lines += [f"| `{c.id}` | {', '.join(f'`{a}`' for a in c.about)} | **{c.grade}** | "
+                  f"{_cell(c.claim + ' ' + c.finding)} | {_cell(_evidence_text(c, sweeps))} |"
+                  for c in ledger.claims]
     changed = [s for s in ledger.statements if s.changed]
     if changed:
         lines += ["", "## Changed by the re-grading (issue 10)", ""]

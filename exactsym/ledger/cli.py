@@ -105,7 +105,9 @@ def ledger_json(ledger, sup) -> dict:
         for s in ledger.statements],
         "findings": [{"id": f.id, "about": list(f.about), "lines": list(f.lines),
                       "claim": f.claim, "evidence": [e.as_dict() for e in f.evidence]}
-                     for f in ledger.findings]}
+                     for f in ledger.findings],
+        "claims": [{"id": c.id, "about": list(c.about), "grade": c.grade, "claim": c.claim,
+                    "evidence": [e.as_dict() for e in c.evidence]} for c in ledger.claims]}
 
 
 def sweep_texts(ledger, root: Path) -> dict:
@@ -239,7 +241,8 @@ def run(args) -> int:
             counts[s.grade] = counts.get(s.grade, 0) + 1
         print(f"{len(ledger.statements)} statements: " +
               ", ".join(f"{k} {v}" for k, v in counts.items()) +
-              f"; {len(ledger.findings)} findings without a label")
+              f"; {len(ledger.findings)} findings without a label; "
+              f"{len(ledger.claims)} claims of exactsym's own")
         resting = [s.label for s in ledger.statements if sup[s.label].rests_on_refuted
                    and s.grade not in ("refuted",)]
         print(f"{len(resting)} not refuted themselves but resting on a refuted statement: "

@@ -13,6 +13,8 @@
 * a sweep summary (:mod:`.sweeps`): well formed, reports on the label, its verdict is
   consistent with the grade, and a failure's smallest case is re-run like an
   ``audit-false`` case (and has the summary's number of robots);
+* a gathering sweep summary (:mod:`.gather_sweep`, claims): well formed, and the claim's
+  grade follows from its counts;
 * a stored gathering reading matrix (:mod:`.gathering_matrices`): well formed; the grade
   its statement's matrices imply is no stricter than the ledger's; re-run from its case
   (those that took at most ``matrix_seconds`` CPU seconds when written; None: all), every
@@ -31,6 +33,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
+from .gather_sweep import GatherSweepError, load_gather_sweep
+from .gather_sweep import grade_problems as gather_grade_problems
 from .gathering_matrices import MatrixError, grade_problems, load_matrix, rerun_problems
 from .model import Evidence, Ledger
 from .sweeps import SweepError, consistency, load_sweep, needs_case
@@ -56,7 +60,7 @@ def _describe(e: Evidence) -> str:
 
 def missing_files(ledger: Ledger, root: Path) -> list[Mismatch]:
     out = []
-    for s in (*ledger.statements, *ledger.findings):
+    for s in (*ledger.statements, *ledger.findings, *ledger.claims):
         for e in s.evidence:
             if not (root / e.path).is_file():
                 out.append(Mismatch(s.label, _describe(e), "file not found"))
@@ -93,7 +97,7 @@ def check_evidence(ledger: Ledger, root: Path,
     coq_state: dict = {}
     out = missing_files(ledger, root)
     missing = {(m.label, m.evidence) for m in out}
-    for s in (*ledger.statements, *ledger.findings):
+    for s in (*ledger.statements, *ledger.findings, *ledger.claims):
         for e in s.evidence:
             if (s.label, _describe(e)) in missing:
                 continue
@@ -172,6 +176,14 @@ def check_evidence(ledger: Ledger, root: Path,
             elif e.kind == "coq":
                 out.extend(Mismatch(s.label, _describe(e), p)
                            for p in _coq_problems(s, path, root, coq_state, progress))
+            elif e.kind == "gather_sweep":
+                try:
+                    data = load_gather_sweep(path)
+                except (GatherSweepError, OSError) as err:
+                    out.append(Mismatch(s.label, _describe(e), str(err)))
+                    continue
+                out.extend(Mismatch(s.label, _describe(e), p)
+                           for p in gather_grade_problems(getattr(s, "grade", ""), data))
             elif e.kind == "matrix":
                 out.extend(Mismatch(s.label, _describe(e), p) for p in
                            _matrix_problems(e.path, root, matrices, matrix_seconds, progress))

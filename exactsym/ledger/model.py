@@ -19,7 +19,8 @@ from pathlib import Path
 from ..errors import InputError
 from ..labels import ALGORITHMS, LABELS, STATEMENTS, unknown_label_message
 
-__all__ = ["GRADES", "KINDS", "EVIDENCE_VERDICTS", "Evidence", "Statement", "Finding", "Ledger",
+__all__ = ["GRADES", "KINDS", "EVIDENCE_VERDICTS", "Evidence", "Statement", "Finding", "Claim",
+           "CLAIM_GRADES", "Ledger",
            "LedgerError", "load_ledger", "parse_ledger"]
 
 #: Grades, strongest claim against the paper first.
@@ -49,7 +50,8 @@ class Evidence:
     certificate that exactsym.checker.verify_refutation accepts for this label),
     ``matrix`` (a stored gathering reading matrix, :mod:`.gathering_matrices`), ``coq``
     (the statement's refutation as a Coq file, written from its certificate, that
-    ``coqc`` accepts: the refutation is Coq-checked)."""
+    ``coqc`` accepts: the refutation is Coq-checked), ``gather_sweep`` (a gathering
+    sweep's summary, :mod:`.gather_sweep`; claims only)."""
     kind: str
     path: str
     verdict: str | None = None
@@ -106,11 +108,36 @@ class Finding:
         return self.id
 
 
+#: The grades of exactsym's own claims (``[[claim]]``): no definition, no reading.
+CLAIM_GRADES = ("proved", "holds-on-cases", "open", "refuted")
+
+
+@dataclass(frozen=True)
+class Claim:
+    """A statement of exactsym's own, not the paper's (``[[claim]]``): the corrected
+    gathering algorithm's (issue 31).  ``id`` names it, ``about`` lists the paper's
+    labels it repairs; its grade must follow from its evidence -- cases (verdict
+    expect), proofs, scripts and ``gather_sweep`` summaries (:mod:`.gather_sweep`)."""
+    id: str
+    about: tuple[str, ...]
+    claim: str
+    grade: str
+    finding: str
+    evidence: tuple[Evidence, ...]
+    checked_by: str
+
+    @property
+    def label(self) -> str:
+        """The name a mismatch is reported under (its id)."""
+        return self.id
+
+
 @dataclass(frozen=True)
 class Ledger:
     source: str
     statements: tuple[Statement, ...]
     findings: tuple[Finding, ...] = ()
+    claims: tuple[Claim, ...] = ()
 
     def by_label(self) -> dict[str, Statement]:
         return {s.label: s for s in self.statements}
@@ -133,7 +160,7 @@ def parse_ledger(text: str, source: str = "<ledger>") -> Ledger:
         raise LedgerError(f"malformed TOML: {err}", source) from None
     if data.get("format") != 1:
         raise LedgerError("format must be 1", source)
-    extra = set(data) - {"format", "statement", "finding"}
+    extra = set(data) - {"format", "statement", "finding", "claim"}
     if extra:
         raise LedgerError(f"unknown top-level key(s) {sorted(extra)}", source)
     entries = data.get("statement", [])
@@ -149,10 +176,44 @@ def parse_ledger(text: str, source: str = "<ledger>") -> Ledger:
         raise LedgerError(f"no entry for label(s) {', '.join(missing)} (every label of "
                           "exactsym.labels has exactly one entry)", source)
     findings = tuple(_finding(e, k, source) for k, e in enumerate(data.get("finding", []), 1))
-    ids = [f.id for f in findings]
+    claims = tuple(_claim(e, k, source) for k, e in enumerate(data.get("claim", []), 1))
+    ids = [f.id for f in findings] + [c.id for c in claims]
     if len(set(ids)) != len(ids):
-        raise LedgerError(f"finding ids must be unique (got {ids})", source)
-    return Ledger(source, statements, findings)
+        raise LedgerError(f"finding and claim ids must be unique (got {ids})", source)
+    return Ledger(source, statements, findings, claims)
+
+
+_CLAIM_FIELDS = {"id", "about", "claim", "grade", "finding", "evidence", "checked_by"}
+
+
+def _claim(entry, k: int, source: str) -> Claim:
+    where = f"claim {k}"
+    if not isinstance(entry, dict) or set(entry) != _CLAIM_FIELDS:
+        raise LedgerError(f"{where}: the fields are exactly {sorted(_CLAIM_FIELDS)}", source)
+    cid = entry["id"]
+    if not isinstance(cid, str) or not cid or cid in LABELS \
+            or not all(c.isalnum() or c == "-" for c in cid):
+        raise LedgerError(f"{where}: id must be a new name of letters, digits and '-' (not a "
+                          f"label of the paper): {cid!r}", source)
+    where = f"claim {k} ({cid})"
+    about = tuple(_label(a, f"{where}: about", source)
+                  for a in _strings(entry, "about", where, source))
+    if not about:
+        raise LedgerError(f"{where}: about must list the paper's labels it concerns", source)
+    if entry["grade"] not in CLAIM_GRADES:
+        raise LedgerError(f"{where}: grade must be one of {', '.join(CLAIM_GRADES)}", source)
+    evidence = tuple(_evidence(e, where, source) for e in entry["evidence"])
+    if not evidence or any(e.kind not in ("case", "proof", "script", "gather_sweep") or
+                           e.verdict not in (None, "expect") for e in evidence):
+        raise LedgerError(f"{where}: a claim needs evidence: cases (verdict expect), "
+                          "proofs, scripts or gather_sweep summaries", source)
+    if entry["grade"] == "proved" and not any(e.kind in ("proof", "script") for e in evidence):
+        raise LedgerError(f"{where}: grade 'proved' needs a proof or a script", source)
+    for key in ("claim", "finding", "checked_by"):
+        if not isinstance(entry[key], str) or not entry[key]:
+            raise LedgerError(f"{where}: {key} must be a non-empty string", source)
+    return Claim(cid, about, entry["claim"], entry["grade"], entry["finding"], evidence,
+                 entry["checked_by"])
 
 
 _FINDING_FIELDS = {"id", "about", "lines", "claim", "finding", "evidence", "checked_by"}
@@ -275,15 +336,16 @@ def _evidence(e, where: str, source: str) -> Evidence:
     if not isinstance(e, dict):
         raise LedgerError(f"{where}: evidence entries are tables", source)
     kinds = [k for k in ("case", "proof", "script", "witnesses", "sweep", "certificate",
-                         "matrix", "coq") if k in e]
+                         "matrix", "coq", "gather_sweep") if k in e]
     if len(kinds) != 1 or not isinstance(e[kinds[0]], str):
         raise LedgerError(f"{where}: an evidence entry has exactly one of case, proof, "
-                          f"script, witnesses, sweep, certificate, matrix, coq (got {sorted(e)})",
-                          source)
+                          f"script, witnesses, sweep, certificate, matrix, coq, gather_sweep "
+                          f"(got {sorted(e)})", source)
     kind = kinds[0]
     allowed = {"case": {"case", "verdict"}, "proof": {"proof"}, "script": {"script", "args"},
                "witnesses": {"witnesses", "refuted_readings"}, "sweep": {"sweep"},
-               "certificate": {"certificate"}, "matrix": {"matrix"}, "coq": {"coq"}}[kind]
+               "certificate": {"certificate"}, "matrix": {"matrix"}, "coq": {"coq"},
+               "gather_sweep": {"gather_sweep"}}[kind]
     if set(e) - allowed:
         raise LedgerError(f"{where}: unknown evidence field(s) {sorted(set(e) - allowed)}",
                           source)

@@ -41,7 +41,7 @@ from fractions import Fraction
 from .casefile import case_text
 
 __all__ = ["analyse", "warm_up", "discrepancy_text", "expect_block", "check_case_file", "file_points",
-           "statement_labels", "WHATS",
+           "statement_labels", "is_label", "scaled_points", "adversary_settings", "WHATS",
            "BridgeInputError"]
 
 WHATS = ("truth", "paper", "audit", "gather", "gather-corrected")
@@ -131,8 +131,10 @@ def statement_labels(what: str) -> tuple:
     return ()
 
 
-def analyse(what: str, points, budget: int = 0) -> dict:
-    """Run one analysis on the configuration ``points`` (see the module docstring)."""
+def analyse(what: str, points, budget=0) -> dict:
+    """Run one analysis on the configuration ``points`` (see the module docstring);
+    ``budget``: the gathering run's events, or ``(events, states)`` with the searching
+    adversary's states."""
     from ..geometry.configuration import no_cycle_collection
     config = configuration(points)
     with no_cycle_collection():
@@ -143,9 +145,9 @@ def analyse(what: str, points, budget: int = 0) -> dict:
         if what == "audit":
             return _audit(config)
         if what == "gather":
-            return _gather(config, budget)
+            return _gather(config, budget, "paper", points)
         if what == "gather-corrected":
-            return _gather(config, budget, "corrected")
+            return _gather(config, budget, "corrected", points)
     raise ValueError(f"unknown analysis {what!r}")
 
 
@@ -258,37 +260,109 @@ def _audit_hypotheses(n: int, res, result) -> set:
 
 
 # ---------------------------------------------------------------- gathering
+#: delta of the searching adversary's non-rigid moves (``gather:EVENTS+STATES:``): a move
+#: may end at any stop once its straight distance from the start is at least this
+ADVERSARY_DELTA = "1/4"
+#: the searching adversary's bounds besides its states (``search.Bounds``): actions per
+#: schedule; no time bound, so a record is reproducible from its seed alone
+ADVERSARY_DEPTH = 16
+
+#: a record's ``gather.class`` for each way a start can end (``docs/sweeps.md``); the
+#: failed label of the classes that are failures
+GATHER_FAILURES = {"stalled": "gather-stalled", "undecided": "gather-undecided",
+                   "not-possible-with-leader": "gather-not-possible-with-leader",
+                   "other": "gathering-within-budget"}
+
+
+def _start(points, config):
+    """The start as the simulator reads it: fmpq pairs when every coordinate is rational
+    Cartesian, else the numbers of the motion's one system
+    (:func:`exactsym.gathering.start_numbers.start_points`, the reader of ``gather``)."""
+    from ..exact import fmpq
+    if config.polar is None and all(isinstance(c, fmpq) for p in config.points for c in p):
+        return [tuple(p) for p in config.points]
+    from ..errors import InputError
+    from ..gathering.start_numbers import start_points
+    from ..io.fileformat import parse_config_text
+    try:
+        parsed = parse_config_text(case_text(points), "<sweep>", "toml")
+        return start_points(parsed.points, "<sweep>")
+    except InputError as err:
+        raise BridgeInputError(f"the gathering simulator cannot read this start: {err}") \
+            from None
+
+
+def _sign(x) -> int:
+    """The exact sign of a rational (fmpq) or of a number of the motion (``sign``)."""
+    from ..exact import fmpq
+    if isinstance(x, fmpq):
+        return (x > 0) - (x < 0)
+    return x.sign()
+
+
 def _separated(points):
     """``points`` scaled by the least integer s with every distance > 2 (unit discs apart,
-    the simulator's start condition); an exact similarity, which changes no decision."""
-    d2 = min((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2
-             for i, a in enumerate(points) for b in points[:i])
+    the simulator's start condition); an exact similarity, which changes no decision.
+    Exact in every number system of the motion: the sign of ``s^2 d^2 - 4`` for the
+    least squared distance ``d^2``."""
+    d2s = [(a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2
+           for i, a in enumerate(points) for b in points[:i]]
+    d2 = d2s[0]
+    for x in d2s[1:]:
+        if _sign(x - d2) < 0:
+            d2 = x
     s = 1
-    while s * s * d2 <= 4:
+    while _sign(d2 * (s * s) - 4) <= 0:
         s += 1
-    return [(x * s, y * s) for x, y in points]
+    return [(x * s, y * s) for x, y in points], s
 
 
-def _gather(config, budget: int, algorithm: str = "paper") -> dict:
+def scaled_points(points, s: int) -> tuple:
+    """The sweep's ``points`` (text, :class:`.families.SweepItem`) scaled by the integer
+    ``s``: what the simulator starts from, as a case file writes it."""
+    if s == 1:
+        return tuple(tuple(p) for p in points)
+    out = []
+    for kind, a, b in points:
+        if kind == "polar":
+            r = Fraction(a) * s if _rational_text(a) else None
+            out.append(("polar", _q_text(r) if r is not None else f"{s}*({a})", b))
+        else:
+            out.append(("xy", _q_text(Fraction(a) * s), _q_text(Fraction(b) * s)))
+    return tuple(out)
+
+
+def _rational_text(text: str) -> bool:
+    try:
+        Fraction(text)
+    except (ValueError, ZeroDivisionError):
+        return False
+    return True
+
+
+def _q_text(q: Fraction) -> str:
+    return str(q.numerator) if q.denominator == 1 else f"{q.numerator}/{q.denominator}"
+
+
+def _gather(config, budget, algorithm: str = "paper", points=()) -> dict:
     """One run of the paper's algorithm (``algorithm`` "paper"; "corrected": the
     corrected variant, ``--what gather-corrected``) (reference readings, seeded ASYNC
     scheduler, every invariant on) from ``config``, at most ``budget`` events (default
     2000).  Failed labels: the violated statement, or ``gathering-within-budget`` when
     the run neither gathered nor violated anything (for the corrected variant, a
     ``not-possible`` run on a start the ground truth finds symmetric is no failure: it
-    is recorded with the group).  Fewer than 5 robots: not applicable."""
-    from ..exact import fmpq
+    is recorded with the group).  ``budget`` a pair ``(events, states)``: the searching
+    adversary first (:func:`_adversary`).  Fewer than 5 robots: not applicable."""
     from ..gathering.cases import run_settings, settings_of
     if config.n < 5:
         return {"failed": [], "applicable": None,
                 "gather": {"outcome": "not-applicable (n < 5)", "gathered": None}}
-    if config.polar is not None or not all(isinstance(c, fmpq) for p in config.points
-                                           for c in p):
-        raise BridgeInputError("the gathering simulator needs rational Cartesian "
-                               "coordinates (use grid: or random: families)")
-    points = _separated([tuple(p) for p in config.points])
-    res = run_settings(points, settings_of({"gather_max_events": budget or 2000,
-                                            "gather_algorithm": algorithm}))
+    events, states = budget if isinstance(budget, tuple) else (budget, 0)
+    start, scale = _separated(_start(points, config))
+    if states:
+        return _adversary(config, start, events or 2000, states, algorithm, scale)
+    res = run_settings(start, settings_of({"gather_max_events": events or 2000,
+                                           "gather_algorithm": algorithm}))
     ok = res.outcome == "gathered"
     out = {"outcome": res.outcome, "gathered": ok, "steps": res.events}
     if algorithm == "corrected":
@@ -300,9 +374,73 @@ def _gather(config, budget: int, algorithm: str = "paper") -> dict:
     return {"failed": failed, "applicable": None, "gather": out}
 
 
+def adversary_settings(events: int, algorithm: str = "corrected") -> dict:
+    """The run settings of the searching adversary's sweep (:func:`_adversary`): seeded
+    ASYNC (seed 0, frames of both handednesses), non-rigid with :data:`ADVERSARY_DELTA`,
+    every invariant, ``events`` events at most."""
+    from ..gathering.cases import settings_of
+    return settings_of({"gather_max_events": events, "gather_algorithm": algorithm,
+                        "gather_non_rigid": ADVERSARY_DELTA})
+
+
+def _adversary(config, start, events: int, states: int, algorithm: str,
+               scale: int = 1) -> dict:
+    """The strongest adversary of the instrument on one start (``docs/sweeps.md``,
+    "The searching adversary"): first the search (``exactsym.gathering.search``: Looks
+    in both handednesses and in generic frames, stops at and between the critical
+    instants of every motion, joint steps, non-rigid ends after delta) over ``states``
+    states, depth :data:`ADVERSARY_DEPTH`; when it finds no violation, the seeded
+    non-rigid ASYNC run to its end.  Classified against the ground truth's leader
+    (``SymmetryGroup.leader``): a start that is not gathered must have none."""
+    from ..gathering.cases import run_settings
+    from ..gathering.search import Bounds, search
+    from ..truth.symmetry import symmetry_group
+    settings = adversary_settings(events, algorithm)
+    try:
+        report = search(start, settings, Bounds(budget=states, depth=ADVERSARY_DEPTH,
+                                                seed=0, seconds=None))
+        searched = {"states": report.states, "depth": report.depth,
+                    "stopped": report.stopped}
+        result = report.result
+    except TypeError as err:
+        # the search cannot fork a world whose numbers live in a tower of nested radicals
+        # (docs/sweeps.md, "The searching adversary"): recorded, the run still decides
+        searched, result = {"states": None, "depth": None, "stopped": "error",
+                            "error": f"{type(err).__name__}: {err}"[:200]}, None
+    found = "search" if result is not None else "run"
+    res = result if result is not None else run_settings(start, settings)
+    group = symmetry_group(config)             # scaling by _separated keeps the group
+    leader = group.leader is not None
+    kind = _gather_class(res.outcome, leader)
+    out = {"outcome": res.outcome, "class": kind, "label": res.label, "events": res.events,
+           "max_events": events,
+           "looks": res.looks, "found_by": found, "leader": leader, "search": searched,
+           "scale": scale}
+    if res.outcome != "gathered":
+        out["detail"] = res.detail[:300]
+    failed = [res.label] if kind == "violated" else \
+        ([GATHER_FAILURES[kind]] if kind in GATHER_FAILURES else [])
+    return {"failed": failed, "applicable": None, "gather": out,
+            "truth": {"group": group.name, "orderable": group.orderable}}
+
+
+def _gather_class(outcome: str, leader: bool) -> str:
+    """gathered | no-leader | not-possible-with-leader | violated | stalled | undecided |
+    other (max-events, a replay that stopped)."""
+    if outcome in ("gathered", "violated", "stalled"):
+        return outcome
+    if outcome == "not-possible":
+        return "not-possible-with-leader" if leader else "no-leader"
+    if outcome.startswith("undecided"):
+        return "undecided"
+    return "other"
+
+
 # ---------------------------------------------------------------- case files
 def discrepancy_text(what: str, points, label: str) -> str:
     """What the analysis says about ``label`` on ``points``, in one paragraph."""
+    if what not in ("audit", "paper"):
+        return ""
     from ..analysis import analyse as run_analysis
     analysis = run_analysis(configuration(points),
                             sections=("audit",) if what == "audit" else ("family",))
@@ -328,7 +466,24 @@ def expect_block(what: str, record: dict) -> dict:
         out["paper_leader"] = -1 if paper["leader"] is None else paper["leader"]
     if what == "audit":
         out["audit_agrees"] = not record["failed"]
+    g = record.get("gather") or {}
+    if what == "gather-corrected" and "class" in g:
+        # the seeded run of the searching adversary's settings (adversary_settings);
+        # a violation the search found needs the search: `gather --search` (notes)
+        out.update(gather_algorithm="corrected", gather_non_rigid=ADVERSARY_DELTA,
+                   gather_max_events=g["max_events"] if "max_events" in g else 3000)
+        if g["found_by"] == "run":
+            out["gather_outcome"] = g["outcome"]
+            if g.get("label"):
+                out["gather_label"] = g["label"]
     return out
+
+
+def is_label(label: str) -> bool:
+    """Is ``label`` a label a case file's ``lemmas`` may name (``exactsym.labels``)?  The
+    gathering sweep's own failure names (``gather-stalled``, ...) are not."""
+    from ..labels import LABELS
+    return label in LABELS
 
 
 def check_case_file(path) -> list[str]:

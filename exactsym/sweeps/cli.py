@@ -35,7 +35,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     """The sweep's arguments, on ``parser`` (a subcommand's parser)."""
     parser.add_argument("family", metavar="FAMILY",
                         help="roots:M:K[:RINGS], grid:N:K, random:K:SEED:COUNT, "
-                             "perturb:FILE:EPS:COUNT or gather:BUDGET:FAMILY (K: 5, <=6, 3..6)")
+                             "algebraic:K:M:SEED:COUNT, perturb:FILE:EPS:COUNT or "
+                             "gather:BUDGET[+STATES]:FAMILY (K: 5, <=6, 3..6)")
     parser.add_argument("--what", choices=bridge.WHATS, default="audit",
                         help="the analysis run on each configuration (default audit)")
     where = parser.add_mutually_exclusive_group()
@@ -112,10 +113,9 @@ def _run(args) -> int:
     if args.workers is not None and args.workers < 1:
         raise FamilyError("--workers must be at least 1")
     family = parse_family(args.family, bridge.file_points)
-    if family.kind == "gather" and family.inner.kind == "roots":
-        # the simulator starts from rational Cartesian points; roots of unity are not
-        raise FamilyError("gather: starts from rational points: use grid:, random: or "
-                          "perturb: of a Cartesian file inside it")
+    if family.kind == "gather" and family.states and args.what != "gather-corrected":
+        raise FamilyError("gather:EVENTS+STATES: the searching adversary is run with "
+                          "--what gather-corrected")
     if family.kind == "gather" and args.what not in ("gather", "gather-corrected"):
         raise FamilyError("a gather: family is swept with --what gather or gather-corrected")
     serial, workers = _where(args, family)

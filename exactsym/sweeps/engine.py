@@ -190,6 +190,8 @@ def run_sweep(family: Family, what: str, out, resume: bool = False,
         prefix_key = key_of(out, intervals[0][1] - 1)
     todo = _todo(family, done, prefix_key)
     budget = family.budget if family.kind == "gather" else DEFAULT_GATHER_BUDGET
+    if family.kind == "gather" and family.states:
+        budget = (budget, family.states)     # events per run, the search's states
     try:
         if options.serial:
             return _serial(todo, what, budget, handle, done, total, options, progress)

@@ -15,8 +15,15 @@ A family is written as text on the command line (``docs/sweeps.md``):
   written as a rational moves and the turns stay (a turn moved by a rational would put the
   points in a cyclotomic field of large degree -- Q(zeta_800) for EPS = 1/50 -- where one
   configuration takes minutes);
+* ``algebraic:K:M:SEED:COUNT`` -- COUNT sets of K points in polar form, each on a ray at
+  a turn j/M and a radius from :data:`SURD_RADII` (square roots of 2 and 3: with M = 8,
+  12 or 24 every coordinate is a number of Q(sqrt 2, sqrt 3); M = 36 puts the turns in
+  K(alpha), ``docs/gathering.md``, "Starts"), item i drawn from its own generator seeded
+  with (SEED, i), turned so that its first robot is at turn 0;
 * ``gather:BUDGET:FAMILY`` -- the configurations of FAMILY as starting configurations of
-  the gathering simulator, BUDGET adversary steps per run.
+  the gathering simulator, BUDGET adversary steps per run; ``gather:EVENTS+STATES:FAMILY``
+  also lets the searching adversary generate STATES states from each start
+  (``--what gather-corrected``: ``docs/sweeps.md``).
 
 K may be an integer, ``<=K`` (1..K) or ``A..B``.  Every item is a :class:`SweepItem`:
 its key (the canonical form as text: a sweep's results are keyed by it), its points as
@@ -35,7 +42,12 @@ from .canonical import (bracelets, burnside_count, dihedral_permutations, gap_br
                         gaps_to_positions, orderly_subsets, square_permutations)
 
 __all__ = ["Family", "SweepItem", "FamilyError", "parse_family", "family_size",
-           "family_items", "can_jump", "rank", "ENUMERATION"]
+           "family_items", "can_jump", "rank", "ENUMERATION", "SURD_RADII"]
+
+#: The radii of ``algebraic:`` families, as configuration-file text (``docs/format.md``):
+#: rationals and square roots of 2, 3 and 6, between 1 and 3.
+SURD_RADII = ("1", "sqrt(2)", "sqrt(3)", "2", "1+sqrt(2)", "sqrt(6)", "1+sqrt(3)",
+              "3*sqrt(2)/2", "3", "2*sqrt(2)")
 
 #: Version of the enumerators' order: a results file records it, and ``--resume`` refuses a
 #: file of another version (its indices would name other configurations).
@@ -72,6 +84,7 @@ class Family:
     file: str = ""
     base_points: tuple = ()       # perturb: the file's points (SweepItem form)
     budget: int = 0               # gather: adversary steps per run
+    states: int = 0               # gather: the searching adversary's states per start
     inner: "Family | None" = None
 
 
@@ -143,14 +156,21 @@ def parse_family(text: str, load_points=None) -> Family:
         return Family(text, "perturb", file=path, eps=eps,
                       count=_int(parts[-1], "COUNT", text, low=0), base_points=points,
                       counts=(len(points),))
+    if kind == "algebraic" and len(parts) == 5:
+        return Family(text, "algebraic", counts=_counts(parts[1], text),
+                      m=_int(parts[2], "M", text), seed=parts[3],
+                      count=_int(parts[4], "COUNT", text, low=0))
     if kind == "gather" and len(parts) >= 3:
         inner = parse_family(":".join(parts[2:]), load_points)
         if inner.kind == "gather":
             raise FamilyError(f"family {text!r}: gather of gather")
-        return Family(text, "gather", budget=_int(parts[1], "BUDGET", text), inner=inner,
-                      counts=inner.counts)
+        events, _, states = parts[1].partition("+")
+        return Family(text, "gather", budget=_int(events, "BUDGET", text), inner=inner,
+                      counts=inner.counts,
+                      states=_int(states, "STATES", text) if states else 0)
     raise FamilyError(f"unknown family {text!r}: expected roots:M:K[:RINGS], grid:N:K, "
-                      "random:K:SEED:COUNT, perturb:FILE:EPS:COUNT or gather:BUDGET:FAMILY")
+                      "random:K:SEED:COUNT, algebraic:K:M:SEED:COUNT, perturb:FILE:EPS:COUNT or "
+                      "gather:BUDGET[+STATES]:FAMILY")
 
 
 def family_size(family: Family) -> int:
@@ -162,7 +182,7 @@ def family_size(family: Family) -> int:
     if family.kind == "grid":
         perms = square_permutations(family.m)
         return sum(burnside_count(perms, k) for k in family.counts)
-    if family.kind in ("random", "perturb"):
+    if family.kind in ("random", "perturb", "algebraic"):
         return family.count
     return family_size(family.inner)
 
@@ -182,6 +202,8 @@ def family_items(family: Family, after: str | None = None) -> Iterator[SweepItem
         yield from _random(family)
     elif family.kind == "perturb":
         yield from _perturb(family)
+    elif family.kind == "algebraic":
+        yield from _algebraic(family)
     else:
         yield from family_items(family.inner, after)
 
@@ -284,6 +306,25 @@ def _random(family: Family) -> Iterator[SweepItem]:
             coords.add((Fraction(rng.randint(-8, 8), rng.randint(1, 4)),
                         Fraction(rng.randint(-8, 8), rng.randint(1, 4))))
         yield _point_set_item("random:", list(coords))
+
+
+def _algebraic(family: Family) -> Iterator[SweepItem]:
+    m = family.m
+    for i in range(family.count):
+        k = family.counts[i % len(family.counts)]
+        rng = random.Random(f"{family.seed}:{i}")
+        cells: set = set()
+        while len(cells) < k:
+            cells.add((rng.randrange(m), rng.randrange(len(SURD_RADII))))
+        ordered = sorted(cells)
+        j0 = ordered[0][0]
+        pts, den = [], 1
+        for j, r in sorted(((j - j0) % m, r) for j, r in ordered):
+            turn = Fraction(j, m)
+            den = lcm(den, turn.denominator, _denominator(SURD_RADII[r]))
+            pts.append(("polar", SURD_RADII[r], _text(turn)))
+        key = f"algebraic:{m}:" + ";".join(f"{r}@{t}" for _, r, t in pts)
+        yield SweepItem(key, len(pts), den, m, tuple(pts))
 
 
 def _denominator(text: str) -> int:

@@ -118,6 +118,18 @@ def write_cases(summary: Summary, directory) -> dict:
         directory.mkdir(parents=True, exist_ok=True)
         points = [tuple(p) for p in record["points"]]
         said = bridge.discrepancy_text(summary.what, points, entry.label)
+        scale = (record.get("gather") or {}).get("scale", 1)
+        if scale != 1:               # the simulator's start: every two robots > 2 apart
+            points = list(bridge.scaled_points(points, scale))
+            said = (f"{said} The sweep's points scaled by {scale} (the least integer that "
+                    "puts every two robots more than 2 apart).").strip()
+        g = record.get("gather") or {}
+        if g.get("found_by") == "run":
+            said = f"{said} The seeded run: {g.get('outcome')}, {g.get('detail', '')}".strip()
+        elif g.get("found_by") == "search":
+            said = (f"{said} Found by the searching adversary ({g['search']['states']} "
+                    f"states): exactsym gather FILE --search --budget "
+                    f"{g['search']['states']}; {g.get('detail', '')}").strip()
         notes = (f"Found by exactsym sweep {summary.family} --what {summary.what}: the "
                  f"smallest configuration of the family (fewest robots, then smallest "
                  f"denominators, then smallest M) on which {entry.label} is false; it fails "
@@ -125,7 +137,8 @@ def write_cases(summary: Summary, directory) -> dict:
                  f"examined. Canonical form: {record['key']}. False here: "
                  f"{', '.join(record['failed'])}. {said}").strip()
         text = case_text(points, name=f"{entry.label}: smallest counterexample in "
-                         f"{summary.family}", notes=notes, lemmas=[entry.label],
+                         f"{summary.family}", notes=notes,
+                         lemmas=[entry.label] if bridge.is_label(entry.label) else [],
                          expect=bridge.expect_block(summary.what, record))
         path = directory / _case_name(entry.label)
         path.write_text(text, encoding="utf-8")
