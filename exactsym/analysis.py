@@ -175,7 +175,7 @@ def built_levels(levels: Levels) -> Levels:
     vectors = {} if lazy.radii is None and pts is not None and owner is not None else None
     if vectors is not None:
         cx, cy = centre
-    new = object.__new__
+    new, setter = object.__new__, object.__setattr__
     built = []
     for k, (start, stop) in enumerate(zip(bounds, bounds[1:])):
         points = (flat[start],) if stop - start == 1 else tuple(flat[start:stop])
@@ -190,9 +190,8 @@ def built_levels(levels: Levels) -> Levels:
             else:
                 r2 = lazy.level_radius(k, points[0])
         level = new(Level)          # Level(r2, points) without the frozen __init__
-        fields = level.__dict__
-        fields["radius_squared"] = r2
-        fields["points"] = points
+        setter(level, "radius_squared", r2)
+        setter(level, "points", points)
         built.append(level)
     return replace(levels, levels=tuple(built),
                    vectors=(owner, vectors) if vectors else levels.vectors)

@@ -159,7 +159,7 @@ def _mapped(config: Configuration, ring_data: Levels, moved: Configuration,
         vectors = {i: (vx, -vy) for i, (vx, vy) in old.items()}
     else:
         vectors = {i: (px - ncx, py - ncy) for i, (px, py) in enumerate(moved.points)}
-    new = object.__new__
+    new, setter = object.__new__, object.__setattr__
     built = []
     starts = {}
     for k, level in enumerate(lv):
@@ -168,9 +168,8 @@ def _mapped(config: Configuration, ring_data: Levels, moved: Configuration,
             members, starts[k] = _counter_clockwise(members, vectors, sim.reflect)
         r2 = level.radius_squared
         out = new(Level)                # Level(r2 * k2, members) without the frozen __init__
-        fields = out.__dict__
-        fields["radius_squared"] = r2 if k2 == 1 else r2 * k2
-        fields["points"] = members
+        setter(out, "radius_squared", r2 if k2 == 1 else r2 * k2)
+        setter(out, "points", members)
         built.append(out)
     return Levels(sec, tuple(built), False, vectors=(moved.points, vectors)), starts
 

@@ -36,8 +36,10 @@ _EXACT_SORT_BUDGET = 256    # points of levels sorted exactly before the filtere
 ALGEBRAIC_FILTER = True
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Level:
+    """One level: its squared radius and its robots (slots: one per robot on random
+    configurations, issue 33)."""
     radius_squared: object
     points: tuple[int, ...]
 

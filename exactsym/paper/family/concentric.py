@@ -113,6 +113,69 @@ def new_ring(name, polygon, radius_squared, levels, robots, own, keys=()) -> Rin
     return ring
 
 
+class _OneVertex(CirclePolygon):
+    """The polygon of a level of one robot (a single vertex on its circle), with slots for
+    its fields instead of a dict per instance: one per robot of a random configuration in
+    each frame the audit runs the paper in (issue 33: a million robots held two frames'
+    polygons, ~0.9 KB per robot).  Equal to nothing but another such polygon, as the
+    dataclass compares; caches of :class:`CirclePolygon` go to a dict made when needed."""
+
+    __slots__ = ("labels", "directions", "polar")
+    one_circle = True           # a level: one radius
+
+    def __reduce__(self):
+        return (_one_vertex, (self.labels, self.directions, self.polar))
+
+
+def _one_vertex(labels, directions, polar) -> _OneVertex:
+    poly = object.__new__(_OneVertex)
+    setter = object.__setattr__
+    setter(poly, "labels", labels)
+    setter(poly, "directions", directions)
+    setter(poly, "polar", polar)
+    return poly
+
+
+class _OneLevelRing(Ring):
+    """A :class:`Ring` of one level (its name ``G<level>`` read from ``levels``) of one
+    robot, in slots (see :class:`_OneVertex`); equal to nothing but another such ring."""
+
+    __slots__ = ("polygon", "radius_squared", "levels", "robots", "keys", "_lines")
+    n = 1
+
+    @property
+    def name(self) -> str:
+        return f"G{self.levels[0]}"
+
+    @property
+    def own(self) -> tuple:
+        return self.robots
+
+    @property
+    def lines(self):
+        try:
+            return self._lines
+        except AttributeError:
+            found = _compute_lines(self)
+            object.__setattr__(self, "_lines", found)
+            return found
+
+    def __reduce__(self):
+        return (_one_level_ring, (self.polygon, self.radius_squared, self.levels,
+                                  self.robots, self.keys))
+
+
+def _one_level_ring(polygon, radius_squared, levels, robots, keys=()) -> _OneLevelRing:
+    ring = object.__new__(_OneLevelRing)
+    setter = object.__setattr__
+    setter(ring, "polygon", polygon)
+    setter(ring, "radius_squared", radius_squared)
+    setter(ring, "levels", levels)
+    setter(ring, "robots", robots)
+    setter(ring, "keys", keys)
+    return ring
+
+
 def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
                         level_polygons=None) -> tuple:
     """G_1, ..., G_t of ``config`` (Section 3: "Elements of G are sorted according to
@@ -142,7 +205,6 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
             continue
         if len(robots) == 1:        # one robot per level on random input: no list made
             i = robots[0]
-            labels = ((i,),)
             if polar:
                 dirs = (turns[i][1],)
             else:
@@ -152,6 +214,10 @@ def concentric_polygons(config: Configuration, ring_data: Levels | None = None,
                     vector = (x - cx, y - cy)
                     register(vector, pts[i], homogeneous)    # its short text
                 dirs = (vector,)
+            # slotted (issue 33): labels share the robots' tuple
+            out.append(_one_level_ring(_one_vertex((robots,), dirs, polar),
+                                       level.radius_squared, (k + 1,), robots))
+            continue
         else:
             labels = tuple([(i,) for i in robots])
             built = level_polygons[k] if level_polygons is not None else None
