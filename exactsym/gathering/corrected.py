@@ -66,15 +66,16 @@ moves end symmetric), a path blocked with no alternative, a symmetric start.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from functools import lru_cache
 
 from flint import fmpq
 
 from . import geometry as g
-from .corrected_choice import SortKey, distinct_after, keeps_a_leader, no_leader, \
-    profile, profile_compare
+from .corrected_choice import SortKey, distinct_after, ground_ranks, keeps_a_leader, \
+    no_leader, profile, profile_compare
 from .corrected_paths import layer_one_point, outward_point, path_blockers, \
-    path_is_clear, paths_to_centre, to_slot_paths
+    path_is_clear, paths_to_centre, piece_within, to_slot_paths
 from .pattern import Pattern, capacity, recognise, slot
 from .robot import Decision, Move, Readings, decide, radial_point
 from .run_home import snapshot_key
@@ -174,7 +175,8 @@ def choose_centre(pts, readings: Readings, unit, approx=None):
     return pts[k], sizes[k], tuple(cands), f"C: robot {k}, the centre of {M} robots"
 
 
-def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> bool:
+def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None, readings=None,
+                  unit=fmpq(1)) -> bool:
     """C cannot change while ``mover`` follows ``pieces``, nor at its arrival (point 3
     of the module docstring).  ``cands`` empty (M = 1): the SEC must not need the
     mover."""
@@ -196,18 +198,31 @@ def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> boo
             c2 = g.smallest_enclosing_circle(others)
             if not (c2[0] == centre and c2[1] == r2):
                 return False
-    # on arrival the mover itself may tie for the centre of a small pattern
+    # on arrival the pattern has at most 4 robots: its centre must still be C there
+    # (every candidate's farthest robot outside its pattern, exactly, after the arrival)
     target = pieces[-1].final
     small = pat.centre_robot is not None and len(pat.robots) + 1 <= 4
+    if small and stay and readings is not None and \
+            not _arrival_keeps_centre(pts, mover, target, centre, readings, unit):
+        return False
     others = [k for k in cands if pts[k] != centre]
-    if not others and not small:
-        return True
-    for k, where in [(k, pts[k]) for k in others] + ([(None, target)] if small else []):
+    # f(C) along the way: at most fc and the mover's largest distance to C (at the end
+    # points of its pieces: arcs about C keep it, along a segment it is convex)
+    top = fc
+    for piece in pieces:
+        for q in (piece.start, piece.final):
+            if (g.dist2(q, centre) - top).sign() > 0:
+                top = g.dist2(q, centre)
+    for k, where in [(k, pts[k]) for k in others]:
         fk = _far2(pts, where, stay, approx)
-        if fk is not None and (fk - fc).sign() > 0:
+        if fk is not None and (fk - top).sign() > 0:
             continue
-        if stay or k is None:
-            return False
+        if stay:
+            # the mover is outside k's pattern until it arrives: f(k) is at least its
+            # distance to k, which stays above every value f(C) takes
+            if any(piece_within(piece, where, top) for piece in pieces):
+                return False
+            continue
         # the last robot: every point of its path nearer to C than to k
         for piece in pieces:
             # |p - k|^2 - |p - C|^2 is linear in p: on a segment its ends decide; on an arc
@@ -224,7 +239,36 @@ def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> boo
     return True
 
 
-def _target(p, centre, pat, pts, unit, stay, tower=None):
+def _arrival_keeps_centre(pts, mover, target, centre, readings, unit) -> bool:
+    """With ``mover`` at ``target`` and the others where they are, is C still the centre
+    the rule of :func:`choose_centre` names?  (Read only from the target and the robots
+    that stand still: the same answer from every point of the mover's way.)"""
+    after = list(pts)
+    after[mover] = target
+    got = choose_centre(after, readings if readings is not None else Readings(), unit,
+                        g.approx_points(after))[0]
+    return got is not None and got == centre
+
+
+def _other_end(target, centre, pat, pts, unit, stay, mover, readings):
+    """With a pattern of at most 4 robots, the chain end's slot other than ``target``
+    when the completion of both keeps C and a leader (the mover tries it when no path of
+    its list to ``target`` is clear); else None."""
+    if pat.centre_robot is None or len(pat.robots) > 4 or not stay or pat.last_full():
+        return None
+    l = pat.last_layer
+    chain = pat.layers[-1]
+    ends = [slot(centre, pts[chain[-1]], l, 1), slot(centre, pts[chain[0]], l, -1)]
+    if ends[0] == ends[1] or target not in ends:
+        return None
+    other = ends[1] if target == ends[0] else ends[0]
+    if all(_arrival_keeps_centre(pts, mover, s, centre, readings, unit) and
+           keeps_a_leader(pts, mover, s) for s in ends):
+        return other
+    return None
+
+
+def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=None):
     """``(target, layer, kind)``: C, a new layer's radial point, or a chain end's slot;
     target None on an exact tie.  The slot: while the pattern has at most 4 robots (its
     centre is not unique), the end slot farther from the robots that stay (so that C
@@ -253,6 +297,15 @@ def _target(p, centre, pat, pts, unit, stay, tower=None):
     if s_ccw == s_cw:
         return s_ccw, l, "slot"
     if len(pat.robots) <= 4 and stay:
+        ends = (s_ccw, s_cw)
+        if mover is not None:
+            # the ends whose completion keeps C and a leader (both read the target and
+            # the robots that stand still only): a choice every point of the way repeats
+            fine = [s for s in ends if _arrival_keeps_centre(pts, mover, s, centre,
+                                                             readings, unit)
+                    and keeps_a_leader(pts, mover, s)]
+            if len(fine) == 1:
+                return fine[0], l, "slot"
         c = (_far2(pts, s_ccw, stay) - _far2(pts, s_cw, stay)).sign()
         if c:
             return (s_ccw if c > 0 else s_cw), l, "slot"
@@ -270,7 +323,54 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
     radial target whose distance is a nested radical is built in that tower
     (:func:`.robot.radial_point`), and decisions are cached per snapshot and per tower
     (numbers of two towers are never compared, not even as cache keys)."""
+    if readings.lone == "reject":
+        return _literal(snapshot, readings, unit)
     return _decide_corrected(snapshot_key(snapshot), readings, unit)
+
+
+def literal_pattern_exists(n: int) -> bool:
+    """Does Definition 1 (``gathering_pattern``), read literally (``lone=reject``: every
+    robot of a layer touches one of its layer), have a pattern of n robots?  Not when n
+    is one more than a robot at C and full layers (8, 20, 38, ...)."""
+    total, layer = 1, 1
+    while total < n:
+        total += capacity(layer)
+        layer += 1
+        if total + 1 == n:
+            return False
+    return True
+
+
+def _literal(snapshot, readings, unit) -> Decision:
+    """The decision under ``lone=reject``.  The variant builds the same layers as under
+    ``lone=accept`` -- one robot at a time, so the first robot of a layer is alone in it
+    until the next arrives beside it, a state the literal reading calls no pattern -- and
+    its P is that bookkeeping pattern; the gathered state is a literal pattern (a chain
+    of two or more in the last layer) for every n but 8, 20, 38, ..., where the answer
+    is ``not-possible`` with that reason.  A move that starts a layer alone has the role
+    ``layer-start``, and so has the next move, which puts a robot beside it (the literal
+    P grows by both at that arrival); the pattern reported is the literal one, so the
+    robot alone in its layer is in R meanwhile (``docs/gathering-corrected.md``)."""
+    pts = list(snapshot)
+    d = _decide_corrected(snapshot_key(snapshot), replace(readings, lone="accept"), unit)
+    if not literal_pattern_exists(len(pts)):
+        return Decision("not-possible", (), d.centre, d.pattern, None,
+                        f"corrected: Definition 1 read literally (lone=reject) has no "
+                        f"pattern of {len(pts)} robots (one more than a robot at C and "
+                        f"full layers: the last robot would be alone in its layer; "
+                        f"docs/gathering-corrected.md)")
+    if d.centre is None:
+        return d
+    literal = recognise(pts, d.centre, "reject", unit)
+    waiting = literal.robots != d.pattern.robots        # a robot alone in its layer
+    moves = []
+    for m in d.moves:
+        after = list(pts)
+        after[m.robot] = m.path[-1].final
+        alone = m.robot not in recognise(after, d.centre, "reject", unit).robots
+        moves.append(replace(m, role="layer-start")
+                     if m.role == "leader" and (alone or waiting) else m)
+    return replace(d, moves=tuple(moves), pattern=literal)
 
 
 @lru_cache(maxsize=4096)
@@ -290,7 +390,7 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
         return Decision("terminated", (), centre, pat, None, "R is empty")
     d = {i: g.dist2(pts[i], centre) for i in R}
     if pat.centre_robot is None:
-        clear = _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower)
+        clear = _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower, readings)
         if clear is not None:
             return clear
     near = min(d.values(), key=SortKey)
@@ -302,22 +402,12 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
     try:
         for i in tied:
             stay = [j for j in R if j != i]
-            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower)
+            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower, i, readings)
             if target is not None:
                 options.append((g.dist2(pts[i], target), i, target, l, kind))
     except ValueError as err:           # a radial point the field cannot hold
         return Decision("undecided", (), centre, pat, None, str(err))
     options.sort(key=lambda o: SortKey(o[0]))
-    if readings.lone == "reject" and options and pat.centre_robot is not None and \
-            pat.last_full():
-        # Def. 1 read literally: every robot of a layer touches one of its layer, so a
-        # layer can only start with two robots arriving at once -- no one-at-a-time move
-        # makes P grow past a full layer (and for n = 8, 20, 38, ... no pattern exists)
-        return Decision("not-possible", (), centre, pat, None,
-                        "corrected: under lone=reject (Def. 1 read literally) the next "
-                        "robot would start a layer alone, which no valid pattern holds; "
-                        "the variant builds the lone=accept pattern "
-                        "(docs/gathering-corrected.md)")
     # never into a symmetric configuration while robots are left to move
     # (corrected_choice.keeps_a_leader): decided before any path, by the target alone
     blocked = []
@@ -336,8 +426,9 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
         group = [o for o in options[k:] if o[0] == options[k][0]]
         k += len(group)
         found = [(o[1], p) for o in group
-                 if (p := _first_path(o, pts, centre, cands, R, unit, pat,
-                                      len(tied) > 1, approx, tower)) is not None]
+                 if (p := _path_to_an_end(o, pts, centre, cands, R, unit, pat,
+                                          len(tied) > 1, approx, tower, readings))
+                 is not None]
         if len(found) > 1:
             # the smallest profile of distances to the others; equal profiles: stay
             # ... preferring a mover after whose move the robots left in R still have
@@ -349,22 +440,33 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
             for f in found[1:]:
                 if profile_compare(profiles[f[0]], profiles[best[0]]) < 0:
                     best = f
-            if sum(1 for f in found if profile_compare(profiles[f[0]],
-                                                       profiles[best[0]]) == 0) > 1:
-                why = f"robots {[f[0] for f in found]} tie (no asymmetry is used)"
-                break
+            level = [f for f in found if profile_compare(profiles[f[0]],
+                                                         profiles[best[0]]) == 0]
+            if len(level) > 1:
+                # equal profiles on a configuration with a leader: the ground truth's
+                # canonical order (the same in every frame); none: no asymmetry to use
+                ranks = ground_ranks(pts)
+                if ranks is None:
+                    why = f"robots {[f[0] for f in found]} tie (no asymmetry is used)"
+                    break
+                best = min(level, key=lambda f: ranks[f[0]])
             found = [best]
         if found:
             chosen = found[0]
     if chosen is None and blocked and len(tied) == 1:
         return _step_aside(pts, centre, tied[0], R, d, unit, cands, pat, approx, tower,
-                           detail)
+                           detail, readings)
     if chosen is None and len(tied) == 1 and len(options) == 1 and inside[tied[0]] and \
             len(pat.robots) > 4:
         around = _around_blocked(options[0], pts, centre, R, d, unit, cands, pat, approx,
-                                 tower, inside, detail)
+                                 tower, inside, detail, readings)
         if around is not None:
             return around
+    if chosen is None and len(tied) == 1 and len(options) == 1 and options[0][4] == "slot":
+        claim = _claim(options[0], pts, centre, R, unit, cands, pat, approx, tower, detail,
+                       readings)
+        if claim is not None:
+            return claim
     if chosen is None:
         if blocked:
             why = (f"every move of robots {sorted(o[1] for o in blocked)} ends in a "
@@ -388,7 +490,8 @@ def _stay(pts, centre, pat, why):
     return Decision("stay", (), centre, pat, None, why)
 
 
-def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail):
+def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail,
+                readings=None):
     """The nearest robot ``m`` alone, and its move ends in a symmetric configuration: it
     moves radially out to the distance of R's next robot (role ``asym``), where it ties
     with that robot and the tie-break leaves it out (its target, hence the symmetric
@@ -402,7 +505,7 @@ def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail):
                         "corrected: the kernel cannot build the way out")
     path = (g.Segment(pts[m], target),)
     if path_is_clear(path, pts, m, unit * unit, frozenset(), approx) and \
-            _keeps_centre(path, pts, m, centre, cands, R, pat, approx) and \
+            _keeps_centre(path, pts, m, centre, cands, R, pat, approx, readings, unit) and \
             keeps_a_leader(pts, m, target):
         return Decision("move", (Move(m, path, "asym"),), centre, pat, None,
                         f"corrected: robot {m}'s move would end in a symmetric "
@@ -412,7 +515,7 @@ def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail):
 
 
 def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, inside,
-                    detail):
+                    detail, readings=None):
     """The nearest robot m alone has a target but every path of its list (all of them,
     whatever its rank among R) comes within 2 of some robot: the nearest robot x of R
     that blocks none of m's paths moves instead (role ``asym``), when its own path is
@@ -449,13 +552,13 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
         return None                     # x would move the SEC, hence C
     stay = [j for j in R if j != x]
     try:
-        t, lx, kx = _target(pts[x], centre, pat, pts, unit, stay, tower)
+        t, lx, kx = _target(pts[x], centre, pat, pts, unit, stay, tower, x, readings)
     except ValueError:
         return None
     if t is None or not keeps_a_leader(pts, x, t):
         return None
     path = _first_path((None, x, t, lx, kx), pts, centre, cands, R, unit, pat, False, approx,
-                       tower)
+                       tower, readings)
     if path is None:
         return None
     return Decision("move", (Move(x, path, "asym"),), centre, pat, None,
@@ -463,7 +566,34 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
                     f"the nearest robot blocking none of them, moves ({detail})")
 
 
-def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
+def _claim(option, pts, centre, R, unit, cands, pat, approx, tower, detail, readings):
+    """The nearest robot b has a slot T as its target and no clear path to it: the robot
+    of R nearer to T than b (the nearest to T; a tie: none) moves to T instead (role
+    ``asym``), when its own path is clear, keeps C and ends with a leader.  On its way
+    its distance to T falls, so it stays nearer to T than b (``proofs/
+    gathering-corrected.md``, Lemma 5 case 5)."""
+    _dist, b, target, l, _kind = option
+    to_b = g.dist2(pts[b], target)
+    closer = [j for j in R if j != b and (g.dist2(pts[j], target) - to_b).sign() < 0]
+    if not closer:
+        return None
+    near = min((g.dist2(pts[j], target) for j in closer), key=SortKey)
+    first = [j for j in closer if g.dist2(pts[j], target) == near]
+    if len(first) != 1:
+        return None
+    x = first[0]
+    if not keeps_a_leader(pts, x, target):
+        return None
+    path = _first_path((None, x, target, l, "slot"), pts, centre, cands, R, unit, pat, False,
+                       approx, tower, readings)
+    if path is None:
+        return None
+    return Decision("move", (Move(x, path, "asym"),), centre, pat, None,
+                    f"corrected: robot {b} has no clear path to its slot; robot {x}, nearer "
+                    f"to it, moves there ({detail})")
+
+
+def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None, readings=None):
     """Nobody is at C but two or more robots are within 2 of it: C cannot be taken.  The
     farthest of them from C moves radially out to distance 2 (then it is in layer 1
     once the nearest reaches C).  A tie for the farthest: the smallest distance profile;
@@ -494,7 +624,7 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
         return Decision("undecided", (), centre, pat, None, str(err))
     path = [g.Segment(pts[j], target)]
     if path_is_clear(path, pts, j, unit2, frozenset(), approx) and \
-            _keeps_centre(path, pts, j, centre, cands, R, pat, approx) and \
+            _keeps_centre(path, pts, j, centre, cands, R, pat, approx, readings, unit) and \
             keeps_a_leader(pts, j, target):
         return Decision("move", (Move(j, tuple(path), "clear"),), centre, pat, None,
                         f"corrected: robot {j} clears C (robots {close} within 2 of it)")
@@ -502,7 +632,26 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
                  f"corrected: robot {j} cannot clear C (robots {close} within 2 of it)")
 
 
-def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower=None):
+def _path_to_an_end(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower,
+                    readings):
+    """:func:`_first_path` to the option's target; none, and the pattern has at most 4
+    robots: to the other chain end's slot when both ends keep C and a leader
+    (:func:`_other_end`)."""
+    path = _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower,
+                       readings)
+    if path is not None or option[4] != "slot":
+        return path
+    i = option[1]
+    other = _other_end(option[2], centre, pat, pts, unit, [j for j in R if j != i], i,
+                       readings)
+    if other is None:
+        return None
+    return _first_path((None, i, other) + tuple(option[3:]), pts, centre, cands, R, unit,
+                       pat, tied_start, approx, tower, readings)
+
+
+def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower=None,
+                readings=None):
     """The first clear path of ``option`` = (dist, robot, target, layer, kind) that keeps
     C, as a tuple of pieces; None.  Clear (:func:`.corrected_paths.path_is_clear`): no
     robot within 2 anywhere, except that the final point may touch the robots of P (a
@@ -524,7 +673,7 @@ def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, to
         if not path or (tied_start and isinstance(path[0], g.Arc)):
             continue                    # tied at the Look: the first piece must go in (I4)
         if path_is_clear(path, pts, i, unit2, allowed, approx) and \
-                _keeps_centre(path, pts, i, centre, cands, R, pat, approx):
+                _keeps_centre(path, pts, i, centre, cands, R, pat, approx, readings, unit):
             return tuple(path)
     return None
 

@@ -43,6 +43,22 @@ def no_leader(pts) -> str | None:
     return None if group.orderable else group.name
 
 
+def ground_ranks(pts) -> dict | None:
+    """The rank of every robot in the ground truth's canonical ordering of the
+    configuration (``def-orderable-set``: the same labelling in every frame, with or
+    without a reflection), or None when the configuration is not orderable or the kernel
+    cannot hold its numbers.  The last tie-break between movers: used only where the
+    variant's own keys (distances, profiles) tie on a configuration that has a
+    leader."""
+    try:
+        group = symmetry_group(configuration_of(list(pts)))
+    except (InputError, ArithmeticError, NotImplementedError, ValueError):
+        return None
+    if not group.orderable or group.ordering is None:
+        return None
+    return {robot: rank for rank, robot in enumerate(group.ordering)}
+
+
 class SortKey:
     """Sort key of exact numbers."""
     __slots__ = ("x",)
