@@ -73,7 +73,7 @@ from flint import fmpq
 
 from . import geometry as g
 from .corrected_choice import SortKey, distinct_after, ground_ranks, keeps_a_leader, \
-    no_leader, profile, profile_compare
+    literal_pattern_exists, no_leader, profile, profile_compare
 from .corrected_paths import layer_one_point, outward_point, path_blockers, \
     path_is_clear, paths_to_centre, piece_within, to_slot_paths
 from .pattern import Pattern, capacity, recognise, slot
@@ -326,19 +326,6 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
     if readings.lone == "reject":
         return _literal(snapshot, readings, unit)
     return _decide_corrected(snapshot_key(snapshot), readings, unit)
-
-
-def literal_pattern_exists(n: int) -> bool:
-    """Does Definition 1 (``gathering_pattern``), read literally (``lone=reject``: every
-    robot of a layer touches one of its layer), have a pattern of n robots?  Not when n
-    is one more than a robot at C and full layers (8, 20, 38, ...)."""
-    total, layer = 1, 1
-    while total < n:
-        total += capacity(layer)
-        layer += 1
-        if total + 1 == n:
-            return False
-    return True
 
 
 def _literal(snapshot, readings, unit) -> Decision:

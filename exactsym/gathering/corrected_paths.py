@@ -259,9 +259,8 @@ def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
     * for h = 2l + 2, 2l + 4, 2l + 6 with h^2 < ``limit2`` (the squared distance of R's
       next robot to C: the mover stays the nearest): radially in to the point of the
       mover's ray at distance h + 1/16 (:data:`DETOUR_MARGIN` robot radii beyond h,
-      :func:`ray_point`), along that circle to the target's ray, radially in; then, when
-      the mover is at least h from C, the segment to the target's ray at radius h and
-      radially in;
+      :func:`ray_point`), along that circle to the target's ray, radially in; then the
+      segment to the target's ray at radius h and radially in;
     * the segment to the target.
 
     Every point and radius is built from distances and directions from C, so the paths
@@ -269,10 +268,8 @@ def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
     ``cross(v, w)``, which a reflection flips together with the arcs' sense); when the
     target's ray is opposite to the mover's both ways are equally long, and the order of
     the two senses is :func:`tie_senses`'s (distances only; none on a tie, and none
-    without ``pts``).  Along every one of them the mover's distance to C never exceeds
-    its distance at the start (arcs about C keep it, radial pieces go in, and along a
-    segment the squared distance is convex, so at most its value at an end; each end is
-    no farther out than the start): the mover stays the nearest (I4)."""
+    without ``pts``).  The mover's distance to C stays below ``limit2`` along them
+    (I4)."""
     v = g.sub(p, centre)
     w = g.sub(target, centre)                          # |w| = 2l unit
     if g.cross(v, w).is_zero() and g.dot(v, w).sign() > 0:
@@ -303,11 +300,8 @@ def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
                 pieces = ([g.Segment(p, a)] if a != p else []) + \
                     g.arc_path(centre, a, b, sense)
                 yield pieces + [g.Segment(b, target)]
-        if (r2 - h * h).sign() >= 0:
-            # only from at least as far out: the distance to C never exceeds the start's
-            # (convex along a segment), so the mover stays the nearest (I4, Lemma 7)
-            b = g.add(centre, g.scale(w, fmpq(h) / two_l))
-            yield [g.Segment(p, b), g.Segment(b, target)]
+        b = g.add(centre, g.scale(w, fmpq(h) / two_l))
+        yield [g.Segment(p, b), g.Segment(b, target)]
     yield [g.Segment(p, target)]
 
 
