@@ -34,8 +34,9 @@ products, never by a sense of rotation of the observer's frame).
    robot of layer l nearest in angle when layer l is full (a lone robot starts the next
    layer), or the
    free slot next to an end of layer l's chain: while P has at most 4 robots, the one
-   farther from the robots of R that stay (so the centre stays unique in f), else the
-   one nearer to the mover in angle (the larger dot product; a tie: stay).  Robots
+   whose completion keeps C (the centre rule run on the configuration after the
+   arrival) and a leader when only one does, else the one nearer to the mover in angle
+   (the larger dot product; a tie: stay).  Robots
    within 2 of an empty C other than the nearest: the farthest of them first moves
    radially out to distance 2 (C cannot be taken while two robots are that close).
 5. **Clear paths** (:mod:`.corrected_paths`; distances to C never grow, so I4 holds
@@ -58,6 +59,9 @@ products, never by a sense of rotation of the observer's frame).
    two or three robots left as for many (nearest to C, ties by the slot geometry), so
    an asymmetric triangle of three (where the paper's Elect_Leader_Asym elects nobody)
    is no obstacle.
+
+Under ``lone=reject`` (Def. 1 read literally) the moves are those of ``lone=accept``,
+the two that start a layer with the role ``layer-start`` (:func:`_literal`).
 
 What it does not handle (``docs/gathering-corrected.md``): exact ties that only a
 handedness could break (a tie of the centre rule; several nearest robots all of whose
@@ -250,30 +254,14 @@ def _arrival_keeps_centre(pts, mover, target, centre, readings, unit) -> bool:
     return got is not None and got == centre
 
 
-def _other_end(target, centre, pat, pts, unit, stay, mover, readings):
-    """With a pattern of at most 4 robots, the chain end's slot other than ``target``
-    when the completion of both keeps C and a leader (the mover tries it when no path of
-    its list to ``target`` is clear); else None."""
-    if pat.centre_robot is None or len(pat.robots) > 4 or not stay or pat.last_full():
-        return None
-    l = pat.last_layer
-    chain = pat.layers[-1]
-    ends = [slot(centre, pts[chain[-1]], l, 1), slot(centre, pts[chain[0]], l, -1)]
-    if ends[0] == ends[1] or target not in ends:
-        return None
-    other = ends[1] if target == ends[0] else ends[0]
-    if all(_arrival_keeps_centre(pts, mover, s, centre, readings, unit) and
-           keeps_a_leader(pts, mover, s) for s in ends):
-        return other
-    return None
-
-
 def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=None):
     """``(target, layer, kind)``: C, a new layer's radial point, or a chain end's slot;
     target None on an exact tie.  The slot: while the pattern has at most 4 robots (its
-    centre is not unique), the end slot farther from the robots that stay (so that C
-    stays the centre when the SEC moves at the end, point 1), then the nearer in angle;
-    else the nearer in angle (the larger dot product with the mover's direction)."""
+    centre is not unique), the end whose completion keeps C and a leader when exactly
+    one does (``mover`` given; both tests read the slot and the robots that stand still
+    only); when neither does, the end farther from the robots that stay; otherwise, and
+    for larger patterns, the nearer in angle (the larger dot product with the mover's
+    direction, monotone along its paths)."""
     if pat.centre_robot is None:
         return centre, 0, "centre"
     l = pat.last_layer
@@ -306,9 +294,10 @@ def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=No
                     and keeps_a_leader(pts, mover, s)]
             if len(fine) == 1:
                 return fine[0], l, "slot"
-        c = (_far2(pts, s_ccw, stay) - _far2(pts, s_cw, stay)).sign()
-        if c:
-            return (s_ccw if c > 0 else s_cw), l, "slot"
+        if mover is None or not fine:
+            c = (_far2(pts, s_ccw, stay) - _far2(pts, s_cw, stay)).sign()
+            if c:
+                return (s_ccw if c > 0 else s_cw), l, "slot"
     a, b = g.dot(v, g.sub(s_ccw, centre)), g.dot(v, g.sub(s_cw, centre))
     c = (a - b).sign()
     if c == 0:
@@ -413,9 +402,8 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
         group = [o for o in options[k:] if o[0] == options[k][0]]
         k += len(group)
         found = [(o[1], p) for o in group
-                 if (p := _path_to_an_end(o, pts, centre, cands, R, unit, pat,
-                                          len(tied) > 1, approx, tower, readings))
-                 is not None]
+                 if (p := _first_path(o, pts, centre, cands, R, unit, pat,
+                                      len(tied) > 1, approx, tower, readings)) is not None]
         if len(found) > 1:
             # the smallest profile of distances to the others; equal profiles: stay
             # ... preferring a mover after whose move the robots left in R still have
@@ -449,11 +437,6 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
                                  tower, inside, detail, readings)
         if around is not None:
             return around
-    if chosen is None and len(tied) == 1 and len(options) == 1 and options[0][4] == "slot":
-        claim = _claim(options[0], pts, centre, R, unit, cands, pat, approx, tower, detail,
-                       readings)
-        if claim is not None:
-            return claim
     if chosen is None:
         if blocked:
             why = (f"every move of robots {sorted(o[1] for o in blocked)} ends in a "
@@ -553,33 +536,6 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
                     f"the nearest robot blocking none of them, moves ({detail})")
 
 
-def _claim(option, pts, centre, R, unit, cands, pat, approx, tower, detail, readings):
-    """The nearest robot b has a slot T as its target and no clear path to it: the robot
-    of R nearer to T than b (the nearest to T; a tie: none) moves to T instead (role
-    ``asym``), when its own path is clear, keeps C and ends with a leader.  On its way
-    its distance to T falls, so it stays nearer to T than b (``proofs/
-    gathering-corrected.md``, Lemma 5 case 5)."""
-    _dist, b, target, l, _kind = option
-    to_b = g.dist2(pts[b], target)
-    closer = [j for j in R if j != b and (g.dist2(pts[j], target) - to_b).sign() < 0]
-    if not closer:
-        return None
-    near = min((g.dist2(pts[j], target) for j in closer), key=SortKey)
-    first = [j for j in closer if g.dist2(pts[j], target) == near]
-    if len(first) != 1:
-        return None
-    x = first[0]
-    if not keeps_a_leader(pts, x, target):
-        return None
-    path = _first_path((None, x, target, l, "slot"), pts, centre, cands, R, unit, pat, False,
-                       approx, tower, readings)
-    if path is None:
-        return None
-    return Decision("move", (Move(x, path, "asym"),), centre, pat, None,
-                    f"corrected: robot {b} has no clear path to its slot; robot {x}, nearer "
-                    f"to it, moves there ({detail})")
-
-
 def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None, readings=None):
     """Nobody is at C but two or more robots are within 2 of it: C cannot be taken.  The
     farthest of them from C moves radially out to distance 2 (then it is in layer 1
@@ -617,24 +573,6 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None, readi
                         f"corrected: robot {j} clears C (robots {close} within 2 of it)")
     return _stay(pts, centre, pat,
                  f"corrected: robot {j} cannot clear C (robots {close} within 2 of it)")
-
-
-def _path_to_an_end(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower,
-                    readings):
-    """:func:`_first_path` to the option's target; none, and the pattern has at most 4
-    robots: to the other chain end's slot when both ends keep C and a leader
-    (:func:`_other_end`)."""
-    path = _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower,
-                       readings)
-    if path is not None or option[4] != "slot":
-        return path
-    i = option[1]
-    other = _other_end(option[2], centre, pat, pts, unit, [j for j in R if j != i], i,
-                       readings)
-    if other is None:
-        return None
-    return _first_path((None, i, other) + tuple(option[3:]), pts, centre, cands, R, unit,
-                       pat, tied_start, approx, tower, readings)
 
 
 def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower=None,

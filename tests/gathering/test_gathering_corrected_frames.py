@@ -122,7 +122,8 @@ def test_every_case_plans_the_same_in_every_frame(path):
 
 
 #: grid:4:5 starts (scaled by 3) whose runs use the end game's choices: equal profiles
-#: broken by the ground truth's order (0,1,2,5,7), the other chain end (0,1,2,4,5)
+#: broken by the ground truth's order (0,1,2,5,7), the chain end chosen by the exact
+#: tests of its completion (0,1,2,4,5; 0,1,2,5,8)
 END_GAMES = ((0, 1, 2, 5, 7), (0, 1, 2, 4, 5), (0, 1, 2, 5, 8))
 
 
