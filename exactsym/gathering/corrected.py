@@ -378,7 +378,8 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
     try:
         for i in tied:
             stay = [j for j in R if j != i]
-            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower, i, readings)
+            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower, i,
+                                      readings)
             if target is not None:
                 options.append((g.dist2(pts[i], target), i, target, l, kind))
     except ValueError as err:           # a radial point the field cannot hold

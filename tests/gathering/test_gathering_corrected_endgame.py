@@ -1,5 +1,5 @@
-"""The corrected variant's end game and fallbacks (issue 31, ``proofs/gathering-corrected.md``
-Lemmas 3 (c), 5 and 7): starts with a leader gather, under ASYNC and non-rigid moves, in
+"""The corrected variant's end game (issue 31, ``proofs/gathering-corrected.md`` Lemmas
+3 (c), 5 and 7): starts with a leader gather, under ASYNC and non-rigid moves, in
 both handednesses; lone=reject answers not-possible only where Definition 1 read
 literally has no pattern; along every leader path the distance to C never exceeds its
 value at the Look.  The stall starts failed before (stalled), and so did the lone=reject
@@ -23,7 +23,6 @@ from exactsym.gathering.corrected_choice import literal_pattern_exists
 from exactsym.gathering.invariants import ALL
 from exactsym.gathering.paper_bridge import configuration_of, read_case
 from exactsym.gathering.robot import Readings
-from exactsym.gathering.world import Frame
 from exactsym.truth.symmetry import symmetry_group
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -117,8 +116,9 @@ def test_random_starts_with_a_leader_gather(points, seed, mirror):
 def test_leader_paths_stay_nearer_to_c_than_the_rest_of_r(points, seed, delta):
     """Along random legal schedules (ASYNC, moves cut after delta), at every Look that
     plans a leader move every end of every piece of its path but its start (where a tie
-    is allowed) is strictly nearer to C than every other robot of R (arcs are about C; along a segment the squared distance
-    is convex): the mover stays the nearest of R, the bound Lemmas 5 and 7 use.  (The
+    is allowed) is strictly nearer to C than every other robot of R (arcs are about C;
+    along a segment the squared distance is convex): the mover stays the nearest of R,
+    the bound Lemmas 5 and 7 use.  (The
     stronger "never farther than at the Look" is false: the segment to a slot's ray at
     distance h may go out, ``proofs/gathering-corrected.md``.)"""
     if not _has_leader(points):
