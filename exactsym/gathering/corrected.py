@@ -35,9 +35,9 @@ products, never by a sense of rotation of the observer's frame).
    layer), or the
    free slot next to an end of layer l's chain: while P has at most 4 robots, the one
    whose completion keeps C (the centre rule run on the configuration after the
-   arrival) and a leader when only one does, else (the mover strictly inside the SEC
-   about C; otherwise the end farther from the robots that stay) the one nearer to the
-   mover in angle (the larger dot product; a tie: stay).  Robots
+   arrival) and a leader when only one does, else the one farther from the robots of R
+   that stay (so the centre stays unique in f), else the one nearer to the mover in
+   angle (the larger dot product; a tie: stay).  Robots
    within 2 of an empty C other than the nearest: the farthest of them first moves
    radially out to distance 2 (C cannot be taken while two robots are that close).
 5. **Clear paths** (:mod:`.corrected_paths`; distances to C never grow, so I4 holds
@@ -255,17 +255,15 @@ def _arrival_keeps_centre(pts, mover, target, centre, readings, unit) -> bool:
     return got is not None and got == centre
 
 
-def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=None,
-            inside=True):
+def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=None):
     """``(target, layer, kind)``: C, a new layer's radial point, or a chain end's slot;
     target None on an exact tie.  The slot: while the pattern has at most 4 robots (its
     centre is not unique), the end whose completion keeps C and a leader when exactly
     one does (``mover`` given; both tests read the slot and the robots that stand still
-    only); when both do, the nearer in angle if the mover is ``inside`` the SEC with C
-    at its centre (C is kept by the SEC all along), else the end farther from the robots
-    that stay (the end game: the SEC moves with the mover); when neither does, the end
-    farther from the robots that stay.  Larger patterns: the nearer in angle (the larger
-    dot product with the mover's direction, monotone along its paths)."""
+    only), else the end farther from the robots that stay (so that C stays the centre
+    when the SEC moves at the end), then the nearer in angle.  Larger patterns: the
+    nearer in angle (the larger dot product with the mover's direction, monotone along
+    its paths)."""
     if pat.centre_robot is None:
         return centre, 0, "centre"
     l = pat.last_layer
@@ -298,10 +296,9 @@ def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=No
                     and keeps_a_leader(pts, mover, s)]
             if len(fine) == 1:
                 return fine[0], l, "slot"
-        if mover is None or not fine or (len(fine) == 2 and not inside):
-            c = (_far2(pts, s_ccw, stay) - _far2(pts, s_cw, stay)).sign()
-            if c:
-                return (s_ccw if c > 0 else s_cw), l, "slot"
+        c = (_far2(pts, s_ccw, stay) - _far2(pts, s_cw, stay)).sign()
+        if c:
+            return (s_ccw if c > 0 else s_cw), l, "slot"
     a, b = g.dot(v, g.sub(s_ccw, centre)), g.dot(v, g.sub(s_cw, centre))
     c = (a - b).sign()
     if c == 0:
@@ -383,7 +380,7 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
         for i in tied:
             stay = [j for j in R if j != i]
             target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower, i,
-                                      readings, inside[i])
+                                      readings)
             if target is not None:
                 options.append((g.dist2(pts[i], target), i, target, l, kind))
     except ValueError as err:           # a radial point the field cannot hold
@@ -527,8 +524,7 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
         return None                     # x would move the SEC, hence C
     stay = [j for j in R if j != x]
     try:
-        t, lx, kx = _target(pts[x], centre, pat, pts, unit, stay, tower, x, readings,
-                            inside[x])
+        t, lx, kx = _target(pts[x], centre, pat, pts, unit, stay, tower, x, readings)
     except ValueError:
         return None
     if t is None or not keeps_a_leader(pts, x, t):
