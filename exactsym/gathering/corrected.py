@@ -34,8 +34,10 @@ products, never by a sense of rotation of the observer's frame).
    robot of layer l nearest in angle when layer l is full (a lone robot starts the next
    layer), or the
    free slot next to an end of layer l's chain: while P has at most 4 robots, the one
-   farther from the robots of R that stay (so the centre stays unique in f), else the
-   one nearer to the mover in angle (the larger dot product; a tie: stay).  Robots
+   whose completion keeps C (the centre rule run on the configuration after the
+   arrival) and a leader when only one does, else the one farther from the robots of R
+   that stay (so the centre stays unique in f), else the one nearer to the mover in
+   angle (the larger dot product; a tie: stay).  Robots
    within 2 of an empty C other than the nearest: the farthest of them first moves
    radially out to distance 2 (C cannot be taken while two robots are that close).
 5. **Clear paths** (:mod:`.corrected_paths`; distances to C never grow, so I4 holds
@@ -59,6 +61,9 @@ products, never by a sense of rotation of the observer's frame).
    an asymmetric triangle of three (where the paper's Elect_Leader_Asym elects nobody)
    is no obstacle.
 
+Under ``lone=reject`` (Def. 1 read literally) the moves are those of ``lone=accept``,
+the two that start a layer with the role ``layer-start`` (:func:`_literal`).
+
 What it does not handle (``docs/gathering-corrected.md``): exact ties that only a
 handedness could break (a tie of the centre rule; several nearest robots all of whose
 moves end symmetric), a path blocked with no alternative, a symmetric start.
@@ -66,15 +71,16 @@ moves end symmetric), a path blocked with no alternative, a symmetric start.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from functools import lru_cache
 
 from flint import fmpq
 
 from . import geometry as g
-from .corrected_choice import SortKey, distinct_after, keeps_a_leader, no_leader, \
-    profile, profile_compare
+from .corrected_choice import SortKey, distinct_after, ground_ranks, keeps_a_leader, \
+    literal_pattern_exists, no_leader, profile, profile_compare
 from .corrected_paths import layer_one_point, outward_point, path_blockers, \
-    path_is_clear, paths_to_centre, to_slot_paths
+    path_is_clear, paths_to_centre, piece_within, to_slot_paths
 from .pattern import Pattern, capacity, recognise, slot
 from .robot import Decision, Move, Readings, decide, radial_point
 from .run_home import snapshot_key
@@ -174,7 +180,8 @@ def choose_centre(pts, readings: Readings, unit, approx=None):
     return pts[k], sizes[k], tuple(cands), f"C: robot {k}, the centre of {M} robots"
 
 
-def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> bool:
+def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None, readings=None,
+                  unit=fmpq(1)) -> bool:
     """C cannot change while ``mover`` follows ``pieces``, nor at its arrival (point 3
     of the module docstring).  ``cands`` empty (M = 1): the SEC must not need the
     mover."""
@@ -196,18 +203,31 @@ def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> boo
             c2 = g.smallest_enclosing_circle(others)
             if not (c2[0] == centre and c2[1] == r2):
                 return False
-    # on arrival the mover itself may tie for the centre of a small pattern
+    # on arrival the pattern has at most 4 robots: its centre must still be C there
+    # (every candidate's farthest robot outside its pattern, exactly, after the arrival)
     target = pieces[-1].final
     small = pat.centre_robot is not None and len(pat.robots) + 1 <= 4
+    if small and stay and readings is not None and \
+            not _arrival_keeps_centre(pts, mover, target, centre, readings, unit):
+        return False
     others = [k for k in cands if pts[k] != centre]
-    if not others and not small:
-        return True
-    for k, where in [(k, pts[k]) for k in others] + ([(None, target)] if small else []):
+    # f(C) along the way: at most fc and the mover's largest distance to C (at the end
+    # points of its pieces: arcs about C keep it, along a segment it is convex)
+    top = fc
+    for piece in pieces:
+        for q in (piece.start, piece.final):
+            if (g.dist2(q, centre) - top).sign() > 0:
+                top = g.dist2(q, centre)
+    for k, where in [(k, pts[k]) for k in others]:
         fk = _far2(pts, where, stay, approx)
-        if fk is not None and (fk - fc).sign() > 0:
+        if fk is not None and (fk - top).sign() > 0:
             continue
-        if stay or k is None:
-            return False
+        if stay:
+            # the mover is outside k's pattern until it arrives: f(k) is at least its
+            # distance to k, which stays above every value f(C) takes
+            if any(piece_within(piece, where, top) for piece in pieces):
+                return False
+            continue
         # the last robot: every point of its path nearer to C than to k
         for piece in pieces:
             # |p - k|^2 - |p - C|^2 is linear in p: on a segment its ends decide; on an arc
@@ -224,12 +244,26 @@ def _keeps_centre(pieces, pts, mover, centre, cands, R, pat, approx=None) -> boo
     return True
 
 
-def _target(p, centre, pat, pts, unit, stay, tower=None):
+def _arrival_keeps_centre(pts, mover, target, centre, readings, unit) -> bool:
+    """With ``mover`` at ``target`` and the others where they are, is C still the centre
+    the rule of :func:`choose_centre` names?  (Read only from the target and the robots
+    that stand still: the same answer from every point of the mover's way.)"""
+    after = list(pts)
+    after[mover] = target
+    got = choose_centre(after, readings if readings is not None else Readings(), unit,
+                        g.approx_points(after))[0]
+    return got is not None and got == centre
+
+
+def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=None):
     """``(target, layer, kind)``: C, a new layer's radial point, or a chain end's slot;
     target None on an exact tie.  The slot: while the pattern has at most 4 robots (its
-    centre is not unique), the end slot farther from the robots that stay (so that C
-    stays the centre when the SEC moves at the end, point 1), then the nearer in angle;
-    else the nearer in angle (the larger dot product with the mover's direction)."""
+    centre is not unique), the end whose completion keeps C and a leader when exactly
+    one does (``mover`` given; both tests read the slot and the robots that stand still
+    only), else the end farther from the robots that stay (so that C stays the centre
+    when the SEC moves at the end), then the nearer in angle.  Larger patterns: the
+    nearer in angle (the larger dot product with the mover's direction, monotone along
+    its paths)."""
     if pat.centre_robot is None:
         return centre, 0, "centre"
     l = pat.last_layer
@@ -253,6 +287,15 @@ def _target(p, centre, pat, pts, unit, stay, tower=None):
     if s_ccw == s_cw:
         return s_ccw, l, "slot"
     if len(pat.robots) <= 4 and stay:
+        ends = (s_ccw, s_cw)
+        if mover is not None:
+            # the ends whose completion keeps C and a leader (both read the target and
+            # the robots that stand still only): a choice every point of the way repeats
+            fine = [s for s in ends if _arrival_keeps_centre(pts, mover, s, centre,
+                                                             readings, unit)
+                    and keeps_a_leader(pts, mover, s)]
+            if len(fine) == 1:
+                return fine[0], l, "slot"
         c = (_far2(pts, s_ccw, stay) - _far2(pts, s_cw, stay)).sign()
         if c:
             return (s_ccw if c > 0 else s_cw), l, "slot"
@@ -270,7 +313,41 @@ def decide_corrected(snapshot: tuple, readings: Readings = Readings(), unit=fmpq
     radial target whose distance is a nested radical is built in that tower
     (:func:`.robot.radial_point`), and decisions are cached per snapshot and per tower
     (numbers of two towers are never compared, not even as cache keys)."""
+    if readings.lone == "reject":
+        return _literal(snapshot, readings, unit)
     return _decide_corrected(snapshot_key(snapshot), readings, unit)
+
+
+def _literal(snapshot, readings, unit) -> Decision:
+    """The decision under ``lone=reject``.  The variant builds the same layers as under
+    ``lone=accept`` -- one robot at a time, so the first robot of a layer is alone in it
+    until the next arrives beside it, a state the literal reading calls no pattern -- and
+    its P is that bookkeeping pattern; the gathered state is a literal pattern (a chain
+    of two or more in the last layer) for every n but 8, 20, 38, ..., where the answer
+    is ``not-possible`` with that reason.  A move that starts a layer alone has the role
+    ``layer-start``, and so has the next move, which puts a robot beside it (the literal
+    P grows by both at that arrival); the pattern reported is the literal one, so the
+    robot alone in its layer is in R meanwhile (``docs/gathering-corrected.md``)."""
+    pts = list(snapshot)
+    d = _decide_corrected(snapshot_key(snapshot), replace(readings, lone="accept"), unit)
+    if not literal_pattern_exists(len(pts)):
+        return Decision("not-possible", (), d.centre, d.pattern, None,
+                        f"corrected: Definition 1 read literally (lone=reject) has no "
+                        f"pattern of {len(pts)} robots (one more than a robot at C and "
+                        f"full layers: the last robot would be alone in its layer; "
+                        f"docs/gathering-corrected.md)")
+    if d.centre is None:
+        return d
+    literal = recognise(pts, d.centre, "reject", unit)
+    waiting = literal.robots != d.pattern.robots        # a robot alone in its layer
+    moves = []
+    for m in d.moves:
+        after = list(pts)
+        after[m.robot] = m.path[-1].final
+        alone = m.robot not in recognise(after, d.centre, "reject", unit).robots
+        moves.append(replace(m, role="layer-start")
+                     if m.role == "leader" and (alone or waiting) else m)
+    return replace(d, moves=tuple(moves), pattern=literal)
 
 
 @lru_cache(maxsize=4096)
@@ -290,7 +367,7 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
         return Decision("terminated", (), centre, pat, None, "R is empty")
     d = {i: g.dist2(pts[i], centre) for i in R}
     if pat.centre_robot is None:
-        clear = _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower)
+        clear = _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower, readings)
         if clear is not None:
             return clear
     near = min(d.values(), key=SortKey)
@@ -302,22 +379,13 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
     try:
         for i in tied:
             stay = [j for j in R if j != i]
-            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower)
+            target, l, kind = _target(pts[i], centre, pat, pts, unit, stay, tower, i,
+                                      readings)
             if target is not None:
                 options.append((g.dist2(pts[i], target), i, target, l, kind))
     except ValueError as err:           # a radial point the field cannot hold
         return Decision("undecided", (), centre, pat, None, str(err))
     options.sort(key=lambda o: SortKey(o[0]))
-    if readings.lone == "reject" and options and pat.centre_robot is not None and \
-            pat.last_full():
-        # Def. 1 read literally: every robot of a layer touches one of its layer, so a
-        # layer can only start with two robots arriving at once -- no one-at-a-time move
-        # makes P grow past a full layer (and for n = 8, 20, 38, ... no pattern exists)
-        return Decision("not-possible", (), centre, pat, None,
-                        "corrected: under lone=reject (Def. 1 read literally) the next "
-                        "robot would start a layer alone, which no valid pattern holds; "
-                        "the variant builds the lone=accept pattern "
-                        "(docs/gathering-corrected.md)")
     # never into a symmetric configuration while robots are left to move
     # (corrected_choice.keeps_a_leader): decided before any path, by the target alone
     blocked = []
@@ -337,7 +405,7 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
         k += len(group)
         found = [(o[1], p) for o in group
                  if (p := _first_path(o, pts, centre, cands, R, unit, pat,
-                                      len(tied) > 1, approx, tower)) is not None]
+                                      len(tied) > 1, approx, tower, readings)) is not None]
         if len(found) > 1:
             # the smallest profile of distances to the others; equal profiles: stay
             # ... preferring a mover after whose move the robots left in R still have
@@ -349,20 +417,26 @@ def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
             for f in found[1:]:
                 if profile_compare(profiles[f[0]], profiles[best[0]]) < 0:
                     best = f
-            if sum(1 for f in found if profile_compare(profiles[f[0]],
-                                                       profiles[best[0]]) == 0) > 1:
-                why = f"robots {[f[0] for f in found]} tie (no asymmetry is used)"
-                break
+            level = [f for f in found if profile_compare(profiles[f[0]],
+                                                         profiles[best[0]]) == 0]
+            if len(level) > 1:
+                # equal profiles on a configuration with a leader: the ground truth's
+                # canonical order (the same in every frame); none: no asymmetry to use
+                ranks = ground_ranks(pts)
+                if ranks is None:
+                    why = f"robots {[f[0] for f in found]} tie (no asymmetry is used)"
+                    break
+                best = min(level, key=lambda f: ranks[f[0]])
             found = [best]
         if found:
             chosen = found[0]
     if chosen is None and blocked and len(tied) == 1:
         return _step_aside(pts, centre, tied[0], R, d, unit, cands, pat, approx, tower,
-                           detail)
+                           detail, readings)
     if chosen is None and len(tied) == 1 and len(options) == 1 and inside[tied[0]] and \
             len(pat.robots) > 4:
         around = _around_blocked(options[0], pts, centre, R, d, unit, cands, pat, approx,
-                                 tower, inside, detail)
+                                 tower, inside, detail, readings)
         if around is not None:
             return around
     if chosen is None:
@@ -388,7 +462,8 @@ def _stay(pts, centre, pat, why):
     return Decision("stay", (), centre, pat, None, why)
 
 
-def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail):
+def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail,
+                readings=None):
     """The nearest robot ``m`` alone, and its move ends in a symmetric configuration: it
     moves radially out to the distance of R's next robot (role ``asym``), where it ties
     with that robot and the tie-break leaves it out (its target, hence the symmetric
@@ -402,7 +477,7 @@ def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail):
                         "corrected: the kernel cannot build the way out")
     path = (g.Segment(pts[m], target),)
     if path_is_clear(path, pts, m, unit * unit, frozenset(), approx) and \
-            _keeps_centre(path, pts, m, centre, cands, R, pat, approx) and \
+            _keeps_centre(path, pts, m, centre, cands, R, pat, approx, readings, unit) and \
             keeps_a_leader(pts, m, target):
         return Decision("move", (Move(m, path, "asym"),), centre, pat, None,
                         f"corrected: robot {m}'s move would end in a symmetric "
@@ -412,7 +487,7 @@ def _step_aside(pts, centre, m, R, d, unit, cands, pat, approx, tower, detail):
 
 
 def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, inside,
-                    detail):
+                    detail, readings=None):
     """The nearest robot m alone has a target but every path of its list (all of them,
     whatever its rank among R) comes within 2 of some robot: the nearest robot x of R
     that blocks none of m's paths moves instead (role ``asym``), when its own path is
@@ -449,13 +524,13 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
         return None                     # x would move the SEC, hence C
     stay = [j for j in R if j != x]
     try:
-        t, lx, kx = _target(pts[x], centre, pat, pts, unit, stay, tower)
+        t, lx, kx = _target(pts[x], centre, pat, pts, unit, stay, tower, x, readings)
     except ValueError:
         return None
     if t is None or not keeps_a_leader(pts, x, t):
         return None
     path = _first_path((None, x, t, lx, kx), pts, centre, cands, R, unit, pat, False, approx,
-                       tower)
+                       tower, readings)
     if path is None:
         return None
     return Decision("move", (Move(x, path, "asym"),), centre, pat, None,
@@ -463,7 +538,7 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
                     f"the nearest robot blocking none of them, moves ({detail})")
 
 
-def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
+def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None, readings=None):
     """Nobody is at C but two or more robots are within 2 of it: C cannot be taken.  The
     farthest of them from C moves radially out to distance 2 (then it is in layer 1
     once the nearest reaches C).  A tie for the farthest: the smallest distance profile;
@@ -494,7 +569,7 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
         return Decision("undecided", (), centre, pat, None, str(err))
     path = [g.Segment(pts[j], target)]
     if path_is_clear(path, pts, j, unit2, frozenset(), approx) and \
-            _keeps_centre(path, pts, j, centre, cands, R, pat, approx) and \
+            _keeps_centre(path, pts, j, centre, cands, R, pat, approx, readings, unit) and \
             keeps_a_leader(pts, j, target):
         return Decision("move", (Move(j, tuple(path), "clear"),), centre, pat, None,
                         f"corrected: robot {j} clears C (robots {close} within 2 of it)")
@@ -502,7 +577,8 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None):
                  f"corrected: robot {j} cannot clear C (robots {close} within 2 of it)")
 
 
-def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower=None):
+def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower=None,
+                readings=None):
     """The first clear path of ``option`` = (dist, robot, target, layer, kind) that keeps
     C, as a tuple of pieces; None.  Clear (:func:`.corrected_paths.path_is_clear`): no
     robot within 2 anywhere, except that the final point may touch the robots of P (a
@@ -524,7 +600,7 @@ def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, to
         if not path or (tied_start and isinstance(path[0], g.Arc)):
             continue                    # tied at the Look: the first piece must go in (I4)
         if path_is_clear(path, pts, i, unit2, allowed, approx) and \
-                _keeps_centre(path, pts, i, centre, cands, R, pat, approx):
+                _keeps_centre(path, pts, i, centre, cands, R, pat, approx, readings, unit):
             return tuple(path)
     return None
 

@@ -1,6 +1,8 @@
 """The corrected variant's choices that need no handedness
 (``docs/gathering-corrected.md``): the ground truth's test that a move keeps a leader,
-and the distance profiles that break ties between movers.
+the distance profiles that break ties between movers, the ground truth's canonical
+order as the last tie-break on a configuration that has a leader, and the counts n for
+which Definition 1 read literally has no pattern.
 
 **Never into a symmetric configuration.**  :func:`keeps_a_leader` asks the ground truth
 (:func:`exactsym.truth.symmetry.symmetry_group`, never the paper layer) whether the
@@ -19,6 +21,7 @@ from ..errors import InputError
 from ..truth.symmetry import symmetry_group
 from . import geometry as g
 from .paper_bridge import configuration_of
+from .pattern import capacity
 
 
 def keeps_a_leader(pts, mover, target) -> bool | None:
@@ -41,6 +44,22 @@ def no_leader(pts) -> str | None:
     except (InputError, ArithmeticError, NotImplementedError, ValueError):
         return None
     return None if group.orderable else group.name
+
+
+def ground_ranks(pts) -> dict | None:
+    """The rank of every robot in the ground truth's canonical ordering of the
+    configuration (``def-orderable-set``: the same labelling in every frame, with or
+    without a reflection), or None when the configuration is not orderable or the kernel
+    cannot hold its numbers.  The last tie-break between movers: used only where the
+    variant's own keys (distances, profiles) tie on a configuration that has a
+    leader."""
+    try:
+        group = symmetry_group(configuration_of(list(pts)))
+    except (InputError, ArithmeticError, NotImplementedError, ValueError):
+        return None
+    if not group.orderable or group.ordering is None:
+        return None
+    return {robot: rank for rank, robot in enumerate(group.ordering)}
 
 
 class SortKey:
@@ -77,3 +96,16 @@ def distinct_after(pts, option, R) -> bool:
     after[i] = path[-1].final
     rest = [profile(after, j) for j in R if j != i]
     return all(profile_compare(a, b) != 0 for k, a in enumerate(rest) for b in rest[k + 1:])
+
+
+def literal_pattern_exists(n: int) -> bool:
+    """Does Definition 1 (``gathering_pattern``), read literally (``lone=reject``: every
+    robot of a layer touches one of its layer), have a pattern of n robots?  Not when n
+    is one more than a robot at C and full layers (8, 20, 38, ...)."""
+    total, layer = 1, 1
+    while total < n:
+        total += capacity(layer)
+        layer += 1
+        if total + 1 == n:
+            return False
+    return True

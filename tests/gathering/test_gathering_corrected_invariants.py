@@ -224,14 +224,17 @@ def test_the_mirror_tie_is_avoided(scheduler):
     assert res.outcome == "gathered", res.detail
 
 
-def test_the_literal_definition_is_not_possible_one_robot_at_a_time():
-    """lone=reject (Def. 1 read literally): with a robot at C, the next arrival would put
-    one robot alone in layer 1, which no valid pattern holds: not-possible with that
-    reason (before: the move was made and I10 reported "P did not grow"); under
-    lone=accept the same snapshot moves robot 1 to layer 1."""
+def test_the_literal_definition_moves_as_lone_accept_with_a_layer_start():
+    """lone=reject (Def. 1 read literally): with a robot at C the next arrival puts one
+    robot alone in layer 1, no literal pattern; the variant makes the same move as under
+    lone=accept (before: not-possible, on a start with a leader), marked ``layer-start``,
+    and reports the literal pattern (robot 0 alone)."""
     pts = _mq([(0, 0), (7, 1), (-12, 16), (16, 12), (0, -20)])
     literal = decide_corrected(pts, Readings(lone="reject"))
-    assert literal.status == "not-possible" and "lone=reject" in literal.detail
     accepted = decide_corrected(pts, Readings())
     assert accepted.status == "move" and accepted.moves[0].robot == 1
     assert g.dist2(accepted.moves[0].path[-1].final, pts[0]) == 4
+    assert literal.status == "move" and literal.moves[0].robot == 1
+    assert literal.moves[0].role == "layer-start" and accepted.moves[0].role == "leader"
+    assert literal.moves[0].path == accepted.moves[0].path
+    assert set(literal.pattern.robots) == {0}
