@@ -321,7 +321,8 @@ def outward_point(centre, p, r2_to, tower=None):
     (the symmetry-avoiding move of ``corrected.decide_corrected``: out to the next
     robot's distance); None when the kernel cannot build the roots."""
     v = g.sub(p, centre)
-    rho, here = radius_of(r2_to, tower), radius_of(g.dot(v, v), tower)
-    if rho is None or here is None:
+    # one root of the ratio: two roots built apart (no run tower) lie in two fields
+    ratio = radius_of(r2_to / g.dot(v, v), tower)
+    if ratio is None:
         return None
-    return g.add(centre, g.scale(v, rho / here))
+    return g.add(centre, g.scale(v, ratio))

@@ -209,3 +209,17 @@ def test_float_filters_agree_with_the_exact_predicates(pts):
             assert g.piece_hits(piece, q) == unfiltered
             if unfiltered:
                 assert j in near
+
+
+def test_outward_point_between_two_irrational_radii_is_one_root_of_their_ratio():
+    """|p - C|^2 = 4 + 2 sqrt 2 and the target 8 + 4 sqrt 2: each radius alone is a
+    nested root that does not denest (two towers when built apart, which did not mix: an
+    internal error on cases/gathering/corrected-roots-12-five-stall.toml); their ratio
+    is sqrt 2, so the point is p sqrt 2."""
+    from exactsym.gathering.corrected_paths import outward_point
+    r2 = MQ.sqrt(2)
+    centre = (MQ.rational(0), MQ.rational(0))
+    p = (MQ.rational(1) + r2, MQ.rational(1))
+    x, y = outward_point(centre, p, MQ.rational(8) + 4 * r2)
+    assert (x, y) == (p[0] * r2, r2)
+    assert x * x + y * y == MQ.rational(8) + 4 * r2
