@@ -28,6 +28,7 @@ Public names: :class:`Tower`, :class:`TowerElement`, :func:`height_bits`.
 
 from __future__ import annotations
 
+from copy import deepcopy
 from fractions import Fraction
 from math import isqrt, lcm, prod
 
@@ -141,6 +142,16 @@ class Tower:
         self.radicands: list = []          # r_i (level < i), index i - 1
         self._roots: dict = {}             # radicand -> its non-negative root in the tower
         self._balls: dict = {}             # (i, prec) -> ball around y_i
+
+    def __deepcopy__(self, memo):
+        """A tower that grows on its own (the gathering search forks worlds): its
+        radicands and roots copied deeply, its balls shared (an ``arb`` is immutable and
+        cannot be deep-copied)."""
+        new = object.__new__(type(self))
+        memo[id(self)] = new
+        for name, value in self.__dict__.items():
+            setattr(new, name, dict(value) if name == "_balls" else deepcopy(value, memo))
+        return new
 
     @property
     def levels(self) -> int:

@@ -367,3 +367,17 @@ def test_roots_over_levels_of_k0_agree_with_the_complete_search(subset, y, z):
         if root is not None:
             assert tower.mul(root, root) == x
     assert tower.root_in(y * y * product, 4) is not None
+
+
+def test_a_tower_with_balls_deep_copies_and_grows_on_its_own():
+    """The gathering search forks worlds by a deep copy, tower included: a tower whose
+    balls were asked for (flint's arb cannot be deep-copied) copies, the copy's numbers
+    keep their values, and a level added to the copy is not added to the original."""
+    system, (a,) = _values("sqrt(1+sqrt(2))")
+    tower = system.tower
+    assert abs(float(a.enclosure(80).mid()) - (1 + 2 ** 0.5) ** 0.5) < 1e-12   # balls cached
+    twin_tower, twin = copy.deepcopy((tower, a))
+    assert twin_tower is not tower and twin_tower.levels == tower.levels == 1
+    assert twin * twin == 1 + MQ.sqrt(2)
+    twin_tower.radicands.append(1 + MQ.sqrt(3))
+    assert tower.levels == 1
