@@ -12,7 +12,13 @@ n = 12).
    under 60 s CPU each.  Joint steps: n = 12, budget 2,000, 79.1 s before the stops of a
    joint motion shared its instants and verdicts (``invariants._covered_points``), 7.7 s
    after; with the budget of 10,000 the search goes deeper into states whose paper-layer
-   decisions need K(alpha) inverses, and still takes several minutes at n = 12.
+   decisions are made in Q(gamma) (``gathering/algebraic_kernel``), and took more than
+   8 minutes at n = 12.  Since the strings of a polygon off one circle there hold their
+   keys undivided (``paper/ratio_keys.chord_key``) and inverses are remembered per
+   field, the first ~1,560 states of that run cost 105 s CPU under cProfile instead of
+   270 s; the rest is the motion side (``joint_critical_roots``: root isolation and
+   multiquadratic products), still far from the 60 s target.  ``PREVIOUS`` holds the
+   figures of the run before, printed beside each row that has one.
 2. One exact event at n = 30 (a Look with its invariant checks, or an advance along a
    piece with its checks at every critical instant): the median CPU time over an ASYNC
    run with every invariant on (``schedulers.run``, at most 300 events), against the
@@ -41,6 +47,13 @@ from exactsym.gathering.world import World  # noqa: E402
 
 SEVERAL = {"gather_readings": ["A3=all"],
            "gather_invariants": sorted(set(ALL) - {"I2", "I9"})}
+
+#: CPU seconds of the previous run by (row, n, budget): the ratio printed beside a row
+#: (default readings: docs/gathering.md's "after" column, the slowest figure;
+#: joint steps: the run before the undivided chord keys, a lower bound at budget 10,000)
+PREVIOUS = {("default", 8, 10_000): 9.0, ("default", 10, 10_000): 12.7,
+            ("default", 12, 10_000): 11.7, ("joint", 12, 2000): 7.7,
+            ("joint", 12, 10_000): 480.0}      # a lower bound: not finished
 
 
 def time_search(n: int, budget: int, expect: dict, seed: int = 1):
@@ -88,14 +101,18 @@ def main() -> None:
     sizes = (8,) if quick else (8, 10, 12)
     print("search (CPU time; target: budget 10,000 under 60 s):")
     full = "--full" in sys.argv[1:]
-    for label, expect, states in (
-            ("default readings, every invariant", {}, budget),
-            ("A3=all, I2 and I9 off (joint steps)", SEVERAL, budget if full else 2000)):
+    for row, label, expect, states in (
+            ("default", "default readings, every invariant", {}, budget),
+            ("joint", "A3=all, I2 and I9 off (joint steps)", SEVERAL,
+             budget if full else 2000)):
         for n in sizes:
             rep, cpu = time_search(n, states, expect)
+            before = PREVIOUS.get((row, n, states))
+            ratio = "" if before is None else \
+                f"; previous run {before:.1f} s: ratio {cpu / before:.2f}"
             print(f"  n = {n:2d}, {label}, budget {states}: {rep.states} states, {rep.expanded} expanded, "
                   f"depth {rep.depth}, {rep.stopped}, {cpu:.1f} s CPU "
-                  f"({cpu / max(rep.states, 1) * 1000:.1f} ms a state)")
+                  f"({cpu / max(rep.states, 1) * 1000:.1f} ms a state){ratio}")
     res, times = event_times()
     t = time.process_time()
     float_replay(random_config(30, 1), res.actions)

@@ -33,6 +33,8 @@ _MAX_PRECISION = 1 << 22   # a sign that needs more bits than this means a bug u
 _BARRETT_DEGREE = 512
 #: products remembered per large cyclotomic field (NumberField.product_sum)
 _PRODUCTS_LIMIT = 32
+#: inverses remembered per field (PolyElement.inverse, the xgcd path)
+_INVERSES_LIMIT = 256
 _XGCD_BITS = 20_000        # fmpq_poly.xgcd is faster below this degree x coefficient bits,
                            # and in degree <= 32 whatever the coefficients
 
@@ -78,6 +80,7 @@ class NumberField:
         self._remainder = None       # x -> x mod minpoly over Z (Barrett), built when needed
         self._cyclotomic = False     # Phi_M arithmetic (.cyclotomic_reduce), None if not
         self._products: dict = {}    # see product_sum
+        self._inverses: dict = {}    # see PolyElement.inverse
 
     def sqrt_of_integer(self, m: int) -> "PolyElement":
         """The positive square root of the squarefree integer ``m`` in this field; only a
@@ -380,11 +383,23 @@ class PolyElement(FieldElement):
             raise ZeroDivisionError("division by zero")
         if self.poly.degree() == 0:
             return PolyElement(self.field, fmpq_poly([1 / self.poly.coeffs()[0]]))
-        if self.field.degree <= 32 or (self.field.degree < _BARRETT_DEGREE and
-                                       self.field.degree * self.poly.numer().height_bits()
-                                       <= _XGCD_BITS):
-            g, s, _ = self.poly.xgcd(self.field.minpoly)
-            return PolyElement(self.field, s / g.coeffs()[0])
+        field = self.field
+        if field.degree <= 32 or (field.degree < _BARRETT_DEGREE and
+                                  field.degree * self.poly.numer().height_bits()
+                                  <= _XGCD_BITS):
+            # remembered per field by exact value: a gathering search's fresh Looks
+            # divide by the same squared lengths of a K(alpha) snapshot in decision
+            # after decision, and in Q(gamma) (.gathering.algebraic_kernel) one xgcd of
+            # coefficients of 19,000 bits costs seconds
+            key = (tuple(int(c) for c in self.poly.numer().coeffs()), int(self.poly.denom()))
+            found = field._inverses.get(key)
+            if found is None:
+                g, s, _ = self.poly.xgcd(field.minpoly)
+                found = s / g.coeffs()[0]
+                if len(field._inverses) >= _INVERSES_LIMIT:
+                    field._inverses.clear()
+                field._inverses[key] = found
+            return PolyElement(field, found)
         # large degree or coefficients: fmpq_poly.xgcd explodes (minutes); see .inverse
         arithmetic = self.field.arithmetic()
         return PolyElement(self.field, inverse_mod(

@@ -206,6 +206,15 @@ def huge_field(*numbers) -> bool:
         for v in numbers)
 
 
+def general_field(*numbers) -> bool:
+    """Whether one of ``numbers`` is an element of a number field given by its minimal
+    polynomial and not cyclotomic (the gathering simulator's Q(gamma) of a K(alpha)
+    snapshot, :mod:`exactsym.gathering.algebraic_kernel`): decided by type, so that every
+    number of one such configuration answers alike.  Its coefficients can have thousands
+    of digits, where an inverse (an xgcd over Q) costs seconds."""
+    return any(isinstance(x, PolyElement) and x.field.conductor is None for x in numbers)
+
+
 def big_field(*numbers) -> bool:
     """Whether one of ``numbers`` lies in a polynomial field of degree >=
     :data:`RATIO_KEY_DEGREE`, in a sparse Q(zeta_N) (products convolve sums of hundreds of
@@ -236,5 +245,5 @@ __all__ = ["LARGE_DEGREE", "RATIO_KEY_DEGREE", "ExactNumber", "NumberSystem",
            "is_algebraic", "is_number", "is_plain_rational", "all_plain_rational", "any_algebraic", "sign",
            "enclosure", "rational_value", "reduced", "is_sparse", "tower_of", "dense_field",
            "shares_inverse", "costly_inverse", "large_dense", "short_texts",
-           "cheap_products", "kummer_tower", "slow_quotient", "huge_field", "big_field",
+           "cheap_products", "kummer_tower", "slow_quotient", "huge_field", "general_field", "big_field",
            "largest_field"]

@@ -21,6 +21,7 @@ from ..exact.fused import complex_product, cross_is_zero
 from ..exact.number import big_field, is_algebraic, largest_field
 from ..exact.ratio import rational_ratio
 from .filtered import ball
+from .inverses import squared_length
 
 _CELLS = 1 << 24           # hash cells: floor(2^24 * value)
 _PREC = 64
@@ -111,10 +112,12 @@ class OrderedKey(RatioKey):
 
     __slots__ = ("_ball_at", "_pair")
 
-    def __init__(self, value, value_ball, home, pair=None):
+    def __init__(self, value, value_ball, home, pair=None, parts=None):
+        # parts: ``() -> (num, den)``, den > 0, instead of ``(value(), 1)``: a quotient
+        # held undivided (off one circle the chord key divides by two squared lengths)
         self._ball_at = value_ball
         self._pair = pair
-        super().__init__(lambda: (value(), 1), value_ball, home)
+        super().__init__(parts or (lambda: (value(), 1)), value_ball, home)
 
     def __eq__(self, other) -> bool:
         # the keys of one pair of vector objects, either way round (a string's chord
@@ -142,7 +145,10 @@ class OrderedKey(RatioKey):
             if a > b:
                 return 1
             prec *= 4
-        return sign(self.exact()[0] - other.exact()[0])
+        (a, b), (c, d) = self.exact(), other.exact()
+        if _is_one(b) and _is_one(d):
+            return sign(a - c)
+        return sign(a * d - c * b)           # b, d > 0
 
     def __lt__(self, other) -> bool:
         return self._cmp(other) < 0
@@ -157,6 +163,10 @@ class OrderedKey(RatioKey):
         return self._cmp(other) >= 0
 
     __hash__ = RatioKey.__hash__
+
+
+def _is_one(x) -> bool:
+    return isinstance(x, int) and x == 1
 
 
 def chord_key(polygon, i: int, j: int) -> OrderedKey:
@@ -176,8 +186,16 @@ def chord_key(polygon, i: int, j: int) -> OrderedKey:
         # off one circle the key is -sign(u.v) (u.v)^2 / (|u|^2 |v|^2) (_cosine_key):
         # -d |d| / ..., continuous, so a ball of it from the balls of d and the lengths
         return -d * abs(d) / ((ux * ux + uy * uy) * (vx * vx + vy * vy))
-    return OrderedKey(lambda: polygon.chord_key(i, j), value_ball, largest_field(u + v),
-                      (u, v))
+    if one_circle:
+        return OrderedKey(lambda: polygon.chord_key(i, j), value_ball, largest_field(u + v),
+                          (u, v))
+
+    def parts():
+        # (-sign(d) d^2, |u|^2 |v|^2): the key undivided -- an inverse in the gathering
+        # search's Q(gamma) (coefficients of 19,000 bits) cost seconds (issue 30)
+        d = u[0] * v[0] + u[1] * v[1]
+        return -sign(d) * d * d, squared_length(u) * squared_length(v)
+    return OrderedKey(None, value_ball, largest_field(u + v), (u, v), parts)
 
 
 def ray_ratio_key(x, y):

@@ -277,3 +277,67 @@ def test_ratio_key_cells_of_large_values(x, y):
     value = x * y * (1 << 24)
     assert hash(key) == hash(("ratio", int(value.p // value.q)))
     assert max(asked) <= 1024
+
+
+def _cube_root_field():
+    from flint import arb, ctx
+    from exactsym.exact.field import NumberField
+
+    def enclose(prec):
+        with ctx.workprec(prec + 16):
+            return arb(2).root(3)
+    return NumberField(fmpq_poly([-2, 0, 0, 1]), enclose, "Q(2^(1/3))", "2^(1/3)")
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.lists(st.tuples(*[st.integers(-4, 4)] * 6), min_size=2, max_size=3))
+def test_strings_off_one_circle_in_a_general_field_need_no_inverse(rows):
+    """Q(2^(1/3)), a field given by its minimal polynomial (as the gathering search's
+    Q(gamma)): a polygon off one circle holds ordered keys undivided in its strings
+    (strings._ordered_chords), equal and ordered as the exact divided keys, and building
+    and comparing them takes no inverse.  Each vector also turned by a quarter turn:
+    equal chords across the copies."""
+    from exactsym.exact.field import PolyElement
+    from exactsym.exact.number import general_field
+    from exactsym.paper.circle_polygon import polygon_from_directions
+    from exactsym.paper.polygon.strings import _ordered_chords, cw_string
+    field = _cube_root_field()
+    t = field.gen
+    dirs = []
+    for a, b, c, d, e, f in rows:
+        u = (a + b * t + c * t * t, d + e * t + f * t * t)
+        assume(u[0] != 0 or u[1] != 0)
+        dirs += [u, (-u[1], u[0])]
+    angles = {(sign(x), sign(y), exact_key(y / x) if x != 0 else None) for x, y in dirs}
+    assume(len(angles) == len(dirs))                       # distinct directions
+    poly = polygon_from_directions(tuple(range(len(dirs))), dirs, False)
+    assume(not poly.one_circle)
+    assert general_field(*poly.directions[0]) and _ordered_chords(poly)
+    n = poly.n
+    exact = {(i, j): poly.chord_key(i, j) for i in range(n) for j in range(n) if i != j}
+
+    def refuse(self):
+        raise AssertionError("an inverse was taken")
+    original, PolyElement.inverse = PolyElement.inverse, refuse
+    try:
+        strings = [cw_string(poly, m) for m in range(n)]
+        keys = {(m, (m - s) % n): strings[m][s - 1] for m in range(n) for s in range(1, n)}
+        for p in keys:
+            for q in keys:
+                assert (keys[p] == keys[q]) == (exact[p] == exact[q])
+                assert (keys[p] < keys[q]) == (exact[p] < exact[q])
+    finally:
+        PolyElement.inverse = original
+
+
+def test_inverses_are_remembered_per_field_by_value():
+    """PolyElement.inverse (the xgcd path): the same value asked again, another object,
+    is read from the field's table; the answer is the inverse."""
+    field = _cube_root_field()
+    t = field.gen
+    x = 3 + t - 2 * t * t
+    first = x.inverse()
+    assert first * x == 1
+    assert len(field._inverses) == 1
+    again = (3 + t - 2 * t * t).inverse()
+    assert again == first and again.poly is first.poly

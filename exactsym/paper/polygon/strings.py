@@ -15,7 +15,7 @@ from ..circle_polygon import CirclePolygon
 from ..filtered import circle_gap_tokens, cross_sign, gap_classes_on_circle
 from ..inverses import squared_length
 from . import small
-from ...exact.number import any_algebraic, huge_field
+from ...exact.number import any_algebraic, general_field, huge_field
 from ..keys import HALF, ccw_gap_key
 from ..ratio_keys import chord_key as ordered_chord_key
 
@@ -68,12 +68,15 @@ def _ordered_chords(polygon: CirclePolygon) -> bool:
     """Whether the strings of ``polygon`` hold :func:`~exactsym.paper.ratio_keys.chord_key`
     keys: a Cartesian polygon in a huge field (:func:`exactsym.exact.number.huge_field`; off one circle,
     a radial projection's, each exact key is four products and two inverses in a tower
-    over the sparse Q(zeta_N)); decided once per polygon, so that every string of it
-    holds one kind of key."""
+    over the sparse Q(zeta_N)), or off one circle in a field given by a minimal polynomial
+    (:func:`exactsym.exact.number.general_field`: the gathering search's Q(gamma), where
+    one inverse of a squared length cost seconds); decided once per polygon, so that
+    every string of it holds one kind of key."""
     found = polygon.__dict__.get("_ordered_chords")
     if found is None:
         found = polygon.__dict__["_ordered_chords"] = not polygon.polar and \
-            any(huge_field(*d) for d in polygon.directions)
+            (any(huge_field(*d) for d in polygon.directions) or
+             (any(general_field(*d) for d in polygon.directions) and not polygon.one_circle))
     return found
 
 
