@@ -97,8 +97,9 @@ Definition rim (P : list pt) : list pt := filter (fun p => Qeq_bool (r2 p) (rmax
 (* (T1): every point is within sqrt(rmax) of C by the definition of rmax, and the points
    at that distance leave no angular gap above half a turn: each has another one at most
    half a turn counter-clockwise.  Then no open half-plane bounded by a line through C
-   holds them all, and any circle about another centre C' misses the one farthest from C'
-   among them (it is at least as far from C' as from C), so the SEC is the circle about C. *)
+   holds them all: for any other centre C' one of them, s, has (s - C).(C' - C) <= 0, so
+   |s - C'|^2 = R^2 + |C' - C|^2 - 2 (s - C).(C' - C) > R^2 and no circle about C' of
+   radius at most R holds P: the SEC is the circle of radius R about C. *)
 Definition next_within_half (p q : pt) : bool :=
   let g := frac (turn q - turn p) in Qlt_bool 0 g && Qle_bool g (1 # 2).
 Definition sec_centred (P : list pt) : bool :=
