@@ -34,6 +34,7 @@ LIBRARY = Path(__file__).resolve().parents[2] / "proofs" / "coq" / "Exactsym.v"
 _VM = "vm_compute; reflexivity"
 _ORDER = "apply not_orderable_by_candidates; vm_compute; reflexivity"
 _LOOP = "intros fuel; apply printed_loop_never_ends; vm_compute; reflexivity"
+_PRE = "intros fuel; apply preprocess_printed_never_ends; vm_compute; reflexivity"
 
 
 class CoqExportError(ValueError):
@@ -138,6 +139,75 @@ CASE_STATEMENTS = {
                        "symmetric_pair G1 G2", "Nat.ltb 1 (Nat.gcd (length G1) (length G2))"],
         [("type4 (merged G1 G2) = false", _VM)],
         note="G_12: G_1 projected onto G_2's circle, with G_2 (shared rays once)."),
+    "lem-type4": _s(
+        "Lemma lem-type4: if three polygons G_i, G_j, G_k of calG' with odd n_i, n_j, n_k, "
+        "distinct and none a multiple of another, are pairwise symmetric, then n_i, n_j, "
+        "n_k are pairwise coprime.",
+        ("G1", "G2", "G3"), [
+            "Nat.eqb (length (polygons P)) 3",
+            "polygon G1", "polygon G2", "polygon G3",
+            "Nat.odd (length G1)", "Nat.odd (length G2)", "Nat.odd (length G3)",
+            "negb (Nat.eqb (Nat.modulo (length G2) (length G1)) 0)",
+            "negb (Nat.eqb (Nat.modulo (length G1) (length G2)) 0)",
+            "negb (Nat.eqb (Nat.modulo (length G3) (length G1)) 0)",
+            "negb (Nat.eqb (Nat.modulo (length G1) (length G3)) 0)",
+            "negb (Nat.eqb (Nat.modulo (length G3) (length G2)) 0)",
+            "negb (Nat.eqb (Nat.modulo (length G2) (length G3)) 0)",
+            "symmetric_pair G1 G2", "symmetric_pair G1 G3", "symmetric_pair G2 G3",
+            "negb (type4 (merged G1 G2))", "negb (type4 (merged G1 G3))",
+            "negb (type4 (merged G2 G3))", "type0 G1 && type0 G2 && type0 G3"],
+        [("Nat.eqb (Nat.gcd (length G1) (length G2)) 1 = false", _VM)],
+        note="calG' = calG_P = (G_1, G_2, G_3): Preprocess merges a pair only when G_ij is "
+             "type 4 (no pair's is), and the text's stopping rule (every symmetric odd "
+             "polygon type 0, 3 or 4) holds from the start (all three are regular: type 0). "
+             "Distinct counts follow from 'none a multiple of another'. Odd polygons have "
+             "no half-turn, so every reading of 'common line' gives symmetric_pair."),
+    "theorem-los-g1n": _s(
+        "Theorem theorem-los-g1n: a line of symmetry of G_1..n (the polygon Preprocess "
+        "merges from G_1, ..., G_n) is a common line of symmetry of G_1, ..., G_n.",
+        ("G1", "G2"), ["polygon G1", "polygon G2", "Nat.odd (length G1)", "Nat.odd (length G2)",
+                       "negb (Nat.eqb (Nat.modulo (length G2) (length G1)) 0) || "
+                       "negb (Nat.eqb (Nat.modulo (length G1) (length G2)) 0)",
+                       "Nat.ltb 1 (Nat.gcd (length G1) (length G2))", "symmetric_pair G1 G2",
+                       "polygon (merged G1 G2)", "type4 (merged G1 G2)"],
+        [("existsb (fun s => negb (line_of_symmetry G1 s && line_of_symmetry G2 s)) "
+          "(mirrors (merged G1 G2)) = true", _VM)],
+        note="n = 2: G_1..2 = G_12 (G_1 projected onto G_2's circle, with G_2; shared rays "
+             "once), which Preprocess merges (its test: G_12 is type 4) with every hypothesis "
+             "of the text before lem-los-gij; one of its mirrors is not a line of both."),
+    "Gprime-equiG": _s(
+        "Theorem Gprime-equiG: calG' (Preprocess(calG)) is symmetric iff calG is symmetric.",
+        ("G1", "G2", "G3"), [
+            "Nat.eqb (length (polygons P)) 3", "polygon G1", "polygon G2", "polygon G3",
+            "Nat.odd (length G1)", "Nat.odd (length G2)", "Nat.even (length G3)",
+            "negb (Nat.eqb (Nat.modulo (length G2) (length G1)) 0) || "
+            "negb (Nat.eqb (Nat.modulo (length G1) (length G2)) 0)",
+            "Nat.ltb 1 (Nat.gcd (length G1) (length G2))", "symmetric_pair G1 G2",
+            "polygon (merged G1 G2)", "type4 (merged G1 G2)"],
+        [("calG_in_O_A (polygons P) = true", _VM),
+         ("calG_symmetric [merged G1 G2; G3] = true", _VM)],
+        reading="calG' = (G_12, G_3): the merge replaces G_1 and G_2 by G_12 (G_12 holds "
+                "G_2's vertices; as printed Preprocess never ends here, see its entry)",
+        note="G_1, G_2 odd meet every hypothesis of the text's merge and G_12 is type 4 "
+             "(Preprocess's test); G_3 is even, so no other pair is merged. calG = calG_P has "
+             "no common line (in O_A, under the mixed reading, so under every reading); "
+             "calG' has one."),
+    "Preprocess": _s(
+        "Algorithm Preprocess(calG): merges odd polygons whose G_ij is type 4, giving calG' "
+        "(symmetric iff calG is).",
+        ("G1", "G2", "G3"), [
+            "Nat.eqb (length (polygons P)) 3", "polygon G1", "polygon G2", "polygon G3",
+            "Nat.odd (length G1)", "Nat.odd (length G2)", "Nat.even (length G3)",
+            "existsb (fun G => Nat.odd (length G)) (polygons P)",
+            "type4 (merged G1 G2)", "Nat.odd (length (merged G1 G2))"],
+        [("forall fuel, preprocess_printed fuel (polygons P) (Outer 1) = false", _PRE),
+         ("calG_in_O_A (polygons P) = true", _VM),
+         ("calG_symmetric [merged G1 G2; G3] = true", _VM)],
+        note="Literal reading (the printed loops, preprocess_printed): it never ends, "
+             "whatever the order of the polygons (i stops at an odd polygon). Evident "
+             "reading (replace G_i and G_j by G_ij, rescan): G_12 is type 4, so G_1, G_2 "
+             "merge; then G_12 is the only odd polygon and calG' = (G_12, G_3), which is "
+             "symmetric while calG is in O_A: no reading rescues it."),
     "Psym-Gsym": _s(
         "Theorem Psym-Gsym: P is in O_S iff calG_P is in O_S (all polygons have a common "
         "line of symmetry, def-sym-calG).",
@@ -341,6 +411,8 @@ def coq_refutation_of_points(label: str, points, source: str | None = None,
     ends = {"G1": radii[0], "Gt": radii[-1]} if radii else {}
     if len(radii) > 1:
         ends["G2"] = radii[1]
+    if len(radii) > 2:
+        ends["G3"] = radii[2]
     levels = {name: ends[name] for name in spec["names"] if name in ends}
     return _file(label, spec, points, levels, source, statement)
 

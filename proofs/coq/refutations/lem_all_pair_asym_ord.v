@@ -415,6 +415,106 @@ Proof.
   unfold vertex. replace (1 + k - 1)%nat with k by lia. rewrite Hnth. exact Hv.
 Qed.
 
+(* ------------------------------------------------------------------ Preprocess *)
+
+(* Preprocess AS PRINTED (algorithm Preprocess(calG), G_1, ..., G_t the polygons):
+     i = 1; while i <= t: if G_i is odd { j = 1; while j <= t: if j <> i & G_j is odd
+       { compute G_ij; if G_ij is type 4: replace G_i by G_ij, else j++ } else j++ }
+     else i++.
+   Only these counters decide whether it ends.  [poly Gs k] is G_k (k from 1), and
+   [pre_step] one pass of either loop (None: it has ended). *)
+Inductive pstate := Outer (i : nat) | Inner (i j : nat).
+Definition poly (Gs : list (list pt)) (k : nat) : list pt := nth (k - 1) Gs [].
+Fixpoint set_nth (Gs : list (list pt)) (k : nat) (G : list pt) : list (list pt) :=
+  match Gs, k with
+  | [], _ => []
+  | _ :: rest, O => G :: rest
+  | H :: rest, S k' => H :: set_nth rest k' G
+  end.
+Definition pre_step (Gs : list (list pt)) (st : pstate) : option (list (list pt) * pstate) :=
+  match st with
+  | Outer i => if Nat.ltb (length Gs) i then None
+               else if Nat.odd (length (poly Gs i)) then Some (Gs, Inner i 1)
+               else Some (Gs, Outer (S i))
+  | Inner i j => if Nat.ltb (length Gs) j then Some (Gs, Outer i)
+                 else if negb (Nat.eqb j i) && Nat.odd (length (poly Gs j)) then
+                   let Gij := merged (poly Gs i) (poly Gs j) in
+                   if type4 Gij then Some (set_nth Gs (i - 1) Gij, Inner i j)
+                   else Some (Gs, Inner i (S j))
+                 else Some (Gs, Inner i (S j))
+  end.
+(* [preprocess_printed fuel Gs st] is true iff the printed loops end within [fuel] passes. *)
+Fixpoint preprocess_printed (fuel : nat) (Gs : list (list pt)) (st : pstate) : bool :=
+  match fuel with
+  | O => false
+  | S f => match pre_step Gs st with
+           | None => true
+           | Some (Gs', st') => preprocess_printed f Gs' st'
+           end
+  end.
+
+Lemma set_nth_length : forall Gs k G, length (set_nth Gs k G) = length Gs.
+Proof. induction Gs as [|H rest IH]; intros [|k] G; simpl; auto. Qed.
+
+Lemma set_nth_nth : forall Gs k G, (k < length Gs)%nat -> nth k (set_nth Gs k G) [] = G.
+Proof.
+  induction Gs as [|H rest IH]; intros [|k] G Hk; simpl in *; try lia; auto.
+  apply IH. lia.
+Qed.
+
+Definition pindex (st : pstate) : nat := match st with Outer i => i | Inner i _ => i end.
+(* The invariant: i is a polygon's index and G_i is odd. *)
+Definition pinv (Gs : list (list pt)) (st : pstate) : Prop :=
+  (1 <= pindex st <= length Gs)%nat /\ Nat.odd (length (poly Gs (pindex st))) = true.
+
+Lemma type4_odd : forall G, type4 G = true -> Nat.odd (length G) = true.
+Proof. intros G H. unfold type4 in H. now repeat rewrite andb_true_iff in H. Qed.
+
+(* With G_i odd nothing increments i: G_i is replaced only by a type 4 polygon, odd. *)
+Lemma pre_step_keeps : forall Gs st, pinv Gs st ->
+  exists Gs' st', pre_step Gs st = Some (Gs', st') /\ pinv Gs' st'.
+Proof.
+  intros Gs [i|i j] [Hi Ho]; simpl in Hi, Ho; simpl.
+  - rewrite (proj2 (Nat.ltb_ge (length Gs) i) ltac:(lia)), Ho. eexists; eexists; split; [reflexivity|].
+    split; simpl; assumption.
+  - destruct (Nat.ltb (length Gs) j).
+    + eexists; eexists; split; [reflexivity|]. split; simpl; assumption.
+    + destruct (negb (Nat.eqb j i) && Nat.odd (length (poly Gs j))).
+      * destruct (type4 (merged (poly Gs i) (poly Gs j))) eqn:T.
+        -- eexists; eexists; split; [reflexivity|]. split; simpl.
+           ++ rewrite set_nth_length. exact Hi.
+           ++ unfold poly at 1. rewrite set_nth_nth by lia. apply type4_odd. exact T.
+        -- eexists; eexists; split; [reflexivity|]. split; simpl; assumption.
+      * eexists; eexists; split; [reflexivity|]. split; simpl; assumption.
+Qed.
+
+Lemma preprocess_stuck : forall fuel Gs st, pinv Gs st -> preprocess_printed fuel Gs st = false.
+Proof.
+  induction fuel as [|f IH]; intros Gs st H; simpl; [reflexivity|].
+  destruct (pre_step_keeps Gs st H) as [Gs' [st' [E H']]]. rewrite E. apply IH. exact H'.
+Qed.
+
+(* So, as printed, Preprocess never ends once calG holds an odd polygon, whatever the
+   order of the polygons: i reaches the first odd one and stays there. *)
+Theorem preprocess_printed_never_ends : forall Gs,
+  existsb (fun G => Nat.odd (length G)) Gs = true ->
+  forall fuel, preprocess_printed fuel Gs (Outer 1) = false.
+Proof.
+  intros Gs H. apply existsb_exists in H. destruct H as [G [Hin Hodd]].
+  destruct (In_nth Gs G [] Hin) as [m [Hm Hnth]].
+  assert (Reach : forall k i, (i + k = S m)%nat -> (1 <= i)%nat ->
+            forall fuel, preprocess_printed fuel Gs (Outer i) = false).
+  { induction k as [|k IHk]; intros i Hik H1 fuel.
+    - apply preprocess_stuck. split; simpl; [lia|]. unfold poly.
+      replace (i - 1)%nat with m by lia. rewrite Hnth. exact Hodd.
+    - destruct fuel as [|f]; simpl; [reflexivity|].
+      rewrite (proj2 (Nat.ltb_ge (length Gs) i) ltac:(lia)).
+      destruct (Nat.odd (length (poly Gs i))) eqn:O.
+      + apply preprocess_stuck. split; simpl; [lia | exact O].
+      + apply IHk; lia. }
+  intros fuel. apply (Reach m 1%nat); lia.
+Qed.
+
 (* ------------------------------------------------------------------ not orderable: a theorem *)
 
 Lemma pt_eqb_refl : forall p, pt_eqb p p = true.
