@@ -208,6 +208,35 @@ CASE_STATEMENTS = {
              "reading (replace G_i and G_j by G_ij, rescan): G_12 is type 4, so G_1, G_2 "
              "merge; then G_12 is the only odd polygon and calG' = (G_12, G_3), which is "
              "symmetric while calG is in O_A: no reading rescues it."),
+    "lem-3-pair-sym": _s(
+        "Lemma lem-3-pair-sym: three polygons G_i, G_j, G_k of calG' are pairwise "
+        "symmetric iff they have a common line of symmetry.",
+        ("G1", "G2", "G3"), [
+            "Nat.eqb (length (polygons P)) 3", "polygon G1", "polygon G2", "polygon G3",
+            "Nat.eqb (length (filter (fun G => Nat.odd (length G)) (polygons P))) 1",
+            "symmetric_pair_same_kind G1 G2", "symmetric_pair_same_kind G1 G3",
+            "symmetric_pair_same_kind G2 G3"],
+        [("common_line_same_kind [G1; G2; G3] = false", _VM)],
+        reading="same-kind: a common line is straight for all the polygons or skew for "
+                "all (the mixed reading, its proof's own, holds here: the line at turn 0 "
+                "is straight for G_1 and G_2 and skew for G_3)",
+        note="calG' = calG_P: Preprocess merges only pairs of odd polygons and there is one "
+             "(as printed its loop never ends on an odd polygon, Preprocess's entry; read "
+             "as a merge it merges nothing). 'Only if' fails: the pairs share straight lines "
+             "(G_1, G_2; G_2, G_3) or skew ones (the two rectangles), yet no line is "
+             "common to all three."),
+    "theorem-sym-pair-symG": _s(
+        "Theorem theorem-sym-pair-symG: every pair <G_i, G_j> of calG' is symmetric iff "
+        "all the polygons of calG' have a common line of symmetry.",
+        (), ["Nat.leb 2 (length (polygons P))", "forallb polygon (polygons P)",
+             "Nat.eqb (length (filter (fun G => Nat.odd (length G)) (polygons P))) 1",
+             "forallb (fun Gi => forallb (symmetric_pair_same_kind Gi) (polygons P)) "
+             "(polygons P)"],
+        [("common_line_same_kind (polygons P) = false", _VM)],
+        reading="same-kind: a common line is straight for all the polygons or skew for "
+                "all; t >= 2 (for t = 1 'every pair' is vacuous)",
+        note="calG' = calG_P (one odd polygon: Preprocess merges nothing). Every pair has a "
+             "common line of one kind; no line is common to all the polygons."),
     "Psym-Gsym": _s(
         "Theorem Psym-Gsym: P is in O_S iff calG_P is in O_S (all polygons have a common "
         "line of symmetry, def-sym-calG).",

@@ -229,6 +229,19 @@ Definition calG_symmetric (Gs : list (list pt)) : bool :=
   existsb (fun s => forallb (fun G => line_of_symmetry G s) Gs) (flat_map mirrors Gs).
 Definition calG_in_O_A (Gs : list (list pt)) : bool := negb (calG_symmetric Gs).
 
+(* The same-kind reading of "common line" (def-sym-pair, def-sym-calG): a line through C
+   is common to the polygons Gs when it is a line of straight symmetry of every one (a
+   mirror of each), or a line of skew symmetry of every one (the half-turn maps each onto
+   itself; then every line through C is one).  A common straight line is a mirror of the
+   first polygon, so the mirrors are the candidates.  For polygons of at least three
+   vertices on a circle no line holds every vertex, so the readings that differ on such
+   lines (or on single robots) agree with this one. *)
+Definition common_line_same_kind (Gs : list (list pt)) : bool :=
+  forallb (is_symmetry half_turn) Gs ||
+  existsb (fun s => forallb (fun G => is_symmetry (Mirror s) G) Gs) (flat_map mirrors Gs).
+Definition symmetric_pair_same_kind (Gi Gj : list pt) : bool :=
+  common_line_same_kind [Gi; Gj].
+
 (* Before obs-merg-asym-pair: "the vertices of G_i are projected radially on the
    circumference of the enclosing circle of G_j (i < j).  Construct a polygon G_ij with
    the full set of vertices on the circle."  A projected vertex on a vertex of G_j is one
