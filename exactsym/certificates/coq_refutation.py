@@ -57,14 +57,25 @@ _PAIR = ["existsb (Qeq_bool rGi) (radii P)", "existsb (Qeq_bool rGj) (radii P)",
 STATEMENTS = {
     "Pasym-Pord": _s(
         "Theorem Pasym-Pord, 'if': P is orderable if P is in O_A.",
-        (), ["Nat.leb 2 (length P)", "in_O_A P"], [("~ orderable P", _ORDER)]),
+        (), ["Nat.leb 2 (length P)", "in_O_A P"], [("~ orderable P", _ORDER)],
+        note="Asymmetric (O_A) reads the skewed mirror image as the half-turn about C "
+             "(skmirrorimage, m = C; the text before stmirrorimage: L' perpendicular "
+             "to L at m): a rotation-only set is asymmetric. The refutation hinges on "
+             "that reading."),
     "lem-asym-ord": _s(
         "Lemma lem-asym-ord: an asymmetric polygon is orderable.",
-        (), ["polygon P", "asymmetric_polygon P"], [("~ orderable P", _ORDER)]),
+        (), ["polygon P", "asymmetric_polygon P"], [("~ orderable P", _ORDER)],
+        note="Asymmetric (O_A) reads the skewed mirror image as the half-turn about C "
+             "(skmirrorimage, m = C; the text before stmirrorimage: L' perpendicular "
+             "to L at m): a rotation-only set is asymmetric. The refutation hinges on "
+             "that reading."),
     "cor-Pasym-Pord": _s(
         "Corollary cor-Pasym-Pord, 'if': P is orderable if calG_P is in O_A.",
         (), ["forallb polygon (polygons P)", "calG_in_O_A (polygons P)"],
-        [("~ orderable P", _ORDER)]),
+        [("~ orderable P", _ORDER)], note="Asymmetric (O_A) reads the skewed mirror image as the half-turn about C "
+             "(skmirrorimage, m = C; the text before stmirrorimage: L' perpendicular "
+             "to L at m): a rotation-only set is asymmetric. The refutation hinges on "
+             "that reading."),
     "lem-one-pair-asym-ord": _s(
         "Lemma lem-one-pair-asym-ord: if calG contains at least one asymmetric polygon "
         "then calG is orderable.",
@@ -138,7 +149,11 @@ CASE_STATEMENTS = {
         ("G1", "G2"), ["polygon G1", "polygon G2", "Nat.odd (length G1)", "Nat.odd (length G2)",
                        "symmetric_pair G1 G2", "Nat.ltb 1 (Nat.gcd (length G1) (length G2))"],
         [("type4 (merged G1 G2) = false", _VM)],
-        note="G_12: G_1 projected onto G_2's circle, with G_2 (shared rays once)."),
+        note="G_12: G_1 projected onto G_2's circle, with G_2 (shared rays once). Here no "
+             "ray is shared, so G_12 has 9 + 15 = 24 vertices: it fails type 4 by parity "
+             "(type 4 needs n odd) before any symmetry is looked at; with shared rays an "
+             "odd G_12 can be type 4 (family-merge-within-hypotheses: 21 vertices, 3 "
+             "mirrors)."),
     "lem-type4": _s(
         "Lemma lem-type4: if three polygons G_i, G_j, G_k of calG' with odd n_i, n_j, n_k, "
         "distinct and none a multiple of another, are pairwise symmetric, then n_i, n_j, "
@@ -157,6 +172,10 @@ CASE_STATEMENTS = {
             "negb (type4 (merged G1 G2))", "negb (type4 (merged G1 G3))",
             "negb (type4 (merged G2 G3))", "type0 G1 && type0 G2 && type0 G3"],
         [("Nat.eqb (Nat.gcd (length G1) (length G2)) 1 = false", _VM)],
+        reading="calG' is what Preprocess's merge test (G_ij type 4) and the text's stopping "
+                "rule give (no merge); merging every pair that meets the text's conditions "
+                "before lem-los-gij would merge G_1, G_2 (the ledger: not a reading, it "
+                "contradicts both)",
         note="calG' = calG_P = (G_1, G_2, G_3): Preprocess merges a pair only when G_ij is "
              "type 4 (no pair's is), and the text's stopping rule (every symmetric odd "
              "polygon type 0, 3 or 4) holds from the start (all three are regular: type 0). "
@@ -254,7 +273,10 @@ CASE_STATEMENTS = {
         [("existsb (fun m => cw_sym P m && negb (is_symmetry (Mirror (2 * turn m)) P)) P "
           "= true", _VM)],
         reading="or: either end suffices (as printed), with m a vertex and L the line "
-                "through m and C (the other readings need an end on an edge: not exported)",
+                "through m and C (the other readings need an end on an edge: not exported). "
+                "With L any line through m the literal 'if' fails trivially (CW_m depends on "
+                "m only: any non-mirror line through a vertex with CW_m = ACW_m); lines "
+                "through C are the ones a line of symmetry can be",
         note="'If' fails: a vertex m has CW_m = ACW_m, yet the line through m and C (the "
              "reflection Mirror (2 turn m)) does not map P onto itself."),
     "Check_Symmetry_Even": _s(
@@ -279,7 +301,9 @@ CASE_STATEMENTS = {
         "polygon G such that G \\ v_l is asymmetric.",
         (), ["polygon P", "asymmetric_polygon P"], [("leader_candidates P = []", _VM)],
         note="Every G \\ v is symmetric: 'while G \\ v_i is symmetric: i++' runs past v_n "
-             "and elects nobody, whatever the ordering."),
+             "and elects nobody, whatever the ordering. n = 3: G \\ v is two points, "
+             "straight symmetric for every triangle, so every asymmetric triangle refutes "
+             "it (the ledger's rotation-only tie failure has no Coq file)."),
     "ElectLeader": _s(
         "Algorithm ElectLeader(calG): given calG with G_t asymmetric, elects a leader v_l of "
         "G_1 such that G_1 \\ v_l is asymmetric.",
@@ -287,10 +311,14 @@ CASE_STATEMENTS = {
                        "forallb (fun r => Qle_bool rG1 r) (radii P)",
                        "forallb (fun r => Qle_bool r rGt) (radii P)",
                        "polygon Gt", "asymmetric_polygon Gt", "polygon G1",
-                       "asymmetric_polygon G1"],
+                       "asymmetric_polygon G1", "Nat.odd (length G1)",
+                       "negb (existsb (cw_sym G1) G1)"],
         [("leader_candidates G1 = []", _VM)],
-        note="G_1 is the inner polygon, G_t the outer one; G_1 is asymmetric, so ElectLeader "
-             "calls Elect_Leader_Asym(G_1), and every G_1 \\ v is symmetric: it elects nobody."),
+        note="G_1 is the inner polygon, G_t the outer one; G_1 is asymmetric and odd, and "
+             "no vertex has CW = ACW, so Check_Symmetry_Odd(G_1)'s loop (as printed, or with "
+             "i++ after every vertex) ends with deg_sym = 0: it reports G_1 asymmetric and "
+             "ElectLeader calls Elect_Leader_Asym(G_1). Every G_1 \\ v is symmetric (n = 3: "
+             "two points): it elects nobody."),
     "Elect_Leader_Sym": _s(
         "Algorithm Elect_Leader_Sym(G): elects a leader of a symmetric convex polygon G "
         "whose degree of symmetry is one, its line through a single vertex or two vertices "
@@ -314,6 +342,10 @@ CASE_STATEMENTS = {
                   "Nat.eqb (length G1) 1", "symmetric_polygon G1"],
         [("forall eps : Q, symmetric_polygon (map (fun v => Pt (r2 v) (turn v - eps)) G1) "
           "= true", "intros eps; vm_compute; reflexivity")],
+        reading="a single robot is a polygon G_1 with degree of symmetry one (its line "
+                "through C and it), as Check_Symmetry_Odd reports with i++ after every "
+                "vertex (CW = ACW = [], deg_sym = 1); as printed its loop never ends on G_1 "
+                "and ElectLeader never reaches Make_SymToAsym",
         note="G_1 is one robot: symmetric, its one line of symmetry through C and its vertex "
              "(the paper's note after def-asymmetric-poly), so ElectLeader calls "
              "Make_SymToAsym on it; moved by any epsilon it is again one point: symmetric."),

@@ -23,10 +23,12 @@
    Negative facts ("no line of symmetry", "asymmetric") rest on (T1)-(T3); positive
    facts (a symmetry exists) and "not orderable" do not: the latter is a Coq theorem
    ([not_orderable_by_candidates]) from the definition of def-orderable-set below, which
-   is shown satisfiable ([one_point_orderable]).  It reads "g moves p" as "the canonical
-   form of g(p) is another term than p" for P written canonically ([canonical P]): that
-   two canonical terms are two points is trusted (lowest terms and the representative of
-   a turn in [0, 1) are unique); the converse is proved ([canon_peq]). *)
+   is shown satisfiable ([one_point_orderable]; for one point only: that an asymmetric
+   set of several points is orderable is argued at the definition, not proved).  The
+   definition lists P's points as points ([mem]), so it does not depend on how P's terms
+   are written; the theorem needs P written canonically ([canonical P], checked), and
+   then a symmetry whose canonical image of p is another term maps p to another point
+   ([canon_peq]). *)
 
 From Coq Require Import QArith ZArith List Bool Lia.
 Import ListNotations.
@@ -159,7 +161,8 @@ Definition image (g : iso) (p : pt) : pt := canon (act g p).
 (* def-orderable-set: "a deterministic algorithm which produces a unique ordering of the
    points of P, such that the ordering is same irrespective of the choice of origin and
    coordinate system".  An algorithm [order] reads a set (lists of one set give one
-   answer), lists every point of P, and commutes with every change of coordinates among
+   answer), lists every point of P (as a point: [mem], so how P's terms are written does
+   not matter), and commutes with every change of coordinates among
    the isometries about C (requiring fewer coordinate changes makes "orderable" easier to
    meet, so "not orderable" below is the stronger claim).  Not vacuous: when no isometry
    about C other than the identity on P maps P onto itself, [order] may send the image of
@@ -169,7 +172,7 @@ Definition orderable (P : list pt) : Prop :=
   exists order : list pt -> list pt,
     (forall A B, same_set A B = true -> order A = order B) /\
     (forall g, order (map (image g) P) = map (image g) (order P)) /\
-    (forall p, In p P -> In p (order P)).
+    (forall p, In p P -> mem p (order P) = true).
 
 (* ------------------------------------------------------------------ polygons of G_P *)
 
@@ -534,33 +537,6 @@ Proof.
   injection E as Ea El. destruct H as [<-|H]; [exact Ea | exact (IH El x H)].
 Qed.
 
-(* lemma-sym-ord's argument, proved: a symmetry g of P that moves a point of P leaves no
-   ordering invariant, since describing P in the coordinates moved by g gives P again. *)
-Theorem not_orderable : forall P g p,
-  same_set (map (image g) P) P = true -> In p P -> pt_eqb (image g p) p = false ->
-  ~ orderable P.
-Proof.
-  intros P g p Hset Hp Hmove [order [Hsame [Hcov Hall]]].
-  pose proof (Hsame _ _ Hset) as E. rewrite Hcov in E.
-  pose proof (map_fixed _ _ E p (Hall p Hp)) as Fix.
-  rewrite Fix, pt_eqb_refl in Hmove. discriminate.
-Qed.
-
-(* The same from a search over the candidates: no trust in (T2) is needed here, only that
-   the candidate found maps P onto itself (checked) and moves a point of P (checked; P
-   canonical, checked in every exported theorem, makes "moves" mean a different point). *)
-Definition not_orderable_dec (P : list pt) : bool :=
-  existsb (fun g => same_set (map (image g) P) P &&
-                    existsb (fun p => negb (pt_eqb (image g p) p)) P) (candidates P).
-
-Theorem not_orderable_by_candidates : forall P, not_orderable_dec P = true -> ~ orderable P.
-Proof.
-  intros P H. unfold not_orderable_dec in H. apply existsb_exists in H.
-  destruct H as [g [_ H]]. apply andb_true_iff in H. destruct H as [Hset Hmoves].
-  apply existsb_exists in Hmoves. destruct Hmoves as [p [Hp Hm]].
-  apply (not_orderable P g p Hset Hp). destruct (pt_eqb (image g p) p); [discriminate | reflexivity].
-Qed.
-
 (* ------------------------------------------------------------------ orderable is not vacuous *)
 
 (* [canon] gives one term per point ([canon_peq]: one point, one canonical form), and
@@ -691,5 +667,70 @@ Proof.
   exists order_one. split; [exact order_one_set|]. split.
   - intros g. unfold order_one at 1. simpl. rewrite pt_eqb_refl. simpl.
     unfold image. rewrite canon_canon. reflexivity.
-  - intros p [<-|[]]. simpl. left. reflexivity.
+  - intros p [<-|[]]. vm_compute. reflexivity.
+Qed.
+
+(* ------------------------------------------------------------------ not orderable: the theorem *)
+
+Lemma integral_opp : forall q, integral (- q) = integral q.
+Proof.
+  intros [n d]. unfold integral; simpl.
+  destruct (Z.eqb_spec ((- n) mod Z.pos d) 0) as [E|E];
+  destruct (Z.eqb_spec (n mod Z.pos d) 0) as [E'|E']; try reflexivity; exfalso.
+  - apply E'. apply Z.mod_divide; [lia|]. apply Z.mod_divide in E; [|lia].
+    apply Z.divide_opp_r in E. now rewrite Z.opp_involutive in E.
+  - apply E. apply Z.mod_divide; [lia|]. apply Z.mod_divide in E'; [|lia].
+    now apply Z.divide_opp_r.
+Qed.
+
+(* An isometry about C maps one point to one point. *)
+Lemma act_peq : forall g x y, peq x y = true -> peq (act g x) (act g y) = true.
+Proof.
+  intros [a|s'] [rx tx] [ry ty] H; unfold peq in *; simpl in *;
+  apply andb_true_iff in H; destruct H as [Hr Ht]; rewrite Hr; simpl;
+  destruct (Qeq_bool rx 0); simpl in *; auto; unfold teq in *.
+  - rewrite (integral_Qeq _ (tx - ty)); [exact Ht | ring].
+  - rewrite (integral_Qeq _ (- (tx - ty))); [rewrite integral_opp; exact Ht | ring].
+Qed.
+
+Lemma canonical_in : forall P p, canonical P = true -> In p P -> canon p = p.
+Proof.
+  intros P p H Hp. unfold canonical in H. rewrite forallb_forall in H.
+  exact (pt_eqb_eq _ _ (H p Hp)).
+Qed.
+
+(* lemma-sym-ord's argument, proved: a symmetry g of P that moves a point of P leaves no
+   ordering invariant, since describing P in the coordinates moved by g gives P again.
+   P is written canonically, so "moves" (the canonical image is another term) means
+   "maps to another point" ([canon_peq]). *)
+Theorem not_orderable : forall P g p, canonical P = true ->
+  same_set (map (image g) P) P = true -> In p P -> pt_eqb (image g p) p = false ->
+  ~ orderable P.
+Proof.
+  intros P g p Hcan Hset Hp Hmove [order [Hsame [Hcov Hall]]].
+  pose proof (Hsame _ _ Hset) as E. rewrite Hcov in E.
+  pose proof (map_fixed _ _ E) as Fix.
+  pose proof (Hall p Hp) as Hm. apply existsb_exists in Hm. destruct Hm as [z [Hz Hpz]].
+  assert (Hi : image g p = z).
+  { unfold image. rewrite (canon_peq _ _ (act_peq g p z Hpz)). exact (Fix z Hz). }
+  assert (Hzc : canon z = z) by (rewrite <- (Fix z Hz); unfold image; apply canon_canon).
+  assert (Hpzc : p = z).
+  { rewrite <- (canonical_in P p Hcan Hp), <- Hzc. apply canon_peq. exact Hpz. }
+  rewrite Hi, <- Hpzc, pt_eqb_refl in Hmove. discriminate.
+Qed.
+
+(* The same from a search over the candidates: no trust in (T2) is needed here, only that
+   the candidate found maps P onto itself (checked) and moves a point of P (checked). *)
+Definition not_orderable_dec (P : list pt) : bool :=
+  existsb (fun g => same_set (map (image g) P) P &&
+                    existsb (fun p => negb (pt_eqb (image g p) p)) P) (candidates P).
+
+Theorem not_orderable_by_candidates : forall P, canonical P = true ->
+  not_orderable_dec P = true -> ~ orderable P.
+Proof.
+  intros P Hcan H. unfold not_orderable_dec in H. apply existsb_exists in H.
+  destruct H as [g [_ H]]. apply andb_true_iff in H. destruct H as [Hset Hmoves].
+  apply existsb_exists in Hmoves. destruct Hmoves as [p [Hp Hm]].
+  apply (not_orderable P g p Hcan Hset Hp).
+  destruct (pt_eqb (image g p) p); [discriminate | reflexivity].
 Qed.
