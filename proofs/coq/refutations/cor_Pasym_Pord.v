@@ -30,8 +30,9 @@
    Negative facts ("no line of symmetry", "asymmetric") rest on (T1)-(T3); positive
    facts (a symmetry exists) and "not orderable" do not: the latter is a Coq theorem
    ([not_orderable_by_candidates]) from the definition of def-orderable-set below, which
-   is shown satisfiable ([one_point_orderable]; for one point only: that an asymmetric
-   set of several points is orderable is argued at the definition, not proved).  The
+   is shown satisfiable ([one_point_orderable]; [three_points_orderable]: three points at
+   distinct distances from C, ordered nearest first; that every set whose only symmetry
+   about C is the identity on it is orderable is argued at the definition, not proved).  The
    definition lists P's points as points ([mem]), so it does not depend on how P's terms
    are written; the theorem needs P written canonically ([canonical P], checked), and
    then a symmetry whose canonical image of p is another term maps p to another point
@@ -740,6 +741,65 @@ Proof.
   apply existsb_exists in Hmoves. destruct Hmoves as [p [Hp Hm]].
   apply (not_orderable P g p Hcan Hset Hp).
   destruct (pt_eqb (image g p) p); [discriminate | reflexivity].
+Qed.
+
+(* Not vacuous beyond one point either: a set whose points lie at distinct distances from C
+   is orderable (nearest first), e.g. three points of an asymmetric set. *)
+Definition at_r (r : Q) (A : list pt) : list pt := filter (fun x => Qeq_bool (r2 x) r) A.
+Definition order_by_radii (rs : list Q) (A : list pt) : list pt :=
+  flat_map (fun r => order_one (at_r r A)) rs.
+
+Lemma peq_r2 : forall x y r, peq x y = true -> Qeq_bool (r2 x) r = Qeq_bool (r2 y) r.
+Proof.
+  intros x y r H. unfold peq in H. apply andb_true_iff in H. destruct H as [H _].
+  apply Qeq_bool_iff in H.
+  destruct (Qeq_bool (r2 y) r) eqn:E.
+  - apply Qeq_bool_iff in E. apply Qeq_bool_iff. rewrite H. exact E.
+  - destruct (Qeq_bool (r2 x) r) eqn:F; [|reflexivity].
+    apply Qeq_bool_iff in F. apply Qeq_bool_neq in E. exfalso. apply E. rewrite <- H. exact F.
+Qed.
+
+Lemma mem_at_r : forall r p A, mem p A = true -> Qeq_bool (r2 p) r = true ->
+  mem p (at_r r A) = true.
+Proof.
+  intros r p A H Hr. apply existsb_exists in H. destruct H as [z [Hz Hp]].
+  apply existsb_exists. exists z. split; [|exact Hp].
+  apply filter_In. split; [exact Hz|]. rewrite <- (peq_r2 p z r Hp). exact Hr.
+Qed.
+
+Lemma same_set_at_r : forall r A B, same_set A B = true -> same_set (at_r r A) (at_r r B) = true.
+Proof.
+  intros r A B H. unfold same_set in *. apply andb_true_iff in H. destruct H as [HA HB].
+  rewrite forallb_forall in HA, HB. apply andb_true_iff. split; apply forallb_forall;
+  intros x Hx; apply filter_In in Hx; destruct Hx as [Hx Hr]; apply mem_at_r; auto.
+Qed.
+
+Lemma order_by_radii_set : forall rs A B, same_set A B = true ->
+  order_by_radii rs A = order_by_radii rs B.
+Proof.
+  intros rs A B H. unfold order_by_radii. induction rs as [|r rs IH]; simpl; [reflexivity|].
+  rewrite IH, (order_one_set _ _ (same_set_at_r r A B H)). reflexivity.
+Qed.
+
+Lemma order_one_image : forall g p, order_one [image g p] = [image g p].
+Proof. intros g p. unfold order_one. simpl. rewrite pt_eqb_refl. simpl.
+  unfold image. rewrite canon_canon. reflexivity. Qed.
+
+Theorem three_points_orderable : orderable [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)].
+Proof.
+  exists (order_by_radii [1; 4; 9]). split; [exact (order_by_radii_set _)|]. split.
+  - intros g.
+    replace (order_by_radii [1; 4; 9] [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)])
+      with [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)] by (vm_compute; reflexivity).
+    assert (R1 : r2 (image g (Pt 1 0)) = 1) by (destruct g; reflexivity).
+    assert (R2 : r2 (image g (Pt 4 (1 # 3))) = 4) by (destruct g; reflexivity).
+    assert (R3 : r2 (image g (Pt 9 (1 # 5))) = 9) by (destruct g; reflexivity).
+    unfold order_by_radii, at_r. cbn [map flat_map filter].
+    rewrite R1, R2, R3.
+    repeat match goal with |- context [Qeq_bool ?x ?y] =>
+      let b := eval vm_compute in (Qeq_bool x y) in change (Qeq_bool x y) with b end.
+    cbv beta iota. rewrite !order_one_image. reflexivity.
+  - intros p Hp. destruct Hp as [<-|[<-|[<-|[]]]]; vm_compute; reflexivity.
 Qed.
 
 (* ================================================= the configuration *)
