@@ -34,6 +34,7 @@ LIBRARY = Path(__file__).resolve().parents[2] / "proofs" / "coq" / "Exactsym.v"
 _VM = "vm_compute; reflexivity"
 _ORDER = "apply not_orderable_by_candidates; vm_compute; reflexivity"
 _LOOP = "intros fuel; apply printed_loop_never_ends; vm_compute; reflexivity"
+_PRE = "intros fuel; apply preprocess_printed_never_ends; vm_compute; reflexivity"
 
 
 class CoqExportError(ValueError):
@@ -56,14 +57,25 @@ _PAIR = ["existsb (Qeq_bool rGi) (radii P)", "existsb (Qeq_bool rGj) (radii P)",
 STATEMENTS = {
     "Pasym-Pord": _s(
         "Theorem Pasym-Pord, 'if': P is orderable if P is in O_A.",
-        (), ["Nat.leb 2 (length P)", "in_O_A P"], [("~ orderable P", _ORDER)]),
+        (), ["Nat.leb 2 (length P)", "in_O_A P"], [("~ orderable P", _ORDER)],
+        note="Asymmetric (O_A) reads the skewed mirror image as the half-turn about C "
+             "(skmirrorimage, m = C; the text before stmirrorimage: L' perpendicular "
+             "to L at m): a rotation-only set is asymmetric. The refutation hinges on "
+             "that reading."),
     "lem-asym-ord": _s(
         "Lemma lem-asym-ord: an asymmetric polygon is orderable.",
-        (), ["polygon P", "asymmetric_polygon P"], [("~ orderable P", _ORDER)]),
+        (), ["polygon P", "asymmetric_polygon P"], [("~ orderable P", _ORDER)],
+        note="Asymmetric (O_A) reads the skewed mirror image as the half-turn about C "
+             "(skmirrorimage, m = C; the text before stmirrorimage: L' perpendicular "
+             "to L at m): a rotation-only set is asymmetric. The refutation hinges on "
+             "that reading."),
     "cor-Pasym-Pord": _s(
         "Corollary cor-Pasym-Pord, 'if': P is orderable if calG_P is in O_A.",
         (), ["forallb polygon (polygons P)", "calG_in_O_A (polygons P)"],
-        [("~ orderable P", _ORDER)]),
+        [("~ orderable P", _ORDER)], note="Asymmetric (O_A) reads the skewed mirror image as the half-turn about C "
+             "(skmirrorimage, m = C; the text before stmirrorimage: L' perpendicular "
+             "to L at m): a rotation-only set is asymmetric. The refutation hinges on "
+             "that reading."),
     "lem-one-pair-asym-ord": _s(
         "Lemma lem-one-pair-asym-ord: if calG contains at least one asymmetric polygon "
         "then calG is orderable.",
@@ -137,7 +149,113 @@ CASE_STATEMENTS = {
         ("G1", "G2"), ["polygon G1", "polygon G2", "Nat.odd (length G1)", "Nat.odd (length G2)",
                        "symmetric_pair G1 G2", "Nat.ltb 1 (Nat.gcd (length G1) (length G2))"],
         [("type4 (merged G1 G2) = false", _VM)],
-        note="G_12: G_1 projected onto G_2's circle, with G_2 (shared rays once)."),
+        note="G_12: G_1 projected onto G_2's circle, with G_2 (shared rays once). Here no "
+             "ray is shared, so G_12 has 9 + 15 = 24 vertices: it fails type 4 by parity "
+             "(type 4 needs n odd) before any symmetry is looked at; with shared rays an "
+             "odd G_12 can be type 4 (family-merge-within-hypotheses: 21 vertices, 3 "
+             "mirrors)."),
+    "lem-type4": _s(
+        "Lemma lem-type4: if three polygons G_i, G_j, G_k of calG' with odd n_i, n_j, n_k, "
+        "distinct and none a multiple of another, are pairwise symmetric, then n_i, n_j, "
+        "n_k are pairwise coprime.",
+        ("G1", "G2", "G3"), [
+            "Nat.eqb (length (polygons P)) 3",
+            "polygon G1", "polygon G2", "polygon G3",
+            "Nat.odd (length G1)", "Nat.odd (length G2)", "Nat.odd (length G3)",
+            "negb (Nat.eqb (Nat.modulo (length G2) (length G1)) 0)",
+            "negb (Nat.eqb (Nat.modulo (length G1) (length G2)) 0)",
+            "negb (Nat.eqb (Nat.modulo (length G3) (length G1)) 0)",
+            "negb (Nat.eqb (Nat.modulo (length G1) (length G3)) 0)",
+            "negb (Nat.eqb (Nat.modulo (length G3) (length G2)) 0)",
+            "negb (Nat.eqb (Nat.modulo (length G2) (length G3)) 0)",
+            "symmetric_pair G1 G2", "symmetric_pair G1 G3", "symmetric_pair G2 G3",
+            "negb (type4 (merged G1 G2))", "negb (type4 (merged G1 G3))",
+            "negb (type4 (merged G2 G3))", "type0 G1 && type0 G2 && type0 G3"],
+        [("Nat.eqb (Nat.gcd (length G1) (length G2)) 1 = false", _VM)],
+        reading="calG' is what Preprocess's merge test (G_ij type 4) and the text's stopping "
+                "rule give (no merge); merging every pair that meets the text's conditions "
+                "before lem-los-gij would merge G_1, G_2 (the ledger: not a reading, it "
+                "contradicts both)",
+        note="calG' = calG_P = (G_1, G_2, G_3): Preprocess merges a pair only when G_ij is "
+             "type 4 (no pair's is), and the text's stopping rule (every symmetric odd "
+             "polygon type 0, 3 or 4) holds from the start (all three are regular: type 0). "
+             "Distinct counts follow from 'none a multiple of another'. Odd polygons have "
+             "no half-turn, so every reading of 'common line' gives symmetric_pair."),
+    "theorem-los-g1n": _s(
+        "Theorem theorem-los-g1n: a line of symmetry of G_1..n (the polygon Preprocess "
+        "merges from G_1, ..., G_n) is a common line of symmetry of G_1, ..., G_n.",
+        ("G1", "G2"), ["polygon G1", "polygon G2", "Nat.odd (length G1)", "Nat.odd (length G2)",
+                       "negb (Nat.eqb (Nat.modulo (length G2) (length G1)) 0) || "
+                       "negb (Nat.eqb (Nat.modulo (length G1) (length G2)) 0)",
+                       "Nat.ltb 1 (Nat.gcd (length G1) (length G2))", "symmetric_pair G1 G2",
+                       "polygon (merged G1 G2)", "type4 (merged G1 G2)"],
+        [("existsb (fun s => negb (line_of_symmetry G1 s && line_of_symmetry G2 s)) "
+          "(mirrors (merged G1 G2)) = true", _VM)],
+        note="n = 2: G_1..2 = G_12 (G_1 projected onto G_2's circle, with G_2; shared rays "
+             "once), which Preprocess merges (its test: G_12 is type 4) with every hypothesis "
+             "of the text before lem-los-gij; one of its mirrors is not a line of both."),
+    "Gprime-equiG": _s(
+        "Theorem Gprime-equiG: calG' (Preprocess(calG)) is symmetric iff calG is symmetric.",
+        ("G1", "G2", "G3"), [
+            "Nat.eqb (length (polygons P)) 3", "polygon G1", "polygon G2", "polygon G3",
+            "Nat.odd (length G1)", "Nat.odd (length G2)", "Nat.even (length G3)",
+            "negb (Nat.eqb (Nat.modulo (length G2) (length G1)) 0) || "
+            "negb (Nat.eqb (Nat.modulo (length G1) (length G2)) 0)",
+            "Nat.ltb 1 (Nat.gcd (length G1) (length G2))", "symmetric_pair G1 G2",
+            "polygon (merged G1 G2)", "type4 (merged G1 G2)"],
+        [("calG_in_O_A (polygons P) = true", _VM),
+         ("calG_symmetric [merged G1 G2; G3] = true", _VM)],
+        reading="calG' = (G_12, G_3): the merge replaces G_1 and G_2 by G_12 (G_12 holds "
+                "G_2's vertices; as printed Preprocess never ends here, see its entry)",
+        note="G_1, G_2 odd meet every hypothesis of the text's merge and G_12 is type 4 "
+             "(Preprocess's test); G_3 is even, so no other pair is merged. calG = calG_P has "
+             "no common line (in O_A, under the mixed reading, so under every reading); "
+             "calG' has one."),
+    "Preprocess": _s(
+        "Algorithm Preprocess(calG): merges odd polygons whose G_ij is type 4, giving calG' "
+        "(symmetric iff calG is).",
+        ("G1", "G2", "G3"), [
+            "Nat.eqb (length (polygons P)) 3", "polygon G1", "polygon G2", "polygon G3",
+            "Nat.odd (length G1)", "Nat.odd (length G2)", "Nat.even (length G3)",
+            "existsb (fun G => Nat.odd (length G)) (polygons P)",
+            "type4 (merged G1 G2)", "Nat.odd (length (merged G1 G2))"],
+        [("forall fuel, preprocess_printed fuel (polygons P) (Outer 1) = false", _PRE),
+         ("calG_in_O_A (polygons P) = true", _VM),
+         ("calG_symmetric [merged G1 G2; G3] = true", _VM)],
+        note="Literal reading (the printed loops, preprocess_printed): it never ends, "
+             "whatever the order of the polygons (i stops at an odd polygon). Evident "
+             "reading (replace G_i and G_j by G_ij, rescan): G_12 is type 4, so G_1, G_2 "
+             "merge; then G_12 is the only odd polygon and calG' = (G_12, G_3), which is "
+             "symmetric while calG is in O_A: no reading rescues it."),
+    "lem-3-pair-sym": _s(
+        "Lemma lem-3-pair-sym: three polygons G_i, G_j, G_k of calG' are pairwise "
+        "symmetric iff they have a common line of symmetry.",
+        ("G1", "G2", "G3"), [
+            "Nat.eqb (length (polygons P)) 3", "polygon G1", "polygon G2", "polygon G3",
+            "Nat.eqb (length (filter (fun G => Nat.odd (length G)) (polygons P))) 1",
+            "symmetric_pair_same_kind G1 G2", "symmetric_pair_same_kind G1 G3",
+            "symmetric_pair_same_kind G2 G3"],
+        [("common_line_same_kind [G1; G2; G3] = false", _VM)],
+        reading="same-kind: a common line is straight for all the polygons or skew for "
+                "all (the mixed reading, its proof's own, holds here: the line at turn 0 "
+                "is straight for G_1 and G_2 and skew for G_3)",
+        note="calG' = calG_P: Preprocess merges only pairs of odd polygons and there is one "
+             "(as printed its loop never ends on an odd polygon, Preprocess's entry; read "
+             "as a merge it merges nothing). 'Only if' fails: the pairs share straight lines "
+             "(G_1, G_2; G_2, G_3) or skew ones (the two rectangles), yet no line is "
+             "common to all three."),
+    "theorem-sym-pair-symG": _s(
+        "Theorem theorem-sym-pair-symG: every pair <G_i, G_j> of calG' is symmetric iff "
+        "all the polygons of calG' have a common line of symmetry.",
+        (), ["Nat.leb 2 (length (polygons P))", "forallb polygon (polygons P)",
+             "Nat.eqb (length (filter (fun G => Nat.odd (length G)) (polygons P))) 1",
+             "forallb (fun Gi => forallb (symmetric_pair_same_kind Gi) (polygons P)) "
+             "(polygons P)"],
+        [("common_line_same_kind (polygons P) = false", _VM)],
+        reading="same-kind: a common line is straight for all the polygons or skew for "
+                "all; t >= 2 (for t = 1 'every pair' is vacuous)",
+        note="calG' = calG_P (one odd polygon: Preprocess merges nothing). Every pair has a "
+             "common line of one kind; no line is common to all the polygons."),
     "Psym-Gsym": _s(
         "Theorem Psym-Gsym: P is in O_S iff calG_P is in O_S (all polygons have a common "
         "line of symmetry, def-sym-calG).",
@@ -155,7 +273,10 @@ CASE_STATEMENTS = {
         [("existsb (fun m => cw_sym P m && negb (is_symmetry (Mirror (2 * turn m)) P)) P "
           "= true", _VM)],
         reading="or: either end suffices (as printed), with m a vertex and L the line "
-                "through m and C (the other readings need an end on an edge: not exported)",
+                "through m and C (the other readings need an end on an edge: not exported). "
+                "With L any line through m the literal 'if' fails trivially (CW_m depends on "
+                "m only: any non-mirror line through a vertex with CW_m = ACW_m); lines "
+                "through C are the ones a line of symmetry can be",
         note="'If' fails: a vertex m has CW_m = ACW_m, yet the line through m and C (the "
              "reflection Mirror (2 turn m)) does not map P onto itself."),
     "Check_Symmetry_Even": _s(
@@ -180,7 +301,9 @@ CASE_STATEMENTS = {
         "polygon G such that G \\ v_l is asymmetric.",
         (), ["polygon P", "asymmetric_polygon P"], [("leader_candidates P = []", _VM)],
         note="Every G \\ v is symmetric: 'while G \\ v_i is symmetric: i++' runs past v_n "
-             "and elects nobody, whatever the ordering."),
+             "and elects nobody, whatever the ordering. n = 3: G \\ v is two points, "
+             "straight symmetric for every triangle, so every asymmetric triangle refutes "
+             "it (the ledger's rotation-only tie failure has no Coq file)."),
     "ElectLeader": _s(
         "Algorithm ElectLeader(calG): given calG with G_t asymmetric, elects a leader v_l of "
         "G_1 such that G_1 \\ v_l is asymmetric.",
@@ -188,10 +311,14 @@ CASE_STATEMENTS = {
                        "forallb (fun r => Qle_bool rG1 r) (radii P)",
                        "forallb (fun r => Qle_bool r rGt) (radii P)",
                        "polygon Gt", "asymmetric_polygon Gt", "polygon G1",
-                       "asymmetric_polygon G1"],
+                       "asymmetric_polygon G1", "Nat.odd (length G1)",
+                       "negb (existsb (cw_sym G1) G1)"],
         [("leader_candidates G1 = []", _VM)],
-        note="G_1 is the inner polygon, G_t the outer one; G_1 is asymmetric, so ElectLeader "
-             "calls Elect_Leader_Asym(G_1), and every G_1 \\ v is symmetric: it elects nobody."),
+        note="G_1 is the inner polygon, G_t the outer one; G_1 is asymmetric and odd, and "
+             "no vertex has CW = ACW, so Check_Symmetry_Odd(G_1)'s loop (as printed, or with "
+             "i++ after every vertex) ends with deg_sym = 0: it reports G_1 asymmetric and "
+             "ElectLeader calls Elect_Leader_Asym(G_1). Every G_1 \\ v is symmetric (n = 3: "
+             "two points): it elects nobody."),
     "Elect_Leader_Sym": _s(
         "Algorithm Elect_Leader_Sym(G): elects a leader of a symmetric convex polygon G "
         "whose degree of symmetry is one, its line through a single vertex or two vertices "
@@ -215,6 +342,10 @@ CASE_STATEMENTS = {
                   "Nat.eqb (length G1) 1", "symmetric_polygon G1"],
         [("forall eps : Q, symmetric_polygon (map (fun v => Pt (r2 v) (turn v - eps)) G1) "
           "= true", "intros eps; vm_compute; reflexivity")],
+        reading="a single robot is a polygon G_1 with degree of symmetry one (its line "
+                "through C and it), as Check_Symmetry_Odd reports with i++ after every "
+                "vertex (CW = ACW = [], deg_sym = 1); as printed its loop never ends on G_1 "
+                "and ElectLeader never reaches Make_SymToAsym",
         note="G_1 is one robot: symmetric, its one line of symmetry through C and its vertex "
              "(the paper's note after def-asymmetric-poly), so ElectLeader calls "
              "Make_SymToAsym on it; moved by any epsilon it is again one point: symmetric."),
@@ -341,6 +472,8 @@ def coq_refutation_of_points(label: str, points, source: str | None = None,
     ends = {"G1": radii[0], "Gt": radii[-1]} if radii else {}
     if len(radii) > 1:
         ends["G2"] = radii[1]
+    if len(radii) > 2:
+        ends["G3"] = radii[2]
     levels = {name: ends[name] for name in spec["names"] if name in ends}
     return _file(label, spec, points, levels, source, statement)
 

@@ -128,7 +128,7 @@ def render(ledger: Ledger, support: dict[str, Support], sweeps: dict | None = No
     coq = [s.label for s in refuted if any(e.kind == "coq" for e in s.evidence)]
     lines += [f"Refutations checked by Coq ({len(coq)} of {len(refuted)} refuted or refuted "
               "under a reading; each a file `proofs/coq/refutations/*.v` that `coqc` accepts "
-              "on its own, trusting Coq's kernel and the library `proofs/coq/Exactsym.v` "
+              "on its own, trusting Coq's kernel (and its vm_compute) and the library `proofs/coq/Exactsym.v` "
               "and none of exactsym's code; `docs/certificates.md`, \"Coq\"): "
               + (", ".join(f"`{x}`" for x in coq) or "none") + ".", ""]
     starts = {label: title for title, label in HEADINGS}

@@ -213,12 +213,26 @@ def coq_export(s, root: Path, current: str | None = None) -> str:
     source = source_of(current or "")
     if not source or not (root / source).is_file():
         raise CoqExportError(f"the file names no source case that exists ({source})")
+    if source.endswith(".py"):
+        return coq_refutation_of_points(s.label, _script_points(root / source), source,
+                                        s.claim)
     from ..geometry.configuration import from_file
     from ..io.fileformat import read_config
     config = from_file(read_config(str(root / source)))
     if config.polar is None:
         raise CoqExportError(f"{source}: not a rational polar configuration")
     return coq_refutation_of_points(s.label, config.polar, source, s.claim)
+
+
+def _script_points(path: Path) -> list:
+    """The witness ``POINTS`` of a proof script the ledger cites (``(r, turn)`` about C,
+    r the distance, rational): as ``(r^2, turn)``, the squared distance Coq's points hold."""
+    import importlib.util
+    from fractions import Fraction
+    spec = importlib.util.spec_from_file_location(f"_witness_{path.stem}", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return [(Fraction(r) ** 2, Fraction(t)) for r, t in module.POINTS]
 
 
 def _coq_problems(s, path: Path, root: Path, state: dict, progress) -> list[str]:

@@ -6,7 +6,8 @@ rational polar configuration of ``cases/`` (up to 12 points), whether C is the S
 the number of rotations and of mirrors among its candidate symmetries, and O_A; each must
 agree with :func:`exactsym.symmetry_group` and exactsym's certificate (exact, and
 independent of the library; the group only where the origin is the SEC centre), and stay
-the same after a rotation, a mirror image and a scale of the configuration.
+the same after a rotation, a mirror image and a scale of the configuration.  A second run
+evaluates the types 0-4 and CW_v = ACW_v on every level against exactsym.paper.
 """
 
 from __future__ import annotations
@@ -92,3 +93,57 @@ def test_the_library_decides_groups_as_the_ground_truth(tmp_path):
             continue                    # the library's candidates are about the origin
         assert (int(rot), int(mir)) == (rotations, mirrors), where
         assert (oa == "true") == in_o_a, where
+
+
+def _levels(cases) -> list:
+    """Every level of 3 to 12 points of the polar cases: its turns in [0, 1), sorted
+    (counter-clockwise), once per distinct polygon."""
+    seen, out = set(), []
+    for _, points, _, _ in cases:
+        for r in sorted({r for r, _ in points if r > 0}):
+            turns = tuple(sorted({t % 1 for q, t in points if q == r}))
+            if 3 <= len(turns) <= 12 and turns not in seen:
+                seen.add(turns)
+                out.append(turns)
+    return out
+
+
+@pytest.mark.skipif(COQC is None, reason="coqc is not installed (apt-get install coq): the "
+                    "Coq library is not evaluated")
+def test_the_library_decides_types_and_strings_as_exactsym(tmp_path):
+    """The polygon predicates the algorithm refutations rest on (the types 0-4 before
+    obs-exh-poly, CW_v = ACW_v, regular) against exactsym.paper's own (review of the Coq
+    library, finding 10): on every level of the polar cases, one coqc run."""
+    from flint import fmpq
+
+    from exactsym.paper.circle_polygon import CirclePolygon
+    from exactsym.paper.polygon.types import polygon_type, vertex_palindromes
+    levels = _levels(_polar_cases())
+    assert len(levels) >= 30
+    lines = [library_text(), ""]
+    expected = []
+    for k, turns in enumerate(levels):
+        lines.append(f"Definition G{k} : list pt := ["
+                     + "; ".join(f"Pt 1 {_q(t)}" for t in turns) + "].")
+        lines.append(f"Eval vm_compute in (type0 G{k}, type1 G{k}, type2 G{k}, type3 G{k}, "
+                     f"type4 G{k}, length (filter (cw_sym G{k}) G{k})).")
+        poly = CirclePolygon(tuple(range(len(turns))),
+                             tuple(fmpq(t.numerator, t.denominator) for t in turns), True)
+        verdict = polygon_type(poly)
+        name = str(verdict) if verdict is not None else None
+        expected.append((turns, name, len(vertex_palindromes(poly))))
+    (tmp_path / "Types.v").write_text("\n".join(lines) + "\n")
+    run = subprocess.run([COQC, "-q", "Types.v"], cwd=tmp_path, capture_output=True,
+                         text=True, timeout=900)
+    assert run.returncode == 0, run.stderr[-2000:]
+    got = re.findall(r"= \((true|false), (true|false), (true|false), (true|false), "
+                     r"(true|false), (\d+)%nat\)", run.stdout)
+    assert len(got) == len(expected)
+    kinds = set()
+    for g, (turns, name, palindromes) in zip(got, expected):
+        coq_types = [f"type-{i}" for i in range(5) if g[i] == "true"]
+        want = [] if name in (None, "unclassified") else [name]
+        assert coq_types == want, (turns, coq_types, name)
+        assert int(g[5]) == palindromes, (turns, g[5], palindromes)
+        kinds.add(name)
+    assert {"type-0", "type-2", "type-3", "type-4", "unclassified", None} <= kinds, kinds

@@ -30,10 +30,13 @@
    Negative facts ("no line of symmetry", "asymmetric") rest on (T1)-(T3); positive
    facts (a symmetry exists) and "not orderable" do not: the latter is a Coq theorem
    ([not_orderable_by_candidates]) from the definition of def-orderable-set below, which
-   is shown satisfiable ([one_point_orderable]).  It reads "g moves p" as "the canonical
-   form of g(p) is another term than p" for P written canonically ([canonical P]): that
-   two canonical terms are two points is trusted (lowest terms and the representative of
-   a turn in [0, 1) are unique); the converse is proved ([canon_peq]). *)
+   is shown satisfiable ([one_point_orderable]; [three_points_orderable]: three points at
+   distinct distances from C, ordered nearest first; that every set whose only symmetry
+   about C is the identity on it is orderable is argued at the definition, not proved).  The
+   definition lists P's points as points ([mem]), so it does not depend on how P's terms
+   are written; the theorem needs P written canonically ([canonical P], checked), and
+   then a symmetry whose canonical image of p is another term maps p to another point
+   ([canon_peq]). *)
 
 From Coq Require Import QArith ZArith List Bool Lia.
 Import ListNotations.
@@ -97,8 +100,9 @@ Definition rim (P : list pt) : list pt := filter (fun p => Qeq_bool (r2 p) (rmax
 (* (T1): every point is within sqrt(rmax) of C by the definition of rmax, and the points
    at that distance leave no angular gap above half a turn: each has another one at most
    half a turn counter-clockwise.  Then no open half-plane bounded by a line through C
-   holds them all, and any circle about another centre C' misses the one farthest from C'
-   among them (it is at least as far from C' as from C), so the SEC is the circle about C. *)
+   holds them all: for any other centre C' one of them, s, has (s - C).(C' - C) <= 0, so
+   |s - C'|^2 = R^2 + |C' - C|^2 - 2 (s - C).(C' - C) > R^2 and no circle about C' of
+   radius at most R holds P: the SEC is the circle of radius R about C. *)
 Definition next_within_half (p q : pt) : bool :=
   let g := frac (turn q - turn p) in Qlt_bool 0 g && Qle_bool g (1 # 2).
 Definition sec_centred (P : list pt) : bool :=
@@ -165,7 +169,8 @@ Definition image (g : iso) (p : pt) : pt := canon (act g p).
 (* def-orderable-set: "a deterministic algorithm which produces a unique ordering of the
    points of P, such that the ordering is same irrespective of the choice of origin and
    coordinate system".  An algorithm [order] reads a set (lists of one set give one
-   answer), lists every point of P, and commutes with every change of coordinates among
+   answer), lists every point of P (as a point: [mem], so how P's terms are written does
+   not matter), and commutes with every change of coordinates among
    the isometries about C (requiring fewer coordinate changes makes "orderable" easier to
    meet, so "not orderable" below is the stronger claim).  Not vacuous: when no isometry
    about C other than the identity on P maps P onto itself, [order] may send the image of
@@ -175,7 +180,7 @@ Definition orderable (P : list pt) : Prop :=
   exists order : list pt -> list pt,
     (forall A B, same_set A B = true -> order A = order B) /\
     (forall g, order (map (image g) P) = map (image g) (order P)) /\
-    (forall p, In p P -> In p (order P)).
+    (forall p, In p P -> mem p (order P) = true).
 
 (* ------------------------------------------------------------------ polygons of G_P *)
 
@@ -227,6 +232,19 @@ Definition calG_symmetric (Gs : list (list pt)) : bool :=
   forallb (is_symmetry half_turn) Gs ||
   existsb (fun s => forallb (fun G => line_of_symmetry G s) Gs) (flat_map mirrors Gs).
 Definition calG_in_O_A (Gs : list (list pt)) : bool := negb (calG_symmetric Gs).
+
+(* The same-kind reading of "common line" (def-sym-pair, def-sym-calG): a line through C
+   is common to the polygons Gs when it is a line of straight symmetry of every one (a
+   mirror of each), or a line of skew symmetry of every one (the half-turn maps each onto
+   itself; then every line through C is one).  A common straight line is a mirror of the
+   first polygon, so the mirrors are the candidates.  For polygons of at least three
+   vertices on a circle no line holds every vertex, so the readings that differ on such
+   lines (or on single robots) agree with this one. *)
+Definition common_line_same_kind (Gs : list (list pt)) : bool :=
+  forallb (is_symmetry half_turn) Gs ||
+  existsb (fun s => forallb (fun G => is_symmetry (Mirror s) G) Gs) (flat_map mirrors Gs).
+Definition symmetric_pair_same_kind (Gi Gj : list pt) : bool :=
+  common_line_same_kind [Gi; Gj].
 
 (* Before obs-merg-asym-pair: "the vertices of G_i are projected radially on the
    circumference of the enclosing circle of G_j (i < j).  Construct a polygon G_ij with
@@ -414,6 +432,106 @@ Proof.
   unfold vertex. replace (1 + k - 1)%nat with k by lia. rewrite Hnth. exact Hv.
 Qed.
 
+(* ------------------------------------------------------------------ Preprocess *)
+
+(* Preprocess AS PRINTED (algorithm Preprocess(calG), G_1, ..., G_t the polygons):
+     i = 1; while i <= t: if G_i is odd { j = 1; while j <= t: if j <> i & G_j is odd
+       { compute G_ij; if G_ij is type 4: replace G_i by G_ij, else j++ } else j++ }
+     else i++.
+   Only these counters decide whether it ends.  [poly Gs k] is G_k (k from 1), and
+   [pre_step] one pass of either loop (None: it has ended). *)
+Inductive pstate := Outer (i : nat) | Inner (i j : nat).
+Definition poly (Gs : list (list pt)) (k : nat) : list pt := nth (k - 1) Gs [].
+Fixpoint set_nth (Gs : list (list pt)) (k : nat) (G : list pt) : list (list pt) :=
+  match Gs, k with
+  | [], _ => []
+  | _ :: rest, O => G :: rest
+  | H :: rest, S k' => H :: set_nth rest k' G
+  end.
+Definition pre_step (Gs : list (list pt)) (st : pstate) : option (list (list pt) * pstate) :=
+  match st with
+  | Outer i => if Nat.ltb (length Gs) i then None
+               else if Nat.odd (length (poly Gs i)) then Some (Gs, Inner i 1)
+               else Some (Gs, Outer (S i))
+  | Inner i j => if Nat.ltb (length Gs) j then Some (Gs, Outer i)
+                 else if negb (Nat.eqb j i) && Nat.odd (length (poly Gs j)) then
+                   let Gij := merged (poly Gs i) (poly Gs j) in
+                   if type4 Gij then Some (set_nth Gs (i - 1) Gij, Inner i j)
+                   else Some (Gs, Inner i (S j))
+                 else Some (Gs, Inner i (S j))
+  end.
+(* [preprocess_printed fuel Gs st] is true iff the printed loops end within [fuel] passes. *)
+Fixpoint preprocess_printed (fuel : nat) (Gs : list (list pt)) (st : pstate) : bool :=
+  match fuel with
+  | O => false
+  | S f => match pre_step Gs st with
+           | None => true
+           | Some (Gs', st') => preprocess_printed f Gs' st'
+           end
+  end.
+
+Lemma set_nth_length : forall Gs k G, length (set_nth Gs k G) = length Gs.
+Proof. induction Gs as [|H rest IH]; intros [|k] G; simpl; auto. Qed.
+
+Lemma set_nth_nth : forall Gs k G, (k < length Gs)%nat -> nth k (set_nth Gs k G) [] = G.
+Proof.
+  induction Gs as [|H rest IH]; intros [|k] G Hk; simpl in *; try lia; auto.
+  apply IH. lia.
+Qed.
+
+Definition pindex (st : pstate) : nat := match st with Outer i => i | Inner i _ => i end.
+(* The invariant: i is a polygon's index and G_i is odd. *)
+Definition pinv (Gs : list (list pt)) (st : pstate) : Prop :=
+  (1 <= pindex st <= length Gs)%nat /\ Nat.odd (length (poly Gs (pindex st))) = true.
+
+Lemma type4_odd : forall G, type4 G = true -> Nat.odd (length G) = true.
+Proof. intros G H. unfold type4 in H. now repeat rewrite andb_true_iff in H. Qed.
+
+(* With G_i odd nothing increments i: G_i is replaced only by a type 4 polygon, odd. *)
+Lemma pre_step_keeps : forall Gs st, pinv Gs st ->
+  exists Gs' st', pre_step Gs st = Some (Gs', st') /\ pinv Gs' st'.
+Proof.
+  intros Gs [i|i j] [Hi Ho]; simpl in Hi, Ho; simpl.
+  - rewrite (proj2 (Nat.ltb_ge (length Gs) i) ltac:(lia)), Ho. eexists; eexists; split; [reflexivity|].
+    split; simpl; assumption.
+  - destruct (Nat.ltb (length Gs) j).
+    + eexists; eexists; split; [reflexivity|]. split; simpl; assumption.
+    + destruct (negb (Nat.eqb j i) && Nat.odd (length (poly Gs j))).
+      * destruct (type4 (merged (poly Gs i) (poly Gs j))) eqn:T.
+        -- eexists; eexists; split; [reflexivity|]. split; simpl.
+           ++ rewrite set_nth_length. exact Hi.
+           ++ unfold poly at 1. rewrite set_nth_nth by lia. apply type4_odd. exact T.
+        -- eexists; eexists; split; [reflexivity|]. split; simpl; assumption.
+      * eexists; eexists; split; [reflexivity|]. split; simpl; assumption.
+Qed.
+
+Lemma preprocess_stuck : forall fuel Gs st, pinv Gs st -> preprocess_printed fuel Gs st = false.
+Proof.
+  induction fuel as [|f IH]; intros Gs st H; simpl; [reflexivity|].
+  destruct (pre_step_keeps Gs st H) as [Gs' [st' [E H']]]. rewrite E. apply IH. exact H'.
+Qed.
+
+(* So, as printed, Preprocess never ends once calG holds an odd polygon, whatever the
+   order of the polygons: i reaches the first odd one and stays there. *)
+Theorem preprocess_printed_never_ends : forall Gs,
+  existsb (fun G => Nat.odd (length G)) Gs = true ->
+  forall fuel, preprocess_printed fuel Gs (Outer 1) = false.
+Proof.
+  intros Gs H. apply existsb_exists in H. destruct H as [G [Hin Hodd]].
+  destruct (In_nth Gs G [] Hin) as [m [Hm Hnth]].
+  assert (Reach : forall k i, (i + k = S m)%nat -> (1 <= i)%nat ->
+            forall fuel, preprocess_printed fuel Gs (Outer i) = false).
+  { induction k as [|k IHk]; intros i Hik H1 fuel.
+    - apply preprocess_stuck. split; simpl; [lia|]. unfold poly.
+      replace (i - 1)%nat with m by lia. rewrite Hnth. exact Hodd.
+    - destruct fuel as [|f]; simpl; [reflexivity|].
+      rewrite (proj2 (Nat.ltb_ge (length Gs) i) ltac:(lia)).
+      destruct (Nat.odd (length (poly Gs i))) eqn:O.
+      + apply preprocess_stuck. split; simpl; [lia | exact O].
+      + apply IHk; lia. }
+  intros fuel. apply (Reach m 1%nat); lia.
+Qed.
+
 (* ------------------------------------------------------------------ not orderable: a theorem *)
 
 Lemma pt_eqb_refl : forall p, pt_eqb p p = true.
@@ -425,33 +543,6 @@ Lemma map_fixed : forall (f : pt -> pt) l, map f l = l -> forall x, In x l -> f 
 Proof.
   intros f l. induction l as [|a l IH]; simpl; intros E x H; [contradiction|].
   injection E as Ea El. destruct H as [<-|H]; [exact Ea | exact (IH El x H)].
-Qed.
-
-(* lemma-sym-ord's argument, proved: a symmetry g of P that moves a point of P leaves no
-   ordering invariant, since describing P in the coordinates moved by g gives P again. *)
-Theorem not_orderable : forall P g p,
-  same_set (map (image g) P) P = true -> In p P -> pt_eqb (image g p) p = false ->
-  ~ orderable P.
-Proof.
-  intros P g p Hset Hp Hmove [order [Hsame [Hcov Hall]]].
-  pose proof (Hsame _ _ Hset) as E. rewrite Hcov in E.
-  pose proof (map_fixed _ _ E p (Hall p Hp)) as Fix.
-  rewrite Fix, pt_eqb_refl in Hmove. discriminate.
-Qed.
-
-(* The same from a search over the candidates: no trust in (T2) is needed here, only that
-   the candidate found maps P onto itself (checked) and moves a point of P (checked; P
-   canonical, checked in every exported theorem, makes "moves" mean a different point). *)
-Definition not_orderable_dec (P : list pt) : bool :=
-  existsb (fun g => same_set (map (image g) P) P &&
-                    existsb (fun p => negb (pt_eqb (image g p) p)) P) (candidates P).
-
-Theorem not_orderable_by_candidates : forall P, not_orderable_dec P = true -> ~ orderable P.
-Proof.
-  intros P H. unfold not_orderable_dec in H. apply existsb_exists in H.
-  destruct H as [g [_ H]]. apply andb_true_iff in H. destruct H as [Hset Hmoves].
-  apply existsb_exists in Hmoves. destruct Hmoves as [p [Hp Hm]].
-  apply (not_orderable P g p Hset Hp). destruct (pt_eqb (image g p) p); [discriminate | reflexivity].
 Qed.
 
 (* ------------------------------------------------------------------ orderable is not vacuous *)
@@ -584,7 +675,131 @@ Proof.
   exists order_one. split; [exact order_one_set|]. split.
   - intros g. unfold order_one at 1. simpl. rewrite pt_eqb_refl. simpl.
     unfold image. rewrite canon_canon. reflexivity.
-  - intros p [<-|[]]. simpl. left. reflexivity.
+  - intros p [<-|[]]. vm_compute. reflexivity.
+Qed.
+
+(* ------------------------------------------------------------------ not orderable: the theorem *)
+
+Lemma integral_opp : forall q, integral (- q) = integral q.
+Proof.
+  intros [n d]. unfold integral; simpl.
+  destruct (Z.eqb_spec ((- n) mod Z.pos d) 0) as [E|E];
+  destruct (Z.eqb_spec (n mod Z.pos d) 0) as [E'|E']; try reflexivity; exfalso.
+  - apply E'. apply Z.mod_divide; [lia|]. apply Z.mod_divide in E; [|lia].
+    apply Z.divide_opp_r in E. now rewrite Z.opp_involutive in E.
+  - apply E. apply Z.mod_divide; [lia|]. apply Z.mod_divide in E'; [|lia].
+    now apply Z.divide_opp_r.
+Qed.
+
+(* An isometry about C maps one point to one point. *)
+Lemma act_peq : forall g x y, peq x y = true -> peq (act g x) (act g y) = true.
+Proof.
+  intros [a|s'] [rx tx] [ry ty] H; unfold peq in *; simpl in *;
+  apply andb_true_iff in H; destruct H as [Hr Ht]; rewrite Hr; simpl;
+  destruct (Qeq_bool rx 0); simpl in *; auto; unfold teq in *.
+  - rewrite (integral_Qeq _ (tx - ty)); [exact Ht | ring].
+  - rewrite (integral_Qeq _ (- (tx - ty))); [rewrite integral_opp; exact Ht | ring].
+Qed.
+
+Lemma canonical_in : forall P p, canonical P = true -> In p P -> canon p = p.
+Proof.
+  intros P p H Hp. unfold canonical in H. rewrite forallb_forall in H.
+  exact (pt_eqb_eq _ _ (H p Hp)).
+Qed.
+
+(* lemma-sym-ord's argument, proved: a symmetry g of P that moves a point of P leaves no
+   ordering invariant, since describing P in the coordinates moved by g gives P again.
+   P is written canonically, so "moves" (the canonical image is another term) means
+   "maps to another point" ([canon_peq]). *)
+Theorem not_orderable : forall P g p, canonical P = true ->
+  same_set (map (image g) P) P = true -> In p P -> pt_eqb (image g p) p = false ->
+  ~ orderable P.
+Proof.
+  intros P g p Hcan Hset Hp Hmove [order [Hsame [Hcov Hall]]].
+  pose proof (Hsame _ _ Hset) as E. rewrite Hcov in E.
+  pose proof (map_fixed _ _ E) as Fix.
+  pose proof (Hall p Hp) as Hm. apply existsb_exists in Hm. destruct Hm as [z [Hz Hpz]].
+  assert (Hi : image g p = z).
+  { unfold image. rewrite (canon_peq _ _ (act_peq g p z Hpz)). exact (Fix z Hz). }
+  assert (Hzc : canon z = z) by (rewrite <- (Fix z Hz); unfold image; apply canon_canon).
+  assert (Hpzc : p = z).
+  { rewrite <- (canonical_in P p Hcan Hp), <- Hzc. apply canon_peq. exact Hpz. }
+  rewrite Hi, <- Hpzc, pt_eqb_refl in Hmove. discriminate.
+Qed.
+
+(* The same from a search over the candidates: no trust in (T2) is needed here, only that
+   the candidate found maps P onto itself (checked) and moves a point of P (checked). *)
+Definition not_orderable_dec (P : list pt) : bool :=
+  existsb (fun g => same_set (map (image g) P) P &&
+                    existsb (fun p => negb (pt_eqb (image g p) p)) P) (candidates P).
+
+Theorem not_orderable_by_candidates : forall P, canonical P = true ->
+  not_orderable_dec P = true -> ~ orderable P.
+Proof.
+  intros P Hcan H. unfold not_orderable_dec in H. apply existsb_exists in H.
+  destruct H as [g [_ H]]. apply andb_true_iff in H. destruct H as [Hset Hmoves].
+  apply existsb_exists in Hmoves. destruct Hmoves as [p [Hp Hm]].
+  apply (not_orderable P g p Hcan Hset Hp).
+  destruct (pt_eqb (image g p) p); [discriminate | reflexivity].
+Qed.
+
+(* Not vacuous beyond one point either: a set whose points lie at distinct distances from C
+   is orderable (nearest first), e.g. three points of an asymmetric set. *)
+Definition at_r (r : Q) (A : list pt) : list pt := filter (fun x => Qeq_bool (r2 x) r) A.
+Definition order_by_radii (rs : list Q) (A : list pt) : list pt :=
+  flat_map (fun r => order_one (at_r r A)) rs.
+
+Lemma peq_r2 : forall x y r, peq x y = true -> Qeq_bool (r2 x) r = Qeq_bool (r2 y) r.
+Proof.
+  intros x y r H. unfold peq in H. apply andb_true_iff in H. destruct H as [H _].
+  apply Qeq_bool_iff in H.
+  destruct (Qeq_bool (r2 y) r) eqn:E.
+  - apply Qeq_bool_iff in E. apply Qeq_bool_iff. rewrite H. exact E.
+  - destruct (Qeq_bool (r2 x) r) eqn:F; [|reflexivity].
+    apply Qeq_bool_iff in F. apply Qeq_bool_neq in E. exfalso. apply E. rewrite <- H. exact F.
+Qed.
+
+Lemma mem_at_r : forall r p A, mem p A = true -> Qeq_bool (r2 p) r = true ->
+  mem p (at_r r A) = true.
+Proof.
+  intros r p A H Hr. apply existsb_exists in H. destruct H as [z [Hz Hp]].
+  apply existsb_exists. exists z. split; [|exact Hp].
+  apply filter_In. split; [exact Hz|]. rewrite <- (peq_r2 p z r Hp). exact Hr.
+Qed.
+
+Lemma same_set_at_r : forall r A B, same_set A B = true -> same_set (at_r r A) (at_r r B) = true.
+Proof.
+  intros r A B H. unfold same_set in *. apply andb_true_iff in H. destruct H as [HA HB].
+  rewrite forallb_forall in HA, HB. apply andb_true_iff. split; apply forallb_forall;
+  intros x Hx; apply filter_In in Hx; destruct Hx as [Hx Hr]; apply mem_at_r; auto.
+Qed.
+
+Lemma order_by_radii_set : forall rs A B, same_set A B = true ->
+  order_by_radii rs A = order_by_radii rs B.
+Proof.
+  intros rs A B H. unfold order_by_radii. induction rs as [|r rs IH]; simpl; [reflexivity|].
+  rewrite IH, (order_one_set _ _ (same_set_at_r r A B H)). reflexivity.
+Qed.
+
+Lemma order_one_image : forall g p, order_one [image g p] = [image g p].
+Proof. intros g p. unfold order_one. simpl. rewrite pt_eqb_refl. simpl.
+  unfold image. rewrite canon_canon. reflexivity. Qed.
+
+Theorem three_points_orderable : orderable [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)].
+Proof.
+  exists (order_by_radii [1; 4; 9]). split; [exact (order_by_radii_set _)|]. split.
+  - intros g.
+    replace (order_by_radii [1; 4; 9] [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)])
+      with [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)] by (vm_compute; reflexivity).
+    assert (R1 : r2 (image g (Pt 1 0)) = 1) by (destruct g; reflexivity).
+    assert (R2 : r2 (image g (Pt 4 (1 # 3))) = 4) by (destruct g; reflexivity).
+    assert (R3 : r2 (image g (Pt 9 (1 # 5))) = 9) by (destruct g; reflexivity).
+    unfold order_by_radii, at_r. cbn [map flat_map filter].
+    rewrite R1, R2, R3.
+    repeat match goal with |- context [Qeq_bool ?x ?y] =>
+      let b := eval vm_compute in (Qeq_bool x y) in change (Qeq_bool x y) with b end.
+    cbv beta iota. rewrite !order_one_image. reflexivity.
+  - intros p Hp. destruct Hp as [<-|[<-|[<-|[]]]]; vm_compute; reflexivity.
 Qed.
 
 (* ================================================= the configuration *)
