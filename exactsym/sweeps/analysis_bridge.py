@@ -278,8 +278,8 @@ def _start(points, config):
     """The start as the simulator reads it: fmpq pairs when every coordinate is rational
     Cartesian, else the numbers of the motion's one system
     (:func:`exactsym.gathering.start_numbers.start_points`, the reader of ``gather``)."""
-    from ..exact import fmpq
-    if config.polar is None and all(isinstance(c, fmpq) for p in config.points for c in p):
+    from ..exact.number import all_plain_rational
+    if config.polar is None and all(all_plain_rational(p) for p in config.points):
         return [tuple(p) for p in config.points]
     from ..errors import InputError
     from ..gathering.start_numbers import start_points
@@ -294,10 +294,8 @@ def _start(points, config):
 
 def _sign(x) -> int:
     """The exact sign of a rational (fmpq) or of a number of the motion (``sign``)."""
-    from ..exact import fmpq
-    if isinstance(x, fmpq):
-        return (x > 0) - (x < 0)
-    return x.sign()
+    from ..exact.number import sign
+    return sign(x)
 
 
 def _separated(points):
