@@ -6,7 +6,8 @@
 \\label) inlined, the configuration as exact rationals, and one theorem stating in the
 paper's terms that the configuration meets the statement's hypotheses and that its
 conclusion is false, proved by ``vm_compute`` (and by the library's theorems
-``not_orderable_by_candidates`` and ``printed_loop_never_ends``).  ``coqc FILE.v``
+``not_orderable_by_candidates``, ``orderable_of_only_identity`` and
+``printed_loop_never_ends``).  ``coqc FILE.v``
 accepting it is the check; nothing of exactsym is trusted by it.
 ``coq_refutation_of_points(label, points, source)`` does the same for the statements
 about CW/ACW strings and the paper's algorithms (:data:`CASE_STATEMENTS`), which the
@@ -35,6 +36,7 @@ _VM = "vm_compute; reflexivity"
 _ORDER = "apply not_orderable_by_candidates; vm_compute; reflexivity"
 _LOOP = "intros fuel; apply printed_loop_never_ends; vm_compute; reflexivity"
 _PRE = "intros fuel; apply preprocess_printed_never_ends; vm_compute; reflexivity"
+_ORDERABLE = "apply orderable_of_only_identity; vm_compute; reflexivity"
 
 
 class CoqExportError(ValueError):
@@ -333,6 +335,19 @@ CASE_STATEMENTS = {
         note="One line of symmetry (one mirror, no half-turn: no skew line), through two "
              "vertices; Check_Symmetry_Even reports degree 2, so the algorithm reports "
              "'Leader Election is not possible for G'."),
+    "lem-sym-notord": _s(
+        "Lemma lem-sym-notord: if <G_i, G_j> is a symmetric pair, then it is not orderable.",
+        ("G1", "G2"), ["Nat.eqb (length (polygons P)) 2", "polygon G1", "polygon G2",
+                       "symmetric_pair G1 G2"],
+        [("orderable (G1 ++ G2)", _ORDERABLE)],
+        reading="mixed: a common line may be straight for one polygon and skew for the "
+                "other; the pair's orderability is that of its union about C (the other "
+                "readings' witnesses have single robots or collinear ones: not exported)",
+        note="The line at s/2 turns for a mirror Mirror s of G_1 is a line of skew "
+             "symmetry of G_2 (the half-turn maps G_2 onto itself): a common line, so the "
+             "pair is symmetric. Yet no candidate isometry about C other than the identity "
+             "maps G_1 ++ G_2 onto itself (only_identity, computed), so it is orderable: "
+             "orderable_of_only_identity, a theorem of the library, with (T2) proved."),
     "Make_SymToAsym": _s(
         "Algorithm Make_SymToAsym(G): for a convex polygon G with degree of symmetry one, "
         "its line of symmetry through a single vertex or two vertices, moving the leader "

@@ -272,3 +272,40 @@ def test_certify_needs_an_output():
                           str(ROOT / "cases/discrepancies/d3-hexagon.toml")],
                          capture_output=True, text=True, timeout=300)
     assert run.returncode == 2 and "-o CERT.json" in run.stderr
+
+
+#: A mirror inside a half-turn: three robots symmetric only in the line at 1/4 turn
+#: (Mirror 1/2), six only under the half-turn; (r^2, turn).
+_PAIR_POINTS = [(1, "1/4"), (1, "1/20"), (1, "9/20"), (4, "0"), (4, "1/10"), (4, "1/4"),
+                (4, "1/2"), (4, "3/5"), (4, "3/4")]
+
+
+def test_an_orderable_pair_is_proved_by_the_library_theorem():
+    """The proof kind 'P is orderable': orderable_of_only_identity, never by computation
+    of an ordering in the file."""
+    text = coq_refutation_of_points("lem-sym-notord", _PAIR_POINTS)
+    assert text.rstrip().endswith("Print Assumptions refutes_lem_sym_notord.")
+    assert "orderable (G1 ++ G2).\nProof." in text
+    assert "apply orderable_of_only_identity; vm_compute; reflexivity.\nQed." in text
+    assert "Theorem orderable_of_only_identity : forall P, only_identity P = true ->" \
+        " orderable P." in library_text()
+
+
+@needs_coqc
+def test_orderable_is_accepted_and_a_symmetric_union_rejected():
+    """The pair turned by 2/7, mirrored and scaled is still orderable (accepted); with
+    one robot of the outer ring moved from 3/5 to 2/5 of a turn the pair is still
+    symmetric (the line at 1/4 turn is now a mirror of both), but the mirror maps the
+    union onto itself and moves robots: orderable_of_only_identity does not apply and
+    coqc rejects the file; the negation, "not orderable", is proved instead
+    (not_orderable_by_candidates)."""
+    moved = [(9 * r, Fraction(2, 7) - Fraction(t)) for r, t in _PAIR_POINTS]
+    assert _accepted(coq_refutation_of_points("lem-sym-notord", moved))
+    symmetric = [(r, "2/5" if (r, t) == (4, "3/5") else t) for r, t in _PAIR_POINTS]
+    text = coq_refutation_of_points("lem-sym-notord", symmetric)
+    assert "symmetric_pair G1 G2 = true" in text
+    assert not _accepted(text)
+    negated = text.replace("  orderable (G1 ++ G2).\nProof.", "  ~ orderable (G1 ++ G2).\nProof.")
+    negated = negated.replace("apply orderable_of_only_identity; vm_compute; reflexivity.\nQed.",
+                              "apply not_orderable_by_candidates; vm_compute; reflexivity.\nQed.")
+    assert negated != text and _accepted(negated)       # provably not orderable
