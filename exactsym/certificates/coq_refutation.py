@@ -213,6 +213,30 @@ CASE_STATEMENTS = {
              "(Preprocess's test); G_3 is even, so no other pair is merged. calG = calG_P has "
              "no common line (in O_A, under the mixed reading, so under every reading); "
              "calG' has one."),
+    "GatheringPattern": _s(
+        "Algorithm GatheringPattern(R): gathers n >= 5 fat robots from every asymmetric "
+        "configuration: 'G' = Preprocess(G); if G' is in O_S, report that gathering is "
+        "not possible; else MakeAsym, ElectLeader, FormGPattern'.",
+        ("G1", "G2", "G3"), [
+            "Nat.leb 5 (length P)", "in_O_A P",
+            "Nat.eqb (length (polygons P)) 3", "polygon G1", "polygon G2", "polygon G3",
+            "Nat.odd (length G1)", "Nat.odd (length G2)", "Nat.even (length G3)",
+            "negb (Nat.eqb (Nat.modulo (length G2) (length G1)) 0) || "
+            "negb (Nat.eqb (Nat.modulo (length G1) (length G2)) 0)",
+            "Nat.ltb 1 (Nat.gcd (length G1) (length G2))", "symmetric_pair G1 G2",
+            "polygon (merged G1 G2)", "type4 (merged G1 G2)"],
+        [("orderable P", _ORDERABLE),
+         ("calG_symmetric [merged G1 G2; G3] = true", _VM)],
+        reading="G' = (G_12, G_3): Preprocess's merge replaces G_1 and G_2 by G_12 (as "
+                "printed Preprocess never ends here, see its entry: then GatheringPattern "
+                "never gets past its third line)",
+        note="P is asymmetric (in O_A) and orderable (every candidate symmetry fixes it "
+             "pointwise: group C1), n = 28. G_1, G_2 odd meet every hypothesis of the "
+             "text's merge and G_12 is type 4 (Preprocess's test); G_3 is even, so no "
+             "other pair is merged. G' = (G_12, G_3) has a common line, so the first "
+             "branch runs: 'Report that gathering is not possible' for an asymmetric "
+             "configuration. G_12 (21 vertices) and G_3 have no half-turn, so the common "
+             "line is a mirror of both: in O_S under every reading of 'common line'."),
     "Preprocess": _s(
         "Algorithm Preprocess(calG): merges odd polygons whose G_ij is type 4, giving calG' "
         "(symmetric iff calG is).",
