@@ -6,8 +6,8 @@
 \\label) inlined, the configuration as exact rationals, and one theorem stating in the
 paper's terms that the configuration meets the statement's hypotheses and that its
 conclusion is false, proved by ``vm_compute`` (and by the library's theorems
-``not_orderable_by_candidates``, ``orderable_of_only_identity`` and
-``printed_loop_never_ends``).  ``coqc FILE.v``
+``not_orderable_by_candidates``, ``orderable_of_only_identity``,
+``not_electable_by_candidates`` and ``printed_loop_never_ends``).  ``coqc FILE.v``
 accepting it is the check; nothing of exactsym is trusted by it.
 ``coq_refutation_of_points(label, points, source)`` does the same for the statements
 about CW/ACW strings and the paper's algorithms (:data:`CASE_STATEMENTS`), which the
@@ -37,6 +37,7 @@ _ORDER = "apply not_orderable_by_candidates; vm_compute; reflexivity"
 _LOOP = "intros fuel; apply printed_loop_never_ends; vm_compute; reflexivity"
 _PRE = "intros fuel; apply preprocess_printed_never_ends; vm_compute; reflexivity"
 _ORDERABLE = "apply orderable_of_only_identity; vm_compute; reflexivity"
+_ELECT = "apply not_electable_by_candidates; vm_compute; reflexivity"
 
 
 class CoqExportError(ValueError):
@@ -237,6 +238,32 @@ CASE_STATEMENTS = {
              "branch runs: 'Report that gathering is not possible' for an asymmetric "
              "configuration. G_12 (21 vertices) and G_3 have no half-turn, so the common "
              "line is a mirror of both: in O_S under every reading of 'common line'."),
+    "MakeAsym": _s(
+        "Algorithm MakeAsym(G'): given G' with G_t symmetric, makes G_t asymmetric by "
+        "moving one elected robot v_l, reporting 'An orderable G' where G_t is asymmetric', "
+        "or reports 'G' is not orderable' (when no asymmetric polygon, no asymmetric pair "
+        "and no single-vertex polygon is found).",
+        ("G1", "Gt"), [
+            "Nat.leb 5 (length P)", "Nat.eqb (length (polygons P)) 2",
+            "existsb (Qeq_bool rG1) (radii P)", "existsb (Qeq_bool rGt) (radii P)",
+            "forallb (fun r => Qle_bool rG1 r) (radii P)",
+            "forallb (fun r => Qle_bool r rGt) (radii P)",
+            "polygon G1", "polygon Gt", "symmetric_polygon Gt",
+            "negb (type4 (merged G1 Gt))",
+            "forallb symmetric_polygon (polygons P)", "asymmetric_pair G1 Gt",
+            "Nat.eqb (length Gt) 3"],
+        [("~ orderable P", _ORDER), ("~ electable P", _ELECT)],
+        reading="the branch MakeAsym takes, not which robot it elects: Find_Asymmetry "
+                "finds no asymmetric polygon, Find_Asymmetry_Pair finds <G_1, G_t>, so it "
+                "elects one robot v_l (|G_t| = 3: ElectLeader(G_1t), whatever its "
+                "ordering) and moves it, instead of reporting 'G' is not orderable'; G' = "
+                "calG_P (Preprocess merges nothing: G_1t is not type 4; as printed its "
+                "loop never ends on an odd polygon, see Preprocess's entry)",
+        note="G' is not orderable, and no robot can be elected by an algorithm reading the "
+             "configuration (electable, the same whatever the coordinates among the "
+             "isometries about C): the rotation by 1/3 turn maps P onto itself and moves "
+             "every robot, so the observer it turns elects the image of v_l, another "
+             "robot (not_electable). Observers disagree on the robot that moves."),
     "Preprocess": _s(
         "Algorithm Preprocess(calG): merges odd polygons whose G_ij is type 4, giving calG' "
         "(symmetric iff calG is).",

@@ -309,3 +309,28 @@ def test_orderable_is_accepted_and_a_symmetric_union_rejected():
     negated = negated.replace("apply orderable_of_only_identity; vm_compute; reflexivity.\nQed.",
                               "apply not_orderable_by_candidates; vm_compute; reflexivity.\nQed.")
     assert negated != text and _accepted(negated)       # provably not orderable
+
+
+def _library_goal(points, claim: str, tactic: str) -> str:
+    """The library, a configuration Q (canonical (r^2, turn) pairs) and one theorem."""
+    block = ";\n".join(f"  Pt (Qmake {Fraction(r).numerator} {Fraction(r).denominator}) "
+                       f"(Qmake {Fraction(t).numerator} {Fraction(t).denominator})"
+                       for r, t in points)
+    return (library_text().rstrip() + f"\n\nDefinition Q : list pt := [\n{block}].\n"
+            f"Theorem t : {claim}.\nProof. {tactic}. Qed.\nPrint Assumptions t.\n")
+
+
+@needs_coqc
+def test_no_leader_is_not_just_not_orderable():
+    """MakeAsym's conclusion '~ electable P' (a symmetry moves every robot) is not
+    '~ orderable P': five robots with one mirror through one of them are not orderable,
+    yet that robot is fixed, so 'not electable' must not be provable; an orderable pair
+    is electable (electable_of_only_identity)."""
+    d1 = [(1, 0), (1, "1/5"), (1, "4/5"), (4, "1/3"), (4, "2/3")]
+    assert _accepted(_library_goal(d1, "~ orderable Q",
+                                   "apply not_orderable_by_candidates; vm_compute; reflexivity"))
+    assert not _accepted(_library_goal(
+        d1, "~ electable Q", "apply not_electable_by_candidates; vm_compute; reflexivity"))
+    assert _accepted(_library_goal(
+        _PAIR_POINTS, "electable Q",
+        "apply electable_of_only_identity; vm_compute; reflexivity"))

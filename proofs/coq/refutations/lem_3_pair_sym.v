@@ -40,6 +40,9 @@
    mapping it onto itself all fix it pointwise ([only_identity P], computed) is
    orderable ([orderable_of_only_identity]); so the definition is met by every set with
    a trivial symmetry group about C ([one_point_orderable], [three_points_orderable]).
+   A leader ([electable]: a robot every observer designates) likewise: "no leader" when
+   a symmetry moves every robot ([not_electable_by_candidates]), a leader when the
+   identity is the only symmetry ([electable_of_only_identity]).
    That the isometries of the plane mapping P onto itself fix C (T1, the SEC) is what
    makes "about C" the paper's notion; the definition below only asks for those. *)
 
@@ -1010,10 +1013,10 @@ Definition order_by_images (P : list pt) (A : list pt) : list pt :=
 Lemma image_id : forall p, image (Rot 0) p = canon p.
 Proof. intros [r t]. unfold image. apply canon_peq. apply peq_same_r2. simpl. ring. Qed.
 
-(* def-orderable-set, when the identity on P is its only symmetry about C: P is
-   orderable.  With [candidates_complete] ((T2) proved) the check [only_identity P]
-   is decided by computation over the finite list of candidates. *)
-Theorem orderable_of_only_identity : forall P, only_identity P = true -> orderable P.
+Lemma order_by_images_orders : forall P, only_identity P = true ->
+  (forall A B, same_set A B = true -> order_by_images P A = order_by_images P B) /\
+  (forall g, order_by_images P (map (image g) P) = map (image g) (order_by_images P P)) /\
+  order_by_images P P = map canon P.
 Proof.
   intros P Hid. destruct (anchor P) as [a|] eqn:Ha;
     [| unfold only_identity in Hid; rewrite Ha in Hid; discriminate].
@@ -1027,7 +1030,7 @@ Proof.
     destruct (find_iso_some P a P _ Ha S0) as [g0 F]. unfold order_by_images.
     rewrite Ha, F. rewrite <- Hself. apply (agree_on_set P g0 (Rot 0) P Hid); [|exact S0].
     unfold find_iso in F. apply find_some in F. exact (proj2 F). }
-  exists (order_by_images P). split; [|split].
+  split; [|split; [|exact HP]].
   - intros A B H. unfold order_by_images. rewrite Ha.
     destruct (find_iso P a A) as [g|] eqn:FA; destruct (find_iso P a B) as [g'|] eqn:FB.
     + unfold find_iso in FA, FB. apply find_some in FA, FB.
@@ -1048,8 +1051,39 @@ Proof.
     unfold order_by_images. rewrite Ha, F.
     apply (agree_on_set P g1 g (map (image g) P) Hid); [|apply same_set_refl].
     unfold find_iso in F. apply find_some in F. exact (proj2 F).
-  - intros p Hp. rewrite HP. apply mem_iff. exists (canon p).
-    split; [apply in_map; exact Hp | symmetry; apply canon_canon].
+Qed.
+
+(* def-orderable-set, when the identity on P is its only symmetry about C: P is
+   orderable.  With [candidates_complete] ((T2) proved) the check [only_identity P]
+   is decided by computation over the finite list of candidates. *)
+Theorem orderable_of_only_identity : forall P, only_identity P = true -> orderable P.
+Proof.
+  intros P Hid. destruct (order_by_images_orders P Hid) as [H1 [H2 H3]].
+  exists (order_by_images P). split; [exact H1|]. split; [exact H2|].
+  intros p Hp. rewrite H3. apply mem_iff. exists (canon p).
+  split; [apply in_map; exact Hp | symmetry; apply canon_canon].
+Qed.
+
+(* Leader election (the abstract: "the first robot in the ordering becomes the leader
+   ... each robot, characterized by its location, agrees on the same ordering"; MakeAsym
+   elects one robot v_l and moves it): an algorithm reading the set designates a robot
+   of P, the same one whatever the coordinates among the isometries about C (as for
+   def-orderable-set).  Under the same condition P has a leader: the first robot of
+   [order_by_images]. *)
+Definition electable (P : list pt) : Prop :=
+  exists elect : list pt -> pt,
+    (forall A B, same_set A B = true -> elect A = elect B) /\
+    (forall g, elect (map (image g) P) = image g (elect P)) /\
+    mem (elect P) P = true.
+
+Theorem electable_of_only_identity : forall P, only_identity P = true -> electable P.
+Proof.
+  intros P Hid. destruct (order_by_images_orders P Hid) as [H1 [H2 H3]].
+  destruct P as [|p P'] eqn:EP; [discriminate|]. rewrite <- EP in *.
+  exists (fun A => hd (Pt 0 0) (order_by_images P A)). split; [|split].
+  - intros A B H. rewrite (H1 A B H). reflexivity.
+  - intros g. rewrite H2, H3, EP. reflexivity.
+  - rewrite H3, EP. simpl. rewrite peq_canon. reflexivity.
 Qed.
 
 (* def-orderable-set is not vacuous: one point off C, three points at distinct distances
@@ -1058,6 +1092,37 @@ Theorem one_point_orderable : orderable [Pt 1 0].
 Proof. apply orderable_of_only_identity. vm_compute. reflexivity. Qed.
 Theorem three_points_orderable : orderable [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)].
 Proof. apply orderable_of_only_identity. vm_compute. reflexivity. Qed.
+
+(* No leader: a symmetry g of P that moves every point of P leaves no robot that every
+   observer designates, since [elect (g P) = elect P] and [elect (g P) = g (elect P)]
+   make g fix the robot elected.  P is written canonically, as for [not_orderable]. *)
+Theorem not_electable : forall P g, canonical P = true ->
+  same_set (map (image g) P) P = true ->
+  forallb (fun p => negb (pt_eqb (image g p) p)) P = true -> ~ electable P.
+Proof.
+  intros P g Hcan Hset Hmoves [elect [Hsame [Hcov Hmem]]].
+  pose proof (Hsame _ _ Hset) as E. rewrite Hcov in E.
+  apply existsb_exists in Hmem. destruct Hmem as [p [Hp Hpe]].
+  rewrite forallb_forall in Hmoves. pose proof (Hmoves p Hp) as Hm.
+  assert (Hi : image g p = elect P).
+  { unfold image. rewrite <- (canon_peq _ _ (act_peq g _ _ Hpe)). exact E. }
+  assert (He : elect P = p).
+  { pose proof (canon_image g (elect P)) as C. rewrite E in C.
+    rewrite <- (canonical_in P p Hcan Hp), <- (canon_peq _ _ Hpe). symmetry. exact C. }
+  rewrite Hi, He, pt_eqb_refl in Hm. discriminate.
+Qed.
+
+Definition not_electable_dec (P : list pt) : bool :=
+  existsb (fun g => same_set (map (image g) P) P &&
+                    forallb (fun p => negb (pt_eqb (image g p) p)) P) (candidates P).
+
+Theorem not_electable_by_candidates : forall P, canonical P = true ->
+  not_electable_dec P = true -> ~ electable P.
+Proof.
+  intros P Hcan H. apply existsb_exists in H. destruct H as [g [_ H]].
+  apply andb_true_iff in H. destruct H as [Hset Hmoves].
+  exact (not_electable P g Hcan Hset Hmoves).
+Qed.
 
 (* ================================================= the configuration *)
 
