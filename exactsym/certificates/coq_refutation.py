@@ -45,12 +45,14 @@ class CoqExportError(ValueError):
     outside the exporter's scope)."""
 
 
-def _s(words, names, hypotheses, conclusion, reading=None, note=None) -> dict:
+def _s(words, names, hypotheses, conclusion, reading=None, note=None, scale=None) -> dict:
     """One statement: the paper's words, the levels it names besides P, its hypotheses
     (Coq booleans, each ``= true``), the negated conclusion (Coq propositions, each with
-    its tactic), the reading it is refuted under (refuted-under-reading), a note."""
+    its tactic), the reading it is refuted under (refuted-under-reading), a note, and the
+    factor (an integer) the source's squared distances are multiplied by (a statement
+    about fat robots: the witness scaled until they are separated, ``separated P``)."""
     return {"words": words, "names": names, "hypotheses": hypotheses,
-            "conclusion": conclusion, "reading": reading, "note": note}
+            "conclusion": conclusion, "reading": reading, "note": note, "scale": scale}
 
 
 _PAIR = ["existsb (Qeq_bool rGi) (radii P)", "existsb (Qeq_bool rGj) (radii P)",
@@ -215,11 +217,12 @@ CASE_STATEMENTS = {
              "no common line (in O_A, under the mixed reading, so under every reading); "
              "calG' has one."),
     "GatheringPattern": _s(
-        "Algorithm GatheringPattern(R): gathers n >= 5 fat robots from every asymmetric "
-        "configuration: 'G' = Preprocess(G); if G' is in O_S, report that gathering is "
-        "not possible; else MakeAsym, ElectLeader, FormGPattern'.",
+        "Algorithm GatheringPattern(R) (R, the set of separated robots): gathers n >= 5 "
+        "fat robots from every asymmetric configuration: 'G' = Preprocess(G); if G' is in "
+        "O_S, report that gathering is not possible; else MakeAsym, ElectLeader, "
+        "FormGPattern'.",
         ("G1", "G2", "G3"), [
-            "Nat.leb 5 (length P)", "in_O_A P",
+            "Nat.leb 5 (length P)", "separated P", "in_O_A P",
             "Nat.eqb (length (polygons P)) 3", "polygon G1", "polygon G2", "polygon G3",
             "Nat.odd (length G1)", "Nat.odd (length G2)", "Nat.even (length G3)",
             "negb (Nat.eqb (Nat.modulo (length G2) (length G1)) 0) || "
@@ -237,14 +240,15 @@ CASE_STATEMENTS = {
              "other pair is merged. G' = (G_12, G_3) has a common line, so the first "
              "branch runs: 'Report that gathering is not possible' for an asymmetric "
              "configuration. G_12 (21 vertices) and G_3 have no half-turn, so the common "
-             "line is a mirror of both: in O_S under every reading of 'common line'."),
+             "line is a mirror of both: in O_S under every reading of 'common line'.",
+        scale=100),
     "MakeAsym": _s(
         "Algorithm MakeAsym(G'): given G' with G_t symmetric, makes G_t asymmetric by "
         "moving one elected robot v_l, reporting 'An orderable G' where G_t is asymmetric', "
         "or reports 'G' is not orderable' (when no asymmetric polygon, no asymmetric pair "
         "and no single-vertex polygon is found).",
         ("G1", "Gt"), [
-            "Nat.leb 5 (length P)", "Nat.eqb (length (polygons P)) 2",
+            "Nat.leb 5 (length P)", "separated P", "Nat.eqb (length (polygons P)) 2",
             "existsb (Qeq_bool rG1) (radii P)", "existsb (Qeq_bool rGt) (radii P)",
             "forallb (fun r => Qle_bool rG1 r) (radii P)",
             "forallb (fun r => Qle_bool r rGt) (radii P)",
@@ -263,7 +267,8 @@ CASE_STATEMENTS = {
              "configuration (electable, the same whatever the coordinates among the "
              "isometries about C): the rotation by 1/3 turn maps P onto itself and moves "
              "every robot, so the observer it turns elects the image of v_l, another "
-             "robot (not_electable). Observers disagree on the robot that moves."),
+             "robot (not_electable). Observers disagree on the robot that moves.",
+        scale=100),
     "Preprocess": _s(
         "Algorithm Preprocess(calG): merges odd polygons whose G_ij is type 4, giving calG' "
         "(symmetric iff calG is).",
@@ -479,6 +484,11 @@ def _file(label: str, spec: dict, points: list, levels: dict, source: str | None
         out.append(f"   The ledger (proofs/statements.toml): {statement}")
     if spec["reading"]:
         out.append(f"   Refuted under the reading: {spec['reading']}.")
+    k = spec.get("scale") or 1
+    if k != 1:
+        out += [f"   P is the source's configuration with every squared distance multiplied by {k}",
+                "   (a scaling about C), so that its robots are separated fat robots (unit",
+                "   discs); no other conjunct changes under a scaling about C."]
     out += ["   Written by exactsym (exactsym/certificates/coq_refutation.py); the library",
             "   below is proofs/coq/Exactsym.v, inlined: it holds every definition used.",
             f"   source: {source or '-'} *)", ""]
@@ -486,7 +496,8 @@ def _file(label: str, spec: dict, points: list, levels: dict, source: str | None
     out += ["", "(* ================================================= the configuration *)", "",
             "(* P: (squared distance from C, turn) of each point. *)",
             "Definition P : list pt := ["]
-    points = [(r, t % 1 if r else Fraction(0)) for r, t in points]     # canonical
+    points = [(r * k, t % 1 if r else Fraction(0)) for r, t in points]  # scaled, canonical
+    levels = {name: r * k for name, r in levels.items()}
     out.append(";\n".join(f"  Pt {_q(r)} {_q(t)}" for r, t in points) + "].")
     for name, r in levels.items():
         out.append(f"Definition r{name} : Q := {_q(r)}.")

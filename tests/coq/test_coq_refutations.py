@@ -287,8 +287,8 @@ def test_an_orderable_pair_is_proved_by_the_library_theorem():
     assert text.rstrip().endswith("Print Assumptions refutes_lem_sym_notord.")
     assert "orderable (G1 ++ G2).\nProof." in text
     assert "apply orderable_of_only_identity; vm_compute; reflexivity.\nQed." in text
-    assert "Theorem orderable_of_only_identity : forall P, only_identity P = true ->" \
-        " orderable P." in library_text()
+    assert "Theorem orderable_of_only_identity : forall P, sec_centred P = true ->\n" \
+        "  only_identity P = true -> orderable P." in library_text()
 
 
 @needs_coqc
@@ -334,3 +334,58 @@ def test_no_leader_is_not_just_not_orderable():
     assert _accepted(_library_goal(
         _PAIR_POINTS, "electable Q",
         "apply electable_of_only_identity; vm_compute; reflexivity"))
+
+
+@needs_coqc
+def test_orderable_is_never_concluded_off_centre():
+    """The library's orderable is the paper's only about the SEC's centre (T1): an
+    isosceles triangle (Cartesian (1, 0), (2, 0), (3/2, 3/2), in O_S) and two points, with
+    the origin off their SEC's centre, have the identity as their only symmetry about the
+    origin, yet orderable_of_only_identity does not apply to them (it needs sec_centred)."""
+    for off in ([(1, 0), (4, 0), ("9/2", "1/8")], [(1, 0), (4, 0)]):
+        assert not _accepted(_library_goal(
+            off, "orderable Q", "apply orderable_of_only_identity; vm_compute; reflexivity"))
+        assert _accepted(_library_goal(off, "sec_centred Q = false /\\ only_identity Q = true",
+                                       "split; vm_compute; reflexivity"))
+    # an equilateral triangle about its SEC's centre, turned and scaled: not orderable
+    tri = [(4, Fraction(2, 7) + Fraction(k, 3)) for k in range(3)]
+    assert _accepted(_library_goal(tri, "~ orderable Q",
+                                   "apply not_orderable_by_candidates; vm_compute; reflexivity"))
+
+
+@needs_coqc
+def test_the_empty_set_is_not_symmetric():
+    """def-skewed-symmetric-conf needs a line not containing all of P: none for P empty
+    (a half-turn maps [] onto itself only vacuously); a one-robot polygon minus its robot
+    is then asymmetric, so Elect_Leader_Asym's loop stops at it."""
+    assert _accepted(_library_goal([(1, 0)], "symmetric_conf [] = false /\\ "
+                                   "symmetric_conf Q = true /\\ leader_candidates Q = Q",
+                                   "vm_compute; split; [reflexivity | split; reflexivity]"))
+
+
+def _scaled_export(label: str, factor: Fraction) -> str:
+    """The stored export of ``label`` with every squared distance of P (and of the named
+    levels) multiplied by ``factor``."""
+    text = _export(label)
+    head, rest = text.split("Definition P : list pt := [\n", 1)
+    block, tail = rest.split("].\n", 1)
+    def scaled(m):
+        r = Fraction(int(m.group(1)), int(m.group(2))) * factor
+        return f"Qmake {r.numerator} {r.denominator}"
+    block = re.sub(r"(?<=  Pt \()Qmake (\d+) (\d+)", scaled, block)
+    tail = re.sub(r"(?<=Definition r\w+ : Q := \()Qmake (\d+) (\d+)", scaled, tail)
+    return f"{head}Definition P : list pt := [\n{block}].\n{tail}"
+
+
+@needs_coqc
+@pytest.mark.parametrize("label", ["GatheringPattern", "MakeAsym"])
+def test_fat_robot_witnesses_are_separated_only_when_scaled(label):
+    """GatheringPattern's input is 'R, the set of separated robots' (unit discs, more
+    than 2 apart): the export is its source case scaled by 100 in r^2; at the source's
+    scale (r^2 / 100) the robots overlap and coqc rejects the file; scaled by 4 more it is
+    accepted (a scaled witness: nothing else changes)."""
+    text = _export(label)
+    assert "separated P = true" in text and "multiplied by 100" in text
+    assert not _accepted(_scaled_export(label, Fraction(1, 100)))
+    if ALL or label == "MakeAsym":
+        assert _accepted(_scaled_export(label, Fraction(4)))

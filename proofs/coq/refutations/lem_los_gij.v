@@ -27,25 +27,48 @@
    (T3) for the polygons of G_P (points on one circle about C, at least three of them)
         the same holds with the polygon in place of P (three points on a circle determine
         it, so a symmetry of the polygon fixes C).
+   (T4) [separated P] implies that every two robots of P (unit discs, "fat robots")
+        are more than 2 apart: four sufficient tests, argued before [robots_apart]
+        (the sine bound the chord test uses is proved: [sin_lower_bound]).
    Negative facts ("no line of symmetry", "asymmetric") rest on (T1)-(T3); positive
    facts (a symmetry exists) and "not orderable" do not: the latter is a Coq theorem
    ([not_orderable_by_candidates]) from the definition of def-orderable-set below.  The
    definition lists P's points as points ([mem]), so it does not depend on how P's terms
    are written; the theorem needs P written canonically ([canonical P], checked), and
    then a symmetry whose canonical image of p is another term maps p to another point
-   ([canon_peq]).  "Orderable" is a Coq theorem too, and needs no (T2): for the
-   isometries about C, (T2) is proved ([candidates_complete]: every isometry about C
+   ([canon_peq]).
+   "Orderable" and "electable" are Coq theorems too, but they rest on (T1), not on
+   (T2): [orderable] and [electable] ask for equivariance under the isometries ABOUT C
+   only, which is the paper's notion only when C is the centre of P's SEC (every isometry
+   mapping P onto itself fixes that centre).  For an off-centre set a symmetry of P need
+   not fix C, and the definition can be met by a set the paper proves not orderable
+   (two points, or an isosceles triangle with C at a base vertex).  So
+   [orderable_of_only_identity] and [electable_of_only_identity] take [sec_centred P]
+   (formally unused by the proof; it is what makes the conclusion the paper's), and every
+   exported theorem states [sec_centred P] of its whole configuration.  Given (T1), (T2)
+   is proved for the isometries about C ([candidates_complete]: every isometry about C
    mapping P into itself acts as one of [candidates P]), and a set whose candidates
    mapping it onto itself all fix it pointwise ([only_identity P], computed) is
-   orderable ([orderable_of_only_identity]); so the definition is met by every set with
-   a trivial symmetry group about C ([one_point_orderable], [three_points_orderable]).
-   A leader ([electable]: a robot every observer designates) likewise: "no leader" when
-   a symmetry moves every robot ([not_electable_by_candidates]), a leader when the
-   identity is the only symmetry ([electable_of_only_identity]).
-   That the isometries of the plane mapping P onto itself fix C (T1, the SEC) is what
-   makes "about C" the paper's notion; the definition below only asks for those. *)
+   orderable ([orderable_of_only_identity]); a leader ([electable]: a robot every
+   observer designates) likewise: "no leader" when a symmetry moves every robot
+   ([not_electable_by_candidates]), a leader when the identity is the only symmetry
+   ([electable_of_only_identity]).
+   The other coordinate changes of def-orderable-set (another origin, another unit, an
+   axis at an irrational angle: a similarity s) are not in [orderable].  For a set whose
+   only symmetry is the identity they add nothing, by this argument (not formalised):
+   define order'(A) as s applied to [order_by_images P P] when A is s(P) for a
+   similarity s, and [] otherwise.  It is well defined: if s(P) = s'(P), then s'^-1 s
+   maps P onto itself, keeps P's SEC (unique), so it has ratio 1 and fixes C (T1); it
+   takes the anchor to a point of P at the anchor's distance from C, so it is one of
+   [candidates P] (T2's argument, for any angle), hence the identity on P
+   ([only_identity P]) and s, s' agree on P.  It commutes with every similarity by
+   construction and lists every point of P.  This is [order_by_images] with similarities
+   for the isometries about C; the Coq proof covers the rational isometries about C.
+   The "not orderable" theorems need no such argument: fewer coordinate changes make
+   "orderable" easier to meet, so "not orderable" is the stronger claim. *)
 
 From Coq Require Import QArith ZArith List Bool Lia.
+From Coq Require Reals Qreals Lra.       (* only for [sin_lower_bound], at the end *)
 Import ListNotations.
 Open Scope Q_scope.
 
@@ -149,15 +172,63 @@ Definition straight_symmetric (P : list pt) : bool :=
   existsb (fun s => moves (Mirror s) P) (mirrors P).
 
 (* def-skewed-symmetric-conf, with the skewed mirror image read as the half-turn about C
-   (skmirrorimage, m = C): a line through C, not containing all of P (one that misses a
-   point off C always exists), whose skewed images map P onto itself. *)
+   (skmirrorimage, m = C): a line through C, not containing all of P (for P non-empty,
+   one that misses a point off C always exists), whose skewed images map P onto itself. *)
 Definition skew_symmetric (P : list pt) : bool := is_symmetry half_turn P.
 
 (* def-symmetric-conf: a singleton, or straight or skew symmetric.  def-asymmetric-conf:
-   not symmetric (P in O_A). *)
+   not symmetric (P in O_A).  The empty set has no line "not containing all the points of
+   P" (every line contains all of none), so it is neither straight nor skew symmetric:
+   the half-turn maps it onto itself vacuously, hence the test of non-emptiness. *)
 Definition symmetric_conf (P : list pt) : bool :=
-  Nat.eqb (length P) 1 || straight_symmetric P || skew_symmetric P.
+  Nat.eqb (length P) 1 || straight_symmetric P ||
+  (negb (Nat.eqb (length P) 0) && skew_symmetric P).
 Definition in_O_A (P : list pt) : bool := negb (symmetric_conf P).
+
+(* ------------------------------------------------------------------ fat robots *)
+
+(* Robots are unit discs ("fat robots", radius one): two robots overlap iff their centres
+   are less than 2 apart.  "We are given a set, R, of separated, stationary transparent
+   fat robots"; GatheringPattern's input: "R, the set of separated robots".  (T4): four
+   sufficient tests that two robots are more than 2 apart, none needs a cosine.  Write a,
+   b for the distances from C (a^2 = r2 p, b^2 = r2 q) and g in [0, 1/2] for the angular
+   gap in turns.
+   - [quarter_apart]: g >= 1/4, so cos(2 pi g) <= 0 and |p - q|^2 = a^2 + b^2 -
+     2ab cos(2 pi g) >= a^2 + b^2 > 4.
+   - [sixth_apart]: g >= 1/6, so cos(2 pi g) <= 1/2 and, for a <= b, |p - q|^2 >=
+     a^2 + b^2 - ab = a^2 + b (b - a) >= a^2 = min(a^2, b^2) > 4.
+   - [radially_apart]: |p - q| >= |b - a| (triangle inequality through C), and for
+     a^2 <= b^2, b - a > 2 iff b > a + 2 iff b^2 > a^2 + 4a + 4 iff
+     b^2 - a^2 - 4 > 4a iff (b^2 - a^2 - 4 > 0 and (b^2 - a^2 - 4)^2 > 16 a^2).
+   - [chord_apart]: one circle (a = b) and 0 < g <= 1/4: p, q and C form an isosceles
+     triangle with apex angle 2 pi g, so |p - q| = 2a sin(pi g), and
+     sin(pi g) >= 3g - 9/2 g^3 > 0 ([sin_lower_bound], proved at the end of this file), so
+     |p - q|^2 >= 4 a^2 (3g - 9/2 g^3)^2 > 4 when a^2 (3g - 9/2 g^3)^2 > 1.  (Robots on
+     one circle a small turn apart: the other three tests never pass them.) *)
+Definition angular_gap (p q : pt) : Q :=
+  let g := frac (turn p - turn q) in if Qle_bool g (1 # 2) then g else 1 - g.
+Definition quarter_apart (p q : pt) : bool :=
+  Qle_bool (1 # 4) (angular_gap p q) && Qlt_bool 4 (r2 p + r2 q).
+Definition sixth_apart (p q : pt) : bool :=
+  Qle_bool (1 # 6) (angular_gap p q) && Qlt_bool 4 (r2 p) && Qlt_bool 4 (r2 q).
+Definition radially_apart (p q : pt) : bool :=
+  let a2 := if Qle_bool (r2 p) (r2 q) then r2 p else r2 q in
+  let b2 := if Qle_bool (r2 p) (r2 q) then r2 q else r2 p in
+  let d := b2 - a2 - 4 in Qlt_bool 0 d && Qlt_bool (16 * a2) (d * d).
+Definition sine_bound (g : Q) : Q := 3 * g - (9 # 2) * (g * g * g).
+Definition chord_apart (p q : pt) : bool :=
+  let g := angular_gap p q in
+  Qeq_bool (r2 p) (r2 q) && Qlt_bool 0 g && Qle_bool g (1 # 4) &&
+  Qlt_bool 1 (r2 p * (sine_bound g * sine_bound g)).
+Definition robots_apart (p q : pt) : bool :=
+  quarter_apart p q || sixth_apart p q || radially_apart p q || chord_apart p q.
+
+(* (T4) The robots are separated: every two of them are more than 2 apart. *)
+Fixpoint separated (P : list pt) : bool :=
+  match P with
+  | [] => true
+  | p :: rest => forallb (robots_apart p) rest && separated rest
+  end.
 
 (* Coordinates are written canonically: the squared distance in lowest terms and, off C,
    the turn in [0, 1) in lowest terms (at C the turn 0).  Two canonical points are one
@@ -1054,10 +1125,14 @@ Qed.
 
 (* def-orderable-set, when the identity on P is its only symmetry about C: P is
    orderable.  With [candidates_complete] ((T2) proved) the check [only_identity P]
-   is decided by computation over the finite list of candidates. *)
-Theorem orderable_of_only_identity : forall P, only_identity P = true -> orderable P.
+   is decided by computation over the finite list of candidates.  [sec_centred P] is not
+   used by the proof: it is what makes the isometries about C all of P's symmetries (T1),
+   so that [orderable P] is the paper's notion (for an off-centre set it is not: the
+   library's header). *)
+Theorem orderable_of_only_identity : forall P, sec_centred P = true ->
+  only_identity P = true -> orderable P.
 Proof.
-  intros P Hid. destruct (order_by_images_orders P Hid) as [H1 [H2 H3]].
+  intros P _ Hid. destruct (order_by_images_orders P Hid) as [H1 [H2 H3]].
   exists (order_by_images P). split; [exact H1|]. split; [exact H2|].
   intros p Hp. rewrite H3. apply mem_iff. exists (canon p).
   split; [apply in_map; exact Hp | symmetry; apply canon_canon].
@@ -1075,9 +1150,10 @@ Definition electable (P : list pt) : Prop :=
     (forall g, elect (map (image g) P) = image g (elect P)) /\
     mem (elect P) P = true.
 
-Theorem electable_of_only_identity : forall P, only_identity P = true -> electable P.
+Theorem electable_of_only_identity : forall P, sec_centred P = true ->
+  only_identity P = true -> electable P.
 Proof.
-  intros P Hid. destruct (order_by_images_orders P Hid) as [H1 [H2 H3]].
+  intros P _ Hid. destruct (order_by_images_orders P Hid) as [H1 [H2 H3]].
   destruct P as [|p P'] eqn:EP; [discriminate|]. rewrite <- EP in *.
   exists (fun A => hd (Pt 0 0) (order_by_images P A)). split; [|split].
   - intros A B H. rewrite (H1 A B H). reflexivity.
@@ -1085,12 +1161,14 @@ Proof.
   - rewrite H3, EP. simpl. rewrite peq_canon. reflexivity.
 Qed.
 
-(* def-orderable-set is not vacuous: one point off C, three points at distinct distances
-   from C, are orderable (the identity is their only symmetry about C). *)
-Theorem one_point_orderable : orderable [Pt 1 0].
-Proof. apply orderable_of_only_identity. vm_compute. reflexivity. Qed.
-Theorem three_points_orderable : orderable [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)].
-Proof. apply orderable_of_only_identity. vm_compute. reflexivity. Qed.
+(* def-orderable-set is not vacuous: a scalene triangle inscribed in its SEC (gaps 1/3,
+   1/6, 1/2 of a turn: one side a diameter), and four points at two distances from C, are
+   orderable (C is the SEC's centre and the identity is their only symmetry). *)
+Theorem scalene_triangle_orderable : orderable [Pt 1 0; Pt 1 (1 # 3); Pt 1 (1 # 2)].
+Proof. apply orderable_of_only_identity; vm_compute; reflexivity. Qed.
+Theorem four_points_orderable :
+  orderable [Pt 4 0; Pt 4 (1 # 3); Pt 4 (2 # 3); Pt 1 (1 # 5)].
+Proof. apply orderable_of_only_identity; vm_compute; reflexivity. Qed.
 
 (* No leader: a symmetry g of P that moves every point of P leaves no robot that every
    observer designates, since [elect (g P) = elect P] and [elect (g P) = g (elect P)]
@@ -1122,6 +1200,43 @@ Proof.
   apply andb_true_iff in H. destruct H as [Hset Hmoves].
   exact (not_electable P g Hcan Hset Hmoves).
 Qed.
+
+(* ------------------------------------------------------------------ the sine bound *)
+
+(* [chord_apart]'s bound, proved over Coq's real numbers (its axioms are those of the
+   standard library's reals; no exported theorem uses this lemma, so their Print
+   Assumptions stay closed): for 0 <= g <= 1/4, sin (pi g) >= 3g - 9/2 g^3.  With
+   x = pi g in [3g, 4g] within [0, 1]: sin x >= x - x^3/6 (the alternating series,
+   [pre_sin_bound]), and x - x^3/6 is increasing on [0, 1]. *)
+Module SineBound.
+Import Reals Qreals Lra.
+
+Lemma sin_lower_bound : forall g : Q, 0 <= g -> g <= 1 # 4 ->
+  (Q2R (sine_bound g) <= sin (PI * Q2R g))%R.
+Proof.
+  intros g H0 H1. apply Qle_Rle in H0, H1. unfold sine_bound.
+  assert (E : Q2R (3 * g - (9 # 2) * (g * g * g)) =
+              (3 * Q2R g - 9 / 2 * (Q2R g * Q2R g * Q2R g))%R).
+  { rewrite Q2R_minus, !Q2R_mult.
+    replace (Q2R 3) with 3%R by (unfold Q2R; simpl; field).
+    replace (Q2R (9 # 2)) with (9 / 2)%R by (unfold Q2R; simpl; field). reflexivity. }
+  assert (Z : Q2R 0 = 0%R) by (unfold Q2R; simpl; ring).
+  assert (F : Q2R (1 # 4) = (1 / 4)%R) by (unfold Q2R; simpl; field).
+  rewrite E. rewrite Z in H0. rewrite F in H1. set (y := Q2R g) in *.
+  assert (HPI : (3 <= PI <= 4)%R) by (pose proof PI2_3_2; pose proof PI_4; lra).
+  assert (Hx : (0 <= PI * y <= 1)%R) by nra.
+  destruct (pre_sin_bound (PI * y) 0 (proj1 Hx) ltac:(lra)) as [S _].
+  refine (Rle_trans _ _ _ _ S). unfold sin_approx, sin_term. simpl.
+  set (x := (PI * y)%R) in *.
+  assert (Hxy : (3 * y <= x)%R) by (unfold x; nra).
+  assert (D : (x - x * x * x / 6 - (3 * y - 3 * y * (3 * y) * (3 * y) / 6) =
+               (x - 3 * y) * (1 - (x * x + x * (3 * y) + 3 * y * (3 * y)) / 6))%R) by field.
+  assert (0 <= (x - 3 * y) * (1 - (x * x + x * (3 * y) + 3 * y * (3 * y)) / 6))%R.
+  { apply Rmult_le_pos; [lra|]. nra. }
+  nra.
+Qed.
+
+End SineBound.
 
 (* ================================================= the configuration *)
 
