@@ -143,9 +143,9 @@ def add_terms(a: dict, b: dict, sign: int = 1) -> dict:
 def mul_cosines(a: dict, b: dict, n: int) -> dict:
     """The product of two cosine forms: cos e cos f = (cos(e + f) + cos(e - f))/2, with
     0 <= e, f <= n/2, so e + f <= n (its representative min(e + f, n - e - f)) and
-    |e - f| <= n/2.  Long forms of a moderate conductor are multiplied as two products of
-    dense polynomials (:func:`_mul_cosines_dense`, flint's compiled arithmetic), short ones
-    or those of a huge conductor term by term."""
+    |e - f| <= n/2.  Long forms of a moderate conductor are multiplied as one product of
+    dense polynomials (:func:`_mul_cosines_dense`), short ones or those of a huge conductor
+    term by term."""
     if len(a) < len(b):
         a, b = b, a
     pairs = len(a) * len(b)
@@ -185,30 +185,37 @@ _DENSE_MAX_N = 1 << 22
 
 
 def _mul_cosines_dense(a: dict, b: dict, n: int) -> dict:
-    """:func:`mul_cosines` through polynomials of degree h = floor(n/2): with A = sum a_e x^e
-    and B = sum b_f x^f, the sums e + f are the exponents of P = A B and the differences
-    e - f + h those of Q = A x^h B(1/x); then cos(2 pi s/n) for s > n/2 is cos(2 pi (n-s)/n)
-    and cos of -d is cos of d.  Coefficient t of the result: (P_t + P_(n-t) [2t < n]
-    + Q_(h+t) + Q_(h-t) [t > 0]) / 2."""
+    """:func:`mul_cosines` as one product of dense polynomials (flint's compiled
+    arithmetic).  With h = floor(n/2), the form sum a_e cos(2 pi e/n) is written as the
+    palindrome V_a = sum a_e (x^(h+e) + x^(h-e)), x^h times twice its Laurent polynomial in
+    x = zeta_n, so V = V_a V_b = 4 x^(2h) L_a L_b is a palindrome of degree 4h whose
+    coefficients V_(2h+t), 0 <= t <= 2h, are 4 r_0 and 2 r_t (t > 0) for the product
+    sum r_t cos(2 pi t/n).  A t > n/2 stands for n - t =: t' < n/2; by the palindrome
+    V_(2h+t) = V_(2h-t) = V_(t'-(n-2h)), the low end: index t' for n even, t' - 1 for n
+    odd.  So the product's coefficients 0..h are
+    (V >> 2h)/2 - V_(2h)/4 + (V mod x^h, times x for n odd)/2."""
     h = n // 2
-    dense_a = [0] * (h + 1)
+    v = _palindrome(a, h) * _palindrome(b, h)
+    fold = v.truncate(h)
+    if n % 2:
+        fold = fold.left_shift(1)
+    total = (v.right_shift(2 * h).truncate(h + 1) + fold) * _HALF - v[2 * h] * _QUARTER
+    return {e: c for e, c in enumerate(total.coeffs()) if c}
+
+
+def _palindrome(a: dict, h: int) -> fmpq_poly:
+    """sum a_e (x^(h+e) + x^(h-e)) for the cosine form {e: a_e}, 0 <= e <= h."""
+    dense = [0] * (2 * h + 1)
     for e, c in a.items():
-        dense_a[e] = c
-    dense_b = [0] * (h + 1)
-    for f, d in b.items():
-        dense_b[f] = d
-    poly_a = fmpq_poly(dense_a)
-    p = (poly_a * fmpq_poly(dense_b)).coeffs()
-    q = (poly_a * fmpq_poly(dense_b[::-1])).coeffs()
-    p += [0] * (n + 1 - len(p))
-    q += [0] * (2 * h + 1 - len(q))
-    high = p[n:n - h - 1:-1] if n % 2 else p[n:n - h:-1] + [0]      # P_(n-t), 2t < n
-    total = (fmpq_poly(p[:h + 1]) + fmpq_poly(high) + fmpq_poly(q[h:]) +
-             fmpq_poly([0] + q[h - 1::-1])) * _HALF
-    return {e: c for e, c in enumerate(total.coeffs()) if c != 0}
+        if e:
+            dense[h + e] = dense[h - e] = c
+        else:
+            dense[h] = c + c
+    return fmpq_poly(dense)
 
 
 _HALF = fmpq(1, 2)
+_QUARTER = fmpq(1, 4)
 
 
 def mul_roots(a: dict, b: dict, n: int) -> dict:

@@ -1,5 +1,5 @@
 """The products of cosine forms of :mod:`exactsym.exact.sparse_terms`: the dense product
-(two fmpq_poly products, for long forms of a moderate conductor) gives the same dictionary
+(one fmpq_poly product of palindromes, for long forms of a moderate conductor) gives the same dictionary
 as the product term by term, and both match cos e cos f = (cos(e + f) + cos(e - f))/2."""
 
 from __future__ import annotations
