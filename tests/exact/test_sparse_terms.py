@@ -64,6 +64,9 @@ def test_long_forms_take_the_dense_product(monkeypatch):
     a = {e: fmpq(e + 1, 3) for e in range(0, 700, 7)}
     b = {e: fmpq(1 - e, 2) for e in range(1, 700, 7)}
     assert mul_cosines(a, b, 1404) == _term_by_term(a, b, 1404) and calls == [1404]
+    # coefficients over many denominators (their common one is huge): term by term
+    c = {e: fmpq(1, 2 ** 61 - 1 + 2 * e) for e in range(0, 700, 7)}
+    assert mul_cosines(c, b, 1404) == _term_by_term(c, b, 1404) and calls == [1404]
     # a huge conductor with short forms: term by term
     assert mul_cosines({1: fmpq(1)}, {2: fmpq(1)}, 4 * 999983) == \
         {3: fmpq(1, 2), 1: fmpq(1, 2)} and calls == [1404]
