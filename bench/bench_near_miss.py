@@ -16,11 +16,15 @@ the median of ``--repeat`` runs (default 3), printed beside the figure before th
 of this file's commit (:data:`BEFORE`, same machine, CPU seconds of one run) and their
 ratio, against the target of issue 33 (< 5 s).  Run: ``python bench/bench_near_miss.py``
 (``--only NAME``, ``--timeout S``; ``--print NAME`` writes one input to stdout).
+``--against DIR``: the "before" column is measured, not quoted: the same input checked by
+the source tree in DIR (a checkout of an earlier commit, put first on PYTHONPATH), in
+alternation with this one (the machine's load falls on both alike).
 """
 
 from __future__ import annotations
 
 import argparse
+import os
 import resource
 import statistics
 import subprocess
@@ -83,12 +87,18 @@ def _children_cpu() -> float:
     return usage.ru_utime + usage.ru_stime
 
 
-def check_cpu(path: Path, timeout: float) -> float | None:
-    """CPU seconds of one ``exactsym check --json`` child, or None (timeout or failure)."""
+def check_cpu(path: Path, timeout: float, source: str | None = None) -> float | None:
+    """CPU seconds of one ``exactsym check --json`` child, or None (timeout or failure);
+    ``source``: the source tree the child imports exactsym from (else the installed one)."""
+    env = None
+    if source is not None:
+        env = dict(os.environ, PYTHONPATH=os.pathsep.join(
+            [source] + [p for p in [os.environ.get("PYTHONPATH")] if p]))
     before = _children_cpu()
     try:
         done = subprocess.run([sys.executable, "-m", "exactsym", "check", "--json", str(path)],
-                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, timeout=timeout)
+                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, timeout=timeout,
+                              env=env)
     except subprocess.TimeoutExpired:
         return None
     return _children_cpu() - before if done.returncode in (0, 1) else None
@@ -100,6 +110,7 @@ def main() -> None:
     parser.add_argument("--timeout", type=float, default=300.0)
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--print", dest="show")
+    parser.add_argument("--against", help="source tree of the earlier version, run in turn")
     opts = parser.parse_args()
     if opts.show:
         sys.stdout.write(inputs()[opts.show])
@@ -111,12 +122,17 @@ def main() -> None:
             if opts.only and opts.only not in name:
                 continue
             path.write_text(text)
-            runs = [check_cpu(path, opts.timeout) for _ in range(opts.repeat)]
+            runs, earlier = [], []
+            for _ in range(opts.repeat):
+                if opts.against:
+                    earlier.append(check_cpu(path, opts.timeout, opts.against))
+                runs.append(check_cpu(path, opts.timeout))
             if None in runs:
                 print(f"{name:32} {'-':>7}  failed or timeout ({opts.timeout:.0f} s)", flush=True)
                 continue
             now = statistics.median(runs)
-            before = BEFORE.get(name)
+            before = BEFORE.get(name) if not opts.against else \
+                None if None in earlier else statistics.median(earlier)
             ratio = f"{now / before:6.2f}" if before else f"{'-':>6}"
             shown = f"{before:7.2f}" if before else f"{'-':>7}"
             verdict = "ok" if now < TARGET else "MISSED"
