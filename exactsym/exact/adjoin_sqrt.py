@@ -79,13 +79,17 @@ def _sparse_level(system, x):
     return bigger, wrap(tower, (tower.levels, tower.zero, tower.one))
 
 
-def _levels_used(v, out: set) -> set:
+def _levels_used(v, out: set, base: int) -> set | None:
     """The levels s whose generator y_s occurs in the raw tower value v (a tuple
-    (s, a, b) is a + b y_s with b != 0)."""
+    (s, a, b) is a + b y_s with b != 0); None when a base number of v is not an ``MQ``
+    whose radicands divide ``base`` (then no map below is defined on it)."""
     if type(v) is tuple:
         out.add(v[0])
-        _levels_used(v[1], out)
-        _levels_used(v[2], out)
+        if _levels_used(v[1], out, base) is None or _levels_used(v[2], out, base) is None:
+            return None
+        return out
+    if type(v) is not MQ or any(base % int(m) for m in v.terms):
+        return None
     return out
 
 
@@ -111,10 +115,11 @@ def _kummer_nonsquare(tower, x, primes: int = 24, maps: int = 4) -> bool:
     base = 1
     for q in tower.primes:
         base *= q
-    if not radicands or not all(type(r) is MQ and all(base % int(m) == 0 for m in r.terms)
-                                for r in radicands):
+    if not radicands or not all(_levels_used(r, set(), base) == set() for r in radicands):
         return False
-    used = _levels_used(x, set())
+    used = _levels_used(x, set(), base)
+    if used is None:
+        return False
     others = [t for t in range(1, len(radicands) + 1) if t not in used]
     bad = 1
     for s in used:
