@@ -13,7 +13,7 @@ ten nested radicals sqrt(1 + sqrt(p)).
 Each input is written to a temporary file and ``exactsym check --json FILE`` runs in a
 child process (its output thrown away); the CPU seconds (user + system) of the child are
 the median of ``--repeat`` runs (default 3), printed beside the figure before the change
-of this file's commit (:data:`BEFORE`, same machine, CPU seconds of one run) and their
+of issue 33 (:data:`BEFORE`, same machine, medians of three runs) and their
 ratio, against the target of issue 33 (< 5 s).  Run: ``python bench/bench_near_miss.py``
 (``--only NAME``, ``--timeout S``; ``--print NAME`` writes one input to stdout).
 ``--against DIR``: the "before" column is measured, not quoted: the same input checked by
@@ -36,16 +36,17 @@ from pathlib import Path
 HAIR = Fraction(1, 10 ** 9)
 TARGET = 5.0
 
-#: CPU seconds of ``check --json`` before the dense products of cosine forms (one run each,
-#: load about 1 on 2 cores)
+#: CPU seconds of ``check --json`` before issue 33's changes to the exact layer (the dense
+#: products of cosine forms, the Kummer proof of a non-square radicand): medians of three
+#: runs in alternation with the new code, load 13-20 on 2 cores, December 2026
 BEFORE = {
-    "near C12 j/468, x + hair": None,
-    "near C12 j/468, turn + hair": None,
-    "near C12 j/468, radius + hair": None,
-    "near D9 j/702, x + hair": None,
-    "near D9 j/702, turn + hair": None,
-    "near D9 j/702, radius + hair": None,
-    "10 nested radicals, 10 pts": None,
+    "near C12 j/468, x + hair": 2.89,
+    "near C12 j/468, turn + hair": 0.96,
+    "near C12 j/468, radius + hair": 2.59,
+    "near D9 j/702, x + hair": 13.24,
+    "near D9 j/702, turn + hair": 1.13,
+    "near D9 j/702, radius + hair": 4.25,
+    "10 nested radicals, 10 pts": 5.96,
 }
 
 
