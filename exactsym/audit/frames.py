@@ -390,16 +390,23 @@ class _VectorMap:
         self.linear, self.k2 = linear, k2
 
 
-class _FrameRing(Ring):
-    """The ring of a one-robot level in a frame: the first frame's ring ``base`` (its
-    name, level, robot) seen through the frame's :class:`_VectorMap` ``frame``: its
-    polygon's one direction is L(d) for the first frame's direction d = p - C, made when
-    first read and kept; its squared radius is the first frame's times scale^2.  Equal to
-    nothing but another such ring with equal fields."""
+class _FrameRing(Ring, CirclePolygon):
+    """The ring of a one-robot level in a frame, and its polygon (one vertex; the ring is
+    its own polygon: the family layer reads a ring's polygon millions of times): the
+    first frame's ring ``base`` (its name, level, robot) seen through the frame's
+    :class:`_VectorMap` ``frame``.  The vertex's direction is L(d) for the first frame's
+    direction d = p - C, made when first read and kept; the squared radius is the first
+    frame's times scale^2.  Equal to another such ring with equal fields."""
 
     __slots__ = ("base", "frame", "_dirs")
     n = 1
     at_centre = False
+    polar = False
+    one_circle = True
+
+    @property
+    def polygon(self) -> "_FrameRing":
+        return self
 
     @property
     def name(self) -> str:
@@ -418,6 +425,10 @@ class _FrameRing(Ring):
         return self.base.robots
 
     @property
+    def labels(self) -> tuple:
+        return self.base.polygon.labels
+
+    @property
     def radius_squared(self):
         k2 = self.frame.k2
         r2 = self.base.radius_squared
@@ -432,25 +443,16 @@ class _FrameRing(Ring):
             object.__setattr__(self, "_dirs", dirs)
             return dirs
 
-    @property
-    def polygon(self) -> "_FrameVertex":
-        vertex = object.__new__(_FrameVertex)
-        object.__setattr__(vertex, "ring", self)
-        return vertex
+    def _fields(self) -> tuple:
+        return (self.name, self.radius_squared, self.levels, self.robots, self.directions)
 
+    def __eq__(self, other):
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return self._fields() == other._fields()
 
-class _FrameVertex(CirclePolygon):
-    """The polygon of a :class:`_FrameRing` (one vertex; made when read, holds nothing but
-    its ring)."""
+    def __hash__(self) -> int:
+        return hash((self.name, self.robots))
 
-    __slots__ = ("ring",)
-    polar = False
-    one_circle = True
-
-    @property
-    def labels(self) -> tuple:
-        return self.ring.base.polygon.labels
-
-    @property
-    def directions(self) -> tuple:
-        return self.ring.directions
+    def __repr__(self) -> str:
+        return f"<{self.name} in a frame: robot {self.robots[0]}, direction {self.directions[0]}>"
