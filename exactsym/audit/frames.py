@@ -77,6 +77,12 @@ def _similar(config: Configuration, sim: Similarity) -> Configuration:
     dx, dy = (coerce(v) for v in (sim.shift or (0, 0)))
     if sim.reflect and sim.rotation is None and sim.scale == 1 and sim.shift is None:
         points = [(x, -y) for x, y in config.points]
+    elif not sim.reflect and sim.rotation is not None and sim.shift is not None:
+        # k (c x - s y) + dx = (k c) x - (k s) y + dx: the same exact values with two
+        # products fewer per point
+        if sim.scale != 1:
+            c, s = k * c, k * s
+        points = [(c * x - s * y + dx, s * x + c * y + dy) for x, y in config.points]
     else:
         points = []             # as Configuration.transformed computes them
         for x, y in config.points:
@@ -129,19 +135,20 @@ def _nothing() -> tuple:
 
 
 def _linear(sim: Similarity):
-    """The linear part of ``sim`` (no ``turn``) as a function of (x, y)."""
-    c, s = sim.rotation if sim.rotation is not None else (None, None)
+    """The linear part of ``sim`` (no ``turn``) as a function of (x, y); a rotation's
+    matrix is taken times the scale (k (c x - s y) = (k c) x - (k s) y exactly: two
+    products fewer per point)."""
     k = sim.scale
-
-    def linear(x, y):
-        if sim.reflect:
-            y = -y
-        if c is not None:
-            x, y = c * x - s * y, s * x + c * y
+    if sim.rotation is not None:
+        c, s = sim.rotation
         if k != 1:
-            x, y = k * x, k * y
-        return x, y
-    return linear
+            c, s = k * c, k * s
+        if sim.reflect:
+            return lambda x, y: (c * x + s * y, s * x - c * y)
+        return lambda x, y: (c * x - s * y, s * x + c * y)
+    if sim.reflect:
+        return (lambda x, y: (x, -y)) if k == 1 else (lambda x, y: (k * x, -k * y))
+    return (lambda x, y: (x, y)) if k == 1 else (lambda x, y: (k * x, k * y))
 
 
 def mapped_rational_levels(config: Configuration, ring_data: Levels, moved: Configuration,

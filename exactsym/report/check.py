@@ -180,14 +180,15 @@ _CHUNK = 2048
 
 def _write_items(items, pad: str, out) -> None:
     """A long list (or :class:`~exactsym.report.json_form.LevelEntries`) of containers,
-    one item per line: joined by pieces of :data:`_CHUNK` items, so that the text of a
-    million levels is never one string (issue 33)."""
+    one item per line: joined by pieces of :data:`_CHUNK` items (a
+    :class:`~exactsym.report.json_form.JSONText` may hold several, joined by the same
+    separator), so that the text of a million levels is never one string (issue 33)."""
     inner = pad + "  "
     sep = ",\n" + inner
     out.append("[\n" + inner)
     chunk = []
     first = True
-    for item in (items.json_items() if isinstance(items, LevelEntries) else items):
+    for item in (items.json_items(sep) if isinstance(items, LevelEntries) else items):
         chunk.append(item if type(item) is JSONText else _item(item))
         if len(chunk) == _CHUNK:
             out.append(("" if first else sep) + sep.join(chunk))
