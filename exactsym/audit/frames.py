@@ -341,7 +341,7 @@ def frame_rings(G, levels: Levels, moved: Configuration, frame: str,
     850 MB, though a one-robot level's verdicts are fixed); a level of several robots
     is built as the family layer builds it.  None when ``levels`` are not so mapped."""
     from ..paper.family.concentric import new_ring
-    from ..paper.homogeneous import register
+    from ..paper.homogeneous import is_short, register
     linear = _linear(CARTESIAN_FRAMES[frame])
     k2 = fmpq(CARTESIAN_FRAMES[frame].scale) ** 2
     mapping = _VectorMap(linear, k2)
@@ -379,8 +379,9 @@ def frame_rings(G, levels: Levels, moved: Configuration, frame: str,
                     poly.__dict__[kept] = built.__dict__[kept]
         else:
             dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in robots])
-            for i, d in zip(robots, dirs):
-                register(d, pts[i], homogeneous)
+            if is_short(homogeneous):       # else register records nothing
+                for i, d in zip(robots, dirs):
+                    register(d, pts[i], homogeneous)
             poly.__dict__.update(labels=labels, directions=dirs, polar=False,
                                  one_circle=True)
         out.append(new_ring(base.name, poly, level.radius_squared, base.levels, robots,
