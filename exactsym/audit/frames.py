@@ -24,7 +24,7 @@ from __future__ import annotations
 from ..exact import fmpq
 from ..exact.number import is_plain_rational
 from ..geometry.configuration import Configuration, Similarity
-from ..geometry.levels import Level, Levels, ScaledLevels, mapped_levels
+from ..geometry.levels import Level, Levels, ScaledLevels, VectorTable, mapped_levels
 from ..geometry.predicates import PseudoAngle
 from ..geometry.sec import Circle
 from ..paper.circle_polygon import CirclePolygon
@@ -204,7 +204,8 @@ def _mapped(config: Configuration, ring_data: Levels, moved: Configuration,
             vectors = {i: (old[i][0], -old[i][1]) for i in robots}
         else:
             vectors = {i: (mp[i][0] - ncx, mp[i][1] - ncy) for i in robots}
-    elif old is not None and len(old) == n and mirror:
+    elif old is not None and len(old) == n and mirror and \
+            (not isinstance(old, VectorTable) or old.complete()):
         vectors = {i: (vx, -vy) for i, (vx, vy) in old.items()}
     else:
         vectors = {i: (px - ncx, py - ncy) for i, (px, py) in enumerate(moved.points)}
