@@ -345,21 +345,22 @@ def frame_rings(G, levels: Levels, moved: Configuration, frame: str,
     from ..paper.homogeneous import is_short, register
     linear = _linear(CARTESIAN_FRAMES[frame])
     k2 = fmpq(CARTESIAN_FRAMES[frame].scale) ** 2
-    mapping = _VectorMap(linear, k2)
+    # the frame's map as a class attribute of a class of its own: a ring holds its base
+    # only (64 bytes a ring)
+    kind = type("_FrameRing", (_FrameRing,), {"__slots__": (), "frame": _VectorMap(linear, k2)})
+    set_base = _FrameRing.base.__set__
     cx, cy = levels.sec.centre
     homogeneous = levels.sec.homogeneous
     pts = moved.points
     out = []
     make = object.__new__
-    setter = object.__setattr__
     mapped = levels.levels
     if not isinstance(mapped, (tuple, ScaledLevels)) or len(mapped) != len(G):
         return None
     for k, base in enumerate(G):
         if len(base.robots) == 1 and base.polygon is not None:
-            ring = make(_FrameRing)
-            setter(ring, "base", base)
-            setter(ring, "frame", mapping)
+            ring = make(kind)
+            set_base(ring, base)
             out.append(ring)
             continue
         level = mapped[k]
@@ -403,11 +404,13 @@ class _FrameRing(Ring, CirclePolygon):
     """The ring of a one-robot level in a frame, and its polygon (one vertex; the ring is
     its own polygon: the family layer reads a ring's polygon millions of times): the
     first frame's ring ``base`` (its name, level, robot) seen through the frame's
-    :class:`_VectorMap` ``frame``.  The vertex's direction is L(d) for the first frame's
+    :class:`_VectorMap` ``frame`` (a class attribute: :func:`frame_rings` makes a subclass
+    per frame).  The vertex's direction is L(d) for the first frame's
     direction d = p - C, made when first read and kept; the squared radius is the first
     frame's times scale^2.  Equal to another such ring with equal fields."""
 
-    __slots__ = ("base", "frame", "_dirs")
+    __slots__ = ("base",)
+    frame: _VectorMap           # a class attribute of the frame's subclass
     n = 1
     at_centre = False
     polar = False
@@ -445,12 +448,11 @@ class _FrameRing(Ring, CirclePolygon):
 
     @property
     def directions(self) -> tuple:
-        try:
-            return self._dirs
-        except AttributeError:
-            dirs = (self.frame.linear(*self.base.polygon.directions[0]),)
-            object.__setattr__(self, "_dirs", dirs)
-            return dirs
+        # kept in the instance dict, made only for the rings whose direction is read
+        found = self.__dict__.get("_dirs")
+        if found is None:
+            found = self.__dict__["_dirs"] = (self.frame.linear(*self.base.polygon.directions[0]),)
+        return found
 
     def _fields(self) -> tuple:
         return (self.name, self.radius_squared, self.levels, self.robots, self.directions)
