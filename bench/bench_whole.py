@@ -13,6 +13,12 @@ figures: the machine may be shared.
 Targets (issue 33): 100,000 random rational points at most 6 times the yardstick; the
 100,000-point D4 set at most 5 times; 1,000,000 random points under 15 s and 1.5 GB
 (``--json`` and the summary).
+
+Last figures (December 2026, 3 pairs per row, load falling from 7.6 to 2.2 on 2 cores;
+yardstick, check, ratio, peak RSS): 100,000 random 0.61 s, 2.28 s, 3.7x, 189 MB (met);
+D4 0.57 s, 3.35 s, 5.9x, 233 MB (missed; 5.4x in a run under load 18); 10^6 random
+``--json`` 5.13 s, 20.3 s, 4.2x, 1,474 MB (memory met, time missed), summary 20.4 s,
+1,475 MB.  Before this round (same rows): 5.0-5.6x; 5.8x; 31 s and 2,218 MB.
 """
 
 from __future__ import annotations

@@ -24,7 +24,7 @@ from .audit.result import AuditResult
 from .audit.statements import audit as run_audit
 from .exact.context import AnalysisContext
 from .geometry.configuration import Configuration, no_cycle_collection
-from .geometry.levels import Level, Levels, RationalLevels, levels_of
+from .geometry.levels import Level, Levels, RationalLevels, VectorTable, levels_of
 from .paper.family import DEFAULT_LIMITS, PaperResult, paper_procedure
 from .paper.circle_polygon import level_polygon
 from .paper.polygon import straight_lines
@@ -172,16 +172,19 @@ def built_levels(levels: Levels) -> Levels:
     # Levels.floats holds (the lazy levels hold a copy of it).
     pts, centre = lazy.points, lazy.centre
     owner = levels.floats[0] if levels.floats is not None else None
-    vectors = {} if lazy.radii is None and pts is not None and owner is not None else None
+    vectors = VectorTable([None] * len(pts)) \
+        if lazy.radii is None and pts is not None and owner is not None else None
     if vectors is not None:
         cx, cy = centre
     new, setter = object.__new__, object.__setattr__
     built = []
+    any_vector = False
     for k, (start, stop) in enumerate(zip(bounds, bounds[1:])):
         points = (flat[start],) if stop - start == 1 else tuple(flat[start:stop])
         r2 = known.get(k)
         if r2 is None:
             if vectors is not None and stop - start == 1:
+                any_vector = True
                 i = points[0]
                 x, y = pts[i]
                 dx, dy = x - cx, y - cy
@@ -194,7 +197,7 @@ def built_levels(levels: Levels) -> Levels:
         setter(level, "points", points)
         built.append(level)
     return replace(levels, levels=tuple(built),
-                   vectors=(owner, vectors) if vectors else levels.vectors)
+                   vectors=(owner, vectors) if vectors and any_vector else levels.vectors)
 
 
 __all__ = ["Analysis", "Options", "analyse", "PARTS"]

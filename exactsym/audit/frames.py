@@ -24,12 +24,14 @@ from __future__ import annotations
 from ..exact import fmpq
 from ..exact.number import is_plain_rational
 from ..geometry.configuration import Configuration, Similarity
-from ..geometry.levels import Level, Levels, mapped_levels
+from ..geometry.levels import Level, Levels, ScaledLevels, VectorTable, mapped_levels
 from ..geometry.predicates import PseudoAngle
 from ..geometry.sec import Circle
+from ..paper.circle_polygon import CirclePolygon
+from ..paper.family import Ring
 
 __all__ = ["POLAR_FRAMES", "CARTESIAN_FRAMES", "FRAME_TEXT", "transformed", "frame_levels",
-           "mapped_rational_levels", "reflected_frame", "slim"]
+           "mapped_rational_levels", "reflected_frame", "slim", "rings_fit", "frame_rings"]
 
 #: The frames the paper is recomputed in: polar configurations about C stay polar.
 POLAR_FRAMES = {"reflection": Similarity(reflect=True),
@@ -58,11 +60,47 @@ def transformed(config: Configuration, ring_data: Levels, frame: str) -> Configu
     if ring_data.polar and config.radii is not None:
         return config.transformed(POLAR_FRAMES[frame])
     cartesian = config.cartesian() if config.polar is not None else config
-    return cartesian.transformed(CARTESIAN_FRAMES[frame])
+    return _similar(cartesian, CARTESIAN_FRAMES[frame])
+
+
+def _similar(config: Configuration, sim: Similarity) -> Configuration:
+    """:meth:`Configuration.transformed` of a Cartesian ``config`` under one of
+    :data:`CARTESIAN_FRAMES`, the same points, without its check that no two robots
+    coincide: a similarity is one-to-one and scales every distance by the same factor
+    (at least 1 here, so fat robots cannot come to overlap either); on a million robots
+    the check computed every point's floats again and grouped them (a second per frame)."""
+    system = config.system
+    coerce = system.coerce
+    c, s = (coerce(1), coerce(0)) if sim.rotation is None else \
+        (coerce(sim.rotation[0]), coerce(sim.rotation[1]))
+    k = coerce(sim.scale)
+    dx, dy = (coerce(v) for v in (sim.shift or (0, 0)))
+    if sim.reflect and sim.rotation is None and sim.scale == 1 and sim.shift is None:
+        points = [(x, -y) for x, y in config.points]
+    elif not sim.reflect and sim.rotation is not None and sim.shift is not None:
+        # k (c x - s y) + dx = (k c) x - (k s) y + dx: the same exact values with two
+        # products fewer per point
+        if sim.scale != 1:
+            c, s = k * c, k * s
+        points = [(c * x - s * y + dx, s * x + c * y + dy) for x, y in config.points]
+    else:
+        points = []             # as Configuration.transformed computes them
+        for x, y in config.points:
+            if sim.reflect:
+                y = -y
+            if sim.rotation is not None:
+                x, y = c * x - s * y, s * x + c * y
+            if sim.scale != 1:
+                x, y = k * x, k * y
+            if sim.shift is not None:
+                x, y = x + dx, y + dy
+            points.append((x, y))
+    return Configuration(source=config.source, name=config.name, model=config.model,
+                         points=points, system=system)
 
 
 def frame_levels(config: Configuration, ring_data: Levels, moved: Configuration,
-                 frame: str, rings=()) -> Levels | None:
+                 frame: str, rings=(), several: bool = False) -> Levels | None:
     """The levels of ``moved`` (``config`` in ``frame``, from :func:`transformed`) mapped
     from ``ring_data`` (the levels of ``config``) along the frame's similarity (the SEC,
     the levels and their radii are ground truth, not the paper's), or None (then the
@@ -74,7 +112,7 @@ def frame_levels(config: Configuration, ring_data: Levels, moved: Configuration,
         return None
     sim = CARTESIAN_FRAMES[frame]
     if ring_data.enclosures is None:
-        return mapped_rational_levels(config, ring_data, moved, sim)
+        return mapped_rational_levels(config, ring_data, moved, sim, several)
     enc = ring_data.enclosures
     if len(enc.points) != config.n or not all(a is b for a, b in zip(enc.points, config.points)):
         return None
@@ -97,37 +135,39 @@ def _nothing() -> tuple:
 
 
 def _linear(sim: Similarity):
-    """The linear part of ``sim`` (no ``turn``) as a function of (x, y)."""
-    c, s = sim.rotation if sim.rotation is not None else (None, None)
+    """The linear part of ``sim`` (no ``turn``) as a function of (x, y); a rotation's
+    matrix is taken times the scale (k (c x - s y) = (k c) x - (k s) y exactly: two
+    products fewer per point)."""
     k = sim.scale
-
-    def linear(x, y):
-        if sim.reflect:
-            y = -y
-        if c is not None:
-            x, y = c * x - s * y, s * x + c * y
+    if sim.rotation is not None:
+        c, s = sim.rotation
         if k != 1:
-            x, y = k * x, k * y
-        return x, y
-    return linear
+            c, s = k * c, k * s
+        if sim.reflect:
+            return lambda x, y: (c * x + s * y, s * x - c * y)
+        return lambda x, y: (c * x - s * y, s * x + c * y)
+    if sim.reflect:
+        return (lambda x, y: (x, -y)) if k == 1 else (lambda x, y: (k * x, -k * y))
+    return (lambda x, y: (x, y)) if k == 1 else (lambda x, y: (k * x, k * y))
 
 
 def mapped_rational_levels(config: Configuration, ring_data: Levels, moved: Configuration,
-                           sim: Similarity) -> Levels | None:
+                           sim: Similarity, several: bool = False) -> Levels | None:
     """See :func:`_mapped` (without the starts)."""
-    found = _mapped(config, ring_data, moved, sim)
+    found = _mapped(config, ring_data, moved, sim, several)
     return None if found is None else found[0]
 
 
 def _mapped(config: Configuration, ring_data: Levels, moved: Configuration,
-            sim: Similarity) -> tuple | None:
+            sim: Similarity, several: bool = False) -> tuple | None:
     """The levels of ``moved`` = ``config`` under ``sim`` (robot indices kept), read from
     ``ring_data`` (see the module docstring), or None unless the SEC centre of
     ``ring_data`` is rational (homogeneous D = 1), its levels are built (a tuple, as
     :func:`exactsym.analysis.built_levels` leaves them), every robot is on one level,
     ``sim`` has no ``turn`` and both configurations' coordinates are plain rationals.
     ``Levels.vectors`` of the result holds the copy's vector S(p) - S(C) of every robot
-    (taken by the family layer's polygons).  Returns ``(levels, starts)``: ``starts[k]``,
+    (taken by the family layer's polygons; ``several``: of the robots on levels of
+    several robots only, for :func:`frame_rings`).  Returns ``(levels, starts)``: ``starts[k]``,
     for a level of several robots, where the copy's order starts in the first frame's
     order (reversed under a reflection)."""
     lv = ring_data.levels
@@ -154,18 +194,39 @@ def _mapped(config: Configuration, ring_data: Levels, moved: Configuration,
     # under a reflection alone
     known = ring_data.vectors
     old = known[1] if known is not None and known[0] is config.points else None
-    if old is not None and len(old) == n and sim.reflect and sim.rotation is None \
-            and sim.scale == 1 and sim.shift is None:
+    mirror = sim.reflect and sim.rotation is None and sim.scale == 1 and sim.shift is None
+    if several:
+        # only the robots on levels of several robots (a one-robot level's ring in the
+        # frame maps the first frame's vector on demand: frame_rings)
+        mp = moved.points
+        robots = [i for level in lv if len(level.points) > 1 for i in level.points]
+        if old is not None and mirror and all(i in old for i in robots):
+            vectors = {i: (old[i][0], -old[i][1]) for i in robots}
+        else:
+            vectors = {i: (mp[i][0] - ncx, mp[i][1] - ncy) for i in robots}
+    elif old is not None and len(old) == n and mirror and \
+            (not isinstance(old, VectorTable) or old.complete()):
         vectors = {i: (vx, -vy) for i, (vx, vy) in old.items()}
     else:
         vectors = {i: (px - ncx, py - ncy) for i, (px, py) in enumerate(moved.points)}
     new, setter = object.__new__, object.__setattr__
     built = []
     starts = {}
+    if several and k2 != 1:
+        own = {}
+        for k, level in enumerate(lv):
+            if len(level.points) > 1:
+                members, starts[k] = _counter_clockwise(level.points, vectors, sim.reflect)
+                own[k] = Level(level.radius_squared * k2, members)
+        return Levels(sec, ScaledLevels(lv, k2, own), False,
+                      vectors=(moved.points, vectors)), starts
     for k, level in enumerate(lv):
         members = level.points
         if len(members) > 1:
             members, starts[k] = _counter_clockwise(members, vectors, sim.reflect)
+        elif k2 == 1:
+            built.append(level)         # the same robot at the same squared radius
+            continue
         r2 = level.radius_squared
         out = new(Level)                # Level(r2 * k2, members) without the frozen __init__
         setter(out, "radius_squared", r2 if k2 == 1 else r2 * k2)
@@ -202,7 +263,7 @@ def _counter_clockwise(members: tuple, vectors: dict, reflect: bool) -> tuple[tu
 
 
 def reflected_frame(config: Configuration, ring_data: Levels, moved: Configuration,
-                    rings) -> tuple:
+                    rings, several: bool = False) -> tuple:
     """``(levels, polygons)`` of the reflected copy ``moved`` (x, y) -> (x, -y) of ``config``:
     the levels as :func:`frame_levels` maps them, and the polygons of its levels of two or
     more robots as the paper's procedure takes them (``level_polygons``; None where a
@@ -218,12 +279,11 @@ def reflected_frame(config: Configuration, ring_data: Levels, moved: Configurati
     sim = CARTESIAN_FRAMES["reflection"]
     found = None
     if not ring_data.polar and moved.polar is None and ring_data.enclosures is None:
-        found = _mapped(config, ring_data, moved, sim)
+        found = _mapped(config, ring_data, moved, sim, several)
     if found is None:
         return frame_levels(config, ring_data, moved, "reflection", rings), None
     levels, starts = found
     vectors = levels.vectors[1]
-    from ..paper.circle_polygon import CirclePolygon
     first = {}
     for ring in rings:
         poly = ring.polygon
@@ -256,3 +316,154 @@ def reflected_frame(config: Configuration, ring_data: Levels, moved: Configurati
                                      for j in range(m)]
         out.append(poly)
     return levels, out
+
+
+# ------------------------------------------------------------ the frame's G, mapped
+def rings_fit(G, ring_data: Levels) -> bool:
+    """Whether ``G`` (the paper's G of ``ring_data``'s configuration, one Cartesian ring
+    per level) can be mapped into a frame by :func:`frame_rings`."""
+    lv = ring_data.levels
+    if ring_data.polar or ring_data.enclosures is not None or not isinstance(lv, tuple) \
+            or len(G) != len(lv):
+        return False
+    return all(g.levels == (k + 1,) and g.robots == level.points
+               for k, (g, level) in enumerate(zip(G, lv)))
+
+
+def frame_rings(G, levels: Levels, moved: Configuration, frame: str,
+                level_polygons=None) -> tuple | None:
+    """G of the frame ``frame`` (``moved``, its levels ``levels`` from :func:`_mapped`
+    with ``several``), equal ring by ring to
+    :func:`exactsym.paper.family.concentric_polygons` of ``moved``, ``levels`` and
+    ``level_polygons`` (tests/audit/test_frames.py), from the first frame's ``G``
+    (:func:`rings_fit`): a level of one robot becomes a :class:`_FrameRing`, which holds
+    the first frame's ring and makes its vector L(p - C) when it is read (issue 33: on a
+    million robots each frame built a polygon, a ring and a vector per robot, about
+    850 MB, though a one-robot level's verdicts are fixed); a level of several robots
+    is built as the family layer builds it.  None when ``levels`` are not so mapped."""
+    from ..paper.family.concentric import new_ring
+    from ..paper.homogeneous import is_short, register
+    linear = _linear(CARTESIAN_FRAMES[frame])
+    k2 = fmpq(CARTESIAN_FRAMES[frame].scale) ** 2
+    # the frame's map as a class attribute of a class of its own: a ring holds its base
+    # only (64 bytes a ring)
+    kind = type("_FrameRing", (_FrameRing,), {"__slots__": (), "frame": _VectorMap(linear, k2)})
+    set_base = _FrameRing.base.__set__
+    cx, cy = levels.sec.centre
+    homogeneous = levels.sec.homogeneous
+    pts = moved.points
+    out = []
+    make = object.__new__
+    mapped = levels.levels
+    if not isinstance(mapped, (tuple, ScaledLevels)) or len(mapped) != len(G):
+        return None
+    for k, base in enumerate(G):
+        if len(base.robots) == 1 and base.polygon is not None:
+            ring = make(kind)
+            set_base(ring, base)
+            out.append(ring)
+            continue
+        level = mapped[k]
+        robots = level.points
+        if base.polygon is None:                # the robot at C
+            out.append(new_ring(base.name, None, level.radius_squared, base.levels, robots,
+                                robots))
+            continue
+        labels = tuple([(i,) for i in robots])
+        built = level_polygons[k] if level_polygons is not None else None
+        poly = make(CirclePolygon)
+        if built is not None and built.labels == robots and \
+                not built.__dict__.get("cleared"):      # its directions are p - C
+            poly.__dict__.update(labels=labels, directions=built.directions, polar=False,
+                                 one_circle=True)
+            for kept in ("integer_vectors", "gap_ids"):
+                if kept in built.__dict__:
+                    poly.__dict__[kept] = built.__dict__[kept]
+        else:
+            dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in robots])
+            if is_short(homogeneous):       # else register records nothing
+                for i, d in zip(robots, dirs):
+                    register(d, pts[i], homogeneous)
+            poly.__dict__.update(labels=labels, directions=dirs, polar=False,
+                                 one_circle=True)
+        out.append(new_ring(base.name, poly, level.radius_squared, base.levels, robots,
+                            robots))
+    return tuple(out)
+
+
+class _VectorMap:
+    """The linear part of a frame's similarity, applied to a vector p - C, and the
+    square of its scale (the factor of every squared radius)."""
+    __slots__ = ("linear", "k2")
+
+    def __init__(self, linear, k2):
+        self.linear, self.k2 = linear, k2
+
+
+class _FrameRing(Ring, CirclePolygon):
+    """The ring of a one-robot level in a frame, and its polygon (one vertex; the ring is
+    its own polygon: the family layer reads a ring's polygon millions of times): the
+    first frame's ring ``base`` (its name, level, robot) seen through the frame's
+    :class:`_VectorMap` ``frame`` (a class attribute: :func:`frame_rings` makes a subclass
+    per frame).  The vertex's direction is L(d) for the first frame's
+    direction d = p - C, made when first read and kept; the squared radius is the first
+    frame's times scale^2.  Equal to another such ring with equal fields."""
+
+    __slots__ = ("base",)
+    frame: _VectorMap           # a class attribute of the frame's subclass
+    n = 1
+    at_centre = False
+    polar = False
+    one_circle = True
+
+    @property
+    def polygon(self) -> "_FrameRing":
+        return self
+
+    @property
+    def name(self) -> str:
+        return self.base.name
+
+    @property
+    def levels(self) -> tuple:
+        return self.base.levels
+
+    @property
+    def robots(self) -> tuple:
+        return self.base.robots
+
+    @property
+    def own(self) -> tuple:
+        return self.base.robots
+
+    @property
+    def labels(self) -> tuple:
+        return self.base.polygon.labels
+
+    @property
+    def radius_squared(self):
+        k2 = self.frame.k2
+        r2 = self.base.radius_squared
+        return r2 if k2 == 1 else r2 * k2
+
+    @property
+    def directions(self) -> tuple:
+        # kept in the instance dict, made only for the rings whose direction is read
+        found = self.__dict__.get("_dirs")
+        if found is None:
+            found = self.__dict__["_dirs"] = (self.frame.linear(*self.base.polygon.directions[0]),)
+        return found
+
+    def _fields(self) -> tuple:
+        return (self.name, self.radius_squared, self.levels, self.robots, self.directions)
+
+    def __eq__(self, other):
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return self._fields() == other._fields()
+
+    def __hash__(self) -> int:
+        return hash((self.name, self.robots))
+
+    def __repr__(self) -> str:
+        return f"<{self.name} in a frame: robot {self.robots[0]}, direction {self.directions[0]}>"

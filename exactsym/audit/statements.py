@@ -46,7 +46,8 @@ was checked (``docs/interpretations.md``, "Bounds of the family layer").
 
 from __future__ import annotations
 
-from .frames import FRAME_TEXT, frame_levels, reflected_frame, slim, transformed
+from .frames import (FRAME_TEXT, frame_levels, frame_rings, reflected_frame, rings_fit, slim,
+                     transformed)
 from .groups import SubGroups, group_about_centre
 from .handedness import MIRROR_RUN, decided_without_tie, frames_agree, other_handedness_findings
 from .levels import level_findings
@@ -450,10 +451,14 @@ def _mirror_run(config, ring_data, paper, kw) -> F.PaperResult | None:
     Section-3 claims not: they do not depend on handedness), or None when it cannot be
     run exactly."""
     moved = transformed(config, ring_data, "reflection")
+    G = paper.G_rings
+    several = rings_fit(G, ring_data)
     try:
-        levels, polygons = reflected_frame(config, ring_data, moved, paper.G_rings)
+        levels, polygons = reflected_frame(config, ring_data, moved, G, several)
+        rings = frame_rings(G, levels, moved, "reflection", polygons) \
+            if several and levels is not None else None
         return slim(F.paper_procedure(moved, levels, **kw, level_polygons=polygons,
-                                      claims=False, describe_polygons=False))
+                                      claims=False, describe_polygons=False, rings=rings))
     except (ArithmeticError, NotImplementedError, ValueError):
         return None
 
@@ -477,10 +482,14 @@ def _leader_check(config, ring_data, paper, group, kw, options,
                 res = mirror
             else:
                 moved = transformed(config, ring_data, frame)
-                res = slim(F.paper_procedure(moved, frame_levels(config, ring_data, moved,
-                                                                  frame, paper.G_rings), **kw,
-                                             claims=False, check_vl=False,
-                                             describe_polygons=False))
+                G = paper.G_rings
+                several = rings_fit(G, ring_data)
+                levels = frame_levels(config, ring_data, moved, frame, G, several)
+                rings = frame_rings(G, levels, moved, frame) \
+                    if several and levels is not None else None
+                res = slim(F.paper_procedure(moved, levels, **kw, claims=False,
+                                             check_vl=False, describe_polygons=False,
+                                             rings=rings))
             if frames_agree(paper, res):
                 continue
             entry, note = _frame_difference(config, paper, res, frame, kw)

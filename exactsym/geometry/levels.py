@@ -49,7 +49,8 @@ class Levels:
     """The SEC and the levels G1..Gt; ``polar`` is True when both were computed from
     ``(r^2, turn)`` about the origin (then ``turns`` gives each point's turn).
     ``levels``: a tuple of :class:`Level`, or for many rational points a
-    :class:`RationalLevels` (a sequence equal to that tuple, built as it is read)."""
+    :class:`RationalLevels` (a sequence equal to that tuple, built as it is read), or in
+    the audit's scaled frame a :class:`ScaledLevels` (the same)."""
     sec: Circle
     levels: Sequence[Level]
     polar: bool
@@ -60,9 +61,31 @@ class Levels:
     # reused by the rays
     enclosures: object = field(default=None, repr=False, compare=False)
     # (points, {i: (x - cx, y - cy)}): exact vectors from the SEC centre of points of the
-    # sequence ``points``, computed with their level's squared radius
-    # (:func:`exactsym.analysis.built_levels`) and taken by the family layer's polygons
+    # sequence ``points`` (a dict or a VectorTable), computed with their level's squared
+    # radius (:func:`exactsym.analysis.built_levels`) and taken by the family layer's polygons
     vectors: tuple | None = field(default=None, repr=False, compare=False)
+
+
+class VectorTable(list):
+    """The vectors p - C of a configuration's points by index (``Levels.vectors``), None
+    where not computed: a list read like the dict it replaces (``get``, ``in``, ``items``;
+    on a million robots the dict's table was 40 MB beside the vectors)."""
+
+    __slots__ = ()
+
+    def get(self, i, default=None):
+        found = self[i]
+        return default if found is None else found
+
+    def __contains__(self, i) -> bool:
+        return type(i) is int and 0 <= i < len(self) and self[i] is not None
+
+    def items(self):
+        return ((i, v) for i, v in enumerate(self) if v is not None)
+
+    def complete(self) -> bool:
+        """Whether every point has its vector."""
+        return not list.__contains__(self, None)
 
 
 def polar_sec(polar) -> Circle | None:
@@ -237,7 +260,7 @@ class RationalLevels(Sequence):
         return (self[k] for k in range(len(self)))
 
     def __eq__(self, other):
-        if isinstance(other, (tuple, RationalLevels)):
+        if isinstance(other, (tuple, RationalLevels, ScaledLevels)):
             return len(self) == len(other) and tuple(self) == tuple(other)
         return NotImplemented
 
@@ -261,6 +284,52 @@ class RationalLevels(Sequence):
         rank[flat] = np.repeat(np.arange(len(self)), np.diff(self.bounds))
         return None if (rank < 0).any() else rank.tolist()
 
+
+
+class ScaledLevels(Sequence):
+    """The levels ``base`` (a tuple of :class:`Level`) with every squared radius times
+    ``k2`` (a similarity of scale sqrt(k2) maps the levels so), as a read-only sequence
+    equal to that tuple, each :class:`Level` built when it is read; ``own``: levels given
+    whole instead (by index: those whose robots the similarity put in another order).
+    The audit's frames hold them (:mod:`exactsym.audit.frames`): the paper's procedure
+    in a frame reads the levels of several robots only, and a level per robot was 100 MB
+    on a million robots (issue 33)."""
+
+    __slots__ = ("base", "k2", "own")
+
+    def __init__(self, base: tuple, k2, own: dict):
+        self.base, self.k2, self.own = base, k2, own
+
+    def __len__(self) -> int:
+        return len(self.base)
+
+    def __getitem__(self, k):
+        if isinstance(k, slice):
+            return tuple(self[j] for j in range(*k.indices(len(self))))
+        m = len(self.base)
+        if k < 0:
+            k += m
+        if not 0 <= k < m:
+            raise IndexError("level index out of range")
+        found = self.own.get(k)
+        if found is not None:
+            return found
+        level = self.base[k]
+        return Level(level.radius_squared * self.k2, level.points)
+
+    def __iter__(self):
+        return (self[k] for k in range(len(self)))
+
+    def __eq__(self, other):
+        if isinstance(other, (tuple, RationalLevels, ScaledLevels)):
+            return len(self) == len(other) and tuple(self) == tuple(other)
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(tuple(self))
+
+    def __repr__(self) -> str:
+        return repr(tuple(self))
 
 class AlgebraicLevels(RationalLevels):
     """The levels of points with irrational coordinates (:mod:`exactsym.geometry.algebraic_filtered`),

@@ -75,7 +75,7 @@ from ..exact import fmpq, normal_turn, rational_sqrt, sign
 from ..exact.number import any_algebraic, is_algebraic, is_sparse, tower_of
 from ..exact.context import Cache
 from .filtered import ball, compare_directions
-from .homogeneous import register
+from .homogeneous import is_short, register
 from .inverses import inverse_length, squared_length
 
 __all__ = ["CirclePolygon", "level_polygon", "polygon_from_directions", "angular_distance",
@@ -345,12 +345,14 @@ def level_polygon(config, rings, level_index: int, cleared: bool = False) -> Cir
         dirs = scaled = tuple((den * pts[i][0] - x, den * pts[i][1] - y) for i in labels)
     else:
         cx, cy = rings.sec.centre
-        dirs = tuple((pts[i][0] - cx, pts[i][1] - cy) for i in labels)
+        dirs = tuple([(pts[i][0] - cx, pts[i][1] - cy) for i in labels])
         scaled = _cleared(dirs) if cleared else None
     poly = CirclePolygon(labels, scaled or dirs, False)
-    for i, d in zip(labels, poly.directions):
-        # its short text (.homogeneous): D p - (X, Y) is a positive multiple of it too
-        register(d, pts[i], rings.sec.homogeneous)
+    homogeneous = rings.sec.homogeneous
+    if is_short(homogeneous):       # else register records nothing (decided once here)
+        for i, d in zip(labels, poly.directions):
+            # its short text (.homogeneous): D p - (X, Y) is a positive multiple of it too
+            register(d, pts[i], homogeneous)
     poly.__dict__["one_circle"] = True      # a level: one exact distance to C, by definition
     poly.__dict__["cleared"] = scaled is not None
     return poly

@@ -124,13 +124,12 @@ def _integer_key(u) -> tuple:
         g = gcd(a, b)
         lines.append((a // g, b // g))
     lines += edge_lines
-    chords = []
-    for i in range(n):
-        ax, ay = u[i]
-        for bx, by in u[i + 1:]:
-            d = ax * bx + ay * by
-            chords.append(-d * abs(d))
-    return (False, n, _intern(gaps), tuple(diam), _intern(lines), _ranks(chords))
+    # the chord keys -d|d| (d = u_i . u_j) rank as the dot products d in reverse:
+    # -d|d| is strictly decreasing in d
+    dots = [ax * bx + ay * by for i, (ax, ay) in enumerate(u) for bx, by in u[i + 1:]]
+    order = {v: k for k, v in enumerate(sorted(set(dots), reverse=True))}
+    return (False, n, _intern(gaps), tuple(diam), _intern(lines),
+            tuple([order[v] for v in dots]))
 
 
 def _exact_key(polygon: CirclePolygon) -> tuple:

@@ -176,22 +176,41 @@ def _write(value, pad: str, out: list) -> None:
 
 #: Items of a long list joined into one piece of text (then handed to the stream).
 _CHUNK = 2048
+#: Characters of a piece: a :class:`~exactsym.report.json_form.JSONText` longer than this
+#: (a run of entries joined) is a piece of its own, and a piece of items is handed on
+#: once this long.
+_BLOCK = 1 << 16
 
 
 def _write_items(items, pad: str, out) -> None:
     """A long list (or :class:`~exactsym.report.json_form.LevelEntries`) of containers,
-    one item per line: joined by pieces of :data:`_CHUNK` items, so that the text of a
-    million levels is never one string (issue 33)."""
+    one item per line: joined by pieces of at most :data:`_CHUNK` items or about
+    :data:`_BLOCK` characters (a :class:`~exactsym.report.json_form.JSONText` may hold
+    several, joined by the same separator: a long one is a piece of its own), so that
+    the text of a million levels is never one string (issue 33)."""
     inner = pad + "  "
     sep = ",\n" + inner
     out.append("[\n" + inner)
     chunk = []
     first = True
-    for item in (items.json_items() if isinstance(items, LevelEntries) else items):
-        chunk.append(item if type(item) is JSONText else _item(item))
-        if len(chunk) == _CHUNK:
+    size = 0
+    for item in (items.json_items(sep) if isinstance(items, LevelEntries) else items):
+        if type(item) is JSONText and len(item) > _BLOCK:
+            # a run of entries already joined (LevelEntries.json_items): a piece of its own
+            if chunk:
+                out.append(("" if first else sep) + sep.join(chunk))
+                first, chunk, size = False, [], 0
+            if not first:
+                out.append(sep)
+            out.append(item)
+            first = False
+            continue
+        text = item if type(item) is JSONText else _item(item)
+        chunk.append(text)
+        size += len(text)
+        if len(chunk) == _CHUNK or size > _BLOCK:
             out.append(("" if first else sep) + sep.join(chunk))
-            first, chunk = False, []
+            first, chunk, size = False, [], 0
     if chunk:
         out.append(("" if first else sep) + sep.join(chunk))
     out.append("\n" + pad + "]")

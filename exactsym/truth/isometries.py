@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..exact import fmpq
+from .rays_filtered import firsts
 
 
 @dataclass(frozen=True)
@@ -104,7 +105,7 @@ def _permutation(layout: Layout, image_ray) -> tuple[int, ...]:
     rays = layout.rays
     m = len(rays)
     if m > 64 and layout.n == m + (layout.centre_index is not None):  # one point per ray
-        first = np.fromiter((ray[0] for ray in rays), dtype=np.int64, count=m)
+        first = firsts(rays)
         perm = np.arange(layout.n)
         perm[first] = first[image_ray(np.arange(m))]
         return tuple(perm.tolist())

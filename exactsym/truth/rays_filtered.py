@@ -27,6 +27,48 @@ def integer_pseudo_angle(x, y) -> fmpq:
 
 
 
+class SingletonRays:
+    """Rays of one point each, counter-clockwise, as a read-only sequence equal to the
+    tuple ``((i,), (j,), ...)`` of them: the points in one NumPy integer array
+    (``first``), each ray's tuple made when it is read.  The symmetry group keeps its
+    rays (:class:`exactsym.truth.isometries.Layout`); on a million random points the
+    tuples and their integers were 90 MB (issue 33)."""
+
+    __slots__ = ("first",)
+
+    def __init__(self, first: np.ndarray):
+        self.first = first
+
+    def __len__(self) -> int:
+        return len(self.first)
+
+    def __getitem__(self, k):
+        if isinstance(k, slice):
+            return tuple((i,) for i in self.first[k].tolist())
+        return (int(self.first[k]),)
+
+    def __iter__(self):
+        return ((i,) for i in self.first.tolist())
+
+    def __eq__(self, other):
+        if isinstance(other, (tuple, list, SingletonRays)):
+            return len(self) == len(other) and tuple(self) == tuple(other)
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(tuple(self))
+
+    def __repr__(self) -> str:
+        return repr(tuple(self))
+
+
+def firsts(rays) -> np.ndarray:
+    """The first point of each ray, as a NumPy integer array."""
+    if isinstance(rays, SingletonRays):
+        return rays.first
+    return np.fromiter((ray[0] for ray in rays), dtype=np.int64, count=len(rays))
+
+
 def level_ranks(ring: Levels, n: int):
     """``rank[i]``: the index of point i's level (nearest first, so ranks order as the
     squared radii), or None unless the levels hold every point once."""
@@ -135,10 +177,11 @@ def filtered_rays(points, centre, rank, floats=None):
     if not len(idx):                     # one point, at the centre
         return centre_index, [], np.zeros(0, dtype=np.int64), LazyGaps([], vector, vectors_of), []
     order, starts = certified_groups(keys[idx], errs[idx])
-    sorted_idx = idx[order].tolist()
+    sorted_array = idx[order]
+    sorted_idx = sorted_array.tolist()
     rays: list = []
     if len(starts) == len(sorted_idx):
-        rays = [(i,) for i in sorted_idx]
+        rays = SingletonRays(sorted_array.astype(np.int64, copy=False))
     else:
         bounds = starts.tolist() + [len(sorted_idx)]
         for g in range(len(bounds) - 1):
@@ -161,7 +204,7 @@ def filtered_rays(points, centre, rank, floats=None):
     if len(rays) == len(sorted_idx):     # one point per ray: ids are the ranks of its level
         # taken along `rays`, not along the float order: inside a group the exact sort
         # may have reordered the rays (the near-tie defect of issue 9)
-        first = np.fromiter((ray[0] for ray in rays), dtype=np.int64, count=len(rays))
+        first = firsts(rays)
         ray_ids = np.unique(np.asarray(rank)[first], return_inverse=True)[1]
     else:                                # ids ranked by value: they order as the radii do
         radii = [tuple([rank[i] for i in ray]) for ray in rays]

@@ -62,8 +62,8 @@ from ..geometry.algebraic_filtered import certified_c1
 from ..exact.context import Cache
 from ..geometry.levels import Levels, RationalLevels, levels_of
 from ..geometry.sec import LazyCentre
-from .rays_filtered import filtered_rays, integer_pseudo_angle as _pseudo_angle_of_integers, \
-    level_ranks
+from .rays_filtered import SingletonRays, filtered_rays, firsts, \
+    integer_pseudo_angle as _pseudo_angle_of_integers, level_ranks
 from ..geometry.strings import cyclic_occurrences as occurrences, cyclic_period
 
 __all__ = ["Isometry", "SymmetryGroup", "symmetry_group", "pseudo_angle", "least_rotation",
@@ -551,8 +551,7 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     steps = np.arange(m)
     ray_order = (-(t + steps)) % m if use_cw else (s + steps) % m
     if m > 64 and n == m + (centre_index is not None):      # one point per ray
-        first = np.fromiter((ray[0] for ray in rays), dtype=np.int64, count=m)
-        labelling = first[ray_order].tolist()
+        labelling = firsts(rays)[ray_order].tolist()
     else:
         labelling = [i for r in ray_order.tolist() for i in rays[r]]
     if centre_index is not None:
@@ -572,7 +571,8 @@ def _symmetry_group(config: Configuration, ring: Levels) -> SymmetryGroup:
     else:
         leader = None
 
-    layout = Layout(centre, reference, centre_index, tuple(rays),
+    layout = Layout(centre, reference, centre_index,
+                    rays if isinstance(rays, SingletonRays) else tuple(rays),
                      tuple(ray_turns) if ray_turns is not None else None, points, n, period,
                      offsets)
     return SymmetryGroup(f"{'D' if mirrors else 'C'}{k}", k, mirrors, centre, ring.polar,

@@ -146,3 +146,86 @@ def test_the_reflected_polygons_carry_the_recomputed_keys(config):
     b = paper_procedure(moved, levels_of(moved), **kw)
     assert (a.leader, a.orderable, a.moves, a.trace) == (b.leader, b.orderable, b.moves,
                                                          b.trace)
+
+
+def _ring_fields(ring):
+    poly = ring.polygon
+    return (ring.name, ring.levels, ring.robots, ring.own, ring.radius_squared, ring.n,
+            ring.at_centre, None if poly is None else
+            (poly.labels, poly.directions, poly.polar, poly.n, poly.one_circle),
+            ring.lines)
+
+
+def _frame_family(config, ring, paper, frame):
+    """``(moved, levels, rings, polygons)`` of ``frame`` as the audit builds them."""
+    from exactsym.audit.frames import frame_rings, reflected_frame, rings_fit
+    moved = transformed(config, ring, frame)
+    assert rings_fit(paper.G_rings, ring)
+    if frame == "reflection":
+        levels, polygons = reflected_frame(config, ring, moved, paper.G_rings, True)
+    else:
+        levels, polygons = frame_levels(config, ring, moved, frame, paper.G_rings, True), None
+    rings = frame_rings(paper.G_rings, levels, moved, frame, polygons)
+    assert rings is not None
+    return moved, levels, rings, polygons
+
+
+@settings(max_examples=40, deadline=None)
+@given(rational_sets(), st.integers(0, 30))
+def test_frame_rings_equal_the_family_layers_polygons(config, singles):
+    """The frame's G mapped from the first frame's (:func:`exactsym.audit.frames.frame_rings`:
+    one-robot levels seen through the frame's linear map) equals ring by ring the G the
+    family layer builds from the copy's levels, computed from scratch, and the paper's
+    procedure given it acts as on the copy analysed from scratch; the copy's levels
+    (a lazy sequence under the similarity) equal the recomputed ones."""
+    import random
+    from exactsym.paper.family import concentric_polygons
+    rnd = random.Random(singles)
+    pts = [tuple(Fraction(str(c)) for c in p) for p in config.points]
+    far = max(abs(c) for p in pts for c in p) + 1
+    taken = set(pts)
+    for _ in range(singles):       # robots of levels of their own, inside the SEC
+        p = (Fraction(rnd.randint(-99, 99), 101) * far / 2,
+             Fraction(rnd.randint(-99, 99), 103) * far / 2)
+        if p not in taken:
+            taken.add(p)
+            pts.append(p)
+    config = _config([(str(x), str(y)) for x, y in pts])
+    ring = built_levels(levels_of(config))
+    paper = paper_procedure(config, ring)
+    for frame in FRAMES[1:]:
+        moved, levels, rings, polygons = _frame_family(config, ring, paper, frame)
+        fresh_levels = levels_of(moved)
+        assert tuple(levels.levels) == tuple(fresh_levels.levels)
+        fresh = concentric_polygons(moved, fresh_levels)
+        assert len(rings) == len(fresh)
+        for a, b in zip(rings, fresh):
+            assert _ring_fields(a) == _ring_fields(b)
+        kw = dict(claims=False, check_vl=False, describe_polygons=False)
+        a = paper_procedure(moved, levels, level_polygons=polygons, rings=rings, **kw)
+        b = paper_procedure(moved, fresh_levels, **kw)
+        assert (a.leader, a.orderable, a.moves, a.trace, a.complete) == \
+            (b.leader, b.orderable, b.moves, b.trace, b.complete)
+
+
+@settings(max_examples=40, deadline=None)
+@given(rational_sets())
+def test_transformed_equals_the_configurations_own_map(config):
+    """The audit's copy (no coincidence check: a similarity is one-to-one) has the points
+    :meth:`Configuration.transformed` computes."""
+    from exactsym.audit.frames import CARTESIAN_FRAMES
+    ring = levels_of(config)
+    for frame in FRAMES[1:]:
+        assert transformed(config, ring, frame).points == \
+            config.transformed(CARTESIAN_FRAMES[frame]).points
+
+
+def test_scaled_levels_equal_their_tuple():
+    from exactsym.exact import fmpq
+    from exactsym.geometry.levels import Level, ScaledLevels
+    base = (Level(fmpq(1, 3), (4,)), Level(fmpq(1, 2), (0, 2)), Level(fmpq(2), (1, 3)))
+    own = {1: Level(fmpq(2), (2, 0))}
+    lazy = ScaledLevels(base, fmpq(4), own)
+    want = (Level(fmpq(4, 3), (4,)), Level(fmpq(2), (2, 0)), Level(fmpq(8), (1, 3)))
+    assert len(lazy) == 3 and tuple(lazy) == want and lazy == want
+    assert lazy[-1] == want[-1] and lazy[1:] == want[1:] and hash(lazy) == hash(want)

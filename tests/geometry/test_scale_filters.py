@@ -12,7 +12,7 @@ import random
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import assume, given, settings, strategies as st
 
 import exactsym.truth.symmetry as symmetry
 from exactsym.geometry.configuration import Configuration
@@ -361,3 +361,35 @@ def test_large_orderings_pass_the_checker(with_centre):
     bad["claim"]["ordering"][5], bad["claim"]["ordering"][6] = order[6], order[5]
     ok, message = checker.verify_certificate(bad)
     assert not ok and "ordering" in message
+
+
+@settings(max_examples=10, deadline=None)
+@given(st.integers(0, 10 ** 6), st.integers(70, 200), st.booleans())
+def test_rays_of_one_point_each_are_held_compactly(seed_value, n, centre):
+    """Random rational points (one per ray), more than 64 and some with a robot at C:
+    the filtered path keeps its rays as :class:`exactsym.truth.rays_filtered.SingletonRays`
+    (one integer array), equal to the exact path's tuple of rays, with the same group,
+    ordering and symmetries (their permutations are built from the array)."""
+    import random
+    from exactsym.truth.rays_filtered import SingletonRays
+    rnd = random.Random(seed_value)
+    pts = {(rnd.randint(-10 ** 4, 10 ** 4), rnd.randint(-10 ** 4, 10 ** 4)) for _ in range(n)}
+    pts |= {(2 * 10 ** 4, 0), (-2 * 10 ** 4, 0)}        # the SEC about the origin
+    if centre:
+        pts.add((0, 0))
+    config = Configuration.from_points(sorted(pts))
+    ring = levels_of(config)
+    filtered = symmetry.symmetry_group(config, ring)
+    saved = symmetry._FILTER_MIN
+    try:
+        symmetry._FILTER_MIN = 10 ** 12
+        exact = symmetry.symmetry_group(config, ring)
+    finally:
+        symmetry._FILTER_MIN = saved
+    assert _summary(filtered) == _summary(exact)
+    rays = filtered._layout.rays
+    assume(all(len(ray) == 1 for ray in exact._layout.rays))    # no two points on a ray
+    assert isinstance(rays, SingletonRays)
+    assert rays == exact._layout.rays and tuple(rays) == tuple(exact._layout.rays)
+    assert rays[-1] == exact._layout.rays[-1] and rays[2:5] == exact._layout.rays[2:5]
+    assert hash(rays) == hash(tuple(exact._layout.rays))

@@ -120,7 +120,10 @@ def test_streamed_levels_write_the_same_bytes(monkeypatch, tmp_path):
         assert isinstance(streamed["levels"], LevelEntries)
         assert list(streamed["levels"]) == whole["levels"]
         for compact in (False, True):
-            out = io.StringIO()
-            report_module.write_json(streamed, out, compact=compact)
-            want = json.dumps(whole) if compact else _old_json_text(whole)
-            assert out.getvalue() == want + "\n"
+            # pieces by count, by size, and runs of entries joined as pieces of their own
+            for block in (1 << 16, 700, 10 ** 9):
+                monkeypatch.setattr(report_module, "_BLOCK", block)
+                out = io.StringIO()
+                report_module.write_json(streamed, out, compact=compact)
+                want = json.dumps(whole) if compact else _old_json_text(whole)
+                assert out.getvalue() == want + "\n"

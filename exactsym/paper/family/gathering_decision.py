@@ -90,24 +90,29 @@ def paper_procedure(config: Configuration, ring_data: Levels | None = None,
                     orientation: int = 1, reading: str = "literal", degree: str = "paper",
                     max_rounds: int = 3, claims: bool = True,
                     check_vl: bool = True, limits: Limits | None = None,
-                    level_polygons=None, describe_polygons: bool = True) -> PaperResult:
+                    level_polygons=None, describe_polygons: bool = True,
+                    rings=None) -> PaperResult:
     """See :func:`_paper_procedure` (run with the cyclic garbage collector paused: the
     family layer builds many small acyclic objects, one polygon per level).
     ``level_polygons``: the polygon layer's polygons of ``ring_data``'s levels, when
     built (:class:`exactsym.paper.polygon_report.LevelSection`): their directions are
     reused.  ``describe_polygons=False``: ``G`` and ``Gprime`` are left empty (the audit's
     runs in other frames only compare actions and traces; listing every polygon's lines
-    writes exact slopes, megabytes in a field of degree thousands)."""
+    writes exact slopes, megabytes in a field of degree thousands).  ``rings``: G itself,
+    equal to :func:`concentric_polygons` of ``config`` and ``ring_data``, when the caller
+    has it (the audit's frames map the first frame's G: :mod:`exactsym.audit.frame_rings`)."""
     with no_cycle_collection():
         return _paper_procedure(config, ring_data, orientation, reading, degree, max_rounds,
-                                claims, check_vl, limits, level_polygons, describe_polygons)
+                                claims, check_vl, limits, level_polygons, describe_polygons,
+                                rings)
 
 
 def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
                      orientation: int = 1, reading: str = "literal", degree: str = "paper",
                      max_rounds: int = 3, claims: bool = True,
                      check_vl: bool = True, limits: Limits | None = None,
-                     level_polygons=None, describe_polygons: bool = True) -> PaperResult:
+                     level_polygons=None, describe_polygons: bool = True,
+                     rings=None) -> PaperResult:
     """Run the paper on ``config``: GatheringPattern's decision (lines 1-5) and the leader
     election of Section 4.2 (Preprocess, MakeAsym when G_t is symmetric, ElectLeader).
 
@@ -126,7 +131,7 @@ def _paper_procedure(config: Configuration, ring_data: Levels | None = None,
     finish = _finish if describe_polygons else partial(_finish, describe_polygons=False)
     trace: list = []
     bounded: dict = {}
-    G = concentric_polygons(config, ring_data, level_polygons)
+    G = rings if rings is not None else concentric_polygons(config, ring_data, level_polygons)
     polar = is_polar(G)
     trace_entry(trace, "GatheringPattern", 2, few_names(G), "def-sym-calG",
                 f"G = ({family_text(G)}) about the SEC centre", round=1)
