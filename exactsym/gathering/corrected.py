@@ -73,6 +73,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 from functools import lru_cache
+from itertools import chain
 
 from flint import fmpq
 
@@ -80,7 +81,8 @@ from . import geometry as g
 from .corrected_choice import SortKey, distinct_after, ground_ranks, keeps_a_leader, \
     literal_pattern_exists, no_leader, profile, profile_compare
 from .corrected_paths import layer_one_point, outward_point, path_blockers, \
-    path_is_clear, paths_to_centre, piece_within, to_slot_paths
+    path_is_clear, paths_to_centre, piece_within, slot_approach_paths, spokes, \
+    to_slot_paths, walled_off
 from .pattern import Pattern, capacity, recognise, slot
 from .robot import Decision, Move, Readings, decide, radial_point
 from .run_home import snapshot_key
@@ -288,6 +290,13 @@ def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=No
         return s_ccw, l, "slot"
     if len(pat.robots) <= 4 and stay:
         ends = (s_ccw, s_cw)
+        # an end that spokes wall off from the mover on both ways round C is out of
+        # reach (corrected_paths.spokes: static, so the same from every point of the way)
+        limit2 = min((g.dist2(pts[j], centre) for j in stay), key=SortKey)
+        walls = spokes(centre, pts, mover, unit, limit2) if mover is not None else []
+        open_ends = [s for s in ends if not walled_off(p, centre, s, walls)]
+        if len(open_ends) == 1:
+            return open_ends[0], l, "slot"
         if mover is not None:
             # the ends whose completion keeps C and a leader (both read the target and
             # the robots that stand still only): a choice every point of the way repeats
@@ -504,7 +513,8 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
         paths = [[g.Segment(pts[m], target)]]
         allowed = pat.robots
     else:
-        paths = list(to_slot_paths(pts[m], centre, target, l, unit, None, tower, pts, m))
+        paths = list(to_slot_paths(pts[m], centre, target, l, unit, None, tower, pts, m)) + \
+            list(slot_approach_paths(pts[m], centre, target, pts, m, unit2))
         allowed = pat.robots
     blockers = set()
     for path in paths:
@@ -594,7 +604,8 @@ def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, to
     else:
         others = [g.dist2(pts[j], centre) for j in R if j != i]
         limit2 = min(others, key=SortKey) if others else None
-        paths = to_slot_paths(pts[i], centre, target, l, unit, limit2, tower, pts, i)
+        paths = chain(to_slot_paths(pts[i], centre, target, l, unit, limit2, tower, pts, i),
+                      slot_approach_paths(pts[i], centre, target, pts, i, unit2, limit2))
         allowed = pat.robots
     for path in paths:
         if not path or (tied_start and isinstance(path[0], g.Arc)):
