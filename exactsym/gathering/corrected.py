@@ -80,6 +80,7 @@ from flint import fmpq
 from . import geometry as g
 from .corrected_choice import SortKey, distinct_after, ground_ranks, keeps_a_leader, \
     literal_pattern_exists, no_leader, profile, profile_compare
+from .corrected_mirror import mirror_step
 from .corrected_paths import layer_one_point, outward_point, path_blockers, \
     path_is_clear, paths_to_centre, piece_within, slot_approach_paths, spokes, \
     to_slot_paths, walled_off
@@ -361,6 +362,29 @@ def _literal(snapshot, readings, unit) -> Decision:
 
 @lru_cache(maxsize=4096)
 def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
+    """The plain rule (:func:`_decide_plain`); when it names no move on a start with a
+    mirror and a leader, the leader's step (:func:`.corrected_mirror.mirror_step`)."""
+    d = _decide_plain(key, readings, unit)
+    if d.status not in ("stay", "not-possible") or d.centre is None:
+        return d
+    towers, _epochs, snapshot = key
+    tower = towers[0] if towers else None
+    pts = list(snapshot)
+    approx = g.approx_points(pts)
+    centre, pat, cands, _detail = choose_centre(pts, readings, unit, approx)
+    if centre is None:
+        return d
+    R = [i for i in range(len(pts)) if i not in pat.robots]
+    step = mirror_step(
+        pts, centre, pat, R, unit, approx, tower, readings,
+        lambda after: _decide_plain(snapshot_key(tuple(after)), readings, unit),
+        lambda path, m: _keeps_centre(path, pts, m, centre, cands, R, pat, approx,
+                                      readings, unit))
+    return d if step is None else step
+
+
+@lru_cache(maxsize=4096)
+def _decide_plain(key: tuple, readings: Readings, unit) -> Decision:
     # key: run_home.snapshot_key (towers and epochs first)
     towers, _epochs, snapshot = key
     tower = towers[0] if towers else None
@@ -626,4 +650,9 @@ def decide_for(algorithm: str):
     raise ValueError(f"unknown algorithm {algorithm!r} (choices: {', '.join(ALGORITHMS)})")
 
 
-decide_corrected.cache_clear = _decide_corrected.cache_clear   # the benchmarks time cold Looks
+def _cache_clear():
+    _decide_corrected.cache_clear()
+    _decide_plain.cache_clear()
+
+
+decide_corrected.cache_clear = _cache_clear   # the benchmarks time cold Looks
