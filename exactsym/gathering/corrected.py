@@ -538,7 +538,7 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
         allowed = pat.robots
     else:
         paths = list(to_slot_paths(pts[m], centre, target, l, unit, None, tower, pts, m)) + \
-            list(slot_approach_paths(pts[m], centre, target, pts, m, unit2))
+            _approaches(pts[m], centre, target, pat, pts, m, unit2)
         allowed = pat.robots
     blockers = set()
     for path in paths:
@@ -611,6 +611,19 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None, readi
                  f"corrected: robot {j} cannot clear C (robots {close} within 2 of it)")
 
 
+def _approaches(p, centre, target, pat, pts, mover, unit2, limit2=None):
+    """The via-point approaches (:func:`.corrected_paths.slot_approach_paths`) to a chain
+    end's slot, kept strictly nearer in angle to it than to the other end; none to the
+    point that starts a new layer (chosen by the nearest robot in angle, which a via
+    point could change)."""
+    if pat.last_full():
+        return []
+    l, chain_ = pat.last_layer, pat.layers[-1]
+    ends = (slot(centre, pts[chain_[-1]], l, 1), slot(centre, pts[chain_[0]], l, -1))
+    other = next((s for s in ends if s != target), None)
+    return list(slot_approach_paths(p, centre, target, pts, mover, unit2, limit2, other))
+
+
 def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower=None,
                 readings=None):
     """The first clear path of ``option`` = (dist, robot, target, layer, kind) that keeps
@@ -629,7 +642,7 @@ def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, to
         others = [g.dist2(pts[j], centre) for j in R if j != i]
         limit2 = min(others, key=SortKey) if others else None
         paths = chain(to_slot_paths(pts[i], centre, target, l, unit, limit2, tower, pts, i),
-                      slot_approach_paths(pts[i], centre, target, pts, i, unit2, limit2))
+                      _approaches(pts[i], centre, target, pat, pts, i, unit2, limit2))
         allowed = pat.robots
     for path in paths:
         if not path or (tied_start and isinstance(path[0], g.Arc)):

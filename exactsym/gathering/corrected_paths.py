@@ -335,7 +335,7 @@ VIA_POINTS = tuple((k, t) for k in (fmpq(1, 4), fmpq(1, 2))
                    for t in (fmpq(0), fmpq(1, 4), fmpq(1, 2)))
 
 
-def slot_approach_paths(p, centre, target, pts, mover, unit2, limit2=None):
+def slot_approach_paths(p, centre, target, pts, mover, unit2, limit2=None, other=None):
     """Two-segment paths to a slot through a *via point* beside it (issue 31,
     ``corrected-blocked-slots-stall``: the slot lies in a gap between a robot of P and a
     robot of R that every path of :func:`to_slot_paths` grazes).  The slot touches the
@@ -347,7 +347,11 @@ def slot_approach_paths(p, centre, target, pts, mover, unit2, limit2=None):
     the mover stays the nearest, I4; a segment's squared distance to C is convex).
     Every via point is built from the slot and the robots that touch it, which stand
     still, so the same points are offered from every point of the mover's way and in
-    every frame (a reflection maps the two senses onto each other with their rooms)."""
+    every frame (a reflection maps the two senses onto each other with their rooms).
+    ``other``: the chain's other end, when the end is chosen by angle -- a via point is
+    kept only when it is strictly nearer in angle to ``target`` (``(q - C).(target -
+    other) > 0``, an open half-plane through C that holds the mover and the slot, so
+    both segments stay in it and a Look on the way picks the same end)."""
     d2 = 4 * unit2
     touch = [q for j, q in enumerate(pts) if j != mover and g.dist2(q, target) == d2]
     if not touch:
@@ -375,6 +379,9 @@ def slot_approach_paths(p, centre, target, pts, mover, unit2, limit2=None):
                 turned.reverse()
         for q in turned:
             if limit2 is not None and (g.dist2(q, centre) - limit2).sign() >= 0:
+                continue
+            if other is not None and \
+                    g.dot(g.sub(q, centre), g.sub(target, other)).sign() <= 0:
                 continue
             if q == p or q in seen:
                 continue
