@@ -297,7 +297,7 @@ def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=No
         walls = spokes(centre, pts, mover, unit, limit2) if mover is not None else []
         open_ends = [s for s in ends if not walled_off(p, centre, s, walls)]
         if len(open_ends) == 1:
-            return open_ends[0], l, "slot"
+            return open_ends[0], l, "slot-fixed"
         if mover is not None:
             # the ends whose completion keeps C and a leader (both read the target and
             # the robots that stand still only): a choice every point of the way repeats
@@ -305,10 +305,10 @@ def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=No
                                                              readings, unit)
                     and keeps_a_leader(pts, mover, s)]
             if len(fine) == 1:
-                return fine[0], l, "slot"
+                return fine[0], l, "slot-fixed"
         c = (_far2(pts, s_ccw, stay) - _far2(pts, s_cw, stay)).sign()
         if c:
-            return (s_ccw if c > 0 else s_cw), l, "slot"
+            return (s_ccw if c > 0 else s_cw), l, "slot-fixed"
     a, b = g.dot(v, g.sub(s_ccw, centre)), g.dot(v, g.sub(s_cw, centre))
     c = (a - b).sign()
     if c == 0:
@@ -641,7 +641,8 @@ def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, to
     else:
         others = [g.dist2(pts[j], centre) for j in R if j != i]
         limit2 = min(others, key=SortKey) if others else None
-        paths = chain(to_slot_paths(pts[i], centre, target, l, unit, limit2, tower, pts, i),
+        paths = chain(to_slot_paths(pts[i], centre, target, l, unit, limit2, tower, pts, i,
+                                    kind == "slot-fixed"),
                       _approaches(pts[i], centre, target, pat, pts, i, unit2, limit2))
         allowed = pat.robots
     for path in paths:

@@ -247,7 +247,7 @@ def tie_senses(p, centre, target, pts, mover):
 
 
 def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
-                  mover=None):
+                  mover=None, long_way=False):
     """Paths to a point of layer l (``|target - C| = 2l unit``) that the mover finds
     again from any point of them (so a fresh Look on the way plans the same target):
 
@@ -268,8 +268,11 @@ def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
     ``cross(v, w)``, which a reflection flips together with the arcs' sense); when the
     target's ray is opposite to the mover's both ways are equally long, and the order of
     the two senses is :func:`tie_senses`'s (distances only; none on a tie, and none
-    without ``pts``).  The mover's distance to C stays below ``limit2`` along them
-    (I4)."""
+    without ``pts``).  ``long_way`` (the end was chosen by static tests, not by angle):
+    after the shorter arc on the mover's own circle, the longer one (the rest of it is
+    found again from every point: before the target's antipodal ray as the longer way,
+    after it as the shorter).  The mover's distance to C stays below ``limit2`` along
+    them (I4)."""
     v = g.sub(p, centre)
     w = g.sub(target, centre)                          # |w| = 2l unit
     if g.cross(v, w).is_zero() and g.dot(v, w).sign() > 0:
@@ -289,6 +292,8 @@ def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
         b = g.add(centre, g.scale(w, rho / two_l))
         for sense in senses:
             yield g.arc_path(centre, p, b, sense) + [g.Segment(b, target)]
+        if long_way and side:
+            yield g.arc_path(centre, p, b, -side) + [g.Segment(b, target)]
     for h in (two_l + 2 * unit, two_l + 4 * unit, two_l + 6 * unit):
         if limit2 is not None and (limit2 - h * h).sign() <= 0:
             continue            # I4: the mover stays strictly nearer to C than R's others
