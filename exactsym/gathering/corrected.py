@@ -33,7 +33,8 @@ products, never by a sense of rotation of the observer's frame).
    point at 2 when P is the robot at C alone, the point at 2(l + 1) on the ray of the
    robot of layer l nearest in angle when layer l is full (a lone robot starts the next
    layer), or the
-   free slot next to an end of layer l's chain: while P has at most 4 robots, the one
+   free slot next to an end of layer l's chain: while P has at most 4 robots, an end
+   that spokes wall off (:func:`.corrected_paths.walled_off`) is out of reach; else the one
    whose completion keeps C (the centre rule run on the configuration after the
    arrival) and a leader when only one does, else the one farther from the robots of R
    that stay (so the centre stays unique in f), else the one nearer to the mover in
@@ -43,8 +44,9 @@ products, never by a sense of rotation of the observer's frame).
 5. **Clear paths** (:mod:`.corrected_paths`; distances to C never grow, so I4 holds
    along the path): to C the segment, or a detour (an arc about C on the mover's circle
    by a rational rotation, then the segment); to a point of a layer the paths of
-   :func:`.corrected_paths.to_slot_paths`, each of which a fresh Look finds again from
-   any of its points.  A path is taken only when it is clear
+   :func:`.corrected_paths.to_slot_paths` (with the longer arc when the end was chosen
+   by static tests) and the via-point approaches (:func:`_approaches`), each of which a
+   fresh Look finds again from any of its points.  A path is taken only when it is clear
    (:func:`.corrected_paths.path_is_clear`): every other robot strictly farther than 2
    from every point, except that the final point may touch robots of P (or, for the
    target C, the robots at distance 2 of it) -- so two robots come to touch only at an
@@ -63,6 +65,9 @@ products, never by a sense of rotation of the observer's frame).
 
 Under ``lone=reject`` (Def. 1 read literally) the moves are those of ``lone=accept``,
 the two that start a layer with the role ``layer-start`` (:func:`_literal`).
+
+8. **A D1 start with a leader on the mirror** (:mod:`.corrected_mirror`): when nothing
+   above names a move, the leader goes in along the mirror and steps off it.
 
 What it does not handle (``docs/gathering-corrected.md``): exact ties that only a
 handedness could break (a tie of the centre rule; several nearest robots all of whose
