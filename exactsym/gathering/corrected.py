@@ -84,7 +84,7 @@ from flint import fmpq
 
 from . import geometry as g
 from .corrected_choice import SortKey, distinct_after, ground_ranks, keeps_a_leader, \
-    literal_pattern_exists, no_leader, profile, profile_compare
+    literal_pattern_exists, mirror_leader, no_leader, profile, profile_compare
 from .corrected_mirror import mirror_step
 from .corrected_paths import layer_one_point, outward_point, path_blockers, \
     path_is_clear, paths_to_centre, piece_within, slot_approach_paths, spokes, \
@@ -494,6 +494,13 @@ def _stay(pts, centre, pat, why):
     robots together; ``docs/gathering-corrected.md``)."""
     group = no_leader(pts)
     if group is not None:
+        lead = mirror_leader(pts)
+        if lead is not None:    # D1 with a robot on the mirror: the truth has a leader
+            return Decision("not-possible", (), centre, pat, None,
+                            f"no rule of the corrected variant applies: the configuration "
+                            f"has the symmetry group {group} with leader robot {lead} on "
+                            f"the mirror (ground truth), and step 11 finds no step for it; "
+                            f"{why}")
         return Decision("not-possible", (), centre, pat, None,
                         f"no leader: the configuration has the symmetry group {group} "
                         f"(ground truth); {why}")

@@ -1,5 +1,5 @@
 """The corrected variant's first move on a start with a mirror and a leader (issue 31):
-``docs/gathering-corrected.md``, step 9; ``proofs/gathering-corrected.md``, Lemma 8.
+``docs/gathering-corrected.md``, step 11; ``proofs/gathering-corrected.md``, Lemma 8.
 
 A start whose symmetry group is D1 has a robot fixed by its symmetry when a robot lies
 on the mirror line; the ground truth names one of them, the *leader*
