@@ -491,7 +491,8 @@ def _stay(pts, centre, pat, why):
     """No move: ``stay``, or ``not-possible`` when the ground truth finds the snapshot
     symmetric (no leader: the tie that stops the variant is one of a symmetry, which no
     algorithm without chirality breaks against an adversary that activates symmetric
-    robots together; ``docs/gathering-corrected.md``)."""
+    robots together; ``docs/gathering-corrected.md``); on D1 with a leader on the mirror
+    that step 11 cannot move, the detail names the leader instead."""
     group = no_leader(pts)
     if group is not None:
         lead = mirror_leader(pts)
