@@ -33,7 +33,8 @@ products, never by a sense of rotation of the observer's frame).
    point at 2 when P is the robot at C alone, the point at 2(l + 1) on the ray of the
    robot of layer l nearest in angle when layer l is full (a lone robot starts the next
    layer), or the
-   free slot next to an end of layer l's chain: while P has at most 4 robots, the one
+   free slot next to an end of layer l's chain: while P has at most 4 robots, an end
+   that spokes wall off (:func:`.corrected_paths.walled_off`) is out of reach; else the one
    whose completion keeps C (the centre rule run on the configuration after the
    arrival) and a leader when only one does, else the one farther from the robots of R
    that stay (so the centre stays unique in f), else the one nearer to the mover in
@@ -43,8 +44,9 @@ products, never by a sense of rotation of the observer's frame).
 5. **Clear paths** (:mod:`.corrected_paths`; distances to C never grow, so I4 holds
    along the path): to C the segment, or a detour (an arc about C on the mover's circle
    by a rational rotation, then the segment); to a point of a layer the paths of
-   :func:`.corrected_paths.to_slot_paths`, each of which a fresh Look finds again from
-   any of its points.  A path is taken only when it is clear
+   :func:`.corrected_paths.to_slot_paths` (with the longer arc when the end was chosen
+   by static tests) and the via-point approaches (:func:`_approaches`), each of which a
+   fresh Look finds again from any of its points.  A path is taken only when it is clear
    (:func:`.corrected_paths.path_is_clear`): every other robot strictly farther than 2
    from every point, except that the final point may touch robots of P (or, for the
    target C, the robots at distance 2 of it) -- so two robots come to touch only at an
@@ -64,6 +66,9 @@ products, never by a sense of rotation of the observer's frame).
 Under ``lone=reject`` (Def. 1 read literally) the moves are those of ``lone=accept``,
 the two that start a layer with the role ``layer-start`` (:func:`_literal`).
 
+8. **A D1 start with a leader on the mirror** (:mod:`.corrected_mirror`): when nothing
+   above names a move, the leader goes in along the mirror and steps off it.
+
 What it does not handle (``docs/gathering-corrected.md``): exact ties that only a
 handedness could break (a tie of the centre rule; several nearest robots all of whose
 moves end symmetric), a path blocked with no alternative, a symmetric start.
@@ -73,14 +78,17 @@ from __future__ import annotations
 
 from dataclasses import replace
 from functools import lru_cache
+from itertools import chain
 
 from flint import fmpq
 
 from . import geometry as g
 from .corrected_choice import SortKey, distinct_after, ground_ranks, keeps_a_leader, \
-    literal_pattern_exists, no_leader, profile, profile_compare
+    literal_pattern_exists, mirror_leader, no_leader, profile, profile_compare
+from .corrected_mirror import mirror_step
 from .corrected_paths import layer_one_point, outward_point, path_blockers, \
-    path_is_clear, paths_to_centre, piece_within, to_slot_paths
+    path_is_clear, paths_to_centre, piece_within, slot_approach_paths, spokes, \
+    to_slot_paths, walled_off
 from .pattern import Pattern, capacity, recognise, slot
 from .robot import Decision, Move, Readings, decide, radial_point
 from .run_home import snapshot_key
@@ -288,6 +296,13 @@ def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=No
         return s_ccw, l, "slot"
     if len(pat.robots) <= 4 and stay:
         ends = (s_ccw, s_cw)
+        # an end that spokes wall off from the mover on both ways round C is out of
+        # reach (corrected_paths.spokes: static, so the same from every point of the way)
+        limit2 = min((g.dist2(pts[j], centre) for j in stay), key=SortKey)
+        walls = spokes(centre, pts, mover, unit, limit2) if mover is not None else []
+        open_ends = [s for s in ends if not walled_off(p, centre, s, walls)]
+        if len(open_ends) == 1:
+            return open_ends[0], l, "slot-fixed"
         if mover is not None:
             # the ends whose completion keeps C and a leader (both read the target and
             # the robots that stand still only): a choice every point of the way repeats
@@ -295,10 +310,10 @@ def _target(p, centre, pat, pts, unit, stay, tower=None, mover=None, readings=No
                                                              readings, unit)
                     and keeps_a_leader(pts, mover, s)]
             if len(fine) == 1:
-                return fine[0], l, "slot"
+                return fine[0], l, "slot-fixed"
         c = (_far2(pts, s_ccw, stay) - _far2(pts, s_cw, stay)).sign()
         if c:
-            return (s_ccw if c > 0 else s_cw), l, "slot"
+            return (s_ccw if c > 0 else s_cw), l, "slot-fixed"
     a, b = g.dot(v, g.sub(s_ccw, centre)), g.dot(v, g.sub(s_cw, centre))
     c = (a - b).sign()
     if c == 0:
@@ -352,6 +367,29 @@ def _literal(snapshot, readings, unit) -> Decision:
 
 @lru_cache(maxsize=4096)
 def _decide_corrected(key: tuple, readings: Readings, unit) -> Decision:
+    """The plain rule (:func:`_decide_plain`); when it names no move on a start with a
+    mirror and a leader, the leader's step (:func:`.corrected_mirror.mirror_step`)."""
+    d = _decide_plain(key, readings, unit)
+    if d.status not in ("stay", "not-possible") or d.centre is None:
+        return d
+    towers, _epochs, snapshot = key
+    tower = towers[0] if towers else None
+    pts = list(snapshot)
+    approx = g.approx_points(pts)
+    centre, pat, cands, _detail = choose_centre(pts, readings, unit, approx)
+    if centre is None:
+        return d
+    R = [i for i in range(len(pts)) if i not in pat.robots]
+    step = mirror_step(
+        pts, centre, pat, R, unit, approx, tower, readings,
+        lambda after: _decide_plain(snapshot_key(tuple(after)), readings, unit),
+        lambda path, m: _keeps_centre(path, pts, m, centre, cands, R, pat, approx,
+                                      readings, unit))
+    return d if step is None else step
+
+
+@lru_cache(maxsize=4096)
+def _decide_plain(key: tuple, readings: Readings, unit) -> Decision:
     # key: run_home.snapshot_key (towers and epochs first)
     towers, _epochs, snapshot = key
     tower = towers[0] if towers else None
@@ -453,9 +491,17 @@ def _stay(pts, centre, pat, why):
     """No move: ``stay``, or ``not-possible`` when the ground truth finds the snapshot
     symmetric (no leader: the tie that stops the variant is one of a symmetry, which no
     algorithm without chirality breaks against an adversary that activates symmetric
-    robots together; ``docs/gathering-corrected.md``)."""
+    robots together; ``docs/gathering-corrected.md``); on D1 with a leader on the mirror
+    that step 11 cannot move, the detail names the leader instead."""
     group = no_leader(pts)
     if group is not None:
+        lead = mirror_leader(pts)
+        if lead is not None:    # D1 with a robot on the mirror: the truth has a leader
+            return Decision("not-possible", (), centre, pat, None,
+                            f"no rule of the corrected variant applies: the configuration "
+                            f"has the symmetry group {group} with leader robot {lead} on "
+                            f"the mirror (ground truth), and step 11 finds no step for it; "
+                            f"{why}")
         return Decision("not-possible", (), centre, pat, None,
                         f"no leader: the configuration has the symmetry group {group} "
                         f"(ground truth); {why}")
@@ -504,7 +550,8 @@ def _around_blocked(option, pts, centre, R, d, unit, cands, pat, approx, tower, 
         paths = [[g.Segment(pts[m], target)]]
         allowed = pat.robots
     else:
-        paths = list(to_slot_paths(pts[m], centre, target, l, unit, None, tower, pts, m))
+        paths = list(to_slot_paths(pts[m], centre, target, l, unit, None, tower, pts, m)) + \
+            _approaches(pts[m], centre, target, pat, pts, m, unit2)
         allowed = pat.robots
     blockers = set()
     for path in paths:
@@ -577,6 +624,19 @@ def _clear_centre(pts, centre, R, d, unit, cands, pat, approx, tower=None, readi
                  f"corrected: robot {j} cannot clear C (robots {close} within 2 of it)")
 
 
+def _approaches(p, centre, target, pat, pts, mover, unit2, limit2=None):
+    """The via-point approaches (:func:`.corrected_paths.slot_approach_paths`) to a chain
+    end's slot, kept strictly nearer in angle to it than to the other end; none to the
+    point that starts a new layer (chosen by the nearest robot in angle, which a via
+    point could change)."""
+    if pat.last_full():
+        return []
+    l, chain_ = pat.last_layer, pat.layers[-1]
+    ends = (slot(centre, pts[chain_[-1]], l, 1), slot(centre, pts[chain_[0]], l, -1))
+    other = next((s for s in ends if s != target), None)
+    return list(slot_approach_paths(p, centre, target, pts, mover, unit2, limit2, other))
+
+
 def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, tower=None,
                 readings=None):
     """The first clear path of ``option`` = (dist, robot, target, layer, kind) that keeps
@@ -594,7 +654,9 @@ def _first_path(option, pts, centre, cands, R, unit, pat, tied_start, approx, to
     else:
         others = [g.dist2(pts[j], centre) for j in R if j != i]
         limit2 = min(others, key=SortKey) if others else None
-        paths = to_slot_paths(pts[i], centre, target, l, unit, limit2, tower, pts, i)
+        paths = chain(to_slot_paths(pts[i], centre, target, l, unit, limit2, tower, pts, i,
+                                    kind == "slot-fixed"),
+                      _approaches(pts[i], centre, target, pat, pts, i, unit2, limit2))
         allowed = pat.robots
     for path in paths:
         if not path or (tied_start and isinstance(path[0], g.Arc)):
@@ -615,4 +677,9 @@ def decide_for(algorithm: str):
     raise ValueError(f"unknown algorithm {algorithm!r} (choices: {', '.join(ALGORITHMS)})")
 
 
-decide_corrected.cache_clear = _decide_corrected.cache_clear   # the benchmarks time cold Looks
+def _cache_clear():
+    _decide_corrected.cache_clear()
+    _decide_plain.cache_clear()
+
+
+decide_corrected.cache_clear = _cache_clear   # the benchmarks time cold Looks

@@ -109,3 +109,17 @@ def literal_pattern_exists(n: int) -> bool:
         if total + 1 == n:
             return False
     return True
+
+
+def mirror_leader(pts) -> int | None:
+    """The ground truth's leader when the configuration's symmetry group is D1 (one
+    mirror, no rotation, not orderable): the robot on the mirror chosen canonically
+    (:func:`exactsym.truth.symmetry.symmetry_group`, ``leader``), the same robot in
+    every frame.  None otherwise, or when the kernel cannot hold the numbers."""
+    try:
+        group = symmetry_group(configuration_of(list(pts)))
+    except (InputError, ArithmeticError, NotImplementedError, ValueError):
+        return None
+    if group.orderable or group.rotations != 1 or group.mirrors != 1:
+        return None
+    return group.leader

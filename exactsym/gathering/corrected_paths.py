@@ -247,7 +247,7 @@ def tie_senses(p, centre, target, pts, mover):
 
 
 def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
-                  mover=None):
+                  mover=None, long_way=False):
     """Paths to a point of layer l (``|target - C| = 2l unit``) that the mover finds
     again from any point of them (so a fresh Look on the way plans the same target):
 
@@ -268,8 +268,11 @@ def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
     ``cross(v, w)``, which a reflection flips together with the arcs' sense); when the
     target's ray is opposite to the mover's both ways are equally long, and the order of
     the two senses is :func:`tie_senses`'s (distances only; none on a tie, and none
-    without ``pts``).  The mover's distance to C stays below ``limit2`` along them
-    (I4)."""
+    without ``pts``).  ``long_way`` (the end was chosen by static tests, not by angle):
+    after the shorter arc on the mover's own circle, the longer one (the rest of it is
+    found again from every point: before the target's antipodal ray as the longer way,
+    after it as the shorter).  The mover's distance to C stays below ``limit2`` along
+    them (I4)."""
     v = g.sub(p, centre)
     w = g.sub(target, centre)                          # |w| = 2l unit
     if g.cross(v, w).is_zero() and g.dot(v, w).sign() > 0:
@@ -289,6 +292,8 @@ def to_slot_paths(p, centre, target, l, unit, limit2=None, tower=None, pts=None,
         b = g.add(centre, g.scale(w, rho / two_l))
         for sense in senses:
             yield g.arc_path(centre, p, b, sense) + [g.Segment(b, target)]
+        if long_way and side:
+            yield g.arc_path(centre, p, b, -side) + [g.Segment(b, target)]
     for h in (two_l + 2 * unit, two_l + 4 * unit, two_l + 6 * unit):
         if limit2 is not None and (limit2 - h * h).sign() <= 0:
             continue            # I4: the mover stays strictly nearer to C than R's others
@@ -326,3 +331,116 @@ def outward_point(centre, p, r2_to, tower=None):
     if ratio is None:
         return None
     return g.add(centre, g.scale(v, ratio))
+
+
+#: The via points of :func:`slot_approach_paths`: ``(k, t)``, the slot plus ``k`` times the
+#: outward vector turned by the rational rotation of half-angle tangent ``t`` (0: not
+#: turned); nearest to the slot and least turned first.
+VIA_POINTS = tuple((k, t) for k in (fmpq(1, 4), fmpq(1, 2))
+                   for t in (fmpq(0), fmpq(1, 4), fmpq(1, 2)))
+
+
+def slot_approach_paths(p, centre, target, pts, mover, unit2, limit2=None, other=None):
+    """Two-segment paths to a slot through a *via point* beside it (issue 31,
+    ``corrected-blocked-slots-stall``: the slot lies in a gap between a robot of P and a
+    robot of R that every path of :func:`to_slot_paths` grazes).  The slot touches the
+    robots of P next to it; ``u``, the sum of the vectors from them to the slot, points
+    out of the free cone's middle.  The via points are ``target + k u`` turned about the
+    slot by the rational rotations of :data:`VIA_POINTS` in both senses (the sense with
+    more room at its via point first -- the sorted squared distances to the other
+    robots, lexicographically larger; equal: neither: the sorted squared distances compared lexicographically), each kept only when it is nearer to C than R's next robot (``limit2``:
+    the mover stays the nearest, I4; a segment's squared distance to C is convex).
+    Every via point is built from the slot and the robots that touch it, which stand
+    still, so the same points are offered from every point of the mover's way and in
+    every frame (a reflection maps the two senses onto each other with their rooms).
+    ``other``: the chain's other end, when the end is chosen by angle -- a via point is
+    kept only when it is strictly nearer in angle to ``target`` (``(q - C).(target -
+    other) > 0``, an open half-plane through C that holds the mover and the slot, so
+    both segments stay in it and a Look on the way picks the same end)."""
+    d2 = 4 * unit2
+    touch = [q for j, q in enumerate(pts) if j != mover and g.dist2(q, target) == d2]
+    if not touch:
+        return
+    u = g.sub(target, touch[0])
+    for q in touch[1:]:
+        u = g.add(u, g.sub(target, q))
+    if u[0].is_zero() and u[1].is_zero():
+        return
+    seen = []
+    for k, t in VIA_POINTS:
+        vec = g.scale(u, k)
+        if t == 0:
+            turned = [g.add(target, vec)]
+        else:
+            turned = [rotate_about(target, g.add(target, vec), t, s) for s in (1, -1)]
+            # the robots touching the slot are placed alike about u: compare the whole
+            # sorted squared distances to the other robots, lexicographically
+            room = [sorted((g.dist2(q, r) for j, r in enumerate(pts) if j != mover),
+                           key=_Key) for q in turned]
+            c = next(((x - y).sign() for x, y in zip(*room) if (x - y).sign()), 0)
+            if c == 0:
+                continue
+            if c < 0:
+                turned.reverse()
+        for q in turned:
+            if limit2 is not None and (g.dist2(q, centre) - limit2).sign() >= 0:
+                continue
+            if other is not None and \
+                    g.dot(g.sub(q, centre), g.sub(target, other)).sign() <= 0:
+                continue
+            if q == p or q in seen:
+                continue
+            seen.append(q)
+            yield [g.Segment(p, q), g.Segment(q, target)]
+
+
+def _ccw_before(a, b, c) -> bool:
+    """Is direction ``c`` in the closed counter-clockwise arc from direction ``a`` to
+    direction ``b`` (all non-zero vectors; exact signs of cross and dot products)?"""
+    def half(v):
+        x = g.cross(a, v).sign()
+        return 0 if x > 0 or (x == 0 and g.dot(a, v).sign() > 0) else 1
+    hb, hc = half(b), half(c)
+    if g.cross(a, c).is_zero() and g.dot(a, c).sign() > 0:
+        return True                                   # c is a's direction
+    if hc != hb:
+        return hc < hb
+    return g.cross(c, b).sign() >= 0
+
+
+def spokes(centre, pts, mover, unit, limit2):
+    """The directions from C of the robots that wall C's neighbourhood off radially
+    (issue 31, ``corrected-roots-12-five-stall``): a robot q other than the mover with
+    ``|q - C| <= 4`` and ``|q - C| + 2 > L`` (``L^2 = limit2``, the squared distance of
+    R's next robot: a leader path stays nearer to C than L).  The closed discs of radius 2
+    about the robot at C and about q cover q's ray from C out to ``|q - C| + 2``, so a
+    mover that keeps clear of every robot and nearer to C than L never crosses that ray.
+    Exact: squared distances only.  None of them without an L (the last robot of R)."""
+    out = []
+    if limit2 is None:
+        return out
+    for j, q in enumerate(pts):
+        if j == mover:
+            continue
+        d2 = g.dist2(q, centre)
+        if d2.is_zero() or (d2 - 16 * unit * unit).sign() > 0:
+            continue
+        if (limit2 - d2).sign() > 0:
+            # |q - C| + 2 > L  iff  L^2 - d^2 - 4 < 4 d  (d = |q - C|, both sides >= 0)
+            lhs = limit2 - d2 - 4 * unit * unit
+            if lhs.sign() >= 0 and (lhs * lhs - 16 * unit * unit * d2).sign() >= 0:
+                continue
+        out.append(g.sub(q, centre))
+    return out
+
+
+def walled_off(p, centre, target, walls) -> bool:
+    """Are ``p`` and ``target`` separated by the spokes ``walls`` (:func:`spokes`) on both
+    ways round C?  Read from the directions only, with no sense preferred (both arcs are
+    asked), so the answer is the same in a mirrored frame; and it does not change while
+    the mover keeps clear and nearer to C than L, since its direction from C then never
+    crosses a spoke."""
+    a, b = g.sub(p, centre), g.sub(target, centre)
+    ccw = any(_ccw_before(a, b, w) for w in walls)
+    cw = any(_ccw_before(b, a, w) for w in walls)
+    return ccw and cw

@@ -266,7 +266,11 @@ class World:
         piece = rob.path[0]
         f = stop_instant(stop)
         if f is not None:
-            done, rest = piece.split(f)
+            # a stop at a nested-radical instant of an MQ piece is a number of its own
+            # one-level tower (:func:`.run_home.instant_in` finds no run tower in the
+            # piece): both halves go into the run's tower, or the robot would stand in a
+            # field no other robot's numbers mix with
+            done, rest = self.home.path(piece.split(f))
             rob.path[0] = rest
         else:
             done = piece
@@ -311,7 +315,7 @@ class World:
             piece = rob.path[0]
             f = stop_instant(stop)
             if f is not None:
-                done[i], rest = piece.split(f)
+                done[i], rest = self.home.path(piece.split(f))   # as in advance
                 new = list(rob.path)
                 new[0] = rest
             else:

@@ -18,6 +18,7 @@ from hypothesis import strategies as st
 from exactsym.exact.multiquadratic import MQ
 from exactsym.gathering.cases import run_case_file, run_settings, settings_of
 from exactsym.gathering.corrected import ALGORITHMS, decide_corrected, decide_for
+from exactsym.gathering.corrected_choice import mirror_leader
 from exactsym.gathering.invariants import ALL, Checker
 from exactsym.gathering.paper_bridge import read_case
 from exactsym.gathering.pattern import definition_defects, recognise
@@ -137,16 +138,22 @@ def test_the_algorithms_are_separate():
 
 
 def test_a_tie_no_handedness_can_break_is_not_possible():
-    """Robots 0 and 1 are the nearest to C, mirror images about the line through C and
-    the three others: no choice without a handedness; the ground truth finds the
+    """Robots 0 and 1 are the nearest to C, mirror images about the mirror y = 0, and no
+    robot lies on the mirror: no choice without a handedness; the ground truth finds the
     configuration symmetric (D1), so the variant says gathering is not possible, and
-    why (before: "stay")."""
+    why (before: "stay").  With robots on the mirror (the truth's leader among them) the
+    leader moves instead (step 11, ``corrected_mirror``; before issue 31's D1 rule:
+    not-possible)."""
     pts = tuple((MQ.rational(x), MQ.rational(y)) for x, y in
-                [(3, 4), (3, -4), (-10, 0), (10, 0), (-6, 0)])
+                [(3, 4), (3, -4), (-10, 3), (-10, -3), (9, 3), (9, -3)])
     d = decide_corrected(pts)
     assert d.status == "not-possible" and "D1" in d.detail and "tie" in d.detail
+    on_mirror = tuple((MQ.rational(x), MQ.rational(y)) for x, y in
+                      [(3, 4), (3, -4), (-10, 0), (10, 0), (-6, 0)])
+    d = decide_corrected(on_mirror)
+    assert [(m.robot, m.role) for m in d.moves] == [(mirror_leader(on_mirror), "asym")]
     # one robot off the mirror: a leader exists, and the variant moves
-    moved = pts[:4] + ((MQ.rational(-6), MQ.rational(1)),)
+    moved = on_mirror[:4] + ((MQ.rational(-6), MQ.rational(1)),)
     assert decide_corrected(moved).status == "move"
 
 

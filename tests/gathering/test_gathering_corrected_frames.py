@@ -8,7 +8,10 @@ observer's coordinates (its radius changed with the frame), and an arc to a targ
 the opposite ray turned by the observer's clockwise.
 
 Checked along runs: from every case file of the corrected variant and from random
-separated rational starts, on every configuration a run reaches."""
+separated rational starts, on every configuration a run reaches.  One move reads the
+frame's handedness by design, the leader's step off the mirror of a D1 start
+(``corrected_mirror``): there the frames name the same mover and targets that the
+configuration's own mirror maps onto each other."""
 
 from __future__ import annotations
 
@@ -23,6 +26,7 @@ from hypothesis import strategies as st
 
 from exactsym.exact.multiquadratic import MQ
 from exactsym.gathering.corrected import decide_corrected
+from exactsym.gathering.corrected_choice import mirror_leader
 from exactsym.gathering import geometry as g
 from exactsym.gathering.corrected_paths import to_slot_paths
 from exactsym.gathering.invariants import Checker
@@ -79,14 +83,30 @@ def plan_differences(pts, frame):
         return out + [f"movers {[m.robot for m in plain.moves]} != "
                       f"{[m.robot for m in other.moves]}"]
     home = RunHome(pts)             # numbers of two towers are compared re-homed
+    lead = mirror_leader(pts)
     for a, b in zip(plain.moves, other.moves):
         back = home.path(frame.piece_to_world(piece) for piece in b.path)
         mine = home.path(a.path)
+        if a.role == b.role == "asym" and lead == a.robot and \
+                not home.same_point(back[-1].final, mine[-1].final):
+            # the leader's step off the mirror (corrected_mirror): the frame's handedness
+            # picks the sense; the other frame's target is the image of ours by the
+            # configuration's own mirror (the line through C and the leader)
+            if not home.same_point(back[-1].final,
+                                   reflect(mine[-1].final, plain.centre, pts[lead])):
+                out.append(f"robot {a.robot}: target, not the mirror image")
+            continue
         if not home.same_point(back[-1].final, mine[-1].final):
             out.append(f"robot {a.robot}: target")
         elif not same_pieces(home, back, mine):
             out.append(f"robot {a.robot}: path")
     return out
+
+
+def reflect(x, c, on):
+    """``x`` reflected in the line through ``c`` and ``on``."""
+    v, w = g.sub(on, c), g.sub(x, c)
+    return g.sub(g.add(c, g.scale(v, 2 * g.dot(w, v) / g.dot(v, v))), w)
 
 
 def same_pieces(home, ps, qs) -> bool:

@@ -170,3 +170,15 @@ def test_the_best_first_phase_finds_what_a_small_breadth_first_share_misses():
     rep = search(ONE_CIRCLE, COLLIDE, Bounds(budget=200, depth=4))
     assert rep.stopped == "violation" and rep.phase == "best-first"
     assert rep.result.violation["invariant"] == "I1"
+
+
+def test_a_stop_at_a_nested_instant_of_a_rational_piece_stays_in_the_run_tower(capsys):
+    """issue 31, R-C3 finding 9: a stop at a nested-radical instant of a piece with MQ
+    ends was left in the instant's own one-level tower while another robot stood in the
+    run's tower; the next fresh Look mixed the two ("elements of two different number
+    fields do not mix", exit 3).  :meth:`.world.World.advance` re-homes both halves."""
+    case = CASES / "corrected-roots-12-five-stall.toml"
+    assert main(["gather", str(case), "--algorithm", "corrected", "--search",
+                 "--budget", "300", "--time", "120"]) == 0
+    out = capsys.readouterr().out
+    assert "no violation found" in out and "internal error" not in out
