@@ -181,10 +181,13 @@ class JointPoint:
     exact: bool
 
 
-def joint_look_points(pieces: dict, world, sec_r: bool = False) -> tuple:
+def joint_look_points(pieces: dict, world, sec_r: bool = False, roots=None) -> tuple:
     """``(points, sided)`` as :func:`.instants.look_points`, over the common time (an
-    exact root may be a tower number)."""
-    roots = joint_critical_roots(pieces, world, sec_r)
+    exact root may be a tower number); ``roots``: :func:`joint_critical_roots` of the
+    same motion when the caller holds them (:func:`.stops.motion_roots`, shared by the
+    stops a step resolves: an exact instant is then the very object a stop names)."""
+    if roots is None:
+        roots = joint_critical_roots(pieces, world, sec_r)
     if not roots:
         return [JointPoint(MQ.rational(fmpq(1, 2)), "half way, no critical instant",
                            frozenset(), False)], 0
