@@ -175,10 +175,14 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
 
 @dataclass(frozen=True)
 class JointPoint:
+    """A look point of a joint motion; ``root_from``: at the point just after an instant,
+    the low end of the instant's isolating interval (the instant lies strictly between
+    it and ``tau``), else None."""
     tau: MQ
     where: str
     families: frozenset
     exact: bool
+    root_from: object = None
 
 
 def joint_look_points(pieces: dict, world, sec_r: bool = False, roots=None) -> tuple:
@@ -204,7 +208,7 @@ def joint_look_points(pieces: dict, world, sec_r: bool = False, roots=None) -> t
             out.append(JointPoint(tau, what, fams, True))
         else:
             sided += 1
-        out.append(JointPoint(MQ.rational(r.hi), f"just after: {what}", fams, False))
+        out.append(JointPoint(MQ.rational(r.hi), f"just after: {what}", fams, False, r.lo))
     return out, sided
 
 

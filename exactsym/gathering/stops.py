@@ -272,6 +272,17 @@ def _whole_motion_points(world, pieces: dict, before: dict, sec_r: bool) -> tupl
     return got
 
 
+def _not_after(f, lo) -> bool:
+    """Is the stop ``f`` at or before the rational ``lo`` (exactly; False when unknown)?
+    Then an instant isolated in ``(lo, hi)`` lies after the stop."""
+    if lo is None:
+        return False
+    try:
+        return (f - MQ.rational(fmpq(lo))).sign() <= 0
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+
+
 def covered_points(world, full, sec_r: bool):
     """``(points, sided, scale)`` for a joint step that moved every mover from the start
     of its piece ``full[0][i]`` to the common stop ``full[1]`` (None: the pieces' ends):
@@ -281,8 +292,9 @@ def covered_points(world, full, sec_r: bool):
     ``prefix.at(s) = piece.at(f s)``, segment and arc alike), so the step's instants are
     the whole motion's before ``f`` and each stretch between them is sampled by the
     whole motion's point there.  None when a stretch of the step holds no such point
-    (the stop inside the first stretch, or inside an instant's isolating interval) or a
-    comparison fails: the caller computes the step's own instants."""
+    (the stop inside the first stretch, or inside an instant's isolating interval: an
+    instant without an exact value is placed by that interval, ``JointPoint.root_from``)
+    or a comparison fails: the caller computes the step's own instants."""
     pieces, f, before = full
     points, sided = _whole_motion_points(world, pieces, before, sec_r)
     if f is None:
@@ -298,7 +310,8 @@ def covered_points(world, full, sec_r: bool):
     if not kept or kept[-1].exact:
         return None
     after = points[len(kept):len(kept) + 1]
-    if after and not after[0].exact and after[0].where.startswith("just after"):
+    if after and not after[0].exact and after[0].where.startswith("just after") and \
+            not _not_after(f, after[0].root_from):
         return None               # an instant not held: is it before the stop?
     held = sum(1 for jp in kept if jp.exact)
     sided_kept = sum(1 for jp in kept if jp.where.startswith("just after")) - held
