@@ -153,3 +153,35 @@ def test_the_stops_of_one_joint_motion_compute_its_instants_once(enabled, monkey
     monkeypatch.setattr(invariants, "REUSE_JOINT", False)
     own = [_verdict(world, a) for a in exact]
     assert shared == own
+
+
+def test_the_point_just_after_an_instant_names_its_isolating_interval():
+    """``JointPoint.root_from`` (how a stop is placed before an instant without an exact
+    value): the point just after an instant carries the low end of the instant's
+    isolating interval; where the instant is held, it lies strictly between that end
+    and the point, and so does no other look point."""
+    from exactsym.exact.multiquadratic import sqrt_rational
+    from exactsym.gathering.joint_instants import joint_look_points
+    s2 = sqrt_rational(2)
+    world = World([(20, 0), (-20, 0), (s2 * 9, s2 * 9 + 4), (-16, 12), (5, 0)],
+                  checker=Checker(enabled=frozenset(("I3",))))
+    world.look(4, IDENTITY)
+    world.robots[0].path = [g.Segment(P(20, 0), P(0, 20))]
+    pieces = {0: world.robots[0].path[0], 4: world.robots[4].path[0]}
+    points, _sided = joint_look_points(pieces, world)
+    afters = [k for k, jp in enumerate(points) if jp.where.startswith("just after")]
+    assert len(afters) >= 3
+    for k in afters:
+        jp = points[k]
+        lo = MQ.rational(jp.root_from)
+        assert (jp.tau - lo).sign() > 0
+        held = points[k - 1]
+        if held.exact:
+            assert (held.tau - lo).sign() > 0 and (jp.tau - held.tau).sign() > 0
+            others = points[:k - 1]
+        else:
+            others = points[:k]
+        # every earlier point is at or before lo (the interval holds the instant alone)
+        assert all((p.tau - lo).sign() <= 0 for p in others if not p.exact)
+    assert all(jp.root_from is None for jp in points
+               if not jp.where.startswith("just after"))
