@@ -18,7 +18,8 @@ from ..exact.tower import TowerElement
 from ..exact.tower import key, level
 from . import geometry as g
 
-__all__ = ["number_key", "point_key", "piece_key", "state_key", "shared_by_copies"]
+__all__ = ["number_key", "point_key", "piece_key", "state_key", "shared_by_copies",
+           "tower_free"]
 
 
 class _Identity:
@@ -81,3 +82,16 @@ def shared_by_copies(x) -> bool:
         return True
     tower = nested_tower(x)
     return tower is not None and not is_run_tower(tower)
+
+
+def tower_free(world) -> bool:
+    """Do the world's positions and pending paths hold no nested radical?  Only then may
+    a cache shared by the copies of a world keep instants of an instant's own tower: a
+    copy's tower numbers live in its own copy of that tower (:func:`.search.fork`), and
+    numbers of two copies do not mix."""
+    for r in world.robots:
+        pts = [r.pos] + [p for pc in r.path for p in
+                         ((pc.start, pc.end) + ((pc.centre,) if isinstance(pc, g.Arc) else ()))]
+        if any(isinstance(x, TowerElement) for p in pts for x in p):
+            return False
+    return True

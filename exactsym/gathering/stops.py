@@ -46,7 +46,7 @@ from . import geometry as g
 from .instants import critical_roots
 from .joint_instants import joint_critical_roots, joint_look_points
 from .run_home import instant_or_none
-from .state_key import piece_key, point_key, shared_by_copies, state_key
+from .state_key import piece_key, point_key, shared_by_copies, state_key, tower_free
 
 __all__ = ["simplest_between", "stretch_stop", "instant_stop", "motion_roots", "resolve",
            "before_stop", "covered_points",
@@ -146,7 +146,7 @@ def motion_roots(world, movers) -> list:
     else:
         roots = joint_critical_roots({i: world.robots[i].path[0] for i in movers}, world,
                                      sec_r)
-    if all(shared_by_copies(r.exact) for r in roots):
+    if tower_free(world) and all(shared_by_copies(r.exact) for r in roots):
         if len(_ROOTS) >= _ROOTS_MAX:
             _ROOTS.clear()
         _ROOTS[key] = roots
@@ -261,11 +261,12 @@ def _whole_motion_points(world, pieces: dict, before: dict, sec_r: bool) -> tupl
             rob[i].pos, rob[i].path = before[i][0], before[i][1]
         # the roots the step's stops were resolved from (the same state and motion):
         # an exact stop is then the very object of its instant (:func:`.stops.before_stop`)
+        free = tower_free(world)
         got = joint_look_points(pieces, world, sec_r, motion_roots(world, sorted(pieces)))
     finally:
         for i in pieces:
             rob[i].pos, rob[i].path = after[i]
-    if all(shared_by_copies(jp.tau) for jp in got[0]):
+    if free and all(shared_by_copies(jp.tau) for jp in got[0]):
         if len(_POINTS) >= _POINTS_MAX:
             _POINTS.clear()
         _POINTS[key] = got
