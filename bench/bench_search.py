@@ -56,11 +56,11 @@ SEVERAL = {"gather_readings": ["A3=all"],
 #: CPU seconds of the previous run by (row, n, budget): the ratio printed beside a row
 #: (default readings: docs/gathering.md's "after" column, the slowest figure;
 #: joint steps at budget 10,000 -- before the shared instants of a joint motion's stops,
-#: n = 8 more than 210 s, n = 12 more than 15.7 min (not finished); after, n = 8 more
-#: than 284 s (a lower bound: not finished), n = 12 220.9 s (10,000 states, depth 6)
+#: n = 8 more than 210 s, n = 12 more than 15.7 min (not finished); after, n = 8
+#: 408.7 s (10,000 states, depth 16), n = 12 220.9 s (10,000 states, depth 6)
 PREVIOUS = {("default", 8, 10_000): 9.0, ("default", 10, 10_000): 12.7,
             ("default", 12, 10_000): 11.7, ("joint", 12, 2000): 8.5,
-            ("joint", 8, 10_000): 284.0, ("joint", 12, 10_000): 220.9}
+            ("joint", 8, 10_000): 408.7, ("joint", 12, 10_000): 220.9}
 
 
 def time_search(n: int, budget: int, expect: dict, seed: int = 1):
