@@ -16,9 +16,14 @@ n = 12).
    8 minutes at n = 12.  Since the strings of a polygon off one circle there hold their
    keys undivided (``paper/ratio_keys.chord_key``) and inverses are remembered per
    field, the first ~1,560 states of that run cost 105 s CPU under cProfile instead of
-   270 s; the rest is the motion side (``joint_critical_roots``: root isolation and
-   multiquadratic products), still far from the 60 s target.  ``PREVIOUS`` holds the
-   figures of the run before, printed beside each row that has one.
+   270 s.  Then the stops of one joint motion were found to compute and check its
+   instants again whenever an instant was a nested radical or a number of K(alpha)
+   (``stops.motion_roots``, ``stops.covered_points``): one state's children at n = 12,
+   112 s for 32 of them before, 14 s for all 84 after; the first 1,560 states at n = 12,
+   84.6 s -> 28.6 s CPU (side by side); a K(alpha) snapshot is written in Q(gamma) by
+   one linear solve.  Still far from the 60 s target with the budget of
+   10,000 (docs/gathering.md, "The search": where the time goes).  ``PREVIOUS`` holds
+   the figures of the run before, printed beside each row that has one.
 2. One exact event at n = 30 (a Look with its invariant checks, or an advance along a
    piece with its checks at every critical instant): the median CPU time over an ASYNC
    run with every invariant on (``schedulers.run``, at most 300 events), against the
@@ -50,10 +55,12 @@ SEVERAL = {"gather_readings": ["A3=all"],
 
 #: CPU seconds of the previous run by (row, n, budget): the ratio printed beside a row
 #: (default readings: docs/gathering.md's "after" column, the slowest figure;
-#: joint steps: the run before the undivided chord keys, a lower bound at budget 10,000)
+#: joint steps at budget 10,000 -- before the shared instants of a joint motion's stops,
+#: n = 8 more than 210 s, n = 12 more than 15.7 min (not finished); after, n = 8
+#: 408.7 s (10,000 states, depth 16), n = 12 220.9 s (10,000 states, depth 6)
 PREVIOUS = {("default", 8, 10_000): 9.0, ("default", 10, 10_000): 12.7,
-            ("default", 12, 10_000): 11.7, ("joint", 12, 2000): 7.7,
-            ("joint", 12, 10_000): 480.0}      # a lower bound: not finished
+            ("default", 12, 10_000): 11.7, ("joint", 12, 2000): 8.5,
+            ("joint", 8, 10_000): 408.7, ("joint", 12, 10_000): 220.9}
 
 
 def time_search(n: int, budget: int, expect: dict, seed: int = 1):

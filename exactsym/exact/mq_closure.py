@@ -120,6 +120,14 @@ def decided_sqrt(x, bounded: bool = True):
     return _decided_sqrt_mq(x, bounded)
 
 
+@lru_cache(maxsize=1 << 14)
+def _radicand_primes(m: int) -> tuple:
+    """The primes of the square-free radicand ``m`` (a full factorisation, remembered:
+    the search meets the same few radicands in number after number, and factoring
+    them again took a quarter of a joint-step search's time at n = 8)."""
+    return tuple(int(p) for p, _ in fmpz(m).factor())
+
+
 @lru_cache(maxsize=256)       # keys of up to 256 terms of thousands of bits
 def _decided_sqrt_mq(x: MQ, bounded: bool):
     """:func:`decided_sqrt` of an MQ, remembered: a function of the value alone (the
@@ -130,7 +138,7 @@ def _decided_sqrt_mq(x: MQ, bounded: bool):
         return MQ(), True
     if x.sign() < 0:
         return None, True
-    primes = sorted({int(p) for m in x.radicands() for p, _ in fmpz(m).factor()})
+    primes = sorted({p for m in x.radicands() for p in _radicand_primes(m)})
     found = _kummer_root(x, primes, True)
     if found is None:
         return None, True

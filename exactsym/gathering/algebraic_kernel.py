@@ -99,11 +99,31 @@ def _kernel_field(root, basis):
         field = NumberField(minpoly, enclose, f"Q(gamma), gamma = alpha + {c}*theta, "
                             f"alpha = {root.text()}")
 
-        def to_kernel(x, a=a, field=field):
-            v = a.solve(fmpq_mat(size, 1, _coords(x, d, rads)))
-            return field.element(fmpq_poly([v[k, 0] for k in range(size)]))
-        return field, to_kernel
+        return field, _ToKernel(field, a, d, rads)
     raise ValueError("no primitive element found")
+
+
+class _ToKernel:
+    """The map from numbers of ``K(alpha)`` to ``Q(gamma)``: the coordinates in the basis
+    ``alpha^i sqrt(s)`` solved against the powers of gamma (``a``, exact); ``many``
+    solves for several numbers at once (one elimination: a snapshot's numbers, with
+    coefficients of thousands of bits, cost one solve instead of one each)."""
+
+    def __init__(self, field, a, d: int, rads: list):
+        self.field, self.a, self.d, self.rads = field, a, d, rads
+
+    def __call__(self, x):
+        return self.many([x])[0]
+
+    def many(self, xs) -> list:
+        xs = list(xs)
+        if not xs:
+            return []
+        size = self.a.nrows()
+        cols = [_coords(x, self.d, self.rads) for x in xs]
+        v = self.a.solve(fmpq_mat(size, len(cols), [c[r] for r in range(size) for c in cols]))
+        return [self.field.element(fmpq_poly([v[k, j] for k in range(size)]))
+                for j in range(len(cols))]
 
 
 def kernel_configuration(points):
@@ -115,11 +135,10 @@ def kernel_configuration(points):
         raise ValueError("kernel_configuration: the points hold no number of one K(alpha)")
     numbers = [x for p in points for x in p]
     field, to_kernel = kernel_field(roots.pop(), numbers)
-    atoms = _Atoms()
-    for x in numbers:
-        for c in (x.c if is_algebraic(x) else (x,)):
-            for s in c.terms:
-                if s != 1:
-                    atoms[("sqrt", fmpq(s))] = to_kernel(MQ({s: fmpq(1)}))
-    pts = [(to_kernel(x), to_kernel(y)) for x, y in points]
+    radicands = sorted({s for x in numbers for c in (x.c if is_algebraic(x) else (x,))
+                        for s in c.terms if s != 1})
+    values = to_kernel.many([MQ({s: fmpq(1)}) for s in radicands] + numbers)
+    atoms = _Atoms({("sqrt", fmpq(s)): v for s, v in zip(radicands, values)})
+    coords = values[len(radicands):]
+    pts = list(zip(coords[0::2], coords[1::2]))
     return Configuration.from_points(pts, system=FieldSystem(field, atoms))

@@ -36,8 +36,6 @@ from __future__ import annotations
 import contextlib
 from dataclasses import dataclass, field
 
-from flint import fmpq
-
 from ..exact.algebraic.algebraic_numbers import is_algebraic
 from ..exact.algebraic.tower_numbers import is_tower
 from ..exact.multiquadratic import MQ
@@ -46,6 +44,7 @@ from .instants import critical_roots, look_points
 from .joint_instants import joint_look_points
 from .pattern import definition_defects, recognise
 from .state_key import piece_key, point_key
+from .stops import covered_points
 from .world import IDENTITY, MIRROR
 
 #: How a violation names the statement it contradicts: the paper's ``\\label`` where
@@ -342,7 +341,8 @@ class Checker:
         ends = {i: rob[i].pos for i in movers}
         sec_r = world.readings.A1 == "sec-r"
         shared = None if full is None or not REUSE_JOINT else \
-            _covered_points(world, full, sec_r)
+            covered_points(world, full, sec_r)
+        entry = (dict(self.counts), self.undecided_fresh)
         if shared is None:
             points, sided = joint_look_points(pieces, world, sec_r)
             motion, scale = None, None
@@ -368,10 +368,10 @@ class Checker:
                 else:
                     for i in movers:
                         rob[i].pos = full[0][i].at(jp.tau)
-                    tau = scale(jp.tau)       # the time of the (shorter) step itself
+                    tau = _step_time(scale, jp.tau)   # the time of the (shorter) step
                 self.counts["instants"] += 1
-                where = f" (time {tau.text()} of the step: {jp.where})"
-                with _at_time(tau):
+                where = f" (time {'?' if tau is None else tau.text()} of the step: {jp.where})"
+                with _at_time(tau), _exact_time_for_witness(tau):
                     for i in looked:
                         if i4 and (rob[i].role or "").startswith("leader"):
                             self.counts["I4"] += 1
@@ -393,6 +393,16 @@ class Checker:
                               for name, k in self.counts.items()
                               if k != before[0].get(name, 0)),
                         self.undecided_fresh - before[1])
+        except _NoStepTime:
+            # a failure at an instant whose time in the step does not divide out (the
+            # stop and the instant in two fields): checked again on the step's own
+            # instants, for the witness's exact time (the counts as if checked once)
+            self.counts.clear()
+            self.counts.update(entry[0])
+            self.undecided_fresh = entry[1]
+            for i in movers:
+                rob[i].pos = ends[i]
+            self._joint_instants(world, pieces, None)
         finally:
             for i in movers:
                 rob[i].pos = ends[i]
@@ -515,73 +525,6 @@ def _joint_key(checker, world, full_pieces: dict, sec_r: bool) -> tuple:
             world.decide)
 
 
-#: (the whole joint motion and the state before it) -> its look points, when none is a
-#: number of the run's tower (each copy of the world, :func:`.search.fork`, owns its tower)
-_POINTS: dict = {}
-_POINTS_MAX = 512
-
-
-def _whole_motion_points(world, pieces: dict, before: dict, sec_r: bool) -> tuple:
-    """:func:`.joint_instants.joint_look_points` of the whole pieces, computed on the
-    state before the step (every mover at its piece's start, its whole path pending):
-    the same for every stop of the motion, so computed once for them all."""
-    rob = world.robots
-    key = (tuple((point_key(r.pos) if k not in pieces else None,
-                  tuple(piece_key(pc) for pc in (before[k][1] if k in pieces else r.path)),
-                  None if r.target is None else point_key(r.target),
-                  None if r.centre is None else point_key(r.centre), tuple(sorted(r.r_set)))
-                 for k, r in enumerate(rob)), tuple(sorted(pieces)), world.readings, sec_r)
-    got = _POINTS.get(key)
-    if got is not None:
-        return got
-    after = {i: (rob[i].pos, rob[i].path) for i in pieces}
-    try:
-        for i in pieces:
-            rob[i].pos, rob[i].path = before[i][0], before[i][1]
-        got = joint_look_points(pieces, world, sec_r)
-    finally:
-        for i in pieces:
-            rob[i].pos, rob[i].path = after[i]
-    if not any(is_tower(jp.tau) for jp in got[0]):
-        if len(_POINTS) >= _POINTS_MAX:
-            _POINTS.clear()
-        _POINTS[key] = got
-    return got
-
-
-def _covered_points(world, full, sec_r: bool):
-    """``(points, sided, scale)`` for a joint step that moved every mover from the start
-    of its piece ``full[0][i]`` to the common stop ``full[1]`` (None: the pieces' ends):
-    the look points of the whole motion (:func:`.joint_instants.joint_look_points`) that
-    lie before the stop, and ``scale`` mapping the whole motion's time to the step's.
-    A piece's prefix moves along the piece's own parametrisation (``split(f)``:
-    ``prefix.at(s) = piece.at(f s)``, segment and arc alike), so the step's instants are
-    the whole motion's before ``f`` and each stretch between them is sampled by the
-    whole motion's point there.  None when a stretch of the step holds no such point
-    (the stop inside the first stretch, or inside an instant's isolating interval) or a
-    comparison fails: the caller computes the step's own instants."""
-    pieces, f, before = full
-    points, sided = _whole_motion_points(world, pieces, before, sec_r)
-    if f is None:
-        return points, sided, (lambda tau: tau)
-    try:
-        kept = [jp for jp in points if (jp.tau - f).sign() < 0]
-    except (TypeError, ValueError, ArithmeticError):
-        return None
-    if not kept or kept[-1].exact:
-        return None
-    after = points[len(kept):len(kept) + 1]
-    if after and not after[0].exact and after[0].where.startswith("just after"):
-        return None               # an instant not held: is it before the stop?
-    held = sum(1 for jp in kept if jp.exact)
-    sided_kept = sum(1 for jp in kept if jp.where.startswith("just after")) - held
-    if getattr(f, "is_rational", lambda: False)():
-        q = f.to_fmpq()
-        inv = MQ.rational(fmpq(q.q, q.p))
-        return kept, sided_kept, (lambda tau: tau * inv)
-    return kept, sided_kept, (lambda tau: tau / f)
-
-
 def critical_points(piece, centre, world, mover: int) -> list:
     """The exact points strictly inside ``piece`` where the mover crosses the line through
     C and another robot, or is as far from C as another robot (the ``ray`` and
@@ -607,6 +550,30 @@ def _located(world, v: Violation, where: dict | None = None) -> Violation:
     v.positions = dict(where) if where is not None else \
         {r: world.robots[r].pos for r in v.robots}
     return v
+
+
+def _step_time(scale, tau):
+    """The whole motion's instant ``tau`` as a time of the shorter step, or None when it
+    does not divide out (an instant and the stop in two fields that do not mix)."""
+    try:
+        return scale(tau)
+    except (TypeError, ValueError, ArithmeticError):
+        return None
+
+
+class _NoStepTime(Exception):
+    """A violation seen at an instant of the whole motion whose time in the step is not
+    known: the step is checked again on its own instants."""
+
+
+@contextlib.contextmanager
+def _exact_time_for_witness(tau):
+    try:
+        yield
+    except Violation:
+        if tau is None:
+            raise _NoStepTime() from None
+        raise
 
 
 @contextlib.contextmanager

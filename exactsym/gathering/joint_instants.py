@@ -175,16 +175,23 @@ def joint_critical_roots(pieces: dict, world, sec_r: bool = False) -> list:
 
 @dataclass(frozen=True)
 class JointPoint:
+    """A look point of a joint motion; ``root_from``: at the point just after an instant,
+    the low end of the instant's isolating interval (the instant lies strictly between
+    it and ``tau``), else None."""
     tau: MQ
     where: str
     families: frozenset
     exact: bool
+    root_from: object = None
 
 
-def joint_look_points(pieces: dict, world, sec_r: bool = False) -> tuple:
+def joint_look_points(pieces: dict, world, sec_r: bool = False, roots=None) -> tuple:
     """``(points, sided)`` as :func:`.instants.look_points`, over the common time (an
-    exact root may be a tower number)."""
-    roots = joint_critical_roots(pieces, world, sec_r)
+    exact root may be a tower number); ``roots``: :func:`joint_critical_roots` of the
+    same motion when the caller holds them (:func:`.stops.motion_roots`, shared by the
+    stops a step resolves: an exact instant is then the very object a stop names)."""
+    if roots is None:
+        roots = joint_critical_roots(pieces, world, sec_r)
     if not roots:
         return [JointPoint(MQ.rational(fmpq(1, 2)), "half way, no critical instant",
                            frozenset(), False)], 0
@@ -201,7 +208,7 @@ def joint_look_points(pieces: dict, world, sec_r: bool = False) -> tuple:
             out.append(JointPoint(tau, what, fams, True))
         else:
             sided += 1
-        out.append(JointPoint(MQ.rational(r.hi), f"just after: {what}", fams, False))
+        out.append(JointPoint(MQ.rational(r.hi), f"just after: {what}", fams, False, r.lo))
     return out, sided
 
 

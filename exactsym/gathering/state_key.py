@@ -13,11 +13,13 @@ never merged (only explored twice).
 
 from __future__ import annotations
 
-from ..exact.algebraic.interface import is_multiquadratic, nested_tower
+from ..exact.algebraic.interface import is_multiquadratic, is_run_tower, nested_tower
+from ..exact.tower import TowerElement
 from ..exact.tower import key, level
 from . import geometry as g
 
-__all__ = ["number_key", "point_key", "piece_key", "state_key"]
+__all__ = ["number_key", "point_key", "piece_key", "state_key", "shared_by_copies",
+           "tower_free"]
 
 
 class _Identity:
@@ -66,3 +68,30 @@ def state_key(world) -> tuple:
     return tuple((point_key(r.pos), tuple(piece_key(pc) for pc in r.path), r.role, r.kind,
                   None if world.rigid or r.start is None else point_key(r.start))
                  for r in world.robots)
+
+
+def shared_by_copies(x) -> bool:
+    """May ``x`` (a critical instant's exact value, or None) be kept in a cache that the
+    copies of a world (:func:`.search.fork`) share?  Yes for a rational or
+    multiquadratic number, a number of ``K(alpha)`` and a nested radical of an instant's
+    own one-level tower (:func:`~exactsym.exact.algebraic.tower_numbers.tower_of`: one
+    object per radicand in a run, never copied with a world); no for a number of a run's
+    tower or of a quadratic level over ``K(alpha)`` (each copy of the world owns its own,
+    and numbers of two towers are not compared)."""
+    if not isinstance(x, TowerElement):
+        return True
+    tower = nested_tower(x)
+    return tower is not None and not is_run_tower(tower)
+
+
+def tower_free(world) -> bool:
+    """Do the world's positions and pending paths hold no nested radical?  Only then may
+    a cache shared by the copies of a world keep instants of an instant's own tower: a
+    copy's tower numbers live in its own copy of that tower (:func:`.search.fork`), and
+    numbers of two copies do not mix."""
+    for r in world.robots:
+        pts = [r.pos] + [p for pc in r.path for p in
+                         ((pc.start, pc.end) + ((pc.centre,) if isinstance(pc, g.Arc) else ()))]
+        if any(isinstance(x, TowerElement) for p in pts for x in p):
+            return False
+    return True

@@ -41,14 +41,15 @@ from flint import fmpq
 
 from ..exact.algebraic.algebraic_numbers import is_algebraic
 from ..exact.algebraic.interface import float_and_error
-from ..exact.algebraic.tower_numbers import is_tower
+from ..exact.multiquadratic import MQ
 from . import geometry as g
 from .instants import critical_roots
-from .joint_instants import joint_critical_roots
+from .joint_instants import joint_critical_roots, joint_look_points
 from .run_home import instant_or_none
-from .state_key import point_key, state_key
+from .state_key import piece_key, point_key, shared_by_copies, state_key, tower_free
 
 __all__ = ["simplest_between", "stretch_stop", "instant_stop", "motion_roots", "resolve",
+           "before_stop", "covered_points",
            "stop_record", "exact_instant"]
 
 
@@ -111,10 +112,11 @@ def instant_stop(roots, k: int) -> dict:
             "value": f"{value:.12g}"}
 
 
-#: (motion key) -> its critical instants, when no exact value is a number of the run's
-#: tower (a multiquadratic number or one of K(alpha) is valid in every copy of the world,
-#: :func:`.search.fork`; a tower number belongs to its copy's tower); the search offers
-#: the stops of a state and then applies each in a copy of it
+#: (motion key) -> its critical instants, when every exact value is valid in every copy
+#: of the world (:func:`.state_key.shared_by_copies`: a multiquadratic number, one of
+#: K(alpha), a nested radical of an instant's own tower; not a number of a run's tower,
+#: which each copy, :func:`.search.fork`, owns); the search offers the stops of a state
+#: and then applies each in a copy of it
 _ROOTS: dict = {}
 _ROOTS_MAX = 256
 
@@ -144,7 +146,7 @@ def motion_roots(world, movers) -> list:
     else:
         roots = joint_critical_roots({i: world.robots[i].path[0] for i in movers}, world,
                                      sec_r)
-    if not any(is_tower(r.exact) for r in roots):
+    if tower_free(world) and all(shared_by_copies(r.exact) for r in roots):
         if len(_ROOTS) >= _ROOTS_MAX:
             _ROOTS.clear()
         _ROOTS[key] = roots
@@ -170,6 +172,30 @@ def piece_stops(world, movers) -> list:
         left = hi
     out.append(str(stretch_stop(piece, left, Fraction(1))))
     return [s for s in out if isinstance(s, dict) or 0 < Fraction(s) < 1]
+
+
+def before_stop(x, f) -> bool | None:
+    """Is the instant ``x`` strictly before the stop ``f`` (both exact)?  By the sign of
+    ``x - f``; for numbers that do not mix (two instants' own towers): False when ``x``
+    is ``f`` itself (the stop resolved from this instant, :func:`.stops.resolve`), else
+    by Arb balls when they are apart (a proven enclosure, never a float's guess); None
+    when undecided (the caller then computes the step's own instants).  ``x`` and ``f``
+    are instants of one motion, each separated from the others (:func:`motion_roots`)."""
+    try:
+        return (x - f).sign() < 0
+    except (TypeError, ValueError, ArithmeticError):
+        pass
+    if x is f:
+        return False
+    try:
+        (vx, ex), (vf, ef) = float_and_error(x), float_and_error(f)
+    except (AttributeError, TypeError, ValueError, ArithmeticError):
+        return None
+    if vx + ex < vf - ef:
+        return True
+    if vx - ex > vf + ef:
+        return False
+    return None
 
 
 def _rational_value(x) -> Fraction | None:
@@ -207,3 +233,91 @@ def stop_record(stop):
     if stop is None or isinstance(stop, dict):
         return stop
     return str(stop)
+
+
+#: (the whole joint motion and the state before it) -> its look points, when each is
+#: valid in every copy of the world (:func:`.state_key.shared_by_copies`; each copy,
+#: :func:`.search.fork`, owns its run's tower)
+_POINTS: dict = {}
+_POINTS_MAX = 512
+
+
+def _whole_motion_points(world, pieces: dict, before: dict, sec_r: bool) -> tuple:
+    """:func:`.joint_instants.joint_look_points` of the whole pieces, computed on the
+    state before the step (every mover at its piece's start, its whole path pending):
+    the same for every stop of the motion, so computed once for them all."""
+    rob = world.robots
+    key = (tuple((point_key(r.pos) if k not in pieces else None,
+                  tuple(piece_key(pc) for pc in (before[k][1] if k in pieces else r.path)),
+                  None if r.target is None else point_key(r.target),
+                  None if r.centre is None else point_key(r.centre), tuple(sorted(r.r_set)))
+                 for k, r in enumerate(rob)), tuple(sorted(pieces)), world.readings, sec_r)
+    got = _POINTS.get(key)
+    if got is not None:
+        return got
+    after = {i: (rob[i].pos, rob[i].path) for i in pieces}
+    try:
+        for i in pieces:
+            rob[i].pos, rob[i].path = before[i][0], before[i][1]
+        # the roots the step's stops were resolved from (the same state and motion):
+        # an exact stop is then the very object of its instant (:func:`.stops.before_stop`)
+        free = tower_free(world)
+        got = joint_look_points(pieces, world, sec_r, motion_roots(world, sorted(pieces)))
+    finally:
+        for i in pieces:
+            rob[i].pos, rob[i].path = after[i]
+    if free and all(shared_by_copies(jp.tau) for jp in got[0]):
+        if len(_POINTS) >= _POINTS_MAX:
+            _POINTS.clear()
+        _POINTS[key] = got
+    return got
+
+
+def _not_after(f, lo) -> bool:
+    """Is the stop ``f`` at or before the rational ``lo`` (exactly; False when unknown)?
+    Then an instant isolated in ``(lo, hi)`` lies after the stop."""
+    if lo is None:
+        return False
+    try:
+        return (f - MQ.rational(fmpq(lo))).sign() <= 0
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+
+
+def covered_points(world, full, sec_r: bool):
+    """``(points, sided, scale)`` for a joint step that moved every mover from the start
+    of its piece ``full[0][i]`` to the common stop ``full[1]`` (None: the pieces' ends):
+    the look points of the whole motion (:func:`.joint_instants.joint_look_points`) that
+    lie before the stop, and ``scale`` mapping the whole motion's time to the step's.
+    A piece's prefix moves along the piece's own parametrisation (``split(f)``:
+    ``prefix.at(s) = piece.at(f s)``, segment and arc alike), so the step's instants are
+    the whole motion's before ``f`` and each stretch between them is sampled by the
+    whole motion's point there.  None when a stretch of the step holds no such point
+    (the stop inside the first stretch, or inside an instant's isolating interval: an
+    instant without an exact value is placed by that interval, ``JointPoint.root_from``)
+    or a comparison fails: the caller computes the step's own instants."""
+    pieces, f, before = full
+    points, sided = _whole_motion_points(world, pieces, before, sec_r)
+    if f is None:
+        return points, sided, (lambda tau: tau)
+    kept = []
+    for jp in points:
+        b = before_stop(jp.tau, f)
+        if b is None:
+            return None
+        if not b:
+            break
+        kept.append(jp)
+    if not kept or kept[-1].exact:
+        return None
+    after = points[len(kept):len(kept) + 1]
+    if after and not after[0].exact and after[0].where.startswith("just after") and \
+            not _not_after(f, after[0].root_from):
+        return None               # an instant not held: is it before the stop?
+    held = sum(1 for jp in kept if jp.exact)
+    sided_kept = sum(1 for jp in kept if jp.where.startswith("just after")) - held
+    if getattr(f, "is_rational", lambda: False)():
+        q = f.to_fmpq()
+        inv = MQ.rational(fmpq(q.q, q.p))
+        return kept, sided_kept, (lambda tau: tau * inv)
+    return kept, sided_kept, (lambda tau: tau / f)

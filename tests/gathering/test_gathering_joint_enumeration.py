@@ -16,7 +16,7 @@ from hypothesis import given, settings, strategies as st
 
 from exactsym.exact.multiquadratic import MQ, sqrt_rational
 from exactsym.gathering import invariants, geometry as g
-from exactsym.gathering import joint_instants, joint_symmetry
+from exactsym.gathering import joint_instants, joint_symmetry, stops
 from exactsym.gathering.motion import motion_of
 from exactsym.gathering.invariants import Checker, Violation
 from exactsym.gathering.joint_instants import joint_critical_roots
@@ -123,7 +123,8 @@ def test_a_symmetry_among_movers_with_one_robot_standing_still_is_enumerated(mon
     assert "robot 1 at (-10, 0)" in v.witness and "no move" in v.witness
     # without the hypotheses on images the instant is not enumerated, and the step passes
     monkeypatch.setattr(joint_symmetry, "image_polys", lambda *a, **k: [])
-    monkeypatch.setattr(invariants, "_POINTS", {})     # the motion's points, cached above
+    monkeypatch.setattr(stops, "_POINTS", {})     # the motion's points, cached above
+    monkeypatch.setattr(stops, "_ROOTS", {})      # and its roots
     assert not _tags_at(ONE_STILL_PIECES, _world(ONE_STILL, ONE_STILL_PIECES, C1), third)
     w = _step(ONE_STILL, 1, ONE_STILL_PIECES, C1, _mirror_x)
     w.advance_together([(k, None, False) for k in ONE_STILL_PIECES])
@@ -187,7 +188,8 @@ def test_a_mover_on_a_still_robots_circle_about_both_centres(monkeypatch):
     assert "robot 4 at (0, 20)" in v.witness
     # before: both ties vanish, nothing listed for that swap, the step passes
     monkeypatch.setattr(joint_symmetry, "image_polys", lambda *a, **k: [])
-    monkeypatch.setattr(invariants, "_POINTS", {})     # the motion's points, cached above
+    monkeypatch.setattr(stops, "_POINTS", {})     # the motion's points, cached above
+    monkeypatch.setattr(stops, "_ROOTS", {})      # and its roots
     assert not _tags_at(SWAP_PIECES, _world(SWAP, SWAP_PIECES, ORIGIN), tau)
     w = _step(SWAP, 4, SWAP_PIECES, ORIGIN, _mirror_diagonal, arc_centre=ORIGIN)
     w.advance_together([(4, None, False), (5, None, False)])
@@ -234,7 +236,8 @@ def test_rays_about_Rs_moving_sec_centre(monkeypatch):
     assert (v.invariant, v.robots, _instant(v)) == ("I3", (4,), "-7/6 + sqrt(13)/3")
     # before: the rays about the still robots' SEC centre (10, 0) only
     monkeypatch.setattr(joint_instants, "about_moving_sec", lambda *a, **k: ([], []))
-    monkeypatch.setattr(invariants, "_POINTS", {})     # the motion's points, cached above
+    monkeypatch.setattr(stops, "_POINTS", {})     # the motion's points, cached above
+    monkeypatch.setattr(stops, "_ROOTS", {})      # and its roots
     assert not [t for t in _tags_at(MOVING_PIECES, _world(MOVING, MOVING_PIECES, ORIGIN,
                                                           r_set=R_SET), half)
                 if t[0] == "ray"]

@@ -1,5 +1,5 @@
 """A joint step stopped short reuses the verdicts of the whole joint motion's instants
-(``invariants._covered_points``, ``_VERDICTS``): the same verdicts as checking each
+(``stops.covered_points``, ``invariants._VERDICTS``): the same verdicts as checking each
 step's own instants anew (``invariants.REUSE_JOINT = False``), stop by stop and over
 whole searches; and the premise, a piece's prefix moves along the piece's own
 parametrisation."""
@@ -113,3 +113,75 @@ def test_a_search_finds_the_same_with_and_without_the_reuse(name, points, expect
         d.pop("seconds")
         out.append(d)
     assert out[0] == out[1]
+
+
+@pytest.mark.parametrize("enabled", [("I3", "I6"), ("I3", "I4", "I6", "I9")])
+def test_the_stops_of_one_joint_motion_compute_its_instants_once(enabled, monkeypatch):
+    """Every stop the adversary offers for a joint motion (rational, or an exact instant
+    of K(alpha) or of an instant's own tower, numbers that do not mix with each other) is
+    resolved and checked from one computation of the motion's critical instants: the
+    roots are cached per state and motion (:func:`.stops.motion_roots`), the whole
+    motion's look points are built from those very roots, and an exact stop is found
+    among them by identity or by disjoint Arb balls, never recomputed per stop.  The
+    verdicts are those of each step's own instants (``REUSE_JOINT = False``)."""
+    from exactsym.exact.multiquadratic import sqrt_rational
+    from exactsym.gathering import joint_instants, stops
+    s2 = sqrt_rational(2)
+    # robot 2 at (9 sqrt 2, 9 sqrt 2 + 4): the chords' instants need nested radicals
+    # (each an instant's own tower) beside numbers of K(alpha)
+    world = World([(20, 0), (-20, 0), (s2 * 9, s2 * 9 + 4), (-16, 12), (5, 0)],
+                  checker=Checker(enabled=frozenset(enabled)))
+    world.look(4, IDENTITY)
+    world.robots[0].path = [g.Segment(P(20, 0), P(0, 20))]
+    world.robots[1].path = [g.Segment(P(-20, 0), P(0, -20))]
+    steps = [a for a in children(world) if a["a"] == "step"]
+    exact = [a for a in steps if isinstance(a["moves"][0][1], dict)]
+    assert len(exact) >= 4
+    calls = []
+    real = joint_instants.joint_critical_roots
+
+    def counted(pieces, w, sec_r=False):
+        calls.append(tuple(sorted(pieces)))
+        return real(pieces, w, sec_r)
+    for mod in (joint_instants, stops):
+        monkeypatch.setattr(mod, "joint_critical_roots", counted)
+    invariants._VERDICTS.clear()
+    monkeypatch.setattr(invariants, "REUSE_JOINT", True)
+    shared = [_verdict(world, a) for a in exact]
+    # the children above filled the cache: no stop computes its motion's instants again
+    assert calls == []
+    monkeypatch.setattr(invariants, "REUSE_JOINT", False)
+    own = [_verdict(world, a) for a in exact]
+    assert shared == own
+
+
+def test_the_point_just_after_an_instant_names_its_isolating_interval():
+    """``JointPoint.root_from`` (how a stop is placed before an instant without an exact
+    value): the point just after an instant carries the low end of the instant's
+    isolating interval; where the instant is held, it lies strictly between that end
+    and the point, and so does no other look point."""
+    from exactsym.exact.multiquadratic import sqrt_rational
+    from exactsym.gathering.joint_instants import joint_look_points
+    s2 = sqrt_rational(2)
+    world = World([(20, 0), (-20, 0), (s2 * 9, s2 * 9 + 4), (-16, 12), (5, 0)],
+                  checker=Checker(enabled=frozenset(("I3",))))
+    world.look(4, IDENTITY)
+    world.robots[0].path = [g.Segment(P(20, 0), P(0, 20))]
+    pieces = {0: world.robots[0].path[0], 4: world.robots[4].path[0]}
+    points, _sided = joint_look_points(pieces, world)
+    afters = [k for k, jp in enumerate(points) if jp.where.startswith("just after")]
+    assert len(afters) >= 3
+    for k in afters:
+        jp = points[k]
+        lo = MQ.rational(jp.root_from)
+        assert (jp.tau - lo).sign() > 0
+        held = points[k - 1]
+        if held.exact:
+            assert (held.tau - lo).sign() > 0 and (jp.tau - held.tau).sign() > 0
+            others = points[:k - 1]
+        else:
+            others = points[:k]
+        # every earlier point is at or before lo (the interval holds the instant alone)
+        assert all((p.tau - lo).sign() <= 0 for p in others if not p.exact)
+    assert all(jp.root_from is None for jp in points
+               if not jp.where.startswith("just after"))
