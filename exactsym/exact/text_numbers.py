@@ -263,7 +263,7 @@ def _expression_span(run) -> tuple[int, int, str] | None:
         break
     piece = source[lo:hi]
     try:
-        node = parse_expression(piece)
+        node = parse_expression(piece, written=True)   # exactsym wrote it: no input limits
         value = evaluate(node, number_system([node]))
     except (ExpressionError, ArithmeticError, ValueError):
         return None
