@@ -1,0 +1,976 @@
+(* Refutation of lem-vl-move, checked by Coq: `coqc` on this file alone.
+   The paper: Lemma lem-vl-move: 'When v_l is moving no other robot will be selected as leader.'
+   The ledger (proofs/statements.toml): While v_l moves, no other robot is selected as leader.
+   Refuted under the reading: 'selected as leader' by any step of the procedure, GatheringPattern's ElectLeader included (the paper's own use, L1562: 'when the leader is moving, no other robots will move'); Preprocess with its counters advancing (calG' = calG when no G_ij is type 4); MakeAsym's epsilon a turn of eps = 1/100 about C, in either sense, the fresh Look half way (lam = 1/2); the leader is ElectLeader's output, 'a leader vertex v_l from G_1' (a single robot G_1 is symmetric: ElectLeader calls Make_SymToAsym on it, which moves it).
+   Written by exactsym (exactsym/certificates/coq_gathering.py); the libraries
+   below are proofs/coq/Exactsym.v and proofs/coq/Gathering.v, inlined: they
+   hold every definition used.
+   source: cases/gathering/polar-makeasym-mover-is-not-the-leader.toml *)
+
+(* Exactsym.v -- the definitions of Gan Chaudhuri and Mukhopadhyaya, "Leader Election and
+   Gathering for Asynchronous Transparent Fat Robots without Chirality", that exactsym's
+   refutations use, as decision procedures over exact rationals.  Every exported refutation
+   (exactsym certify --refutes LABEL FILE --coq OUT.v) inlines this file and proves, by
+   computation, that its configuration meets the statement's hypotheses and falsifies its
+   conclusion.  This file is the trusted base of those refutations: read it against the
+   paper (its \label names are cited at each definition); docs/certificates.md, "Coq".
+
+   The configurations are RATIONAL POLAR ones about C, the centre of the smallest
+   enclosing circle (SEC) of P: a point is (r2, turn), its squared distance from C and its
+   angle as a fraction of a full turn.  (1, 0) and (1, 1) are one point, so points are
+   compared by [peq], never by Coq's syntactic equality.
+
+   What a reader trusts besides the definitions (each argued where it is used):
+   (T1) [sec_centred P] implies that C (the origin) is the centre of the SEC of P;
+   (T2) every isometry of the plane mapping P onto itself is one of [candidates P]
+        (the SEC is unique, so such an isometry fixes C: it is a rotation about C or a
+        reflection in a line through C, and it maps the anchor to a point at its
+        distance from C, which leaves the candidates);
+   (T3) for the polygons of G_P (points on one circle about C, at least three of them)
+        the same holds with the polygon in place of P (three points on a circle determine
+        it, so a symmetry of the polygon fixes C).
+   Negative facts ("no line of symmetry", "asymmetric") rest on (T1)-(T3); positive
+   facts (a symmetry exists) and "not orderable" do not: the latter is a Coq theorem
+   ([not_orderable_by_candidates]) from the definition of def-orderable-set below, which
+   is shown satisfiable ([one_point_orderable]; [three_points_orderable]: three points at
+   distinct distances from C, ordered nearest first; that every set whose only symmetry
+   about C is the identity on it is orderable is argued at the definition, not proved).  The
+   definition lists P's points as points ([mem]), so it does not depend on how P's terms
+   are written; the theorem needs P written canonically ([canonical P], checked), and
+   then a symmetry whose canonical image of p is another term maps p to another point
+   ([canon_peq]). *)
+
+From Coq Require Import QArith ZArith List Bool Lia.
+Import ListNotations.
+Open Scope Q_scope.
+
+(* ------------------------------------------------------------------ numbers and points *)
+
+(* Two turns are one angle iff they differ by an integer. *)
+Definition integral (q : Q) : bool := Z.eqb (Z.modulo (Qnum q) (Zpos (Qden q))) 0.
+Definition teq (a b : Q) : bool := integral (a - b).
+(* The representative of a turn in [0, 1). *)
+Definition frac (q : Q) : Q := Qmake (Z.modulo (Qnum q) (Zpos (Qden q))) (Qden q).
+
+(* x < y on Q, decided. *)
+Definition Qlt_bool (x y : Q) : bool := negb (Qle_bool y x).
+
+Record pt := Pt { r2 : Q; turn : Q }.
+
+(* One point: the same distance from C and, off C, the same angle. *)
+Definition peq (p q : pt) : bool :=
+  Qeq_bool (r2 p) (r2 q) && (Qeq_bool (r2 p) 0 || teq (turn p) (turn q)).
+
+Definition mem (p : pt) (P : list pt) : bool := existsb (peq p) P.
+
+(* A set of points: no point listed twice. *)
+Fixpoint distinct (P : list pt) : bool :=
+  match P with [] => true | p :: rest => negb (mem p rest) && distinct rest end.
+
+Definition same_set (P Q : list pt) : bool :=
+  forallb (fun p => mem p Q) P && forallb (fun q => mem q P) Q.
+
+(* ------------------------------------------------------------------ isometries about C *)
+
+(* [Rot a]: the rotation about C by a turns.  [Mirror s]: the reflection in the line
+   through C at angle s/2 turns (turn t goes to s - t); Mirror s and Mirror (s + 1) are
+   one reflection.  stmirrorimage: the straight mirror image of p across that line is
+   [act (Mirror s) p].  skmirrorimage, read with m = C (the project's reading, ledger
+   entry skmirrorimage): the skewed mirror image across any line through C is the
+   half-turn [act (Rot (1#2)) p]. *)
+Inductive iso := Rot (a : Q) | Mirror (s : Q).
+
+Definition act (g : iso) (p : pt) : pt :=
+  match g with
+  | Rot a => Pt (r2 p) (turn p + a)
+  | Mirror s => Pt (r2 p) (s - turn p)
+  end.
+
+(* g maps P onto itself.  g is injective and P finite and distinct, so "into" is "onto". *)
+Definition is_symmetry (g : iso) (P : list pt) : bool := forallb (fun p => mem (act g p) P) P.
+
+Definition moves (g : iso) (P : list pt) : bool := existsb (fun p => negb (peq (act g p) p)) P.
+
+Definition half_turn : iso := Rot (1 # 2).
+
+(* ------------------------------------------------------------------ the SEC and candidates *)
+
+Definition rmax (P : list pt) : Q :=
+  fold_left (fun m p => if Qle_bool m (r2 p) then r2 p else m) P 0.
+Definition rim (P : list pt) : list pt := filter (fun p => Qeq_bool (r2 p) (rmax P)) P.
+
+(* (T1): every point is within sqrt(rmax) of C by the definition of rmax, and the points
+   at that distance leave no angular gap above half a turn: each has another one at most
+   half a turn counter-clockwise.  Then no open half-plane bounded by a line through C
+   holds them all: for any other centre C' one of them, s, has (s - C).(C' - C) <= 0, so
+   |s - C'|^2 = R^2 + |C' - C|^2 - 2 (s - C).(C' - C) > R^2 and no circle about C' of
+   radius at most R holds P: the SEC is the circle of radius R about C. *)
+Definition next_within_half (p q : pt) : bool :=
+  let g := frac (turn q - turn p) in Qlt_bool 0 g && Qle_bool g (1 # 2).
+Definition sec_centred (P : list pt) : bool :=
+  forallb (fun p => Qle_bool 0 (r2 p)) P &&
+  forallb (fun p => existsb (next_within_half p) (rim P)) (rim P).
+
+(* The first point off C: every symmetry maps it to a point at its distance from C. *)
+Fixpoint anchor (P : list pt) : option pt :=
+  match P with
+  | [] => None
+  | p :: rest => if Qlt_bool 0 (r2 p) then Some p else anchor rest
+  end.
+
+(* (T2): the rotation about C and the reflection in a line through C taking the anchor a
+   to each point q at a's distance. *)
+Definition candidates (P : list pt) : list iso :=
+  match anchor P with
+  | None => []
+  | Some a => flat_map (fun q => if Qeq_bool (r2 q) (r2 a)
+                                 then [Rot (turn q - turn a); Mirror (turn q + turn a)]
+                                 else []) P
+  end.
+
+Definition symmetries (P : list pt) : list iso := filter (fun g => is_symmetry g P) (candidates P).
+
+(* The reflections among the symmetries, by their parameter s (distinct for distinct q:
+   these are the lines of straight symmetry, each once). *)
+Definition mirror_of (g : iso) : list Q := match g with Mirror s => [s] | Rot _ => [] end.
+Definition mirrors (P : list pt) : list Q := flat_map mirror_of (symmetries P).
+
+(* ------------------------------------------------------------------ configurations *)
+
+(* def-straight-symmetric-conf: a line L not containing all of P whose reflection maps P
+   onto itself (points on L are their own images).  Its reflection fixes every point iff L
+   contains all of P, so L must move a point. *)
+Definition straight_symmetric (P : list pt) : bool :=
+  existsb (fun s => moves (Mirror s) P) (mirrors P).
+
+(* def-skewed-symmetric-conf, with the skewed mirror image read as the half-turn about C
+   (skmirrorimage, m = C): a line through C, not containing all of P (one that misses a
+   point off C always exists), whose skewed images map P onto itself. *)
+Definition skew_symmetric (P : list pt) : bool := is_symmetry half_turn P.
+
+(* def-symmetric-conf: a singleton, or straight or skew symmetric.  def-asymmetric-conf:
+   not symmetric (P in O_A). *)
+Definition symmetric_conf (P : list pt) : bool :=
+  Nat.eqb (length P) 1 || straight_symmetric P || skew_symmetric P.
+Definition in_O_A (P : list pt) : bool := negb (symmetric_conf P).
+
+(* Coordinates are written canonically: the squared distance in lowest terms and, off C,
+   the turn in [0, 1) in lowest terms (at C the turn 0).  Two canonical points are one
+   point iff they are the same term (Qred gives the one lowest-terms form of a rational,
+   frac the one representative in [0, 1) of a turn), so a point moved by g is one whose
+   canonical image differs from it as a term.  [canonical P]: P is written so. *)
+Definition canon (p : pt) : pt :=
+  if Qeq_bool (r2 p) 0 then Pt 0 0 else Pt (Qred (r2 p)) (Qred (frac (turn p))).
+Definition q_eqb (x y : Q) : bool := Z.eqb (Qnum x) (Qnum y) && Pos.eqb (Qden x) (Qden y).
+Definition pt_eqb (p q : pt) : bool := q_eqb (r2 p) (r2 q) && q_eqb (turn p) (turn q).
+Definition canonical (P : list pt) : bool := forallb (fun p => pt_eqb (canon p) p) P.
+
+(* The coordinates of the points after the change of coordinates g, written canonically. *)
+Definition image (g : iso) (p : pt) : pt := canon (act g p).
+
+(* def-orderable-set: "a deterministic algorithm which produces a unique ordering of the
+   points of P, such that the ordering is same irrespective of the choice of origin and
+   coordinate system".  An algorithm [order] reads a set (lists of one set give one
+   answer), lists every point of P (as a point: [mem], so how P's terms are written does
+   not matter), and commutes with every change of coordinates among
+   the isometries about C (requiring fewer coordinate changes makes "orderable" easier to
+   meet, so "not orderable" below is the stronger claim).  Not vacuous: when no isometry
+   about C other than the identity on P maps P onto itself, [order] may send the image of
+   P under any g to the images, in a fixed order, of P's points (well defined because g
+   is then determined on P), and any other set to itself. *)
+Definition orderable (P : list pt) : Prop :=
+  exists order : list pt -> list pt,
+    (forall A B, same_set A B = true -> order A = order B) /\
+    (forall g, order (map (image g) P) = map (image g) (order P)) /\
+    (forall p, In p P -> mem p (order P) = true).
+
+(* ------------------------------------------------------------------ polygons of G_P *)
+
+Fixpoint radii (P : list pt) : list Q :=
+  match P with
+  | [] => []
+  | p :: rest => let rs := radii rest in
+                 if Qlt_bool 0 (r2 p) && negb (existsb (Qeq_bool (r2 p)) rs)
+                 then r2 p :: rs else rs
+  end.
+
+(* The polygon at squared distance r from C (the text before def-sym-pair: "any polygon
+   G_i can be extracted by selecting the equidistant points from the center"), and
+   calG_P, the polygons of P. *)
+Definition level (P : list pt) (r : Q) : list pt := filter (fun p => Qeq_bool (r2 p) r) P.
+Definition polygons (P : list pt) : list (list pt) := map (level P) (radii P).
+
+(* A convex polygon (lemma-sym-ord's proof: "convex polygons ... inscribed in a circle"
+   about C) of at least three vertices, for which (T3) holds. *)
+Definition polygon (G : list pt) : bool :=
+  Nat.leb 3 (length G) && distinct G &&
+  match G with [] => false | v :: _ =>
+    Qlt_bool 0 (r2 v) && forallb (fun p => Qeq_bool (r2 p) (r2 v)) G end.
+
+(* def-symmetric-poly, def-asymmetric-poly: the vertex set is (not) in symmetric
+   configuration. *)
+Definition symmetric_polygon (G : list pt) : bool := symmetric_conf G.
+Definition asymmetric_polygon (G : list pt) : bool := negb (symmetric_conf G).
+
+(* A line through C at angle s/2 turns is a line of symmetry of the polygon G: of
+   straight symmetry (its reflection maps G onto G) or of skew symmetry (the half-turn
+   maps G onto G; then every line through C is one).  This is the widest reading of
+   "line of symmetry" (straight or skew, either for either polygon: the "mixed" reading of
+   "common line"), so "no common line" here holds under every reading. *)
+Definition line_of_symmetry (G : list pt) (s : Q) : bool :=
+  is_symmetry (Mirror s) G || is_symmetry half_turn G.
+
+(* def-sym-pair: <G_i, G_j> is symmetric iff they have a common line of symmetry.  If
+   both have the half-turn every line through C is common; else a common line is a
+   mirror of one without it, so the mirrors of both are the candidates. *)
+Definition symmetric_pair (Gi Gj : list pt) : bool :=
+  (is_symmetry half_turn Gi && is_symmetry half_turn Gj) ||
+  existsb (fun s => line_of_symmetry Gi s && line_of_symmetry Gj s) (mirrors Gi ++ mirrors Gj).
+Definition asymmetric_pair (Gi Gj : list pt) : bool := negb (symmetric_pair Gi Gj).
+
+(* def-sym-calG: calG is symmetric (in O_S) iff all its polygons have a common line of
+   symmetry; the candidates as for a pair. *)
+Definition calG_symmetric (Gs : list (list pt)) : bool :=
+  forallb (is_symmetry half_turn) Gs ||
+  existsb (fun s => forallb (fun G => line_of_symmetry G s) Gs) (flat_map mirrors Gs).
+Definition calG_in_O_A (Gs : list (list pt)) : bool := negb (calG_symmetric Gs).
+
+(* The same-kind reading of "common line" (def-sym-pair, def-sym-calG): a line through C
+   is common to the polygons Gs when it is a line of straight symmetry of every one (a
+   mirror of each), or a line of skew symmetry of every one (the half-turn maps each onto
+   itself; then every line through C is one).  A common straight line is a mirror of the
+   first polygon, so the mirrors are the candidates.  For polygons of at least three
+   vertices on a circle no line holds every vertex, so the readings that differ on such
+   lines (or on single robots) agree with this one. *)
+Definition common_line_same_kind (Gs : list (list pt)) : bool :=
+  forallb (is_symmetry half_turn) Gs ||
+  existsb (fun s => forallb (fun G => is_symmetry (Mirror s) G) Gs) (flat_map mirrors Gs).
+Definition symmetric_pair_same_kind (Gi Gj : list pt) : bool :=
+  common_line_same_kind [Gi; Gj].
+
+(* Before obs-merg-asym-pair: "the vertices of G_i are projected radially on the
+   circumference of the enclosing circle of G_j (i < j).  Construct a polygon G_ij with
+   the full set of vertices on the circle."  A projected vertex on a vertex of G_j is one
+   vertex of G_ij. *)
+Definition merged (Gi Gj : list pt) : list pt :=
+  match Gj with
+  | [] => Gi
+  | v :: _ => filter (fun p => negb (mem p Gj)) (map (fun p => Pt (r2 v) (turn p)) Gi) ++ Gj
+  end.
+
+(* ------------------------------------------------------------------ regular polygons, types *)
+
+(* n distinct points on a circle about C form a regular n-gon iff the rotation by 1/n of
+   a turn maps them onto themselves (then they are one orbit of it). *)
+Definition regular (G : list pt) : bool :=
+  polygon G && is_symmetry (Rot (1 # Pos.of_nat (length G))) G.
+
+(* The line of Mirror s passes through the vertex v iff the reflection fixes v. *)
+Definition fixed_vertices (G : list pt) (s : Q) : nat :=
+  length (filter (fun v => peq (act (Mirror s) v) v) G).
+Definition through_vertex (G : list pt) (s : Q) : bool := Nat.ltb 0 (fixed_vertices G s).
+
+Definition prime (n : nat) : bool :=
+  Nat.leb 2 n && forallb (fun d => negb (Nat.eqb (Nat.modulo n d) 0)) (seq 2 (n - 2)).
+
+(* The types before obs-exh-poly, for a convex polygon G with the lines of straight
+   symmetry [mirrors G] (n = number of vertices):
+   type 0: "a regular convex symmetric polygon";
+   type 1: non-regular, n even, exactly two lines of straight symmetry L1, L2, neither
+           through a vertex, L1 perpendicular to L2 (axes s/2 a quarter-turn apart);
+   type 2: non-regular, n even, exactly one line of straight symmetry, "passing through
+           either two vertices or two edges" (it fixes two vertices or none);
+   type 3: non-regular, n odd, exactly one line of straight symmetry, "passing through a
+           vertex and an edge" (it fixes exactly one vertex);
+   type 4: non-regular, n odd and not prime, "the number of lines of symmetry is more
+           than one but less than the number of vertices". *)
+Definition type0 (G : list pt) : bool := regular G.
+Definition type1 (G : list pt) : bool :=
+  Nat.even (length G) && negb (regular G) &&
+  match mirrors G with
+  | [s1; s2] => negb (through_vertex G s1) && negb (through_vertex G s2) && teq (s1 - s2) (1 # 2)
+  | _ => false
+  end.
+Definition type2 (G : list pt) : bool :=
+  Nat.even (length G) && negb (regular G) &&
+  match mirrors G with
+  | [s] => Nat.eqb (fixed_vertices G s) 2 || Nat.eqb (fixed_vertices G s) 0
+  | _ => false
+  end.
+Definition type3 (G : list pt) : bool :=
+  Nat.odd (length G) && negb (regular G) &&
+  match mirrors G with [s] => Nat.eqb (fixed_vertices G s) 1 | _ => false end.
+Definition type4 (G : list pt) : bool :=
+  Nat.odd (length G) && negb (prime (length G)) && negb (regular G) &&
+  Nat.ltb 1 (length (mirrors G)) && Nat.ltb (length (mirrors G)) (length G).
+Definition some_type (G : list pt) : bool :=
+  type0 G || type1 G || type2 G || type3 G || type4 G.
+
+(* ------------------------------------------------------------------ CW and ACW strings *)
+
+(* Before lemma-straight-sym: for a point m of a convex polygon G, "the vertices are labeled
+   starting from the vertex next (clockwise) to m up to the previous vertex of m, as v_1,
+   ..., v_n" and CW_m = (|m v_1|, ..., |m v_n|), ACW_m = (|m v_n|, ..., |m v_1|).  Here m
+   is a vertex (n = k - 1).  Turns grow counter-clockwise, so the clockwise gap from m to v
+   is frac(turn m - turn v).  Two vertices at angular gap g on a circle of radius R are
+   2R sin(pi g) apart; sin is increasing on [0, pi/2] and sin(pi g) = sin(pi (1 - g)), so
+   on one circle a distance is given by, and gives, [chord m v] = min(g, 1 - g). *)
+Fixpoint insert_by (k : pt -> Q) (x : pt) (l : list pt) : list pt :=
+  match l with
+  | [] => [x]
+  | y :: rest => if Qle_bool (k x) (k y) then x :: l else y :: insert_by k x rest
+  end.
+Definition sort_by (k : pt -> Q) (l : list pt) : list pt := fold_right (insert_by k) [] l.
+
+Definition clockwise_from (G : list pt) (m : pt) : list pt :=
+  sort_by (fun v => frac (turn m - turn v)) (filter (fun v => negb (peq v m)) G).
+Definition chord (m v : pt) : Q :=
+  let g := frac (turn m - turn v) in if Qle_bool g (1 # 2) then g else 1 - g.
+Definition CW (G : list pt) (m : pt) : list Q := map (chord m) (clockwise_from G m).
+Definition ACW (G : list pt) (m : pt) : list Q := rev (CW G m).
+
+Fixpoint qlist_eqb (a b : list Q) : bool :=
+  match a, b with
+  | [], [] => true
+  | x :: a', y :: b' => Qeq_bool x y && qlist_eqb a' b'
+  | _, _ => false
+  end.
+
+(* CW_v = ACW_v. *)
+Definition cw_sym (G : list pt) (v : pt) : bool := qlist_eqb (CW G v) (ACW G v).
+
+(* obs-asymmetric-polygon (Theorem 1), conditions for 1 <= i, j <= n, i <> j (distinct
+   vertices are distinct points): (1) CW_vi <> ACW_vi; (2) CW_vi <> CW_vj;
+   (3) CW_vi <> ACW_vj.  Theorem 1.1: (2) ACW_vi <> ACW_vj; (3) ACW_vi <> CW_vj. *)
+Definition all_pairs (G : list pt) (differ : pt -> pt -> bool) : bool :=
+  forallb (fun v => forallb (fun w => peq v w || differ v w) G) G.
+Definition theorem1_conditions (G : list pt) : bool :=
+  forallb (fun v => negb (cw_sym G v)) G &&
+  all_pairs G (fun v w => negb (qlist_eqb (CW G v) (CW G w))) &&
+  all_pairs G (fun v w => negb (qlist_eqb (CW G v) (ACW G w))).
+Definition theorem1_1_conditions (G : list pt) : bool :=
+  forallb (fun v => negb (cw_sym G v)) G &&
+  all_pairs G (fun v w => negb (qlist_eqb (ACW G v) (ACW G w))) &&
+  all_pairs G (fun v w => negb (qlist_eqb (ACW G v) (CW G w))).
+
+(* ------------------------------------------------------------------ the paper's algorithms *)
+
+(* The loop of Check_Symmetry_Odd and Check_Symmetry_Even AS PRINTED: "while i <= n:
+   compute CW_vi and ACW_vi; if CW_vi = ACW_vi then deg_sym++ else (...; i++)".  Only i
+   decides whether it ends; [printed_loop fuel G i] is true iff it ends within [fuel]
+   passes, the vertices v_1, ..., v_n listed in G's order. *)
+Definition vertex (G : list pt) (i : nat) : pt := nth (i - 1)%nat G (Pt 0 0).
+Fixpoint printed_loop (fuel : nat) (G : list pt) (i : nat) : bool :=
+  match fuel with
+  | O => false
+  | S f => if Nat.ltb (length G) i then true
+           else if cw_sym G (vertex G i) then printed_loop f G i
+           else printed_loop f G (S i)
+  end.
+
+(* Check_Symmetry_Even read with i++ after every vertex (the evident reading): returns
+   (st_sym, sk_sym, deg_sym).  It reports "G is straight symmetric" iff deg_sym > 0 and
+   st_sym, "G is skew symmetric" iff deg_sym > 0 and sk_sym, the degree deg_sym/2, and
+   "G is asymmetric" iff deg_sym = 0.  [seen] holds v_1 .. v_(i-1). *)
+Fixpoint check_even_loop (G seen todo : list pt) (st sk : bool) (deg : nat)
+  : bool * bool * nat :=
+  match todo with
+  | [] => (st, sk, deg)
+  | v :: rest =>
+    if cw_sym G v then check_even_loop G (seen ++ [v]) rest true sk (S deg)
+    else let hits := length (filter (fun w => qlist_eqb (CW G v) (CW G w) ||
+                                              qlist_eqb (CW G v) (ACW G w) ||
+                                              qlist_eqb (ACW G v) (CW G w)) seen) in
+         check_even_loop G (seen ++ [v]) rest st (sk || Nat.ltb 0 hits) (deg + hits)
+  end.
+Definition check_symmetry_even (G : list pt) : bool * bool * nat :=
+  check_even_loop G [] G false false 0.
+Definition even_reports_straight (G : list pt) : bool :=
+  match check_symmetry_even G with (st, _, deg) => Nat.ltb 0 deg && st end.
+
+(* Elect_Leader_Sym, n even: "Call Check_Symmetry_Even(G); if degree of symmetry of G > 1:
+   Report 'Leader Election is not possible for G'", the degree being the deg_sym/2 that
+   Check_Symmetry_Even reports (one reading of the ledger's entry). *)
+Definition even_reported_degree (G : list pt) : nat :=
+  match check_symmetry_even G with (_, _, deg) => Nat.div deg 2 end.
+Definition elect_leader_sym_even_refuses (G : list pt) : bool :=
+  Nat.ltb 1 (even_reported_degree G).
+
+(* Elect_Leader_Asym: after the ordering, "i = 1; while G \ v_i is symmetric: i++;
+   v_l = v_i".  It elects a vertex v with G \ v asymmetric, or none when there is no such
+   vertex (the loop runs past v_n), whatever the ordering. *)
+Definition remove_vertex (G : list pt) (v : pt) : list pt := filter (fun w => negb (peq w v)) G.
+Definition leader_candidates (G : list pt) : list pt :=
+  filter (fun v => negb (symmetric_conf (remove_vertex G v))) G.
+
+(* The printed loop never ends once it reaches a vertex with CW = ACW. *)
+Lemma printed_loop_stuck : forall G i, Nat.ltb (length G) i = false ->
+  cw_sym G (vertex G i) = true -> forall fuel, printed_loop fuel G i = false.
+Proof.
+  intros G i Hi Hc fuel. induction fuel as [|f IH]; simpl; [reflexivity|].
+  rewrite Hi, Hc. exact IH.
+Qed.
+
+Lemma printed_loop_reaches : forall G k i, (i + k <= length G)%nat ->
+  cw_sym G (vertex G (i + k)) = true -> forall fuel, printed_loop fuel G i = false.
+Proof.
+  intros G k. induction k as [|k IH]; intros i Hle Hc fuel.
+  - rewrite Nat.add_0_r in *. apply printed_loop_stuck; [apply Nat.ltb_ge; exact Hle | exact Hc].
+  - destruct fuel as [|f]; simpl; [reflexivity|].
+    assert (Hi : Nat.ltb (length G) i = false) by (apply Nat.ltb_ge; lia).
+    rewrite Hi. destruct (cw_sym G (vertex G i)) eqn:E.
+    + apply printed_loop_stuck; assumption.
+    + apply IH; [lia | replace (S i + k)%nat with (i + S k)%nat by lia; exact Hc].
+Qed.
+
+(* So, as printed, Check_Symmetry_Odd and Check_Symmetry_Even never end on a polygon with
+   a vertex whose CW = ACW, whatever the labelling v_1, ..., v_n (any order of G). *)
+Theorem printed_loop_never_ends : forall G, existsb (cw_sym G) G = true ->
+  forall fuel, printed_loop fuel G 1 = false.
+Proof.
+  intros G H fuel. apply existsb_exists in H. destruct H as [v [Hin Hv]].
+  destruct (In_nth G v (Pt 0 0) Hin) as [k [Hk Hnth]].
+  apply (printed_loop_reaches G k 1); [lia|].
+  unfold vertex. replace (1 + k - 1)%nat with k by lia. rewrite Hnth. exact Hv.
+Qed.
+
+(* ------------------------------------------------------------------ Preprocess *)
+
+(* Preprocess AS PRINTED (algorithm Preprocess(calG), G_1, ..., G_t the polygons):
+     i = 1; while i <= t: if G_i is odd { j = 1; while j <= t: if j <> i & G_j is odd
+       { compute G_ij; if G_ij is type 4: replace G_i by G_ij, else j++ } else j++ }
+     else i++.
+   Only these counters decide whether it ends.  [poly Gs k] is G_k (k from 1), and
+   [pre_step] one pass of either loop (None: it has ended). *)
+Inductive pstate := Outer (i : nat) | Inner (i j : nat).
+Definition poly (Gs : list (list pt)) (k : nat) : list pt := nth (k - 1) Gs [].
+Fixpoint set_nth (Gs : list (list pt)) (k : nat) (G : list pt) : list (list pt) :=
+  match Gs, k with
+  | [], _ => []
+  | _ :: rest, O => G :: rest
+  | H :: rest, S k' => H :: set_nth rest k' G
+  end.
+Definition pre_step (Gs : list (list pt)) (st : pstate) : option (list (list pt) * pstate) :=
+  match st with
+  | Outer i => if Nat.ltb (length Gs) i then None
+               else if Nat.odd (length (poly Gs i)) then Some (Gs, Inner i 1)
+               else Some (Gs, Outer (S i))
+  | Inner i j => if Nat.ltb (length Gs) j then Some (Gs, Outer i)
+                 else if negb (Nat.eqb j i) && Nat.odd (length (poly Gs j)) then
+                   let Gij := merged (poly Gs i) (poly Gs j) in
+                   if type4 Gij then Some (set_nth Gs (i - 1) Gij, Inner i j)
+                   else Some (Gs, Inner i (S j))
+                 else Some (Gs, Inner i (S j))
+  end.
+(* [preprocess_printed fuel Gs st] is true iff the printed loops end within [fuel] passes. *)
+Fixpoint preprocess_printed (fuel : nat) (Gs : list (list pt)) (st : pstate) : bool :=
+  match fuel with
+  | O => false
+  | S f => match pre_step Gs st with
+           | None => true
+           | Some (Gs', st') => preprocess_printed f Gs' st'
+           end
+  end.
+
+Lemma set_nth_length : forall Gs k G, length (set_nth Gs k G) = length Gs.
+Proof. induction Gs as [|H rest IH]; intros [|k] G; simpl; auto. Qed.
+
+Lemma set_nth_nth : forall Gs k G, (k < length Gs)%nat -> nth k (set_nth Gs k G) [] = G.
+Proof.
+  induction Gs as [|H rest IH]; intros [|k] G Hk; simpl in *; try lia; auto.
+  apply IH. lia.
+Qed.
+
+Definition pindex (st : pstate) : nat := match st with Outer i => i | Inner i _ => i end.
+(* The invariant: i is a polygon's index and G_i is odd. *)
+Definition pinv (Gs : list (list pt)) (st : pstate) : Prop :=
+  (1 <= pindex st <= length Gs)%nat /\ Nat.odd (length (poly Gs (pindex st))) = true.
+
+Lemma type4_odd : forall G, type4 G = true -> Nat.odd (length G) = true.
+Proof. intros G H. unfold type4 in H. now repeat rewrite andb_true_iff in H. Qed.
+
+(* With G_i odd nothing increments i: G_i is replaced only by a type 4 polygon, odd. *)
+Lemma pre_step_keeps : forall Gs st, pinv Gs st ->
+  exists Gs' st', pre_step Gs st = Some (Gs', st') /\ pinv Gs' st'.
+Proof.
+  intros Gs [i|i j] [Hi Ho]; simpl in Hi, Ho; simpl.
+  - rewrite (proj2 (Nat.ltb_ge (length Gs) i) ltac:(lia)), Ho. eexists; eexists; split; [reflexivity|].
+    split; simpl; assumption.
+  - destruct (Nat.ltb (length Gs) j).
+    + eexists; eexists; split; [reflexivity|]. split; simpl; assumption.
+    + destruct (negb (Nat.eqb j i) && Nat.odd (length (poly Gs j))).
+      * destruct (type4 (merged (poly Gs i) (poly Gs j))) eqn:T.
+        -- eexists; eexists; split; [reflexivity|]. split; simpl.
+           ++ rewrite set_nth_length. exact Hi.
+           ++ unfold poly at 1. rewrite set_nth_nth by lia. apply type4_odd. exact T.
+        -- eexists; eexists; split; [reflexivity|]. split; simpl; assumption.
+      * eexists; eexists; split; [reflexivity|]. split; simpl; assumption.
+Qed.
+
+Lemma preprocess_stuck : forall fuel Gs st, pinv Gs st -> preprocess_printed fuel Gs st = false.
+Proof.
+  induction fuel as [|f IH]; intros Gs st H; simpl; [reflexivity|].
+  destruct (pre_step_keeps Gs st H) as [Gs' [st' [E H']]]. rewrite E. apply IH. exact H'.
+Qed.
+
+(* So, as printed, Preprocess never ends once calG holds an odd polygon, whatever the
+   order of the polygons: i reaches the first odd one and stays there. *)
+Theorem preprocess_printed_never_ends : forall Gs,
+  existsb (fun G => Nat.odd (length G)) Gs = true ->
+  forall fuel, preprocess_printed fuel Gs (Outer 1) = false.
+Proof.
+  intros Gs H. apply existsb_exists in H. destruct H as [G [Hin Hodd]].
+  destruct (In_nth Gs G [] Hin) as [m [Hm Hnth]].
+  assert (Reach : forall k i, (i + k = S m)%nat -> (1 <= i)%nat ->
+            forall fuel, preprocess_printed fuel Gs (Outer i) = false).
+  { induction k as [|k IHk]; intros i Hik H1 fuel.
+    - apply preprocess_stuck. split; simpl; [lia|]. unfold poly.
+      replace (i - 1)%nat with m by lia. rewrite Hnth. exact Hodd.
+    - destruct fuel as [|f]; simpl; [reflexivity|].
+      rewrite (proj2 (Nat.ltb_ge (length Gs) i) ltac:(lia)).
+      destruct (Nat.odd (length (poly Gs i))) eqn:O.
+      + apply preprocess_stuck. split; simpl; [lia | exact O].
+      + apply IHk; lia. }
+  intros fuel. apply (Reach m 1%nat); lia.
+Qed.
+
+(* ------------------------------------------------------------------ not orderable: a theorem *)
+
+Lemma pt_eqb_refl : forall p, pt_eqb p p = true.
+Proof.
+  intros [[a b] [c d]]. unfold pt_eqb, q_eqb. simpl. now rewrite !Z.eqb_refl, !Pos.eqb_refl.
+Qed.
+
+Lemma map_fixed : forall (f : pt -> pt) l, map f l = l -> forall x, In x l -> f x = x.
+Proof.
+  intros f l. induction l as [|a l IH]; simpl; intros E x H; [contradiction|].
+  injection E as Ea El. destruct H as [<-|H]; [exact Ea | exact (IH El x H)].
+Qed.
+
+(* ------------------------------------------------------------------ orderable is not vacuous *)
+
+(* [canon] gives one term per point ([canon_peq]: one point, one canonical form), and
+   def-orderable-set as written above can be met: one point off C is orderable
+   ([one_point_orderable]).  (A definition no set meets would make every "not orderable"
+   above empty.) *)
+Lemma divides_transfer : forall n d n' d', (0 < d)%Z -> (0 < d')%Z ->
+  (n * d' = n' * d)%Z -> (d | n)%Z -> (d' | n')%Z.
+Proof.
+  intros n d n' d' Hd Hd' H [k Hk]. exists k. subst n.
+  apply (Z.mul_reg_r _ _ d); [lia|]. rewrite <- H. ring.
+Qed.
+
+Lemma integral_Qeq : forall q q', q == q' -> integral q = integral q'.
+Proof.
+  intros [n d] [n' d'] H. unfold Qeq in H; simpl in H. unfold integral; simpl.
+  destruct (Z.eqb_spec (n mod Z.pos d) 0) as [E|E];
+  destruct (Z.eqb_spec (n' mod Z.pos d') 0) as [E'|E']; try reflexivity; exfalso.
+  - apply E'. apply Z.mod_divide; [lia|]. apply Z.mod_divide in E; [|lia].
+    apply (divides_transfer n (Z.pos d)); auto; lia.
+  - apply E. apply Z.mod_divide; [lia|]. apply Z.mod_divide in E'; [|lia].
+    apply (divides_transfer n' (Z.pos d')); auto; lia.
+Qed.
+
+Lemma frac_teq : forall t t', teq t t' = true -> frac t == frac t'.
+Proof.
+  intros [a b] [c d] H. unfold teq, integral in H. simpl in H.
+  apply Z.eqb_eq in H. apply Z.mod_divide in H; [|lia]. destruct H as [k Hk].
+  unfold frac, Qeq; simpl.
+  pose proof (Z.div_mod a (Z.pos b) ltac:(lia)) as Ha.
+  pose proof (Z.div_mod c (Z.pos d) ltac:(lia)) as Hc.
+  pose proof (Z.mod_pos_bound a (Z.pos b) ltac:(lia)) as Ba.
+  pose proof (Z.mod_pos_bound c (Z.pos d) ltac:(lia)) as Bc.
+  set (u := (a mod Z.pos b)%Z) in *. set (w := (c mod Z.pos d)%Z) in *.
+  set (q1 := (a / Z.pos b)%Z) in *. set (q2 := (c / Z.pos d)%Z) in *.
+  assert (M : (u * Z.pos d - w * Z.pos b = (k - q1 + q2) * (Z.pos b * Z.pos d))%Z).
+  { rewrite Pos2Z.inj_mul in Hk. nia. }
+  assert (X1 : (0 <= u * Z.pos d < Z.pos b * Z.pos d)%Z) by nia.
+  assert (X2 : (0 <= w * Z.pos b < Z.pos b * Z.pos d)%Z) by nia.
+  revert M X1 X2. generalize (Z.pos b * Z.pos d)%Z (u * Z.pos d)%Z (w * Z.pos b)%Z
+    (k - q1 + q2)%Z. intros P X Y m M X1 X2.
+  assert (m = 0)%Z.
+  { destruct (Z.lt_trichotomy m 0) as [L|[L|L]]; [|exact L|]; exfalso.
+    - assert (m * P <= - P)%Z by nia. lia.
+    - assert (P <= m * P)%Z by nia. lia. }
+  subst m. lia.
+Qed.
+
+Lemma canon_peq : forall x y, peq x y = true -> canon x = canon y.
+Proof.
+  intros [rx tx] [ry ty] H. unfold peq in H; simpl in H.
+  apply andb_true_iff in H. destruct H as [Hr Ht]. apply Qeq_bool_iff in Hr.
+  unfold canon; cbn [r2 turn].
+  destruct (Qeq_bool rx 0) eqn:Ex; destruct (Qeq_bool ry 0) eqn:Ey; try reflexivity.
+  - apply Qeq_bool_iff in Ex. apply Qeq_bool_neq in Ey. exfalso. apply Ey. rewrite <- Hr. exact Ex.
+  - apply Qeq_bool_iff in Ey. apply Qeq_bool_neq in Ex. exfalso. apply Ex. rewrite Hr. exact Ey.
+  - f_equal; apply Qred_complete; [exact Hr | apply frac_teq; exact Ht].
+Qed.
+
+Lemma pt_eqb_eq : forall p q, pt_eqb p q = true -> p = q.
+Proof.
+  intros [[a b] [c d]] [[a' b'] [c' d']] H. unfold pt_eqb, q_eqb in H; simpl in H.
+  repeat rewrite andb_true_iff in H.
+  destruct H as [[H1 H2] [H3 H4]].
+  apply Z.eqb_eq in H1, H3. apply Pos.eqb_eq in H2, H4. subst. reflexivity.
+Qed.
+
+Lemma frac_frac : forall t, frac (frac t) == frac t.
+Proof. intros [a b]. unfold frac; simpl. rewrite Z.mod_mod by lia. reflexivity. Qed.
+
+Lemma canon_canon : forall q, canon (canon q) = canon q.
+Proof.
+  intros [r t]. destruct (Qeq_bool r 0) eqn:E.
+  - assert (H : canon (Pt r t) = Pt 0 0) by (unfold canon; cbn [r2]; rewrite E; reflexivity).
+    rewrite H. reflexivity.
+  - assert (H : canon (Pt r t) = Pt (Qred r) (Qred (frac t)))
+      by (unfold canon; cbn [r2]; rewrite E; reflexivity).
+    rewrite H. unfold canon at 1; cbn [r2 turn].
+    assert (Hr : Qeq_bool (Qred r) 0 = false).
+    { apply Qeq_bool_neq in E. destruct (Qeq_bool (Qred r) 0) eqn:F; [|reflexivity].
+      exfalso. apply E. apply Qeq_bool_iff in F. rewrite <- (Qred_correct r). exact F. }
+    rewrite Hr, (Qred_complete _ _ (Qred_correct r)). f_equal. apply Qred_complete.
+    rewrite <- (frac_frac t) at 2. apply frac_teq.
+    unfold teq. rewrite (integral_Qeq _ 0); [reflexivity|].
+    rewrite Qred_correct. ring.
+Qed.
+
+(* def-orderable-set is not vacuous: one point off C is orderable. *)
+Definition order_one (A : list pt) : list pt :=
+  match A with
+  | [] => []
+  | a :: _ => if forallb (fun z => pt_eqb (canon z) (canon a)) A then [canon a] else []
+  end.
+
+Lemma mem_canon : forall x A, mem x A = true -> exists z, In z A /\ canon x = canon z.
+Proof.
+  intros x A H. apply existsb_exists in H. destruct H as [z [Hz Hp]].
+  exists z. split; [exact Hz | apply canon_peq; exact Hp].
+Qed.
+
+Lemma order_one_set : forall A B, same_set A B = true -> order_one A = order_one B.
+Proof.
+  intros A B H. unfold same_set in H. apply andb_true_iff in H. destruct H as [HA HB].
+  rewrite forallb_forall in HA, HB.
+  destruct A as [|a A']; destruct B as [|b B']; try reflexivity.
+  - discriminate (HB b (or_introl eq_refl)).
+  - discriminate (HA a (or_introl eq_refl)).
+  - unfold order_one.
+    destruct (forallb (fun z => pt_eqb (canon z) (canon a)) (a :: A')) eqn:SA;
+    destruct (forallb (fun z => pt_eqb (canon z) (canon b)) (b :: B')) eqn:SB;
+    try reflexivity; rewrite forallb_forall in *.
+    + destruct (mem_canon b (a :: A') (HB b (or_introl eq_refl))) as [z [Hz Ez]].
+      pose proof (pt_eqb_eq _ _ (SA z Hz)). congruence.
+    + exfalso. revert SB. apply not_false_iff_true. apply forallb_forall. intros w Hw.
+      destruct (mem_canon w (a :: A') (HB w Hw)) as [z [Hz Ez]].
+      destruct (mem_canon b (a :: A') (HB b (or_introl eq_refl))) as [z' [Hz' Ez']].
+      rewrite Ez, Ez', (pt_eqb_eq _ _ (SA z Hz)), (pt_eqb_eq _ _ (SA z' Hz')).
+      apply pt_eqb_refl.
+    + exfalso. revert SA. apply not_false_iff_true. apply forallb_forall. intros w Hw.
+      destruct (mem_canon w (b :: B') (HA w Hw)) as [z [Hz Ez]].
+      destruct (mem_canon a (b :: B') (HA a (or_introl eq_refl))) as [z' [Hz' Ez']].
+      rewrite Ez, Ez', (pt_eqb_eq _ _ (SB z Hz)), (pt_eqb_eq _ _ (SB z' Hz')).
+      apply pt_eqb_refl.
+Qed.
+
+Theorem one_point_orderable : orderable [Pt 1 0].
+Proof.
+  exists order_one. split; [exact order_one_set|]. split.
+  - intros g. unfold order_one at 1. simpl. rewrite pt_eqb_refl. simpl.
+    unfold image. rewrite canon_canon. reflexivity.
+  - intros p [<-|[]]. vm_compute. reflexivity.
+Qed.
+
+(* ------------------------------------------------------------------ not orderable: the theorem *)
+
+Lemma integral_opp : forall q, integral (- q) = integral q.
+Proof.
+  intros [n d]. unfold integral; simpl.
+  destruct (Z.eqb_spec ((- n) mod Z.pos d) 0) as [E|E];
+  destruct (Z.eqb_spec (n mod Z.pos d) 0) as [E'|E']; try reflexivity; exfalso.
+  - apply E'. apply Z.mod_divide; [lia|]. apply Z.mod_divide in E; [|lia].
+    apply Z.divide_opp_r in E. now rewrite Z.opp_involutive in E.
+  - apply E. apply Z.mod_divide; [lia|]. apply Z.mod_divide in E'; [|lia].
+    now apply Z.divide_opp_r.
+Qed.
+
+(* An isometry about C maps one point to one point. *)
+Lemma act_peq : forall g x y, peq x y = true -> peq (act g x) (act g y) = true.
+Proof.
+  intros [a|s'] [rx tx] [ry ty] H; unfold peq in *; simpl in *;
+  apply andb_true_iff in H; destruct H as [Hr Ht]; rewrite Hr; simpl;
+  destruct (Qeq_bool rx 0); simpl in *; auto; unfold teq in *.
+  - rewrite (integral_Qeq _ (tx - ty)); [exact Ht | ring].
+  - rewrite (integral_Qeq _ (- (tx - ty))); [rewrite integral_opp; exact Ht | ring].
+Qed.
+
+Lemma canonical_in : forall P p, canonical P = true -> In p P -> canon p = p.
+Proof.
+  intros P p H Hp. unfold canonical in H. rewrite forallb_forall in H.
+  exact (pt_eqb_eq _ _ (H p Hp)).
+Qed.
+
+(* lemma-sym-ord's argument, proved: a symmetry g of P that moves a point of P leaves no
+   ordering invariant, since describing P in the coordinates moved by g gives P again.
+   P is written canonically, so "moves" (the canonical image is another term) means
+   "maps to another point" ([canon_peq]). *)
+Theorem not_orderable : forall P g p, canonical P = true ->
+  same_set (map (image g) P) P = true -> In p P -> pt_eqb (image g p) p = false ->
+  ~ orderable P.
+Proof.
+  intros P g p Hcan Hset Hp Hmove [order [Hsame [Hcov Hall]]].
+  pose proof (Hsame _ _ Hset) as E. rewrite Hcov in E.
+  pose proof (map_fixed _ _ E) as Fix.
+  pose proof (Hall p Hp) as Hm. apply existsb_exists in Hm. destruct Hm as [z [Hz Hpz]].
+  assert (Hi : image g p = z).
+  { unfold image. rewrite (canon_peq _ _ (act_peq g p z Hpz)). exact (Fix z Hz). }
+  assert (Hzc : canon z = z) by (rewrite <- (Fix z Hz); unfold image; apply canon_canon).
+  assert (Hpzc : p = z).
+  { rewrite <- (canonical_in P p Hcan Hp), <- Hzc. apply canon_peq. exact Hpz. }
+  rewrite Hi, <- Hpzc, pt_eqb_refl in Hmove. discriminate.
+Qed.
+
+(* The same from a search over the candidates: no trust in (T2) is needed here, only that
+   the candidate found maps P onto itself (checked) and moves a point of P (checked). *)
+Definition not_orderable_dec (P : list pt) : bool :=
+  existsb (fun g => same_set (map (image g) P) P &&
+                    existsb (fun p => negb (pt_eqb (image g p) p)) P) (candidates P).
+
+Theorem not_orderable_by_candidates : forall P, canonical P = true ->
+  not_orderable_dec P = true -> ~ orderable P.
+Proof.
+  intros P Hcan H. unfold not_orderable_dec in H. apply existsb_exists in H.
+  destruct H as [g [_ H]]. apply andb_true_iff in H. destruct H as [Hset Hmoves].
+  apply existsb_exists in Hmoves. destruct Hmoves as [p [Hp Hm]].
+  apply (not_orderable P g p Hcan Hset Hp).
+  destruct (pt_eqb (image g p) p); [discriminate | reflexivity].
+Qed.
+
+(* Not vacuous beyond one point either: a set whose points lie at distinct distances from C
+   is orderable (nearest first), e.g. three points of an asymmetric set. *)
+Definition at_r (r : Q) (A : list pt) : list pt := filter (fun x => Qeq_bool (r2 x) r) A.
+Definition order_by_radii (rs : list Q) (A : list pt) : list pt :=
+  flat_map (fun r => order_one (at_r r A)) rs.
+
+Lemma peq_r2 : forall x y r, peq x y = true -> Qeq_bool (r2 x) r = Qeq_bool (r2 y) r.
+Proof.
+  intros x y r H. unfold peq in H. apply andb_true_iff in H. destruct H as [H _].
+  apply Qeq_bool_iff in H.
+  destruct (Qeq_bool (r2 y) r) eqn:E.
+  - apply Qeq_bool_iff in E. apply Qeq_bool_iff. rewrite H. exact E.
+  - destruct (Qeq_bool (r2 x) r) eqn:F; [|reflexivity].
+    apply Qeq_bool_iff in F. apply Qeq_bool_neq in E. exfalso. apply E. rewrite <- H. exact F.
+Qed.
+
+Lemma mem_at_r : forall r p A, mem p A = true -> Qeq_bool (r2 p) r = true ->
+  mem p (at_r r A) = true.
+Proof.
+  intros r p A H Hr. apply existsb_exists in H. destruct H as [z [Hz Hp]].
+  apply existsb_exists. exists z. split; [|exact Hp].
+  apply filter_In. split; [exact Hz|]. rewrite <- (peq_r2 p z r Hp). exact Hr.
+Qed.
+
+Lemma same_set_at_r : forall r A B, same_set A B = true -> same_set (at_r r A) (at_r r B) = true.
+Proof.
+  intros r A B H. unfold same_set in *. apply andb_true_iff in H. destruct H as [HA HB].
+  rewrite forallb_forall in HA, HB. apply andb_true_iff. split; apply forallb_forall;
+  intros x Hx; apply filter_In in Hx; destruct Hx as [Hx Hr]; apply mem_at_r; auto.
+Qed.
+
+Lemma order_by_radii_set : forall rs A B, same_set A B = true ->
+  order_by_radii rs A = order_by_radii rs B.
+Proof.
+  intros rs A B H. unfold order_by_radii. induction rs as [|r rs IH]; simpl; [reflexivity|].
+  rewrite IH, (order_one_set _ _ (same_set_at_r r A B H)). reflexivity.
+Qed.
+
+Lemma order_one_image : forall g p, order_one [image g p] = [image g p].
+Proof. intros g p. unfold order_one. simpl. rewrite pt_eqb_refl. simpl.
+  unfold image. rewrite canon_canon. reflexivity. Qed.
+
+Theorem three_points_orderable : orderable [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)].
+Proof.
+  exists (order_by_radii [1; 4; 9]). split; [exact (order_by_radii_set _)|]. split.
+  - intros g.
+    replace (order_by_radii [1; 4; 9] [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)])
+      with [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)] by (vm_compute; reflexivity).
+    assert (R1 : r2 (image g (Pt 1 0)) = 1) by (destruct g; reflexivity).
+    assert (R2 : r2 (image g (Pt 4 (1 # 3))) = 4) by (destruct g; reflexivity).
+    assert (R3 : r2 (image g (Pt 9 (1 # 5))) = 9) by (destruct g; reflexivity).
+    unfold order_by_radii, at_r. cbn [map flat_map filter].
+    rewrite R1, R2, R3.
+    repeat match goal with |- context [Qeq_bool ?x ?y] =>
+      let b := eval vm_compute in (Qeq_bool x y) in change (Qeq_bool x y) with b end.
+    cbv beta iota. rewrite !order_one_image. reflexivity.
+  - intros p Hp. destruct Hp as [<-|[<-|[<-|[]]]]; vm_compute; reflexivity.
+Qed.
+
+(* Gathering.v -- the few definitions the refutations of the gathering statements use
+   (Section "Algorithm for Gathering", \label{gathering_algorithm}: GatheringPattern,
+   FormGPattern, MakeAsym's epsilon move, lem-vl-move), on top of Exactsym.v.  An exported
+   gathering refutation inlines Exactsym.v, then this file.  docs/certificates.md, "Coq:
+   the gathering statements".
+
+   Those statements are about runs; their refutations here are facts of one configuration
+   (or of a start and one snapshot of a move), which the theorem states for EVERY choice
+   the run leaves open that the library does not compute (which robot ElectLeader elects,
+   which robot of G_t MakeAsym moves, and in which sense), so that no ordering of the
+   paper has to be trusted.
+
+   Robots are unit discs ("fat robots", radius one): two robots overlap iff their centres
+   are less than 2 apart.  Points are Exactsym.v's rational polar points about C, the
+   centre of the SEC ([sec_centred], (T1)).
+
+   What a reader trusts besides Exactsym.v's (T1)-(T3):
+   (T4) [separated P] implies that every two robots of P are more than 2 apart (they neither
+        overlap nor touch: "Initially all robots are assumed to be stationary and
+        separated").  Three sufficient tests, argued before [robots_apart]. *)
+
+(* ------------------------------------------------------------------ fat robots *)
+
+(* Two robots are more than 2 apart: three sufficient tests, none needs a cosine.  Write
+   a, b for the distances from C (a^2 = r2 p, b^2 = r2 q) and g in [0, 1/2] for the
+   angular gap in turns.
+   - [quarter_apart]: g >= 1/4, so cos(2 pi g) <= 0 and |p - q|^2 = a^2 + b^2 -
+     2ab cos(2 pi g) >= a^2 + b^2 > 4.
+   - [sixth_apart]: g >= 1/6, so cos(2 pi g) <= 1/2 and, for a <= b, |p - q|^2 >=
+     a^2 + b^2 - ab = a^2 + b (b - a) >= a^2 = min(a^2, b^2) > 4.
+   - [radially_apart]: |p - q| >= |b - a| (triangle inequality through C), and for
+     a^2 <= b^2, b - a > 2 iff b > a + 2 iff b^2 > a^2 + 4a + 4 iff
+     b^2 - a^2 - 4 > 4a iff (b^2 - a^2 - 4 > 0 and (b^2 - a^2 - 4)^2 > 16 a^2). *)
+Definition angular_gap (p q : pt) : Q :=
+  let g := frac (turn p - turn q) in if Qle_bool g (1 # 2) then g else 1 - g.
+Definition quarter_apart (p q : pt) : bool :=
+  Qle_bool (1 # 4) (angular_gap p q) && Qlt_bool 4 (r2 p + r2 q).
+Definition sixth_apart (p q : pt) : bool :=
+  Qle_bool (1 # 6) (angular_gap p q) && Qlt_bool 4 (r2 p) && Qlt_bool 4 (r2 q).
+Definition radially_apart (p q : pt) : bool :=
+  let a2 := if Qle_bool (r2 p) (r2 q) then r2 p else r2 q in
+  let b2 := if Qle_bool (r2 p) (r2 q) then r2 q else r2 p in
+  let d := b2 - a2 - 4 in Qlt_bool 0 d && Qlt_bool (16 * a2) (d * d).
+Definition robots_apart (p q : pt) : bool :=
+  quarter_apart p q || sixth_apart p q || radially_apart p q.
+
+(* (T4) The robots are separated: every two of them are more than 2 apart. *)
+Fixpoint separated (P : list pt) : bool :=
+  match P with
+  | [] => true
+  | p :: rest => forallb (robots_apart p) rest && separated rest
+  end.
+
+(* A robot at C and a robot at q overlap iff |q - C| < 2, i.e. r2 q < 4 (exact). *)
+Definition overlaps_C (q : pt) : bool := Qlt_bool (r2 q) 4.
+
+(* A4 = exact: "C is not occupied by other robot" iff no centre is at C. *)
+Definition occupied_C (P : list pt) : bool := existsb (fun p => Qeq_bool (r2 p) 0) P.
+
+(* ------------------------------------------------------------ FormGPattern's move to C *)
+
+(* FormGPattern(R), line 1: "if C is not occupied by other robot: Move R to C".  Whatever
+   the path, the move ends with R's centre at C; with R the i-th robot of P, it ends
+   overlapping another robot iff some other robot's centre is within 2 of C.  This depends
+   on the robots' distances from C only ([map r2 P]). *)
+Definition blocked_at_C (rs : list Q) (i : nat) : bool :=
+  existsb (fun j => negb (Nat.eqb i j) && Qlt_bool (nth j rs 0) 4) (seq 0 (length rs)).
+
+(* Whichever robot is the leader, its move to C ends overlapping another robot. *)
+Definition every_leader_blocked (P : list pt) : bool :=
+  forallb (blocked_at_C (map r2 P)) (seq 0 (length P)).
+
+(* ... and so on every configuration with the same distances from C: after any turns about
+   C (Make_SymToAsym's and MakeAsym's epsilon moves on a circle about C), for any leader. *)
+Theorem every_leader_blocked_spec : forall P, every_leader_blocked P = true ->
+  forall P', map r2 P' = map r2 P ->
+  forall i, (i < length P')%nat -> blocked_at_C (map r2 P') i = true.
+Proof.
+  intros P H P' E i Hi. rewrite E. unfold every_leader_blocked in H.
+  rewrite forallb_forall in H. apply H. apply in_seq.
+  rewrite <- (map_length r2 P), <- E, map_length. lia.
+Qed.
+
+(* ------------------------------------------------------------------ a robot part way *)
+
+(* MakeAsym: "Move v_l, epsilon distance away from the current position on the same
+   circle": a turn about C by e (either sense).  Part way, at the rational parameter lam in
+   (0, 1), v_l is at [on_turn v lam e]. *)
+Definition on_turn (v : pt) (lam e : Q) : pt := Pt (r2 v) (turn v + lam * e).
+
+(* The snapshot: P with the robot v (compared as a point) replaced by w, written
+   canonically. *)
+Definition replace_robot (P : list pt) (v w : pt) : list pt :=
+  map (fun p => if peq p v then canon w else p) P.
+
+(* Preprocess with its counters advancing (as printed it never ends on an odd polygon:
+   Exactsym.v, [preprocess_printed_never_ends]): it replaces G_i by G_ij only when G_i,
+   G_j are odd (i <> j) and G_ij is type 4.  When no such G_ij is type 4, calG' = calG. *)
+Definition no_merge (P : list pt) : bool :=
+  let odd := filter (fun G => Nat.odd (length G)) (polygons P) in
+  forallb (fun Gi => forallb (fun Gj =>
+    same_set Gi Gj || negb (type4 (merged Gi Gj))) odd) odd.
+
+(* The innermost level G_1 and the outermost G_t of P. *)
+Definition r_first (P : list pt) : Q :=
+  fold_left (fun m r => if Qle_bool m r then m else r) (radii P) (rmax P).
+Definition G_1 (P : list pt) : list pt := level P (r_first P).
+Definition G_t (P : list pt) : list pt := level P (rmax P).
+
+(* lem-vl-move: the start P, MakeAsym's mover v (a vertex of G_t) turned part way, lam of
+   its epsilon turn e, and a fresh Look at that snapshot S.  S is written canonically and C
+   is still the centre of its SEC (T1) with the same radius; G_t of S is asymmetric, so no
+   robot runs MakeAsym again (the lemma's proof: "after v_l starts moving, G_t becomes
+   asymmetric"), calG' of S (Preprocess merges nothing) is in O_A, so GatheringPattern
+   calls ElectLeader, whose leader is "a leader vertex v_l from G_1" (its output); G_1 of
+   S is G_1 of P, one robot, which is not v: ElectLeader selects another robot.  (G_1 is
+   one robot, symmetric: ElectLeader calls Make_SymToAsym on it, which moves it.) *)
+Definition fresh_look_elects_other (P : list pt) (v : pt) (lam e : Q) : bool :=
+  let w := on_turn v lam e in
+  let S := replace_robot P v w in
+  canonical S && distinct S && sec_centred S && Qeq_bool (rmax S) (rmax P) &&
+  asymmetric_polygon (G_t S) && no_merge S && calG_in_O_A (polygons S) &&
+  same_set (G_1 S) (G_1 P) && Nat.eqb (length (G_1 S)) 1 && symmetric_polygon (G_1 S) &&
+  negb (mem w (G_1 S)).
+
+(* ================================================= the configuration *)
+
+(* P: (squared distance from C, turn) of each robot. *)
+Definition P : list pt := [
+  Pt (Qmake 400 1) (Qmake 1 6);
+  Pt (Qmake 400 1) (Qmake 1 3);
+  Pt (Qmake 400 1) (Qmake 7 12);
+  Pt (Qmake 400 1) (Qmake 11 12);
+  Pt (Qmake 9 1) (Qmake 1 24)].
+Definition eps : Q := (Qmake 1 100).
+Definition lam : Q := (Qmake 1 2).
+
+(* MakeAsym's branch: no polygon of calG' is asymmetric (FindAsymmetry finds none), <G_1, G_t> is an asymmetric pair (Find_Asymmetry_Pair finds it) and |G_t| > 3, so v_l, a vertex of G_t (which one: any), moves epsilon on its circle.  Half way, for every such v_l and either sense, a fresh Look's ElectLeader selects the robot of G_1, not v_l. *)
+(* P is a set of separated robots written canonically about C, the centre of
+   its SEC (T1, T4); the hypotheses of lem-vl-move hold and its conclusion is
+   false. *)
+Theorem refutes_lem_vl_move :
+  canonical P = true /\
+  distinct P = true /\
+  sec_centred P = true /\
+  Nat.leb 5 (length P) = true /\
+  separated P = true /\
+  no_merge P = true /\
+  calG_in_O_A (polygons P) = true /\
+  (forallb symmetric_polygon (polygons P) = true) /\
+  asymmetric_pair (G_1 P) (G_t P) = true /\
+  symmetric_polygon (G_t P) = true /\
+  Nat.ltb 3 (length (G_t P)) = true /\
+  (forallb (fun v => forallb (fun e => fresh_look_elects_other P v lam e) [eps; - eps]) (G_t P) = true).
+Proof.
+  split; [vm_compute; reflexivity |].
+  split; [vm_compute; reflexivity |].
+  split; [vm_compute; reflexivity |].
+  split; [vm_compute; reflexivity |].
+  split; [vm_compute; reflexivity |].
+  split; [vm_compute; reflexivity |].
+  split; [vm_compute; reflexivity |].
+  split; [vm_compute; reflexivity |].
+  split; [vm_compute; reflexivity |].
+  split; [vm_compute; reflexivity |].
+  split; [vm_compute; reflexivity |].
+  vm_compute; reflexivity.
+Qed.
+
+Print Assumptions refutes_lem_vl_move.
