@@ -134,6 +134,19 @@ def test_a_tampered_snapshot_is_rejected():
 
 
 @needs_coqc
+def test_another_epsilon_and_instant_is_refuted_too():
+    """lem-vl-move's snapshot is not tuned to one epsilon or one instant: a tenth of the
+    epsilon, a third of the way, is refuted as well."""
+    text = _stored("lem-vl-move")
+    other = text.replace("Definition eps : Q := (Qmake 1 100).",
+                         "Definition eps : Q := (Qmake 1 1000).")
+    other = other.replace("Definition lam : Q := (Qmake 1 2).",
+                          "Definition lam : Q := (Qmake 1 3).")
+    assert other.count("(Qmake 1 1000)") == 1 and other.count("(Qmake 1 3).") == 1
+    assert _accepted(other)
+
+
+@needs_coqc
 def test_a_flipped_claim_is_rejected():
     text = _stored("lem-vl-move")
     flipped = re.sub(r"\(G_t P\) = true\)\.\nProof\.", "(G_t P) = false).\nProof.", text)

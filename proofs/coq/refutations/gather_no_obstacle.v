@@ -857,9 +857,6 @@ Fixpoint separated (P : list pt) : bool :=
   | p :: rest => forallb (robots_apart p) rest && separated rest
   end.
 
-(* A robot at C and a robot at q overlap iff |q - C| < 2, i.e. r2 q < 4 (exact). *)
-Definition overlaps_C (q : pt) : bool := Qlt_bool (r2 q) 4.
-
 (* A4 = exact: "C is not occupied by other robot" iff no centre is at C. *)
 Definition occupied_C (P : list pt) : bool := existsb (fun p => Qeq_bool (r2 p) 0) P.
 
@@ -867,8 +864,8 @@ Definition occupied_C (P : list pt) : bool := existsb (fun p => Qeq_bool (r2 p) 
 
 (* FormGPattern(R), line 1: "if C is not occupied by other robot: Move R to C".  Whatever
    the path, the move ends with R's centre at C; with R the i-th robot of P, it ends
-   overlapping another robot iff some other robot's centre is within 2 of C.  This depends
-   on the robots' distances from C only ([map r2 P]). *)
+   overlapping another robot iff some other robot's centre q is less than 2 from C, i.e.
+   r2 q < 4 (exact).  This depends on the robots' distances from C only ([map r2 P]). *)
 Definition blocked_at_C (rs : list Q) (i : nat) : bool :=
   existsb (fun j => negb (Nat.eqb i j) && Qlt_bool (nth j rs 0) 4) (seq 0 (length rs)).
 
