@@ -46,8 +46,10 @@ _OBSTACLE_NOTE = (
 _OBSTACLE_READING = (
     "A3=all (every move the procedures name is made in the cycle, so the leader's "
     "FormGPattern move is reached; under A3=first the leader never moves: "
-    "make-sym-to-asym-livelock), A4=exact (C occupied = a centre at C), Preprocess with "
-    "its counters advancing (calG' = calG when no G_ij is type 4); any path (A5)")
+    "make-sym-to-asym-livelock), A4=exact or A4=covers (C occupied = a centre at C, or "
+    "a disc covering C: no centre is within 1 of C, so C is free under both; only "
+    "A4=within2, C occupied by robot 1 at 9/5, rescues it, by a proved cycle), "
+    "Preprocess with its counters advancing (calG' = calG when no G_ij is type 4); any path (A5)")
 
 
 def _spec(words, hypotheses, conclusion, reading, note, definitions=()) -> dict:
@@ -63,13 +65,15 @@ GATHERING_STATEMENTS = {
         "Lemma (\\label{gathering_algorithm}, after GatheringPattern; the ledger's "
         "gather-no-obstacle): 'No obstacle appears in the path of a mobile robot to its "
         "destination.'",
-        [*_START, "in_O_A P", "asymmetric_polygon (G_t P)", "negb (occupied_C P)"],
+        [*_START, "in_O_A P", "asymmetric_polygon (G_t P)", "negb (occupied_C P)",
+         "negb (covered_C P)"],
         [_BLOCKED], _OBSTACLE_READING, _OBSTACLE_NOTE),
     "FormGPattern": _spec(
         "Algorithm FormGPattern(R) (\\label{gathering_algorithm}): 'if C is not occupied "
         "by other robot: Move R to C' -- moves the leader to C (or to the last layer of "
         "the gathering pattern) without a collision.",
-        [*_START, "in_O_A P", "asymmetric_polygon (G_t P)", "negb (occupied_C P)"],
+        [*_START, "in_O_A P", "asymmetric_polygon (G_t P)", "negb (occupied_C P)",
+         "negb (covered_C P)"],
         [_BLOCKED], _OBSTACLE_READING, _OBSTACLE_NOTE),
     "lem-vl-move": _spec(
         "Lemma lem-vl-move: 'When v_l is moving no other robot will be selected as "
@@ -82,15 +86,19 @@ GATHERING_STATEMENTS = {
         "'selected as leader' by any step of the procedure, GatheringPattern's ElectLeader "
         "included (the paper's own use, L1562: 'when the leader is moving, no other "
         "robots will move'); Preprocess with its counters advancing (calG' = calG when no "
-        "G_ij is type 4); MakeAsym's epsilon a turn of eps = 1/100 about C, in either "
-        "sense, the fresh Look half way (lam = 1/2); the leader is ElectLeader's output, "
-        "'a leader vertex v_l from G_1' (a single robot G_1 is symmetric: ElectLeader "
-        "calls Make_SymToAsym on it, which moves it)",
+        "G_ij is type 4); MakeAsym's 'Move v_l, epsilon distance away' a turn of eps = "
+        "1/100 about C (as its FindAsymmetry branch says, 'on the same circle'), in either "
+        "sense, the fresh Look half way (lam = 1/2); ElectLeader's branch decided by G_1's "
+        "symmetry itself (Check_Symmetry_Odd as printed never ends on G_1; read with i++ "
+        "after every vertex it reports the same). No reading of a one-robot G_1 and no "
+        "ordering: the leader is a vertex of G_1 whichever Elect_Leader_Asym picks",
         "MakeAsym's branch: no polygon of calG' is asymmetric (FindAsymmetry finds none), "
         "<G_1, G_t> is an asymmetric pair (Find_Asymmetry_Pair finds it) and |G_t| > 3, so "
-        "v_l, a vertex of G_t (which one: any), moves epsilon on its circle.  Half way, "
-        "for every such v_l and either sense, a fresh Look's ElectLeader selects the "
-        "robot of G_1, not v_l.",
+        "v_l, a vertex of G_t (which one: any), moves epsilon about C.  Half way, for "
+        "every such v_l and either sense, a fresh Look's ElectLeader takes its first branch "
+        "(G_1, an isosceles triangle, has degree of symmetry one and its line passes through "
+        "a single vertex): it calls Make_SymToAsym(G_1) and elects a vertex of G_1, not "
+        "v_l.",
         ["Definition eps : Q := (Qmake 1 100).", "Definition lam : Q := (Qmake 1 2)."]),
 }
 

@@ -6,7 +6,8 @@
 \\label) inlined, the configuration as exact rationals, and one theorem stating in the
 paper's terms that the configuration meets the statement's hypotheses and that its
 conclusion is false, proved by ``vm_compute`` (and by the library's theorems
-``not_orderable_by_candidates`` and ``printed_loop_never_ends``).  ``coqc FILE.v``
+``not_orderable_by_candidates``, ``orderable_of_only_identity``,
+``not_electable_by_candidates`` and ``printed_loop_never_ends``).  ``coqc FILE.v``
 accepting it is the check; nothing of exactsym is trusted by it.
 ``coq_refutation_of_points(label, points, source)`` does the same for the statements
 about CW/ACW strings and the paper's algorithms (:data:`CASE_STATEMENTS`), which the
@@ -35,6 +36,8 @@ _VM = "vm_compute; reflexivity"
 _ORDER = "apply not_orderable_by_candidates; vm_compute; reflexivity"
 _LOOP = "intros fuel; apply printed_loop_never_ends; vm_compute; reflexivity"
 _PRE = "intros fuel; apply preprocess_printed_never_ends; vm_compute; reflexivity"
+_ORDERABLE = "apply orderable_of_only_identity; vm_compute; reflexivity"
+_ELECT = "apply not_electable_by_candidates; vm_compute; reflexivity"
 
 
 class CoqExportError(ValueError):
@@ -42,12 +45,14 @@ class CoqExportError(ValueError):
     outside the exporter's scope)."""
 
 
-def _s(words, names, hypotheses, conclusion, reading=None, note=None) -> dict:
+def _s(words, names, hypotheses, conclusion, reading=None, note=None, scale=None) -> dict:
     """One statement: the paper's words, the levels it names besides P, its hypotheses
     (Coq booleans, each ``= true``), the negated conclusion (Coq propositions, each with
-    its tactic), the reading it is refuted under (refuted-under-reading), a note."""
+    its tactic), the reading it is refuted under (refuted-under-reading), a note, and the
+    factor (an integer) the source's squared distances are multiplied by (a statement
+    about fat robots: the witness scaled until they are separated, ``separated P``)."""
     return {"words": words, "names": names, "hypotheses": hypotheses,
-            "conclusion": conclusion, "reading": reading, "note": note}
+            "conclusion": conclusion, "reading": reading, "note": note, "scale": scale}
 
 
 _PAIR = ["existsb (Qeq_bool rGi) (radii P)", "existsb (Qeq_bool rGj) (radii P)",
@@ -211,6 +216,59 @@ CASE_STATEMENTS = {
              "(Preprocess's test); G_3 is even, so no other pair is merged. calG = calG_P has "
              "no common line (in O_A, under the mixed reading, so under every reading); "
              "calG' has one."),
+    "GatheringPattern": _s(
+        "Algorithm GatheringPattern(R) (R, the set of separated robots): gathers n >= 5 "
+        "fat robots from every asymmetric configuration: 'G' = Preprocess(G); if G' is in "
+        "O_S, report that gathering is not possible; else MakeAsym, ElectLeader, "
+        "FormGPattern'.",
+        ("G1", "G2", "G3"), [
+            "Nat.leb 5 (length P)", "separated P", "in_O_A P",
+            "Nat.eqb (length (polygons P)) 3", "polygon G1", "polygon G2", "polygon G3",
+            "Nat.odd (length G1)", "Nat.odd (length G2)", "Nat.even (length G3)",
+            "negb (Nat.eqb (Nat.modulo (length G2) (length G1)) 0) || "
+            "negb (Nat.eqb (Nat.modulo (length G1) (length G2)) 0)",
+            "Nat.ltb 1 (Nat.gcd (length G1) (length G2))", "symmetric_pair G1 G2",
+            "polygon (merged G1 G2)", "type4 (merged G1 G2)"],
+        [("orderable P", _ORDERABLE),
+         ("calG_symmetric [merged G1 G2; G3] = true", _VM)],
+        reading="G' = (G_12, G_3): Preprocess's merge replaces G_1 and G_2 by G_12 (as "
+                "printed Preprocess never ends here, see its entry: then GatheringPattern "
+                "never gets past its third line)",
+        note="P is asymmetric (in O_A) and orderable (every candidate symmetry fixes it "
+             "pointwise: group C1), n = 28. G_1, G_2 odd meet every hypothesis of the "
+             "text's merge and G_12 is type 4 (Preprocess's test); G_3 is even, so no "
+             "other pair is merged. G' = (G_12, G_3) has a common line, so the first "
+             "branch runs: 'Report that gathering is not possible' for an asymmetric "
+             "configuration. G_12 (21 vertices) and G_3 have no half-turn, so the common "
+             "line is a mirror of both: in O_S under every reading of 'common line'.",
+        scale=100),
+    "MakeAsym": _s(
+        "Algorithm MakeAsym(G'): given G' with G_t symmetric, makes G_t asymmetric by "
+        "moving one elected robot v_l, reporting 'An orderable G' where G_t is asymmetric', "
+        "or reports 'G' is not orderable' (when no asymmetric polygon, no asymmetric pair "
+        "and no single-vertex polygon is found).",
+        ("G1", "Gt"), [
+            "Nat.leb 5 (length P)", "separated P", "Nat.eqb (length (polygons P)) 2",
+            "existsb (Qeq_bool rG1) (radii P)", "existsb (Qeq_bool rGt) (radii P)",
+            "forallb (fun r => Qle_bool rG1 r) (radii P)",
+            "forallb (fun r => Qle_bool r rGt) (radii P)",
+            "polygon G1", "polygon Gt", "symmetric_polygon Gt",
+            "negb (type4 (merged G1 Gt))",
+            "forallb symmetric_polygon (polygons P)", "asymmetric_pair G1 Gt",
+            "Nat.eqb (length Gt) 3"],
+        [("~ orderable P", _ORDER), ("~ electable P", _ELECT)],
+        reading="the branch MakeAsym takes, not which robot it elects: Find_Asymmetry "
+                "finds no asymmetric polygon, Find_Asymmetry_Pair finds <G_1, G_t>, so it "
+                "elects one robot v_l (|G_t| = 3: ElectLeader(G_1t), whatever its "
+                "ordering) and moves it, instead of reporting 'G' is not orderable'; G' = "
+                "calG_P (Preprocess merges nothing: G_1t is not type 4; as printed its "
+                "loop never ends on an odd polygon, see Preprocess's entry)",
+        note="G' is not orderable, and no robot can be elected by an algorithm reading the "
+             "configuration (electable, the same whatever the coordinates among the "
+             "isometries about C): the rotation by 1/3 turn maps P onto itself and moves "
+             "every robot, so the observer it turns elects the image of v_l, another "
+             "robot (not_electable). Observers disagree on the robot that moves.",
+        scale=100),
     "Preprocess": _s(
         "Algorithm Preprocess(calG): merges odd polygons whose G_ij is type 4, giving calG' "
         "(symmetric iff calG is).",
@@ -333,6 +391,19 @@ CASE_STATEMENTS = {
         note="One line of symmetry (one mirror, no half-turn: no skew line), through two "
              "vertices; Check_Symmetry_Even reports degree 2, so the algorithm reports "
              "'Leader Election is not possible for G'."),
+    "lem-sym-notord": _s(
+        "Lemma lem-sym-notord: if <G_i, G_j> is a symmetric pair, then it is not orderable.",
+        ("G1", "G2"), ["Nat.eqb (length (polygons P)) 2", "polygon G1", "polygon G2",
+                       "symmetric_pair G1 G2"],
+        [("orderable (G1 ++ G2)", _ORDERABLE)],
+        reading="mixed: a common line may be straight for one polygon and skew for the "
+                "other; the pair's orderability is that of its union about C (the other "
+                "readings' witnesses have single robots or collinear ones: not exported)",
+        note="The line at s/2 turns for a mirror Mirror s of G_1 is a line of skew "
+             "symmetry of G_2 (the half-turn maps G_2 onto itself): a common line, so the "
+             "pair is symmetric. Yet no candidate isometry about C other than the identity "
+             "maps G_1 ++ G_2 onto itself (only_identity, computed), so it is orderable: "
+             "orderable_of_only_identity, a theorem of the library, with (T2) proved."),
     "Make_SymToAsym": _s(
         "Algorithm Make_SymToAsym(G): for a convex polygon G with degree of symmetry one, "
         "its line of symmetry through a single vertex or two vertices, moving the leader "
@@ -413,6 +484,11 @@ def _file(label: str, spec: dict, points: list, levels: dict, source: str | None
         out.append(f"   The ledger (proofs/statements.toml): {statement}")
     if spec["reading"]:
         out.append(f"   Refuted under the reading: {spec['reading']}.")
+    k = spec.get("scale") or 1
+    if k != 1:
+        out += [f"   P is the source's configuration with every squared distance multiplied by {k}",
+                "   (a scaling about C), so that its robots are separated fat robots (unit",
+                "   discs); no other conjunct changes under a scaling about C."]
     out += ["   Written by exactsym (exactsym/certificates/coq_refutation.py); the library",
             "   below is proofs/coq/Exactsym.v, inlined: it holds every definition used.",
             f"   source: {source or '-'} *)", ""]
@@ -420,7 +496,8 @@ def _file(label: str, spec: dict, points: list, levels: dict, source: str | None
     out += ["", "(* ================================================= the configuration *)", "",
             "(* P: (squared distance from C, turn) of each point. *)",
             "Definition P : list pt := ["]
-    points = [(r, t % 1 if r else Fraction(0)) for r, t in points]     # canonical
+    points = [(r * k, t % 1 if r else Fraction(0)) for r, t in points]  # scaled, canonical
+    levels = {name: r * k for name, r in levels.items()}
     out.append(";\n".join(f"  Pt {_q(r)} {_q(t)}" for r, t in points) + "].")
     for name, r in levels.items():
         out.append(f"Definition r{name} : Q := {_q(r)}.")

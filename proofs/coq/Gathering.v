@@ -12,47 +12,19 @@
 
    Robots are unit discs ("fat robots", radius one): two robots overlap iff their centres
    are less than 2 apart.  Points are Exactsym.v's rational polar points about C, the
-   centre of the SEC ([sec_centred], (T1)).
-
-   What a reader trusts besides Exactsym.v's (T1)-(T3):
-   (T4) [separated P] implies that every two robots of P are more than 2 apart (they neither
-        overlap nor touch: "Initially all robots are assumed to be stationary and
-        separated").  Three sufficient tests, argued before [robots_apart]. *)
+   centre of the SEC ([sec_centred], (T1)).  The robots' separation ([separated],
+   [robots_apart]) and what a reader trusts about it, (T4), are Exactsym.v's ("fat
+   robots"); this file trusts nothing beyond Exactsym.v's (T1)-(T4). *)
 
 (* ------------------------------------------------------------------ fat robots *)
 
-(* Two robots are more than 2 apart: three sufficient tests, none needs a cosine.  Write
-   a, b for the distances from C (a^2 = r2 p, b^2 = r2 q) and g in [0, 1/2] for the
-   angular gap in turns.
-   - [quarter_apart]: g >= 1/4, so cos(2 pi g) <= 0 and |p - q|^2 = a^2 + b^2 -
-     2ab cos(2 pi g) >= a^2 + b^2 > 4.
-   - [sixth_apart]: g >= 1/6, so cos(2 pi g) <= 1/2 and, for a <= b, |p - q|^2 >=
-     a^2 + b^2 - ab = a^2 + b (b - a) >= a^2 = min(a^2, b^2) > 4.
-   - [radially_apart]: |p - q| >= |b - a| (triangle inequality through C), and for
-     a^2 <= b^2, b - a > 2 iff b > a + 2 iff b^2 > a^2 + 4a + 4 iff
-     b^2 - a^2 - 4 > 4a iff (b^2 - a^2 - 4 > 0 and (b^2 - a^2 - 4)^2 > 16 a^2). *)
-Definition angular_gap (p q : pt) : Q :=
-  let g := frac (turn p - turn q) in if Qle_bool g (1 # 2) then g else 1 - g.
-Definition quarter_apart (p q : pt) : bool :=
-  Qle_bool (1 # 4) (angular_gap p q) && Qlt_bool 4 (r2 p + r2 q).
-Definition sixth_apart (p q : pt) : bool :=
-  Qle_bool (1 # 6) (angular_gap p q) && Qlt_bool 4 (r2 p) && Qlt_bool 4 (r2 q).
-Definition radially_apart (p q : pt) : bool :=
-  let a2 := if Qle_bool (r2 p) (r2 q) then r2 p else r2 q in
-  let b2 := if Qle_bool (r2 p) (r2 q) then r2 q else r2 p in
-  let d := b2 - a2 - 4 in Qlt_bool 0 d && Qlt_bool (16 * a2) (d * d).
-Definition robots_apart (p q : pt) : bool :=
-  quarter_apart p q || sixth_apart p q || radially_apart p q.
-
-(* (T4) The robots are separated: every two of them are more than 2 apart. *)
-Fixpoint separated (P : list pt) : bool :=
-  match P with
-  | [] => true
-  | p :: rest => forallb (robots_apart p) rest && separated rest
-  end.
+(* [separated] ((T4): every two robots more than 2 apart) is Exactsym.v's. *)
 
 (* A4 = exact: "C is not occupied by other robot" iff no centre is at C. *)
 Definition occupied_C (P : list pt) : bool := existsb (fun p => Qeq_bool (r2 p) 0) P.
+(* A4 = covers: "C is not occupied by other robot" iff no robot's disc (radius one,
+   closed) covers C, i.e. no centre within 1 of C.  Not covered implies not occupied. *)
+Definition covered_C (P : list pt) : bool := existsb (fun p => Qle_bool (r2 p) 1) P.
 
 (* ------------------------------------------------------------ FormGPattern's move to C *)
 
@@ -80,9 +52,11 @@ Qed.
 
 (* ------------------------------------------------------------------ a robot part way *)
 
-(* MakeAsym: "Move v_l, epsilon distance away from the current position on the same
-   circle": a turn about C by e (either sense).  Part way, at the rational parameter lam in
-   (0, 1), v_l is at [on_turn v lam e]. *)
+(* MakeAsym, the branch of an asymmetric pair with |G_t| > 3: "Move v_l, epsilon distance
+   away from the current position" (the text names no path).  Read as a turn about C by e
+   (either sense), as in its FindAsymmetry branch ("... on the same circle"): the reading
+   keeps C and the SEC, which MakeAsym's correctness paragraph needs.  Part way, at the
+   rational parameter lam in (0, 1), v_l is at [on_turn v lam e]. *)
 Definition on_turn (v : pt) (lam e : Q) : pt := Pt (r2 v) (turn v + lam * e).
 
 (* The snapshot: P with the robot v (compared as a point) replaced by w, written
@@ -104,18 +78,35 @@ Definition r_first (P : list pt) : Q :=
 Definition G_1 (P : list pt) : list pt := level P (r_first P).
 Definition G_t (P : list pt) : list pt := level P (rmax P).
 
+(* ElectLeader's first branch: "G_1 is symmetric with degree of symmetry one and the line
+   of symmetry passes through either a single vertex or through two vertices": G has at
+   least two vertices (a single robot has every line through it as a line of symmetry,
+   def-symmetric-conf, so its degree is not one), no half-turn symmetry (no skew line),
+   exactly one mirror, and that mirror holds a vertex (Exactsym.v's [through_vertex]).  Then ElectLeader calls
+   Make_SymToAsym(G_1) and reports v_l = Elect_Leader_Asym(G_1): a vertex of G_1.  (Its
+   first line calls Check_Symmetry_Odd/Even(G_1), whose printed loops never end on such a
+   G_1 (Exactsym.v, [printed_loop_never_ends]); read with i++ after every vertex they
+   report this symmetry.) *)
+Definition elect_leader_first_branch (G : list pt) : bool :=
+  Nat.ltb 1 (length G) && negb (skew_symmetric G) &&
+  match mirrors G with
+  | [s] => through_vertex G s
+  | _ => false
+  end.
+
 (* lem-vl-move: the start P, MakeAsym's mover v (a vertex of G_t) turned part way, lam of
    its epsilon turn e, and a fresh Look at that snapshot S.  S is written canonically and C
    is still the centre of its SEC (T1) with the same radius; G_t of S is asymmetric, so no
    robot runs MakeAsym again (the lemma's proof: "after v_l starts moving, G_t becomes
    asymmetric"), calG' of S (Preprocess merges nothing) is in O_A, so GatheringPattern
-   calls ElectLeader, whose leader is "a leader vertex v_l from G_1" (its output); G_1 of
-   S is G_1 of P, one robot, which is not v: ElectLeader selects another robot.  (G_1 is
-   one robot, symmetric: ElectLeader calls Make_SymToAsym on it, which moves it.) *)
+   calls ElectLeader; G_1 of S is G_1 of P and takes ElectLeader's first branch, so the
+   leader is a vertex of G_1 (and Make_SymToAsym moves one), and v is in G_t, not G_1:
+   ElectLeader selects another robot.  Nothing here depends on which vertex of G_1
+   Elect_Leader_Asym's ordering picks, or on a reading of a one-robot G_1. *)
 Definition fresh_look_elects_other (P : list pt) (v : pt) (lam e : Q) : bool :=
   let w := on_turn v lam e in
   let S := replace_robot P v w in
   canonical S && distinct S && sec_centred S && Qeq_bool (rmax S) (rmax P) &&
   asymmetric_polygon (G_t S) && no_merge S && calG_in_O_A (polygons S) &&
-  same_set (G_1 S) (G_1 P) && Nat.eqb (length (G_1 S)) 1 && symmetric_polygon (G_1 S) &&
+  same_set (G_1 S) (G_1 P) && elect_leader_first_branch (G_1 S) &&
   negb (mem w (G_1 S)).

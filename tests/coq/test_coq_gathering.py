@@ -119,17 +119,28 @@ def test_a_tampered_obstacle_start_is_rejected():
 
 @needs_coqc
 def test_a_tampered_snapshot_is_rejected():
-    """lem-vl-move: the Look at the start of the move (lam = 0: G_t still symmetric), and
-    robot 4 put on G_t's mirror (turn 1/4: calG' in O_S, GatheringPattern stops): each
-    rejected; turned by 2/7 and mirrored: still accepted."""
+    """lem-vl-move: the Look at the start of the move (lam = 0: G_t still symmetric), G_1
+    turned so that its mirror is G_t's (apex at turn 1/4: calG' in O_S, GatheringPattern
+    stops), G_1 made equilateral (three mirrors: ElectLeader's first branch not taken),
+    and G_1 a single robot (the former witness: no degree of symmetry one, so the theorem
+    says nothing about ElectLeader's leader): each rejected; turned by 2/7 and mirrored:
+    still accepted."""
     label = "lem-vl-move"
     text = _stored(label)
     at_start = text.replace("Definition lam : Q := (Qmake 1 2).",
                             "Definition lam : Q := (Qmake 0 1).")
     assert at_start != text and not _accepted(at_start)
     points = _points(label)
-    on_mirror = [(r, Fraction(1, 4)) if r == 9 else (r, t) for r, t in points]
-    assert on_mirror != points and not _accepted(_export(label, on_mirror))
+    outer = [(r, t) for r, t in points if r == 400]
+    inner = [t for r, t in points if r == 9]
+    assert len(outer) == 4 and len(inner) == 3
+    apex = Fraction(1, 24)
+    assert apex in inner
+    for triangle in ([Fraction(1, 4) + d for d in (0, Fraction(1, 5), Fraction(-1, 5))],
+                     [apex + d for d in (0, Fraction(1, 3), Fraction(-1, 3))],
+                     [apex]):
+        tampered = outer + [(Fraction(9), t % 1) for t in triangle]
+        assert not _accepted(_export(label, tampered)), triangle
     assert _accepted(_export(label, [(r, Fraction(2, 7) - t) for r, t in points]))
 
 

@@ -1,4 +1,5 @@
-"""(T4), the one argument proofs/coq/Gathering.v adds to the trusted base, against exact
+"""(T4), the fat-robot argument of proofs/coq/Exactsym.v (first written for Gathering.v,
+whose exports inline both libraries, as here), against exact
 arithmetic: whenever the library's ``robots_apart`` says two robots are more than 2
 apart, exactsym's exact distance (the simulator's numbers: cos/sin of turns j/24 are
 multiquadratic) is more than 2.  The tests are sufficient only, so some pairs more than 2

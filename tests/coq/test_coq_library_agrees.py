@@ -6,7 +6,9 @@ rational polar configuration of ``cases/`` (up to 12 points), whether C is the S
 the number of rotations and of mirrors among its candidate symmetries, and O_A; each must
 agree with :func:`exactsym.symmetry_group` and exactsym's certificate (exact, and
 independent of the library; the group only where the origin is the SEC centre), and stay
-the same after a rotation, a mirror image and a scale of the configuration.  A second run
+the same after a rotation, a mirror image and a scale of the configuration; so must
+``only_identity`` (every symmetry about C fixes each point: the library then proves the
+set orderable) against exactsym's "orderable".  A second run
 evaluates the types 0-4 and CW_v = ACW_v on every level against exactsym.paper.
 """
 
@@ -73,26 +75,33 @@ def test_the_library_decides_groups_as_the_ground_truth(tmp_path):
             lines.append(f"Definition {name} : list pt := ["
                          + "; ".join(f"Pt {_q(r)} {_q(t)}" for r, t in variant) + "].")
             lines.append(f"Eval vm_compute in (sec_centred {name}, rotations {name}, "
-                         f"length (mirrors {name}), in_O_A {name}).")
+                         f"length (mirrors {name}), in_O_A {name}, only_identity {name}).")
             rotations = group.rotations
             mirrors = group.mirrors
             in_o_a = not (group.name.startswith("D") and not group.orderable
                           or rotations % 2 == 0)
-            expected.append((k, j, centred, rotations, mirrors, in_o_a))
+            expected.append((k, j, centred, rotations, mirrors, in_o_a, group.orderable))
     (tmp_path / "Agree.v").write_text("\n".join(lines) + "\n")
     run = subprocess.run([COQC, "-q", "Agree.v"], cwd=tmp_path, capture_output=True,
                          text=True, timeout=900)
     assert run.returncode == 0, run.stderr[-2000:]
-    got = re.findall(r"= \((true|false), (\d+)%nat, (\d+)%nat, (true|false)\)", run.stdout)
+    got = re.findall(r"= \((true|false), (\d+)%nat, (\d+)%nat, (true|false), (true|false)\)",
+                     run.stdout)
     assert len(got) == len(expected)
     assert sum(1 for e in expected if e[2]) >= 80
-    for (sec, rot, mir, oa), (k, j, centred, rotations, mirrors, in_o_a) in zip(got, expected):
+    orderable = 0
+    for (sec, rot, mir, oa, ident), (k, j, centred, rotations, mirrors, in_o_a, ordered) in \
+            zip(got, expected):
         where = f"{cases[k][0]} (variant {j})"
         assert (sec == "true") == centred, where
         if not centred:
             continue                    # the library's candidates are about the origin
         assert (int(rot), int(mir)) == (rotations, mirrors), where
         assert (oa == "true") == in_o_a, where
+        # only_identity, the check orderable_of_only_identity proves orderability from
+        assert (ident == "true") == ordered, where
+        orderable += ordered
+    assert orderable >= 20
 
 
 def _levels(cases) -> list:

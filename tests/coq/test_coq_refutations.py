@@ -274,3 +274,120 @@ def test_certify_needs_an_output():
                           str(ROOT / "cases/discrepancies/d3-hexagon.toml")],
                          capture_output=True, text=True, timeout=300)
     assert run.returncode == 2 and "-o CERT.json" in run.stderr
+
+
+#: A mirror inside a half-turn: three robots symmetric only in the line at 1/4 turn
+#: (Mirror 1/2), six only under the half-turn; (r^2, turn).
+_PAIR_POINTS = [(1, "1/4"), (1, "1/20"), (1, "9/20"), (4, "0"), (4, "1/10"), (4, "1/4"),
+                (4, "1/2"), (4, "3/5"), (4, "3/4")]
+
+
+def test_an_orderable_pair_is_proved_by_the_library_theorem():
+    """The proof kind 'P is orderable': orderable_of_only_identity, never by computation
+    of an ordering in the file."""
+    text = coq_refutation_of_points("lem-sym-notord", _PAIR_POINTS)
+    assert text.rstrip().endswith("Print Assumptions refutes_lem_sym_notord.")
+    assert "orderable (G1 ++ G2).\nProof." in text
+    assert "apply orderable_of_only_identity; vm_compute; reflexivity.\nQed." in text
+    assert "Theorem orderable_of_only_identity : forall P, sec_centred P = true ->\n" \
+        "  only_identity P = true -> orderable P." in library_text()
+
+
+@needs_coqc
+def test_orderable_is_accepted_and_a_symmetric_union_rejected():
+    """The pair turned by 2/7, mirrored and scaled is still orderable (accepted); with
+    one robot of the outer ring moved from 3/5 to 2/5 of a turn the pair is still
+    symmetric (the line at 1/4 turn is now a mirror of both), but the mirror maps the
+    union onto itself and moves robots: orderable_of_only_identity does not apply and
+    coqc rejects the file; the negation, "not orderable", is proved instead
+    (not_orderable_by_candidates)."""
+    moved = [(9 * r, Fraction(2, 7) - Fraction(t)) for r, t in _PAIR_POINTS]
+    assert _accepted(coq_refutation_of_points("lem-sym-notord", moved))
+    symmetric = [(r, "2/5" if (r, t) == (4, "3/5") else t) for r, t in _PAIR_POINTS]
+    text = coq_refutation_of_points("lem-sym-notord", symmetric)
+    assert "symmetric_pair G1 G2 = true" in text
+    assert not _accepted(text)
+    negated = text.replace("  orderable (G1 ++ G2).\nProof.", "  ~ orderable (G1 ++ G2).\nProof.")
+    negated = negated.replace("apply orderable_of_only_identity; vm_compute; reflexivity.\nQed.",
+                              "apply not_orderable_by_candidates; vm_compute; reflexivity.\nQed.")
+    assert negated != text and _accepted(negated)       # provably not orderable
+
+
+def _library_goal(points, claim: str, tactic: str) -> str:
+    """The library, a configuration Q (canonical (r^2, turn) pairs) and one theorem."""
+    block = ";\n".join(f"  Pt (Qmake {Fraction(r).numerator} {Fraction(r).denominator}) "
+                       f"(Qmake {Fraction(t).numerator} {Fraction(t).denominator})"
+                       for r, t in points)
+    return (library_text().rstrip() + f"\n\nDefinition Q : list pt := [\n{block}].\n"
+            f"Theorem t : {claim}.\nProof. {tactic}. Qed.\nPrint Assumptions t.\n")
+
+
+@needs_coqc
+def test_no_leader_is_not_just_not_orderable():
+    """MakeAsym's conclusion '~ electable P' (a symmetry moves every robot) is not
+    '~ orderable P': five robots with one mirror through one of them are not orderable,
+    yet that robot is fixed, so 'not electable' must not be provable; an orderable pair
+    is electable (electable_of_only_identity)."""
+    d1 = [(1, 0), (1, "1/5"), (1, "4/5"), (4, "1/3"), (4, "2/3")]
+    assert _accepted(_library_goal(d1, "~ orderable Q",
+                                   "apply not_orderable_by_candidates; vm_compute; reflexivity"))
+    assert not _accepted(_library_goal(
+        d1, "~ electable Q", "apply not_electable_by_candidates; vm_compute; reflexivity"))
+    assert _accepted(_library_goal(
+        _PAIR_POINTS, "electable Q",
+        "apply electable_of_only_identity; vm_compute; reflexivity"))
+
+
+@needs_coqc
+def test_orderable_is_never_concluded_off_centre():
+    """The library's orderable is the paper's only about the SEC's centre (T1): an
+    isosceles triangle (Cartesian (1, 0), (2, 0), (3/2, 3/2), in O_S) and two points, with
+    the origin off their SEC's centre, have the identity as their only symmetry about the
+    origin, yet orderable_of_only_identity does not apply to them (it needs sec_centred)."""
+    for off in ([(1, 0), (4, 0), ("9/2", "1/8")], [(1, 0), (4, 0)]):
+        assert not _accepted(_library_goal(
+            off, "orderable Q", "apply orderable_of_only_identity; vm_compute; reflexivity"))
+        assert _accepted(_library_goal(off, "sec_centred Q = false /\\ only_identity Q = true",
+                                       "split; vm_compute; reflexivity"))
+    # an equilateral triangle about its SEC's centre, turned and scaled: not orderable
+    tri = [(4, Fraction(2, 7) + Fraction(k, 3)) for k in range(3)]
+    assert _accepted(_library_goal(tri, "~ orderable Q",
+                                   "apply not_orderable_by_candidates; vm_compute; reflexivity"))
+
+
+@needs_coqc
+def test_the_empty_set_is_not_symmetric():
+    """def-skewed-symmetric-conf needs a line not containing all of P: none for P empty
+    (a half-turn maps [] onto itself only vacuously); a one-robot polygon minus its robot
+    is then asymmetric, so Elect_Leader_Asym's loop stops at it."""
+    assert _accepted(_library_goal([(1, 0)], "symmetric_conf [] = false /\\ "
+                                   "symmetric_conf Q = true /\\ leader_candidates Q = Q",
+                                   "vm_compute; split; [reflexivity | split; reflexivity]"))
+
+
+def _scaled_export(label: str, factor: Fraction) -> str:
+    """The stored export of ``label`` with every squared distance of P (and of the named
+    levels) multiplied by ``factor``."""
+    text = _export(label)
+    head, rest = text.split("Definition P : list pt := [\n", 1)
+    block, tail = rest.split("].\n", 1)
+    def scaled(m):
+        r = Fraction(int(m.group(1)), int(m.group(2))) * factor
+        return f"Qmake {r.numerator} {r.denominator}"
+    block = re.sub(r"(?<=  Pt \()Qmake (\d+) (\d+)", scaled, block)
+    tail = re.sub(r"(?<=Definition r\w+ : Q := \()Qmake (\d+) (\d+)", scaled, tail)
+    return f"{head}Definition P : list pt := [\n{block}].\n{tail}"
+
+
+@needs_coqc
+@pytest.mark.parametrize("label", ["GatheringPattern", "MakeAsym"])
+def test_fat_robot_witnesses_are_separated_only_when_scaled(label):
+    """GatheringPattern's input is 'R, the set of separated robots' (unit discs, more
+    than 2 apart): the export is its source case scaled by 100 in r^2; at the source's
+    scale (r^2 / 100) the robots overlap and coqc rejects the file; scaled by 4 more it is
+    accepted (a scaled witness: nothing else changes)."""
+    text = _export(label)
+    assert "separated P = true" in text and "multiplied by 100" in text
+    assert not _accepted(_scaled_export(label, Fraction(1, 100)))
+    if ALL or label == "MakeAsym":
+        assert _accepted(_scaled_export(label, Fraction(4)))

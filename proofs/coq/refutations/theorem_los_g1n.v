@@ -27,18 +27,48 @@
    (T3) for the polygons of G_P (points on one circle about C, at least three of them)
         the same holds with the polygon in place of P (three points on a circle determine
         it, so a symmetry of the polygon fixes C).
+   (T4) [separated P] implies that every two robots of P (unit discs, "fat robots")
+        are more than 2 apart: four sufficient tests, argued before [robots_apart]
+        (the sine bound the chord test uses is proved: [sin_lower_bound]).
    Negative facts ("no line of symmetry", "asymmetric") rest on (T1)-(T3); positive
    facts (a symmetry exists) and "not orderable" do not: the latter is a Coq theorem
-   ([not_orderable_by_candidates]) from the definition of def-orderable-set below, which
-   is shown satisfiable ([one_point_orderable]; [three_points_orderable]: three points at
-   distinct distances from C, ordered nearest first; that every set whose only symmetry
-   about C is the identity on it is orderable is argued at the definition, not proved).  The
+   ([not_orderable_by_candidates]) from the definition of def-orderable-set below.  The
    definition lists P's points as points ([mem]), so it does not depend on how P's terms
    are written; the theorem needs P written canonically ([canonical P], checked), and
    then a symmetry whose canonical image of p is another term maps p to another point
-   ([canon_peq]). *)
+   ([canon_peq]).
+   "Orderable" and "electable" are Coq theorems too, but they rest on (T1), not on
+   (T2): [orderable] and [electable] ask for equivariance under the isometries ABOUT C
+   only, which is the paper's notion only when C is the centre of P's SEC (every isometry
+   mapping P onto itself fixes that centre).  For an off-centre set a symmetry of P need
+   not fix C, and the definition can be met by a set the paper proves not orderable
+   (two points, or an isosceles triangle with C at a base vertex).  So
+   [orderable_of_only_identity] and [electable_of_only_identity] take [sec_centred P]
+   (formally unused by the proof; it is what makes the conclusion the paper's), and every
+   exported theorem states [sec_centred P] of its whole configuration.  Given (T1), (T2)
+   is proved for the isometries about C ([candidates_complete]: every isometry about C
+   mapping P into itself acts as one of [candidates P]), and a set whose candidates
+   mapping it onto itself all fix it pointwise ([only_identity P], computed) is
+   orderable ([orderable_of_only_identity]); a leader ([electable]: a robot every
+   observer designates) likewise: "no leader" when a symmetry moves every robot
+   ([not_electable_by_candidates]), a leader when the identity is the only symmetry
+   ([electable_of_only_identity]).
+   The other coordinate changes of def-orderable-set (another origin, another unit, an
+   axis at an irrational angle: a similarity s) are not in [orderable].  For a set whose
+   only symmetry is the identity they add nothing, by this argument (not formalised):
+   define order'(A) as s applied to [order_by_images P P] when A is s(P) for a
+   similarity s, and [] otherwise.  It is well defined: if s(P) = s'(P), then s'^-1 s
+   maps P onto itself, keeps P's SEC (unique), so it has ratio 1 and fixes C (T1); it
+   takes the anchor to a point of P at the anchor's distance from C, so it is one of
+   [candidates P] (T2's argument, for any angle), hence the identity on P
+   ([only_identity P]) and s, s' agree on P.  It commutes with every similarity by
+   construction and lists every point of P.  This is [order_by_images] with similarities
+   for the isometries about C; the Coq proof covers the rational isometries about C.
+   The "not orderable" theorems need no such argument: fewer coordinate changes make
+   "orderable" easier to meet, so "not orderable" is the stronger claim. *)
 
 From Coq Require Import QArith ZArith List Bool Lia.
+From Coq Require Reals Qreals Lra.       (* only for [sin_lower_bound], at the end *)
 Import ListNotations.
 Open Scope Q_scope.
 
@@ -142,15 +172,63 @@ Definition straight_symmetric (P : list pt) : bool :=
   existsb (fun s => moves (Mirror s) P) (mirrors P).
 
 (* def-skewed-symmetric-conf, with the skewed mirror image read as the half-turn about C
-   (skmirrorimage, m = C): a line through C, not containing all of P (one that misses a
-   point off C always exists), whose skewed images map P onto itself. *)
+   (skmirrorimage, m = C): a line through C, not containing all of P (for P non-empty,
+   one that misses a point off C always exists), whose skewed images map P onto itself. *)
 Definition skew_symmetric (P : list pt) : bool := is_symmetry half_turn P.
 
 (* def-symmetric-conf: a singleton, or straight or skew symmetric.  def-asymmetric-conf:
-   not symmetric (P in O_A). *)
+   not symmetric (P in O_A).  The empty set has no line "not containing all the points of
+   P" (every line contains all of none), so it is neither straight nor skew symmetric:
+   the half-turn maps it onto itself vacuously, hence the test of non-emptiness. *)
 Definition symmetric_conf (P : list pt) : bool :=
-  Nat.eqb (length P) 1 || straight_symmetric P || skew_symmetric P.
+  Nat.eqb (length P) 1 || straight_symmetric P ||
+  (negb (Nat.eqb (length P) 0) && skew_symmetric P).
 Definition in_O_A (P : list pt) : bool := negb (symmetric_conf P).
+
+(* ------------------------------------------------------------------ fat robots *)
+
+(* Robots are unit discs ("fat robots", radius one): two robots overlap iff their centres
+   are less than 2 apart.  "We are given a set, R, of separated, stationary transparent
+   fat robots"; GatheringPattern's input: "R, the set of separated robots".  (T4): four
+   sufficient tests that two robots are more than 2 apart, none needs a cosine.  Write a,
+   b for the distances from C (a^2 = r2 p, b^2 = r2 q) and g in [0, 1/2] for the angular
+   gap in turns.
+   - [quarter_apart]: g >= 1/4, so cos(2 pi g) <= 0 and |p - q|^2 = a^2 + b^2 -
+     2ab cos(2 pi g) >= a^2 + b^2 > 4.
+   - [sixth_apart]: g >= 1/6, so cos(2 pi g) <= 1/2 and, for a <= b, |p - q|^2 >=
+     a^2 + b^2 - ab = a^2 + b (b - a) >= a^2 = min(a^2, b^2) > 4.
+   - [radially_apart]: |p - q| >= |b - a| (triangle inequality through C), and for
+     a^2 <= b^2, b - a > 2 iff b > a + 2 iff b^2 > a^2 + 4a + 4 iff
+     b^2 - a^2 - 4 > 4a iff (b^2 - a^2 - 4 > 0 and (b^2 - a^2 - 4)^2 > 16 a^2).
+   - [chord_apart]: one circle (a = b) and 0 < g <= 1/4: p, q and C form an isosceles
+     triangle with apex angle 2 pi g, so |p - q| = 2a sin(pi g), and
+     sin(pi g) >= 3g - 9/2 g^3 > 0 ([sin_lower_bound], proved at the end of this file), so
+     |p - q|^2 >= 4 a^2 (3g - 9/2 g^3)^2 > 4 when a^2 (3g - 9/2 g^3)^2 > 1.  (Robots on
+     one circle a small turn apart: the other three tests never pass them.) *)
+Definition angular_gap (p q : pt) : Q :=
+  let g := frac (turn p - turn q) in if Qle_bool g (1 # 2) then g else 1 - g.
+Definition quarter_apart (p q : pt) : bool :=
+  Qle_bool (1 # 4) (angular_gap p q) && Qlt_bool 4 (r2 p + r2 q).
+Definition sixth_apart (p q : pt) : bool :=
+  Qle_bool (1 # 6) (angular_gap p q) && Qlt_bool 4 (r2 p) && Qlt_bool 4 (r2 q).
+Definition radially_apart (p q : pt) : bool :=
+  let a2 := if Qle_bool (r2 p) (r2 q) then r2 p else r2 q in
+  let b2 := if Qle_bool (r2 p) (r2 q) then r2 q else r2 p in
+  let d := b2 - a2 - 4 in Qlt_bool 0 d && Qlt_bool (16 * a2) (d * d).
+Definition sine_bound (g : Q) : Q := 3 * g - (9 # 2) * (g * g * g).
+Definition chord_apart (p q : pt) : bool :=
+  let g := angular_gap p q in
+  Qeq_bool (r2 p) (r2 q) && Qlt_bool 0 g && Qle_bool g (1 # 4) &&
+  Qlt_bool 1 (r2 p * (sine_bound g * sine_bound g)).
+Definition robots_apart (p q : pt) : bool :=
+  quarter_apart p q || sixth_apart p q || radially_apart p q || chord_apart p q.
+
+(* (T4) The robots are separated: every two of them are more than 2 apart. *)
+Fixpoint separated (P : list pt) : bool :=
+  match P with
+  | [] => true
+  | p :: rest => forallb (robots_apart p) rest && separated rest
+  end.
 
 (* Coordinates are written canonically: the squared distance in lowest terms and, off C,
    the turn in [0, 1) in lowest terms (at C the turn 0).  Two canonical points are one
@@ -175,7 +253,8 @@ Definition image (g : iso) (p : pt) : pt := canon (act g p).
    meet, so "not orderable" below is the stronger claim).  Not vacuous: when no isometry
    about C other than the identity on P maps P onto itself, [order] may send the image of
    P under any g to the images, in a fixed order, of P's points (well defined because g
-   is then determined on P), and any other set to itself. *)
+   is then determined on P), and any other set to the empty list: proved at the end of
+   this file ([orderable_of_only_identity], with [order_by_images]). *)
 Definition orderable (P : list pt) : Prop :=
   exists order : list pt -> list pt,
     (forall A B, same_set A B = true -> order A = order B) /\
@@ -545,12 +624,9 @@ Proof.
   injection E as Ea El. destruct H as [<-|H]; [exact Ea | exact (IH El x H)].
 Qed.
 
-(* ------------------------------------------------------------------ orderable is not vacuous *)
+(* ------------------------------------------------------------------ canonical forms *)
 
-(* [canon] gives one term per point ([canon_peq]: one point, one canonical form), and
-   def-orderable-set as written above can be met: one point off C is orderable
-   ([one_point_orderable]).  (A definition no set meets would make every "not orderable"
-   above empty.) *)
+(* [canon] gives one term per point ([canon_peq]: one point, one canonical form). *)
 Lemma divides_transfer : forall n d n' d', (0 < d)%Z -> (0 < d')%Z ->
   (n * d' = n' * d)%Z -> (d | n)%Z -> (d' | n')%Z.
 Proof.
@@ -632,52 +708,6 @@ Proof.
     rewrite Qred_correct. ring.
 Qed.
 
-(* def-orderable-set is not vacuous: one point off C is orderable. *)
-Definition order_one (A : list pt) : list pt :=
-  match A with
-  | [] => []
-  | a :: _ => if forallb (fun z => pt_eqb (canon z) (canon a)) A then [canon a] else []
-  end.
-
-Lemma mem_canon : forall x A, mem x A = true -> exists z, In z A /\ canon x = canon z.
-Proof.
-  intros x A H. apply existsb_exists in H. destruct H as [z [Hz Hp]].
-  exists z. split; [exact Hz | apply canon_peq; exact Hp].
-Qed.
-
-Lemma order_one_set : forall A B, same_set A B = true -> order_one A = order_one B.
-Proof.
-  intros A B H. unfold same_set in H. apply andb_true_iff in H. destruct H as [HA HB].
-  rewrite forallb_forall in HA, HB.
-  destruct A as [|a A']; destruct B as [|b B']; try reflexivity.
-  - discriminate (HB b (or_introl eq_refl)).
-  - discriminate (HA a (or_introl eq_refl)).
-  - unfold order_one.
-    destruct (forallb (fun z => pt_eqb (canon z) (canon a)) (a :: A')) eqn:SA;
-    destruct (forallb (fun z => pt_eqb (canon z) (canon b)) (b :: B')) eqn:SB;
-    try reflexivity; rewrite forallb_forall in *.
-    + destruct (mem_canon b (a :: A') (HB b (or_introl eq_refl))) as [z [Hz Ez]].
-      pose proof (pt_eqb_eq _ _ (SA z Hz)). congruence.
-    + exfalso. revert SB. apply not_false_iff_true. apply forallb_forall. intros w Hw.
-      destruct (mem_canon w (a :: A') (HB w Hw)) as [z [Hz Ez]].
-      destruct (mem_canon b (a :: A') (HB b (or_introl eq_refl))) as [z' [Hz' Ez']].
-      rewrite Ez, Ez', (pt_eqb_eq _ _ (SA z Hz)), (pt_eqb_eq _ _ (SA z' Hz')).
-      apply pt_eqb_refl.
-    + exfalso. revert SA. apply not_false_iff_true. apply forallb_forall. intros w Hw.
-      destruct (mem_canon w (b :: B') (HA w Hw)) as [z [Hz Ez]].
-      destruct (mem_canon a (b :: B') (HA a (or_introl eq_refl))) as [z' [Hz' Ez']].
-      rewrite Ez, Ez', (pt_eqb_eq _ _ (SB z Hz)), (pt_eqb_eq _ _ (SB z' Hz')).
-      apply pt_eqb_refl.
-Qed.
-
-Theorem one_point_orderable : orderable [Pt 1 0].
-Proof.
-  exists order_one. split; [exact order_one_set|]. split.
-  - intros g. unfold order_one at 1. simpl. rewrite pt_eqb_refl. simpl.
-    unfold image. rewrite canon_canon. reflexivity.
-  - intros p [<-|[]]. vm_compute. reflexivity.
-Qed.
-
 (* ------------------------------------------------------------------ not orderable: the theorem *)
 
 Lemma integral_opp : forall q, integral (- q) = integral q.
@@ -743,64 +773,470 @@ Proof.
   destruct (pt_eqb (image g p) p); [discriminate | reflexivity].
 Qed.
 
-(* Not vacuous beyond one point either: a set whose points lie at distinct distances from C
-   is orderable (nearest first), e.g. three points of an asymmetric set. *)
-Definition at_r (r : Q) (A : list pt) : list pt := filter (fun x => Qeq_bool (r2 x) r) A.
-Definition order_by_radii (rs : list Q) (A : list pt) : list pt :=
-  flat_map (fun r => order_one (at_r r A)) rs.
+(* ------------------------------------------------------------------ orderable: a theorem *)
 
-Lemma peq_r2 : forall x y r, peq x y = true -> Qeq_bool (r2 x) r = Qeq_bool (r2 y) r.
+(* def-orderable-set met: [orderable_of_only_identity] below.  First [peq] is shown an
+   equivalence and [canon] its canonical form; then (T2) for the isometries about C
+   ([candidates_complete]); then the ordering [order_by_images]. *)
+
+Lemma integral_divide : forall q, integral q = true <-> (Zpos (Qden q) | Qnum q)%Z.
 Proof.
-  intros x y r H. unfold peq in H. apply andb_true_iff in H. destruct H as [H _].
-  apply Qeq_bool_iff in H.
-  destruct (Qeq_bool (r2 y) r) eqn:E.
-  - apply Qeq_bool_iff in E. apply Qeq_bool_iff. rewrite H. exact E.
-  - destruct (Qeq_bool (r2 x) r) eqn:F; [|reflexivity].
-    apply Qeq_bool_iff in F. apply Qeq_bool_neq in E. exfalso. apply E. rewrite <- H. exact F.
+  intros [n d]. unfold integral; simpl. rewrite Z.eqb_eq.
+  split; intro H; apply Z.mod_divide; (lia || exact H).
 Qed.
 
-Lemma mem_at_r : forall r p A, mem p A = true -> Qeq_bool (r2 p) r = true ->
-  mem p (at_r r A) = true.
+Lemma integral_add : forall x y, integral x = true -> integral y = true ->
+  integral (x + y) = true.
 Proof.
-  intros r p A H Hr. apply existsb_exists in H. destruct H as [z [Hz Hp]].
-  apply existsb_exists. exists z. split; [|exact Hp].
-  apply filter_In. split; [exact Hz|]. rewrite <- (peq_r2 p z r Hp). exact Hr.
+  intros [a b] [c d] Hx Hy. apply integral_divide in Hx, Hy. apply integral_divide.
+  simpl in *. destruct Hx as [k Hk]. destruct Hy as [m Hm]. exists (k + m)%Z.
+  rewrite Pos2Z.inj_mul. subst. ring.
 Qed.
 
-Lemma same_set_at_r : forall r A B, same_set A B = true -> same_set (at_r r A) (at_r r B) = true.
+Lemma teq_Qeq : forall a b, a == b -> teq a b = true.
+Proof. intros a b H. unfold teq. rewrite (integral_Qeq _ 0); [reflexivity|]. rewrite H. ring. Qed.
+
+Lemma teq_sym : forall a b, teq a b = true -> teq b a = true.
 Proof.
-  intros r A B H. unfold same_set in *. apply andb_true_iff in H. destruct H as [HA HB].
-  rewrite forallb_forall in HA, HB. apply andb_true_iff. split; apply forallb_forall;
-  intros x Hx; apply filter_In in Hx; destruct Hx as [Hx Hr]; apply mem_at_r; auto.
+  intros a b H. unfold teq in *. rewrite (integral_Qeq _ (- (a - b))) by ring.
+  rewrite integral_opp. exact H.
 Qed.
 
-Lemma order_by_radii_set : forall rs A B, same_set A B = true ->
-  order_by_radii rs A = order_by_radii rs B.
+Lemma teq_trans : forall a b c, teq a b = true -> teq b c = true -> teq a c = true.
 Proof.
-  intros rs A B H. unfold order_by_radii. induction rs as [|r rs IH]; simpl; [reflexivity|].
-  rewrite IH, (order_one_set _ _ (same_set_at_r r A B H)). reflexivity.
+  intros a b c H1 H2. unfold teq in *. rewrite (integral_Qeq _ ((a - b) + (b - c))) by ring.
+  apply integral_add; assumption.
 Qed.
 
-Lemma order_one_image : forall g p, order_one [image g p] = [image g p].
-Proof. intros g p. unfold order_one. simpl. rewrite pt_eqb_refl. simpl.
-  unfold image. rewrite canon_canon. reflexivity. Qed.
-
-Theorem three_points_orderable : orderable [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)].
+Lemma Qeq_bool_compat : forall x y z, x == y -> Qeq_bool x z = Qeq_bool y z.
 Proof.
-  exists (order_by_radii [1; 4; 9]). split; [exact (order_by_radii_set _)|]. split.
-  - intros g.
-    replace (order_by_radii [1; 4; 9] [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)])
-      with [Pt 1 0; Pt 4 (1 # 3); Pt 9 (1 # 5)] by (vm_compute; reflexivity).
-    assert (R1 : r2 (image g (Pt 1 0)) = 1) by (destruct g; reflexivity).
-    assert (R2 : r2 (image g (Pt 4 (1 # 3))) = 4) by (destruct g; reflexivity).
-    assert (R3 : r2 (image g (Pt 9 (1 # 5))) = 9) by (destruct g; reflexivity).
-    unfold order_by_radii, at_r. cbn [map flat_map filter].
-    rewrite R1, R2, R3.
-    repeat match goal with |- context [Qeq_bool ?x ?y] =>
-      let b := eval vm_compute in (Qeq_bool x y) in change (Qeq_bool x y) with b end.
-    cbv beta iota. rewrite !order_one_image. reflexivity.
-  - intros p Hp. destruct Hp as [<-|[<-|[<-|[]]]]; vm_compute; reflexivity.
+  intros x y z H. destruct (Qeq_bool x z) eqn:E; destruct (Qeq_bool y z) eqn:F;
+  try reflexivity; exfalso.
+  - apply Qeq_bool_iff in E. apply Qeq_bool_neq in F. apply F. rewrite <- H. exact E.
+  - apply Qeq_bool_iff in F. apply Qeq_bool_neq in E. apply E. rewrite H. exact F.
 Qed.
+
+(* [peq] is an equivalence. *)
+Lemma peq_refl : forall x, peq x x = true.
+Proof.
+  intros x. unfold peq. rewrite Qeq_bool_refl, (teq_Qeq _ _ (Qeq_refl _)), orb_true_r.
+  reflexivity.
+Qed.
+
+Lemma peq_sym : forall x y, peq x y = true -> peq y x = true.
+Proof.
+  intros x y H. unfold peq in *. apply andb_true_iff in H. destruct H as [Hr Ht].
+  apply Qeq_bool_iff in Hr. apply andb_true_iff. split.
+  - apply Qeq_bool_iff. symmetry. exact Hr.
+  - rewrite <- (Qeq_bool_compat _ _ 0 Hr). apply orb_true_iff in Ht. apply orb_true_iff.
+    destruct Ht as [H0|H0]; [left; exact H0 | right; apply teq_sym; exact H0].
+Qed.
+
+Lemma peq_trans : forall x y z, peq x y = true -> peq y z = true -> peq x z = true.
+Proof.
+  intros x y z H1 H2. unfold peq in *. apply andb_true_iff in H1, H2.
+  destruct H1 as [R1 T1]. destruct H2 as [R2 T2]. apply Qeq_bool_iff in R1, R2.
+  apply andb_true_iff. split; [apply Qeq_bool_iff; rewrite R1; exact R2|].
+  destruct (Qeq_bool (r2 x) 0) eqn:E; [reflexivity|]. simpl in *.
+  rewrite <- (Qeq_bool_compat _ _ 0 R1), E in T2. simpl in T2.
+  exact (teq_trans _ _ _ T1 T2).
+Qed.
+
+Lemma frac_teq_self : forall t, teq (frac t) t = true.
+Proof.
+  intros [a b]. unfold teq. apply integral_divide. unfold frac. simpl.
+  pose proof (Z.div_mod a (Z.pos b) ltac:(lia)) as Ha.
+  remember (a / Z.pos b)%Z as q. remember (a mod Z.pos b)%Z as m.
+  exists (- q)%Z. rewrite Pos2Z.inj_mul. rewrite Ha at 1. ring.
+Qed.
+
+Lemma peq_canon : forall x, peq (canon x) x = true.
+Proof.
+  intros [r t]. unfold canon. cbn [r2 turn]. destruct (Qeq_bool r 0) eqn:E.
+  - apply Qeq_bool_iff in E. unfold peq. cbn [r2 turn]. apply andb_true_iff.
+    split; [apply Qeq_bool_iff; rewrite E; reflexivity | reflexivity].
+  - unfold peq. cbn [r2 turn]. apply andb_true_iff. split; [apply Qeq_bool_iff; apply Qred_correct|].
+    apply orb_true_iff. right. unfold teq.
+    rewrite (integral_Qeq _ (frac t - t)) by (rewrite Qred_correct; reflexivity).
+    exact (frac_teq_self t).
+Qed.
+
+Lemma peq_canon_iff : forall x y, peq x y = true <-> canon x = canon y.
+Proof.
+  intros x y. split; [apply canon_peq|]. intros E.
+  apply (peq_trans _ (canon x)); [apply peq_sym, peq_canon|].
+  rewrite E. apply peq_canon.
+Qed.
+
+Lemma mem_iff : forall x L, mem x L = true <-> exists w, In w L /\ canon x = canon w.
+Proof.
+  intros x L. unfold mem. rewrite existsb_exists. split; intros [w [H1 H2]]; exists w;
+  split; try exact H1; apply peq_canon_iff; exact H2.
+Qed.
+
+Lemma canon_image : forall g x, canon (image g x) = image g x.
+Proof. intros g x. apply canon_canon. Qed.
+
+Lemma image_canon : forall g x, image g (canon x) = image g x.
+Proof. intros g x. apply canon_peq, act_peq, peq_canon. Qed.
+
+Lemma r2_act : forall g x, r2 (act g x) = r2 x.
+Proof. intros [a|s] x; reflexivity. Qed.
+
+(* The inverse of an isometry about C, and composition (first g, then h). *)
+Definition inv (g : iso) : iso := match g with Rot a => Rot (- a) | Mirror s => Mirror s end.
+Definition comp (g h : iso) : iso :=
+  match g, h with
+  | Rot a, Rot b => Rot (a + b)
+  | Rot a, Mirror s => Mirror (s - a)
+  | Mirror s, Rot b => Mirror (s + b)
+  | Mirror s, Mirror s' => Rot (s' - s)
+  end.
+
+Lemma peq_same_r2 : forall r t t', t == t' -> peq (Pt r t) (Pt r t') = true.
+Proof.
+  intros r t t' H. unfold peq. cbn [r2 turn]. rewrite Qeq_bool_refl, (teq_Qeq _ _ H), orb_true_r.
+  reflexivity.
+Qed.
+
+Lemma act_inv_l : forall g x, peq (act (inv g) (act g x)) x = true.
+Proof. intros [a|s] [r t]; apply peq_same_r2; simpl; ring. Qed.
+
+Lemma act_inv_r : forall g x, peq (act g (act (inv g) x)) x = true.
+Proof. intros [a|s] [r t]; apply peq_same_r2; simpl; ring. Qed.
+
+Lemma act_comp : forall g h x, peq (act (comp g h) x) (act h (act g x)) = true.
+Proof. intros [a|s] [b|s'] [r t]; apply peq_same_r2; simpl; ring. Qed.
+
+Lemma anchor_spec : forall P a, anchor P = Some a -> In a P /\ Qlt_bool 0 (r2 a) = true.
+Proof.
+  induction P as [|p P IH]; simpl; intros a H; [discriminate|].
+  destruct (Qlt_bool 0 (r2 p)) eqn:E.
+  - injection H as <-. split; [left; reflexivity | exact E].
+  - destruct (IH a H) as [H1 H2]. split; [right; exact H1 | exact H2].
+Qed.
+
+Lemma Qlt_bool_neq : forall x, Qlt_bool 0 x = true -> Qeq_bool x 0 = false.
+Proof.
+  intros x H. unfold Qlt_bool in H. apply negb_true_iff in H.
+  destruct (Qeq_bool x 0) eqn:E; [|reflexivity].
+  apply Qeq_bool_iff in E.
+  assert (L : Qle_bool x 0 = true) by (apply Qle_bool_iff; rewrite E; apply Qle_refl).
+  congruence.
+Qed.
+
+(* The isometry about C taking a (off C) to q, of the kind of h, acts as h does when h
+   takes a to q: an isometry about C is determined by its kind and the image of one
+   point off C. *)
+Lemma cand_like : forall a q h, Qeq_bool (r2 a) 0 = false -> peq (act h a) q = true ->
+  exists c, In c [Rot (turn q - turn a); Mirror (turn q + turn a)] /\
+            forall x, peq (act c x) (act h x) = true.
+Proof.
+  intros a q h Ha H. unfold peq in H. rewrite r2_act, Ha in H. simpl in H.
+  apply andb_true_iff in H. destruct H as [_ T].
+  destruct h as [b|s]; simpl in T.
+  - exists (Rot (turn q - turn a)). split; [left; reflexivity|]. intros [r t].
+    unfold peq; cbn [act r2 turn]. rewrite Qeq_bool_refl.
+    apply orb_true_iff. right. unfold teq in *.
+    rewrite (integral_Qeq _ (- (turn a + b - turn q))) by ring. rewrite integral_opp. exact T.
+  - exists (Mirror (turn q + turn a)). split; [right; left; reflexivity|]. intros [r t].
+    unfold peq; cbn [act r2 turn]. rewrite Qeq_bool_refl.
+    apply orb_true_iff. right. unfold teq in *.
+    rewrite (integral_Qeq _ (- (s - turn a - turn q))) by ring. rewrite integral_opp. exact T.
+Qed.
+
+(* (T2) as a theorem over this representation: every isometry about C mapping P into
+   itself acts on every point as one of [candidates P] does. *)
+Theorem candidates_complete : forall P h a, anchor P = Some a -> is_symmetry h P = true ->
+  exists c, In c (candidates P) /\ forall x, peq (act c x) (act h x) = true.
+Proof.
+  intros P h a Ha Hs. destruct (anchor_spec P a Ha) as [HaP Hpos].
+  unfold is_symmetry in Hs. rewrite forallb_forall in Hs.
+  pose proof (Hs a HaP) as Hm. apply existsb_exists in Hm. destruct Hm as [q [Hq Hpq]].
+  pose proof (Qlt_bool_neq _ Hpos) as Hne.
+  destruct (cand_like a q h Hne Hpq) as [c [Hc Hl]]. exists c. split; [|exact Hl].
+  unfold candidates. rewrite Ha. apply in_flat_map. exists q. split; [exact Hq|].
+  assert (R : Qeq_bool (r2 q) (r2 a) = true).
+  { unfold peq in Hpq. apply andb_true_iff in Hpq. destruct Hpq as [R _].
+    rewrite r2_act in R. apply Qeq_bool_iff in R. apply Qeq_bool_iff. symmetry. exact R. }
+  rewrite R. exact Hc.
+Qed.
+
+(* The check: P has a point off C, and every candidate mapping P onto itself fixes each
+   point of P (the identity on P is its only symmetry about C). *)
+Definition only_identity (P : list pt) : bool :=
+  match anchor P with
+  | None => false
+  | Some _ => forallb (fun c => negb (is_symmetry c P) || forallb (fun p => peq (act c p) p) P)
+                      (candidates P)
+  end.
+
+Lemma mem_peq : forall x y L, peq x y = true -> mem y L = true -> mem x L = true.
+Proof.
+  intros x y L H1 H2. apply mem_iff in H2. apply mem_iff. destruct H2 as [w [Hw E]].
+  exists w. split; [exact Hw|]. rewrite <- E. apply peq_canon_iff. exact H1.
+Qed.
+
+(* Two isometries about C mapping P onto one set agree on P, when the identity is P's
+   only symmetry. *)
+Lemma images_agree : forall P g g', only_identity P = true ->
+  (forall p, In p P -> exists p', In p' P /\ image g p = image g' p') ->
+  forall p, In p P -> image g p = image g' p.
+Proof.
+  intros P g g' Hid Hcov.
+  set (h := comp g (inv g')).
+  assert (Hh : forall p, In p P -> exists p', In p' P /\ peq (act h p) p' = true).
+  { intros p Hp. destruct (Hcov p Hp) as [p' [Hp' E]]. exists p'. split; [exact Hp'|].
+    apply (peq_trans _ _ _ (act_comp g (inv g') p)).
+    apply (peq_trans _ (act (inv g') (act g' p'))); [|apply act_inv_l].
+    apply act_peq. apply peq_canon_iff. exact E. }
+  assert (Hs : is_symmetry h P = true).
+  { unfold is_symmetry. apply forallb_forall. intros p Hp. destruct (Hh p Hp) as [p' [Hp' E]].
+    apply existsb_exists. exists p'. split; assumption. }
+  unfold only_identity in Hid. destruct (anchor P) as [a|] eqn:Ha; [|discriminate].
+  destruct (candidates_complete P h a Ha Hs) as [c [Hc Hl]].
+  rewrite forallb_forall in Hid. pose proof (Hid c Hc) as Hc'.
+  assert (Hcs : is_symmetry c P = true).
+  { unfold is_symmetry in *. rewrite forallb_forall in *. intros p Hp.
+    apply (mem_peq _ (act h p)); [apply Hl | apply Hs; exact Hp]. }
+  rewrite Hcs in Hc'. simpl in Hc'. rewrite forallb_forall in Hc'.
+  intros p Hp. unfold image. apply canon_peq.
+  assert (F : peq (act h p) p = true).
+  { apply (peq_trans _ (act c p)); [apply peq_sym, Hl | apply Hc'; exact Hp]. }
+  apply (peq_trans _ (act g' (act (inv g') (act g p)))); [apply peq_sym, act_inv_r|].
+  apply act_peq. apply (peq_trans _ (act h p)); [apply peq_sym, act_comp | exact F].
+Qed.
+
+Lemma same_set_iff : forall L M, same_set L M = true <->
+  (forall x, In x L -> exists y, In y M /\ canon x = canon y) /\
+  (forall y, In y M -> exists x, In x L /\ canon y = canon x).
+Proof.
+  intros L M. unfold same_set. rewrite andb_true_iff, !forallb_forall.
+  split; intros [H1 H2]; split; intros x Hx.
+  - apply mem_iff. exact (H1 x Hx).
+  - apply mem_iff. exact (H2 x Hx).
+  - apply mem_iff. exact (H1 x Hx).
+  - apply mem_iff. exact (H2 x Hx).
+Qed.
+
+Lemma same_set_refl : forall L, same_set L L = true.
+Proof.
+  intros L. apply same_set_iff. split; intros x Hx; exists x; split; auto.
+Qed.
+
+Lemma same_set_sym : forall L M, same_set L M = true -> same_set M L = true.
+Proof. intros L M H. apply same_set_iff in H. apply same_set_iff. tauto. Qed.
+
+Lemma same_set_trans : forall L M N, same_set L M = true -> same_set M N = true ->
+  same_set L N = true.
+Proof.
+  intros L M N H1 H2. apply same_set_iff in H1, H2. apply same_set_iff.
+  destruct H1 as [A1 B1]. destruct H2 as [A2 B2]. split.
+  - intros x Hx. destruct (A1 x Hx) as [y [Hy E]]. destruct (A2 y Hy) as [z [Hz E']].
+    exists z. split; [exact Hz | congruence].
+  - intros z Hz. destruct (B2 z Hz) as [y [Hy E]]. destruct (B1 y Hy) as [x [Hx E']].
+    exists x. split; [exact Hx | congruence].
+Qed.
+
+(* The isometries about C taking a to a point of A. *)
+Definition cands_to (a : pt) (A : list pt) : list iso :=
+  flat_map (fun q => [Rot (turn q - turn a); Mirror (turn q + turn a)]) A.
+Definition find_iso (P : list pt) (a : pt) (A : list pt) : option iso :=
+  find (fun g => same_set (map (image g) P) A) (cands_to a A).
+
+Lemma find_iso_some : forall P a A g, anchor P = Some a ->
+  same_set (map (image g) P) A = true -> exists g', find_iso P a A = Some g'.
+Proof.
+  intros P a A g Ha H. destruct (find_iso P a A) as [g'|] eqn:F; [exists g'; reflexivity|].
+  exfalso. destruct (anchor_spec P a Ha) as [HaP Hpos].
+  pose proof H as H'. apply same_set_iff in H'. destruct H' as [H1 _].
+  destruct (H1 (image g a) (in_map _ _ _ HaP)) as [q [Hq E]].
+  rewrite canon_image in E. unfold image in E. apply peq_canon_iff in E.
+  destruct (cand_like a q g (Qlt_bool_neq _ Hpos) E) as [c [Hc Hl]].
+  assert (Hin : In c (cands_to a A)) by (apply in_flat_map; exists q; split; assumption).
+  pose proof (find_none _ _ F c Hin) as N. simpl in N.
+  replace (map (image c) P) with (map (image g) P) in N; [congruence|].
+  apply map_ext. intros x. unfold image. symmetry. apply canon_peq. apply Hl.
+Qed.
+
+Lemma agree_on_set : forall P g g' A, only_identity P = true ->
+  same_set (map (image g) P) A = true -> same_set (map (image g') P) A = true ->
+  map (image g) P = map (image g') P.
+Proof.
+  intros P g g' A Hid H1 H2. apply map_ext_in. apply (images_agree P g g' Hid).
+  intros p Hp. pose proof (same_set_trans _ _ _ H1 (same_set_sym _ _ H2)) as H.
+  apply same_set_iff in H. destruct H as [H _].
+  destruct (H (image g p) (in_map _ _ _ Hp)) as [y [Hy E]].
+  apply in_map_iff in Hy. destruct Hy as [p' [<- Hp']]. exists p'. split; [exact Hp'|].
+  rewrite !canon_image in E. exact E.
+Qed.
+
+(* The ordering: a set that some isometry g about C maps P onto is listed as the images
+   of P's points under g, in P's order (by [images_agree] it does not matter which g);
+   any other set is given the empty list. *)
+Definition order_by_images (P : list pt) (A : list pt) : list pt :=
+  match anchor P with
+  | None => []
+  | Some a => match find_iso P a A with Some g => map (image g) P | None => [] end
+  end.
+
+Lemma image_id : forall p, image (Rot 0) p = canon p.
+Proof. intros [r t]. unfold image. apply canon_peq. apply peq_same_r2. simpl. ring. Qed.
+
+Lemma order_by_images_orders : forall P, only_identity P = true ->
+  (forall A B, same_set A B = true -> order_by_images P A = order_by_images P B) /\
+  (forall g, order_by_images P (map (image g) P) = map (image g) (order_by_images P P)) /\
+  order_by_images P P = map canon P.
+Proof.
+  intros P Hid. destruct (anchor P) as [a|] eqn:Ha;
+    [| unfold only_identity in Hid; rewrite Ha in Hid; discriminate].
+  assert (Hself : map (image (Rot 0)) P = map canon P) by (apply map_ext; exact image_id).
+  assert (HP : order_by_images P P = map canon P).
+  { assert (S0 : same_set (map (image (Rot 0)) P) P = true).
+    { rewrite Hself. apply same_set_iff. split; intros x Hx.
+      - apply in_map_iff in Hx. destruct Hx as [p [<- Hp]]. exists p.
+        split; [exact Hp | apply canon_canon].
+      - exists (canon x). split; [apply in_map; exact Hx | symmetry; apply canon_canon]. }
+    destruct (find_iso_some P a P _ Ha S0) as [g0 F]. unfold order_by_images.
+    rewrite Ha, F. rewrite <- Hself. apply (agree_on_set P g0 (Rot 0) P Hid); [|exact S0].
+    unfold find_iso in F. apply find_some in F. exact (proj2 F). }
+  split; [|split; [|exact HP]].
+  - intros A B H. unfold order_by_images. rewrite Ha.
+    destruct (find_iso P a A) as [g|] eqn:FA; destruct (find_iso P a B) as [g'|] eqn:FB.
+    + unfold find_iso in FA, FB. apply find_some in FA, FB.
+      apply (agree_on_set P g g' A Hid); [exact (proj2 FA)|].
+      exact (same_set_trans _ _ _ (proj2 FB) (same_set_sym _ _ H)).
+    + unfold find_iso in FA. apply find_some in FA.
+      destruct (find_iso_some P a B g Ha (same_set_trans _ _ _ (proj2 FA) H)) as [x E].
+      congruence.
+    + unfold find_iso in FB. apply find_some in FB.
+      destruct (find_iso_some P a A g' Ha
+                  (same_set_trans _ _ _ (proj2 FB) (same_set_sym _ _ H))) as [x E].
+      congruence.
+    + reflexivity.
+  - intros g. rewrite HP, map_map.
+    replace (map (fun x => image g (canon x)) P) with (map (image g) P)
+      by (apply map_ext; intros x; symmetry; apply image_canon).
+    destruct (find_iso_some P a (map (image g) P) g Ha (same_set_refl _)) as [g1 F].
+    unfold order_by_images. rewrite Ha, F.
+    apply (agree_on_set P g1 g (map (image g) P) Hid); [|apply same_set_refl].
+    unfold find_iso in F. apply find_some in F. exact (proj2 F).
+Qed.
+
+(* def-orderable-set, when the identity on P is its only symmetry about C: P is
+   orderable.  With [candidates_complete] ((T2) proved) the check [only_identity P]
+   is decided by computation over the finite list of candidates.  [sec_centred P] is not
+   used by the proof: it is what makes the isometries about C all of P's symmetries (T1),
+   so that [orderable P] is the paper's notion (for an off-centre set it is not: the
+   library's header). *)
+Theorem orderable_of_only_identity : forall P, sec_centred P = true ->
+  only_identity P = true -> orderable P.
+Proof.
+  intros P _ Hid. destruct (order_by_images_orders P Hid) as [H1 [H2 H3]].
+  exists (order_by_images P). split; [exact H1|]. split; [exact H2|].
+  intros p Hp. rewrite H3. apply mem_iff. exists (canon p).
+  split; [apply in_map; exact Hp | symmetry; apply canon_canon].
+Qed.
+
+(* Leader election (the abstract: "the first robot in the ordering becomes the leader
+   ... each robot, characterized by its location, agrees on the same ordering"; MakeAsym
+   elects one robot v_l and moves it): an algorithm reading the set designates a robot
+   of P, the same one whatever the coordinates among the isometries about C (as for
+   def-orderable-set).  Under the same condition P has a leader: the first robot of
+   [order_by_images]. *)
+Definition electable (P : list pt) : Prop :=
+  exists elect : list pt -> pt,
+    (forall A B, same_set A B = true -> elect A = elect B) /\
+    (forall g, elect (map (image g) P) = image g (elect P)) /\
+    mem (elect P) P = true.
+
+Theorem electable_of_only_identity : forall P, sec_centred P = true ->
+  only_identity P = true -> electable P.
+Proof.
+  intros P _ Hid. destruct (order_by_images_orders P Hid) as [H1 [H2 H3]].
+  destruct P as [|p P'] eqn:EP; [discriminate|]. rewrite <- EP in *.
+  exists (fun A => hd (Pt 0 0) (order_by_images P A)). split; [|split].
+  - intros A B H. rewrite (H1 A B H). reflexivity.
+  - intros g. rewrite H2, H3, EP. reflexivity.
+  - rewrite H3, EP. simpl. rewrite peq_canon. reflexivity.
+Qed.
+
+(* def-orderable-set is not vacuous: a scalene triangle inscribed in its SEC (gaps 1/3,
+   1/6, 1/2 of a turn: one side a diameter), and four points at two distances from C, are
+   orderable (C is the SEC's centre and the identity is their only symmetry). *)
+Theorem scalene_triangle_orderable : orderable [Pt 1 0; Pt 1 (1 # 3); Pt 1 (1 # 2)].
+Proof. apply orderable_of_only_identity; vm_compute; reflexivity. Qed.
+Theorem four_points_orderable :
+  orderable [Pt 4 0; Pt 4 (1 # 3); Pt 4 (2 # 3); Pt 1 (1 # 5)].
+Proof. apply orderable_of_only_identity; vm_compute; reflexivity. Qed.
+
+(* No leader: a symmetry g of P that moves every point of P leaves no robot that every
+   observer designates, since [elect (g P) = elect P] and [elect (g P) = g (elect P)]
+   make g fix the robot elected.  P is written canonically, as for [not_orderable]. *)
+Theorem not_electable : forall P g, canonical P = true ->
+  same_set (map (image g) P) P = true ->
+  forallb (fun p => negb (pt_eqb (image g p) p)) P = true -> ~ electable P.
+Proof.
+  intros P g Hcan Hset Hmoves [elect [Hsame [Hcov Hmem]]].
+  pose proof (Hsame _ _ Hset) as E. rewrite Hcov in E.
+  apply existsb_exists in Hmem. destruct Hmem as [p [Hp Hpe]].
+  rewrite forallb_forall in Hmoves. pose proof (Hmoves p Hp) as Hm.
+  assert (Hi : image g p = elect P).
+  { unfold image. rewrite <- (canon_peq _ _ (act_peq g _ _ Hpe)). exact E. }
+  assert (He : elect P = p).
+  { pose proof (canon_image g (elect P)) as C. rewrite E in C.
+    rewrite <- (canonical_in P p Hcan Hp), <- (canon_peq _ _ Hpe). symmetry. exact C. }
+  rewrite Hi, He, pt_eqb_refl in Hm. discriminate.
+Qed.
+
+Definition not_electable_dec (P : list pt) : bool :=
+  existsb (fun g => same_set (map (image g) P) P &&
+                    forallb (fun p => negb (pt_eqb (image g p) p)) P) (candidates P).
+
+Theorem not_electable_by_candidates : forall P, canonical P = true ->
+  not_electable_dec P = true -> ~ electable P.
+Proof.
+  intros P Hcan H. apply existsb_exists in H. destruct H as [g [_ H]].
+  apply andb_true_iff in H. destruct H as [Hset Hmoves].
+  exact (not_electable P g Hcan Hset Hmoves).
+Qed.
+
+(* ------------------------------------------------------------------ the sine bound *)
+
+(* [chord_apart]'s bound, proved over Coq's real numbers (its axioms are those of the
+   standard library's reals; no exported theorem uses this lemma, so their Print
+   Assumptions stay closed): for 0 <= g <= 1/4, sin (pi g) >= 3g - 9/2 g^3.  With
+   x = pi g in [3g, 4g] within [0, 1]: sin x >= x - x^3/6 (the alternating series,
+   [pre_sin_bound]), and x - x^3/6 is increasing on [0, 1]. *)
+Module SineBound.
+Import Reals Qreals Lra.
+
+Lemma sin_lower_bound : forall g : Q, 0 <= g -> g <= 1 # 4 ->
+  (Q2R (sine_bound g) <= sin (PI * Q2R g))%R.
+Proof.
+  intros g H0 H1. apply Qle_Rle in H0, H1. unfold sine_bound.
+  assert (E : Q2R (3 * g - (9 # 2) * (g * g * g)) =
+              (3 * Q2R g - 9 / 2 * (Q2R g * Q2R g * Q2R g))%R).
+  { rewrite Q2R_minus, !Q2R_mult.
+    replace (Q2R 3) with 3%R by (unfold Q2R; simpl; field).
+    replace (Q2R (9 # 2)) with (9 / 2)%R by (unfold Q2R; simpl; field). reflexivity. }
+  assert (Z : Q2R 0 = 0%R) by (unfold Q2R; simpl; ring).
+  assert (F : Q2R (1 # 4) = (1 / 4)%R) by (unfold Q2R; simpl; field).
+  rewrite E. rewrite Z in H0. rewrite F in H1. set (y := Q2R g) in *.
+  assert (HPI : (3 <= PI <= 4)%R) by (pose proof PI2_3_2; pose proof PI_4; lra).
+  assert (Hx : (0 <= PI * y <= 1)%R) by nra.
+  destruct (pre_sin_bound (PI * y) 0 (proj1 Hx) ltac:(lra)) as [S _].
+  refine (Rle_trans _ _ _ _ S). unfold sin_approx, sin_term. simpl.
+  set (x := (PI * y)%R) in *.
+  assert (Hxy : (3 * y <= x)%R) by (unfold x; nra).
+  assert (D : (x - x * x * x / 6 - (3 * y - 3 * y * (3 * y) * (3 * y) / 6) =
+               (x - 3 * y) * (1 - (x * x + x * (3 * y) + 3 * y * (3 * y)) / 6))%R) by field.
+  assert (0 <= (x - 3 * y) * (1 - (x * x + x * (3 * y) + 3 * y * (3 * y)) / 6))%R.
+  { apply Rmult_le_pos; [lra|]. nra. }
+  nra.
+Qed.
+
+End SineBound.
 
 (* ================================================= the configuration *)
 
