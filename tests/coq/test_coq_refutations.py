@@ -372,10 +372,10 @@ def _scaled_export(label: str, factor: Fraction) -> str:
     head, rest = text.split("Definition P : list pt := [\n", 1)
     block, tail = rest.split("].\n", 1)
     def scaled(m):
-        r = Fraction(int(m.group(1)), int(m.group(2))) * factor
-        return f"Qmake {r.numerator} {r.denominator}"
-    block = re.sub(r"(?<=  Pt \()Qmake (\d+) (\d+)", scaled, block)
-    tail = re.sub(r"(?<=Definition r\w+ : Q := \()Qmake (\d+) (\d+)", scaled, tail)
+        r = Fraction(int(m.group(2)), int(m.group(3))) * factor
+        return f"{m.group(1)}Qmake {r.numerator} {r.denominator}"
+    block = re.sub(r"(  Pt \()Qmake (\d+) (\d+)", scaled, block)
+    tail = re.sub(r"(Definition r\w+ : Q := \()Qmake (\d+) (\d+)", scaled, tail)
     return f"{head}Definition P : list pt := [\n{block}].\n{tail}"
 
 

@@ -1168,8 +1168,7 @@ Qed.
    orderable (C is the SEC's centre and the identity is their only symmetry). *)
 Theorem scalene_triangle_orderable : orderable [Pt 1 0; Pt 1 (1 # 3); Pt 1 (1 # 2)].
 Proof. apply orderable_of_only_identity; vm_compute; reflexivity. Qed.
-Theorem four_points_orderable :
-  orderable [Pt 4 0; Pt 4 (1 # 3); Pt 4 (2 # 3); Pt 1 (1 # 5)].
+Theorem four_points_orderable : orderable [Pt 4 0; Pt 4 (1 # 3); Pt 4 (2 # 3); Pt 1 (1 # 5)].
 Proof. apply orderable_of_only_identity; vm_compute; reflexivity. Qed.
 
 (* No leader: a symmetry g of P that moves every point of P leaves no robot that every
