@@ -92,8 +92,9 @@ def run_certify(args) -> int:
         raise InputError("--coq needs --refutes LABEL: only refutations are written for Coq")
     with no_cycle_collection():
         parsed = read_config(args.file)
+    from ..certificates.coq_gathering import GATHERING_STATEMENTS
     from ..certificates.coq_refutation import CASE_STATEMENTS
-    if args.coq and args.refutes in CASE_STATEMENTS:
+    if args.coq and (args.refutes in CASE_STATEMENTS or args.refutes in GATHERING_STATEMENTS):
         return _coq_only(parsed, args)
     config, cert = _certificate(parsed, args.refutes)
     verify = checker.verify_refutation if args.refutes else checker.verify_certificate
@@ -136,6 +137,7 @@ def _write_coq(refutation: dict, path: str) -> None:
 def _coq_only(parsed, args) -> int:
     """A statement about CW/ACW strings or an algorithm: no certificate for the Python
     checker, the Coq file only (coqc is its check)."""
+    from ..certificates.coq_gathering import GATHERING_STATEMENTS, coq_gathering_of_points
     from ..certificates.coq_refutation import CoqExportError, coq_refutation_of_points
     from ..geometry.configuration import from_file
     if args.output is not None:
@@ -146,7 +148,9 @@ def _coq_only(parsed, args) -> int:
         raise InputError(f"{config.source}: cannot write the refutation for Coq: only "
                          "rational polar configurations are exported")
     try:
-        text = coq_refutation_of_points(args.refutes, config.polar, config.source)
+        export = coq_gathering_of_points if args.refutes in GATHERING_STATEMENTS \
+            else coq_refutation_of_points
+        text = export(args.refutes, config.polar, config.source)
     except CoqExportError as err:
         raise InputError(f"cannot write the refutation for Coq: {err}") from None
     _write_text(args.coq, text)

@@ -129,7 +129,7 @@ def render(ledger: Ledger, support: dict[str, Support], sweeps: dict | None = No
     lines += [f"Refutations checked by Coq ({len(coq)} of {len(refuted)} refuted or refuted "
               "under a reading; each a file `proofs/coq/refutations/*.v` that `coqc` accepts "
               "on its own, trusting Coq's kernel (and its vm_compute) and the library `proofs/coq/Exactsym.v` "
-              "and none of exactsym's code; `docs/certificates.md`, \"Coq\"): "
+              "(with `proofs/coq/Gathering.v` for the gathering statements) and none of exactsym's code; `docs/certificates.md`, \"Coq\"): "
               + (", ".join(f"`{x}`" for x in coq) or "none") + ".", ""]
     starts = {label: title for title, label in HEADINGS}
     for s in ledger.statements:

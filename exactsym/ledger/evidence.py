@@ -208,7 +208,8 @@ def coq_export(s, root: Path, current: str | None = None) -> str:
             raise CoqExportError("needs exactly one certificate evidence to be written from")
         return coq_refutation(json.loads((root / certs[0]).read_text(encoding="utf-8")),
                               s.claim, source=certs[0])
-    if s.label not in CASE_STATEMENTS:
+    from ..certificates.coq_gathering import GATHERING_STATEMENTS, coq_gathering_of_points
+    if s.label not in CASE_STATEMENTS and s.label not in GATHERING_STATEMENTS:
         raise CoqExportError(f"no Coq statement for {s.label}")
     source = source_of(current or "")
     if not source or not (root / source).is_file():
@@ -221,6 +222,8 @@ def coq_export(s, root: Path, current: str | None = None) -> str:
     config = from_file(read_config(str(root / source)))
     if config.polar is None:
         raise CoqExportError(f"{source}: not a rational polar configuration")
+    if s.label in GATHERING_STATEMENTS:
+        return coq_gathering_of_points(s.label, config.polar, source, s.claim)
     return coq_refutation_of_points(s.label, config.polar, source, s.claim)
 
 
@@ -242,7 +245,9 @@ def _coq_problems(s, path: Path, root: Path, state: dict, progress) -> list[str]
                                                coqc_accepts)
     if s.grade not in ("refuted", "refuted-under-reading"):
         return [f"a Coq refutation of a statement graded {s.grade!r}"]
-    spec = STATEMENTS.get(s.label) or CASE_STATEMENTS.get(s.label) or {}
+    from ..certificates.coq_gathering import GATHERING_STATEMENTS
+    spec = (STATEMENTS.get(s.label) or CASE_STATEMENTS.get(s.label)
+            or GATHERING_STATEMENTS.get(s.label) or {})
     if spec.get("reading") is None and s.grade == "refuted-under-reading":
         return ["a statement refuted under a reading needs the reading in its Coq file"]
     current = path.read_text(encoding="utf-8")

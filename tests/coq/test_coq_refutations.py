@@ -24,6 +24,7 @@ import pytest
 from exactsym.certificates.coq_refutation import (
     CASE_STATEMENTS, STATEMENTS, CoqExportError, coq_file_name, coq_refutation,
     coq_refutation_of_points, coqc_accepts, library_text, source_of)
+from exactsym.certificates.coq_gathering import GATHERING_STATEMENTS
 from exactsym.ledger.evidence import coq_export
 from exactsym.ledger.model import load_ledger
 
@@ -34,7 +35,7 @@ needs_coqc = pytest.mark.skipif(COQC is None, reason="coqc is not installed (apt
                                 "coq): the Coq refutations are not run")
 ALL = os.environ.get("EXACTSYM_COQ_ALL") == "1"
 REPRESENTATIVE = ("Pasym-Pord", "obs-merg-asym-pair", "Check_Symmetry_Even")
-SPECS = {**STATEMENTS, **CASE_STATEMENTS}
+SPECS = {**STATEMENTS, **CASE_STATEMENTS, **GATHERING_STATEMENTS}
 
 
 def _ledger_coq() -> dict:
@@ -169,9 +170,10 @@ def _pushed_out(text: str) -> str:
 
 
 #: Statements whose witnesses are open sets: any scalene triangle has no leader, any
-#: one-robot G_1 stays symmetric, so small turns keep the refutation (and coqc must still
-#: accept it).
-_OPEN = {"Elect_Leader_Asym", "ElectLeader", "Make_SymToAsym"}
+#: one-robot G_1 stays symmetric, two robots within 2 of C stay so, so small turns keep the
+#: refutation (and coqc must still accept it).
+_OPEN = {"Elect_Leader_Asym", "ElectLeader", "Make_SymToAsym",
+         "gather-no-obstacle", "FormGPattern"}
 
 
 def _flipped(text: str, label: str) -> str:
