@@ -14,7 +14,7 @@ never merged (only explored twice).
 from __future__ import annotations
 
 from ..exact.algebraic.interface import is_multiquadratic, is_run_tower, nested_tower
-from ..exact.tower import TowerElement
+from ..exact.number import tower_of
 from ..exact.tower import key, level
 from . import geometry as g
 
@@ -78,7 +78,7 @@ def shared_by_copies(x) -> bool:
     object per radicand in a run, never copied with a world); no for a number of a run's
     tower or of a quadratic level over ``K(alpha)`` (each copy of the world owns its own,
     and numbers of two towers are not compared)."""
-    if not isinstance(x, TowerElement):
+    if tower_of(x) is None:
         return True
     tower = nested_tower(x)
     return tower is not None and not is_run_tower(tower)
@@ -92,6 +92,6 @@ def tower_free(world) -> bool:
     for r in world.robots:
         pts = [r.pos] + [p for pc in r.path for p in
                          ((pc.start, pc.end) + ((pc.centre,) if isinstance(pc, g.Arc) else ()))]
-        if any(isinstance(x, TowerElement) for p in pts for x in p):
+        if any(tower_of(x) is not None for p in pts for x in p):
             return False
     return True
