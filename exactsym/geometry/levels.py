@@ -212,7 +212,30 @@ def _polar_levels(polar) -> tuple[Level, ...]:
                          lambda members: sorted(members, key=lambda i: polar[i][1]))
 
 
-class RationalLevels(Sequence):
+class TupleView(Sequence):
+    """A read-only sequence equal to the tuple of its items (``==``, ``hash``, ``repr``),
+    each item made when it is read: subclasses give ``__len__`` and ``__getitem__``.  The
+    lazy level and ray sequences below stand for tuples that were too large to hold
+    (issues 9 and 33), so they compare as those tuples do."""
+
+    __slots__ = ()
+
+    def __iter__(self):
+        return (self[k] for k in range(len(self)))
+
+    def __eq__(self, other):
+        if isinstance(other, (tuple, list, TupleView)):
+            return len(self) == len(other) and tuple(self) == tuple(other)
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(tuple(self))
+
+    def __repr__(self) -> str:
+        return repr(tuple(self))
+
+
+class RationalLevels(TupleView):
     """The levels of many points with rational squared radii, as a read-only sequence of
     :class:`Level` equal to the tuple of them (``==``, ``hash``): the order of the points
     is kept in two lists (``flat``: the points level by level; ``bounds``: where each
@@ -256,19 +279,6 @@ class RationalLevels(Sequence):
             r2 = self.known[k] = self.level_radius(k, points[0])
         return Level(r2, points)
 
-    def __iter__(self):
-        return (self[k] for k in range(len(self)))
-
-    def __eq__(self, other):
-        if isinstance(other, (tuple, RationalLevels, ScaledLevels)):
-            return len(self) == len(other) and tuple(self) == tuple(other)
-        return NotImplemented
-
-    def __hash__(self) -> int:
-        return hash(tuple(self))
-
-    def __repr__(self) -> str:
-        return repr(tuple(self))
 
     def __reduce__(self):
         return (RationalLevels, (self.flat, self.bounds, self.known, self.radii, self.points,
@@ -286,7 +296,7 @@ class RationalLevels(Sequence):
 
 
 
-class ScaledLevels(Sequence):
+class ScaledLevels(TupleView):
     """The levels ``base`` (a tuple of :class:`Level`) with every squared radius times
     ``k2`` (a similarity of scale sqrt(k2) maps the levels so), as a read-only sequence
     equal to that tuple, each :class:`Level` built when it is read; ``own``: levels given
@@ -317,19 +327,6 @@ class ScaledLevels(Sequence):
         level = self.base[k]
         return Level(level.radius_squared * self.k2, level.points)
 
-    def __iter__(self):
-        return (self[k] for k in range(len(self)))
-
-    def __eq__(self, other):
-        if isinstance(other, (tuple, RationalLevels, ScaledLevels)):
-            return len(self) == len(other) and tuple(self) == tuple(other)
-        return NotImplemented
-
-    def __hash__(self) -> int:
-        return hash(tuple(self))
-
-    def __repr__(self) -> str:
-        return repr(tuple(self))
 
 class AlgebraicLevels(RationalLevels):
     """The levels of points with irrational coordinates (:mod:`exactsym.geometry.algebraic_filtered`),

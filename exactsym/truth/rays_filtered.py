@@ -15,7 +15,7 @@ import numpy as np
 
 from ..exact import fmpq
 from ..geometry.predicates import FILTER_EPS, certified_groups, float_differences, float_pseudo_angles
-from ..geometry.levels import Levels, RationalLevels
+from ..geometry.levels import Levels, RationalLevels, TupleView
 
 
 def integer_pseudo_angle(x, y) -> fmpq:
@@ -27,7 +27,7 @@ def integer_pseudo_angle(x, y) -> fmpq:
 
 
 
-class SingletonRays:
+class SingletonRays(TupleView):
     """Rays of one point each, counter-clockwise, as a read-only sequence equal to the
     tuple ``((i,), (j,), ...)`` of them: the points in one NumPy integer array
     (``first``), each ray's tuple made when it is read.  The symmetry group keeps its
@@ -50,16 +50,6 @@ class SingletonRays:
     def __iter__(self):
         return ((i,) for i in self.first.tolist())
 
-    def __eq__(self, other):
-        if isinstance(other, (tuple, list, SingletonRays)):
-            return len(self) == len(other) and tuple(self) == tuple(other)
-        return NotImplemented
-
-    def __hash__(self) -> int:
-        return hash(tuple(self))
-
-    def __repr__(self) -> str:
-        return repr(tuple(self))
 
 
 def firsts(rays) -> np.ndarray:
