@@ -65,38 +65,9 @@ def transformed(config: Configuration, ring_data: Levels, frame: str) -> Configu
 
 def _similar(config: Configuration, sim: Similarity) -> Configuration:
     """:meth:`Configuration.transformed` of a Cartesian ``config`` under one of
-    :data:`CARTESIAN_FRAMES`, the same points, without its check that no two robots
-    coincide: a similarity is one-to-one and scales every distance by the same factor
-    (at least 1 here, so fat robots cannot come to overlap either); on a million robots
-    the check computed every point's floats again and grouped them (a second per frame)."""
-    system = config.system
-    coerce = system.coerce
-    c, s = (coerce(1), coerce(0)) if sim.rotation is None else \
-        (coerce(sim.rotation[0]), coerce(sim.rotation[1]))
-    k = coerce(sim.scale)
-    dx, dy = (coerce(v) for v in (sim.shift or (0, 0)))
-    if sim.reflect and sim.rotation is None and sim.scale == 1 and sim.shift is None:
-        points = [(x, -y) for x, y in config.points]
-    elif not sim.reflect and sim.rotation is not None and sim.shift is not None:
-        # k (c x - s y) + dx = (k c) x - (k s) y + dx: the same exact values with two
-        # products fewer per point
-        if sim.scale != 1:
-            c, s = k * c, k * s
-        points = [(c * x - s * y + dx, s * x + c * y + dy) for x, y in config.points]
-    else:
-        points = []             # as Configuration.transformed computes them
-        for x, y in config.points:
-            if sim.reflect:
-                y = -y
-            if sim.rotation is not None:
-                x, y = c * x - s * y, s * x + c * y
-            if sim.scale != 1:
-                x, y = k * x, k * y
-            if sim.shift is not None:
-                x, y = x + dx, y + dy
-            points.append((x, y))
-    return Configuration(source=config.source, name=config.name, model=config.model,
-                         points=points, system=system)
+    :data:`CARTESIAN_FRAMES`, without its check that no two robots coincide (a
+    similarity is one-to-one; these scale by at least 1)."""
+    return config.transformed(sim, check=False)
 
 
 def frame_levels(config: Configuration, ring_data: Levels, moved: Configuration,

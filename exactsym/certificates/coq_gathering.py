@@ -19,7 +19,7 @@ from __future__ import annotations
 from fractions import Fraction
 from pathlib import Path
 
-from .coq_refutation import CoqExportError, library_text, theorem_name
+from .coq_refutation import CoqExportError, library_text, read_library, theorem_name
 
 __all__ = ["GATHERING_STATEMENTS", "GATHERING_LIBRARY", "coq_gathering_of_points",
            "gathering_library_text"]
@@ -105,11 +105,7 @@ GATHERING_STATEMENTS = {
 
 def gathering_library_text() -> str:
     """The gathering library, ``proofs/coq/Gathering.v``."""
-    try:
-        return GATHERING_LIBRARY.read_text(encoding="utf-8")
-    except OSError as err:
-        raise CoqExportError(f"the Coq library {GATHERING_LIBRARY.name} is not here (it "
-                             "lives in the source tree, proofs/coq/)") from err
+    return read_library(GATHERING_LIBRARY)
 
 
 def _q(value: Fraction) -> str:

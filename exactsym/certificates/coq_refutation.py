@@ -27,7 +27,7 @@ from pathlib import Path
 
 __all__ = ["CoqExportError", "STATEMENTS", "CASE_STATEMENTS", "coq_file_name",
            "coq_refutation", "coq_refutation_of_points", "coqc_accepts", "library_text",
-           "source_of", "theorem_name"]
+           "read_library", "source_of", "theorem_name"]
 
 #: The library every exported file inlines, in the source tree (issue 35: one copy).
 LIBRARY = Path(__file__).resolve().parents[2] / "proofs" / "coq" / "Exactsym.v"
@@ -425,10 +425,15 @@ CASE_STATEMENTS = {
 
 def library_text() -> str:
     """The Coq library, ``proofs/coq/Exactsym.v``."""
+    return read_library(LIBRARY)
+
+
+def read_library(path: Path) -> str:
+    """The text of a Coq library of ``proofs/coq/`` (inlined into every export)."""
     try:
-        return LIBRARY.read_text(encoding="utf-8")
+        return path.read_text(encoding="utf-8")
     except OSError as err:
-        raise CoqExportError(f"the Coq library {LIBRARY.name} is not here (it lives in "
+        raise CoqExportError(f"the Coq library {path.name} is not here (it lives in "
                              "the source tree, proofs/coq/)") from err
 
 

@@ -204,9 +204,13 @@ class Configuration:
         """The same points, as a Cartesian configuration (no polar data)."""
         return self._same(points=self.points, system=self.system)
 
-    def transformed(self, similarity: Similarity) -> "Configuration":
+    def transformed(self, similarity: Similarity, check: bool = True) -> "Configuration":
         """The configuration in another frame, robot indices unchanged: a polar
-        configuration stays polar when ``similarity.keeps_polar``."""
+        configuration stays polar when ``similarity.keeps_polar``.  ``check=False`` skips
+        the test that no two robots coincide or overlap on a Cartesian copy (the audit's
+        frames, :mod:`exactsym.audit.frames`): a similarity is one-to-one, and one of scale
+        at least 1 cannot make fat robots overlap; on a million robots the test cost a
+        second per frame."""
         sim = similarity
         if self.radii is not None and sim.keeps_polar:
             turn = sim.turn if sim.turn is not None else fmpq(0)
@@ -235,20 +239,37 @@ class Configuration:
             c, s = coerce(1), coerce(0)
         k = coerce(sim.scale)
         dx, dy = (coerce(v) for v in (sim.shift or (0, 0)))
-        points = []
-        for x, y in self.points:
-            if sim.reflect:
-                y = -y
-            if sim.rotation is not None or sim.turn is not None:
-                x, y = c * x - s * y, s * x + c * y
-            if sim.scale != 1:
-                x, y = k * x, k * y
-            if sim.shift is not None:
-                x, y = x + dx, y + dy
-            points.append((x, y))
-        new = self._same(points=points, system=self.system)
-        _check_move(new)
+        new = self._same(points=_similar_points(self.points, sim, c, s, k, dx, dy),
+                         system=self.system)
+        if check:
+            _check_move(new)
         return new
+
+
+def _similar_points(points, sim: Similarity, c, s, k, dx, dy) -> list:
+    """The Cartesian ``points`` reflected (y -> -y), turned by (c, s), scaled by k and
+    shifted by (dx, dy), as ``sim`` says, in that order."""
+    turns = sim.rotation is not None or sim.turn is not None
+    if sim.reflect and not turns and sim.scale == 1 and sim.shift is None:
+        return [(x, -y) for x, y in points]
+    if not sim.reflect and turns and sim.shift is not None:
+        # k (c x - s y) + dx = (k c) x - (k s) y + dx: the same exact values with two
+        # products fewer per point
+        if sim.scale != 1:
+            c, s = k * c, k * s
+        return [(c * x - s * y + dx, s * x + c * y + dy) for x, y in points]
+    out = []
+    for x, y in points:
+        if sim.reflect:
+            y = -y
+        if turns:
+            x, y = c * x - s * y, s * x + c * y
+        if sim.scale != 1:
+            x, y = k * x, k * y
+        if sim.shift is not None:
+            x, y = x + dx, y + dy
+        out.append((x, y))
+    return out
 
 
 def _polar_spec(spec: PointSpec, scale, reflect: bool, turn) -> PointSpec:
